@@ -1,0 +1,285 @@
+//! Culls: cheap tests that prove a line cannot hit the torus, so the quartic is skipped.
+//!
+//! Every cull is a **line** test in the torus frame (centre at the origin, axis +y) and is
+//! therefore conservative for any ray on that line. A cull returns `true` to *keep* the
+//! line (the exact intersection must run) and `false` to *reject* it (proven miss).
+//!
+//! Each cull lives in its own file behind the one-method [`Cull`] trait. [`CullKind`] is
+//! the registry by stable name, used in results, the CLI and the plots; its
+//! [`CullKind::visit`] hands a concrete cull type to generic code, so that benchmark and
+//! BVH loops are monomorphized per cull instead of paying a dynamic dispatch per ray.
+//!
+//! # Floating-point safety margin
+//! Exact arithmetic is conservative, rounding is not: a plain f32 evaluation rejects some
+//! lines that graze the surface. Every timed cull therefore tests the torus `T_η` whose
+//! tube radius is inflated to `r + η` with `η = SAFETY_REL · (R + r)` (see [`CullBounds`]).
+//! Any error that acts like moving the line, or a plane through it, by less than `η` is
+//! absorbed: every point within `η` of the true torus lies inside `T_η`. The errors of the
+//! world→torus transform and of the foot-point shift are about `4·2⁻²⁴·|o − c|`, so the
+//! margin covers origins with `|o − c| ≤ 256·(R + r)` (and centres with `|c|` in the same
+//! range); further out, move the origin along the ray first.
+
+mod aabb;
+mod cychosz;
+mod none;
+mod printed;
+mod skala;
+mod sphere;
+mod thick_cylinder;
+
+pub use aabb::AabbCull;
+pub use cychosz::CychoszCull;
+pub use none::NoCull;
+pub use printed::{CychoszPrintedCull, SkalaEq102Cull, SkalaPrintedCCull};
+pub use skala::SkalaCull;
+pub use sphere::SphereCull;
+pub use thick_cylinder::ThickCylinderCull;
+
+use glam::Vec3;
+use std::fmt;
+use std::str::FromStr;
+
+/// The relative safety margin: `η = SAFETY_REL · (R + r)`, 2⁻¹² ≈ 2.4e-4.
+///
+/// About 4000 f32 ulps of the torus size: large enough to absorb the transform and
+/// foot-point rounding for origins within 256·(R + r), small enough to cost nothing
+/// measurable in rejection rate (it only keeps lines that pass within η of the surface).
+pub const SAFETY_REL: f32 = 1.0 / 4096.0;
+
+/// Below this squared horizontal direction fraction (|h|/|d| < 1e-6) a line is treated as
+/// parallel to the axis: within the bounding sphere its distance from the axis changes by
+/// less than 2e-6·(R + r), far inside η.
+pub(crate) const AXIS_PARALLEL_H2: f32 = 1e-12;
+
+/// Per-torus constants for the culls, in f32, with the safety margin folded in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CullBounds {
+    /// R.
+    pub major_radius: f32,
+    /// r (unpadded, for the paper-as-printed variants).
+    pub minor_radius: f32,
+    /// r_η = r + η: the padded tube radius used by every timed cull.
+    pub minor_safe: f32,
+    /// r_η².
+    pub minor_safe_sq: f32,
+    /// (R + r_η)²: the padded bounding sphere.
+    pub outer_safe_sq: f32,
+    /// R + r_η.
+    pub outer_safe: f32,
+    /// R − r_η: the padded hole radius (≥ 0 is not guaranteed for ν near 1).
+    pub inner_safe: f32,
+    /// (R − r_η)², or 0 when the padded hole closes.
+    pub inner_safe_sq: f32,
+}
+
+impl CullBounds {
+    /// Bounds for R = `major_radius`, r = `minor_radius` (a valid ring torus).
+    pub fn new(major_radius: f32, minor_radius: f32) -> CullBounds {
+        let eta = SAFETY_REL * (major_radius + minor_radius);
+        let minor_safe = minor_radius + eta;
+        let outer_safe = major_radius + minor_safe;
+        let inner_safe = major_radius - minor_safe;
+        CullBounds {
+            major_radius,
+            minor_radius,
+            minor_safe,
+            minor_safe_sq: minor_safe * minor_safe,
+            outer_safe_sq: outer_safe * outer_safe,
+            outer_safe,
+            inner_safe,
+            inner_safe_sq: if inner_safe > 0.0 {
+                inner_safe * inner_safe
+            } else {
+                0.0
+            },
+        }
+    }
+
+    /// Bounds for a [`crate::Torus`].
+    pub fn of(torus: &crate::Torus) -> CullBounds {
+        CullBounds::new(torus.major_radius(), torus.minor_radius())
+    }
+}
+
+/// A bounding test for one torus in its own frame.
+///
+/// `keeps` is a **line** test: `origin + t·dir` for all real t, `dir` finite and non-zero
+/// of any length. `false` means the line provably misses the torus.
+pub trait Cull {
+    /// The stable name used in results, the CLI and plots.
+    fn name(&self) -> &'static str;
+
+    /// `true` to keep the line (run the quartic), `false` to reject it.
+    fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool;
+}
+
+/// The foot point of the line (its point closest to the torus centre) and the unit
+/// direction. Shared first step of the sphere-based culls: it removes the far-origin
+/// cancellation from every later formula.
+#[inline(always)]
+pub(crate) fn foot_point(origin: Vec3, dir: Vec3) -> (Vec3, Vec3) {
+    let unit = dir * dir.length_recip();
+    (origin - unit * origin.dot(unit), unit)
+}
+
+/// Every cull by name: the registry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum CullKind {
+    /// No test: always run the quartic (the baseline).
+    None,
+    /// Bounding sphere of radius R + r.
+    Sphere,
+    /// The torus's box [−(R+r), R+r] × [−r, r] × [−(R+r), R+r].
+    Aabb,
+    /// Cychosz (Graphics Gems II, 1991): sphere R + r, then the slab |y| ≤ r at the chord ends.
+    Cychosz,
+    /// The shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's `Test_Thick_Cylinder`).
+    ThickCylinder,
+    /// Skala's circle-based test, with the paper's misprints corrected.
+    Skala,
+    /// Errata tests only: Cychosz with the paper's Eq. 35 misprint. Not conservative.
+    CychoszPrinted,
+    /// Errata tests only: Skala with the printed Eq. 105, h_c² = r² − (a − r)². Not conservative.
+    SkalaPrintedC,
+    /// Errata tests only: Skala with the printed Eq. 102–103 x_B. Not conservative.
+    SkalaEq102,
+}
+
+impl CullKind {
+    /// The six culls measured by the harness, in table order.
+    pub const TIMED: [CullKind; 6] = [
+        CullKind::None,
+        CullKind::Sphere,
+        CullKind::Aabb,
+        CullKind::Cychosz,
+        CullKind::ThickCylinder,
+        CullKind::Skala,
+    ];
+
+    /// The paper-as-printed variants, kept to prove the harness can see a broken cull.
+    pub const PRINTED: [CullKind; 3] = [
+        CullKind::CychoszPrinted,
+        CullKind::SkalaPrintedC,
+        CullKind::SkalaEq102,
+    ];
+
+    /// The stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            CullKind::None => "none",
+            CullKind::Sphere => "sphere",
+            CullKind::Aabb => "aabb",
+            CullKind::Cychosz => "cychosz",
+            CullKind::ThickCylinder => "thick_cylinder",
+            CullKind::Skala => "skala",
+            CullKind::CychoszPrinted => "cychosz_printed",
+            CullKind::SkalaPrintedC => "skala_printed_c",
+            CullKind::SkalaEq102 => "skala_eq102",
+        }
+    }
+
+    /// Hands the concrete cull to `visitor`, so generic code is monomorphized per cull.
+    pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
+        match self {
+            CullKind::None => visitor.visit(NoCull),
+            CullKind::Sphere => visitor.visit(SphereCull),
+            CullKind::Aabb => visitor.visit(AabbCull),
+            CullKind::Cychosz => visitor.visit(CychoszCull),
+            CullKind::ThickCylinder => visitor.visit(ThickCylinderCull),
+            CullKind::Skala => visitor.visit(SkalaCull),
+            CullKind::CychoszPrinted => visitor.visit(CychoszPrintedCull),
+            CullKind::SkalaPrintedC => visitor.visit(SkalaPrintedCCull),
+            CullKind::SkalaEq102 => visitor.visit(SkalaEq102Cull),
+        }
+    }
+
+    /// One line through the registry: convenient, but dispatches per call.
+    pub fn keeps(self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        struct One<'a>(&'a CullBounds, Vec3, Vec3);
+        impl CullVisitor for One<'_> {
+            type Output = bool;
+            fn visit<C: Cull>(self, cull: C) -> bool {
+                cull.keeps(self.0, self.1, self.2)
+            }
+        }
+        self.visit(One(bounds, origin, dir))
+    }
+}
+
+/// Generic code that runs with a concrete cull type; see [`CullKind::visit`].
+pub trait CullVisitor {
+    /// What the visit returns.
+    type Output;
+    /// Called once with the concrete cull.
+    fn visit<C: Cull>(self, cull: C) -> Self::Output;
+}
+
+impl fmt::Display for CullKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// An unknown cull name.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UnknownCull(pub String);
+
+impl fmt::Display for UnknownCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let names: Vec<_> = CullKind::TIMED
+            .iter()
+            .chain(CullKind::PRINTED.iter())
+            .map(|c| c.name())
+            .collect();
+        write!(
+            f,
+            "unknown cull '{}' (allowed: {})",
+            self.0,
+            names.join(", ")
+        )
+    }
+}
+
+impl std::error::Error for UnknownCull {}
+
+impl FromStr for CullKind {
+    type Err = UnknownCull;
+    fn from_str(s: &str) -> Result<CullKind, UnknownCull> {
+        CullKind::TIMED
+            .iter()
+            .chain(CullKind::PRINTED.iter())
+            .copied()
+            .find(|c| c.name() == s)
+            .ok_or_else(|| UnknownCull(s.to_string()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_round_trips_names() {
+        for c in CullKind::TIMED.iter().chain(CullKind::PRINTED.iter()) {
+            assert_eq!(c.name().parse::<CullKind>().unwrap(), *c);
+            struct Name;
+            impl CullVisitor for Name {
+                type Output = &'static str;
+                fn visit<C: Cull>(self, cull: C) -> &'static str {
+                    cull.name()
+                }
+            }
+            assert_eq!(c.visit(Name), c.name());
+        }
+        let err = "bogus".parse::<CullKind>().unwrap_err().to_string();
+        assert!(err.contains("bogus") && err.contains("skala"), "{err}");
+    }
+
+    #[test]
+    fn margin_is_small_and_positive() {
+        let b = CullBounds::new(2.0, 1.0);
+        assert!(b.minor_safe > 1.0 && b.minor_safe < 1.001);
+        assert!(b.outer_safe > 3.0 && b.outer_safe < 3.001);
+        assert!(b.inner_safe < 1.0 && b.inner_safe > 0.999);
+    }
+}

@@ -1,0 +1,164 @@
+//! `skala`: V. Skala's circle-based test, with the paper's misprints corrected (DESIGN §4).
+
+use super::cychosz::{SphereSlab, sphere_slab};
+use super::{AXIS_PARALLEL_H2, Cull, CullBounds};
+use glam::Vec3;
+
+/// Cychosz's sphere + slab first (cheap, and most rejections), then, on the survivors,
+/// tests in the plane that holds the line and is parallel to the axis.
+///
+/// With unit direction d̂, foot point p and horizontal part h = |(d̂_x, d̂_z)|, the plane's
+/// distance from the axis is a = |p_x d̂_z − p_z d̂_x| / h. Everything below is multiplied
+/// through by h, so no division and no trigonometry is needed:
+///
+/// * **hole, a < R − r** (case a): with x_B = √((R − r)² − a²) (Eq. 104, not the printed
+///   Eq. 102) the circles k, k′ of radius r centred at (±(x_B + r), 0) bound the two ovals
+///   near the hole. Because p ⊥ d̂, the line's in-plane moment about the origin is p_y/h,
+///   so "crosses Y = 0 with |X₀| < x_B + r and misses both circles" is the one inequality
+///   `x_B·h·|d̂_y| ≥ |p_y| + r·h·(1 − |d̂_y|)`, squared to drop the root.
+///   *Why it is sound:* with u = ρ − (R − r) and w = X − x_B, dX/dρ = ρ/X ≥ 1 gives w ≥ u,
+///   and on the section (w − r)² + Y² − r² = (w − u)(w + u − 2r) ≤ 0 while w ≤ r: the part
+///   of the oval with X ≤ x_B + r lies in k. A line from the hole that reaches the rest of
+///   the oval crosses X = x_B + r at |Y| ≤ r, which is inside k too. A crossing with
+///   x_B ≤ |X₀| < x_B + r is inside k, so the widened window is free and rounding-proof.
+/// * **outer band, R ≤ a < R + r** (case c): the section's height is
+///   |Y| ≤ h_c = √(r² − (a − R)²) (Eq. 105 corrected), so the slab planes move in from ±r
+///   to ±h_c. Reject if the chord's lowest |Y| exceeds h_c (or h_c² < 0: case d).
+/// * **R − r ≤ a < R** (case b): the section has inflection points; sphere + slab stays.
+/// * **axis-parallel lines** (h ≈ 0): exact, keep iff R − r < ρ < R + r.
+/// * **d̂_y = 0**: falls out of the same formulas (constant Y; the hole test cannot fire).
+///
+/// All radii carry the safety margin of [`CullBounds`]. Rejects a superset of `cychosz`.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SkalaCull;
+
+impl Cull for SkalaCull {
+    fn name(&self) -> &'static str {
+        "skala"
+    }
+
+    #[inline(always)]
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        skala_keeps::<Corrected>(b, origin, dir)
+    }
+}
+
+/// The two section formulas that the paper misprints; the variants swap them.
+pub(crate) trait SectionFormulas {
+    /// Tube radius the formulas use (padded for the timed cull).
+    fn minor(b: &CullBounds) -> f32;
+    /// x_B²·h² for case a), given A = a·h and h.
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32;
+    /// h_c²·h² for case c), given A = a·h and h.
+    fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32;
+}
+
+/// DESIGN §4: x_B² = (R − r)² − a², h_c² = r² − (a − R)², on the padded torus T_η.
+pub(crate) struct Corrected;
+
+impl SectionFormulas for Corrected {
+    #[inline(always)]
+    fn minor(b: &CullBounds) -> f32 {
+        b.minor_safe
+    }
+    #[inline(always)]
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
+        // As a product of a difference and a sum: the difference is exact when a ≈ R − r,
+        // where x_B has infinite slope.
+        let inner_h = b.inner_safe * h;
+        (inner_h - a_h) * (inner_h + a_h)
+    }
+    #[inline(always)]
+    fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
+        let off = a_h - b.major_radius * h;
+        b.minor_safe_sq * h * h - off * off
+    }
+}
+
+/// The Skala test with the given section formulas; see [`SkalaCull`].
+#[inline(always)]
+pub(crate) fn skala_keeps<F: SectionFormulas>(b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+    let Some(SphereSlab {
+        foot: p,
+        unit: n,
+        min_abs_y,
+    }) = sphere_slab(b, origin, dir)
+    else {
+        return false;
+    };
+    let h2 = n.x * n.x + n.z * n.z;
+    if h2 < AXIS_PARALLEL_H2 {
+        // Parallel to the axis: ρ is constant; the sphere already bounds it from outside.
+        return p.x * p.x + p.z * p.z > b.inner_safe_sq;
+    }
+    let h = h2.sqrt();
+    let a_h = (p.x * n.z - p.z * n.x).abs();
+    if a_h >= b.major_radius * h {
+        // Outer band (case c, and d when h_c² < 0): the slab shrinks to |Y| ≤ h_c.
+        let lowest = min_abs_y.max(0.0) * h;
+        return lowest * lowest <= F::band_height_sq_h2(b, a_h, h);
+    }
+    if a_h < b.inner_safe * h {
+        // Hole (case a): reject if the line falls through between k and k′.
+        let rhs = p.y.abs() + F::minor(b) * h * (1.0 - n.y.abs());
+        return F::hole_edge_sq_h2(b, a_h, h) * (n.y * n.y) < rhs * rhs;
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn keeps(r_major: f32, r_minor: f32, o: [f32; 3], d: [f32; 3]) -> bool {
+        SkalaCull.keeps(
+            &CullBounds::new(r_major, r_minor),
+            Vec3::from(o),
+            Vec3::from(d),
+        )
+    }
+
+    #[test]
+    fn vertical_lines_exact() {
+        // R = 2, r = 1: tube spans 1 < ρ < 3.
+        assert!(!keeps(2.0, 1.0, [0.5, 5.0, 0.0], [0.0, -1.0, 0.0])); // through the hole
+        assert!(keeps(2.0, 1.0, [1.5, 5.0, 0.0], [0.0, -1.0, 0.0])); // through the tube
+        assert!(keeps(2.0, 1.0, [0.0, 5.0, 2.9], [0.0, 1.0, 0.0]));
+        assert!(!keeps(2.0, 1.0, [3.1, 5.0, 0.0], [0.0, 1.0, 0.0])); // outside
+    }
+
+    #[test]
+    fn steep_line_through_the_hole_is_rejected() {
+        // Crosses y = 0 at the centre, tilted 10° from the axis: falls through the hole.
+        let (s, c) = 10f32.to_radians().sin_cos();
+        assert!(!keeps(4.0, 1.0, [-5.0 * s, -5.0 * c, 0.0], [s, c, 0.0]));
+        // Cychosz keeps it: the crossing is inside its sphere and slab.
+        assert!(CychoszCull_keeps(
+            4.0,
+            1.0,
+            [-5.0 * s, -5.0 * c, 0.0],
+            [s, c, 0.0]
+        ));
+    }
+
+    #[allow(non_snake_case)]
+    fn CychoszCull_keeps(r_major: f32, r_minor: f32, o: [f32; 3], d: [f32; 3]) -> bool {
+        super::super::CychoszCull.keeps(
+            &CullBounds::new(r_major, r_minor),
+            Vec3::from(o),
+            Vec3::from(d),
+        )
+    }
+
+    #[test]
+    fn horizontal_lines_use_band_height() {
+        // R = 2, r = 1, plane z = 2.5 (a = 2.5, case c): h_c = √(1 − 0.25) ≈ 0.866.
+        assert!(keeps(2.0, 1.0, [-5.0, 0.85, 2.5], [1.0, 0.0, 0.0]));
+        assert!(!keeps(2.0, 1.0, [-5.0, 0.88, 2.5], [1.0, 0.0, 0.0]));
+        // Case boundaries a = R − r, R, R + r, with a line at mid height.
+        assert!(keeps(2.0, 1.0, [-5.0, 0.5, 1.0], [1.0, 0.0, 0.0]));
+        assert!(keeps(2.0, 1.0, [-5.0, 0.5, 2.0], [1.0, 0.0, 0.0]));
+        assert!(keeps(2.0, 1.0, [-5.0, 0.0, 3.0], [1.0, 0.0, 0.0]));
+        assert!(!keeps(2.0, 1.0, [-5.0, 0.5, 3.0], [1.0, 0.0, 0.0]));
+    }
+}

@@ -1,0 +1,124 @@
+//! The ray type shared by the culls, the exact intersection and the oracle.
+
+use glam::Vec3;
+use std::fmt;
+
+/// A ray `o + t·d` with `t ∈ [t_min, t_max]`, in f32 as a renderer shoots it.
+///
+/// The direction need not be unit length; every `t` in this crate is in units of the
+/// given direction. The constructors reject zero, NaN and infinite directions, so every
+/// `Ray` is a valid line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ray {
+    origin: Vec3,
+    dir: Vec3,
+    t_min: f32,
+    t_max: f32,
+}
+
+/// Why a ray was refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RayError {
+    /// The origin has a NaN or infinite component.
+    NonFiniteOrigin(Vec3),
+    /// The direction has a NaN or infinite component.
+    NonFiniteDirection(Vec3),
+    /// The direction is the zero vector (or so small that its squared length underflows).
+    ZeroDirection(Vec3),
+    /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
+    BadRange {
+        /// The lower end given.
+        t_min: f32,
+        /// The upper end given.
+        t_max: f32,
+    },
+}
+
+impl fmt::Display for RayError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
+            RayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
+            RayError::ZeroDirection(d) => {
+                write!(
+                    f,
+                    "ray direction {d} is zero (|d|² must be a normal f32 > 0)"
+                )
+            }
+            RayError::BadRange { t_min, t_max } => write!(
+                f,
+                "ray range [{t_min}, {t_max}] is invalid (need finite t_min ≤ t_max)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for RayError {}
+
+impl Ray {
+    /// A ray over `t ∈ [0, +∞)`.
+    ///
+    /// ```
+    /// use torus_cull::Ray;
+    /// use glam::Vec3;
+    /// assert!(Ray::new(Vec3::ZERO, Vec3::X).is_ok());
+    /// assert!(Ray::new(Vec3::ZERO, Vec3::ZERO).is_err());
+    /// assert!(Ray::new(Vec3::ZERO, Vec3::new(f32::NAN, 0.0, 1.0)).is_err());
+    /// ```
+    pub fn new(origin: Vec3, dir: Vec3) -> Result<Ray, RayError> {
+        Ray::with_range(origin, dir, 0.0, f32::INFINITY)
+    }
+
+    /// A ray over `t ∈ [t_min, t_max]`.
+    pub fn with_range(origin: Vec3, dir: Vec3, t_min: f32, t_max: f32) -> Result<Ray, RayError> {
+        if !origin.is_finite() {
+            return Err(RayError::NonFiniteOrigin(origin));
+        }
+        if !dir.is_finite() {
+            return Err(RayError::NonFiniteDirection(dir));
+        }
+        // A squared length below the smallest normal f32 would make 1/|d| overflow or lose bits.
+        if dir.length_squared() < f32::MIN_POSITIVE {
+            return Err(RayError::ZeroDirection(dir));
+        }
+        if !t_min.is_finite() || t_max.is_nan() || t_min > t_max {
+            return Err(RayError::BadRange { t_min, t_max });
+        }
+        Ok(Ray {
+            origin,
+            dir,
+            t_min,
+            t_max,
+        })
+    }
+
+    /// The origin `o`.
+    #[inline]
+    pub fn origin(&self) -> Vec3 {
+        self.origin
+    }
+
+    /// The direction `d` (as given; not normalized).
+    #[inline]
+    pub fn dir(&self) -> Vec3 {
+        self.dir
+    }
+
+    /// The lower end of the parameter range.
+    #[inline]
+    pub fn t_min(&self) -> f32 {
+        self.t_min
+    }
+
+    /// The upper end of the parameter range (may be +∞).
+    #[inline]
+    pub fn t_max(&self) -> f32 {
+        self.t_max
+    }
+
+    /// The point `o + t·d`.
+    #[inline]
+    pub fn at(&self, t: f32) -> Vec3 {
+        self.origin + self.dir * t
+    }
+}

@@ -1,0 +1,321 @@
+//! The torus: pose, validation and the rigid world→torus-frame transform.
+
+use crate::ray::Ray;
+use glam::{DMat3, DVec3, Mat3, Vec3};
+use std::fmt;
+
+/// A ring torus in the world: centre, unit rotation axis, `major_radius` R and
+/// `minor_radius` r, with R > r > 0 (ν = R/r > 1).
+///
+/// In the torus frame the centre is the origin and the axis is +y, so the surface is
+/// `(ρ − R)² + y² = r²` with `ρ = √(x² + z²)`. The world→torus transform is rigid
+/// (translate, then rotate the axis onto +y), so `t` is the same in both frames.
+///
+/// **ν ≤ 1 is refused.** A horn or spindle torus has no hole, and the quartic's second
+/// factor `(ρ + R)² + y² − r²` is no longer positive there, so "sign F = inside the tube",
+/// which the oracle and the hole test rely on, would fail silently. [`Torus::new`]
+/// returns [`TorusError::NoHole`] instead.
+///
+/// ```
+/// use torus_cull::Torus;
+/// use glam::Vec3;
+/// let t = Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::Z, 2.0, 0.5).unwrap();
+/// assert_eq!(t.nu(), 4.0);
+/// assert!(Torus::canonical(1.0, 1.0).is_err()); // horn torus: no hole
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Torus {
+    center: Vec3,
+    axis: Vec3,
+    major_radius: f32,
+    minor_radius: f32,
+    /// Rows are the world directions of the torus frame's x, y (= axis) and z.
+    to_local: Mat3,
+    /// The same rotation built in f64 from the f32 axis, for the f64 exact intersection.
+    to_local_f64: DMat3,
+}
+
+/// Why a torus was refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TorusError {
+    /// A radius is NaN, infinite, zero or negative.
+    BadRadius {
+        /// Which radius.
+        name: &'static str,
+        /// The value given.
+        value: f32,
+    },
+    /// ν = R/r ≤ 1: a horn or spindle torus, which has no hole.
+    NoHole {
+        /// R as given.
+        major_radius: f32,
+        /// r as given.
+        minor_radius: f32,
+    },
+    /// The centre has a NaN or infinite component.
+    NonFiniteCenter(Vec3),
+    /// The axis is zero, NaN or infinite.
+    BadAxis(Vec3),
+}
+
+impl fmt::Display for TorusError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            TorusError::BadRadius { name, value } => {
+                write!(f, "{name} = {value} is invalid (must be finite and > 0)")
+            }
+            TorusError::NoHole {
+                major_radius,
+                minor_radius,
+            } => write!(
+                f,
+                "major_radius = {major_radius}, minor_radius = {minor_radius}: nu = R/r = {} must be > 1 \
+                 (a horn or spindle torus has no hole; torus-cull supports ring tori only)",
+                major_radius / minor_radius
+            ),
+            TorusError::NonFiniteCenter(c) => write!(f, "torus centre {c} is not finite"),
+            TorusError::BadAxis(a) => write!(f, "torus axis {a} must be finite and non-zero"),
+        }
+    }
+}
+
+impl std::error::Error for TorusError {}
+
+/// A line in the torus frame: `origin + t·dir`, f32, `dir` non-zero but of any length.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalLine {
+    /// The origin in the torus frame.
+    pub origin: Vec3,
+    /// The direction in the torus frame (same length as the world direction).
+    pub dir: Vec3,
+}
+
+impl Torus {
+    /// A torus at `center` with rotation `axis` (normalized here), R = `major_radius`,
+    /// r = `minor_radius`.
+    pub fn new(
+        center: Vec3,
+        axis: Vec3,
+        major_radius: f32,
+        minor_radius: f32,
+    ) -> Result<Torus, TorusError> {
+        for (name, value) in [
+            ("major_radius", major_radius),
+            ("minor_radius", minor_radius),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(TorusError::BadRadius { name, value });
+            }
+        }
+        if major_radius <= minor_radius {
+            return Err(TorusError::NoHole {
+                major_radius,
+                minor_radius,
+            });
+        }
+        if !center.is_finite() {
+            return Err(TorusError::NonFiniteCenter(center));
+        }
+        let axis_f64 = axis.as_dvec3();
+        if !axis.is_finite() || axis_f64.length_squared() == 0.0 {
+            return Err(TorusError::BadAxis(axis));
+        }
+        // The stored f32 axis *is* the torus: the f64 rotation (and the oracle) start from it,
+        // so both paths agree on the same surface to f64 precision.
+        let axis = axis_f64.normalize().as_vec3();
+        let to_local_f64 = rotation_axis_to_y(axis.as_dvec3().normalize());
+        Ok(Torus {
+            center,
+            axis,
+            major_radius,
+            minor_radius,
+            to_local: to_local_f64.as_mat3(),
+            to_local_f64,
+        })
+    }
+
+    /// The torus in its own frame: centre at the origin, axis +y.
+    pub fn canonical(major_radius: f32, minor_radius: f32) -> Result<Torus, TorusError> {
+        Torus::new(Vec3::ZERO, Vec3::Y, major_radius, minor_radius)
+    }
+
+    /// The centre in world space.
+    #[inline]
+    pub fn center(&self) -> Vec3 {
+        self.center
+    }
+
+    /// The unit rotation axis in world space.
+    #[inline]
+    pub fn axis(&self) -> Vec3 {
+        self.axis
+    }
+
+    /// R: distance from the axis to the tube centre.
+    #[inline]
+    pub fn major_radius(&self) -> f32 {
+        self.major_radius
+    }
+
+    /// r: the tube radius.
+    #[inline]
+    pub fn minor_radius(&self) -> f32 {
+        self.minor_radius
+    }
+
+    /// ν = R/r, > 1 for every `Torus`.
+    #[inline]
+    pub fn nu(&self) -> f32 {
+        self.major_radius / self.minor_radius
+    }
+
+    /// The radius R + r of the bounding sphere.
+    #[inline]
+    pub fn outer_radius(&self) -> f32 {
+        self.major_radius + self.minor_radius
+    }
+
+    /// The rotation world→torus frame (axis → +y), f32.
+    #[inline]
+    pub fn to_local_rotation(&self) -> Mat3 {
+        self.to_local
+    }
+
+    /// The rotation world→torus frame (axis → +y), built in f64.
+    #[inline]
+    pub fn to_local_rotation_f64(&self) -> DMat3 {
+        self.to_local_f64
+    }
+
+    /// A world point in the torus frame (f32).
+    #[inline]
+    pub fn point_to_local(&self, p: Vec3) -> Vec3 {
+        self.to_local * (p - self.center)
+    }
+
+    /// A torus-frame point in the world (f32).
+    #[inline]
+    pub fn point_to_world(&self, p: Vec3) -> Vec3 {
+        self.to_local.transpose() * p + self.center
+    }
+
+    /// A torus-frame direction in the world (f32); lengths are kept.
+    #[inline]
+    pub fn dir_to_world(&self, d: Vec3) -> Vec3 {
+        self.to_local.transpose() * d
+    }
+
+    /// The ray's line in the torus frame, in f32, as the culls see it.
+    #[inline]
+    pub fn line_to_local(&self, ray: &Ray) -> LocalLine {
+        LocalLine {
+            origin: self.to_local * (ray.origin() - self.center),
+            dir: self.to_local * ray.dir(),
+        }
+    }
+
+    /// The ray's origin and direction in the torus frame, in f64 (for the exact path).
+    #[inline]
+    pub fn line_to_local_f64(&self, ray: &Ray) -> (DVec3, DVec3) {
+        let o = ray.origin().as_dvec3() - self.center.as_dvec3();
+        (
+            self.to_local_f64 * o,
+            self.to_local_f64 * ray.dir().as_dvec3(),
+        )
+    }
+
+    /// The world-space axis-aligned bounding box of the torus, `(min, max)`.
+    ///
+    /// Exact for any axis: along world axis i the half-extent is `R·√(1 − a_i²) + r`.
+    pub fn world_aabb(&self) -> (Vec3, Vec3) {
+        let a = self.axis;
+        let ring = (Vec3::ONE - a * a).max(Vec3::ZERO).sqrt() * self.major_radius;
+        let half = ring + Vec3::splat(self.minor_radius);
+        (self.center - half, self.center + half)
+    }
+}
+
+/// A proper rotation taking the unit vector `axis` to +y.
+///
+/// Rows are (x̂, axis, ẑ) with x̂ ⊥ axis and ẑ = x̂ × axis, so the frame is right-handed.
+fn rotation_axis_to_y(axis: DVec3) -> DMat3 {
+    let (x_hat, _) = axis.any_orthonormal_pair();
+    let z_hat = x_hat.cross(axis);
+    DMat3::from_cols(x_hat, axis, z_hat).transpose()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rejects_bad_parameters() {
+        assert!(matches!(
+            Torus::canonical(1.0, 1.0),
+            Err(TorusError::NoHole { .. })
+        ));
+        assert!(matches!(
+            Torus::canonical(0.5, 1.0),
+            Err(TorusError::NoHole { .. })
+        ));
+        assert!(matches!(
+            Torus::canonical(f32::NAN, 1.0),
+            Err(TorusError::BadRadius { .. })
+        ));
+        assert!(matches!(
+            Torus::canonical(2.0, 0.0),
+            Err(TorusError::BadRadius { .. })
+        ));
+        assert!(matches!(
+            Torus::canonical(2.0, -1.0),
+            Err(TorusError::BadRadius { .. })
+        ));
+        assert!(matches!(
+            Torus::new(Vec3::ZERO, Vec3::ZERO, 2.0, 1.0),
+            Err(TorusError::BadAxis(_))
+        ));
+        assert!(matches!(
+            Torus::new(Vec3::splat(f32::INFINITY), Vec3::Y, 2.0, 1.0),
+            Err(TorusError::NonFiniteCenter(_))
+        ));
+        let msg = Torus::canonical(1.0, 2.0).unwrap_err().to_string();
+        assert!(msg.contains("nu") && msg.contains("> 1"), "{msg}");
+    }
+
+    #[test]
+    fn transform_is_rigid_and_maps_axis_to_y() {
+        for axis in [
+            Vec3::Y,
+            -Vec3::Y,
+            Vec3::X,
+            Vec3::Z,
+            Vec3::new(1.0, 2.0, -3.0),
+            Vec3::new(-1e-3, 1.0, 1e-3),
+        ] {
+            let t = Torus::new(Vec3::new(1.0, -2.0, 0.5), axis, 3.0, 1.0).unwrap();
+            let m = t.to_local_rotation_f64();
+            assert!((m.determinant() - 1.0).abs() < 1e-12);
+            assert!((m * m.transpose() - DMat3::IDENTITY).abs_diff_eq(DMat3::ZERO, 1e-12));
+            let y = m * t.axis().as_dvec3().normalize();
+            assert!((y - DVec3::Y).length() < 1e-12, "{axis} -> {y}");
+            let p = Vec3::new(0.3, 0.7, -0.2);
+            assert!((t.point_to_world(t.point_to_local(p)) - p).length() < 1e-5);
+        }
+    }
+
+    #[test]
+    fn world_aabb_contains_surface_samples() {
+        let t = Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(1.0, 1.0, 0.3), 2.0, 0.5).unwrap();
+        let (lo, hi) = t.world_aabb();
+        for i in 0..64 {
+            for j in 0..16 {
+                let phi = i as f32 * std::f32::consts::TAU / 64.0;
+                let th = j as f32 * std::f32::consts::TAU / 16.0;
+                let rho = 2.0 + 0.5 * th.cos();
+                let local = Vec3::new(rho * phi.cos(), 0.5 * th.sin(), rho * phi.sin());
+                let w = t.point_to_world(local);
+                assert!(w.cmpge(lo - 1e-5).all() && w.cmple(hi + 1e-5).all());
+            }
+        }
+    }
+}
