@@ -1,4 +1,22 @@
 //! Real roots of a quartic, the core of the exact intersection.
+//!
+//! Method: Ferrari. The depressed monic quartic `x⁴ + p x² + q x + r` is written as
+//! `(x² + ξ)² − (m x − h)²` with `ξ` the **greatest** real root of the resolvent cubic
+//! `4(2ξ − p)(ξ² − r) = q²`, `m = √(2ξ − p)` and `h = q/(2m)`, so it splits into
+//! `x² − m x + (ξ + h)` and `x² + m x + (ξ − h)` (the signs are tied to `q` through `h`;
+//! DESIGN §7). The greatest root guarantees `2ξ − p ≥ 0`, so `m` is real.
+//!
+//! Robustness, each for a reason:
+//! - the resolvent root comes from the closed form and is Newton-polished on the cubic;
+//! - `h` is taken as `q/(2m)` or as `sign(q)·√(ξ² − r)`, whichever has the smaller relative
+//!   error (the first is poor when `m` is tiny, the second when `ξ² ≈ r`);
+//! - `q ≈ 0` (rounding level) is solved as a biquadratic, so symmetric tangent pairs stay exact;
+//! - a quadratic factor whose discriminant is slightly negative may be a tangent double
+//!   root lost to rounding: the decision is then made on the quartic itself (its value at
+//!   the nearby local minimum, against a rounding bound), never on the factor;
+//! - every root gets up to two guarded Newton steps on the caller's polynomial.
+
+const EPS: f64 = f64::EPSILON;
 
 /// Up to four real roots, sorted ascending. A double root is reported twice.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -9,12 +27,711 @@ pub struct RealRoots {
 
 impl RealRoots {
     /// The roots, ascending.
+    #[inline]
     pub fn as_slice(&self) -> &[f64] {
         &self.roots[..self.len]
+    }
+
+    /// How many real roots (with multiplicity), 0 to 4.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// No real root.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    #[inline]
+    fn push(&mut self, x: f64) {
+        // A quartic has at most four roots; the branches below push at most two per factor.
+        debug_assert!(self.len < 4);
+        if self.len < 4 {
+            self.roots[self.len] = x;
+            self.len += 1;
+        }
+    }
+
+    /// Insertion sort: at most four elements, usually already almost sorted.
+    #[inline]
+    fn sort(&mut self) {
+        for i in 1..self.len {
+            let mut j = i;
+            while j > 0 && self.roots[j - 1] > self.roots[j] {
+                self.roots.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+    }
+
+    /// Applies an increasing map to every root (order is kept), e.g. a change of variable.
+    #[inline]
+    pub(crate) fn map_increasing(mut self, f: impl Fn(f64) -> f64) -> RealRoots {
+        for x in &mut self.roots[..self.len] {
+            *x = f(*x);
+        }
+        self
     }
 }
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
-pub fn solve_quartic(_c: [f64; 5]) -> RealRoots {
-    todo!("quartic helper")
+///
+/// The quartic is made monic and depressed (`t = x − c[1]/(4c[0])`), solved by
+/// [`solve_depressed_monic`]'s method, and each root is then Newton-polished on the
+/// original coefficients (the depression loses absolute accuracy when the shift is large).
+/// Returns no roots if `c[0] = 0` or a coefficient is not finite.
+pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
+    let [c4, c3, c2, c1, c0] = c;
+    if c4 == 0.0 || !c.iter().all(|v| v.is_finite()) {
+        return RealRoots::default();
+    }
+    let inv = 1.0 / c4;
+    let (b, cc, d) = (c2 * inv, c1 * inv, c0 * inv);
+    let s = 0.25 * c3 * inv;
+    // t = x − s:  p = b − 6s², q = c − 2s(b − 4s²), r = d − s(c − s(b − 3s²)).
+    let p = b - 6.0 * s * s;
+    let q = cc - 2.0 * s * (b - 4.0 * s * s);
+    let r = d - s * (cc - s * (b - 3.0 * s * s));
+    // Near-tangent decisions look for a local minimum, so they need the monic form.
+    let monic = [1.0, c3 * inv, b, cc, d];
+    let mut roots = ferrari(p, q, r, &monic, s).map_increasing(|x| x - s);
+    polish(&mut roots, &c);
+    roots
+}
+
+/// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
+/// Newton-polished on that quartic. A double root is reported twice.
+pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
+    if !(p.is_finite() && q.is_finite() && r.is_finite()) {
+        return RealRoots::default();
+    }
+    let c = [1.0, 0.0, p, q, r];
+    let mut roots = ferrari(p, q, r, &c, 0.0);
+    polish(&mut roots, &c);
+    roots
+}
+
+/// Ferrari on `x⁴ + p x² + q x + r`; roots (in x) sorted, not yet polished.
+///
+/// `orig` is the caller's quartic in `t = x − shift`: near-tangent decisions are made on it,
+/// because the depression itself can add rounding far above the depressed quartic's own
+/// magnitudes (|shift|⁴ ≫ |r|).
+#[inline]
+fn ferrari(p: f64, q: f64, r: f64, orig: &[f64; 5], shift: f64) -> RealRoots {
+    let mut out = RealRoots::default();
+    // x² scale of the roots; q ~ x³. Below ~1e-14 relative q is rounding noise (e.g. a ray
+    // in the torus's equatorial plane), and the biquadratic keeps symmetric double roots exact.
+    let s2 = p.abs().max(r.abs().sqrt());
+    if q.abs() <= 1e-14 * s2 * s2.sqrt() {
+        biquadratic(p, r, orig, shift, &mut out);
+        out.sort();
+        return out;
+    }
+
+    let xi = resolvent_greatest_root(p, q, r);
+    let m2 = (2.0 * xi - p).max(0.0);
+    let n2 = (xi * xi - r).max(0.0);
+    let m = m2.sqrt();
+    // Relative error of m² is ~ ε(2|ξ| + |p|)/m², of n² = h² is ~ ε(ξ² + |r|)/n²:
+    // take h from whichever is better determined.
+    let h = if m2 > 0.0 && (2.0 * xi.abs() + p.abs()) * n2 <= (xi * xi + r.abs()) * m2 {
+        q / (2.0 * m)
+    } else {
+        n2.sqrt().copysign(q)
+    };
+    // (ξ + h)(ξ − h) = r: compute the larger constant directly, the smaller as r/larger,
+    // which avoids the cancellation in ξ ∓ h.
+    let (mut k1, mut k2) = (xi + h, xi - h);
+    if k1.abs() >= k2.abs() {
+        if k1 != 0.0 {
+            k2 = r / k1;
+        }
+    } else {
+        k1 = r / k2;
+    }
+    quadratic_factor(-m, k1, orig, shift, &mut out);
+    quadratic_factor(m, k2, orig, shift, &mut out);
+    out.sort();
+    out
+}
+
+/// `y² + p y + r = 0` with `y = x²`.
+#[inline]
+fn biquadratic(p: f64, r: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
+    let disc = p * p - 4.0 * r;
+    if disc < 0.0 {
+        // y = −p/2 ± i√(−disc)/2. If that is near the real axis it may be a tangent pair of
+        // double roots x = ±√(−p/2) (e.g. (x² − 1)²) lost to rounding: decide on the quartic.
+        if -disc <= 1e-4 * (p * p + 4.0 * r.abs()) {
+            let x0 = (-0.5 * p).max(0.0).sqrt();
+            let beta = if x0 > 0.0 {
+                0.5 * (-disc).sqrt() / x0
+            } else {
+                (-disc).sqrt().sqrt()
+            };
+            near_double_root(-x0, beta, orig, shift, out);
+            if x0 > 0.0 {
+                near_double_root(x0, beta, orig, shift, out);
+            }
+        }
+        return;
+    }
+    let sq = disc.sqrt();
+    let y1 = -0.5 * (p + sq.copysign(p));
+    let y2 = if y1 != 0.0 { r / y1 } else { 0.0 };
+    // y ≈ 0 by rounding only means a double root x = 0.
+    let ytol = 32.0 * EPS * (p.abs() + r.abs().sqrt());
+    for y in [y1, y2] {
+        if y >= -ytol {
+            let x = y.max(0.0).sqrt();
+            out.push(-x);
+            out.push(x);
+        }
+    }
+}
+
+/// The greatest real root of `ξ³ − (p/2)ξ² − rξ + (pr/2 − q²/8)`, i.e. of
+/// `4(2ξ − p)(ξ² − r) = q²`, by Cardano / the trigonometric form, then Newton.
+#[inline]
+fn resolvent_greatest_root(p: f64, q: f64, r: f64) -> f64 {
+    let a = -0.5 * p;
+    let b = -r;
+    let c = 0.5 * p * r - 0.125 * q * q;
+    // ξ = y − a/3 gives y³ + P y + Q.
+    let a3 = a / 3.0;
+    let pp = b - a * a3;
+    let qq = c - a3 * (b - 2.0 * a3 * a3);
+    let disc = 0.25 * qq * qq + pp * pp * pp / 27.0;
+    let y = if disc > 0.0 {
+        // One real root; take the cube root of the larger-magnitude term to avoid cancellation.
+        let big = (0.5 * qq.abs() + disc.sqrt()).cbrt();
+        let u = if qq > 0.0 { -big } else { big };
+        if u != 0.0 { u - pp / (3.0 * u) } else { 0.0 }
+    } else {
+        // Three real roots (P ≤ 0); k = 0 of 2√(−P/3)·cos((θ + 2πk)/3) is the greatest.
+        let k = (-pp / 3.0).max(0.0).sqrt();
+        if k > 0.0 {
+            let cos3 = (-0.5 * qq / (k * k * k)).clamp(-1.0, 1.0);
+            2.0 * k * (cos3.acos() / 3.0).cos()
+        } else {
+            0.0
+        }
+    };
+    let mut xi = y - a3;
+
+    // Newton on the cubic: the closed form loses digits when P³ ≈ −27Q²/4. Steps are
+    // accepted only if small and if they reduce |g|, so a multiple root cannot throw ξ away.
+    let scale = xi.abs() + p.abs() + r.abs().sqrt();
+    let g = |x: f64| ((x + a) * x + b) * x + c;
+    let mut gx = g(xi);
+    for _ in 0..2 {
+        let dg = (3.0 * xi + 2.0 * a) * xi + b;
+        if gx == 0.0 || dg <= 0.0 {
+            break;
+        }
+        let step = gx / dg;
+        // Written so that NaN also fails the test.
+        let ok = step.abs() <= 1e-6 * scale;
+        if !ok {
+            break;
+        }
+        let xn = xi - step;
+        let gn = g(xn);
+        if gn.abs() >= gx.abs() {
+            break;
+        }
+        xi = xn;
+        gx = gn;
+    }
+    xi
+}
+
+/// Roots of the factor `x² + B x + C` of the depressed quartic.
+#[inline]
+fn quadratic_factor(bq: f64, cq: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
+    let disc = bq * bq - 4.0 * cq;
+    if disc >= 0.0 {
+        let t = -0.5 * (bq + disc.sqrt().copysign(bq));
+        if t != 0.0 {
+            out.push(t);
+            out.push(cq / t);
+        } else {
+            out.push(0.0);
+            out.push(0.0);
+        }
+    } else if -disc <= 1e-4 * (bq * bq + 4.0 * cq.abs()) {
+        // Complex pair −B/2 ± iβ with small β: maybe a tangent double root that the
+        // rounding of ξ pushed off the real axis. Decide on the quartic itself.
+        near_double_root(-0.5 * bq, 0.5 * (-disc).sqrt(), orig, shift, out);
+    }
+}
+
+/// Near `x0` (within `beta`), finds the local minimum of the caller's quartic `orig` (in
+/// `t = x − shift`); if its value there is ≤ 0 up to its rounding error, pushes the two
+/// roots around it, in x: a double root when `f_min ≈ 0`, else `t* ± √(−2f/f'')`.
+#[cold]
+fn near_double_root(x0: f64, beta: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
+    let t0 = x0 - shift;
+    let mut t = t0;
+    for _ in 0..3 {
+        let (_, d1, d2) = eval2(orig, t);
+        // Written so that NaN also fails the test.
+        let ok = d2 > 0.0;
+        if !ok {
+            break;
+        }
+        let tn = t - d1 / d2;
+        // Written so that NaN also fails the test.
+        let ok = (tn - t0).abs() <= beta;
+        if !ok {
+            break;
+        }
+        t = tn;
+    }
+    let (f, _, d2) = eval2(orig, t);
+    let mag = orig.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
+    if f <= 32.0 * EPS * mag {
+        let delta = if f < 0.0 && d2 > 0.0 {
+            (-2.0 * f / d2).sqrt()
+        } else {
+            0.0
+        };
+        out.push(t - delta + shift);
+        out.push(t + delta + shift);
+    }
+}
+
+/// `f(t)`, `f'(t)` and `f''(t)` for `c = [c4, c3, c2, c1, c0]`, Horner.
+#[inline]
+fn eval2(c: &[f64; 5], x: f64) -> (f64, f64, f64) {
+    let mut f = c[0];
+    let mut df = 0.0;
+    let mut d2f = 0.0;
+    for &ci in &c[1..] {
+        d2f = d2f * x + 2.0 * df;
+        df = df * x + f;
+        f = f * x + ci;
+    }
+    (f, df, d2f)
+}
+
+/// `f(x)` and `f'(x)` for `c = [c4, c3, c2, c1, c0]`, Horner.
+#[inline]
+fn eval(c: &[f64; 5], x: f64) -> (f64, f64) {
+    let mut f = c[0];
+    let mut df = 0.0;
+    for &ci in &c[1..] {
+        df = df * x + f;
+        f = f * x + ci;
+    }
+    (f, df)
+}
+
+/// Up to two Newton steps per root on `c`. A step is taken only if it stays within half the
+/// distance to the neighbouring roots (so two close roots cannot merge; a double root
+/// reported twice does not move) and reduces |f|.
+#[inline]
+fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
+    let n = roots.len;
+    refine_close_pairs(roots, c);
+    let orig = roots.roots;
+    for i in 0..n {
+        let x0 = orig[i];
+        let mut lim = f64::INFINITY;
+        if i > 0 {
+            lim = lim.min(x0 - orig[i - 1]);
+        }
+        if i + 1 < n {
+            lim = lim.min(orig[i + 1] - x0);
+        }
+        lim *= 0.5;
+        let mut x = x0;
+        let (mut f, mut df) = eval(c, x);
+        for _ in 0..2 {
+            if f == 0.0 || df == 0.0 {
+                break;
+            }
+            let xn = x - f / df;
+            // Written so that NaN also fails the test.
+            let ok = (xn - x0).abs() <= lim;
+            if !ok {
+                break;
+            }
+            let (fnew, dfnew) = eval(c, xn);
+            if fnew.abs() >= f.abs() {
+                break;
+            }
+            x = xn;
+            f = fnew;
+            df = dfnew;
+        }
+        roots.roots[i] = x;
+    }
+    roots.sort();
+}
+
+/// A pair of roots much closer to each other than to the rest is a (near-)double root,
+/// which Newton on `f` cannot improve (f' ≈ 0) and which the depression may have blurred by
+/// √(rounding of the shift). Re-derive it from the caller's `c`: Newton on `f'` to the
+/// extremum `x*` between them, then `x* ± √(−2f/f'')` (both `x*` if `f(x*)` has the wrong sign,
+/// which is within rounding since Ferrari found the pair real).
+#[inline]
+fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) {
+    let n = roots.len;
+    let mut i = 0;
+    while i + 1 < n {
+        let (a, b) = (roots.roots[i], roots.roots[i + 1]);
+        let gap = b - a;
+        let mid = 0.5 * (a + b);
+        let mut other = f64::INFINITY;
+        if i > 0 {
+            other = other.min(mid - roots.roots[i - 1]);
+        }
+        if i + 2 < n {
+            other = other.min(roots.roots[i + 2] - mid);
+        }
+        // Distance scale: to the other real roots, or |x| if there are none.
+        let scale = if other.is_finite() { other } else { mid.abs() };
+        if gap > 1e-4 * scale {
+            i += 1;
+            continue;
+        }
+        let mut x = mid;
+        for _ in 0..3 {
+            let (_, d1, d2) = eval2(c, x);
+            if d2 == 0.0 {
+                break;
+            }
+            let xn = x - d1 / d2;
+            // Stay far from the other critical points (≈ half-way to the other roots).
+            // Written so that NaN also fails the test.
+            let ok = (xn - mid).abs() <= 0.1 * scale;
+            if !ok {
+                break;
+            }
+            x = xn;
+        }
+        let (f, _, d2) = eval2(c, x);
+        let delta = if d2 != 0.0 && f * d2 < 0.0 {
+            (-2.0 * f / d2).sqrt()
+        } else {
+            0.0
+        };
+        roots.roots[i] = x - delta;
+        roots.roots[i + 1] = x + delta;
+        i += 2;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{RngExt, SeedableRng};
+    use rand_pcg::Pcg64;
+
+    /// Coefficients of k·(t − a)(t − b)(t − c)(t − d).
+    fn from_roots(k: f64, rs: [f64; 4]) -> [f64; 5] {
+        let mut c = [k, 0.0, 0.0, 0.0, 0.0];
+        // Multiply by (t − ρ) one factor at a time: c holds the polynomial, highest first.
+        let mut deg = 0;
+        for rho in rs {
+            deg += 1;
+            for j in (1..=deg).rev() {
+                c[j] -= rho * c[j - 1];
+            }
+        }
+        c
+    }
+
+    /// Coefficients of (t² + b t + c)(t − x)(t − y).
+    fn from_pair_and_roots(b: f64, cq: f64, x: f64, y: f64) -> [f64; 5] {
+        let l = [1.0, -(x + y), x * y];
+        let qd = [1.0, b, cq];
+        let mut c = [0.0; 5];
+        for i in 0..3 {
+            for j in 0..3 {
+                c[i + j] += l[i] * qd[j];
+            }
+        }
+        c
+    }
+
+    fn sorted(mut v: [f64; 4]) -> [f64; 4] {
+        v.sort_by(f64::total_cmp);
+        v
+    }
+
+    /// Asserts the solver returns exactly `want` (sorted) with |err| ≤ tol·max(1, |root|).
+    fn assert_roots(c: [f64; 5], want: &[f64], tol: f64) {
+        let got = solve_quartic(c);
+        let got = got.as_slice();
+        assert_eq!(
+            got.len(),
+            want.len(),
+            "c = {c:?}: got {got:?}, want {want:?}"
+        );
+        for (g, w) in got.iter().zip(want) {
+            assert!(
+                (g - w).abs() <= tol * w.abs().max(1.0),
+                "c = {c:?}: got {got:?}, want {want:?} (tol {tol})"
+            );
+        }
+    }
+
+    #[test]
+    fn distinct_roots() {
+        assert_roots(
+            from_roots(1.0, [1.0, 2.0, 3.0, 4.0]),
+            &[1.0, 2.0, 3.0, 4.0],
+            1e-13,
+        );
+        assert_roots(
+            from_roots(-3.0, [-2.5, 0.5, 0.0, 7.0]),
+            &[-2.5, 0.0, 0.5, 7.0],
+            1e-13,
+        );
+        assert_roots(
+            from_roots(1.0, [-1.0, -2.0, 1.0, 2.0]),
+            &[-2.0, -1.0, 1.0, 2.0],
+            1e-14,
+        );
+        // Large shift: roots clustered far from 0 (the depression cancels; polish repairs it).
+        assert_roots(
+            from_roots(1.0, [1000.0, 1001.0, 1002.0, 1003.0]),
+            &[1000.0, 1001.0, 1002.0, 1003.0],
+            1e-11,
+        );
+    }
+
+    #[test]
+    fn double_roots() {
+        // Double roots are ill-conditioned: error ~ √ε ≈ 1.5e-8, asserted at 1e-6.
+        assert_roots(
+            from_roots(1.0, [1.0, 1.0, 2.0, 3.0]),
+            &[1.0, 1.0, 2.0, 3.0],
+            1e-6,
+        );
+        assert_roots(
+            from_roots(1.0, [-1.0, 0.5, 3.0, 3.0]),
+            &[-1.0, 0.5, 3.0, 3.0],
+            1e-6,
+        );
+        assert_roots(
+            from_roots(2.0, [-4.0, 0.0, 0.0, 5.0]),
+            &[-4.0, 0.0, 0.0, 5.0],
+            1e-6,
+        );
+        // Two double pairs, symmetric (the tangent-on-top torus case, q = 0) and not.
+        assert_roots(
+            from_roots(1.0, [-1.0, -1.0, 1.0, 1.0]),
+            &[-1.0, -1.0, 1.0, 1.0],
+            1e-12,
+        );
+        assert_roots(
+            from_roots(1.0, [-2.0, -2.0, 3.0, 3.0]),
+            &[-2.0, -2.0, 3.0, 3.0],
+            1e-6,
+        );
+        assert_roots(
+            from_roots(1.0, [0.3, 0.3, 1.7, 1.7]),
+            &[0.3, 0.3, 1.7, 1.7],
+            1e-6,
+        );
+    }
+
+    #[test]
+    fn triple_and_quadruple_roots() {
+        // Triple root: error ~ ε^(1/3) ≈ 6e-6; asserted at 1e-4. The cluster may come back
+        // as one or three real roots (both are within rounding of the truth), but every
+        // returned root must be close to a true one and the simple root must be there.
+        for (rs, simple) in [([2.0, 2.0, 2.0, -1.0], -1.0), ([-1.0, 0.5, 0.5, 0.5], -1.0)] {
+            let got = solve_quartic(from_roots(1.0, rs));
+            let got = got.as_slice();
+            assert!(got.len() == 2 || got.len() == 4, "{rs:?}: {got:?}");
+            assert!(
+                got.iter().any(|g| (g - simple).abs() < 1e-10),
+                "{rs:?}: {got:?}"
+            );
+            for g in got {
+                assert!(
+                    rs.iter().any(|w| (g - w).abs() < 1e-4),
+                    "{rs:?}: spurious {g} in {got:?}"
+                );
+            }
+        }
+        // Quadruple root: error ~ ε^(1/4) ≈ 1.2e-4; asserted at 1e-3.
+        for a in [0.0, 1.0, -2.5] {
+            let got = solve_quartic(from_roots(1.0, [a; 4]));
+            let got = got.as_slice();
+            assert!(!got.is_empty(), "quadruple {a}: no root");
+            assert!(got.len() % 2 == 0, "quadruple {a}: {got:?}");
+            for g in got {
+                assert!((g - a).abs() < 1e-3, "quadruple {a}: {got:?}");
+            }
+        }
+        // Exactly t⁴ = 0 and (t−1)⁴ come back as four roots.
+        assert_roots([1.0, 0.0, 0.0, 0.0, 0.0], &[0.0; 4], 0.0);
+        assert_eq!(solve_quartic(from_roots(1.0, [1.0; 4])).len(), 4);
+    }
+
+    #[test]
+    fn complex_pairs() {
+        // (t² + 1)(t − 1)(t − 3): two real roots.
+        assert_roots(from_pair_and_roots(0.0, 1.0, 1.0, 3.0), &[1.0, 3.0], 1e-13);
+        // (t² − 2t + 5)(t + 2)(t − 0.5): pair 1 ± 2i.
+        assert_roots(
+            from_pair_and_roots(-2.0, 5.0, -2.0, 0.5),
+            &[-2.0, 0.5],
+            1e-13,
+        );
+        // Two complex pairs: (t² + 1)(t² + 2t + 2): no real root.
+        let c = [1.0, 2.0, 3.0, 2.0, 2.0];
+        assert!(solve_quartic(c).is_empty(), "{:?}", solve_quartic(c));
+        // t⁴ + 1 and t⁴ + t² + 1: none.
+        assert!(solve_quartic([1.0, 0.0, 0.0, 0.0, 1.0]).is_empty());
+        assert!(solve_quartic([1.0, 0.0, 1.0, 0.0, 1.0]).is_empty());
+        // Near-tangent miss: (t² + 1e-6)(t − 2)(t − 5): the pair ±1e-3 i is far above rounding.
+        assert_roots(from_pair_and_roots(0.0, 1e-6, 2.0, 5.0), &[2.0, 5.0], 1e-13);
+        // Near-tangent hit: (t² − 1e-6)(t − 2)(t − 5): roots ±1e-3 stay real and distinct.
+        assert_roots(
+            from_pair_and_roots(0.0, -1e-6, 2.0, 5.0),
+            &[-1e-3, 1e-3, 2.0, 5.0],
+            1e-12,
+        );
+    }
+
+    #[test]
+    fn wide_dynamic_range_and_scaling() {
+        // Roots over nine decades: each relative error ≤ 1e-12.
+        let rs = [1e-6, 1e-2, 1e1, 1e3];
+        let got = solve_quartic(from_roots(1.0, rs));
+        assert_eq!(got.len(), 4, "{got:?}");
+        for (g, w) in got.as_slice().iter().zip(rs) {
+            assert!(((g - w) / w).abs() < 1e-12, "{got:?}");
+        }
+        // Scaling every root by 2^k and the leading coefficient by anything: same relative roots.
+        for k in [-40, -10, 0, 10, 40] {
+            let s = 2f64.powi(k);
+            let rs = [-1.5 * s, 0.25 * s, 0.75 * s, 2.0 * s];
+            let got = solve_quartic(from_roots(1e-7, rs));
+            assert_eq!(got.len(), 4, "k = {k}: {got:?}");
+            for (g, w) in got.as_slice().iter().zip(rs) {
+                assert!(((g - w) / w).abs() < 1e-12, "k = {k}: {got:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn depressed_monic_matches_general() {
+        // x⁴ − 5x² + 4 = (x² − 1)(x² − 4), and a q ≠ 0 case built from roots summing to 0.
+        let r = solve_depressed_monic(-5.0, 0.0, 4.0);
+        assert_eq!(r.as_slice(), &[-2.0, -1.0, 1.0, 2.0]);
+        let c = from_roots(1.0, [-3.0, -0.5, 1.0, 2.5]);
+        assert_eq!(c[1], 0.0);
+        let r = solve_depressed_monic(c[2], c[3], c[4]);
+        let want = [-3.0, -0.5, 1.0, 2.5];
+        assert_eq!(r.len(), 4);
+        for (g, w) in r.as_slice().iter().zip(want) {
+            assert!((g - w).abs() < 1e-14, "{r:?}");
+        }
+        // Tangent pair of double roots with rounding-level q (a horizontal torus ray).
+        let r = solve_depressed_monic(-2.0, 3e-16, 1.0);
+        assert_eq!(r.len(), 4, "{r:?}");
+        for (g, w) in r.as_slice().iter().zip([-1.0, -1.0, 1.0, 1.0]) {
+            assert!((g - w).abs() < 1e-7, "{r:?}");
+        }
+    }
+
+    #[test]
+    fn bad_input_gives_no_roots() {
+        assert!(solve_quartic([0.0, 1.0, 2.0, 3.0, 4.0]).is_empty());
+        assert!(solve_quartic([1.0, f64::NAN, 0.0, 0.0, -1.0]).is_empty());
+        assert!(solve_depressed_monic(f64::INFINITY, 0.0, 0.0).is_empty());
+    }
+
+    /// Condition-aware tolerance for a simple root w: ε·Σ|cᵢ wⁱ| / |f'(w)|.
+    fn cond_tol(c: &[f64; 5], w: f64) -> f64 {
+        let (_, df) = eval(c, w);
+        let mag = c.iter().fold(0.0, |acc, ci| acc * w.abs() + ci.abs());
+        EPS * mag / df.abs()
+    }
+
+    #[test]
+    fn random_real_root_sets() {
+        // 20 000 sets of four real roots in [−10, 10]: exactly four found, each within
+        // 64·(ε·Σ|cᵢwⁱ|/|f'(w)|) + 1e-14 of the truth (the root's own condition number).
+        let mut rng = Pcg64::seed_from_u64(0x7051_0001);
+        let mut worst = 0.0f64;
+        for _ in 0..20_000 {
+            let rs = sorted([(); 4].map(|_| rng.random_range(-10.0..10.0)));
+            let k = rng.random_range(0.1..10.0);
+            let c = from_roots(k, rs);
+            let got = solve_quartic(c);
+            assert_eq!(got.len(), 4, "roots {rs:?}: got {got:?}");
+            for (g, w) in got.as_slice().iter().zip(rs) {
+                let tol = 64.0 * cond_tol(&c, w) + 1e-14;
+                worst = worst.max((g - w).abs() / tol);
+                assert!((g - w).abs() <= tol, "roots {rs:?}: got {got:?}, tol {tol}");
+            }
+        }
+        assert!(worst <= 1.0);
+    }
+
+    #[test]
+    fn random_sets_with_complex_pairs() {
+        // Two real roots and a pair α ± iβ with β ≥ 0.05: exactly the two real roots,
+        // and four complex roots: none.
+        let mut rng = Pcg64::seed_from_u64(0x7051_0002);
+        for _ in 0..10_000 {
+            let x = rng.random_range(-10.0..10.0);
+            let y = rng.random_range(-10.0..10.0);
+            let (x, y) = if x < y { (x, y) } else { (y, x) };
+            let alpha: f64 = rng.random_range(-10.0..10.0);
+            let beta: f64 = rng.random_range(0.05..5.0);
+            let c = from_pair_and_roots(-2.0 * alpha, alpha * alpha + beta * beta, x, y);
+            let got = solve_quartic(c);
+            assert_eq!(got.len(), 2, "{x} {y} {alpha}±{beta}i: {got:?}");
+            for (g, w) in got.as_slice().iter().zip([x, y]) {
+                let tol = 64.0 * cond_tol(&c, w) + 1e-14;
+                assert!((g - w).abs() <= tol, "{x} {y} {alpha}±{beta}i: {got:?}");
+            }
+            // (t² − 2αt + α² + β²)(t² − 2γt + γ² + δ²): no real roots.
+            let gamma: f64 = rng.random_range(-10.0..10.0);
+            let delta: f64 = rng.random_range(0.05..5.0);
+            let (b1, c1) = (-2.0 * alpha, alpha * alpha + beta * beta);
+            let (b2, c2) = (-2.0 * gamma, gamma * gamma + delta * delta);
+            let c = [1.0, b1 + b2, c1 + c2 + b1 * b2, b1 * c2 + b2 * c1, c1 * c2];
+            assert!(solve_quartic(c).is_empty(), "{c:?}: {:?}", solve_quartic(c));
+        }
+    }
+
+    #[test]
+    fn random_double_roots_are_kept() {
+        // (t − a)²(t − b)(t − c) with random a, b, c: the double root must not be lost.
+        // A double root is √-conditioned: rounding the coefficients moves it by up to
+        // √(2ε·Σ|cᵢaⁱ|/|f''(a)|); asserted within 8× that (+1e-12). Simple roots as above.
+        let mut rng = Pcg64::seed_from_u64(0x7051_0003);
+        for _ in 0..10_000 {
+            let a = rng.random_range(-5.0..5.0);
+            let b = rng.random_range(-5.0..5.0);
+            let cc = rng.random_range(-5.0..5.0);
+            let want = sorted([a, a, b, cc]);
+            let c = from_roots(1.0, want);
+            let got = solve_quartic(c);
+            assert_eq!(got.len(), 4, "{want:?}: {got:?}");
+            let mag = c.iter().fold(0.0, |acc, ci| acc * a.abs() + ci.abs());
+            let d2 = 2.0 * ((a - b) * (a - cc)).abs();
+            let tol_double = 8.0 * (2.0 * EPS * mag / d2).sqrt() + 1e-12;
+            for (g, w) in got.as_slice().iter().zip(want) {
+                let tol = if w == a {
+                    tol_double
+                } else {
+                    64.0 * cond_tol(&c, w) + 1e-14
+                };
+                assert!((g - w).abs() <= tol, "{want:?}: {got:?}, tol {tol}");
+            }
+        }
+    }
 }
