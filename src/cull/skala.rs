@@ -13,9 +13,9 @@ use glam::Vec3;
 ///
 /// * **hole, a < R − r** (case a): with x_B = √((R − r)² − a²) (Eq. 104, not the printed
 ///   Eq. 102) the circles k, k′ of radius r centred at (±(x_B + r), 0) bound the two ovals
-///   near the hole. Because p ⊥ d̂, the line's in-plane moment about the origin is p_y/h,
-///   so "crosses Y = 0 with |X₀| < x_B + r and misses both circles" is the one inequality
-///   `x_B·h·|d̂_y| ≥ |p_y| + r·h·(1 − |d̂_y|)`, squared to drop the root.
+///   near the hole. With the line's in-plane moment about the axis L (= p_y/h at the exact
+///   foot point), "crosses Y = 0 with |X₀| < x_B + r and misses both circles" is the one
+///   inequality `x_B·h·|d̂_y| ≥ |L|·h + r·h·(1 − |d̂_y|)`, squared to drop the root.
 ///   *Why it is sound:* with u = ρ − (R − r) and w = X − x_B, dX/dρ = ρ/X ≥ 1 gives w ≥ u,
 ///   and on the section (w − r)² + Y² − r² = (w − u)(w + u − 2r) ≤ 0 while w ≤ r: the part
 ///   of the oval with X ≤ x_B + r lies in k. A line from the hole that reaches the rest of
@@ -99,8 +99,12 @@ pub(crate) fn skala_keeps<F: SectionFormulas>(b: &CullBounds, origin: Vec3, dir:
         return lowest * lowest <= F::band_height_sq_h2(b, a_h, h);
     }
     if a_h < b.inner_safe * h {
-        // Hole (case a): reject if the line falls through between k and k′.
-        let rhs = p.y.abs() + F::minor(b) * h * (1.0 - n.y.abs());
+        // Hole (case a): reject if the line falls through between k and k′. The in-plane
+        // moment L·h = (p_x d̂_x + p_z d̂_z)·d̂_y − p_y·h² is the same at every point of the
+        // line. (p_y alone would do if p were exactly the foot point, but in f32 p slides
+        // along the line by ~ε|o|, and p_y/h would amplify that by 1/h for steep lines.)
+        let moment_h = (p.x * n.x + p.z * n.z) * n.y - p.y * h2;
+        let rhs = moment_h.abs() + F::minor(b) * h * (1.0 - n.y.abs());
         return F::hole_edge_sq_h2(b, a_h, h) * (n.y * n.y) < rhs * rhs;
     }
     true
