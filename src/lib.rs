@@ -3,7 +3,13 @@
 //! Bounding tests ("culls") for ray–torus intersection, an exact intersection, and an
 //! independent f64 oracle to prove the culls conservative.
 //!
-//! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect`].
+//! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect()`]
+//! (or both at once: [`intersect_culled`]).
+//!
+//! The rest of the crate is the measuring harness behind the `torus-cull` command and
+//! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
+//! generators and workload files), [`measure`] (counting), [`results`] (the results
+//! JSON), [`compare`], [`report`] and [`plot`], and [`eval`].
 //!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
@@ -28,17 +34,54 @@
 
 #![warn(missing_docs)]
 
+pub mod compare;
 pub mod cull;
+pub mod eval;
 pub mod intersect;
+pub mod measure;
 pub mod oracle;
+pub mod plot;
 pub mod quartic;
 mod ray;
+pub mod report;
+pub mod results;
 mod torus;
+pub mod workload;
 
 pub use cull::{
-    AabbCull, Cull, CullBounds, CullKind, CychoszCull, NoCull, SkalaCull, SphereCull,
+    AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, NoCull, SkalaCull, SphereCull,
     ThickCylinderCull,
 };
 pub use intersect::{Hit, intersect};
 pub use ray::{Ray, RayError};
 pub use torus::{LocalLine, Torus, TorusError};
+
+/// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
+/// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
+///
+/// ```
+/// use torus_cull::{CullBounds, CychoszCull, NoCull, Ray, SkalaCull, Torus, intersect_culled};
+/// use glam::Vec3;
+/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+/// let bounds = CullBounds::of(&torus);
+/// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.1, -1.0, 0.0))?;
+/// // Every conservative cull gives the same answer; skala just gets there without the quartic.
+/// assert_eq!(intersect_culled(&SkalaCull, &torus, &bounds, &hole), None);
+/// assert_eq!(intersect_culled(&CychoszCull, &torus, &bounds, &hole), None);
+/// assert_eq!(intersect_culled(&NoCull, &torus, &bounds, &hole), None);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[inline(always)]
+pub fn intersect_culled<C: Cull>(
+    cull: &C,
+    torus: &Torus,
+    bounds: &CullBounds,
+    ray: &Ray,
+) -> Option<Hit> {
+    let line = torus.line_to_local(ray);
+    if cull.keeps(bounds, line.origin, line.dir) {
+        intersect(torus, ray)
+    } else {
+        None
+    }
+}

@@ -1,1 +1,237 @@
-fn main() {}
+//! The `torus-cull` command line.
+//!
+//! Exit codes: 0 fine; 1 the measurement found a problem (a false reject in `run`, a
+//! regression in `compare`); 2 the input or environment is bad (the message says which
+//! file and field).
+
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::fs::File;
+use std::io::{BufReader, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torus_cull::results::{self, Results};
+use torus_cull::workload::spec::Workload;
+use torus_cull::{measure, report};
+
+#[derive(Parser)]
+#[command(
+    name = "torus-cull",
+    version,
+    about = "Measure ray-torus culls against an f64 oracle"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a workload: rejection counts for every case × ν × cull, tables, JSON and plots.
+    Run {
+        /// Workload file.
+        #[arg(long, default_value = "workloads/default.json")]
+        workload: PathBuf,
+        /// Results JSON (default: results/<short commit>[-dirty].json).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Worker threads (default: available cores).
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Skip the SVG plots.
+        #[arg(long)]
+        no_plots: bool,
+    },
+    /// Diff two results files; exits 1 on a regression (for CI gates).
+    Compare {
+        /// The older results JSON.
+        old: PathBuf,
+        /// The newer results JSON.
+        new: PathBuf,
+        /// Slowdown (percent) beyond which a timing with disjoint intervals is a regression.
+        #[arg(long, default_value_t = 10.0)]
+        threshold: f64,
+        /// Show only records with a flag.
+        #[arg(long)]
+        only_changes: bool,
+    },
+    /// Write the SVG charts of a results file.
+    Plot {
+        /// Results JSON.
+        file: PathBuf,
+        /// Where to write the SVGs (default: next to the file).
+        #[arg(long)]
+        out_dir: Option<PathBuf>,
+    },
+    /// Check every cull and the oracle on your own rays (CSV in the torus frame).
+    Eval {
+        /// Major radius R.
+        #[arg(long = "major")]
+        major: f32,
+        /// Minor radius r (R > r > 0).
+        #[arg(long = "minor")]
+        minor: f32,
+        /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin).
+        #[arg(long)]
+        rays: PathBuf,
+        /// Output CSV (default: stdout).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run {
+            workload,
+            out,
+            threads,
+            no_plots,
+        } => run(&workload, out, threads, no_plots),
+        Command::Plot { file, out_dir } => plot(&file, out_dir),
+        Command::Compare {
+            old,
+            new,
+            threshold,
+            only_changes,
+        } => compare(&old, &new, threshold, only_changes),
+        Command::Eval {
+            major,
+            minor,
+            rays,
+            out,
+        } => eval(major, minor, &rays, out.as_deref()),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
+
+fn eval(
+    major: f32,
+    minor: f32,
+    rays: &std::path::Path,
+    out: Option<&std::path::Path>,
+) -> CliResult {
+    let name = rays.display().to_string();
+    let input: Box<dyn std::io::BufRead> = if name == "-" {
+        Box::new(std::io::stdin().lock())
+    } else {
+        let file = File::open(rays).map_err(|e| format!("--rays {name}: {e}"))?;
+        Box::new(BufReader::new(file))
+    };
+    let output: Box<dyn Write> = match out {
+        Some(path) => Box::new(BufWriter::new(
+            File::create(path).map_err(|e| format!("--out {}: {e}", path.display()))?,
+        )),
+        None => Box::new(BufWriter::new(std::io::stdout().lock())),
+    };
+    let rows = torus_cull::eval::eval_csv(major, minor, input, &name, output)?;
+    eprintln!("evaluated {rows} rays");
+    Ok(ExitCode::SUCCESS)
+}
+
+fn run(workload: &Path, out: Option<PathBuf>, threads: Option<usize>, no_plots: bool) -> CliResult {
+    let workload = Workload::load(workload)?;
+    let threads = threads
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1);
+    let units = measure::units(&workload).len() as u64;
+    let bar = ProgressBar::new(units * workload.rays as u64).with_style(
+        ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rays ({eta})")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    bar.set_message(format!("{}: {} case x nu", workload.name, units));
+    let (records, false_rejects) = measure::rejection_sweep(&workload, threads, &|n| bar.inc(n))?;
+    bar.finish_and_clear();
+    let mut results = Results::new(&workload, "run");
+    results.rejection = records;
+    print!("{}", report::miss_capture_tables(&results));
+    let path = out.unwrap_or_else(|| results::default_path(Path::new("results"), ""));
+    results.save(&path)?;
+    println!("wrote {}", path.display());
+    if !no_plots {
+        let dir = path
+            .parent()
+            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+        let stem = path
+            .file_stem()
+            .map_or("results".into(), |s| s.to_string_lossy());
+        let written = torus_cull::plot::plot_results(&results, &dir, &stem)?;
+        println!(
+            "wrote {} plots to {}/{stem}-*.svg",
+            written.len(),
+            dir.display()
+        );
+    }
+    if !false_rejects.is_empty() {
+        for f in false_rejects.iter().take(20) {
+            eprintln!(
+                "FALSE REJECT: cull {} case {} nu {} ray #{} (workload seed {}, stream seed {:#x}): \
+                 origin {} dir {} margin {:e}",
+                f.cull,
+                f.case,
+                f.nu,
+                f.index,
+                workload.seed,
+                f.stream_seed,
+                f.ray.origin(),
+                f.ray.dir(),
+                f.margin
+            );
+        }
+        eprintln!(
+            "error: {} false rejects: a cull rejected rays the oracle calls hits",
+            false_rejects.len()
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
+    let results = Results::load(file)?;
+    let dir = out_dir.unwrap_or_else(|| {
+        file.parent()
+            .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+    });
+    let stem = file
+        .file_stem()
+        .map_or("results".into(), |s| s.to_string_lossy());
+    let written = torus_cull::plot::plot_results(&results, &dir, &stem)?;
+    for p in &written {
+        println!("wrote {}", p.display());
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> CliResult {
+    if !(threshold.is_finite() && threshold >= 0.0) {
+        return Err(
+            format!("--threshold {threshold} is invalid (allowed: a percentage >= 0)").into(),
+        );
+    }
+    let (a, b) = (Results::load(old)?, Results::load(new)?);
+    let report = torus_cull::compare::compare(&a, &b, threshold / 100.0);
+    let name = |p: &Path| {
+        p.file_stem()
+            .map_or("?".into(), |s| s.to_string_lossy().into_owned())
+    };
+    print!(
+        "{}",
+        torus_cull::compare::render(&report, &name(old), &name(new), only_changes)
+    );
+    Ok(if report.regressions() > 0 {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}

@@ -1,0 +1,35 @@
+//! Line families shared by the integration tests.
+#![allow(dead_code)]
+
+use torus_cull::workload::{Batch, Case, Pose, generate};
+use torus_cull::{Ray, Torus};
+
+/// The ν values the conservativeness claims are tested at.
+pub const NUS: [f64; 7] = [1.1, 1.5, 2.0, 3.0, 5.0, 10.0, 32.0];
+
+/// Rays per pose: each batch draws a new random world pose.
+pub const BATCH: usize = 2_000;
+
+/// A family of `count` rays of `case` at ν, in batches at different random poses.
+pub fn family(case: Case, nu: f64, count: usize, seed: u64) -> Vec<Batch> {
+    (0..count.div_ceil(BATCH))
+        .map(|i| {
+            let n = BATCH.min(count - i * BATCH);
+            generate(case, nu, n, seed.wrapping_add(i as u64), Pose::Random)
+                .unwrap_or_else(|e| panic!("generating {case} at nu={nu}: {e}"))
+        })
+        .collect()
+}
+
+/// The same line as `ray` with its origin moved `distance` back along it (f32).
+pub fn pushed_back(ray: &Ray, distance: f32) -> Ray {
+    let d = ray.dir();
+    Ray::new(ray.origin() - d * (distance / d.length()), d).unwrap()
+}
+
+/// Every (torus, ray) of a list of batches.
+pub fn pairs(batches: &[Batch]) -> impl Iterator<Item = (&Torus, &Ray)> {
+    batches
+        .iter()
+        .flat_map(|b| b.rays.iter().map(move |r| (&b.torus, r)))
+}

@@ -1,0 +1,73 @@
+//! DESIGN §7: the paper's misprints, as counterexamples and as counts of rejected hits.
+//! This proves the harness can see a broken cull.
+
+mod common;
+
+use common::{NUS, family, pairs};
+use glam::Vec3;
+use torus_cull::oracle::{OracleClass, classify_line};
+use torus_cull::workload::Case;
+use torus_cull::{CullBounds, CullKind, Ray, Torus};
+
+fn keeps(cull: CullKind, torus: &Torus, ray: &Ray) -> bool {
+    let line = torus.line_to_local(ray);
+    cull.keeps(&CullBounds::of(torus), line.origin, line.dir)
+}
+
+fn counterexample(o: [f32; 3], d: [f32; 3], printed: CullKind) {
+    let torus = Torus::canonical(2.0, 1.0).unwrap();
+    let ray = Ray::new(Vec3::from(o), Vec3::from(d)).unwrap();
+    assert_eq!(classify_line(&torus, &ray).class, OracleClass::Hit);
+    for cull in CullKind::TIMED {
+        assert!(
+            keeps(cull, &torus, &ray),
+            "{cull} rejects the counterexample"
+        );
+    }
+    assert!(!keeps(printed, &torus, &ray), "{printed} should reject it");
+}
+
+#[test]
+fn eq35_second_clause() {
+    counterexample([-6.0, 0.5, 0.0], [1.0, 0.0, 0.0], CullKind::CychoszPrinted);
+}
+
+#[test]
+fn eq105_band_height() {
+    counterexample([-5.0, 0.5, 2.0], [1.0, 0.0, 0.0], CullKind::SkalaPrintedC);
+}
+
+#[test]
+fn eq102_hole_edge() {
+    counterexample([0.9, -3.0, 0.5], [0.01, 1.0, 0.0], CullKind::SkalaEq102);
+}
+
+/// On the same families the conservativeness test uses, each printed variant rejects
+/// oracle hits, while its corrected twin rejects none.
+#[test]
+fn printed_variants_reject_hits_on_the_test_families() {
+    let mut false_rejects = [0usize; 3];
+    let mut corrected = 0usize;
+    for nu in NUS {
+        let mut batches = Vec::new();
+        for case in [Case::Uniform, Case::Grazing, Case::OuterBand, Case::Camera] {
+            batches.extend(family(case, nu, 6_000, 0xE22A ^ nu.to_bits()));
+        }
+        for (torus, ray) in pairs(&batches) {
+            if classify_line(torus, ray).class != OracleClass::Hit {
+                continue;
+            }
+            for (i, cull) in CullKind::PRINTED.iter().enumerate() {
+                false_rejects[i] += usize::from(!keeps(*cull, torus, ray));
+            }
+            for cull in [CullKind::Cychosz, CullKind::Skala] {
+                corrected += usize::from(!keeps(cull, torus, ray));
+            }
+        }
+    }
+    println!("printed variants' false rejects {:?}", false_rejects);
+    for (cull, n) in CullKind::PRINTED.iter().zip(false_rejects) {
+        assert!(n > 0, "{cull} rejected no hit: the harness cannot see it");
+    }
+    assert_eq!(corrected, 0);
+}
