@@ -1,0 +1,147 @@
+//! Shared bench plumbing: size presets, reading criterion's estimates, the solver duel.
+#![allow(dead_code)]
+
+pub mod solver;
+
+use std::path::Path;
+use std::time::{Duration, SystemTime};
+use torus_cull::workload::spec::Workload;
+
+/// How big a `cargo bench` run is (`TORUS_CULL_BENCH`).
+pub struct BenchConfig {
+    /// Preset name.
+    pub name: &'static str,
+    /// Timed ν values.
+    pub nus: Vec<f64>,
+    /// Rays per timed batch.
+    pub batch: usize,
+    /// Criterion warm-up per benchmark.
+    pub warm_up: Duration,
+    /// Criterion measurement per benchmark.
+    pub measurement: Duration,
+    /// Criterion samples per benchmark.
+    pub samples: usize,
+    /// Cap on rays per (case, ν) in the rejection sweep (`None`: the workload's count).
+    pub sweep_rays: Option<usize>,
+}
+
+/// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
+pub const DEFAULT_TIMED_NU: [f64; 5] = [1.25, 2.0, 4.0, 8.0, 16.0];
+
+impl BenchConfig {
+    /// From `TORUS_CULL_BENCH` (smoke | default | full) and `TORUS_CULL_BENCH_NU`
+    /// (a comma-separated ν list overriding the preset's).
+    pub fn from_env() -> BenchConfig {
+        let preset = std::env::var("TORUS_CULL_BENCH").unwrap_or_else(|_| "default".into());
+        let mut config = match preset.as_str() {
+            "smoke" => BenchConfig {
+                name: "smoke",
+                nus: vec![2.0],
+                batch: 256,
+                warm_up: Duration::from_millis(20),
+                measurement: Duration::from_millis(60),
+                samples: 10,
+                sweep_rays: Some(1_000),
+            },
+            "default" => BenchConfig {
+                name: "default",
+                nus: DEFAULT_TIMED_NU.to_vec(),
+                batch: 4096,
+                warm_up: Duration::from_millis(250),
+                measurement: Duration::from_millis(600),
+                samples: 20,
+                sweep_rays: None,
+            },
+            "full" => BenchConfig {
+                name: "full",
+                nus: Vec::new(), // every ν of the workload
+                batch: 4096,
+                warm_up: Duration::from_secs(1),
+                measurement: Duration::from_secs(3),
+                samples: 50,
+                sweep_rays: None,
+            },
+            other => panic!("TORUS_CULL_BENCH={other} is invalid (allowed: smoke, default, full)"),
+        };
+        if let Ok(list) = std::env::var("TORUS_CULL_BENCH_NU") {
+            config.nus = list
+                .split(',')
+                .map(|s| {
+                    s.trim().parse::<f64>().ok().filter(|nu| nu.is_finite() && *nu > 1.0).unwrap_or_else(|| {
+                        panic!("TORUS_CULL_BENCH_NU: '{s}' is invalid (allowed: numbers > 1, comma-separated)")
+                    })
+                })
+                .collect();
+        }
+        config
+    }
+
+    /// The timed ν values for `workload`: the preset's that the workload has, or all of its.
+    pub fn timed_nus(&self, workload: &Workload) -> Vec<f64> {
+        let picked: Vec<f64> = self
+            .nus
+            .iter()
+            .copied()
+            .filter(|nu| workload.nu.contains(nu))
+            .collect();
+        if picked.is_empty() {
+            workload.nu.clone()
+        } else {
+            picked
+        }
+    }
+
+    /// The workload the rejection sweep runs: the full one, or capped for `smoke`.
+    pub fn sweep_workload(&self, workload: &Workload) -> Workload {
+        let mut w = workload.clone();
+        if let Some(cap) = self.sweep_rays {
+            w.rays = w.rays.min(cap);
+        }
+        w
+    }
+}
+
+/// A criterion median with its confidence interval.
+#[derive(Debug, Clone, Copy)]
+pub struct Estimate {
+    pub median: f64,
+    pub lower: f64,
+    pub upper: f64,
+}
+
+impl Estimate {
+    pub fn scaled(self, k: f64) -> Estimate {
+        Estimate {
+            median: self.median * k,
+            lower: self.lower * k,
+            upper: self.upper * k,
+        }
+    }
+}
+
+/// The median estimate (ns per iteration) criterion wrote for `group/function/nu` during
+/// this run (`since`), or `None` if that benchmark did not run.
+pub fn read_estimate(
+    home: &Path,
+    group: &str,
+    function: &str,
+    parameter: impl std::fmt::Display,
+    since: SystemTime,
+) -> Option<Estimate> {
+    let path = home
+        .join(group)
+        .join(function)
+        .join(parameter.to_string())
+        .join("new/estimates.json");
+    let fresh = std::fs::metadata(&path).ok()?.modified().ok()? >= since;
+    if !fresh {
+        return None;
+    }
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).ok()?).ok()?;
+    let median = &v["median"];
+    Some(Estimate {
+        median: median["point_estimate"].as_f64()?,
+        lower: median["confidence_interval"]["lower_bound"].as_f64()?,
+        upper: median["confidence_interval"]["upper_bound"].as_f64()?,
+    })
+}

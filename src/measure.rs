@@ -1,0 +1,190 @@
+//! Counting: the oracle labels every ray of a batch, then each cull's verdicts are tallied
+//! against the labels (DESIGN §6). The oracle runs here, never inside a timed loop.
+
+use crate::oracle::{OracleClass, OracleLabel, classify};
+use crate::results::RejectionRecord;
+use crate::workload::{Batch, Case, GenerateError, generate, spec::Workload};
+use crate::{Cull, CullBounds, CullKind, CullVisitor, Ray};
+
+/// A batch with the oracle's label for each ray (ray mode, t ≥ 0).
+#[derive(Debug, Clone)]
+pub struct LabeledBatch {
+    /// The rays and their torus.
+    pub batch: Batch,
+    /// One label per ray.
+    pub labels: Vec<OracleLabel>,
+}
+
+impl LabeledBatch {
+    /// Generate and label one (case, ν) batch of a workload.
+    pub fn generate(
+        workload: &Workload,
+        case: Case,
+        nu: f64,
+    ) -> Result<LabeledBatch, GenerateError> {
+        let batch = generate(case, nu, workload.rays, workload.seed, workload.pose)?;
+        Ok(LabeledBatch::label(batch))
+    }
+
+    /// Label an existing batch.
+    pub fn label(batch: Batch) -> LabeledBatch {
+        let labels = batch
+            .rays
+            .iter()
+            .map(|r| classify(&batch.torus, r))
+            .collect();
+        LabeledBatch { batch, labels }
+    }
+
+    /// Oracle hits in the batch.
+    pub fn hits(&self) -> usize {
+        self.labels
+            .iter()
+            .filter(|l| l.class == OracleClass::Hit)
+            .count()
+    }
+}
+
+/// A ray that a cull rejected although the oracle calls it a hit.
+#[derive(Debug, Clone)]
+pub struct FalseReject {
+    /// Case.
+    pub case: Case,
+    /// ν.
+    pub nu: f64,
+    /// The cull at fault.
+    pub cull: CullKind,
+    /// Index of the ray in its batch.
+    pub index: usize,
+    /// The ray (world space).
+    pub ray: Ray,
+    /// The batch's stream seed.
+    pub stream_seed: u64,
+    /// The oracle's margin.
+    pub margin: f64,
+}
+
+/// Each cull's verdict on each ray of the batch (`true` = keep), cull by cull.
+pub fn verdicts(cull: CullKind, batch: &Batch) -> Vec<bool> {
+    struct All<'a>(&'a Batch);
+    impl CullVisitor for All<'_> {
+        type Output = Vec<bool>;
+        fn visit<C: Cull>(self, cull: C) -> Vec<bool> {
+            let torus = &self.0.torus;
+            let bounds = CullBounds::of(torus);
+            self.0
+                .rays
+                .iter()
+                .map(|r| {
+                    let line = torus.line_to_local(r);
+                    cull.keeps(&bounds, line.origin, line.dir)
+                })
+                .collect()
+        }
+    }
+    cull.visit(All(batch))
+}
+
+/// The DESIGN §6 counts of `cull` on a labeled batch, and its false rejects.
+pub fn count(cull: CullKind, labeled: &LabeledBatch) -> (RejectionRecord, Vec<FalseReject>) {
+    let batch = &labeled.batch;
+    let keeps = verdicts(cull, batch);
+    let (mut hits, mut misses, mut ambiguous, mut rejected) = (0u64, 0u64, 0u64, 0u64);
+    let mut false_rejects = Vec::new();
+    for (i, (label, keep)) in labeled.labels.iter().zip(keeps).enumerate() {
+        match label.class {
+            OracleClass::Hit => hits += 1,
+            OracleClass::Miss => misses += 1,
+            OracleClass::Ambiguous => ambiguous += 1,
+        }
+        if !keep {
+            rejected += 1;
+            if label.class == OracleClass::Hit {
+                false_rejects.push(FalseReject {
+                    case: batch.case,
+                    nu: batch.nu,
+                    cull,
+                    index: i,
+                    ray: batch.rays[i],
+                    stream_seed: batch.stream_seed,
+                    margin: label.margin,
+                });
+            }
+        }
+    }
+    let rays = batch.rays.len() as u64;
+    let record = RejectionRecord {
+        case: batch.case.name().to_string(),
+        nu: batch.nu,
+        cull: cull.name().to_string(),
+        rays,
+        hits,
+        misses,
+        ambiguous,
+        rejected,
+        false_rejects: false_rejects.len() as u64,
+        rejection_rate: if rays > 0 {
+            rejected as f64 / rays as f64
+        } else {
+            0.0
+        },
+        miss_capture: (misses > 0).then(|| rejected as f64 / misses as f64),
+    };
+    (record, false_rejects)
+}
+
+/// Every (case, ν) of the workload, as a work list in table order.
+pub fn units(workload: &Workload) -> Vec<(Case, f64)> {
+    workload
+        .cases
+        .iter()
+        .flat_map(|&c| workload.nu.iter().map(move |&nu| (c, nu)))
+        .collect()
+}
+
+/// Rejection records for the whole workload over the timed culls, with any false
+/// rejects, on `threads` threads; `progress` is called with each finished unit's rays.
+pub fn rejection_sweep(
+    workload: &Workload,
+    threads: usize,
+    progress: &(dyn Fn(u64) + Sync),
+) -> Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError> {
+    use std::sync::Mutex;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let units = units(workload);
+    let next = AtomicUsize::new(0);
+    type Unit = Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError>;
+    let out: Mutex<Vec<Option<Unit>>> = Mutex::new((0..units.len()).map(|_| None).collect());
+    std::thread::scope(|s| {
+        for _ in 0..threads.max(1) {
+            s.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, Ordering::Relaxed);
+                    let Some(&(case, nu)) = units.get(i) else {
+                        break;
+                    };
+                    let result = LabeledBatch::generate(workload, case, nu).map(|labeled| {
+                        let mut records = Vec::new();
+                        let mut bad = Vec::new();
+                        for cull in CullKind::TIMED {
+                            let (r, f) = count(cull, &labeled);
+                            records.push(r);
+                            bad.extend(f);
+                        }
+                        (records, bad)
+                    });
+                    progress(workload.rays as u64);
+                    out.lock().unwrap()[i] = Some(result);
+                }
+            });
+        }
+    });
+    let mut records = Vec::new();
+    let mut false_rejects = Vec::new();
+    for r in out.into_inner().unwrap() {
+        let (rec, bad) = r.expect("every unit ran")?;
+        records.extend(rec);
+        false_rejects.extend(bad);
+    }
+    Ok((records, false_rejects))
+}

@@ -1,0 +1,212 @@
+//! SVG charts (plotters): rejection, capture, timing and BVH figures against ν.
+
+use crate::results::Results;
+use plotters::prelude::*;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// One named line of (x, y) points.
+pub type Series = (String, Vec<(f64, f64)>);
+
+const COLOURS: [RGBColor; 9] = [
+    RGBColor(120, 120, 120),
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(214, 39, 40),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+];
+
+/// Draw `series` against ν on a log axis into an SVG at `path`.
+pub fn line_chart(
+    path: &Path,
+    title: &str,
+    y_label: &str,
+    series: &[Series],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let points = series.iter().flat_map(|(_, p)| p.iter());
+    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y) in points {
+        x_min = x_min.min(x);
+        x_max = x_max.max(x);
+        y_min = y_min.min(y);
+        y_max = y_max.max(y);
+    }
+    if x_min > x_max {
+        return Err(format!("{}: nothing to plot", path.display()).into());
+    }
+    if y_from_zero {
+        y_min = y_min.min(0.0);
+    }
+    let pad = ((y_max - y_min) * 0.05).max(1e-9);
+    let (y_lo, y_hi) = (y_min - if y_from_zero { 0.0 } else { pad }, y_max + pad);
+    let root = SVGBackend::new(path, (760, 480)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(64)
+        .build_cartesian_2d((x_min * 0.95..x_max * 1.05).log_scale(), y_lo..y_hi)?;
+    chart
+        .configure_mesh()
+        .x_desc("ν = R/r (log scale)")
+        .y_desc(y_label)
+        .label_style(("sans-serif", 14))
+        .x_label_formatter(&|x| {
+            format!("{x:.3}")
+                .trim_end_matches('0')
+                .trim_end_matches('.')
+                .to_string()
+        })
+        .draw()?;
+    for (i, (name, pts)) in series.iter().enumerate() {
+        let colour = COLOURS[i % COLOURS.len()];
+        chart
+            .draw_series(LineSeries::new(pts.iter().copied(), colour.stroke_width(2)))?
+            .label(name.as_str())
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
+            });
+        chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 14))
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
+
+/// Every chart a results file supports, written to `out_dir` with file names starting
+/// with `stem`; returns the paths written.
+pub fn plot_results(
+    results: &Results,
+    out_dir: &Path,
+    stem: &str,
+) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
+    std::fs::create_dir_all(out_dir)?;
+    let mut written = Vec::new();
+    let mut chart = |name: String, title: String, y: &str, series: Vec<Series>, zero: bool| {
+        if series.iter().all(|(_, p)| p.is_empty()) {
+            return Ok::<(), Box<dyn std::error::Error>>(());
+        }
+        let path = out_dir.join(format!("{stem}-{name}.svg"));
+        line_chart(&path, &title, y, &series, zero)?;
+        written.push(path);
+        Ok(())
+    };
+    // Per case: miss capture and rejection rate against ν.
+    for case in ordered(results.rejection.iter().map(|r| r.case.clone())) {
+        let of = |f: &dyn Fn(&crate::results::RejectionRecord) -> Option<f64>| -> Vec<Series> {
+            ordered(results.rejection.iter().map(|r| r.cull.clone()))
+                .into_iter()
+                .map(|cull| {
+                    let pts = results
+                        .rejection
+                        .iter()
+                        .filter(|r| r.case == case && r.cull == cull)
+                        .filter_map(|r| f(r).map(|y| (r.nu, y)))
+                        .collect();
+                    (cull, pts)
+                })
+                .collect()
+        };
+        chart(
+            format!("{case}-miss_capture"),
+            format!("{case}: miss capture (rejected / misses)"),
+            "miss capture",
+            of(&|r| r.miss_capture),
+            true,
+        )?;
+        chart(
+            format!("{case}-rejection_rate"),
+            format!("{case}: rejection rate (rejected / rays)"),
+            "rejection rate",
+            of(&|r| Some(r.rejection_rate)),
+            true,
+        )?;
+    }
+    // Per case: total ns and speedup against ν (bench results).
+    for case in ordered(results.timing.iter().map(|r| r.case.clone())) {
+        let of = |f: &dyn Fn(&crate::results::TimingRecord) -> f64| -> Vec<Series> {
+            ordered(results.timing.iter().map(|r| r.cull.clone()))
+                .into_iter()
+                .map(|cull| {
+                    let pts = results
+                        .timing
+                        .iter()
+                        .filter(|r| r.case == case && r.cull == cull)
+                        .map(|r| (r.nu, f(r)))
+                        .collect();
+                    (cull, pts)
+                })
+                .collect()
+        };
+        chart(
+            format!("{case}-total_ns"),
+            format!("{case}: cull + exact intersection, ns per ray"),
+            "total ns per ray",
+            of(&|r| r.total_ns),
+            true,
+        )?;
+        chart(
+            format!("{case}-speedup"),
+            format!("{case}: speedup vs none"),
+            "total_ns(none) / total_ns(cull)",
+            of(&|r| r.speedup_vs_none),
+            true,
+        )?;
+    }
+    // Per BVH scene: Mrays/s and quartic solves per ray against ν.
+    for scene in ordered(results.bvh.iter().map(|r| r.scene.clone())) {
+        let of = |f: &dyn Fn(&crate::results::BvhRecord) -> f64| -> Vec<Series> {
+            ordered(results.bvh.iter().map(|r| r.cull.clone()))
+                .into_iter()
+                .map(|cull| {
+                    let pts = results
+                        .bvh
+                        .iter()
+                        .filter(|r| r.scene == scene && r.cull == cull)
+                        .map(|r| (r.nu, f(r)))
+                        .collect();
+                    (cull, pts)
+                })
+                .collect()
+        };
+        chart(
+            format!("bvh-{scene}-mrays"),
+            format!("BVH {scene}: million rays per second"),
+            "Mrays/s",
+            of(&|r| r.mrays_per_s),
+            true,
+        )?;
+        chart(
+            format!("bvh-{scene}-quartic_solves"),
+            format!("BVH {scene}: quartic solves per ray"),
+            "quartic solves per ray",
+            of(&|r| r.quartic_solves_per_ray),
+            true,
+        )?;
+    }
+    Ok(written)
+}
+
+/// Distinct values in first-seen order.
+fn ordered(values: impl Iterator<Item = String>) -> Vec<String> {
+    let mut seen = BTreeMap::new();
+    for v in values {
+        let n = seen.len();
+        seen.entry(v).or_insert(n);
+    }
+    let mut v: Vec<_> = seen.into_iter().collect();
+    v.sort_by_key(|(_, i)| *i);
+    v.into_iter().map(|(k, _)| k).collect()
+}

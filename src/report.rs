@@ -1,0 +1,95 @@
+//! Plain-text tables of a results file, as `run` and `cargo bench` print them.
+
+use crate::results::Results;
+use std::fmt::Write;
+
+/// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
+fn table<R>(
+    records: &[R],
+    key: impl Fn(&R) -> (&str, f64, &str),
+    cell: impl Fn(&R) -> String,
+    title: impl Fn(&str) -> String,
+) -> String {
+    let mut cases: Vec<&str> = Vec::new();
+    let mut culls: Vec<&str> = Vec::new();
+    for r in records {
+        let (case, _, cull) = key(r);
+        if !cases.contains(&case) {
+            cases.push(case);
+        }
+        if !culls.contains(&cull) {
+            culls.push(cull);
+        }
+    }
+    let width = culls.iter().map(|c| c.len()).max().unwrap_or(6).max(8);
+    let mut out = String::new();
+    for case in cases {
+        let _ = writeln!(out, "{}", title(case));
+        let _ = write!(out, "{:>7}", "nu");
+        for c in &culls {
+            let _ = write!(out, " {c:>width$}");
+        }
+        let _ = writeln!(out);
+        let mut nus: Vec<f64> = records
+            .iter()
+            .filter(|r| key(r).0 == case)
+            .map(|r| key(r).1)
+            .collect();
+        nus.sort_by(f64::total_cmp);
+        nus.dedup();
+        for nu in nus {
+            let _ = write!(out, "{nu:>7}");
+            for c in &culls {
+                let text = records
+                    .iter()
+                    .find(|r| key(r) == (case, nu, c))
+                    .map(&cell)
+                    .unwrap_or_else(|| "-".into());
+                let _ = write!(out, " {text:>width$}");
+            }
+            let _ = writeln!(out);
+        }
+        let _ = writeln!(out);
+    }
+    out
+}
+
+/// Miss capture per case (rows ν, columns culls); `n/a` where a batch has no misses.
+pub fn miss_capture_tables(results: &Results) -> String {
+    table(
+        &results.rejection,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| r.miss_capture.map_or("n/a".into(), |c| format!("{c:.3}")),
+        |case| format!("{case}: miss capture (rejected / misses)"),
+    )
+}
+
+/// Total ns per ray with the speedup over `none`, per case.
+pub fn timing_tables(results: &Results) -> String {
+    table(
+        &results.timing,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| format!("{:.1} ({:.2}x)", r.total_ns, r.speedup_vs_none),
+        |case| format!("{case}: total ns per ray, cull + exact intersection (speedup vs none)"),
+    )
+}
+
+/// Cull-alone ns per ray, per case.
+pub fn cull_ns_tables(results: &Results) -> String {
+    table(
+        &results.timing,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| format!("{:.2}", r.cull_ns),
+        |case| format!("{case}: cull alone, ns per ray"),
+    )
+}
+
+/// BVH figures: Mrays/s and quartic solves per ray, per scene.
+pub fn bvh_tables(results: &Results) -> String {
+    table(
+        &results.bvh,
+        |r| (r.scene.as_str(), r.nu, r.cull.as_str()),
+        |r| format!("{:.2} / {:.3}", r.mrays_per_s, r.quartic_solves_per_ray),
+        |scene| format!("BVH {scene}: Mrays/s / quartic solves per ray"),
+    )
+}

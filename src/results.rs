@@ -1,0 +1,305 @@
+//! The results JSON (schema version 1): what `run` and `cargo bench` write and `compare`
+//! reads. Files are written atomically (temp file + rename), so an interrupted run never
+//! leaves half a file. Field names are stable; new fields may be added.
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// The schema version this build writes and reads.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// A results file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Results {
+    /// Always [`SCHEMA_VERSION`].
+    pub schema_version: u32,
+    /// Where and how the figures were made.
+    pub meta: Meta,
+    /// Rejection counts per case × ν × cull.
+    pub rejection: Vec<RejectionRecord>,
+    /// Criterion timings per case × ν × cull (filled by `cargo bench`).
+    #[serde(default)]
+    pub timing: Vec<TimingRecord>,
+    /// Many-torus BVH figures per scene × ν × cull (filled by `cargo bench`).
+    #[serde(default)]
+    pub bvh: Vec<BvhRecord>,
+    /// The quartic solver against a peer crate (filled by `cargo bench`).
+    #[serde(default)]
+    pub solver: Vec<SolverRecord>,
+}
+
+/// Provenance of a results file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Meta {
+    /// `git rev-parse --short HEAD`, or null outside a checkout.
+    pub commit: Option<String>,
+    /// Whether tracked files differed from the commit.
+    pub dirty: bool,
+    /// When the file was made, RFC 3339.
+    pub created: String,
+    /// The compiler that built the harness.
+    pub rustc: String,
+    /// The CPU model.
+    pub cpu: String,
+    /// The workload's name.
+    pub workload: String,
+    /// SHA-256 of the workload file.
+    pub workload_sha256: String,
+    /// The workload's seed.
+    #[serde(default)]
+    pub seed: Option<u64>,
+    /// The harness version.
+    #[serde(default)]
+    pub torus_cull_version: Option<String>,
+    /// What made the file: `run` or `bench`.
+    #[serde(default)]
+    pub tool: Option<String>,
+}
+
+/// The oracle's and one cull's counts on one (case, ν) batch.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RejectionRecord {
+    /// Workload case.
+    pub case: String,
+    /// ν = R/r.
+    pub nu: f64,
+    /// Cull name.
+    pub cull: String,
+    /// Rays in the batch.
+    pub rays: u64,
+    /// Oracle hits.
+    pub hits: u64,
+    /// Oracle misses.
+    pub misses: u64,
+    /// Oracle ambiguous (left out of false rejects).
+    pub ambiguous: u64,
+    /// Rays the cull rejected.
+    pub rejected: u64,
+    /// Rejected ∧ oracle hit: must be 0.
+    pub false_rejects: u64,
+    /// rejected / rays.
+    pub rejection_rate: f64,
+    /// rejected / misses; null when the batch has no misses.
+    pub miss_capture: Option<f64>,
+}
+
+/// Criterion timings of one cull on one (case, ν) batch.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct TimingRecord {
+    /// Workload case.
+    pub case: String,
+    /// ν.
+    pub nu: f64,
+    /// Cull name.
+    pub cull: String,
+    /// The cull alone, ns per ray (criterion median).
+    pub cull_ns: f64,
+    /// Cull + exact intersection when kept, ns per ray (criterion median).
+    pub total_ns: f64,
+    /// Criterion's confidence interval of `total_ns`.
+    pub total_ns_ci: [f64; 2],
+    /// total_ns(none) / total_ns(this cull), same run.
+    pub speedup_vs_none: f64,
+    /// cull_ns + (hits/rays)·solve_ns: this cull's cost if it rejected every miss.
+    pub ideal_total_ns: f64,
+    /// Where the figures come from (`criterion`).
+    pub source: String,
+}
+
+/// One cull inside an obvhs BVH over one many-torus scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BvhRecord {
+    /// Scene name.
+    pub scene: String,
+    /// ν of the scene's tori.
+    pub nu: f64,
+    /// Cull used at the leaves.
+    pub cull: String,
+    /// Rays traced.
+    pub rays: u64,
+    /// Rays with a closest hit.
+    pub hits: u64,
+    /// Leaf (primitive) visits per ray.
+    pub leaf_visits_per_ray: f64,
+    /// Cull rejections per ray.
+    pub cull_rejects_per_ray: f64,
+    /// Quartic solves per ray.
+    pub quartic_solves_per_ray: f64,
+    /// Million rays per second (criterion median).
+    pub mrays_per_s: f64,
+    /// Closest hits identical to brute force with the `none` cull.
+    pub matches_brute_force: bool,
+}
+
+/// A quartic solver's speed and accuracy on the bench's coefficient sets.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SolverRecord {
+    /// Solver name.
+    pub solver: String,
+    /// Quartics solved (one per non-ambiguous line).
+    pub coefficient_sets: u64,
+    /// Roots in the oracle's high-precision reference.
+    pub reference_roots: u64,
+    /// Reference roots with no solver root within 1e-6·(R + r).
+    pub missed_roots: u64,
+    /// Solver roots with no reference root within 1e-6·(R + r).
+    pub spurious_roots: u64,
+    /// Largest |t − t_ref|·|d|/(R + r) over the matched roots.
+    pub max_rel_t_error: f64,
+    /// ns per solve (criterion median).
+    pub ns_per_solve: f64,
+    /// Its confidence interval.
+    pub ns_per_solve_ci: [f64; 2],
+    /// `criterion`.
+    pub source: String,
+}
+
+/// A results file that cannot be read.
+#[derive(Debug)]
+pub enum ResultsError {
+    /// Reading or writing failed.
+    Io(PathBuf, std::io::Error),
+    /// Not JSON, or not this schema.
+    Parse(PathBuf, String),
+    /// Another schema version.
+    Version(PathBuf, serde_json::Value),
+}
+
+impl fmt::Display for ResultsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ResultsError::Io(p, e) => write!(f, "{}: {e}", p.display()),
+            ResultsError::Parse(p, e) => {
+                write!(f, "{}: not a torus-cull results file: {e}", p.display())
+            }
+            ResultsError::Version(p, v) => write!(
+                f,
+                "{}: field `schema_version` is {v}, this build reads only {SCHEMA_VERSION}",
+                p.display()
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ResultsError {}
+
+impl Results {
+    /// An empty results file with fresh metadata for `workload`.
+    pub fn new(workload: &crate::workload::spec::Workload, tool: &str) -> Results {
+        let (commit, dirty) = git_state();
+        Results {
+            schema_version: SCHEMA_VERSION,
+            meta: Meta {
+                commit,
+                dirty,
+                created: humantime::format_rfc3339_seconds(std::time::SystemTime::now())
+                    .to_string(),
+                rustc: env!("TORUS_CULL_RUSTC").to_string(),
+                cpu: cpu_model(),
+                workload: workload.name.clone(),
+                workload_sha256: workload.sha256.clone(),
+                seed: Some(workload.seed),
+                torus_cull_version: Some(env!("CARGO_PKG_VERSION").to_string()),
+                tool: Some(tool.to_string()),
+            },
+            rejection: Vec::new(),
+            timing: Vec::new(),
+            bvh: Vec::new(),
+            solver: Vec::new(),
+        }
+    }
+
+    /// Read a results file, refusing other schema versions with a clear error.
+    pub fn load(path: &Path) -> Result<Results, ResultsError> {
+        let text = std::fs::read_to_string(path).map_err(|e| ResultsError::Io(path.into(), e))?;
+        let value: serde_json::Value = serde_json::from_str(&text)
+            .map_err(|e| ResultsError::Parse(path.into(), e.to_string()))?;
+        match value.get("schema_version") {
+            Some(v) if v.as_u64() == Some(SCHEMA_VERSION as u64) => {}
+            Some(v) => return Err(ResultsError::Version(path.into(), v.clone())),
+            None => {
+                return Err(ResultsError::Parse(
+                    path.into(),
+                    "missing field `schema_version`".into(),
+                ));
+            }
+        }
+        serde_json::from_value(value).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))
+    }
+
+    /// Write atomically: a temp file in the same directory, then a rename.
+    pub fn save(&self, path: &Path) -> Result<(), ResultsError> {
+        let mut text = serde_json::to_string_pretty(self).expect("results serialize");
+        text.push('\n');
+        write_atomic(path, text.as_bytes()).map_err(|e| ResultsError::Io(path.into(), e))
+    }
+}
+
+/// Write `bytes` to `path` through a temp file in the same directory and a rename, so a
+/// reader never sees a partial file and an interrupted writer leaves the old one intact.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    std::fs::create_dir_all(dir)?;
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".torus-cull-")
+        .suffix(".tmp")
+        .tempfile_in(dir)?;
+    tmp.write_all(bytes)?;
+    tmp.as_file().sync_all()?;
+    tmp.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+/// The default output path: `results/<short commit>[-dirty].json`, or
+/// `results/latest.json` outside a git checkout.
+pub fn default_path(results_dir: &Path, suffix: &str) -> PathBuf {
+    let (commit, dirty) = git_state();
+    let stem = match commit {
+        Some(c) if dirty => format!("{c}-dirty"),
+        Some(c) => c,
+        None => "latest".to_string(),
+    };
+    results_dir.join(format!("{stem}{suffix}.json"))
+}
+
+/// (short commit, dirty) of the checkout holding the current directory.
+pub fn git_state() -> (Option<String>, bool) {
+    let git = |args: &[&str]| {
+        std::process::Command::new("git")
+            .args(args)
+            .output()
+            .ok()
+            .filter(|o| o.status.success())
+            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+    };
+    let commit = git(&["rev-parse", "--short", "HEAD"]);
+    // Committed results and untracked files do not make the source dirty.
+    let dirty = commit.is_some()
+        && git(&[
+            "status",
+            "--porcelain",
+            "--untracked-files=no",
+            "--",
+            ".",
+            ":!results",
+        ])
+        .is_some_and(|s| !s.is_empty());
+    (commit, dirty)
+}
+
+fn cpu_model() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_string())
+        })
+        .unwrap_or_else(|| std::env::consts::ARCH.to_string())
+}

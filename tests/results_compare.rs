@@ -1,0 +1,245 @@
+//! Results JSON: schema round trip, version check, atomic write; `compare` flags and exit codes.
+
+use std::path::Path;
+use std::process::Command;
+use torus_cull::compare::compare;
+use torus_cull::results::{
+    BvhRecord, Meta, RejectionRecord, Results, ResultsError, SCHEMA_VERSION, TimingRecord,
+    write_atomic,
+};
+
+fn sample() -> Results {
+    Results {
+        schema_version: SCHEMA_VERSION,
+        meta: Meta {
+            commit: Some("abc1234".into()),
+            dirty: false,
+            created: "2026-11-21T12:00:00Z".into(),
+            rustc: "rustc 1.95.0".into(),
+            cpu: "test cpu".into(),
+            workload: "quick".into(),
+            workload_sha256: "00".repeat(32),
+            seed: Some(7),
+            torus_cull_version: Some("0.1.0".into()),
+            tool: Some("run".into()),
+        },
+        rejection: vec![
+            RejectionRecord {
+                case: "hole".into(),
+                nu: 2.0,
+                cull: "skala".into(),
+                rays: 1000,
+                hits: 0,
+                misses: 1000,
+                ambiguous: 0,
+                rejected: 940,
+                false_rejects: 0,
+                rejection_rate: 0.94,
+                miss_capture: Some(0.94),
+            },
+            RejectionRecord {
+                case: "grazing".into(),
+                nu: 2.0,
+                cull: "none".into(),
+                rays: 1000,
+                hits: 1000,
+                misses: 0,
+                ambiguous: 0,
+                rejected: 0,
+                false_rejects: 0,
+                rejection_rate: 0.0,
+                miss_capture: None,
+            },
+        ],
+        timing: vec![TimingRecord {
+            case: "hole".into(),
+            nu: 2.0,
+            cull: "skala".into(),
+            cull_ns: 6.0,
+            total_ns: 20.0,
+            total_ns_ci: [19.0, 21.0],
+            speedup_vs_none: 5.0,
+            ideal_total_ns: 6.0,
+            source: "criterion".into(),
+        }],
+        bvh: vec![BvhRecord {
+            scene: "facing_grid".into(),
+            nu: 4.0,
+            cull: "skala".into(),
+            rays: 100,
+            hits: 40,
+            leaf_visits_per_ray: 2.0,
+            cull_rejects_per_ray: 1.0,
+            quartic_solves_per_ray: 1.0,
+            mrays_per_s: 3.0,
+            matches_brute_force: true,
+        }],
+        solver: Vec::new(),
+    }
+}
+
+#[test]
+fn schema_round_trips_and_keeps_field_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("r.json");
+    let r = sample();
+    r.save(&path).unwrap();
+    assert_eq!(Results::load(&path).unwrap(), r);
+    let text = std::fs::read_to_string(&path).unwrap();
+    for field in [
+        "\"schema_version\": 1",
+        "\"commit\"",
+        "\"dirty\"",
+        "\"created\"",
+        "\"rustc\"",
+        "\"cpu\"",
+        "\"workload\"",
+        "\"workload_sha256\"",
+        "\"rejection_rate\"",
+        "\"miss_capture\": null",
+        "\"false_rejects\"",
+        "\"total_ns_ci\"",
+        "\"speedup_vs_none\"",
+        "\"ideal_total_ns\"",
+        "\"leaf_visits_per_ray\"",
+        "\"matches_brute_force\"",
+    ] {
+        assert!(text.contains(field), "missing {field}");
+    }
+}
+
+#[test]
+fn other_versions_and_non_json_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let v2 = dir.path().join("v2.json");
+    let text = serde_json::to_string(&sample())
+        .unwrap()
+        .replace("\"schema_version\":1", "\"schema_version\":2");
+    std::fs::write(&v2, text).unwrap();
+    let e = Results::load(&v2).unwrap_err();
+    assert!(matches!(e, ResultsError::Version(..)));
+    assert!(
+        e.to_string().contains("v2.json") && e.to_string().contains("schema_version"),
+        "{e}"
+    );
+    let junk = dir.path().join("junk.json");
+    std::fs::write(&junk, "{ not json").unwrap();
+    let e = Results::load(&junk).unwrap_err().to_string();
+    assert!(
+        e.contains("junk.json") && e.contains("not a torus-cull results file"),
+        "{e}"
+    );
+}
+
+#[test]
+fn atomic_write_leaves_no_partial_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("r.json");
+    write_atomic(&path, b"old contents").unwrap();
+    // A write that fails at the rename (target is a non-empty directory) keeps nothing half-done.
+    let blocked = dir.path().join("blocked");
+    std::fs::create_dir_all(blocked.join("inside")).unwrap();
+    assert!(write_atomic(&blocked, b"new").is_err());
+    assert_eq!(std::fs::read(&path).unwrap(), b"old contents");
+    write_atomic(&path, b"new contents").unwrap();
+    assert_eq!(std::fs::read(&path).unwrap(), b"new contents");
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+}
+
+#[test]
+fn compare_flags_regressions() {
+    let old = sample();
+    assert_eq!(compare(&old, &old, 0.1).regressions(), 0);
+
+    let mut worse = sample();
+    worse.rejection[0].rejected = 900;
+    worse.rejection[0].miss_capture = Some(0.9);
+    let r = compare(&old, &worse, 0.1);
+    assert_eq!(r.regressions(), 1);
+    assert!(
+        r.rows[0]
+            .flags
+            .iter()
+            .any(|f| f.contains("rejected 940->900"))
+    );
+
+    let mut false_reject = sample();
+    false_reject.rejection[1].false_rejects = 1;
+    false_reject.rejection[1].rejected = 1;
+    assert_eq!(compare(&old, &false_reject, 0.1).regressions(), 1);
+
+    // Better capture is flagged as a change but is no regression.
+    let mut better = sample();
+    better.rejection[0].rejected = 990;
+    better.rejection[0].miss_capture = Some(0.99);
+    let r = compare(&old, &better, 0.1);
+    assert_eq!(r.regressions(), 0);
+    assert!(!r.rows[0].flags.is_empty());
+
+    // Slower by 50 % with overlapping intervals: noise. Disjoint: regression.
+    let mut noisy = sample();
+    noisy.timing[0].total_ns = 30.0;
+    noisy.timing[0].total_ns_ci = [15.0, 45.0];
+    assert_eq!(compare(&old, &noisy, 0.1).regressions(), 0);
+    let mut slow = sample();
+    slow.timing[0].total_ns = 30.0;
+    slow.timing[0].total_ns_ci = [29.0, 31.0];
+    assert_eq!(compare(&old, &slow, 0.1).regressions(), 1);
+    // ... but not past a 60 % threshold.
+    assert_eq!(compare(&old, &slow, 0.6).regressions(), 0);
+
+    let mut bvh = sample();
+    bvh.bvh[0].matches_brute_force = false;
+    assert_eq!(compare(&old, &bvh, 0.1).regressions(), 1);
+    let mut bvh = sample();
+    bvh.bvh[0].hits = 41;
+    assert_eq!(compare(&old, &bvh, 0.1).regressions(), 1);
+
+    let mut fewer = sample();
+    fewer.rejection.pop();
+    let r = compare(&old, &fewer, 0.1);
+    assert_eq!(r.only_old, vec!["rejection grazing 2 none".to_string()]);
+    assert_eq!(r.regressions(), 0);
+}
+
+fn cli_compare(old: &Path, new: &Path) -> (i32, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["compare", old.to_str().unwrap(), new.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    (out.status.code().unwrap(), text)
+}
+
+#[test]
+fn compare_exit_codes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b, c) = (
+        dir.path().join("a.json"),
+        dir.path().join("b.json"),
+        dir.path().join("c.json"),
+    );
+    sample().save(&a).unwrap();
+    sample().save(&b).unwrap();
+    let mut worse = sample();
+    worse.rejection[0].miss_capture = Some(0.5);
+    worse.rejection[0].rejected = 500;
+    worse.save(&c).unwrap();
+    let (code, text) = cli_compare(&a, &b);
+    assert_eq!(code, 0, "{text}");
+    assert!(text.contains("0 regressions"));
+    let (code, text) = cli_compare(&a, &c);
+    assert_eq!(code, 1, "{text}");
+    assert!(text.contains("REGRESSION: lower miss capture"), "{text}");
+    let junk = dir.path().join("junk.json");
+    std::fs::write(&junk, "[]").unwrap();
+    let (code, text) = cli_compare(&a, &junk);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("junk.json"), "{text}");
+}
