@@ -7,7 +7,7 @@
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::fs::File;
-use std::io::{BufReader, BufWriter, Write};
+use std::io::{BufReader, BufWriter};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::results::{self, Results};
@@ -127,13 +127,36 @@ fn eval(
         let file = File::open(rays).map_err(|e| format!("--rays {name}: {e}"))?;
         Box::new(BufReader::new(file))
     };
-    let output: Box<dyn Write> = match out {
-        Some(path) => Box::new(BufWriter::new(
-            File::create(path).map_err(|e| format!("--out {}: {e}", path.display()))?,
-        )),
-        None => Box::new(BufWriter::new(std::io::stdout().lock())),
+    let rows = match out {
+        // A temp file renamed into place on success: an error or interrupt leaves no partial CSV.
+        Some(path) => {
+            let dir = match path.parent() {
+                Some(d) if !d.as_os_str().is_empty() => d,
+                _ => Path::new("."),
+            };
+            let tmp = tempfile::Builder::new()
+                .prefix(".torus-cull-eval-")
+                .tempfile_in(dir)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            let rows = torus_cull::eval::eval_csv(
+                major,
+                minor,
+                input,
+                &name,
+                BufWriter::new(tmp.as_file()),
+            )?;
+            tmp.persist(path)
+                .map_err(|e| format!("--out {}: {}", path.display(), e.error))?;
+            rows
+        }
+        None => torus_cull::eval::eval_csv(
+            major,
+            minor,
+            input,
+            &name,
+            BufWriter::new(std::io::stdout().lock()),
+        )?,
     };
-    let rows = torus_cull::eval::eval_csv(major, minor, input, &name, output)?;
     eprintln!("evaluated {rows} rays");
     Ok(ExitCode::SUCCESS)
 }

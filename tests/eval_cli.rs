@@ -55,6 +55,27 @@ fn bad_rows_stop_with_the_line_number() {
     let out = eval_file(dir.path(), &format!("{header}{good}"), "1", "2");
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("must be > 1"));
+    // --out is written atomically: a bad row leaves no partial output behind.
+    let input = dir.path().join("rays.csv");
+    std::fs::write(&input, format!("{header}{good}{good}1,2\n")).unwrap();
+    let out_path = dir.path().join("out.csv");
+    let out = run(&[
+        "eval",
+        "--major",
+        "2",
+        "--minor",
+        "1",
+        "--rays",
+        input.to_str().unwrap(),
+        "--out",
+        out_path.to_str().unwrap(),
+    ]);
+    assert!(!out.status.success());
+    assert!(
+        !out_path.exists(),
+        "a failed eval left {}",
+        out_path.display()
+    );
     // A missing file is named.
     let out = run(&[
         "eval",

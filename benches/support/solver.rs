@@ -2,7 +2,7 @@
 //! criterion, accuracy against the oracle's high-precision reference roots.
 
 use super::{BenchConfig, read_estimate};
-use criterion::Criterion;
+use criterion::{BenchmarkId, Criterion};
 use glam::DVec3;
 use std::fmt::Write;
 use std::hint::black_box;
@@ -94,19 +94,18 @@ fn peer(c: &[f64; 5]) -> Vec<f64> {
 /// A solver under test: its name and its roots for one coefficient set.
 pub type Solver = (&'static str, fn(&[f64; 5]) -> Vec<f64>);
 
-pub const SOLVERS: [Solver; 2] =
-    [("torus_cull", ours), ("roots_0.0.8", peer)];
+pub const SOLVERS: [Solver; 2] = [("torus_cull", ours), ("roots_0.0.8", peer)];
 
 pub fn bench(c: &mut Criterion, sets: &[SolverSet]) {
     let mut group = c.benchmark_group("solver");
-    group.bench_function("torus_cull/all", |b| {
+    group.bench_function(BenchmarkId::new("torus_cull", "all"), |b| {
         b.iter(|| {
             for s in sets {
                 black_box(solve_quartic(black_box(s.coefficients)));
             }
         })
     });
-    group.bench_function("roots_0.0.8/all", |b| {
+    group.bench_function(BenchmarkId::new("roots_0.0.8", "all"), |b| {
         b.iter(|| {
             for s in sets {
                 let c = black_box(s.coefficients);

@@ -113,13 +113,13 @@ pub trait Cull {
     fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool;
 }
 
-/// The foot point of the line (its point closest to the torus centre) and the unit
-/// direction. Shared first step of the sphere-based culls: it removes the far-origin
-/// cancellation from every later formula.
+/// The foot point p = o − d (o·d)/|d|² of the line (its point closest to the torus
+/// centre) and 1/|d|². Shared first step of the sphere-based culls: it removes the
+/// far-origin cancellation from every later formula, for one division and no root.
 #[inline(always)]
-pub(crate) fn foot_point(origin: Vec3, dir: Vec3) -> (Vec3, Vec3) {
-    let unit = dir * dir.length_recip();
-    (origin - unit * origin.dot(unit), unit)
+pub(crate) fn foot_point(origin: Vec3, dir: Vec3) -> (Vec3, f32) {
+    let inv_len_sq = 1.0 / dir.length_squared();
+    (origin - dir * (origin.dot(dir) * inv_len_sq), inv_len_sq)
 }
 
 /// Every cull by name: the registry.

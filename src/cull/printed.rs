@@ -16,7 +16,8 @@ impl Cull for CychoszPrintedCull {
     }
 
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (foot, unit) = foot_point(origin, dir);
+        let (foot, inv_len_sq) = foot_point(origin, dir);
+        let unit = dir * inv_len_sq.sqrt();
         let half_chord_sq = b.outer_safe_sq - foot.length_squared();
         if half_chord_sq < 0.0 {
             return false;

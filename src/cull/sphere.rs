@@ -5,8 +5,8 @@ use glam::Vec3;
 
 /// Rejects lines whose distance from the centre, |foot point|, exceeds R + r_η.
 ///
-/// The distance is taken at the foot point p = o − (o·d̂)d̂, not from |o|² − (o·d̂)², which
-/// cancels catastrophically for far origins.
+/// The distance is taken at the foot point p = o − d (o·d)/|d|², not from
+/// |o|² − (o·d)²/|d|², which cancels catastrophically for far origins.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct SphereCull;
 

@@ -19,7 +19,8 @@ impl Cull for ThickCylinderCull {
 
     #[inline(always)]
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (p, n) = foot_point(origin, dir);
+        let (p, inv_len_sq) = foot_point(origin, dir);
+        let n = dir * inv_len_sq.sqrt();
         // Slab |y| ≤ r_η as an interval of t (t measured from the foot point, unit speed).
         let (mut lo, mut hi) = if n.y == 0.0 {
             if p.y.abs() > b.minor_safe {
