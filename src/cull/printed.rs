@@ -39,9 +39,9 @@ impl SectionFormulas for PrintedBand {
     fn minor(b: &CullBounds) -> f32 {
         b.minor_radius
     }
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
-        let inner_h = (b.major_radius - b.minor_radius) * h;
-        (inner_h - a_h) * (inner_h + a_h)
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32 {
+        let inner = b.major_radius - b.minor_radius;
+        inner * inner * h_sq - a_h * a_h
     }
     fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
         let off = a_h - b.minor_radius * h;
@@ -70,10 +70,10 @@ impl SectionFormulas for PrintedHole {
     fn minor(b: &CullBounds) -> f32 {
         b.minor_radius
     }
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32 {
         let inner = b.major_radius - b.minor_radius;
         let sin_phi_h = a_h / b.major_radius;
-        inner * inner * (h * h - sin_phi_h * sin_phi_h)
+        inner * inner * (h_sq - sin_phi_h * sin_phi_h)
     }
     fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
         let off = a_h - b.major_radius * h;

@@ -48,8 +48,8 @@ impl Cull for SkalaCull {
 pub(crate) trait SectionFormulas {
     /// Tube radius the formulas use (padded for the timed cull).
     fn minor(b: &CullBounds) -> f32;
-    /// x_B²·h² for case a), given A = a·h and h (any common scale of A and h).
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32;
+    /// x_B²·h² for case a), given A = a·h and h² (any common scale of A and h).
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32;
     /// h_c²·h² for case c), given A = a·h and h (any common scale of A and h).
     fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32;
 }
@@ -63,11 +63,10 @@ impl SectionFormulas for Corrected {
         b.minor_safe
     }
     #[inline(always)]
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
-        // As a product of a difference and a sum: the difference is exact when a ≈ R − r,
-        // where x_B has infinite slope.
-        let inner_h = b.inner_safe * h;
-        (inner_h - a_h) * (inner_h + a_h)
+    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32 {
+        // Rounding here acts like moving R − r and a by ~ε relative, which the margin η
+        // absorbs, even where x_B has infinite slope (a ≈ R − r).
+        b.inner_safe_sq * h_sq - a_h * a_h
     }
     #[inline(always)]
     fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
@@ -106,8 +105,13 @@ pub(crate) fn skala_keeps<F: SectionFormulas>(b: &CullBounds, origin: Vec3, dir:
     let a_h_sq = a_h * a_h;
     if a_h_sq >= b.major_radius * b.major_radius * h_sq {
         // Outer band (case c, and d when h_c² < 0): the slab shrinks to |Y| ≤ h_c, tested
-        // as lowest² + (a − R)² ≤ r², times h² so that no division is needed.
-        let lowest = (p.y.abs() - (unit_y_sq * half_chord_sq).sqrt()).max(0.0);
+        // as lowest² + (a − R)² ≤ r², times h² so that no division is needed. A chord that
+        // crosses y = 0 (p_y² ≤ its squared height reach) has lowest = 0: keep, no root.
+        let reach_sq = unit_y_sq * half_chord_sq;
+        if p.y * p.y <= reach_sq {
+            return true;
+        }
+        let lowest = p.y.abs() - reach_sq.sqrt();
         let h = h_sq.sqrt();
         return lowest * lowest * h_sq <= F::band_height_sq_h2(b, a_h, h);
     }
@@ -116,11 +120,17 @@ pub(crate) fn skala_keeps<F: SectionFormulas>(b: &CullBounds, origin: Vec3, dir:
         // moment, times h·|d|, is M = (p_x d_x + p_z d_z)·d_y − p_y·h², the same at every
         // point of the line. (p_y·|d|/h would do at the exact foot point, but in f32 p
         // slides along the line by ~ε|o|, and 1/h would amplify that for steep lines.)
+        // Rejection needs x_B·h·|d_y| ≥ |M| + (a non-negative term): if even |M| alone is
+        // out of reach the line is kept, before any root is taken.
+        let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
+        let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
+        if edge < moment * moment {
+            return true;
+        }
         let h = h_sq.sqrt();
         let len = len_sq.sqrt();
-        let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
         let rhs = moment.abs() + F::minor(b) * h * (len - d.y.abs());
-        return F::hole_edge_sq_h2(b, a_h, h) * (d.y * d.y) < rhs * rhs;
+        return edge < rhs * rhs;
     }
     true
 }
