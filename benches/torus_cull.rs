@@ -6,8 +6,9 @@
 //! * `total_ns`: [`intersect_culled`] on world rays (transform, cull, quartic if kept);
 //!   the `none` column is `solve_ns`, the baseline.
 //!
-//! Plus the quartic solver against the `roots` crate on the same coefficient sets, and the
-//! full-ν rejection sweep. The figures are criterion's medians and confidence intervals
+//! Plus the quartic solver against the `roots` crate on the same coefficient sets, the
+//! full-ν rejection sweep, and the workload's `bvh` scenes: obvhs CWBVH over many tori,
+//! each cull at the leaves, Mrays/s and quartic solves per ray. The figures are criterion's medians and confidence intervals
 //! of this run, read back from its `estimates.json` files.
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
@@ -22,7 +23,7 @@ use criterion::{BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
-use support::{BenchConfig, Estimate, read_estimate, solver};
+use support::{BenchConfig, Estimate, bvh, read_estimate, solver};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
 use torus_cull::results::{Results, TimingRecord};
@@ -126,11 +127,16 @@ fn main() {
 
     let solver_sets = solver::coefficient_sets(&workload, &config);
     solver::bench(&mut c, &solver_sets);
+    let bvh_pending = match (&workload.bvh, config.bvh) {
+        (Some(spec), true) => bvh::bench(&mut c, &config.bvh_spec(spec), workload.seed),
+        _ => Vec::new(),
+    };
     c.final_summary();
 
     let home = criterion_home();
     results.timing = timing_records(&home, &batches, config.batch, started);
     results.solver = solver::records(&home, &solver_sets, started);
+    results.bvh = bvh::records(&home, bvh_pending, started);
 
     let path = std::env::var_os("TORUS_CULL_RESULTS").map_or_else(
         || torus_cull::results::default_path(Path::new("results"), ""),
@@ -149,6 +155,7 @@ fn main() {
     print!("{}", torus_cull::report::timing_tables(&results));
     print!("{}", torus_cull::report::cull_ns_tables(&results));
     print!("{}", solver::table(&results.solver));
+    print!("{}", torus_cull::report::bvh_tables(&results));
     println!("wrote {}", path.display());
     let dir = path.parent().unwrap_or(Path::new("."));
     let stem = path

@@ -114,7 +114,7 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     for (key, o, n) in pair_up(
         &old.bvh,
         &new.bvh,
-        |r: &BvhRecord| key(&r.scene, r.nu, &r.cull),
+        |r: &BvhRecord| key(&format!("{} {}", r.scene, r.ray_set), r.nu, &r.cull),
         &mut report,
         "bvh",
     ) {

@@ -9,7 +9,8 @@
 //! The rest of the crate is the measuring harness behind the `torus-cull` command and
 //! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
 //! generators and workload files), [`measure`] (counting), [`results`] (the results
-//! JSON), [`compare`], [`report`] and [`plot`], and [`eval`].
+//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], and [`scene`] (many tori in an
+//! obvhs BVH) with [`render`].
 //!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
@@ -43,8 +44,10 @@ pub mod oracle;
 pub mod plot;
 pub mod quartic;
 mod ray;
+pub mod render;
 pub mod report;
 pub mod results;
+pub mod scene;
 mod torus;
 pub mod workload;
 

@@ -55,6 +55,27 @@ enum Command {
         #[arg(long)]
         only_changes: bool,
     },
+    /// Render a many-torus scene and its cull map (PNG).
+    Render {
+        /// Scene: ring_field, chain or facing_grid.
+        #[arg(long)]
+        scene: String,
+        /// ν = R/r of the scene's tori (> 1).
+        #[arg(long)]
+        nu: f64,
+        /// Output PNG; the cull map goes next to it as <stem>-cullmap.png.
+        #[arg(long)]
+        out: PathBuf,
+        /// Image side in pixels.
+        #[arg(long, default_value_t = 512)]
+        size: usize,
+        /// Tori in the scene.
+        #[arg(long, default_value_t = 1000)]
+        tori: usize,
+        /// Scene seed.
+        #[arg(long, default_value_t = 20261121)]
+        seed: u64,
+    },
     /// Write the SVG charts of a results file.
     Plot {
         /// Results JSON.
@@ -90,6 +111,14 @@ fn main() -> ExitCode {
             no_plots,
         } => run(&workload, out, threads, no_plots),
         Command::Plot { file, out_dir } => plot(&file, out_dir),
+        Command::Render {
+            scene,
+            nu,
+            out,
+            size,
+            tori,
+            seed,
+        } => render(&scene, nu, &out, size, tori, seed),
         Command::Compare {
             old,
             new,
@@ -257,4 +286,37 @@ fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> CliRes
     } else {
         ExitCode::SUCCESS
     })
+}
+
+fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: u64) -> CliResult {
+    let kind: torus_cull::scene::SceneKind = scene.parse().map_err(|e| format!("--scene: {e}"))?;
+    if !(1..=8192).contains(&size) {
+        return Err(format!("--size {size} is invalid (allowed: 1 ..= 8192)").into());
+    }
+    if !(1..=1_000_000).contains(&tori) {
+        return Err(format!("--tori {tori} is invalid (allowed: 1 ..= 1000000)").into());
+    }
+    let scene =
+        torus_cull::scene::Scene::build(kind, nu, tori, seed).map_err(|e| format!("--nu: {e}"))?;
+    let image = torus_cull::render::render(&scene, size);
+    let map_path = out.with_file_name(format!(
+        "{}-cullmap.png",
+        out.file_stem()
+            .map_or("render".into(), |s| s.to_string_lossy())
+    ));
+    torus_cull::render::write_png(out, size, &image.shaded)?;
+    torus_cull::render::write_png(&map_path, size, &image.cull_map)?;
+    let c = image.counts;
+    let total = (size * size) as f64;
+    println!("wrote {} and {}", out.display(), map_path.display());
+    for (name, n) in [
+        ("hit", c.hit),
+        ("reached the quartic and missed (skala)", c.quartic_missed),
+        ("rejected only by skala", c.skala_only),
+        ("rejected by cychosz", c.cychosz),
+        ("entered no box", c.no_box),
+    ] {
+        println!("  {name:<40} {n:>8} ({:.1}%)", 100.0 * n as f64 / total);
+    }
+    Ok(ExitCode::SUCCESS)
 }

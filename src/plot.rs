@@ -44,43 +44,50 @@ pub fn line_chart(
     }
     let pad = ((y_max - y_min) * 0.05).max(1e-9);
     let (y_lo, y_hi) = (y_min - if y_from_zero { 0.0 } else { pad }, y_max + pad);
-    let root = SVGBackend::new(path, (760, 480)).into_drawing_area();
+    let root = SVGBackend::new(path, (900, 480)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
+    // The legend gets its own strip, so it never hides a line.
+    let (plot_area, legend_area) = root.split_horizontally(740);
+    let mut ticks: Vec<f64> = series
+        .iter()
+        .flat_map(|(_, p)| p.iter().map(|&(x, _)| x))
+        .collect();
+    ticks.sort_by(f64::total_cmp);
+    ticks.dedup();
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(44)
         .y_label_area_size(64)
-        .build_cartesian_2d((x_min * 0.95..x_max * 1.05).log_scale(), y_lo..y_hi)?;
+        .build_cartesian_2d(
+            (x_min * 0.95..x_max * 1.05)
+                .log_scale()
+                .with_key_points(ticks),
+            y_lo..y_hi,
+        )?;
     chart
         .configure_mesh()
         .x_desc("ν = R/r (log scale)")
         .y_desc(y_label)
         .label_style(("sans-serif", 14))
-        .x_label_formatter(&|x| {
-            format!("{x:.3}")
-                .trim_end_matches('0')
-                .trim_end_matches('.')
-                .to_string()
-        })
+        .light_line_style(WHITE)
+        .x_label_formatter(&|x| format!("{x}"))
         .draw()?;
     for (i, (name, pts)) in series.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
-        chart
-            .draw_series(LineSeries::new(pts.iter().copied(), colour.stroke_width(2)))?
-            .label(name.as_str())
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], colour.stroke_width(2))
-            });
+        chart.draw_series(LineSeries::new(pts.iter().copied(), colour.stroke_width(2)))?;
         chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+        let y = 60 + 24 * i as i32;
+        legend_area.draw(&PathElement::new(
+            vec![(8, y), (32, y)],
+            colour.stroke_width(3),
+        ))?;
+        legend_area.draw(&Text::new(
+            name.clone(),
+            (40, y - 8),
+            ("sans-serif", 15).into_font().color(&BLACK),
+        ))?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 14))
-        .draw()?;
     root.present()?;
     Ok(())
 }
@@ -166,7 +173,12 @@ pub fn plot_results(
         )?;
     }
     // Per BVH scene: Mrays/s and quartic solves per ray against ν.
-    for scene in ordered(results.bvh.iter().map(|r| r.scene.clone())) {
+    for scene in ordered(
+        results
+            .bvh
+            .iter()
+            .map(|r| format!("{}-{}", r.scene, r.ray_set)),
+    ) {
         let of = |f: &dyn Fn(&crate::results::BvhRecord) -> f64| -> Vec<Series> {
             ordered(results.bvh.iter().map(|r| r.cull.clone()))
                 .into_iter()
@@ -174,7 +186,7 @@ pub fn plot_results(
                     let pts = results
                         .bvh
                         .iter()
-                        .filter(|r| r.scene == scene && r.cull == cull)
+                        .filter(|r| format!("{}-{}", r.scene, r.ray_set) == scene && r.cull == cull)
                         .map(|r| (r.nu, f(r)))
                         .collect();
                     (cull, pts)

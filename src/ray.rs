@@ -116,6 +116,16 @@ impl Ray {
         self.t_max
     }
 
+    /// The same ray with its range cut to end at `t_max` (never widened, never below
+    /// `t_min`): what a traversal passes on once a closer hit is known.
+    #[inline]
+    pub fn with_t_max(&self, t_max: f32) -> Ray {
+        Ray {
+            t_max: t_max.min(self.t_max).max(self.t_min),
+            ..*self
+        }
+    }
+
     /// The point `o + t·d`.
     #[inline]
     pub fn at(&self, t: f32) -> Vec3 {

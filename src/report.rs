@@ -86,10 +86,15 @@ pub fn cull_ns_tables(results: &Results) -> String {
 
 /// BVH figures: Mrays/s and quartic solves per ray, per scene.
 pub fn bvh_tables(results: &Results) -> String {
+    let keyed: Vec<(String, &crate::results::BvhRecord)> = results
+        .bvh
+        .iter()
+        .map(|r| (format!("{} {} rays", r.scene, r.ray_set), r))
+        .collect();
     table(
-        &results.bvh,
-        |r| (r.scene.as_str(), r.nu, r.cull.as_str()),
-        |r| format!("{:.2} / {:.3}", r.mrays_per_s, r.quartic_solves_per_ray),
+        &keyed,
+        |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
+        |(_, r)| format!("{:.2} / {:.3}", r.mrays_per_s, r.quartic_solves_per_ray),
         |scene| format!("BVH {scene}: Mrays/s / quartic solves per ray"),
     )
 }

@@ -117,6 +117,10 @@ pub struct BvhRecord {
     pub nu: f64,
     /// Cull used at the leaves.
     pub cull: String,
+    /// Which rays: `camera` (the framing pinhole view) or `random` (lines through the
+    /// scene's bounds).
+    #[serde(default = "camera_rays")]
+    pub ray_set: String,
     /// Rays traced.
     pub rays: u64,
     /// Rays with a closest hit.
@@ -131,6 +135,10 @@ pub struct BvhRecord {
     pub mrays_per_s: f64,
     /// Closest hits identical to brute force with the `none` cull.
     pub matches_brute_force: bool,
+}
+
+fn camera_rays() -> String {
+    "camera".into()
 }
 
 /// A quartic solver's speed and accuracy on the bench's coefficient sets.

@@ -66,6 +66,7 @@ fn sample() -> Results {
             scene: "facing_grid".into(),
             nu: 4.0,
             cull: "skala".into(),
+            ray_set: "camera".into(),
             rays: 100,
             hits: 40,
             leaf_visits_per_ray: 2.0,

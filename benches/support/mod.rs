@@ -1,6 +1,7 @@
 //! Shared bench plumbing: size presets, reading criterion's estimates, the solver duel.
 #![allow(dead_code)]
 
+pub mod bvh;
 pub mod solver;
 
 use std::path::Path;
@@ -23,6 +24,10 @@ pub struct BenchConfig {
     pub samples: usize,
     /// Cap on rays per (case, ν) in the rejection sweep (`None`: the workload's count).
     pub sweep_rays: Option<usize>,
+    /// Whether to run the workload's BVH scenes.
+    pub bvh: bool,
+    /// `smoke` shrinks the BVH scenes to seconds.
+    pub small_bvh: bool,
 }
 
 /// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
@@ -42,6 +47,8 @@ impl BenchConfig {
                 measurement: Duration::from_millis(60),
                 samples: 10,
                 sweep_rays: Some(1_000),
+                bvh: true,
+                small_bvh: true,
             },
             "default" => BenchConfig {
                 name: "default",
@@ -51,6 +58,8 @@ impl BenchConfig {
                 measurement: Duration::from_millis(600),
                 samples: 20,
                 sweep_rays: None,
+                bvh: true,
+                small_bvh: false,
             },
             "full" => BenchConfig {
                 name: "full",
@@ -60,6 +69,8 @@ impl BenchConfig {
                 measurement: Duration::from_secs(3),
                 samples: 50,
                 sweep_rays: None,
+                bvh: true,
+                small_bvh: false,
             },
             other => panic!("TORUS_CULL_BENCH={other} is invalid (allowed: smoke, default, full)"),
         };
@@ -89,6 +100,21 @@ impl BenchConfig {
         } else {
             picked
         }
+    }
+
+    /// The BVH spec to bench: the workload's, or a seconds-sized one for `smoke`.
+    pub fn bvh_spec(
+        &self,
+        spec: &torus_cull::workload::spec::BvhSpec,
+    ) -> torus_cull::workload::spec::BvhSpec {
+        let mut s = spec.clone();
+        if self.small_bvh {
+            s.nu.truncate(1);
+            s.tori = s.tori.min(64);
+            s.image = s.image.min(32);
+            s.random_rays = s.random_rays.min(512);
+        }
+        s
     }
 
     /// The workload the rejection sweep runs: the full one, or capped for `smoke`.

@@ -7,6 +7,7 @@
 //! Unknown fields are errors. Every error names the file, the field and what is allowed.
 
 use super::{Case, Pose};
+use crate::scene::SceneKind;
 use serde::Deserialize;
 use sha2::{Digest, Sha256};
 use std::fmt;
@@ -30,8 +31,8 @@ pub struct Workload {
     pub rays: usize,
     /// Where the torus sits.
     pub pose: Pose,
-    /// The BVH scenes, if the file has a `bvh` key (kept as JSON for the BVH module).
-    pub bvh: Option<serde_json::Value>,
+    /// The many-torus BVH scenes, if the file has a `bvh` key.
+    pub bvh: Option<BvhSpec>,
     /// SHA-256 of the file's bytes, hex.
     pub sha256: String,
 }
@@ -48,6 +49,40 @@ struct RawWorkload {
     pose: Option<String>,
     #[serde(default)]
     bvh: Option<serde_json::Value>,
+}
+
+/// The `bvh` key: many-torus scenes for the BVH bench and `render`.
+///
+/// ```json
+/// "bvh": { "scenes": ["ring_field", "chain", "facing_grid"], "nu": [2, 4, 8],
+///          "tori": 1000, "image": 512, "random_rays": 65536, "brute_force_stride": 16 }
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct BvhSpec {
+    /// Scene layouts.
+    pub scenes: Vec<SceneKind>,
+    /// ν of the scenes' tori.
+    pub nu: Vec<f64>,
+    /// Tori per scene.
+    pub tori: usize,
+    /// Camera image side, pixels (image × image camera rays).
+    pub image: usize,
+    /// Random rays through the scene's bounds.
+    pub random_rays: usize,
+    /// Every this many rays is also checked against brute force (all tori, no cull).
+    pub brute_force_stride: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBvh {
+    scenes: Vec<String>,
+    nu: Vec<f64>,
+    tori: i64,
+    image: i64,
+    random_rays: i64,
+    #[serde(default)]
+    brute_force_stride: Option<i64>,
 }
 
 /// A workload file that cannot be used.
@@ -176,6 +211,12 @@ impl Workload {
                 ));
             }
         };
+        let bvh = match raw.bvh {
+            None => None,
+            Some(value) => {
+                Some(parse_bvh(value).map_err(|(field, message)| err(Some(&field), message))?)
+            }
+        };
         Ok(Workload {
             name: raw.name,
             seed,
@@ -183,10 +224,69 @@ impl Workload {
             nu,
             rays: raw.rays as usize,
             pose,
-            bvh: raw.bvh,
+            bvh,
             sha256: hex(&Sha256::digest(bytes)),
         })
     }
+}
+
+fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, (String, String)> {
+    let raw: RawBvh = serde_json::from_value(value).map_err(|e| {
+        (
+            "bvh".to_string(),
+            format!(
+                "{e} (expected scenes, nu, tori, image, random_rays, optional brute_force_stride)"
+            ),
+        )
+    })?;
+    let field = |name: &str| format!("bvh.{name}");
+    if raw.scenes.is_empty() {
+        return Err((field("scenes"), "must list at least one scene".into()));
+    }
+    let mut scenes = Vec::new();
+    for name in &raw.scenes {
+        scenes.push(
+            name.parse::<SceneKind>()
+                .map_err(|e| (field("scenes"), e))?,
+        );
+    }
+    if raw.nu.is_empty() {
+        return Err((
+            field("nu"),
+            "must list at least one value (allowed: finite, > 1)".into(),
+        ));
+    }
+    for (i, &nu) in raw.nu.iter().enumerate() {
+        if !(nu.is_finite() && nu > 1.0 && nu <= 1e6) {
+            return Err((
+                format!("bvh.nu[{i}]"),
+                format!("{nu} is invalid (allowed: 1 < nu <= 1e6)"),
+            ));
+        }
+    }
+    let ranged = |name: &str, v: i64, lo: i64, hi: i64| {
+        if (lo..=hi).contains(&v) {
+            Ok(v as usize)
+        } else {
+            Err((
+                field(name),
+                format!("{v} is invalid (allowed: {lo} ..= {hi})"),
+            ))
+        }
+    };
+    Ok(BvhSpec {
+        scenes,
+        nu: raw.nu,
+        tori: ranged("tori", raw.tori, 1, 1_000_000)?,
+        image: ranged("image", raw.image, 1, 8192)?,
+        random_rays: ranged("random_rays", raw.random_rays, 0, MAX_RAYS)?,
+        brute_force_stride: ranged(
+            "brute_force_stride",
+            raw.brute_force_stride.unwrap_or(16),
+            1,
+            1 << 30,
+        )?,
+    })
 }
 
 fn case_names() -> String {
@@ -264,6 +364,22 @@ mod tests {
                 "field `seed`: -1 is invalid (allowed: an integer 0 ..=",
             ),
             ("not json", "w.json"),
+            (
+                r#"{"name":"t","seed":7,"cases":["hole"],"nu":[2],"rays":1,"bvh":{"scenes":["torus_soup"],"nu":[2],"tori":10,"image":8,"random_rays":0}}"#,
+                "field `bvh.scenes`: unknown scene 'torus_soup'",
+            ),
+            (
+                r#"{"name":"t","seed":7,"cases":["hole"],"nu":[2],"rays":1,"bvh":{"scenes":["chain"],"nu":[2],"tori":0,"image":8,"random_rays":0}}"#,
+                "field `bvh.tori`: 0 is invalid (allowed: 1 ..= 1000000)",
+            ),
+            (
+                r#"{"name":"t","seed":7,"cases":["hole"],"nu":[2],"rays":1,"bvh":{"scenes":["chain"],"nu":[0.9],"tori":5,"image":8,"random_rays":0}}"#,
+                "field `bvh.nu[0]`: 0.9 is invalid",
+            ),
+            (
+                r#"{"name":"t","seed":7,"cases":["hole"],"nu":[2],"rays":1,"bvh":{"scenes":["chain"],"nu":[2],"tori":5,"image":8,"random_rays":0,"lights":3}}"#,
+                "field `bvh`: unknown field `lights`",
+            ),
         ] {
             let e = parse(text).unwrap_err().to_string();
             assert!(e.contains(needle), "{text}\n  gave: {e}");

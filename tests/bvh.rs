@@ -1,0 +1,117 @@
+//! Through the obvhs BVH, every cull gives the brute-force closest hit (torus and t).
+
+use glam::Vec3;
+use torus_cull::scene::{Scene, SceneKind, TraceStats, same_hit};
+use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+
+struct Check<'a> {
+    scene: &'a Scene,
+    rays: &'a [Ray],
+    truth: &'a [Option<(u32, f32)>],
+}
+
+impl CullVisitor for Check<'_> {
+    type Output = (usize, TraceStats);
+    fn visit<C: Cull>(self, cull: C) -> (usize, TraceStats) {
+        let mut stats = TraceStats::default();
+        let mut wrong = 0;
+        for (ray, truth) in self.rays.iter().zip(self.truth) {
+            let got = self.scene.trace(&cull, ray, &mut stats);
+            if !same_hit(got, *truth) {
+                wrong += 1;
+                eprintln!(
+                    "{}: {ray:?}: bvh {got:?} vs brute force {truth:?}",
+                    cull.name()
+                );
+            }
+        }
+        (wrong, stats)
+    }
+}
+
+/// Axis-aligned rays over the scene, with -0.0 direction components (the CwBvh trap).
+fn axis_rays(scene: &Scene) -> Vec<Ray> {
+    let (c, r) = scene.bounding_sphere;
+    let c = c.as_vec3();
+    let r = r as f32;
+    let mut rays = Vec::new();
+    for i in 0..24 {
+        for j in 0..24 {
+            let (u, v) = ((i as f32 / 23.0 - 0.5) * r, (j as f32 / 23.0 - 0.5) * r);
+            for (o, d) in [
+                (c + Vec3::new(u, v, 2.0 * r), Vec3::new(-0.0, 0.0, -1.0)),
+                (c + Vec3::new(u, 2.0 * r, v), Vec3::new(0.0, -1.0, -0.0)),
+                (c + Vec3::new(-2.0 * r, u, v), Vec3::new(1.0, -0.0, -0.0)),
+                (c + Vec3::new(u, v, -2.0 * r), Vec3::Z),
+            ] {
+                rays.push(Ray::new(o, d).unwrap());
+            }
+        }
+    }
+    rays
+}
+
+#[test]
+fn every_cull_matches_brute_force_through_the_bvh() {
+    for kind in SceneKind::ALL {
+        for nu in [1.5, 4.0] {
+            let scene = Scene::build(kind, nu, 60, 3).unwrap();
+            let mut rays = scene.camera_rays(40);
+            rays.extend(scene.random_rays(600, 9));
+            rays.extend(axis_rays(&scene));
+            let truth: Vec<_> = rays.iter().map(|r| scene.brute_force(r)).collect();
+            let hits = truth.iter().filter(|h| h.is_some()).count();
+            assert!(
+                hits > rays.len() / 20,
+                "{kind} nu={nu}: only {hits} hits, test too weak"
+            );
+            let mut solves = Vec::new();
+            for cull in CullKind::TIMED {
+                let (wrong, stats) = cull.visit(Check {
+                    scene: &scene,
+                    rays: &rays,
+                    truth: &truth,
+                });
+                assert_eq!(wrong, 0, "{cull} on {kind} nu={nu}");
+                assert_eq!(stats.leaf_visits, stats.cull_rejects + stats.quartic_solves);
+                solves.push(stats.quartic_solves);
+            }
+            // none solves at every leaf; skala never solves more than cychosz.
+            let (none, cychosz, skala) = (solves[0], solves[3], solves[5]);
+            assert!(
+                skala <= cychosz && cychosz <= none,
+                "{kind} nu={nu}: {solves:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn minus_zero_directions_are_traversed() {
+    let scene = Scene::build(SceneKind::FacingGrid, 4.0, 16, 1).unwrap();
+    // Straight down the axis of a facing-grid torus onto its tube, with -0.0 components.
+    let t = &scene.tori[5];
+    let axis = t.axis();
+    let on_tube = t.center() + t.dir_to_world(Vec3::new(t.major_radius(), 0.0, 0.0));
+    let ray = Ray::new(on_tube + axis * 10.0, -axis + Vec3::new(-0.0, -0.0, 0.0)).unwrap();
+    let truth = scene.brute_force(&ray);
+    assert!(truth.is_some());
+    let got = scene.trace(&torus_cull::NoCull, &ray, &mut TraceStats::default());
+    assert!(same_hit(got, truth), "{got:?} vs {truth:?}");
+}
+
+#[test]
+fn trace_respects_t_min() {
+    let scene = Scene::build(SceneKind::FacingGrid, 4.0, 9, 1).unwrap();
+    let rays = scene.camera_rays(24);
+    for ray in rays.iter().filter(|r| scene.brute_force(r).is_some()) {
+        let (_, t) = scene.brute_force(ray).unwrap();
+        let later = Ray::with_range(ray.origin(), ray.dir(), t * 1.0001, f32::INFINITY).unwrap();
+        let got = scene.trace(&torus_cull::NoCull, &later, &mut TraceStats::default());
+        assert!(
+            got.is_none_or(|(_, t2)| t2 >= t * 1.0001),
+            "{got:?} before t_min"
+        );
+        assert!(same_hit(got, scene.brute_force(&later)));
+    }
+}
