@@ -30,7 +30,7 @@ use torus_cull::results::{Results, TimingRecord};
 use torus_cull::workload::spec::Workload;
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
-    Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect_culled,
+    Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled,
 };
 
 /// Times one cull on one batch, both ways.
@@ -81,6 +81,8 @@ fn main() {
         config.name, workload.name, timed_nus, config.batch
     );
 
+    let clock = std::time::Instant::now();
+    let stage = |name: &str| eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
     let mut results = Results::new(&workload, "bench");
     let sweep = config.sweep_workload(&workload);
     let (records, false_rejects) =
@@ -90,6 +92,7 @@ fn main() {
         "false rejects in the rejection sweep: {false_rejects:?}"
     );
     results.rejection = records;
+    stage("rejection sweep done");
 
     let mut c = Criterion::default()
         .warm_up_time(config.warm_up)
@@ -111,6 +114,25 @@ fn main() {
                 .iter()
                 .map(|r| labeled.batch.torus.line_to_local(r))
                 .collect();
+            let torus = labeled.batch.torus;
+            let hit_rays: Vec<Ray> = labeled
+                .batch
+                .rays
+                .iter()
+                .zip(&labeled.labels)
+                .filter(|(_, l)| l.class == OracleClass::Hit)
+                .map(|(r, _)| *r)
+                .collect();
+            if !hit_rays.is_empty() {
+                c.benchmark_group(format!("solve_hits-{case}"))
+                    .bench_with_input(BenchmarkId::new("none", nu), &hit_rays, |b, rays| {
+                        b.iter(|| {
+                            for ray in rays {
+                                black_box(intersect(&torus, ray));
+                            }
+                        })
+                    });
+            }
             for cull in CullKind::TIMED {
                 cull.visit(TimeCull {
                     c: &mut c,
@@ -125,13 +147,16 @@ fn main() {
         }
     }
 
+    stage("cull timings done");
     let solver_sets = solver::coefficient_sets(&workload, &config);
     solver::bench(&mut c, &solver_sets);
+    stage("solver timings done");
     let bvh_pending = match (&workload.bvh, config.bvh) {
         (Some(spec), true) => bvh::bench(&mut c, &config.bvh_spec(spec), workload.seed),
         _ => Vec::new(),
     };
     c.final_summary();
+    stage("bvh done");
 
     let home = criterion_home();
     results.timing = timing_records(&home, &batches, config.batch, started);
@@ -196,12 +221,14 @@ fn timing_records(
         let Some(solve) = read("total_ns", CullKind::None) else {
             continue;
         };
-        let hit_fraction = labeled
-            .labels
-            .iter()
-            .filter(|l| l.class == OracleClass::Hit)
-            .count() as f64
-            / labeled.labels.len() as f64;
+        let hits = labeled.hits();
+        let hit_fraction = hits as f64 / labeled.labels.len() as f64;
+        let solve_hit = (hits > 0)
+            .then(|| {
+                read_estimate(home, &format!("solve_hits-{case}"), "none", nu, since)
+                    .map(|e| e.median / hits as f64)
+            })
+            .flatten();
         for cull in CullKind::TIMED {
             let (Some(cull_ns), Some(total)) = (read("cull_ns", cull), read("total_ns", cull))
             else {
@@ -216,6 +243,8 @@ fn timing_records(
                 total_ns_ci: [total.lower, total.upper],
                 speedup_vs_none: solve.median / total.median,
                 ideal_total_ns: cull_ns.median + hit_fraction * solve.median,
+                solve_hit_ns: solve_hit,
+                ideal_total_ns_at_hit_cost: solve_hit.map(|s| cull_ns.median + hit_fraction * s),
                 source: "criterion".into(),
             });
         }

@@ -104,6 +104,13 @@ pub struct TimingRecord {
     pub speedup_vs_none: f64,
     /// cull_ns + (hits/rays)·solve_ns: this cull's cost if it rejected every miss.
     pub ideal_total_ns: f64,
+    /// The exact intersection on the batch's oracle hits only, ns per ray: a hit costs
+    /// more to solve than the average ray (more real roots, polish, normal).
+    #[serde(default)]
+    pub solve_hit_ns: Option<f64>,
+    /// cull_ns + (hits/rays)·solve_hit_ns: the ideal at the true cost of a hit.
+    #[serde(default)]
+    pub ideal_total_ns_at_hit_cost: Option<f64>,
     /// Where the figures come from (`criterion`).
     pub source: String,
 }

@@ -226,8 +226,22 @@ impl Scene {
         let (e1, _) = forward.any_orthonormal_pair();
         let right = e1;
         let up = right.cross(forward);
-        let distance = (centre - eye).length();
-        let tan_half_fov = (radius / distance).min(0.999).asin().tan() * 1.02;
+        // Frame the box's projected corners, not its bounding sphere: a flat grid would
+        // otherwise fill half the picture.
+        let (lo, hi) = (lo.as_dvec3(), hi.as_dvec3());
+        let tan_half_fov = (0..8)
+            .map(|i| {
+                let corner = DVec3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let v = corner - eye;
+                let z = v.dot(forward).max(1e-9);
+                (v.dot(right) / z).abs().max((v.dot(up) / z).abs())
+            })
+            .fold(0.0, f64::max)
+            * 1.03;
         Ok(Scene {
             kind,
             nu,

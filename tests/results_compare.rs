@@ -60,6 +60,8 @@ fn sample() -> Results {
             total_ns_ci: [19.0, 21.0],
             speedup_vs_none: 5.0,
             ideal_total_ns: 6.0,
+            solve_hit_ns: None,
+            ideal_total_ns_at_hit_cost: None,
             source: "criterion".into(),
         }],
         bvh: vec![BvhRecord {
