@@ -157,6 +157,30 @@ fn ferrari(p: f64, q: f64, r: f64, orig: &[f64; 5], shift: f64) -> RealRoots {
     out
 }
 
+/// The greatest real root of ξ³ + a ξ² + b ξ + c by Newton from Fujiwara's bound
+/// 2·max(|a|, √|b|, ∛|c/2|), which lies right of every root. Cold path.
+#[cold]
+fn greatest_root_from_above(a: f64, b: f64, c: f64) -> f64 {
+    let g = |x: f64| ((x + a) * x + b) * x + c;
+    let mut x = 2.0 * a.abs().max(b.abs().sqrt()).max((0.5 * c).abs().cbrt());
+    for _ in 0..200 {
+        let gx = g(x);
+        let dg = (3.0 * x + 2.0 * a) * x + b;
+        // Written so that NaN also fails the test.
+        let ok = gx > 0.0 && dg > 0.0;
+        if !ok {
+            break;
+        }
+        let next = x - gx / dg;
+        let ok = next < x;
+        if !ok {
+            break;
+        }
+        x = next;
+    }
+    x
+}
+
 /// `y² + p y + r = 0` with `y = x²`.
 #[inline]
 fn biquadratic(p: f64, r: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
@@ -220,6 +244,18 @@ fn resolvent_greatest_root(p: f64, q: f64, r: f64) -> f64 {
         }
     };
     let mut xi = y - a3;
+    // g(ξ) = (ξ − p/2)(ξ² − r) − q²/8 is ≤ 0 at ξ = p/2 and at ξ = √r, so the greatest
+    // root is never below either. When those two nearly coincide (p/2 ≈ √r: a line far
+    // from the torus gives x⁴ + p x² + r ≈ (x² + p/2)²), rounding can make the top pair
+    // complex and the closed form returns the isolated root −√r instead; the factors then
+    // have real, spurious roots. Newton from Fujiwara's upper bound comes down onto the
+    // greatest root monotonically (g is convex and increasing right of it).
+    let lower = (0.5 * p).max(if r > 0.0 { r.sqrt() } else { f64::NEG_INFINITY });
+    // Written so that NaN also fails the test.
+    let ok = xi >= lower;
+    if !ok {
+        xi = greatest_root_from_above(a, b, c).max(lower);
+    }
 
     // Newton on the cubic: the closed form loses digits when P³ ≈ −27Q²/4. Steps are
     // accepted only if small and if they reduce |g|, so a multiple root cannot throw ξ away.
@@ -369,8 +405,23 @@ fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
         }
         roots.roots[i] = x;
     }
+    // Last line of defence: a root must satisfy the quartic to within its rounding bound.
+    // Genuine roots, double ones included, sit at a few ε of Σ|cᵢxⁱ|; a root from a wrong
+    // factorization misses by O(1) of it.
+    let mut kept = RealRoots::default();
+    for &x in &roots.roots[..n] {
+        let (f, _) = eval(c, x);
+        let magnitude = c.iter().fold(0.0, |acc, ci| acc * x.abs() + ci.abs());
+        if f.abs() <= RESIDUAL_TOLERANCE * magnitude {
+            kept.push(x);
+        }
+    }
+    *roots = kept;
     roots.sort();
 }
+
+/// Largest |f(x)| / Σ|cᵢ||x|ⁱ a root may leave (2¹² ulps).
+const RESIDUAL_TOLERANCE: f64 = 4096.0 * EPS;
 
 /// A pair of roots much closer to each other than to the rest is a (near-)double root,
 /// which Newton on `f` cannot improve (f' ≈ 0) and which the depression may have blurred by
@@ -456,6 +507,34 @@ mod tests {
             }
         }
         c
+    }
+
+    /// A line far from the torus gives x⁴ + p x² + q x + r ≈ (x² + p/2)² with tiny q: the
+    /// resolvent's top two roots nearly merge, and rounding once returned the isolated
+    /// root −√r, whose factors had real, spurious double roots (found by the BVH bench).
+    #[test]
+    fn near_square_without_real_roots_gives_none() {
+        let got = solve_depressed_monic(4563.646856842148, 0.001742656689884825, 5206718.203343114);
+        assert!(got.is_empty(), "{:?}", got.as_slice());
+        let mut rng = Pcg64::seed_from_u64(77);
+        for _ in 0..20_000 {
+            let a: f64 = 10f64.powf(rng.random_range(-2.0..5.0));
+            let eps: f64 = a * a * 10f64.powf(rng.random_range(-12.0..-2.0));
+            let q: f64 = a.sqrt() * 10f64.powf(rng.random_range(-9.0..-3.0));
+            // (x² + a)² + eps + q x: positive for every real x when q is this small.
+            let (p, r) = (2.0 * a, a * a + eps);
+            let min_f = (0..200)
+                .map(|i| {
+                    let x = (i as f64 - 100.0) * a.sqrt() / 20.0;
+                    ((x * x + p) * x + q) * x + r
+                })
+                .fold(f64::INFINITY, f64::min);
+            if min_f <= 0.0 {
+                continue;
+            }
+            let got = solve_depressed_monic(p, q, r);
+            assert!(got.is_empty(), "p={p} q={q} r={r}: {:?}", got.as_slice());
+        }
     }
 
     fn sorted(mut v: [f64; 4]) -> [f64; 4] {

@@ -115,3 +115,21 @@ fn trace_respects_t_min() {
         assert!(same_hit(got, scene.brute_force(&later)));
     }
 }
+
+/// Three camera rays of the default ring_field (ν = 2) for which the solver once returned
+/// spurious double roots on torus 523, 50·R away: brute force then disagreed with the BVH.
+#[test]
+fn pinned_far_line_regression() {
+    let scene = Scene::build(SceneKind::RingField, 2.0, 1000, 20261121).unwrap();
+    let rays = scene.camera_rays(512);
+    let torus = &scene.tori[523];
+    for i in [197184usize, 212016, 240656] {
+        let ray = &rays[i];
+        let label = torus_cull::oracle::classify(torus, ray);
+        assert_eq!(label.class, torus_cull::oracle::OracleClass::Miss);
+        assert!(label.margin > 40.0, "{label:?}");
+        assert_eq!(torus_cull::intersect(torus, ray), None, "ray {i}");
+        let got = scene.trace(&torus_cull::NoCull, ray, &mut TraceStats::default());
+        assert!(same_hit(got, scene.brute_force(ray)), "ray {i}");
+    }
+}
