@@ -1,6 +1,6 @@
 //! SVG charts (plotters): rejection, capture, timing and BVH figures against ν.
 
-use crate::results::Results;
+use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
 use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -110,105 +110,123 @@ pub fn plot_results(
         written.push(path);
         Ok(())
     };
-    // Per case: miss capture and rejection rate against ν.
-    for case in ordered(results.rejection.iter().map(|r| r.case.clone())) {
-        let of = |f: &dyn Fn(&crate::results::RejectionRecord) -> Option<f64>| -> Vec<Series> {
-            ordered(results.rejection.iter().map(|r| r.cull.clone()))
-                .into_iter()
-                .map(|cull| {
-                    let pts = results
-                        .rejection
-                        .iter()
-                        .filter(|r| r.case == case && r.cull == cull)
-                        .filter_map(|r| f(r).map(|y| (r.nu, y)))
-                        .collect();
-                    (cull, pts)
-                })
-                .collect()
-        };
+    for group in ordered(results.rejection.iter().map(Record::group)) {
+        let of = |y: fn(&RejectionRecord) -> Option<f64>| series(&results.rejection, &group, y);
+        let capture = of(|r| r.miss_capture);
+        let rate = of(|r| Some(r.rejection_rate));
         chart(
-            format!("{case}-miss_capture"),
-            format!("{case}: miss capture (rejected / misses)"),
+            format!("{group}-miss_capture"),
+            format!("{group}: miss capture (rejected / misses)"),
             "miss capture",
-            of(&|r| r.miss_capture),
+            capture,
             true,
         )?;
         chart(
-            format!("{case}-rejection_rate"),
-            format!("{case}: rejection rate (rejected / rays)"),
+            format!("{group}-rejection_rate"),
+            format!("{group}: rejection rate (rejected / rays)"),
             "rejection rate",
-            of(&|r| Some(r.rejection_rate)),
+            rate,
             true,
         )?;
     }
-    // Per case: total ns and speedup against ν (bench results).
-    for case in ordered(results.timing.iter().map(|r| r.case.clone())) {
-        let of = |f: &dyn Fn(&crate::results::TimingRecord) -> f64| -> Vec<Series> {
-            ordered(results.timing.iter().map(|r| r.cull.clone()))
-                .into_iter()
-                .map(|cull| {
-                    let pts = results
-                        .timing
-                        .iter()
-                        .filter(|r| r.case == case && r.cull == cull)
-                        .map(|r| (r.nu, f(r)))
-                        .collect();
-                    (cull, pts)
-                })
-                .collect()
-        };
+    for group in ordered(results.timing.iter().map(Record::group)) {
+        let of = |y: fn(&TimingRecord) -> Option<f64>| series(&results.timing, &group, y);
+        let total = of(|r| Some(r.total_ns));
+        let speedup = of(|r| Some(r.speedup_vs_none));
         chart(
-            format!("{case}-total_ns"),
-            format!("{case}: cull + exact intersection, ns per ray"),
+            format!("{group}-total_ns"),
+            format!("{group}: cull + exact intersection, ns per ray"),
             "total ns per ray",
-            of(&|r| r.total_ns),
+            total,
             true,
         )?;
         chart(
-            format!("{case}-speedup"),
-            format!("{case}: speedup vs none"),
+            format!("{group}-speedup"),
+            format!("{group}: speedup vs none"),
             "total_ns(none) / total_ns(cull)",
-            of(&|r| r.speedup_vs_none),
+            speedup,
             true,
         )?;
     }
-    // Per BVH scene: Mrays/s and quartic solves per ray against ν.
-    for scene in ordered(
-        results
-            .bvh
-            .iter()
-            .map(|r| format!("{}-{}", r.scene, r.ray_set)),
-    ) {
-        let of = |f: &dyn Fn(&crate::results::BvhRecord) -> f64| -> Vec<Series> {
-            ordered(results.bvh.iter().map(|r| r.cull.clone()))
-                .into_iter()
-                .map(|cull| {
-                    let pts = results
-                        .bvh
-                        .iter()
-                        .filter(|r| format!("{}-{}", r.scene, r.ray_set) == scene && r.cull == cull)
-                        .map(|r| (r.nu, f(r)))
-                        .collect();
-                    (cull, pts)
-                })
-                .collect()
-        };
+    for group in ordered(results.bvh.iter().map(Record::group)) {
+        let of = |y: fn(&BvhRecord) -> Option<f64>| series(&results.bvh, &group, y);
+        let mrays = of(|r| Some(r.mrays_per_s));
+        let solves = of(|r| Some(r.quartic_solves_per_ray));
         chart(
-            format!("bvh-{scene}-mrays"),
-            format!("BVH {scene}: million rays per second"),
+            format!("bvh-{group}-mrays"),
+            format!("BVH {group}: million rays per second"),
             "Mrays/s",
-            of(&|r| r.mrays_per_s),
+            mrays,
             true,
         )?;
         chart(
-            format!("bvh-{scene}-quartic_solves"),
-            format!("BVH {scene}: quartic solves per ray"),
+            format!("bvh-{group}-quartic_solves"),
+            format!("BVH {group}: quartic solves per ray"),
             "quartic solves per ray",
-            of(&|r| r.quartic_solves_per_ray),
+            solves,
             true,
         )?;
     }
     Ok(written)
+}
+
+/// What the charts need of a record: its chart (case, or scene and ray set), its series
+/// (the cull) and its x (ν).
+trait Record {
+    fn group(&self) -> String;
+    fn cull(&self) -> &str;
+    fn nu(&self) -> f64;
+}
+
+impl Record for RejectionRecord {
+    fn group(&self) -> String {
+        self.case.clone()
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+impl Record for TimingRecord {
+    fn group(&self) -> String {
+        self.case.clone()
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+impl Record for BvhRecord {
+    fn group(&self) -> String {
+        format!("{}-{}", self.scene, self.ray_set)
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+/// One series per cull, in first-seen order: (ν, y) of the records in `group`.
+fn series<R: Record>(records: &[R], group: &str, y: fn(&R) -> Option<f64>) -> Vec<Series> {
+    ordered(records.iter().map(|r| r.cull().to_string()))
+        .into_iter()
+        .map(|cull| {
+            let pts = records
+                .iter()
+                .filter(|r| r.group() == group && r.cull() == cull)
+                .filter_map(|r| y(r).map(|v| (r.nu(), v)))
+                .collect();
+            (cull, pts)
+        })
+        .collect()
 }
 
 /// Distinct values in first-seen order.

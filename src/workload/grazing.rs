@@ -1,6 +1,6 @@
 //! `grazing`: lines tangent to the surface, pushed off it by a signed fraction of r.
 
-use super::{Batch, Frame, GenerateError};
+use super::{Batch, Frame, GenerateError, rejection_sample};
 use crate::oracle::classify;
 use glam::DVec3;
 use rand::RngExt;
@@ -29,17 +29,7 @@ pub(super) fn fill(
 ) -> Result<(), GenerateError> {
     let (big_r, small_r) = (frame.major, frame.minor);
     let tolerance = GRAZING_TOLERANCE_REL * frame.outer();
-    let mut tries = 0usize;
-    while batch.rays.len() < count {
-        tries += 1;
-        if tries > MAX_TRIES_PER_RAY * count.max(1) {
-            return Err(GenerateError::Exhausted {
-                case: batch.case,
-                nu: batch.nu,
-                produced: batch.rays.len(),
-                requested: count,
-            });
-        }
+    rejection_sample(batch, count, MAX_TRIES_PER_RAY, |batch| {
         let offset = GRAZING_OFFSETS[batch.rays.len() % GRAZING_OFFSETS.len()] * small_r;
         let phi = rng.random_range(0.0..std::f64::consts::TAU);
         let theta = rng.random_range(0.0..std::f64::consts::TAU);
@@ -58,6 +48,5 @@ pub(super) fn fill(
             batch.rays.push(ray);
             batch.offsets.push(offset);
         }
-    }
-    Ok(())
+    })
 }

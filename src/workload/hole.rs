@@ -1,6 +1,6 @@
 //! `hole`: lines that fall through the hole.
 
-use super::{Batch, Frame, GenerateError, unit_vector};
+use super::{Batch, Frame, GenerateError, rejection_sample, unit_vector};
 use crate::oracle::{OracleClass, classify};
 use glam::DVec3;
 use rand::RngExt;
@@ -22,17 +22,7 @@ pub(super) fn fill(
 ) -> Result<(), GenerateError> {
     let hole_radius = frame.major - frame.minor;
     let back = 2.0 * frame.outer();
-    let mut tries = 0usize;
-    while batch.rays.len() < count {
-        tries += 1;
-        if tries > MAX_TRIES_PER_RAY * count.max(1) {
-            return Err(GenerateError::Exhausted {
-                case: batch.case,
-                nu: batch.nu,
-                produced: batch.rays.len(),
-                requested: count,
-            });
-        }
+    rejection_sample(batch, count, MAX_TRIES_PER_RAY, |batch| {
         let rho = hole_radius * rng.random::<f64>().sqrt();
         let phi = rng.random_range(0.0..std::f64::consts::TAU);
         let crossing = DVec3::new(rho * phi.cos(), 0.0, rho * phi.sin());
@@ -41,6 +31,5 @@ pub(super) fn fill(
         if classify(&frame.torus, &ray).class == OracleClass::Miss {
             batch.rays.push(ray);
         }
-    }
-    Ok(())
+    })
 }

@@ -258,6 +258,32 @@ impl Frame {
     }
 }
 
+/// Rejection sampling: `draw` is called once per candidate and pushes the rays it keeps,
+/// until `count` are kept; after `max_tries_per_ray · count` candidates it gives up with
+/// [`GenerateError::Exhausted`] rather than loop forever.
+pub(crate) fn rejection_sample(
+    batch: &mut Batch,
+    count: usize,
+    max_tries_per_ray: usize,
+    mut draw: impl FnMut(&mut Batch),
+) -> Result<(), GenerateError> {
+    let max_tries = max_tries_per_ray * count.max(1);
+    let mut tries = 0usize;
+    while batch.rays.len() < count {
+        if tries == max_tries {
+            return Err(GenerateError::Exhausted {
+                case: batch.case,
+                nu: batch.nu,
+                produced: batch.rays.len(),
+                requested: count,
+            });
+        }
+        tries += 1;
+        draw(batch);
+    }
+    Ok(())
+}
+
 /// A direction uniform on the unit sphere (Archimedes: z uniform, azimuth uniform).
 pub(crate) fn unit_vector(rng: &mut Pcg64) -> DVec3 {
     let z: f64 = rng.random_range(-1.0..1.0);
