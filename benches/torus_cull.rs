@@ -85,8 +85,8 @@ fn main() {
     let stage = |name: &str| eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
     let mut results = Results::new(&workload, "bench");
     let sweep = config.sweep_workload(&workload);
-    let (records, false_rejects) =
-        measure::rejection_sweep(&sweep, 2, &|_| {}).unwrap_or_else(|e| panic!("{e}"));
+    let (records, false_rejects) = measure::rejection_sweep(&sweep, &CullKind::TIMED, 2, &|_| {})
+        .unwrap_or_else(|e| panic!("{e}"));
     assert!(
         false_rejects.is_empty(),
         "false rejects in the rejection sweep: {false_rejects:?}"

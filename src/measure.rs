@@ -142,10 +142,11 @@ pub fn units(workload: &Workload) -> Vec<(Case, f64)> {
         .collect()
 }
 
-/// Rejection records for the whole workload over the timed culls, with any false
-/// rejects, on `threads` threads; `progress` is called with each finished unit's rays.
+/// Rejection records for the whole workload over `culls`, with any false rejects, on
+/// `threads` threads; `progress` is called with each finished unit's rays.
 pub fn rejection_sweep(
     workload: &Workload,
+    culls: &[CullKind],
     threads: usize,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError> {
@@ -166,7 +167,7 @@ pub fn rejection_sweep(
                     let result = LabeledBatch::generate(workload, case, nu).map(|labeled| {
                         let mut records = Vec::new();
                         let mut bad = Vec::new();
-                        for cull in CullKind::TIMED {
+                        for &cull in culls {
                             let (r, f) = count(cull, &labeled);
                             records.push(r);
                             bad.extend(f);

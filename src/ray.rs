@@ -25,6 +25,8 @@ pub enum RayError {
     NonFiniteDirection(Vec3),
     /// The direction is the zero vector (or so small that its squared length underflows).
     ZeroDirection(Vec3),
+    /// The direction is so long that its squared length overflows f32.
+    HugeDirection(Vec3),
     /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
     BadRange {
         /// The lower end given.
@@ -45,6 +47,10 @@ impl fmt::Display for RayError {
                     "ray direction {d} is zero (|d|² must be a normal f32 > 0)"
                 )
             }
+            RayError::HugeDirection(d) => write!(
+                f,
+                "ray direction {d} is too long (|d|² must be finite in f32: |d| < 1.8e19)"
+            ),
             RayError::BadRange { t_min, t_max } => write!(
                 f,
                 "ray range [{t_min}, {t_max}] is invalid (need finite t_min ≤ t_max)"
@@ -64,6 +70,7 @@ impl Ray {
     /// assert!(Ray::new(Vec3::ZERO, Vec3::X).is_ok());
     /// assert!(Ray::new(Vec3::ZERO, Vec3::ZERO).is_err());
     /// assert!(Ray::new(Vec3::ZERO, Vec3::new(f32::NAN, 0.0, 1.0)).is_err());
+    /// assert!(Ray::new(Vec3::ZERO, Vec3::splat(1e20)).is_err()); // |d|² overflows
     /// ```
     pub fn new(origin: Vec3, dir: Vec3) -> Result<Ray, RayError> {
         Ray::with_range(origin, dir, 0.0, f32::INFINITY)
@@ -77,9 +84,14 @@ impl Ray {
         if !dir.is_finite() {
             return Err(RayError::NonFiniteDirection(dir));
         }
-        // A squared length below the smallest normal f32 would make 1/|d| overflow or lose bits.
-        if dir.length_squared() < f32::MIN_POSITIVE {
+        // The culls divide by |d|²: below the smallest normal f32 it would overflow or lose
+        // bits, and an infinite |d|² would make every 1/|d|² zero.
+        let len_sq = dir.length_squared();
+        if len_sq < f32::MIN_POSITIVE {
             return Err(RayError::ZeroDirection(dir));
+        }
+        if !len_sq.is_finite() {
+            return Err(RayError::HugeDirection(dir));
         }
         if !t_min.is_finite() || t_max.is_nan() || t_min > t_max {
             return Err(RayError::BadRange { t_min, t_max });

@@ -122,6 +122,17 @@ pub(crate) fn foot_point(origin: Vec3, dir: Vec3) -> (Vec3, f32) {
     (origin - dir * (origin.dot(dir) * inv_len_sq), inv_len_sq)
 }
 
+/// `v` times a power of two that brings its largest component into [1, 2): exact (no
+/// rounding), so scale-free formulas give bit-identical answers, and their fourth powers of
+/// a direction stay inside f32's range however the ray is parametrized.
+#[inline(always)]
+pub(crate) fn rescaled(v: Vec3) -> Vec3 {
+    let exponent = (v.abs().max_element().to_bits() >> 23) & 0xff;
+    // A valid ray's |d|² is a finite normal f32, so 1 ≤ exponent ≤ 191 and 2^(127 − e) is
+    // a normal f32.
+    v * f32::from_bits((254 - exponent) << 23)
+}
+
 /// Every cull by name: the registry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum CullKind {

@@ -1,7 +1,7 @@
 //! `skala`: V. Skala's circle-based test, with the paper's misprints corrected (DESIGN §4).
 
 use super::cychosz::{SphereSlab, sphere_slab};
-use super::{AXIS_PARALLEL_H2, Cull, CullBounds};
+use super::{AXIS_PARALLEL_H2, Cull, CullBounds, rescaled};
 use glam::Vec3;
 
 /// Cychosz's sphere + slab first (cheap, and most rejections), then, on the survivors,
@@ -93,7 +93,9 @@ pub(crate) fn skala_keeps<F: SectionFormulas>(b: &CullBounds, origin: Vec3, dir:
     if !keep {
         return false;
     }
-    let d = dir;
+    // The tail has terms of fourth degree in d (x_B²h²·d_y², M²): with |d| ~ 1e10 they
+    // overflow and with |d| ~ 1e-10 they underflow, which once rejected hits.
+    let d = rescaled(dir);
     let len_sq = d.length_squared();
     let h_sq = d.x * d.x + d.z * d.z;
     if h_sq < AXIS_PARALLEL_H2 * len_sq {

@@ -1,0 +1,136 @@
+//! `torus-cull run`: a real sweep writes the results JSON and plots; a broken cull makes it
+//! exit 1 and name the ray and seed; a bad workload exits 2 naming file and field.
+
+use std::process::{Command, Output};
+use torus_cull::results::Results;
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run torus-cull")
+}
+
+#[test]
+fn quick_workload_writes_results_and_plots() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("quick.json");
+    let o = run(&[
+        "run",
+        "--workload",
+        "workloads/quick.json",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(stdout.contains("hole: miss capture") && stdout.contains("uniform: miss capture"));
+    let r = Results::load(&out).unwrap();
+    assert_eq!(r.meta.workload, "quick");
+    assert_eq!(r.rejection.len(), 5 * 4 * 6);
+    assert!(r.rejection.iter().all(|x| x.false_rejects == 0));
+    // Hole rays are all misses: skala must capture most, cychosz none.
+    let capture = |cull: &str| {
+        r.rejection
+            .iter()
+            .find(|x| x.case == "hole" && x.nu == 8.0 && x.cull == cull)
+            .and_then(|x| x.miss_capture)
+            .unwrap()
+    };
+    assert_eq!(capture("cychosz"), 0.0);
+    assert!(capture("skala") > 0.9);
+    let svgs = std::fs::read_dir(dir.path())
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .path()
+                .extension()
+                .is_some_and(|x| x == "svg")
+        })
+        .count();
+    assert_eq!(svgs, 10);
+}
+
+#[test]
+fn a_broken_cull_fails_the_run_and_names_the_ray() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("broken.json");
+    let o = run(&[
+        "run",
+        "--workload",
+        "workloads/quick.json",
+        "--out",
+        out.to_str().unwrap(),
+        "--no-plots",
+        "--culls",
+        "cychosz,cychosz_printed",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("FALSE REJECT: cull cychosz_printed"), "{err}");
+    assert!(
+        err.contains("workload seed 7") && err.contains("stream seed 0x"),
+        "{err}"
+    );
+    assert!(
+        err.contains("ray #") && err.contains("origin") && err.contains("dir"),
+        "{err}"
+    );
+    assert!(
+        !err.contains("cull cychosz case"),
+        "the real cychosz must not appear: {err}"
+    );
+    // The counts are still written, so the failure can be inspected.
+    let r = Results::load(&out).unwrap();
+    assert!(
+        r.rejection
+            .iter()
+            .any(|x| x.cull == "cychosz_printed" && x.false_rejects > 0)
+    );
+}
+
+#[test]
+fn bad_inputs_exit_2_and_say_where() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"name":"b","seed":1,"cases":["hole"],"nu":[0.8],"rays":10}"#,
+    )
+    .unwrap();
+    let o = run(&["run", "--workload", bad.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("bad.json") && err.contains("field `nu[0]`") && err.contains("> 1"),
+        "{err}"
+    );
+
+    let o = run(&["run", "--workload", "/no/such/workload.json"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("/no/such/workload.json"));
+
+    let o = run(&[
+        "run",
+        "--workload",
+        "workloads/quick.json",
+        "--culls",
+        "bogus",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("unknown cull 'bogus'"));
+
+    let o = run(&[
+        "render",
+        "--scene",
+        "facing_grid",
+        "--nu",
+        "0.5",
+        "--out",
+        "/tmp/x.png",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--nu"));
+}
