@@ -60,7 +60,7 @@ pub fn render(scene: &Scene, size: usize) -> Rendered {
     let mut counts = CullMapCounts::default();
     for ray in &rays {
         let (mut entered, mut cychosz_kept, mut skala_kept) = (false, false, false);
-        let hit = scene.trace_with(ray, |_, torus, bounds, ray, t_max| {
+        let hit = scene.trace_with(ray, |torus, bounds, ray, t_max| {
             entered = true;
             let line = torus.line_to_local(ray);
             cychosz_kept |= CychoszCull.keeps(bounds, line.origin, line.dir);

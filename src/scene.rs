@@ -7,7 +7,7 @@
 
 use crate::workload::CameraView;
 use crate::{Cull, CullBounds, Ray, Torus, intersect};
-use glam::{DVec3, Vec3, Vec3A};
+use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::cwbvh::CwBvh;
@@ -294,7 +294,7 @@ impl Scene {
     /// The closest hit through the BVH, with `cull` at the leaves; adds to `stats`.
     #[inline]
     pub fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
-        self.trace_with(ray, |prim, torus, bounds, ray, t_max| {
+        self.trace_with(ray, |torus, bounds, ray, t_max| {
             stats.leaf_visits += 1;
             let line = torus.line_to_local(ray);
             if !cull.keeps(bounds, line.origin, line.dir) {
@@ -302,17 +302,16 @@ impl Scene {
                 return f32::INFINITY;
             }
             stats.quartic_solves += 1;
-            let _ = prim;
             intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
         })
     }
 
-    /// Traverse the BVH, calling `leaf(index, torus, bounds, ray, current t_max)` at each
-    /// leaf; it returns the torus's t or +∞.
+    /// Traverse the BVH, calling `leaf(torus, bounds, ray, current t_max)` at each leaf; it
+    /// returns the torus's t or +∞.
     pub fn trace_with(
         &self,
         ray: &Ray,
-        mut leaf: impl FnMut(usize, &Torus, &CullBounds, &Ray, f32) -> f32,
+        mut leaf: impl FnMut(&Torus, &CullBounds, &Ray, f32) -> f32,
     ) -> SceneHit {
         // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into +0.0.
         let traversal_ray = obvhs::ray::Ray::new(
@@ -326,7 +325,7 @@ impl Scene {
         // Traversal ignores tmin: `intersect` honours the ray's own t_min.
         let found = self.bvh.ray_traverse(traversal_ray, &mut hit, |r, id| {
             let prim = indices[id] as usize;
-            leaf(prim, &self.tori[prim], &self.bounds[prim], ray, r.tmax)
+            leaf(&self.tori[prim], &self.bounds[prim], ray, r.tmax)
         });
         found.then(|| (indices[hit.primitive_id as usize], hit.t))
     }
@@ -342,10 +341,5 @@ impl Scene {
             }
         }
         best
-    }
-
-    /// The world position of a hit.
-    pub fn hit_point(ray: &Ray, t: f32) -> Vec3 {
-        ray.at(t)
     }
 }
