@@ -1,0 +1,193 @@
+//! Ferrari's factorization of the depressed quartic into two real quadratics, and their roots.
+//!
+//! `x⁴ + p x² + q x + r = (x² + m x + n₁)(x² − m x + n₂)` with `z = m²` the greatest root of
+//! the resolvent (see [`super::resolvent`]), `n₁ + n₂ = p + z`, `n₂ − n₁ = q/m` and
+//! `n₁ n₂ = r`. (Skala's Eq. 17/18 print the sign of this split untied from `q`; here it is
+//! tied through `n₂ − n₁ = q/m`.)
+//!
+//! A quadratic factor whose discriminant is within rounding of zero may hold a tangent
+//! double root, or a complex pair that rounding made real: that is decided on the quartic
+//! itself (the sign of its value at the nearby extremum), never on the factor.
+
+use super::{EPS, RealRoots, eval, eval2, resolvent};
+
+/// Below this `|disc| / (m² + 4|n|)` a factor's two roots are decided on the quartic, for a
+/// quartic given in depressed form (a depression by the caller adds its own rounding:
+/// see [`near_double_threshold`]).
+pub(super) const NEAR_DOUBLE: f64 = 1e-7;
+
+/// The near-double threshold for a quartic depressed from `orig` by `t = x − shift`: the
+/// depression rounds `p, q, r` by about `ε·Σ|cᵢ||shift|ⁱ`, which, next to the depressed
+/// quartic's own size `X⁴` (`X² = max(|p|, √|r|, |q|^⅔)`), is the relative uncertainty of
+/// every factor's discriminant.
+pub(super) fn near_double_threshold(p: f64, q: f64, r: f64, orig: &[f64; 5], shift: f64) -> f64 {
+    let m = orig
+        .iter()
+        .fold(0.0, |acc, ci| acc * shift.abs() + ci.abs());
+    let x2 = p.abs().max(r.abs().sqrt()).max(q.abs().powf(2.0 / 3.0));
+    let rel = 64.0 * EPS * m / (x2 * x2);
+    // Written so that NaN (x2 = 0: x⁴ itself) keeps the default.
+    if rel > NEAR_DOUBLE { rel } else { NEAR_DOUBLE }
+}
+
+/// The real roots (unsorted, not yet polished) of `x⁴ + p x² + q x + r`.
+///
+/// `orig` is the caller's quartic in `t = x − shift`: near-tangent decisions are made on it,
+/// because a depression with a large shift adds rounding far above the depressed
+/// quartic's own magnitudes; `near` is the relative discriminant below which that is done
+/// ([`NEAR_DOUBLE`], or [`near_double_threshold`] after a depression).
+#[inline]
+pub(super) fn real_roots(
+    p: f64,
+    q: f64,
+    r: f64,
+    orig: &[f64; 5],
+    shift: f64,
+    near: f64,
+) -> RealRoots {
+    let f = split(p, q, r);
+    let mut out = RealRoots::default();
+    quadratic_factor(f.m, f.n1, f.z, orig, shift, near, &mut out);
+    quadratic_factor(-f.m, f.n2, f.z, orig, shift, near, &mut out);
+    out
+}
+
+/// The two factors `x² + m x + n₁` and `x² − m x + n₂`, with `z = m²`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Split {
+    pub z: f64,
+    pub m: f64,
+    pub n1: f64,
+    pub n2: f64,
+}
+
+/// Ferrari's split of `x⁴ + p x² + q x + r` (see the module docs).
+#[inline]
+pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
+    let (z, dh) = resolvent::greatest_root(p, q, r);
+    let m = z.sqrt();
+    let s = p + z;
+    let w2 = s * s - 4.0 * r;
+
+    // n₂ − n₁ is both q/m and sign(q)·√((p + z)² − 4r). The first inherits half the
+    // relative error of z, ε·Σ|terms of h|/(z·h'(z)), large at a double root of the
+    // resolvent; the second cancels when (p + z)² ≈ 4r, with relative error
+    // ε·((p + z)² + 4|r|)/(2w²) plus what the error of z adds to p + z. Take whichever is
+    // better determined (compared without dividing: both denominators are > 0 when used).
+    let b_abs = p * p + 4.0 * r.abs();
+    let h_mag = ((z + 2.0 * p.abs()) * z + b_abs) * z + q * q;
+    let zdh = z * dh;
+    // rel(q/m) = ½·ε·h_mag/zdh ≤ rel(√w²) = ½·err_w/w2, with err_w = ε·(s² + 4|r|) plus
+    // 2|s|·(ε|p| + ε·h_mag/dh), multiplied out so that no division is needed.
+    let err_w_zdh =
+        EPS * ((s * s + 4.0 * r.abs() + 2.0 * s.abs() * p.abs()) * zdh + 2.0 * s.abs() * h_mag * z);
+    let use_q_over_m = zdh > 0.0 && (w2 <= 0.0 || EPS * h_mag * w2 <= err_w_zdh);
+    // Both candidates are computed and one is selected: which one wins is a coin toss from
+    // ray to ray, and a mispredicted branch costs more than a division and a root.
+    let by_q = q / m;
+    let by_w = w2.max(0.0).sqrt().copysign(q);
+    let d = if use_q_over_m { by_q } else { by_w };
+
+    // n₁ n₂ = r: compute the larger-magnitude constant directly and the other as r over it,
+    // which avoids the cancellation in (p + z ∓ d)/2 (again selected, not branched).
+    let (n1_direct, n2_direct) = (0.5 * (s - d), 0.5 * (s + d));
+    let n2_bigger = n2_direct.abs() >= n1_direct.abs();
+    let big = if n2_bigger { n2_direct } else { n1_direct };
+    let other = if big != 0.0 { r / big } else { 0.0 };
+    let n1 = if n2_bigger { other } else { n1_direct };
+    let n2 = if n2_bigger { n2_direct } else { other };
+    Split { z, m, n1, n2 }
+}
+
+/// Roots of the factor `x² + b x + c` with `b² = z` (passed exactly, so the discriminant
+/// does not pay for rounding `m²`).
+#[inline]
+#[allow(clippy::too_many_arguments)]
+fn quadratic_factor(
+    b: f64,
+    c: f64,
+    z: f64,
+    orig: &[f64; 5],
+    shift: f64,
+    near: f64,
+    out: &mut RealRoots,
+) {
+    let disc = z - 4.0 * c;
+    let scale = z + 4.0 * c.abs();
+    // Written so that NaN takes the cold path, which decides on the quartic.
+    let clear = disc.abs() > near * scale;
+    if clear {
+        if disc > 0.0 {
+            let t = -0.5 * (b + disc.sqrt().copysign(b));
+            out.push(t);
+            out.push(c / t);
+        }
+    } else {
+        near_double_root(-0.5 * b, disc.abs().sqrt(), orig, shift, out);
+    }
+}
+
+/// A near-double pair of roots around `x0`: find the quartic's extremum `t*` near it
+/// (Newton on `f'`, within `spread` plus how far the rounding of `f` itself can move a
+/// double root, `√(8ε·Σ|cᵢtⁱ|/|f''|)`, which covers the depression's rounding when the
+/// shift is large), and decide on `f(t*)`. A local minimum at or below
+/// zero (or a local maximum at or above zero: a line touching the tube from inside) holds
+/// two real roots `t* ± √(−2f/f'')`, each then refined by Newton on `f` on its own side;
+/// otherwise the pair is complex. `f(t*)` within its rounding bound of zero is a double
+/// root. Cold: only tangent and near-tangent lines come here.
+#[cold]
+fn near_double_root(x0: f64, spread: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
+    let t0 = x0 - shift;
+    let mag0 = orig.iter().fold(0.0, |acc, ci| acc * t0.abs() + ci.abs());
+    let (_, _, d2_0) = eval2(orig, t0);
+    let halfwidth = spread + 4.0 * (8.0 * EPS * mag0 / d2_0.abs()).sqrt();
+    let mut t = t0;
+    for _ in 0..4 {
+        let (_, d1, d2) = eval2(orig, t);
+        if d2 == 0.0 {
+            break;
+        }
+        let tn = t - d1 / d2;
+        // Written so that NaN also fails the test.
+        let ok = (tn - t0).abs() <= halfwidth;
+        if !ok {
+            break;
+        }
+        t = tn;
+    }
+    let (f, _, d2) = eval2(orig, t);
+    let mag = orig.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
+    let zero = f.abs() <= 32.0 * EPS * mag;
+    if !(zero || f * d2 < 0.0) {
+        return;
+    }
+    let delta = if zero || d2 == 0.0 {
+        0.0
+    } else {
+        (-2.0 * f / d2).sqrt()
+    };
+    if delta == 0.0 {
+        out.push(t + shift);
+        out.push(t + shift);
+        return;
+    }
+    // The parabola's roots are only approximate (the cubic term); Newton on f converges from
+    // them, and is kept on its own side of t* so the two roots cannot merge.
+    for side in [-1.0, 1.0] {
+        let mut x = t + side * delta;
+        for _ in 0..3 {
+            let (fx, dfx) = eval(orig, x);
+            if fx == 0.0 || dfx == 0.0 {
+                break;
+            }
+            let xn = x - fx / dfx;
+            // Written so that NaN also fails the test.
+            let ok = (xn - t) * side > 0.0 && (xn - t).abs() <= 4.0 * delta;
+            if !ok {
+                break;
+            }
+            x = xn;
+        }
+        out.push(x + shift);
+    }
+}
