@@ -86,6 +86,97 @@ fn every_cull_matches_brute_force_through_the_bvh() {
     }
 }
 
+/// The BVH against the oracle, not against the code's own brute force: a hit must be a
+/// torus the oracle says the ray enters (or touches, within its band) at the oracle's first
+/// root, and no torus the oracle says is hit may be closer or missed.
+#[test]
+fn every_cull_through_the_bvh_agrees_with_the_oracle() {
+    use torus_cull::oracle::{OracleClass, classify, reference_roots};
+    let mut definite = 0;
+    for kind in SceneKind::ALL {
+        for nu in [1.1, 1.5, 4.0, 16.0] {
+            let scene = Scene::build(kind, nu, 60, 5).unwrap();
+            let mut rays = scene.camera_rays(40);
+            rays.extend(scene.random_rays(800, 11));
+            rays.extend(axis_rays(&scene));
+            // Per ray: the nearest oracle-hit torus's first root, and every torus's label.
+            let truth: Vec<Vec<(OracleClass, f64)>> = rays
+                .iter()
+                .map(|ray| {
+                    scene
+                        .tori
+                        .iter()
+                        .map(|t| {
+                            let class = classify(t, ray).class;
+                            let first = if class == OracleClass::Miss {
+                                f64::INFINITY
+                            } else {
+                                reference_roots(
+                                    t.center().as_dvec3(),
+                                    t.axis().as_dvec3(),
+                                    f64::from(t.major_radius()),
+                                    f64::from(t.minor_radius()),
+                                    ray.origin().as_dvec3(),
+                                    ray.dir().as_dvec3(),
+                                    f64::from(ray.t_min()),
+                                    f64::from(ray.t_max()),
+                                )
+                                .first()
+                                .copied()
+                                .unwrap_or(f64::INFINITY)
+                            };
+                            (class, first)
+                        })
+                        .collect()
+                })
+                .collect();
+            for cull in CullKind::TIMED {
+                struct Trace<'a>(&'a Scene, &'a [Ray]);
+                impl CullVisitor for Trace<'_> {
+                    type Output = Vec<Option<(u32, f32)>>;
+                    fn visit<C: Cull>(self, cull: C) -> Self::Output {
+                        let mut stats = TraceStats::default();
+                        self.1
+                            .iter()
+                            .map(|r| self.0.trace(&cull, r, &mut stats))
+                            .collect()
+                    }
+                }
+                let got = cull.visit(Trace(&scene, &rays));
+                for ((ray, labels), got) in rays.iter().zip(&truth).zip(got) {
+                    let nearest_hit = labels
+                        .iter()
+                        .filter(|(c, _)| *c == OracleClass::Hit)
+                        .map(|&(_, t)| t)
+                        .fold(f64::INFINITY, f64::min);
+                    let tol = |t: f64| 1e-6 * t.abs().max(1.0);
+                    match got {
+                        None => assert!(
+                            nearest_hit.is_infinite(),
+                            "{cull} {kind} nu={nu}: BVH missed a hit at t={nearest_hit}: {ray:?}"
+                        ),
+                        Some((id, t)) => {
+                            definite += 1;
+                            let (class, first) = labels[id as usize];
+                            assert_ne!(class, OracleClass::Miss, "{cull} {kind}: {ray:?}");
+                            let t = f64::from(t);
+                            assert!(
+                                (t - first).abs() <= tol(first),
+                                "{cull} {kind} nu={nu}: t={t} vs oracle {first}: {ray:?}"
+                            );
+                            assert!(
+                                t <= nearest_hit + tol(nearest_hit),
+                                "{cull} {kind} nu={nu}: t={t} behind a hit at {nearest_hit}: {ray:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(definite > 10_000, "only {definite} hits checked");
+}
+
 #[test]
 fn minus_zero_directions_are_traversed() {
     let scene = Scene::build(SceneKind::FacingGrid, 4.0, 16, 1).unwrap();

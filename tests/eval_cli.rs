@@ -173,3 +173,60 @@ fn good_input_round_trips() {
     let hole: Vec<&str> = text.lines().nth(2).unwrap().split(',').collect();
     assert_eq!((hole[1], hole[7], hole[9]), ("miss", "1", "0"));
 }
+
+/// `eval` must never print `hit` with an empty `t_hit`: that is the exact intersection
+/// missing a hit the oracle sees. The rows are the lines that exposed it: inside the tube
+/// near the hole edge at ν ≤ 1.2 (the reproducer first), plus tangents.
+#[test]
+fn no_hit_row_without_t_hit_on_hole_edge_lines() {
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(0xE7A1);
+    let (big, small) = (1.0f64, 0.8333333f64);
+    let mut csv = String::from("ox,oy,oz,dx,dy,dz\n2.003,-0.003,-2.239,-0.707,0.001,0.707\n");
+    for _ in 0..20_000 {
+        let eps: f64 = 10f64.powf(rng.random_range(-5.0..-1.0));
+        let a = (big - small) + eps * small;
+        let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+        let (s, c) = phi.sin_cos();
+        let slope: f64 = rng.random_range(-1e-2..1e-2);
+        let lift: f64 = rng.random_range(-1e-2..1e-2);
+        let (dx, dy, dz) = (-s, slope, c);
+        let back = rng.random_range(2.0..5.0);
+        let (ox, oy, oz) = (a * c - back * dx, lift - back * dy, a * s - back * dz);
+        csv.push_str(&format!("{ox},{oy},{oz},{dx},{dy},{dz}\n"));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = eval_file(dir.path(), &csv, "1", "0.8333333");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let (mut hits, mut empty) = (0, Vec::new());
+    for line in text.lines().skip(1) {
+        let cols: Vec<&str> = line.split(',').collect();
+        if cols[1] == "hit" {
+            hits += 1;
+            if cols[3].is_empty() {
+                empty.push(line.to_string());
+            }
+        }
+    }
+    assert!(
+        hits > 10_000,
+        "only {hits} hits: the family no longer tests hits"
+    );
+    assert!(
+        empty.is_empty(),
+        "{} of {hits} hit rows have no t_hit, e.g. {}",
+        empty.len(),
+        empty[0]
+    );
+    // The reproducer's first root, t = 1.1740037.
+    let first = text.lines().nth(1).unwrap();
+    assert!(
+        first.starts_with("0,hit,") && first.contains(",1.174"),
+        "{first}"
+    );
+}

@@ -8,6 +8,7 @@
 //! Rays start outside the bounding sphere, before the torus, so the ray t ≥ 0 and the
 //! whole line meet the torus alike.
 
+pub mod adversarial;
 mod camera;
 mod grazing;
 mod hole;
