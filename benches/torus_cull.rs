@@ -148,7 +148,10 @@ fn main() {
     }
 
     stage("cull timings done");
-    let solver_sets = solver::coefficient_sets(&workload, &config);
+    let solver_sets: Vec<_> = solver::FAMILIES
+        .iter()
+        .map(|&f| (f, solver::family_sets(f, &workload, &config)))
+        .collect();
     solver::bench(&mut c, &solver_sets);
     stage("solver timings done");
     let bvh_pending = match (&workload.bvh, config.bvh) {

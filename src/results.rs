@@ -144,6 +144,10 @@ pub struct BvhRecord {
     pub matches_brute_force: bool,
 }
 
+fn mixed_family() -> String {
+    "mixed".into()
+}
+
 fn camera_rays() -> String {
     "camera".into()
 }
@@ -153,6 +157,10 @@ fn camera_rays() -> String {
 pub struct SolverRecord {
     /// Solver name.
     pub solver: String,
+    /// The line family the quartics come from (`uniform`, `hole_edge`, `tangent`,
+    /// `tangent_limit`); files from before families were split say `mixed`.
+    #[serde(default = "mixed_family")]
+    pub family: String,
     /// Quartics solved (one per non-ambiguous line).
     pub coefficient_sets: u64,
     /// Roots in the oracle's high-precision reference.

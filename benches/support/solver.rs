@@ -1,181 +1,271 @@
-//! Our quartic solver against the `roots` crate, on the same coefficient sets: speed by
-//! criterion, accuracy against the oracle's high-precision reference roots.
+//! Quartic solvers on the same torus quartics, per line family: speed by criterion,
+//! accuracy against the oracle's high-precision reference roots.
+//!
+//! Every solver answers the renderer's question, the nearest root at or after the ray's
+//! origin (t ≥ 0): ours directly ([`nearest_root_depressed`]), the all-roots solvers
+//! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking.
+//! Accuracy is counted on that nearest root: *missed* when the reference has one and the
+//! solver gives none within [`MATCH_TOLERANCE_REL`], *spurious* when the solver gives one
+//! that matches no reference root at or after the origin.
 
 use super::{BenchConfig, read_estimate};
 use criterion::{BenchmarkId, Criterion};
 use glam::DVec3;
+use rand::SeedableRng;
 use std::fmt::Write;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
 use torus_cull::intersect::quartic_coefficients_local;
 use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
-use torus_cull::quartic::solve_quartic;
+use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
 use torus_cull::results::SolverRecord;
+use torus_cull::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 use torus_cull::workload::spec::Workload;
 use torus_cull::workload::{Case, generate};
+use torus_cull::{Ray, Torus};
 
 /// A root counts as found when it is within this distance, × (R + r), of the reference.
 pub const MATCH_TOLERANCE_REL: f64 = 1e-6;
 
-/// One quartic from one line, with what it takes to map its roots u back to t.
+/// The line families, each timed and scored on its own.
+pub const FAMILIES: [&str; 4] = ["uniform", "hole_edge", "tangent", "tangent_limit"];
+
+/// Offsets δ (× r) of the `tangent` family, where the accuracy goal applies.
+const TANGENT_OFFSETS: [f64; 6] = [1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4];
+/// Offsets of `tangent_limit`, closer than 1e-7·r: f64 conditioning sets the error there.
+const LIMIT_OFFSETS: [f64; 6] = [1e-7, -1e-7, 1e-8, -1e-8, 1e-9, -1e-9];
+
+/// One line's quartic, with what it takes to map its roots u back to t.
 pub struct SolverSet {
-    pub coefficients: [f64; 5],
+    /// `[c2, c1, c0]` of the depressed monic quartic in u.
+    c: [f64; 3],
+    /// u of the ray's origin (t = 0): the solvers look for roots at or after it.
+    u_origin: f64,
     major: f64,
     minor: f64,
     foot_offset: f64,
     inv_len: f64,
     len: f64,
+    /// The oracle's roots at or after the origin, sorted.
     reference: Vec<f64>,
 }
 
 impl SolverSet {
+    fn new(torus: &Torus, ray: &Ray) -> Option<SolverSet> {
+        if classify_line(torus, ray).class == OracleClass::Ambiguous {
+            return None;
+        }
+        let (major, minor) = (
+            f64::from(torus.major_radius()),
+            f64::from(torus.minor_radius()),
+        );
+        let (o, d): (DVec3, DVec3) = torus.line_to_local_f64(ray);
+        let len = d.length();
+        let foot_offset = o.dot(d / len);
+        let c = quartic_coefficients_local(major, minor, o, d);
+        Some(SolverSet {
+            c: [c[2], c[3], c[4]],
+            u_origin: foot_offset / major,
+            major,
+            minor,
+            foot_offset,
+            inv_len: 1.0 / len,
+            len,
+            reference: reference_roots(
+                torus.center().as_dvec3(),
+                torus.axis().as_dvec3(),
+                major,
+                minor,
+                ray.origin().as_dvec3(),
+                ray.dir().as_dvec3(),
+                0.0,
+                f64::INFINITY,
+            ),
+        })
+    }
+
     fn t_of_u(&self, u: f64) -> f64 {
         (u * self.major - self.foot_offset) * self.inv_len
     }
 }
 
-/// The quartics of the uniform and grazing batches at the timed ν (lines the oracle calls
-/// ambiguous are left out: their tangent roots are not defined to better than the band).
-pub fn coefficient_sets(workload: &Workload, config: &BenchConfig) -> Vec<SolverSet> {
+/// The family's quartics at the timed ν (lines the oracle calls ambiguous are left out:
+/// their tangent roots are not defined to better than the band).
+pub fn family_sets(family: &str, workload: &Workload, config: &BenchConfig) -> Vec<SolverSet> {
+    let per_nu = config.batch.min(2048);
     let mut sets = Vec::new();
-    for case in [Case::Uniform, Case::Grazing] {
-        for nu in config.timed_nus(workload) {
-            let b = generate(
-                case,
-                nu,
-                config.batch.min(2048),
-                workload.seed,
-                workload.pose,
-            )
-            .unwrap_or_else(|e| panic!("{e}"));
-            let t = &b.torus;
-            let (major, minor) = (t.major_radius() as f64, t.minor_radius() as f64);
-            for ray in &b.rays {
-                if classify_line(t, ray).class == OracleClass::Ambiguous {
-                    continue;
+    for nu in config.timed_nus(workload) {
+        if family == "uniform" {
+            let b = generate(Case::Uniform, nu, per_nu, workload.seed, workload.pose)
+                .unwrap_or_else(|e| panic!("{e}"));
+            sets.extend(b.rays.iter().filter_map(|r| SolverSet::new(&b.torus, r)));
+            continue;
+        }
+        let torus = Torus::canonical(1.0, (1.0 / nu) as f32).unwrap();
+        let (big, small) = (1.0, f64::from(torus.minor_radius()));
+        let seed = workload.seed ^ nu.to_bits() ^ family.len() as u64;
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+        for i in 0..per_nu {
+            let (p, d) = match family {
+                "hole_edge" => hole_edge_line(&mut rng, big, small),
+                _ => {
+                    let offsets = if family == "tangent" {
+                        &TANGENT_OFFSETS
+                    } else {
+                        &LIMIT_OFFSETS
+                    };
+                    let circle = SpecialCircle::ALL[i % 4];
+                    tangent_line(&mut rng, big, small, circle, offsets[(i / 4) % 6])
                 }
-                let (o, d): (DVec3, DVec3) = t.line_to_local_f64(ray);
-                let len = d.length();
-                sets.push(SolverSet {
-                    coefficients: quartic_coefficients_local(major, minor, o, d),
-                    major,
-                    minor,
-                    foot_offset: o.dot(d / len),
-                    inv_len: 1.0 / len,
-                    len,
-                    reference: reference_roots(
-                        t.center().as_dvec3(),
-                        t.axis().as_dvec3(),
-                        major,
-                        minor,
-                        ray.origin().as_dvec3(),
-                        ray.dir().as_dvec3(),
-                        f64::NEG_INFINITY,
-                        f64::INFINITY,
-                    ),
-                });
+            };
+            let o = p - d * 3.0 * (big + small);
+            if let Ok(ray) = Ray::new(o.as_vec3(), d.as_vec3()) {
+                sets.extend(SolverSet::new(&torus, &ray));
             }
         }
     }
     sets
 }
 
-fn ours(c: &[f64; 5]) -> Vec<f64> {
-    solve_quartic(*c).as_slice().to_vec()
-}
-
-fn peer(c: &[f64; 5]) -> Vec<f64> {
-    roots::find_roots_quartic(c[0], c[1], c[2], c[3], c[4])
-        .as_ref()
-        .to_vec()
-}
-
-/// A solver under test: its name and its roots for one coefficient set.
-pub type Solver = (&'static str, fn(&[f64; 5]) -> Vec<f64>);
-
-pub const SOLVERS: [Solver; 2] = [("torus_cull", ours), ("roots_0.0.8", peer)];
-
-pub fn bench(c: &mut Criterion, sets: &[SolverSet]) {
-    let mut group = c.benchmark_group("solver");
-    group.bench_function(BenchmarkId::new("torus_cull", "all"), |b| {
-        b.iter(|| {
-            for s in sets {
-                black_box(solve_quartic(black_box(s.coefficients)));
-            }
-        })
-    });
-    group.bench_function(BenchmarkId::new("roots_0.0.8", "all"), |b| {
-        b.iter(|| {
-            for s in sets {
-                let c = black_box(s.coefficients);
-                black_box(roots::find_roots_quartic(c[0], c[1], c[2], c[3], c[4]));
-            }
-        })
-    });
-    group.finish();
-}
-
-/// Speed (from this run's estimates) and accuracy of each solver.
-pub fn records(home: &Path, sets: &[SolverSet], since: SystemTime) -> Vec<SolverRecord> {
-    SOLVERS
+/// The nearest of `roots` at or after `lo`.
+#[inline(always)]
+fn nearest_at_or_after(roots: &[f64], lo: f64) -> Option<f64> {
+    roots
         .iter()
-        .map(|(name, solve)| {
+        .copied()
+        .filter(|&u| u >= lo)
+        .min_by(f64::total_cmp)
+}
+
+#[inline(always)]
+fn ours_nearest(c: &[f64; 3], lo: f64) -> Option<f64> {
+    nearest_root_depressed(c[0], c[1], c[2], lo, f64::INFINITY)
+}
+
+#[inline(always)]
+fn ours_all(c: &[f64; 3], lo: f64) -> Option<f64> {
+    nearest_at_or_after(solve_depressed_monic(c[0], c[1], c[2]).as_slice(), lo)
+}
+
+#[inline(always)]
+fn roots_crate(c: &[f64; 3], lo: f64) -> Option<f64> {
+    nearest_at_or_after(
+        roots::find_roots_quartic(1.0, 0.0, c[0], c[1], c[2]).as_ref(),
+        lo,
+    )
+}
+
+#[inline(always)]
+fn kurbo_crate(c: &[f64; 3], lo: f64) -> Option<f64> {
+    nearest_at_or_after(
+        &kurbo::common::solve_quartic(c[2], c[1], c[0], 0.0, 1.0),
+        lo,
+    )
+}
+
+/// A solver under test: its name and its nearest root u ≥ lo for one quartic.
+pub type Solver = (&'static str, fn(&[f64; 3], f64) -> Option<f64>);
+
+/// Ours first; the ratio tables compare everyone with `roots_0.0.8`.
+pub const SOLVERS: [Solver; 4] = [
+    ("torus_cull", ours_nearest),
+    ("torus_cull_all", ours_all),
+    ("roots_0.0.8", roots_crate),
+    ("kurbo_0.13", kurbo_crate),
+];
+
+pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)]) {
+    for (family, sets) in families {
+        let mut group = c.benchmark_group(format!("solver-{family}"));
+        for (name, solve) in SOLVERS {
+            group.bench_function(BenchmarkId::new(name, "all"), |b| {
+                b.iter(|| {
+                    for s in sets {
+                        black_box(solve(black_box(&s.c), s.u_origin));
+                    }
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+/// Speed (from this run's estimates) and accuracy of each solver on each family.
+pub fn records(
+    home: &Path,
+    families: &[(&str, Vec<SolverSet>)],
+    since: SystemTime,
+) -> Vec<SolverRecord> {
+    let mut out = Vec::new();
+    for (family, sets) in families {
+        for (name, solve) in SOLVERS {
             let (mut missed, mut spurious, mut reference, mut max_err) = (0u64, 0u64, 0u64, 0f64);
             for s in sets {
-                let scale = (s.major + s.minor) * s.inv_len;
-                let tol = MATCH_TOLERANCE_REL * scale;
-                let found: Vec<f64> = solve(&s.coefficients)
-                    .into_iter()
-                    .map(|u| s.t_of_u(u))
-                    .collect();
-                reference += s.reference.len() as u64;
-                for &r in &s.reference {
-                    let nearest = found
-                        .iter()
-                        .map(|&t| (t - r).abs())
-                        .fold(f64::INFINITY, f64::min);
-                    if nearest > tol {
-                        missed += 1;
-                    } else {
-                        max_err = max_err.max(nearest * s.len / (s.major + s.minor));
+                let tol = MATCH_TOLERANCE_REL * (s.major + s.minor) * s.inv_len;
+                let found = solve(&s.c, s.u_origin).map(|u| s.t_of_u(u));
+                let want = s.reference.first().copied();
+                reference += u64::from(want.is_some());
+                match (found, want) {
+                    (Some(t), Some(r)) if (t - r).abs() <= tol => {
+                        max_err = max_err.max((t - r).abs() * s.len / (s.major + s.minor));
                     }
+                    (Some(t), Some(r)) => {
+                        // A wrong nearest root: the true one was missed, and the returned
+                        // one is spurious unless it is some later reference root.
+                        missed += 1;
+                        let later = s.reference.iter().any(|&x| (t - x).abs() <= tol);
+                        spurious += u64::from(!later || t < r);
+                    }
+                    (Some(_), None) => spurious += 1,
+                    (None, Some(_)) => missed += 1,
+                    (None, None) => {}
                 }
-                spurious += found
-                    .iter()
-                    .filter(|&&t| s.reference.iter().all(|&r| (t - r).abs() > tol))
-                    .count() as u64;
             }
-            let est = read_estimate(home, "solver", name, "all", since)
+            let est = read_estimate(home, &format!("solver-{family}"), name, "all", since)
                 .map(|e| e.scaled(1.0 / sets.len().max(1) as f64));
-            SolverRecord {
+            let Some(est) = est else { continue };
+            out.push(SolverRecord {
                 solver: name.to_string(),
+                family: family.to_string(),
                 coefficient_sets: sets.len() as u64,
                 reference_roots: reference,
                 missed_roots: missed,
                 spurious_roots: spurious,
                 max_rel_t_error: max_err,
-                ns_per_solve: est.map_or(f64::NAN, |e| e.median),
-                ns_per_solve_ci: est.map_or([f64::NAN; 2], |e| [e.lower, e.upper]),
+                ns_per_solve: est.median,
+                ns_per_solve_ci: [est.lower, est.upper],
                 source: "criterion".into(),
-            }
-        })
-        .filter(|r| r.ns_per_solve.is_finite())
-        .collect()
+            });
+        }
+    }
+    out
 }
 
 pub fn table(records: &[SolverRecord]) -> String {
-    let mut out = String::from("quartic solvers on the same coefficient sets:\n");
+    let mut out = String::from(
+        "quartic solvers, nearest root t ≥ 0, same quartics per family (ratio: ns vs roots_0.0.8 in this run):\n",
+    );
+    let _ = writeln!(
+        out,
+        "  {:<14} {:<15} {:>9} {:>6} {:>7} {:>7} {:>9} {:>11}",
+        "family", "solver", "ns/solve", "ratio", "missed", "spur.", "sets", "max err"
+    );
     for r in records {
+        let peer = records
+            .iter()
+            .find(|p| p.family == r.family && p.solver == "roots_0.0.8")
+            .map_or(f64::NAN, |p| r.ns_per_solve / p.ns_per_solve);
         let _ = writeln!(
             out,
-            "  {:<12} {:>8.1} ns/solve  {} sets, {} reference roots, {} missed, {} spurious, max |dt|·|d|/(R+r) {:.2e}",
+            "  {:<14} {:<15} {:>9.1} {:>6.2} {:>7} {:>7} {:>9} {:>11.2e}",
+            r.family,
             r.solver,
             r.ns_per_solve,
-            r.coefficient_sets,
-            r.reference_roots,
+            peer,
             r.missed_roots,
             r.spurious_roots,
+            r.coefficient_sets,
             r.max_rel_t_error
         );
     }
