@@ -115,8 +115,10 @@ pub fn eval_csv(
         if let Some(hit) = intersect(&torus, &ray) {
             write!(output, "{}", hit.t)?;
         }
+        // The culls' own input: far origins go to the foot point, as in a renderer.
+        let line = torus.line_to_local(&ray);
         for cull in CullKind::TIMED {
-            let keep = cull.keeps(&bounds, ray.origin(), ray.dir());
+            let keep = cull.keeps(&bounds, line.origin, line.dir);
             write!(output, ",{}", u8::from(keep))?;
         }
         writeln!(output)?;

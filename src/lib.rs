@@ -57,7 +57,9 @@ pub use cull::{
 };
 pub use intersect::{Hit, intersect};
 pub use ray::{Ray, RayError};
-pub use torus::{LocalLine, Torus, TorusError};
+pub use torus::{
+    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
