@@ -9,6 +9,11 @@
 //!   than the threshold is a regression.
 //!
 //! Records on one side only are listed. The exit code is 1 if any regression is flagged.
+//!
+//! Only like is compared with like. Files of different workloads (or, see [`comparable`],
+//! made at different sizes) are refused, because their counts differ for reasons that are
+//! not regressions; the CLI then exits 2, as it does when the two files share no record,
+//! so that a vacuous comparison never passes a CI gate.
 
 use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
 use std::collections::BTreeMap;
@@ -293,4 +298,21 @@ fn fmt_value(v: f64) -> String {
     } else {
         format!("{v:.4}")
     }
+}
+
+/// Whether `old` and `new` measure the same thing, so that a changed figure means a changed
+/// build: the same workload file (by SHA-256). The error says what differs.
+pub fn comparable(old: &Results, new: &Results) -> Result<(), String> {
+    let short = |s: &str| s[..s.len().min(12)].to_string();
+    if old.meta.workload_sha256 != new.meta.workload_sha256 {
+        return Err(format!(
+            "the workloads differ (field `meta.workload_sha256`: {} {} vs {} {}): their \
+             rejection counts and timings are of different rays, so nothing is compared",
+            old.meta.workload,
+            short(&old.meta.workload_sha256),
+            new.meta.workload,
+            short(&new.meta.workload_sha256)
+        ));
+    }
+    Ok(())
 }

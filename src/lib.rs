@@ -9,8 +9,8 @@
 //! The rest of the crate is the measuring harness behind the `torus-cull` command and
 //! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
 //! generators and workload files), [`measure`] (counting), [`results`] (the results
-//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], and [`scene`] (many tori in an
-//! obvhs BVH) with [`render`].
+//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], [`output`] (how every output file
+//! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`].
 //!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
@@ -41,6 +41,7 @@ pub mod eval;
 pub mod intersect;
 pub mod measure;
 pub mod oracle;
+pub mod output;
 pub mod plot;
 pub mod quartic;
 mod ray;

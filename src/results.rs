@@ -1,10 +1,10 @@
 //! The results JSON (schema version 1): what `run` and `cargo bench` write and `compare`
-//! reads. Files are written atomically (temp file + rename), so an interrupted run never
-//! leaves half a file. Field names are stable; new fields may be added.
+//! reads. Files are written through [`crate::output`]: a regular file is replaced
+//! atomically, so an interrupted run never leaves half a file. Field names are stable;
+//! new fields may be added.
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The schema version this build writes and reads.
@@ -244,7 +244,7 @@ impl Results {
         serde_json::from_value(value).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))
     }
 
-    /// Write atomically: a temp file in the same directory, then a rename.
+    /// Write the file (atomically when it is a regular file; see [`crate::output`]).
     pub fn save(&self, path: &Path) -> Result<(), ResultsError> {
         let mut text = serde_json::to_string_pretty(self).expect("results serialize");
         text.push('\n');
@@ -252,22 +252,11 @@ impl Results {
     }
 }
 
-/// Write `bytes` to `path` through a temp file in the same directory and a rename, so a
-/// reader never sees a partial file and an interrupted writer leaves the old one intact.
+/// Write `bytes` to `path` the way every output of this crate is written: a regular file
+/// is replaced atomically (temp file + rename), symlinks are followed, a FIFO or device is
+/// written in place; see [`crate::output`].
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    std::fs::create_dir_all(dir)?;
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".torus-cull-")
-        .suffix(".tmp")
-        .tempfile_in(dir)?;
-    tmp.write_all(bytes)?;
-    tmp.as_file().sync_all()?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    crate::output::write_file(path, bytes)
 }
 
 /// The default output path: `results/<short commit>[-dirty].json`, or

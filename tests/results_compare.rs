@@ -245,4 +245,36 @@ fn compare_exit_codes() {
     let (code, text) = cli_compare(&a, &junk);
     assert_eq!(code, 2, "{text}");
     assert!(text.contains("junk.json"), "{text}");
+
+    // No record in common: a vacuous comparison is an error, not a pass.
+    let disjoint = dir.path().join("disjoint.json");
+    let mut other = sample();
+    for r in &mut other.rejection {
+        r.nu = 3.0;
+    }
+    other.timing[0].nu = 3.0;
+    other.bvh[0].nu = 8.0;
+    other.save(&disjoint).unwrap();
+    let (code, text) = cli_compare(&a, &disjoint);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("share no record"), "{text}");
+
+    // Another workload: refused, naming the field, and no regression verdict is given.
+    let other_workload = dir.path().join("w.json");
+    let mut w = worse_of(sample());
+    w.meta.workload_sha256 = "11".repeat(32);
+    w.save(&other_workload).unwrap();
+    let (code, text) = cli_compare(&a, &other_workload);
+    assert_eq!(code, 2, "{text}");
+    assert!(
+        text.contains("workloads differ") && text.contains("meta.workload_sha256"),
+        "{text}"
+    );
+    assert!(!text.contains("REGRESSION"), "{text}");
+}
+
+fn worse_of(mut r: Results) -> Results {
+    r.rejection[0].miss_capture = Some(0.5);
+    r.rejection[0].rejected = 500;
+    r
 }

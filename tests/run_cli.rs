@@ -30,6 +30,15 @@ fn quick_workload_writes_results_and_plots() {
     assert_eq!(r.meta.workload, "quick");
     assert_eq!(r.rejection.len(), 5 * 4 * 6);
     assert!(r.rejection.iter().all(|x| x.false_rejects == 0));
+    // The central claim is stated, with the number of rays behind it.
+    let rays: u64 = r
+        .rejection
+        .iter()
+        .filter(|x| x.cull == "none")
+        .map(|x| x.rays)
+        .sum();
+    let claim = format!("0 false rejects in {rays} rays (each checked by 6 culls");
+    assert!(stdout.contains(&claim), "no '{claim}' in:\n{stdout}");
     // Hole rays are all misses: skala must capture most, cychosz none.
     let capture = |cull: &str| {
         r.rejection
