@@ -267,8 +267,15 @@ fn run(
     let threads = threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
+    // `run` has its own default name, so that it never overwrites `cargo bench`'s file.
+    let path = out.unwrap_or_else(|| {
+        let suffix = match workload.name.as_str() {
+            "default" => "-run".to_string(),
+            other => format!("-{other}-run"),
+        };
+        results::default_path(Path::new("results"), &suffix)
+    });
     // Before the sweep, not after it: an unwritable --out must not cost the whole run.
-    let path = out.unwrap_or_else(|| results::default_path(Path::new("results"), "-run"));
     torus_cull::output::check_writable(&path)
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     let units = measure::units(&workload).len() as u64;
@@ -282,6 +289,7 @@ fn run(
         measure::rejection_sweep(&workload, &culls, threads, &|n| bar.inc(n))?;
     bar.finish_and_clear();
     let mut results = Results::new(&workload, "run");
+    results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
     results.rejection = records;
     print!("{}", report::miss_capture_tables(&results));
     // The project's central claim, stated every time. Each ray is counted once, with the

@@ -22,6 +22,9 @@ fn sample() -> Results {
             seed: Some(7),
             torus_cull_version: Some("0.1.0".into()),
             tool: Some("run".into()),
+            partial: false,
+            preset: None,
+            sizes: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -78,6 +81,7 @@ fn sample() -> Results {
             matches_brute_force: true,
         }],
         solver: Vec::new(),
+        estimates: Vec::new(),
     }
 }
 
