@@ -14,6 +14,7 @@ trap 'rm -rf "$tmp"' EXIT
 export CARGO_TERM_COLOR=never CRITERION_HOME="$tmp/criterion"
 
 fail() { echo "bench-safety: $*" >&2; exit 1; }
+command -v python3 >/dev/null || fail "python3 is needed to read the results JSON"
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 
 echo "-- a complete smoke run, with a criterion flag the libtest harnesses would reject"
@@ -27,6 +28,8 @@ TORUS_CULL_BENCH=smoke TORUS_CULL_RESULTS="$tmp/complete.json" \
 for section in rejection timing bvh solver estimates; do
   [ "$(json "$tmp/complete.json" "len(d['$section']) > 0")" = True ] || fail "no $section records"
 done
+cargo run --release --quiet -- compare "$tmp/complete.json" "$tmp/complete.json" --only-changes \
+  | tail -n 1
 sum=$(sha256sum "$tmp/complete.json")
 
 echo "-- a filtered run: the complete file is untouched, a partial file holds what ran"

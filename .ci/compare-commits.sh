@@ -24,9 +24,10 @@ git add "results/$old.json"
 git commit --quiet -m "results of $old"
 new=$(git rev-parse --short HEAD)
 
-# Share the compiled dependencies; only torus-cull itself is built, once per commit.
+# Share the compiled dependencies, so only torus-cull itself is built, once per commit;
+# incremental, so that NEW's build reuses most of OLD's.
 export CARGO_TARGET_DIR="$repo/target" CRITERION_HOME="$tmp/criterion"
-export TORUS_CULL_BENCH=smoke CARGO_TERM_COLOR=never
+export TORUS_CULL_BENCH=smoke CARGO_TERM_COLOR=never CARGO_INCREMENTAL=1
 status=0
 while IFS= read -r line; do
   cmd=${line//OLD/$old}
@@ -34,7 +35,7 @@ while IFS= read -r line; do
   case "$cmd" in
     "echo \$?"*) echo "compare exited $status"; continue ;;
   esac
-  echo "\$ $cmd"
+  echo "\$ $cmd   [${SECONDS} s]"
   set +e
   eval "$cmd" >"$tmp/step.log" 2>&1
   status=$?

@@ -275,6 +275,19 @@ fn compare_exit_codes() {
         "{text}"
     );
     assert!(!text.contains("REGRESSION"), "{text}");
+
+    // The same workload at another size (a smoke sweep against a full one): refused too.
+    let (full, smoke) = (dir.path().join("full.json"), dir.path().join("smoke.json"));
+    let mut f = sample();
+    f.meta.sizes = Some(torus_cull::results::Sizes::rejection_only(100_000));
+    f.save(&full).unwrap();
+    let mut s = worse_of(sample());
+    s.meta.sizes = Some(torus_cull::results::Sizes::rejection_only(1_000));
+    s.meta.preset = Some("smoke".into());
+    s.save(&smoke).unwrap();
+    let (code, text) = cli_compare(&full, &smoke);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("meta.sizes.rejection_rays"), "{text}");
 }
 
 fn worse_of(mut r: Results) -> Results {
