@@ -12,6 +12,10 @@
 //! JSON), [`compare`], [`report`] and [`plot`], [`eval`], [`output`] (how every output file
 //! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`].
 //!
+//! The geometry, each cull's bound and soundness argument, the floating-point margin, the
+//! supported range and the seed paper's errata are written up in the repository's
+//! `docs/math.md`.
+//!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
 //! use glam::Vec3;
