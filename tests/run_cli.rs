@@ -37,7 +37,8 @@ fn quick_workload_writes_results_and_plots() {
         .filter(|x| x.cull == "none")
         .map(|x| x.rays)
         .sum();
-    let claim = format!("0 false rejects in {rays} rays (each checked by 6 culls");
+    let culls = torus_cull::CullKind::TIMED.len();
+    let claim = format!("0 false rejects in {rays} rays (each checked by {culls} culls");
     assert!(stdout.contains(&claim), "no '{claim}' in:\n{stdout}");
     // Hole rays are all misses: skala must capture most, cychosz none.
     let capture = |cull: &str| {
