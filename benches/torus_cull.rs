@@ -7,14 +7,26 @@
 //!   the `none` column is `solve_ns`, the baseline.
 //!
 //! Plus the quartic solver against the `roots` crate on the same coefficient sets, the
-//! full-ν rejection sweep, and the workload's `bvh` scenes: obvhs CWBVH over many tori,
-//! each cull at the leaves, Mrays/s and quartic solves per ray. The figures are criterion's medians and confidence intervals
-//! of this run, read back from its `estimates.json` files.
+//! workload's `bvh` scenes (obvhs CWBVH over many tori, each cull at the leaves, Mrays/s
+//! and quartic solves per ray) and, last, the rejection sweep over every ν. The figures
+//! are criterion's medians and confidence intervals of this run, read back from its
+//! `estimates.json` files.
+//!
+//! **What gets written.** A run that measured every benchmark writes the complete file:
+//! `TORUS_CULL_RESULTS`, or `results/<commit>[-dirty][-<workload>][-<preset>][-nu…].json`
+//! (the default preset on the default workload is plain `results/<commit>.json`, the file
+//! that gets committed; `run` writes `…-run.json`, so neither clobbers the other). A run
+//! that a filter cut short (`cargo bench -- skala`) writes only what it measured, with
+//! `meta.partial = true`, to the same name with `-partial` added, and never runs the
+//! rejection sweep; a complete file is never touched by it. `--list`, `--test` and
+//! `--profile-time` write nothing, and `--list` does no setup.
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
-//! 2 cores), `full` (every ν of the workload, longer measurements).
-//! `TORUS_CULL_WORKLOAD` (default `workloads/default.json`) and `TORUS_CULL_RESULTS`
-//! (default `results/<commit>[-dirty].json`) override the paths.
+//! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
+//! times a subset of the workload's ν. `TORUS_CULL_WORKLOAD` (default
+//! `workloads/default.json`) and `TORUS_CULL_RESULTS` override the paths. A bad value is an
+//! error naming the variable and what it allows (the harness exits 2, and cargo reports
+//! the failure).
 
 #[path = "support/mod.rs"]
 mod support;
@@ -22,12 +34,13 @@ mod support;
 use criterion::{BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 use std::time::SystemTime;
-use support::{BenchConfig, Estimate, bvh, read_estimate, solver};
+use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
-use torus_cull::results::{Results, TimingRecord};
-use torus_cull::workload::spec::Workload;
+use torus_cull::results::{BvhSizes, EstimateRecord, Results, Sizes, TimingRecord};
+use torus_cull::workload::spec::{BvhSpec, Workload};
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
     Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled,
@@ -69,31 +82,68 @@ impl CullVisitor for TimeCull<'_> {
     }
 }
 
-fn main() {
-    let config = BenchConfig::from_env();
-    let workload_path = std::env::var_os("TORUS_CULL_WORKLOAD")
-        .map_or_else(|| PathBuf::from("workloads/default.json"), PathBuf::from);
-    let workload = Workload::load(&workload_path).unwrap_or_else(|e| panic!("{e}"));
+fn main() -> ExitCode {
+    match bench() {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// One benchmark registered with criterion, and how many elements an iteration covers.
+struct Registered {
+    group: String,
+    function: String,
+    parameter: String,
+    elements: usize,
+}
+
+impl Registered {
+    fn new(group: String, function: &str, parameter: impl ToString, elements: usize) -> Self {
+        Registered {
+            group,
+            function: function.to_string(),
+            parameter: parameter.to_string(),
+            elements,
+        }
+    }
+}
+
+fn bench() -> Result<ExitCode, String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mode = Mode::from_args(&args);
+    let workload_path = match std::env::var_os("TORUS_CULL_WORKLOAD") {
+        Some(p) if p.is_empty() => {
+            return Err("TORUS_CULL_WORKLOAD is empty (allowed: a workload file)".into());
+        }
+        Some(p) => PathBuf::from(p),
+        None => PathBuf::from("workloads/default.json"),
+    };
+    let workload =
+        Workload::load(&workload_path).map_err(|e| format!("TORUS_CULL_WORKLOAD: {e}"))?;
+    let config = BenchConfig::from_env(&workload)?;
+    let out = match std::env::var_os("TORUS_CULL_RESULTS") {
+        Some(p) if p.is_empty() => {
+            return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
+        }
+        Some(p) => PathBuf::from(p),
+        None => {
+            torus_cull::results::default_path(Path::new("results"), &config.file_suffix(&workload))
+        }
+    };
+    if mode == Mode::Benchmark {
+        // Before the measurements, not after them.
+        torus_cull::output::check_writable(&out)
+            .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", out.display()))?;
+    }
     let started = SystemTime::now();
     let timed_nus = config.timed_nus(&workload);
     println!(
         "torus-cull bench: size {}, workload {}, timed nu {:?}, batch {} rays",
         config.name, workload.name, timed_nus, config.batch
     );
-
-    let clock = std::time::Instant::now();
-    let stage = |name: &str| eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
-    let mut results = Results::new(&workload, "bench");
-    let sweep = config.sweep_workload(&workload);
-    let (records, false_rejects) = measure::rejection_sweep(&sweep, &CullKind::TIMED, 2, &|_| {})
-        .unwrap_or_else(|e| panic!("{e}"));
-    assert!(
-        false_rejects.is_empty(),
-        "false rejects in the rejection sweep: {false_rejects:?}"
-    );
-    results.rejection = records;
-    stage("rejection sweep done");
-
     let mut c = Criterion::default()
         .warm_up_time(config.warm_up)
         .measurement_time(config.measurement)
@@ -101,12 +151,24 @@ fn main() {
         .nresamples(10_000)
         .without_plots()
         .configure_from_args();
+    let bvh_spec = match (&workload.bvh, config.bvh) {
+        (Some(spec), true) => Some(config.bvh_spec(spec)),
+        _ => None,
+    };
+    if mode == Mode::List {
+        // Names only: none of the data, none of the setup, nothing written.
+        list(&mut c, &workload, &timed_nus, bvh_spec.as_ref());
+        return Ok(ExitCode::SUCCESS);
+    }
 
+    let clock = std::time::Instant::now();
+    let stage = |name: &str| eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
+    let mut registered = Vec::new();
     let mut batches = Vec::new();
     for &case in &workload.cases {
         for &nu in &timed_nus {
             let batch = generate(case, nu, config.batch, workload.seed, workload.pose)
-                .unwrap_or_else(|e| panic!("{e}"));
+                .map_err(|e| e.to_string())?;
             let labeled = LabeledBatch::label(batch);
             let lines: Vec<LocalLine> = labeled
                 .batch
@@ -124,14 +186,19 @@ fn main() {
                 .map(|(r, _)| *r)
                 .collect();
             if !hit_rays.is_empty() {
-                c.benchmark_group(format!("solve_hits-{case}"))
-                    .bench_with_input(BenchmarkId::new("none", nu), &hit_rays, |b, rays| {
+                let group = format!("solve_hits-{case}");
+                c.benchmark_group(&group).bench_with_input(
+                    BenchmarkId::new("none", nu),
+                    &hit_rays,
+                    |b, rays| {
                         b.iter(|| {
                             for ray in rays {
                                 black_box(intersect(&torus, ray));
                             }
                         })
-                    });
+                    },
+                );
+                registered.push(Registered::new(group, "none", nu, hit_rays.len()));
             }
             for cull in CullKind::TIMED {
                 cull.visit(TimeCull {
@@ -142,49 +209,122 @@ fn main() {
                     rays: &labeled.batch.rays,
                     lines: &lines,
                 });
+                for group in ["cull_ns", "total_ns"] {
+                    let n = labeled.batch.rays.len();
+                    registered.push(Registered::new(
+                        format!("{group}-{case}"),
+                        cull.name(),
+                        nu,
+                        n,
+                    ));
+                }
             }
             batches.push(labeled);
         }
     }
-
     stage("cull timings done");
     let solver_sets: Vec<_> = solver::FAMILIES
         .iter()
         .map(|&f| (f, solver::family_sets(f, &workload, &config)))
         .collect();
     solver::bench(&mut c, &solver_sets);
+    for (name, _) in solver::SOLVERS {
+        registered.push(Registered::new(
+            "solver".into(),
+            name,
+            "all",
+            solver_sets.len(),
+        ));
+    }
     stage("solver timings done");
-    let bvh_pending = match (&workload.bvh, config.bvh) {
-        (Some(spec), true) => bvh::bench(&mut c, &config.bvh_spec(spec), workload.seed),
-        _ => Vec::new(),
+    let bvh_pending = match &bvh_spec {
+        Some(spec) => bvh::bench(&mut c, spec, workload.seed),
+        None => Vec::new(),
     };
+    registered.extend(bvh_pending.iter().map(|p| {
+        let (group, cull, nu, timed) = p.benchmark();
+        Registered::new(group, cull, nu, timed)
+    }));
     c.final_summary();
     stage("bvh done");
+    if mode != Mode::Benchmark {
+        println!("{mode:?} mode: nothing was timed, no results written");
+        return Ok(ExitCode::SUCCESS);
+    }
 
+    // What this run measured; a benchmark a filter left out has no fresh estimate.
     let home = criterion_home();
+    let estimates: Vec<EstimateRecord> = registered
+        .iter()
+        .filter_map(|r| {
+            let e = read_estimate(&home, &r.group, &r.function, &r.parameter, started)?;
+            let per = e.scaled(1.0 / r.elements.max(1) as f64);
+            Some(EstimateRecord {
+                benchmark: format!("{}/{}/{}", r.group, r.function, r.parameter),
+                elements: r.elements as u64,
+                ns_per_element: per.median,
+                ns_per_element_ci: [per.lower, per.upper],
+            })
+        })
+        .collect();
+    if estimates.is_empty() {
+        println!("no benchmark ran (all filtered out): no results written");
+        return Ok(ExitCode::SUCCESS);
+    }
+    let complete = estimates.len() == registered.len();
+    let mut results = Results::new(&workload, "bench");
+    results.meta.preset = Some(config.name.to_string());
+    results.meta.partial = !complete;
     results.timing = timing_records(&home, &batches, config.batch, started);
     results.solver = solver::records(&home, &solver_sets, started);
     results.bvh = bvh::records(&home, bvh_pending, started);
-
-    let path = std::env::var_os("TORUS_CULL_RESULTS").map_or_else(
-        || torus_cull::results::default_path(Path::new("results"), ""),
-        PathBuf::from,
-    );
-    // A bench of part of the set keeps the other parts of an existing file for this commit.
-    if let Ok(old) = Results::load(&path) {
-        if old.meta.workload_sha256 == results.meta.workload_sha256 && results.timing.is_empty() {
-            results.timing = old.timing;
-        }
-        if results.bvh.is_empty() {
-            results.bvh = old.bvh;
-        }
-    }
-    results.save(&path).unwrap_or_else(|e| panic!("{e}"));
+    results.estimates = estimates;
+    let mut false_rejects = Vec::new();
+    let path = if complete {
+        // The sweep runs only for a complete set, so that a file never mixes a full
+        // sweep with part of the timings (or old timings with a new sweep).
+        let sweep = config.sweep_workload(&workload);
+        let (records, rejected_hits) =
+            measure::rejection_sweep(&sweep, &CullKind::TIMED, 2, &|_| {})
+                .map_err(|e| e.to_string())?;
+        results.rejection = records;
+        false_rejects = rejected_hits;
+        stage("rejection sweep done");
+        out
+    } else {
+        partial_path(&out)
+    };
+    results.meta.sizes = Some(Sizes {
+        rejection_rays: complete.then_some(config.sweep_workload(&workload).rays as u64),
+        timing_rays: Some(config.batch as u64),
+        timed_nu: timed_nus.clone(),
+        warm_up_s: Some(config.warm_up.as_secs_f64()),
+        measurement_s: Some(config.measurement.as_secs_f64()),
+        samples: Some(config.samples as u64),
+        bvh: bvh_spec.as_ref().map(|s| BvhSizes {
+            scenes: s.scenes.iter().map(|k| k.name().to_string()).collect(),
+            nu: s.nu.clone(),
+            tori: s.tori as u64,
+            image: s.image as u64,
+            random_rays: s.random_rays as u64,
+        }),
+        bench_args: args.into_iter().filter(|a| a != "--bench").collect(),
+    });
+    results.save(&path).map_err(|e| e.to_string())?;
     print!("{}", torus_cull::report::timing_tables(&results));
     print!("{}", torus_cull::report::cull_ns_tables(&results));
     print!("{}", solver::table(&results.solver));
     print!("{}", torus_cull::report::bvh_tables(&results));
-    println!("wrote {}", path.display());
+    if complete {
+        println!("wrote {}", path.display());
+    } else {
+        println!(
+            "wrote {} (partial: {} of {} benchmarks ran; it holds only what was measured)",
+            path.display(),
+            results.estimates.len(),
+            registered.len()
+        );
+    }
     let dir = path.parent().unwrap_or(Path::new("."));
     let stem = path
         .file_stem()
@@ -192,6 +332,61 @@ fn main() {
     match torus_cull::plot::plot_results(&results, dir, &stem) {
         Ok(w) => println!("wrote {} plots to {}/{stem}-*.svg", w.len(), dir.display()),
         Err(e) => eprintln!("plots failed: {e}"),
+    }
+    if !false_rejects.is_empty() {
+        eprintln!(
+            "error: {} false rejects in the rejection sweep: {:?}",
+            false_rejects.len(),
+            &false_rejects[..false_rejects.len().min(5)]
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `x.json` → `x-partial.json`: a partial file never takes a complete file's name.
+fn partial_path(out: &Path) -> PathBuf {
+    let stem = out
+        .file_stem()
+        .map_or("results".into(), |s| s.to_string_lossy());
+    out.with_file_name(format!("{stem}-partial.json"))
+}
+
+/// Registers every benchmark name without data, for `--list` (criterion prints them and
+/// runs none).
+fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&BvhSpec>) {
+    let mut name = |group: String, function: &str, parameter: String| {
+        c.benchmark_group(group)
+            .bench_function(BenchmarkId::new(function, parameter), |b| b.iter(|| ()));
+    };
+    for &case in &workload.cases {
+        for &nu in timed_nus {
+            if case != Case::Hole {
+                // Hole rays are all misses: no hit to solve.
+                name(format!("solve_hits-{case}"), "none", nu.to_string());
+            }
+            for cull in CullKind::TIMED {
+                name(format!("cull_ns-{case}"), cull.name(), nu.to_string());
+                name(format!("total_ns-{case}"), cull.name(), nu.to_string());
+            }
+        }
+    }
+    for (solver, _) in solver::SOLVERS {
+        name("solver".into(), solver, "all".into());
+    }
+    if let Some(spec) = bvh {
+        for scene in &spec.scenes {
+            for &nu in &spec.nu {
+                for (set, n) in [("camera", spec.image), ("random", spec.random_rays)] {
+                    if n == 0 {
+                        continue;
+                    }
+                    for cull in CullKind::TIMED {
+                        name(format!("bvh-{scene}-{set}"), cull.name(), nu.to_string());
+                    }
+                }
+            }
+        }
     }
 }
 

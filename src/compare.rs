@@ -9,6 +9,11 @@
 //!   than the threshold is a regression.
 //!
 //! Records on one side only are listed. The exit code is 1 if any regression is flagged.
+//!
+//! Only like is compared with like. Files of different workloads (or, see [`comparable`],
+//! made at different sizes) are refused, because their counts differ for reasons that are
+//! not regressions; the CLI then exits 2, as it does when the two files share no record,
+//! so that a vacuous comparison never passes a CI gate.
 
 use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
 use std::collections::BTreeMap;
@@ -293,4 +298,55 @@ fn fmt_value(v: f64) -> String {
     } else {
         format!("{v:.4}")
     }
+}
+
+/// Whether `old` and `new` measure the same thing, so that a changed figure means a changed
+/// build: the same workload file (by SHA-256) and, where both files record them and both
+/// hold the records concerned, the same sizes (`smoke`'s capped rejection sweep, timed
+/// batch and shrunk BVH scenes differ from the default's for reasons that are not
+/// regressions). The error says which field differs.
+pub fn comparable(old: &Results, new: &Results) -> Result<(), String> {
+    let short = |s: &str| s[..s.len().min(12)].to_string();
+    if old.meta.workload_sha256 != new.meta.workload_sha256 {
+        return Err(format!(
+            "the workloads differ (field `meta.workload_sha256`: {} {} vs {} {}): their \
+             rejection counts and timings are of different rays, so nothing is compared",
+            old.meta.workload,
+            short(&old.meta.workload_sha256),
+            new.meta.workload,
+            short(&new.meta.workload_sha256)
+        ));
+    }
+    let (Some(a), Some(b)) = (&old.meta.sizes, &new.meta.sizes) else {
+        return Ok(());
+    };
+    let both = |o: bool, n: bool| o && n;
+    let checks = [
+        (
+            "rejection_rays",
+            both(!old.rejection.is_empty(), !new.rejection.is_empty())
+                && a.rejection_rays != b.rejection_rays,
+            format!("{:?} vs {:?}", a.rejection_rays, b.rejection_rays),
+        ),
+        (
+            "timing_rays",
+            both(!old.timing.is_empty(), !new.timing.is_empty()) && a.timing_rays != b.timing_rays,
+            format!("{:?} vs {:?}", a.timing_rays, b.timing_rays),
+        ),
+        (
+            "bvh",
+            both(!old.bvh.is_empty(), !new.bvh.is_empty()) && a.bvh != b.bvh,
+            format!("{:?} vs {:?}", a.bvh, b.bvh),
+        ),
+    ];
+    for (field, differs, values) in checks {
+        if differs {
+            return Err(format!(
+                "the sizes differ (field `meta.sizes.{field}`: {values}; presets {:?} vs \
+                 {:?}): make both files with the same preset",
+                old.meta.preset, new.meta.preset
+            ));
+        }
+    }
+    Ok(())
 }

@@ -1,7 +1,8 @@
 //! `torus-cull eval`: every cull and the oracle on a user's own rays.
 //!
-//! Input: CSV with the header `ox,oy,oz,dx,dy,dz`, one ray per row, in the torus frame
-//! (centre at the origin, axis y); the direction need not be unit length.
+//! Input: CSV with the header `ox,oy,oz,dx,dy,dz` (a UTF-8 byte-order mark before it is
+//! accepted), one ray per row, in the torus frame (centre at the origin, axis y); the
+//! direction need not be unit length.
 //! Output: CSV with the header [`OUTPUT_HEADER`]. `oracle` is for the ray t ≥ 0; `t_hit`
 //! is the nearest t ≥ 0 from the timed exact intersection, in units of the given
 //! direction, empty when there is none; each cull column is `1` (keep) or `0` (reject).
@@ -82,7 +83,9 @@ pub fn eval_csv(
     match lines.next() {
         Some(header) => {
             let header = header?;
-            if header.trim().replace(' ', "") != INPUT_HEADER {
+            // Spreadsheets often save CSV with a UTF-8 byte-order mark: it is not data.
+            let bare = header.strip_prefix('\u{feff}').unwrap_or(&header);
+            if bare.trim().replace(' ', "") != INPUT_HEADER {
                 return Err(row_error(
                     1,
                     format!("header is '{header}', expected '{INPUT_HEADER}'"),
@@ -115,8 +118,10 @@ pub fn eval_csv(
         if let Some(hit) = intersect(&torus, &ray) {
             write!(output, "{}", hit.t)?;
         }
+        // The culls' own input: far origins go to the foot point, as in a renderer.
+        let line = torus.line_to_local(&ray);
         for cull in CullKind::TIMED {
-            let keep = cull.keeps(&bounds, ray.origin(), ray.dir());
+            let keep = cull.keeps(&bounds, line.origin, line.dir);
             write!(output, ",{}", u8::from(keep))?;
         }
         writeln!(output)?;

@@ -1,6 +1,6 @@
 //! Exact ray–torus intersection: the expensive path a cull saves (timed).
 //!
-//! Precision practice (DESIGN §2): the f32 ray goes to the torus frame in f64, the direction
+//! Precision practice (BRL-CAD, POV-Ray; see docs/math.md): the f32 ray goes to the torus frame in f64, the direction
 //! is normalized, the origin moves to the foot point `p = o − (o·d̂)d̂` (closest to the
 //! centre; this removes the cubic term) and lengths are scaled by `1/R`. Along the line
 //! `x = p/R + u·d̂` the torus quartic is then depressed and monic:
@@ -216,7 +216,7 @@ mod tests {
         let ray = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::new(4.0, 0.0, 0.0)).unwrap();
         let hit = intersect(&canonical(), &ray).unwrap();
         assert!((hit.t - 0.5).abs() < 1e-7, "{hit:?}");
-        // DESIGN §7 counterexample (Eq. 35): hits at x = ±1.134, ±2.866.
+        // Skala's Eq. 35 counterexample (docs/math.md, errata): hits at x = ±1.134, ±2.866.
         let roots = line_roots_local(
             2.0,
             1.0,
@@ -543,7 +543,7 @@ mod tests {
 
     #[test]
     fn coefficients_match_the_documented_substitution() {
-        // F(t) from the unscaled DESIGN §2 coefficients equals R⁴·Q(u) (|d| = 1 here) at
+        // F(t) from the unscaled coefficients of docs/math.md equals R⁴·Q(u) (|d| = 1 here) at
         // u = (t|d| + o·d̂)/R, for a few t.
         let (major, minor) = (3.0, 1.25);
         let o = DVec3::new(-7.0, 0.8, 2.0);

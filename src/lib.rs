@@ -9,8 +9,12 @@
 //! The rest of the crate is the measuring harness behind the `torus-cull` command and
 //! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
 //! generators and workload files), [`measure`] (counting), [`results`] (the results
-//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], and [`scene`] (many tori in an
-//! obvhs BVH) with [`render`].
+//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], [`output`] (how every output file
+//! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`].
+//!
+//! The geometry, each cull's bound and soundness argument, the floating-point margin, the
+//! supported range and the seed paper's errata are written up in the repository's
+//! `docs/math.md`.
 //!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
@@ -41,6 +45,7 @@ pub mod eval;
 pub mod intersect;
 pub mod measure;
 pub mod oracle;
+pub mod output;
 pub mod plot;
 pub mod quartic;
 mod ray;
@@ -57,7 +62,9 @@ pub use cull::{
 };
 pub use intersect::{Hit, intersect};
 pub use ray::{Ray, RayError};
-pub use torus::{LocalLine, Torus, TorusError};
+pub use torus::{
+    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.

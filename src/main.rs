@@ -7,7 +7,7 @@
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::fs::File;
-use std::io::{BufReader, BufWriter};
+use std::io::{BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::results::{self, Results};
@@ -107,6 +107,7 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    remove_temp_files_on_signals();
     let result = match cli.command {
         Command::Run {
             workload,
@@ -148,6 +149,25 @@ fn main() -> ExitCode {
 
 type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
 
+/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, then die of
+/// the signal as if there were no handler (so the caller sees the usual status).
+fn remove_temp_files_on_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        // Without the handler an interrupt still stops the run; only the clean-up is lost.
+        if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+            std::thread::spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    torus_cull::output::remove_pending();
+                    let _ = signal_hook::low_level::emulate_default_handler(signal);
+                    std::process::exit(128 + signal);
+                }
+            });
+        }
+    }
+}
+
 fn eval(
     major: f32,
     minor: f32,
@@ -161,38 +181,67 @@ fn eval(
         let file = File::open(rays).map_err(|e| format!("--rays {name}: {e}"))?;
         Box::new(BufReader::new(file))
     };
-    let rows = match out {
-        // A temp file renamed into place on success: an error or interrupt leaves no partial CSV.
+    let result: Result<usize, Box<dyn std::error::Error>> = match out {
+        // Written through `output`: a regular file appears only when complete.
         Some(path) => {
-            let dir = match path.parent() {
-                Some(d) if !d.as_os_str().is_empty() => d,
-                _ => Path::new("."),
-            };
-            let tmp = tempfile::Builder::new()
-                .prefix(".torus-cull-eval-")
-                .tempfile_in(dir)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            let named = |e: std::io::Error| format!("--out {}: {e}", path.display());
+            let mut file = torus_cull::output::Output::create(path).map_err(named)?;
             let rows = torus_cull::eval::eval_csv(
                 major,
                 minor,
                 input,
                 &name,
-                BufWriter::new(tmp.as_file()),
-            )?;
-            tmp.persist(path)
-                .map_err(|e| format!("--out {}: {}", path.display(), e.error))?;
-            rows
+                BufWriter::new(Named(&mut file, format!("--out {}", path.display()))),
+            );
+            match rows {
+                Ok(rows) => file.finish().map(|()| rows).map_err(|e| named(e).into()),
+                Err(e) => Err(e.into()),
+            }
         }
         None => torus_cull::eval::eval_csv(
             major,
             minor,
             input,
             &name,
-            BufWriter::new(std::io::stdout().lock()),
-        )?,
+            BufWriter::new(Named(std::io::stdout().lock(), "stdout".into())),
+        )
+        .map_err(Into::into),
+    };
+    let rows = match result {
+        Ok(rows) => rows,
+        // The reader went away (`eval … | head`): stop quietly, as `cat` would.
+        Err(e) if is_broken_pipe(e.as_ref()) => return Ok(ExitCode::SUCCESS),
+        Err(e) => return Err(e),
     };
     eprintln!("evaluated {rows} rays");
     Ok(ExitCode::SUCCESS)
+}
+
+/// A writer whose errors name what it writes to (the kind is kept).
+struct Named<W>(W, String);
+
+impl<W: Write> Write for Named<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.write(buf).map_err(|e| self.name(e))
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.0.flush().map_err(|e| self.name(e))
+    }
+}
+
+impl<W> Named<W> {
+    fn name(&self, e: std::io::Error) -> std::io::Error {
+        std::io::Error::new(e.kind(), format!("{}: {e}", self.1))
+    }
+}
+
+/// Whether `e` is a write to a pipe whose reader has gone.
+fn is_broken_pipe(e: &(dyn std::error::Error + 'static)) -> bool {
+    let io = match e.downcast_ref::<torus_cull::eval::EvalError>() {
+        Some(torus_cull::eval::EvalError::Io(io)) => Some(io),
+        _ => e.downcast_ref::<std::io::Error>(),
+    };
+    io.is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
 }
 
 fn run(
@@ -218,6 +267,17 @@ fn run(
     let threads = threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
+    // `run` has its own default name, so that it never overwrites `cargo bench`'s file.
+    let path = out.unwrap_or_else(|| {
+        let suffix = match workload.name.as_str() {
+            "default" => "-run".to_string(),
+            other => format!("-{other}-run"),
+        };
+        results::default_path(Path::new("results"), &suffix)
+    });
+    // Before the sweep, not after it: an unwritable --out must not cost the whole run.
+    torus_cull::output::check_writable(&path)
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
     let units = measure::units(&workload).len() as u64;
     let bar = ProgressBar::new(units * workload.rays as u64).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rays ({eta})")
@@ -229,9 +289,25 @@ fn run(
         measure::rejection_sweep(&workload, &culls, threads, &|n| bar.inc(n))?;
     bar.finish_and_clear();
     let mut results = Results::new(&workload, "run");
+    results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
     results.rejection = records;
     print!("{}", report::miss_capture_tables(&results));
-    let path = out.unwrap_or_else(|| results::default_path(Path::new("results"), ""));
+    // The project's central claim, stated every time. Each ray is counted once, with the
+    // first cull's records: every cull sees the same rays.
+    let of_one_cull = || {
+        results
+            .rejection
+            .iter()
+            .filter(|r| r.cull == culls[0].name())
+    };
+    let rays: u64 = of_one_cull().map(|r| r.rays).sum();
+    let ambiguous: u64 = of_one_cull().map(|r| r.ambiguous).sum();
+    let rejected_hits: u64 = results.rejection.iter().map(|r| r.false_rejects).sum();
+    println!(
+        "{rejected_hits} false rejects in {rays} rays (each checked by {} culls; {ambiguous} \
+         rays the oracle calls ambiguous are not counted)",
+        culls.len()
+    );
     results.save(&path)?;
     println!("wrote {}", path.display());
     if !no_plots {
@@ -296,6 +372,8 @@ fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> CliRes
         );
     }
     let (a, b) = (Results::load(old)?, Results::load(new)?);
+    torus_cull::compare::comparable(&a, &b)
+        .map_err(|e| format!("{} vs {}: {e}", old.display(), new.display()))?;
     let report = torus_cull::compare::compare(&a, &b, threshold / 100.0);
     let name = |p: &Path| {
         p.file_stem()
@@ -305,6 +383,15 @@ fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> CliRes
         "{}",
         torus_cull::compare::render(&report, &name(old), &name(new), only_changes)
     );
+    if report.rows.is_empty() {
+        // A comparison of nothing must not pass a CI gate.
+        return Err(format!(
+            "{} and {} share no record: nothing was compared",
+            old.display(),
+            new.display()
+        )
+        .into());
+    }
     Ok(if report.regressions() > 0 {
         ExitCode::from(1)
     } else {

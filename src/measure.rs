@@ -1,5 +1,6 @@
 //! Counting: the oracle labels every ray of a batch, then each cull's verdicts are tallied
-//! against the labels (DESIGN §6). The oracle runs here, never inside a timed loop.
+//! against the labels (the metrics are defined in `docs/math.md`). The oracle runs here,
+//! never inside a timed loop.
 
 use crate::oracle::{OracleClass, OracleLabel, classify};
 use crate::results::RejectionRecord;
@@ -85,7 +86,7 @@ pub fn verdicts(cull: CullKind, batch: &Batch) -> Vec<bool> {
     cull.visit(All(batch))
 }
 
-/// The DESIGN §6 counts of `cull` on a labeled batch, and its false rejects.
+/// The rejection counts of `cull` on a labeled batch, and its false rejects.
 pub fn count(cull: CullKind, labeled: &LabeledBatch) -> (RejectionRecord, Vec<FalseReject>) {
     let batch = &labeled.batch;
     let keeps = verdicts(cull, batch);

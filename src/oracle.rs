@@ -12,14 +12,14 @@
 //! solver, its exact intersection or the f32 rotation of [`Torus`]: the oracle must be able
 //! to catch their bugs, so it shares no code with them.
 //!
-//! **Method** (DESIGN §3). Along the line, in unit arc length `s` measured from the foot
-//! point p (the point closest to the centre, which keeps far origins well conditioned),
-//! the minimum of D over an interval is at an end or at a critical point of D. Two sets
+//! **Method** (see also the repository's `docs/math.md`). Along the line, in unit arc
+//! length `s` measured from the foot point p (the point closest to the centre, which keeps
+//! far origins well conditioned), the minimum of D over an interval is at an end or at a critical point of D. Two sets
 //! of candidates are evaluated with D itself:
 //! - every critical point of D, found exactly by splitting `½ dD²/ds` into at most three
 //!   monotone pieces (see `Frame::half_slope`) and bisecting each sign change to the last
 //!   bit: this makes the minimum exact, not just close;
-//! - every real root of the cubic F′, where F is the DESIGN §2 quartic (own cubic solver,
+//! - every real root of the cubic F′, where F is the torus quartic (own cubic solver,
 //!   by monotone pieces and bisection). Since F = (D² − r²)·G with G > 0, F < 0 exactly
 //!   where D < r, so these alone already give the right *sign*; the test
 //!   `f_prime_candidates_give_the_same_class` checks that.
@@ -438,7 +438,7 @@ impl Frame {
         out
     }
 
-    /// The real roots of F′(s), F the DESIGN §2 quartic written in s:
+    /// The real roots of F′(s), F the torus quartic written in s:
     /// F = W² − 4R²ρ², W = ρ² + y² + R² − r² = w2 s² + w1 s + w0, ρ² = A s² + 2B s + C.
     fn f_prime_roots(&self) -> Vec<f64> {
         let ax = self.axis;

@@ -21,8 +21,27 @@ const COLOURS: [RGBColor; 9] = [
 ];
 
 /// Draw `series` against ν on a log axis into an SVG at `path`.
+///
+/// The chart is drawn in memory and then written through [`crate::output`], so a failed
+/// or interrupted plot never leaves a truncated SVG; every error names `path`.
 pub fn line_chart(
     path: &Path,
+    title: &str,
+    y_label: &str,
+    series: &[Series],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut svg = String::new();
+    draw_chart(&mut svg, title, y_label, series, y_from_zero)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    crate::output::write_file(path, svg.as_bytes())
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(())
+}
+
+/// The SVG text of one chart.
+fn draw_chart(
+    svg: &mut String,
     title: &str,
     y_label: &str,
     series: &[Series],
@@ -37,14 +56,14 @@ pub fn line_chart(
         y_max = y_max.max(y);
     }
     if x_min > x_max {
-        return Err(format!("{}: nothing to plot", path.display()).into());
+        return Err("nothing to plot".into());
     }
     if y_from_zero {
         y_min = y_min.min(0.0);
     }
     let pad = ((y_max - y_min) * 0.05).max(1e-9);
     let (y_lo, y_hi) = (y_min - if y_from_zero { 0.0 } else { pad }, y_max + pad);
-    let root = SVGBackend::new(path, (900, 480)).into_drawing_area();
+    let root = SVGBackend::with_string(svg, (900, 480)).into_drawing_area();
     root.fill(&WHITE)?;
     // The legend gets its own strip, so it never hides a line.
     let (plot_area, legend_area) = root.split_horizontally(740);
@@ -99,7 +118,7 @@ pub fn plot_results(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    std::fs::create_dir_all(out_dir)?;
+    std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
     let mut written = Vec::new();
     let mut chart = |name: String, title: String, y: &str, series: Vec<Series>, zero: bool| {
         if series.iter().all(|(_, p)| p.is_empty()) {

@@ -11,7 +11,6 @@
 //! | blue | every box it entered was rejected by `cychosz` |
 //! | near black | entered no box |
 
-use crate::results::write_atomic;
 use crate::scene::Scene;
 use crate::{Cull, CychoszCull, SkalaCull, intersect};
 use std::path::Path;
@@ -124,6 +123,6 @@ pub fn write_png(path: &Path, size: usize, rgb: &[u8]) -> Result<(), Box<dyn std
         let mut writer = encoder.write_header()?;
         writer.write_image_data(rgb)?;
     }
-    write_atomic(path, &bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    crate::output::write_file(path, &bytes).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(())
 }

@@ -1,10 +1,10 @@
 //! The results JSON (schema version 1): what `run` and `cargo bench` write and `compare`
-//! reads. Files are written atomically (temp file + rename), so an interrupted run never
-//! leaves half a file. Field names are stable; new fields may be added.
+//! reads. Files are written through [`crate::output`]: a regular file is replaced
+//! atomically, so an interrupted run never leaves half a file. Field names are stable;
+//! new fields may be added.
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The schema version this build writes and reads.
@@ -28,14 +28,19 @@ pub struct Results {
     /// The quartic solver against a peer crate (filled by `cargo bench`).
     #[serde(default)]
     pub solver: Vec<SolverRecord>,
+    /// Every criterion benchmark of the run as measured, per element (filled by
+    /// `cargo bench`): what a filtered run keeps even when no derived record is complete.
+    #[serde(default)]
+    pub estimates: Vec<EstimateRecord>,
 }
 
 /// Provenance of a results file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Meta {
-    /// `git rev-parse --short HEAD`, or null outside a checkout.
+    /// The short commit the binary was built from, or null for a build outside a git
+    /// checkout.
     pub commit: Option<String>,
-    /// Whether tracked files differed from the commit.
+    /// Whether the sources the binary was built from differed from the commit.
     pub dirty: bool,
     /// When the file was made, RFC 3339.
     pub created: String,
@@ -56,6 +61,85 @@ pub struct Meta {
     /// What made the file: `run` or `bench`.
     #[serde(default)]
     pub tool: Option<String>,
+    /// True when only part of the benchmark set was measured (a filtered `cargo bench`):
+    /// such a file holds only what was measured, has no rejection sweep, and is written to
+    /// a `-partial` name, never over a complete file.
+    #[serde(default)]
+    pub partial: bool,
+    /// The `cargo bench` preset (`smoke`, `default`, `full`); null for `run`.
+    #[serde(default)]
+    pub preset: Option<String>,
+    /// The sizes that shape the figures; null in files from before it was recorded.
+    #[serde(default)]
+    pub sizes: Option<Sizes>,
+}
+
+/// The sizes behind a results file's figures: two files compare only if these agree.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Sizes {
+    /// Rays per (case, ν) in the rejection records (`smoke` caps the workload's count);
+    /// null when the file has no rejection sweep.
+    pub rejection_rays: Option<u64>,
+    /// Rays per timed (case, ν) batch; null for `run`.
+    pub timing_rays: Option<u64>,
+    /// The timed ν values (empty for `run`).
+    #[serde(default)]
+    pub timed_nu: Vec<f64>,
+    /// Criterion's warm-up per benchmark, seconds.
+    pub warm_up_s: Option<f64>,
+    /// Criterion's measurement per benchmark, seconds.
+    pub measurement_s: Option<f64>,
+    /// Criterion's samples per benchmark.
+    pub samples: Option<u64>,
+    /// The BVH scenes as benched (`smoke` shrinks them); null without BVH records.
+    pub bvh: Option<BvhSizes>,
+    /// The arguments passed to the bench harness (a filter, `--measurement-time`, …).
+    #[serde(default)]
+    pub bench_args: Vec<String>,
+}
+
+impl Sizes {
+    /// The sizes of a file with only rejection counts (`torus-cull run`).
+    pub fn rejection_only(rays: u64) -> Sizes {
+        Sizes {
+            rejection_rays: Some(rays),
+            timing_rays: None,
+            timed_nu: Vec::new(),
+            warm_up_s: None,
+            measurement_s: None,
+            samples: None,
+            bvh: None,
+            bench_args: Vec::new(),
+        }
+    }
+}
+
+/// The BVH scenes' sizes as benched.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BvhSizes {
+    /// Scene names.
+    pub scenes: Vec<String>,
+    /// ν of the scenes' tori.
+    pub nu: Vec<f64>,
+    /// Tori per scene.
+    pub tori: u64,
+    /// Camera image side, pixels.
+    pub image: u64,
+    /// Random rays per scene.
+    pub random_rays: u64,
+}
+
+/// One criterion benchmark as measured.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EstimateRecord {
+    /// Criterion's id, `group/function/parameter` (e.g. `total_ns-hole/skala/2`).
+    pub benchmark: String,
+    /// Elements (rays, lines or quartics) each timed iteration processes.
+    pub elements: u64,
+    /// Criterion's median per iteration, divided by `elements`: ns per element.
+    pub ns_per_element: f64,
+    /// Its confidence interval.
+    pub ns_per_element_ci: [f64; 2],
 }
 
 /// The oracle's and one cull's counts on one (case, ν) batch.
@@ -226,11 +310,15 @@ impl Results {
                 seed: Some(workload.seed),
                 torus_cull_version: Some(env!("CARGO_PKG_VERSION").to_string()),
                 tool: Some(tool.to_string()),
+                partial: false,
+                preset: None,
+                sizes: None,
             },
             rejection: Vec::new(),
             timing: Vec::new(),
             bvh: Vec::new(),
             solver: Vec::new(),
+            estimates: Vec::new(),
         }
     }
 
@@ -252,7 +340,7 @@ impl Results {
         serde_json::from_value(value).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))
     }
 
-    /// Write atomically: a temp file in the same directory, then a rename.
+    /// Write the file (atomically when it is a regular file; see [`crate::output`]).
     pub fn save(&self, path: &Path) -> Result<(), ResultsError> {
         let mut text = serde_json::to_string_pretty(self).expect("results serialize");
         text.push('\n');
@@ -260,26 +348,16 @@ impl Results {
     }
 }
 
-/// Write `bytes` to `path` through a temp file in the same directory and a rename, so a
-/// reader never sees a partial file and an interrupted writer leaves the old one intact.
+/// Write `bytes` to `path` the way every output of this crate is written: a regular file
+/// is replaced atomically (temp file + rename), symlinks are followed, a FIFO or device is
+/// written in place; see [`crate::output`].
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    std::fs::create_dir_all(dir)?;
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".torus-cull-")
-        .suffix(".tmp")
-        .tempfile_in(dir)?;
-    tmp.write_all(bytes)?;
-    tmp.as_file().sync_all()?;
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    crate::output::write_file(path, bytes)
 }
 
-/// The default output path: `results/<short commit>[-dirty].json`, or
-/// `results/latest.json` outside a git checkout.
+/// The default output path: `<results_dir>/<short commit>[-dirty]<suffix>.json`, or
+/// `<results_dir>/latest<suffix>.json` for a build outside a git checkout. The commit is
+/// the one the binary was built from (see [`git_state`]).
 pub fn default_path(results_dir: &Path, suffix: &str) -> PathBuf {
     let (commit, dirty) = git_state();
     let stem = match commit {
@@ -290,29 +368,16 @@ pub fn default_path(results_dir: &Path, suffix: &str) -> PathBuf {
     results_dir.join(format!("{stem}{suffix}.json"))
 }
 
-/// (short commit, dirty) of the checkout holding the current directory.
+/// (short commit, dirty) of the build: recorded by `build.rs` when the binary was
+/// compiled, not read from whatever repository the current directory is in. `dirty`
+/// means the sources the binary was built from (`src/`, `benches/`, `build.rs`,
+/// `Cargo.toml`, `Cargo.lock`) differed from the commit.
 pub fn git_state() -> (Option<String>, bool) {
-    let git = |args: &[&str]| {
-        std::process::Command::new("git")
-            .args(args)
-            .output()
-            .ok()
-            .filter(|o| o.status.success())
-            .map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string())
-    };
-    let commit = git(&["rev-parse", "--short", "HEAD"]);
-    // Committed results and untracked files do not make the source dirty.
-    let dirty = commit.is_some()
-        && git(&[
-            "status",
-            "--porcelain",
-            "--untracked-files=no",
-            "--",
-            ".",
-            ":!results",
-        ])
-        .is_some_and(|s| !s.is_empty());
-    (commit, dirty)
+    let commit = env!("TORUS_CULL_GIT_COMMIT");
+    (
+        (!commit.is_empty()).then(|| commit.to_string()),
+        env!("TORUS_CULL_GIT_DIRTY") == "true",
+    )
 }
 
 fn cpu_model() -> String {

@@ -1,4 +1,4 @@
-//! Many-torus scenes in an obvhs BVH, with a cull at the leaves (DESIGN §8).
+//! Many-torus scenes in an obvhs BVH, with a cull at the leaves.
 //!
 //! Inside a BVH a ray reaches a torus only after it entered that torus's box, so what a
 //! cull can still save is its **marginal** value: quartic solves per ray beyond the box

@@ -16,6 +16,14 @@ use std::fmt;
 /// which the oracle and the hole test rely on, would fail silently. [`Torus::new`]
 /// returns [`TorusError::NoHole`] instead.
 ///
+/// **The size is limited to [`MIN_OUTER_RADIUS`] ≤ R + r ≤ [`MAX_OUTER_RADIUS`]**
+/// (10⁻¹⁵ to 10¹⁵). The culls run in f32 and square lengths and products of lengths:
+/// past about 10¹⁹ the squares overflow (`cychosz` and `skala` then reject real hits) and
+/// below about 10⁻¹⁹ they fall into subnormals (`thick_cylinder` and `skala` then do).
+/// The limits leave a factor of about 10³ of room on each side, and the tests check every timed
+/// cull against the oracle at both limits. Larger or smaller scenes should be rescaled
+/// before they reach the culls; [`TorusError::OutOfRange`] says so.
+///
 /// ```
 /// use torus_cull::Torus;
 /// use glam::Vec3;
@@ -33,6 +41,8 @@ pub struct Torus {
     to_local: Mat3,
     /// The same rotation built in f64 from the f32 axis, for the f64 exact intersection.
     to_local_f64: DMat3,
+    /// (NEAR_ORIGIN_REL·(R + r))²: origins beyond it take the f64 path to the culls.
+    near_origin_sq: f32,
 }
 
 /// Why a torus was refused.
@@ -56,7 +66,28 @@ pub enum TorusError {
     NonFiniteCenter(Vec3),
     /// The axis is zero, NaN or infinite.
     BadAxis(Vec3),
+    /// R + r is outside [`MIN_OUTER_RADIUS`, `MAX_OUTER_RADIUS`], where the f32 culls are no
+    /// longer conservative.
+    OutOfRange {
+        /// R as given.
+        major_radius: f32,
+        /// r as given.
+        minor_radius: f32,
+    },
 }
+
+/// The smallest supported R + r, 10⁻¹⁵: below about 10⁻¹⁹ the culls' squared lengths
+/// become subnormal f32 and lose the bits the safety margin relies on.
+pub const MIN_OUTER_RADIUS: f32 = 1e-15;
+
+/// The largest supported R + r, 10¹⁵: above about 10¹⁹ the culls' squared lengths
+/// overflow f32.
+pub const MAX_OUTER_RADIUS: f32 = 1e15;
+
+/// Origins farther than this many (R + r) from the centre are first moved to the line's
+/// foot point, in f64 (see [`Torus::line_to_local`]). The culls' margin covers f32
+/// rounding up to 256·(R + r); 64 leaves a factor 4 of room.
+pub const NEAR_ORIGIN_REL: f32 = 64.0;
 
 impl fmt::Display for TorusError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -75,6 +106,16 @@ impl fmt::Display for TorusError {
             ),
             TorusError::NonFiniteCenter(c) => write!(f, "torus centre {c} is not finite"),
             TorusError::BadAxis(a) => write!(f, "torus axis {a} must be finite and non-zero"),
+            TorusError::OutOfRange {
+                major_radius,
+                minor_radius,
+            } => write!(
+                f,
+                "major_radius = {major_radius}, minor_radius = {minor_radius}: R + r = {} is outside \
+                 the supported range {MIN_OUTER_RADIUS:e} ..= {MAX_OUTER_RADIUS:e} (the f32 culls are \
+                 not conservative beyond it; rescale the scene)",
+                major_radius + minor_radius
+            ),
         }
     }
 }
@@ -82,9 +123,13 @@ impl fmt::Display for TorusError {
 impl std::error::Error for TorusError {}
 
 /// A line in the torus frame: `origin + t·dir`, f32, `dir` non-zero but of any length.
+///
+/// It is the ray's *line*, for the culls: `origin` is the ray's origin, or the line's foot
+/// point when the origin is far (see [`Torus::line_to_local`]), so `t` along it is not the
+/// ray's `t`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LocalLine {
-    /// The origin in the torus frame.
+    /// A point of the line in the torus frame.
     pub origin: Vec3,
     /// The direction in the torus frame (same length as the world direction).
     pub dir: Vec3,
@@ -113,6 +158,14 @@ impl Torus {
                 minor_radius,
             });
         }
+        // In f64: R + r may overflow f32 while both radii are finite.
+        let outer = major_radius as f64 + minor_radius as f64;
+        if !(MIN_OUTER_RADIUS as f64..=MAX_OUTER_RADIUS as f64).contains(&outer) {
+            return Err(TorusError::OutOfRange {
+                major_radius,
+                minor_radius,
+            });
+        }
         if !center.is_finite() {
             return Err(TorusError::NonFiniteCenter(center));
         }
@@ -124,6 +177,7 @@ impl Torus {
         // so both paths agree on the same surface to f64 precision.
         let axis = axis_f64.normalize().as_vec3();
         let to_local_f64 = rotation_axis_to_y(axis.as_dvec3().normalize());
+        let near = NEAR_ORIGIN_REL * (major_radius + minor_radius);
         Ok(Torus {
             center,
             axis,
@@ -131,6 +185,7 @@ impl Torus {
             minor_radius,
             to_local: to_local_f64.as_mat3(),
             to_local_f64,
+            near_origin_sq: near * near,
         })
     }
 
@@ -206,11 +261,36 @@ impl Torus {
     }
 
     /// The ray's line in the torus frame, in f32, as the culls see it.
+    ///
+    /// The f32 transform errs by about 4·2⁻²⁴·|o − c|, which the culls' margin absorbs for
+    /// |o − c| ≤ 256·(R + r). An origin farther than [`NEAR_ORIGIN_REL`]·(R + r) is
+    /// therefore replaced by the line's foot point p = o − d (o·d)/|d|², the point closest
+    /// to the centre, computed in f64: the same line, now with an origin the margin
+    /// covers, whatever the distance. The near case, which is every ray a camera near
+    /// the torus shoots, costs one compare.
     #[inline]
     pub fn line_to_local(&self, ray: &Ray) -> LocalLine {
+        let relative = ray.origin() - self.center;
+        // An overflowed (infinite) square fails the test too and takes the f64 path.
+        if relative.length_squared() <= self.near_origin_sq {
+            LocalLine {
+                origin: self.to_local * relative,
+                dir: self.to_local * ray.dir(),
+            }
+        } else {
+            self.far_line_to_local(ray)
+        }
+    }
+
+    /// [`Torus::line_to_local`] for a far origin: the foot point, in f64.
+    #[cold]
+    #[inline(never)]
+    fn far_line_to_local(&self, ray: &Ray) -> LocalLine {
+        let (o, d) = self.line_to_local_f64(ray);
+        let foot = o - d * (o.dot(d) / d.length_squared());
         LocalLine {
-            origin: self.to_local * (ray.origin() - self.center),
-            dir: self.to_local * ray.dir(),
+            origin: foot.as_vec3(),
+            dir: d.as_vec3(),
         }
     }
 

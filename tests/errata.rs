@@ -1,4 +1,5 @@
-//! DESIGN §7: the paper's misprints, as counterexamples and as counts of rejected hits.
+//! The seed paper's misprints (table in `docs/math.md`), as counterexamples and as counts
+//! of rejected hits.
 //! This proves the harness can see a broken cull.
 
 mod common;

@@ -158,8 +158,9 @@ fn good_input_round_trips() {
             Some(hit) => assert_eq!(f[3].parse::<f32>().unwrap(), hit.t),
             None => assert_eq!(f[3], ""),
         }
+        let local = torus.line_to_local(&ray);
         for (j, cull) in CullKind::TIMED.iter().enumerate() {
-            let keep = cull.keeps(&bounds, ray.origin(), ray.dir());
+            let keep = cull.keeps(&bounds, local.origin, local.dir);
             assert_eq!(f[4 + j], if keep { "1" } else { "0" }, "{cull} on {line}");
         }
         n += 1;
@@ -229,4 +230,42 @@ fn no_hit_row_without_t_hit_on_hole_edge_lines() {
         first.starts_with("0,hit,") && first.contains(",1.174"),
         "{first}"
     );
+}
+
+/// `eval` gives the culls the same line a renderer would: grazing hits seen from
+/// 10⁵·(R + r) are kept by every cull (the raw far origin made them reject some).
+#[test]
+fn far_origins_are_never_falsely_rejected() {
+    use torus_cull::workload::{Case, Pose, generate};
+    let batch = generate(Case::Grazing, 4.0, 3000, 11, Pose::Canonical).unwrap();
+    let (big, small) = (batch.torus.major_radius(), batch.torus.minor_radius());
+    let mut csv = String::from("ox,oy,oz,dx,dy,dz\n");
+    for ray in &batch.rays {
+        let d = ray.dir();
+        let o = ray.origin() - d.normalize() * (1e5 * (big + small));
+        csv.push_str(&format!(
+            "{},{},{},{},{},{}\n",
+            o.x, o.y, o.z, d.x, d.y, d.z
+        ));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let out = eval_file(dir.path(), &csv, &big.to_string(), &small.to_string());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut hits = 0;
+    for row in text.lines().skip(1) {
+        let f: Vec<&str> = row.split(',').collect();
+        if f[1] == "hit" {
+            hits += 1;
+            assert!(
+                f[4..].iter().all(|k| *k == "1"),
+                "a cull rejects a hit: {row}"
+            );
+        }
+    }
+    assert!(hits > 1000, "only {hits} hits");
 }

@@ -22,6 +22,9 @@ fn sample() -> Results {
             seed: Some(7),
             torus_cull_version: Some("0.1.0".into()),
             tool: Some("run".into()),
+            partial: false,
+            preset: None,
+            sizes: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -78,6 +81,7 @@ fn sample() -> Results {
             matches_brute_force: true,
         }],
         solver: Vec::new(),
+        estimates: Vec::new(),
     }
 }
 
@@ -245,4 +249,49 @@ fn compare_exit_codes() {
     let (code, text) = cli_compare(&a, &junk);
     assert_eq!(code, 2, "{text}");
     assert!(text.contains("junk.json"), "{text}");
+
+    // No record in common: a vacuous comparison is an error, not a pass.
+    let disjoint = dir.path().join("disjoint.json");
+    let mut other = sample();
+    for r in &mut other.rejection {
+        r.nu = 3.0;
+    }
+    other.timing[0].nu = 3.0;
+    other.bvh[0].nu = 8.0;
+    other.save(&disjoint).unwrap();
+    let (code, text) = cli_compare(&a, &disjoint);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("share no record"), "{text}");
+
+    // Another workload: refused, naming the field, and no regression verdict is given.
+    let other_workload = dir.path().join("w.json");
+    let mut w = worse_of(sample());
+    w.meta.workload_sha256 = "11".repeat(32);
+    w.save(&other_workload).unwrap();
+    let (code, text) = cli_compare(&a, &other_workload);
+    assert_eq!(code, 2, "{text}");
+    assert!(
+        text.contains("workloads differ") && text.contains("meta.workload_sha256"),
+        "{text}"
+    );
+    assert!(!text.contains("REGRESSION"), "{text}");
+
+    // The same workload at another size (a smoke sweep against a full one): refused too.
+    let (full, smoke) = (dir.path().join("full.json"), dir.path().join("smoke.json"));
+    let mut f = sample();
+    f.meta.sizes = Some(torus_cull::results::Sizes::rejection_only(100_000));
+    f.save(&full).unwrap();
+    let mut s = worse_of(sample());
+    s.meta.sizes = Some(torus_cull::results::Sizes::rejection_only(1_000));
+    s.meta.preset = Some("smoke".into());
+    s.save(&smoke).unwrap();
+    let (code, text) = cli_compare(&full, &smoke);
+    assert_eq!(code, 2, "{text}");
+    assert!(text.contains("meta.sizes.rejection_rays"), "{text}");
+}
+
+fn worse_of(mut r: Results) -> Results {
+    r.rejection[0].miss_capture = Some(0.5);
+    r.rejection[0].rejected = 500;
+    r
 }

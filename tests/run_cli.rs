@@ -30,6 +30,16 @@ fn quick_workload_writes_results_and_plots() {
     assert_eq!(r.meta.workload, "quick");
     assert_eq!(r.rejection.len(), 5 * 4 * 6);
     assert!(r.rejection.iter().all(|x| x.false_rejects == 0));
+    // The central claim is stated, with the number of rays behind it.
+    let rays: u64 = r
+        .rejection
+        .iter()
+        .filter(|x| x.cull == "none")
+        .map(|x| x.rays)
+        .sum();
+    let culls = torus_cull::CullKind::TIMED.len();
+    let claim = format!("0 false rejects in {rays} rays (each checked by {culls} culls");
+    assert!(stdout.contains(&claim), "no '{claim}' in:\n{stdout}");
     // Hole rays are all misses: skala must capture most, cychosz none.
     let capture = |cull: &str| {
         r.rejection
@@ -133,4 +143,73 @@ fn bad_inputs_exit_2_and_say_where() {
     ]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--nu"));
+}
+
+/// `meta.commit` and the default file name describe the build, not the repository the
+/// command runs in: run from inside another git repository, `run` still names the commit
+/// it was built from.
+#[test]
+fn the_commit_is_the_builds_not_the_current_directorys() {
+    let (built, _) = torus_cull::results::git_state();
+    let dir = tempfile::tempdir().unwrap();
+    let git = |args: &[&str]| {
+        let o = Command::new("git")
+            .args(args)
+            .current_dir(dir.path())
+            .output()
+            .expect("git");
+        assert!(
+            o.status.success(),
+            "git {args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        String::from_utf8_lossy(&o.stdout).trim().to_string()
+    };
+    git(&["init", "-q"]);
+    std::fs::write(dir.path().join("f"), "x").unwrap();
+    git(&["add", "f"]);
+    git(&[
+        "-c",
+        "user.name=t",
+        "-c",
+        "user.email=t@t.invalid",
+        "commit",
+        "-qm",
+        "other",
+    ]);
+    let other = git(&["rev-parse", "--short", "HEAD"]);
+    let workload = concat!(env!("CARGO_MANIFEST_DIR"), "/workloads/quick.json");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["run", "--no-plots", "--workload", workload])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let written: Vec<String> = std::fs::read_dir(dir.path().join("results"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(written.len(), 1, "{written:?}");
+    let name = &written[0];
+    assert!(name.ends_with("-quick-run.json"), "{name}");
+    assert!(
+        !name.starts_with(&other),
+        "named after the cwd's repository: {name}"
+    );
+    let r = Results::load(&dir.path().join("results").join(name)).unwrap();
+    assert_eq!(r.meta.commit, built);
+    assert_ne!(r.meta.commit.as_deref(), Some(other.as_str()));
+    if let Some(c) = &built {
+        assert!(
+            name.starts_with(c.as_str()),
+            "{name} is not named after {c}"
+        );
+    }
+    // Built from a git checkout (as in CI), the build must have recorded its commit.
+    if std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(".git")
+        .exists()
+    {
+        assert!(built.is_some(), "build.rs recorded no commit");
+    }
 }

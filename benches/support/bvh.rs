@@ -20,6 +20,19 @@ pub struct Pending {
     timed: usize,
 }
 
+impl Pending {
+    /// The criterion benchmark that times it: (group, cull, ν, rays per iteration).
+    pub fn benchmark(&self) -> (String, &str, f64, usize) {
+        let r = &self.record;
+        (
+            format!("bvh-{}-{}", r.scene, r.ray_set),
+            &r.cull,
+            r.nu,
+            self.timed,
+        )
+    }
+}
+
 struct Count<'a> {
     scene: &'a Scene,
     rays: &'a [Ray],

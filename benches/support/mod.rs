@@ -28,16 +28,26 @@ pub struct BenchConfig {
     pub bvh: bool,
     /// `smoke` shrinks the BVH scenes to seconds.
     pub small_bvh: bool,
+    /// Whether `TORUS_CULL_BENCH_NU` chose the timed ν.
+    pub nu_override: bool,
 }
 
 /// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
 pub const DEFAULT_TIMED_NU: [f64; 5] = [1.25, 2.0, 4.0, 8.0, 16.0];
 
+/// The presets `TORUS_CULL_BENCH` accepts.
+pub const PRESETS: [&str; 3] = ["smoke", "default", "full"];
+
 impl BenchConfig {
-    /// From `TORUS_CULL_BENCH` (smoke | default | full) and `TORUS_CULL_BENCH_NU`
-    /// (a comma-separated ν list overriding the preset's).
-    pub fn from_env() -> BenchConfig {
-        let preset = std::env::var("TORUS_CULL_BENCH").unwrap_or_else(|_| "default".into());
+    /// From `TORUS_CULL_BENCH` (smoke | default | full) and `TORUS_CULL_BENCH_NU` (a
+    /// comma-separated ν list overriding the preset's; every ν must be one of the
+    /// workload's). Errors name the variable and what is allowed.
+    pub fn from_env(workload: &Workload) -> Result<BenchConfig, String> {
+        let preset = match std::env::var("TORUS_CULL_BENCH") {
+            Ok(p) => p,
+            Err(std::env::VarError::NotPresent) => "default".into(),
+            Err(e) => return Err(format!("TORUS_CULL_BENCH: {e}")),
+        };
         let mut config = match preset.as_str() {
             "smoke" => BenchConfig {
                 name: "smoke",
@@ -49,6 +59,7 @@ impl BenchConfig {
                 sweep_rays: Some(1_000),
                 bvh: true,
                 small_bvh: true,
+                nu_override: false,
             },
             "default" => BenchConfig {
                 name: "default",
@@ -60,6 +71,7 @@ impl BenchConfig {
                 sweep_rays: None,
                 bvh: true,
                 small_bvh: false,
+                nu_override: false,
             },
             "full" => BenchConfig {
                 name: "full",
@@ -71,20 +83,62 @@ impl BenchConfig {
                 sweep_rays: None,
                 bvh: true,
                 small_bvh: false,
+                nu_override: false,
             },
-            other => panic!("TORUS_CULL_BENCH={other} is invalid (allowed: smoke, default, full)"),
+            other => {
+                return Err(format!(
+                    "TORUS_CULL_BENCH={other:?} is invalid (allowed: {})",
+                    PRESETS.join(", ")
+                ));
+            }
         };
-        if let Ok(list) = std::env::var("TORUS_CULL_BENCH_NU") {
-            config.nus = list
-                .split(',')
-                .map(|s| {
-                    s.trim().parse::<f64>().ok().filter(|nu| nu.is_finite() && *nu > 1.0).unwrap_or_else(|| {
-                        panic!("TORUS_CULL_BENCH_NU: '{s}' is invalid (allowed: numbers > 1, comma-separated)")
-                    })
-                })
-                .collect();
+        match std::env::var("TORUS_CULL_BENCH_NU") {
+            Ok(list) => {
+                let allowed = || {
+                    let nus: Vec<String> = workload.nu.iter().map(|n| n.to_string()).collect();
+                    format!(
+                        "allowed: a comma-separated list of the workload's nu values, {}",
+                        nus.join(", ")
+                    )
+                };
+                let mut nus = Vec::new();
+                for s in list.split(',') {
+                    match s.trim().parse::<f64>() {
+                        Ok(nu) if workload.nu.contains(&nu) => nus.push(nu),
+                        _ => {
+                            return Err(format!(
+                                "TORUS_CULL_BENCH_NU={list:?}: {:?} is not a nu of workload {} ({})",
+                                s.trim(),
+                                workload.name,
+                                allowed()
+                            ));
+                        }
+                    }
+                }
+                config.nus = nus;
+                config.nu_override = true;
+            }
+            Err(std::env::VarError::NotPresent) => {}
+            Err(e) => return Err(format!("TORUS_CULL_BENCH_NU: {e}")),
         }
-        config
+        Ok(config)
+    }
+
+    /// The file-name suffix that tells this configuration's results apart: empty for the
+    /// default preset on the default workload (the file that gets committed).
+    pub fn file_suffix(&self, workload: &Workload) -> String {
+        let mut suffix = String::new();
+        if workload.name != "default" {
+            suffix += &format!("-{}", workload.name);
+        }
+        if self.name != "default" {
+            suffix += &format!("-{}", self.name);
+        }
+        if self.nu_override {
+            let nus: Vec<String> = self.nus.iter().map(|n| n.to_string()).collect();
+            suffix += &format!("-nu{}", nus.join("_"));
+        }
+        suffix
     }
 
     /// The timed ν values for `workload`: the preset's that the workload has, or all of its.
@@ -170,4 +224,37 @@ pub fn read_estimate(
         lower: median["confidence_interval"]["lower_bound"].as_f64()?,
         upper: median["confidence_interval"]["upper_bound"].as_f64()?,
     })
+}
+
+/// What criterion will do with this invocation, from the arguments cargo passes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// `--list`: print the benchmark names, measure nothing.
+    List,
+    /// `cargo test --benches` or `--test`: run each benchmark once, untimed.
+    Test,
+    /// `--profile-time`: run under a profiler, no estimates.
+    Profile,
+    /// `cargo bench`: measure.
+    Benchmark,
+}
+
+impl Mode {
+    /// Criterion's own rule: `--list` wins, then `--test` or no `--bench` (cargo adds
+    /// `--bench` only for `cargo bench`) means test mode, then `--profile-time`.
+    pub fn from_args(args: &[String]) -> Mode {
+        let has = |flag: &str| {
+            args.iter()
+                .any(|a| a == flag || a.strip_prefix(flag).is_some_and(|r| r.starts_with('=')))
+        };
+        if has("--list") {
+            Mode::List
+        } else if has("--test") || !has("--bench") {
+            Mode::Test
+        } else if has("--profile-time") {
+            Mode::Profile
+        } else {
+            Mode::Benchmark
+        }
+    }
 }

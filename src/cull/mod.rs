@@ -16,8 +16,10 @@
 //! Any error that acts like moving the line, or a plane through it, by less than `η` is
 //! absorbed: every point within `η` of the true torus lies inside `T_η`. The errors of the
 //! world→torus transform and of the foot-point shift are about `4·2⁻²⁴·|o − c|`, so the
-//! margin covers origins with `|o − c| ≤ 256·(R + r)` (and centres with `|c|` in the same
-//! range); further out, move the origin along the ray first.
+//! margin covers origins with `|o − c| ≤ 256·(R + r)`. [`crate::Torus::line_to_local`]
+//! moves origins beyond 64·(R + r) to the line's foot point in f64, so every origin is
+//! covered; lines built by hand must stay within that distance. The squares in the culls
+//! bound the torus size: see [`crate::MIN_OUTER_RADIUS`] and [`crate::MAX_OUTER_RADIUS`].
 
 mod aabb;
 mod cychosz;

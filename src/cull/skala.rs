@@ -1,4 +1,5 @@
-//! `skala`: V. Skala's circle-based test, with the paper's misprints corrected (DESIGN §4).
+//! `skala`: V. Skala's circle-based test ("Line–Torus Intersection for Ray Tracing:
+//! Alternative Formulations"), with the paper's misprints corrected (see `docs/math.md`).
 
 use super::cychosz::{SphereSlab, sphere_slab};
 use super::{AXIS_PARALLEL_H2, Cull, CullBounds, rescaled};
@@ -54,7 +55,8 @@ pub(crate) trait SectionFormulas {
     fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32;
 }
 
-/// DESIGN §4: x_B² = (R − r)² − a², h_c² = r² − (a − R)², on the padded torus T_η.
+/// The corrected formulas, x_B² = (R − r)² − a² (Eq. 104) and h_c² = r² − (a − R)²
+/// (Eq. 105 corrected), on the padded torus T_η.
 pub(crate) struct Corrected;
 
 impl SectionFormulas for Corrected {

@@ -1,0 +1,363 @@
+//! Every output behaves like a Unix tool's: symlinks are followed, FIFOs and devices are
+//! written in place (and their errors reported), regular files are replaced atomically
+//! with the umask's mode, an interrupted `eval --out` leaves no temp file, a closed pipe
+//! ends `eval` quietly, and an unwritable `--out` fails before the work.
+#![cfg(unix)]
+
+use std::io::{Read, Write};
+use std::os::unix::fs::{FileTypeExt, PermissionsExt};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
+const HEADER: &str = "ox,oy,oz,dx,dy,dz\n";
+
+fn rays_csv(dir: &Path, rows: usize) -> PathBuf {
+    let path = dir.join("rays.csv");
+    let mut text = String::from(HEADER);
+    for i in 0..rows {
+        text.push_str(&format!("-5,{},0,1,0,0\n", (i % 100) as f32 * 0.01));
+    }
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn eval_to(rays: &Path, out: &Path) -> Output {
+    Command::new(BIN)
+        .args(["eval", "--major", "2", "--minor", "1", "--rays"])
+        .arg(rays)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+/// Runs `args` under `umask`, through the shell (the test process's umask is not touched).
+fn with_umask(umask: &str, args: &[&str]) -> Output {
+    let quoted: Vec<String> = args.iter().map(|a| format!("'{a}'")).collect();
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "umask {umask} && exec '{BIN}' {}",
+            quoted.join(" ")
+        ))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+fn mode(path: &Path) -> u32 {
+    std::fs::metadata(path).unwrap().permissions().mode() & 0o777
+}
+
+fn temp_files(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".torus-cull-"))
+        .collect()
+}
+
+#[test]
+fn out_follows_symlinks_and_writes_fifos_and_devices_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = rays_csv(dir.path(), 3);
+
+    // A symlink: the file it names is written, the link stays a link.
+    let real = dir.path().join("real.csv");
+    let link = dir.path().join("link.csv");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let o = eval_to(&rays, &link);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(std::fs::read_to_string(&real).unwrap().lines().count(), 4);
+
+    // A FIFO: its reader gets the CSV, and it is still a FIFO afterwards.
+    let fifo = dir.path().join("fifo");
+    assert!(
+        Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    let o = eval_to(&rays, &fifo);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(reader.join().unwrap().lines().count(), 4);
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+
+    // The process's own stdout, through /proc/self/fd/1 (what /dev/stdout links to).
+    let to_stdout = dir.path().join("stdout");
+    std::os::unix::fs::symlink("/proc/self/fd/1", &to_stdout).unwrap();
+    let o = eval_to(&rays, &to_stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("index,oracle"));
+    assert!(
+        std::fs::symlink_metadata(&to_stdout)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+
+    // A full device: the write error is reported, naming the path, and the device stays.
+    // (Through a link in the temp dir, so that a broken build can only break the link.)
+    if Path::new("/dev/full").exists() {
+        let full = dir.path().join("full");
+        std::os::unix::fs::symlink("/dev/full", &full).unwrap();
+        let big = rays_csv(dir.path(), 20_000);
+        let o = eval_to(&big, &full);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains("full") && err.contains("No space"), "{err}");
+        assert!(
+            std::fs::symlink_metadata(&full)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert!(
+            std::fs::metadata("/dev/full")
+                .unwrap()
+                .file_type()
+                .is_char_device()
+        );
+    }
+    assert!(temp_files(dir.path()).is_empty());
+}
+
+#[test]
+fn new_files_get_the_umask_mode() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = rays_csv(dir.path(), 3);
+    for (umask, want) in [("022", 0o644), ("077", 0o600), ("002", 0o664)] {
+        let out = dir.path().join(format!("eval-{umask}.csv"));
+        let o = with_umask(
+            umask,
+            &[
+                "eval",
+                "--major",
+                "2",
+                "--minor",
+                "1",
+                "--rays",
+                rays.to_str().unwrap(),
+                "--out",
+                out.to_str().unwrap(),
+            ],
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert_eq!(mode(&out), want, "eval --out under umask {umask}");
+    }
+    // The results JSON and its SVGs.
+    let json = dir.path().join("q.json");
+    let o = with_umask(
+        "022",
+        &[
+            "run",
+            "--workload",
+            "workloads/quick.json",
+            "--out",
+            json.to_str().unwrap(),
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(mode(&json), 0o644);
+    let svg = dir.path().join("q-hole-miss_capture.svg");
+    assert_eq!(mode(&svg), 0o644);
+}
+
+/// Waits until `dir` holds a temp file of this crate (the output has been started).
+fn wait_for_temp(dir: &Path) {
+    let start = Instant::now();
+    while temp_files(dir).is_empty() {
+        assert!(
+            start.elapsed() < Duration::from_secs(20),
+            "eval never started its output"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn an_interrupted_eval_leaves_no_temp_file() {
+    for signal in ["TERM", "INT", "HUP"] {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out.csv");
+        let mut child = Command::new(BIN)
+            .args([
+                "eval", "--major", "2", "--minor", "1", "--rays", "-", "--out",
+            ])
+            .arg(&out)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // Some rows, then the input stays open: eval is mid-run when the signal comes.
+        let mut stdin = child.stdin.take().unwrap();
+        stdin.write_all(HEADER.as_bytes()).unwrap();
+        for _ in 0..1000 {
+            stdin.write_all(b"-5,0.5,0,1,0,0\n").unwrap();
+        }
+        stdin.flush().unwrap();
+        wait_for_temp(dir.path());
+        let killed = Command::new("kill")
+            .arg(format!("-{signal}"))
+            .arg(child.id().to_string())
+            .status()
+            .unwrap();
+        assert!(killed.success());
+        let status = child.wait().unwrap();
+        drop(stdin);
+        assert!(!status.success(), "SIG{signal}: {status:?}");
+        assert_eq!(temp_files(dir.path()), Vec::<String>::new(), "SIG{signal}");
+        assert!(
+            !out.exists(),
+            "SIG{signal} left a partial {}",
+            out.display()
+        );
+    }
+}
+
+#[test]
+fn a_byte_order_mark_before_the_header_is_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("bom.csv");
+    std::fs::write(&rays, format!("\u{feff}{HEADER}-5,0,0,2,0,0\n")).unwrap();
+    let o = Command::new(BIN)
+        .args(["eval", "--major", "2", "--minor", "1", "--rays"])
+        .arg(&rays)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("0,hit,"));
+}
+
+#[test]
+fn a_closed_pipe_ends_eval_quietly() {
+    let dir = tempfile::tempdir().unwrap();
+    // Far more output than a pipe buffers, so eval is still writing when the reader leaves.
+    let rays = rays_csv(dir.path(), 50_000);
+    let mut child = Command::new(BIN)
+        .args(["eval", "--major", "2", "--minor", "1", "--rays"])
+        .arg(&rays)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdout = child.stdout.take().unwrap();
+    let mut head = [0u8; 100];
+    stdout.read_exact(&mut head).unwrap();
+    drop(stdout); // what `head` does after its lines
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(0), "{err}");
+    assert!(err.is_empty(), "stderr: {err}");
+}
+
+#[test]
+fn run_refuses_an_unwritable_out_before_the_sweep() {
+    let dir = tempfile::tempdir().unwrap();
+    let not_a_dir = dir.path().join("file");
+    std::fs::write(&not_a_dir, "").unwrap();
+    let out = not_a_dir.join("results.json");
+    let start = Instant::now();
+    let o = Command::new(BIN)
+        .args(["run", "--workload", "workloads/default.json", "--out"])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--out") && err.contains(out.to_str().unwrap()),
+        "{err}"
+    );
+    // No table means the sweep never ran (the default workload takes half a minute).
+    assert!(
+        o.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    assert!(start.elapsed() < Duration::from_secs(20));
+}
+
+#[test]
+fn plots_are_replaced_atomically_and_errors_name_the_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("q.json");
+    let o = Command::new(BIN)
+        .args([
+            "run",
+            "--workload",
+            "workloads/quick.json",
+            "--no-plots",
+            "--out",
+        ])
+        .arg(&json)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+
+    // An old chart with a second hard link: a rename leaves the link's bytes alone,
+    // writing in place (truncate, then draw) would change them.
+    let svg = dir.path().join("q-hole-miss_capture.svg");
+    std::fs::write(&svg, "old chart").unwrap();
+    let kept = dir.path().join("kept.svg");
+    std::fs::hard_link(&svg, &kept).unwrap();
+    let o = Command::new(BIN).arg("plot").arg(&json).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
+    assert_eq!(std::fs::read_to_string(&kept).unwrap(), "old chart");
+    assert!(temp_files(dir.path()).is_empty());
+
+    // An output directory that cannot exist: the error names it.
+    let blocked = dir.path().join("kept.svg").join("charts");
+    let o = Command::new(BIN)
+        .arg("plot")
+        .arg(&json)
+        .arg("--out-dir")
+        .arg(&blocked)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains(blocked.to_str().unwrap()), "{err}");
+
+    // A chart path that is a directory: the error names the chart.
+    let dir_chart = dir.path().join("charts2");
+    std::fs::create_dir_all(dir_chart.join("q-hole-miss_capture.svg")).unwrap();
+    let o = Command::new(BIN)
+        .arg("plot")
+        .arg(&json)
+        .arg("--out-dir")
+        .arg(&dir_chart)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("q-hole-miss_capture.svg"), "{err}");
+}
