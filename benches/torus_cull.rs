@@ -11,6 +11,10 @@
 //! each cull at the leaves, Mrays/s and quartic solves per ray. The figures are criterion's medians and confidence intervals
 //! of this run, read back from its `estimates.json` files.
 //!
+//! And the headline: the paired, interleaved ratios of `torus-cull time` for the same
+//! cases and ν (each cull against cychosz and none, both metrics, in shuffled rounds on
+//! the same rays; see [`torus_cull::paired`]).
+//!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements).
 //! `TORUS_CULL_WORKLOAD` (default `workloads/default.json`) and `TORUS_CULL_RESULTS`
@@ -26,7 +30,8 @@ use std::time::SystemTime;
 use support::{BenchConfig, Estimate, bvh, read_estimate, solver};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
-use torus_cull::results::{Results, TimingRecord};
+use torus_cull::paired;
+use torus_cull::results::{RatioRecord, Results, TimingRecord};
 use torus_cull::workload::spec::Workload;
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
@@ -148,6 +153,8 @@ fn main() {
     }
 
     stage("cull timings done");
+    results.ratio = paired_ratios(&batches, &config);
+    stage("paired ratios done");
     let solver_sets = solver::coefficient_sets(&workload, &config);
     solver::bench(&mut c, &solver_sets);
     stage("solver timings done");
@@ -179,6 +186,7 @@ fn main() {
     results.save(&path).unwrap_or_else(|e| panic!("{e}"));
     print!("{}", torus_cull::report::timing_tables(&results));
     print!("{}", torus_cull::report::cull_ns_tables(&results));
+    print!("{}", torus_cull::report::ratio_tables(&results));
     print!("{}", solver::table(&results.solver));
     print!("{}", torus_cull::report::bvh_tables(&results));
     println!("wrote {}", path.display());
@@ -190,6 +198,25 @@ fn main() {
         Ok(w) => println!("wrote {} plots to {}/{stem}-*.svg", w.len(), dir.display()),
         Err(e) => eprintln!("plots failed: {e}"),
     }
+}
+
+/// Paired, interleaved ratios of every timed cull against cychosz and none, on the first
+/// rays of each timed batch (the engine `torus-cull time` uses).
+fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRecord> {
+    let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
+    let units: Vec<paired::Unit<'_>> = batches
+        .iter()
+        .map(|l| paired::Unit {
+            case: l.batch.case,
+            nu: l.batch.nu,
+            torus: &l.batch.torus,
+            rays: &l.batch.rays[..rays.min(l.batch.rays.len())],
+            seed: l.batch.stream_seed,
+        })
+        .collect();
+    let options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Where criterion writes its estimates (its own rule: `$CRITERION_HOME`, else

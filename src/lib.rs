@@ -10,7 +10,8 @@
 //! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
 //! generators and workload files), [`measure`] (counting), [`results`] (the results
 //! JSON), [`compare`], [`report`] and [`plot`], [`eval`], and [`scene`] (many tori in an
-//! obvhs BVH) with [`render`].
+//! obvhs BVH) with [`render`]. [`paired`] times culls against each other in
+//! interleaved rounds (`torus-cull time`), so that ratios hold on a loaded machine.
 //!
 //! ```
 //! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
@@ -41,6 +42,7 @@ pub mod eval;
 pub mod intersect;
 pub mod measure;
 pub mod oracle;
+pub mod paired;
 pub mod plot;
 pub mod quartic;
 mod ray;

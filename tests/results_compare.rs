@@ -78,6 +78,7 @@ fn sample() -> Results {
             matches_brute_force: true,
         }],
         solver: Vec::new(),
+        ratio: Vec::new(),
     }
 }
 

@@ -28,6 +28,8 @@ pub struct BenchConfig {
     pub bvh: bool,
     /// `smoke` shrinks the BVH scenes to seconds.
     pub small_bvh: bool,
+    /// Seconds for the paired ratios, over all (case, timed ν) together.
+    pub ratio_seconds: f64,
 }
 
 /// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
@@ -49,6 +51,7 @@ impl BenchConfig {
                 sweep_rays: Some(1_000),
                 bvh: true,
                 small_bvh: true,
+                ratio_seconds: 2.0,
             },
             "default" => BenchConfig {
                 name: "default",
@@ -60,6 +63,7 @@ impl BenchConfig {
                 sweep_rays: None,
                 bvh: true,
                 small_bvh: false,
+                ratio_seconds: 60.0,
             },
             "full" => BenchConfig {
                 name: "full",
@@ -71,6 +75,7 @@ impl BenchConfig {
                 sweep_rays: None,
                 bvh: true,
                 small_bvh: false,
+                ratio_seconds: 120.0,
             },
             other => panic!("TORUS_CULL_BENCH={other} is invalid (allowed: smoke, default, full)"),
         };
