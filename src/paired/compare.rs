@@ -50,7 +50,9 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     let change = n.ratio / o.ratio - 1.0;
     let worse_disjoint = n.ratio_ci[0] > o.ratio_ci[1];
     let better_disjoint = n.ratio_ci[1] < o.ratio_ci[0];
-    let decides = n.metric == "total_ns";
+    // Ratios of different batches differ by sampling alone.
+    let same_batch = o.rays == n.rays;
+    let decides = n.metric == "total_ns" && same_batch;
     let mut flags = Vec::new();
     let mut regression = false;
     if change > threshold && worse_disjoint && decides {
@@ -59,6 +61,11 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
             "REGRESSION: {:+.1}% against {}, intervals disjoint",
             change * 100.0,
             n.reference
+        ));
+    } else if change > threshold && worse_disjoint && !same_batch {
+        flags.push(format!(
+            "slower, intervals disjoint (batches of {} and {} rays: not a verdict)",
+            o.rays, n.rays
         ));
     } else if change > threshold && worse_disjoint {
         flags.push(format!(
