@@ -21,6 +21,10 @@
 //! rejection sweep; a complete file is never touched by it. `--list`, `--test` and
 //! `--profile-time` write nothing, and `--list` does no setup.
 //!
+//! And the headline: the paired, interleaved ratios of `torus-cull time` for the same
+//! cases and ν (each cull against cychosz and none, both metrics, in shuffled rounds on
+//! the same rays; see [`torus_cull::paired`]).
+//!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
 //! times a subset of the workload's ν. `TORUS_CULL_WORKLOAD` (default
@@ -39,7 +43,8 @@ use std::time::SystemTime;
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
-use torus_cull::results::{BvhSizes, EstimateRecord, Results, Sizes, TimingRecord};
+use torus_cull::paired;
+use torus_cull::results::{BvhSizes, EstimateRecord, RatioRecord, Results, Sizes, TimingRecord};
 use torus_cull::workload::spec::{BvhSpec, Workload};
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
@@ -228,13 +233,15 @@ fn bench() -> Result<ExitCode, String> {
         .map(|&f| (f, solver::family_sets(f, &workload, &config)))
         .collect();
     solver::bench(&mut c, &solver_sets);
-    for (name, _) in solver::SOLVERS {
-        registered.push(Registered::new(
-            "solver".into(),
-            name,
-            "all",
-            solver_sets.len(),
-        ));
+    for (family, sets) in &solver_sets {
+        for (name, _) in solver::SOLVERS {
+            registered.push(Registered::new(
+                format!("solver-{family}"),
+                name,
+                "all",
+                sets.len(),
+            ));
+        }
     }
     stage("solver timings done");
     let bvh_pending = match &bvh_spec {
@@ -276,6 +283,11 @@ fn bench() -> Result<ExitCode, String> {
     results.meta.preset = Some(config.name.to_string());
     results.meta.partial = !complete;
     results.timing = timing_records(&home, &batches, config.batch, started);
+    if complete {
+        // The paired ratios take a minute: only a complete run pays for them.
+        results.ratio = paired_ratios(&batches, &config);
+        stage("paired ratios done");
+    }
     results.solver = solver::records(&home, &solver_sets, started);
     results.bvh = bvh::records(&home, bvh_pending, started);
     results.estimates = estimates;
@@ -313,6 +325,7 @@ fn bench() -> Result<ExitCode, String> {
     results.save(&path).map_err(|e| e.to_string())?;
     print!("{}", torus_cull::report::timing_tables(&results));
     print!("{}", torus_cull::report::cull_ns_tables(&results));
+    print!("{}", torus_cull::report::ratio_tables(&results));
     print!("{}", solver::table(&results.solver));
     print!("{}", torus_cull::report::bvh_tables(&results));
     if complete {
@@ -371,8 +384,10 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
             }
         }
     }
-    for (solver, _) in solver::SOLVERS {
-        name("solver".into(), solver, "all".into());
+    for family in solver::FAMILIES {
+        for (solver, _) in solver::SOLVERS {
+            name(format!("solver-{family}"), solver, "all".into());
+        }
     }
     if let Some(spec) = bvh {
         for scene in &spec.scenes {
@@ -388,6 +403,25 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
             }
         }
     }
+}
+
+/// Paired, interleaved ratios of every timed cull against cychosz and none, on the first
+/// rays of each timed batch (the engine `torus-cull time` uses).
+fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRecord> {
+    let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
+    let units: Vec<paired::Unit<'_>> = batches
+        .iter()
+        .map(|l| paired::Unit {
+            case: l.batch.case,
+            nu: l.batch.nu,
+            torus: &l.batch.torus,
+            rays: &l.batch.rays[..rays.min(l.batch.rays.len())],
+            seed: l.batch.stream_seed,
+        })
+        .collect();
+    let options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
+        .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Where criterion writes its estimates (its own rule: `$CRITERION_HOME`, else

@@ -5,6 +5,8 @@
 //!   **regression**.
 //! * **timing**: `total_ns` slower by more than the threshold *and* with disjoint
 //!   confidence intervals is a regression; anything else is noise.
+//! * **ratio**: when both files have paired ratio records, they give the timing verdicts
+//!   instead (see [`crate::paired::compare`]).
 //! * **bvh**: a changed hit count, `matches_brute_force: false`, or Mrays/s down by more
 //!   than the threshold is a regression.
 //!
@@ -62,7 +64,8 @@ fn key(kind: &str, nu: f64, cull: &str) -> String {
     format!("{kind} {nu} {cull}")
 }
 
-fn pair_up<'a, R>(
+/// Matches records of the two files by key; keys on one side only go to the report.
+pub(crate) fn pair_up<'a, R>(
     old: &'a [R],
     new: &'a [R],
     k: impl Fn(&R) -> String,
@@ -125,6 +128,7 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     ) {
         report.rows.push(bvh_row(key, o, n, threshold));
     }
+    crate::paired::compare::ratio_rows(old, new, threshold, &mut report);
     report
 }
 

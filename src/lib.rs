@@ -10,7 +10,9 @@
 //! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
 //! generators and workload files), [`measure`] (counting), [`results`] (the results
 //! JSON), [`compare`], [`report`] and [`plot`], [`eval`], [`output`] (how every output file
-//! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`].
+//! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`]. [`paired`]
+//! times culls against each other in interleaved rounds (`torus-cull time`), so that
+//! ratios hold on a loaded machine.
 //!
 //! The geometry, each cull's bound and soundness argument, the floating-point margin, the
 //! supported range and the seed paper's errata are written up in the repository's
@@ -46,6 +48,7 @@ pub mod intersect;
 pub mod measure;
 pub mod oracle;
 pub mod output;
+pub mod paired;
 pub mod plot;
 pub mod quartic;
 mod ray;

@@ -14,6 +14,10 @@ use torus_cull::results::{self, Results};
 use torus_cull::workload::spec::Workload;
 use torus_cull::{CullKind, measure, report};
 
+mod cli {
+    pub mod time;
+}
+
 #[derive(Parser)]
 #[command(
     name = "torus-cull",
@@ -46,6 +50,9 @@ enum Command {
         #[arg(long, value_delimiter = ',')]
         culls: Vec<String>,
     },
+    /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
+    /// 95% intervals), in about 30 s.
+    Time(cli::time::TimeArgs),
     /// Diff two results files; exits 1 on a regression (for CI gates).
     Compare {
         /// The older results JSON.
@@ -116,6 +123,7 @@ fn main() -> ExitCode {
             no_plots,
             culls,
         } => run(&workload, out, threads, no_plots, &culls),
+        Command::Time(args) => cli::time::run(args),
         Command::Plot { file, out_dir } => plot(&file, out_dir),
         Command::Render {
             scene,

@@ -21,7 +21,14 @@ fn table<R>(
             culls.push(cull);
         }
     }
-    let width = culls.iter().map(|c| c.len()).max().unwrap_or(6).max(8);
+    let widest_cell = records.iter().map(|r| cell(r).len()).max().unwrap_or(0);
+    let width = culls
+        .iter()
+        .map(|c| c.len())
+        .max()
+        .unwrap_or(6)
+        .max(8)
+        .max(widest_cell);
     let mut out = String::new();
     for case in cases {
         let _ = writeln!(out, "{}", title(case));
@@ -96,5 +103,34 @@ pub fn bvh_tables(results: &Results) -> String {
         |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
         |(_, r)| format!("{:.2} / {:.3}", r.mrays_per_s, r.quartic_solves_per_ray),
         |scene| format!("BVH {scene}: Mrays/s / quartic solves per ray"),
+    )
+}
+
+/// Paired ratios per case, metric and reference (rows ν, columns culls): the median
+/// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval. Below 1 the cull
+/// is faster than the reference.
+pub fn ratio_tables(results: &Results) -> String {
+    let keyed: Vec<(String, &crate::results::RatioRecord)> = results
+        .ratio
+        .iter()
+        .map(|r| {
+            let what = match r.metric.as_str() {
+                "total_ns" => "total (cull + exact intersection)",
+                "cull_ns" => "cull alone",
+                other => other,
+            };
+            (format!("{}: {what} / {}", r.case, r.reference), r)
+        })
+        .collect();
+    table(
+        &keyed,
+        |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
+        |(_, r)| {
+            format!(
+                "{:.3} [{:.3}, {:.3}]",
+                r.ratio, r.ratio_ci[0], r.ratio_ci[1]
+            )
+        },
+        |title| format!("{title}, paired ratio [95% CI]"),
     )
 }

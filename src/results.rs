@@ -32,6 +32,10 @@ pub struct Results {
     /// `cargo bench`): what a filtered run keeps even when no derived record is complete.
     #[serde(default)]
     pub estimates: Vec<EstimateRecord>,
+    /// Paired, interleaved timing ratios per case × ν × cull × reference × metric (filled
+    /// by `torus-cull time` and `cargo bench`; absent from older files).
+    #[serde(default)]
+    pub ratio: Vec<RatioRecord>,
 }
 
 /// Provenance of a results file.
@@ -199,6 +203,37 @@ pub struct TimingRecord {
     pub source: String,
 }
 
+/// One cull timed against a reference in the same interleaved rounds (see
+/// [`crate::paired`]): the median of the per-round ratios `t(cull) / t(reference)`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RatioRecord {
+    /// Workload case.
+    pub case: String,
+    /// ν.
+    pub nu: f64,
+    /// Cull name.
+    pub cull: String,
+    /// The cull it is timed against (`cychosz` or `none`).
+    pub reference: String,
+    /// `total_ns` (cull + exact intersection when kept) or `cull_ns` (the cull alone).
+    pub metric: String,
+    /// Median per-round t(cull) / t(reference): below 1 the cull is faster.
+    pub ratio: f64,
+    /// Percentile bootstrap 95 % interval of that median, `[lo, hi]`.
+    pub ratio_ci: [f64; 2],
+    /// Rounds the ratio was taken over: the quietest quarter of those the operating
+    /// system did not switch the thread out of (of all, if it did so in most).
+    pub rounds: u64,
+    /// Rounds measured in all.
+    pub rounds_measured: u64,
+    /// Rays per timing (the batch).
+    pub rays: u64,
+    /// The cull's median ns per ray over the rounds.
+    pub ns_per_ray: f64,
+    /// The reference's median ns per ray over the same rounds.
+    pub reference_ns_per_ray: f64,
+}
+
 /// One cull inside an obvhs BVH over one many-torus scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BvhRecord {
@@ -319,6 +354,7 @@ impl Results {
             bvh: Vec::new(),
             solver: Vec::new(),
             estimates: Vec::new(),
+            ratio: Vec::new(),
         }
     }
 

@@ -82,6 +82,7 @@ fn sample() -> Results {
         }],
         solver: Vec::new(),
         estimates: Vec::new(),
+        ratio: Vec::new(),
     }
 }
 

@@ -30,6 +30,8 @@ pub struct BenchConfig {
     pub small_bvh: bool,
     /// Whether `TORUS_CULL_BENCH_NU` chose the timed ν.
     pub nu_override: bool,
+    /// Seconds for the paired ratios, over all (case, timed ν) together.
+    pub ratio_seconds: f64,
 }
 
 /// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
@@ -60,6 +62,7 @@ impl BenchConfig {
                 bvh: true,
                 small_bvh: true,
                 nu_override: false,
+                ratio_seconds: 2.0,
             },
             "default" => BenchConfig {
                 name: "default",
@@ -72,6 +75,7 @@ impl BenchConfig {
                 bvh: true,
                 small_bvh: false,
                 nu_override: false,
+                ratio_seconds: 60.0,
             },
             "full" => BenchConfig {
                 name: "full",
@@ -84,6 +88,7 @@ impl BenchConfig {
                 bvh: true,
                 small_bvh: false,
                 nu_override: false,
+                ratio_seconds: 120.0,
             },
             other => {
                 return Err(format!(

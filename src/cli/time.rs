@@ -1,0 +1,162 @@
+//! `torus-cull time`: paired, interleaved timing ratios of the culls on a workload, in
+//! about half a minute, written as the `ratio` section of a results file.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torus_cull::CullKind;
+use torus_cull::paired::sweep::{DEFAULT_BATCH, PairedOptions, REFERENCES, time_workload};
+use torus_cull::results::{self, Results};
+use torus_cull::workload::spec::Workload;
+
+/// The longest `--seconds` accepted: an hour.
+const MAX_SECONDS: f64 = 3600.0;
+
+/// The smallest batch: below it a timing is mostly the clock.
+const MIN_BATCH: usize = 16;
+
+/// `torus-cull time`'s arguments.
+#[derive(clap::Args)]
+pub struct TimeArgs {
+    /// Workload file.
+    #[arg(long, default_value = "workloads/quick.json")]
+    workload: PathBuf,
+    /// Culls to time, comma-separated (default: the six timed culls). The references
+    /// cychosz and none are timed in any case.
+    #[arg(long, value_delimiter = ',')]
+    culls: Vec<String>,
+    /// ν values to time, comma-separated, each one of the workload's (default: all).
+    #[arg(long, value_delimiter = ',')]
+    nu: Vec<f64>,
+    /// Total measuring time in seconds, shared evenly by every case × ν.
+    #[arg(long, default_value_t = 30.0)]
+    seconds: f64,
+    /// Rays per batch, timed by every contender in every round (default: 1024, or the
+    /// workload's rays if fewer).
+    #[arg(long)]
+    batch: Option<usize>,
+    /// Results JSON (default: results/<short commit>[-dirty]-time.json).
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+/// Runs `torus-cull time`.
+pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    let workload = Workload::load(&args.workload)?;
+    let culls = parse_culls(&args.culls)?;
+    let nus = pick_nus(&args.nu, &workload, &args.workload)?;
+    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= MAX_SECONDS) {
+        return Err(format!(
+            "--seconds {} is invalid (allowed: 0 < seconds <= {MAX_SECONDS})",
+            args.seconds
+        )
+        .into());
+    }
+    let batch = match args.batch {
+        None => DEFAULT_BATCH.min(workload.rays),
+        Some(b) if (MIN_BATCH..=workload.rays).contains(&b) => b,
+        Some(b) => {
+            return Err(format!(
+                "--batch {b} is invalid (allowed: {MIN_BATCH} ..= {}, the rays of workload {})",
+                workload.rays,
+                args.workload.display()
+            )
+            .into());
+        }
+    };
+    if batch < MIN_BATCH {
+        return Err(format!(
+            "workload {}: field `rays`: {} is too few to time (allowed: >= {MIN_BATCH})",
+            args.workload.display(),
+            workload.rays
+        )
+        .into());
+    }
+    let path = args
+        .out
+        .unwrap_or_else(|| results::default_path(Path::new("results"), "-time"));
+    check_writable(&path)?;
+
+    let units = workload.cases.len() * nus.len();
+    let options = PairedOptions::total(args.seconds, batch);
+    let bar = ProgressBar::new(0).with_style(
+        ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} visits ({eta})")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    bar.set_message(format!(
+        "{}: {units} case x nu, {batch} rays each",
+        workload.name
+    ));
+    let records = time_workload(&workload, &nus, &culls, &options, &mut |done, all| {
+        bar.set_length(all as u64);
+        bar.set_position(done as u64);
+    })?;
+    bar.finish_and_clear();
+
+    let mut results = Results::new(&workload, "time");
+    results.ratio = records;
+    print!("{}", torus_cull::report::ratio_tables(&results));
+    results.save(&path)?;
+    println!("wrote {}", path.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The culls to report: the timed ones by name (the paper-as-printed variants reject hits
+/// and are not worth timing), default all.
+fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
+    if names.is_empty() {
+        return Ok(CullKind::TIMED.to_vec());
+    }
+    let allowed = || {
+        CullKind::TIMED
+            .iter()
+            .map(|c| c.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut culls = Vec::new();
+    for name in names {
+        let kind: CullKind = name.trim().parse().map_err(|e| format!("--culls: {e}"))?;
+        if !CullKind::TIMED.contains(&kind) {
+            return Err(format!(
+                "--culls: '{kind}' is not conservative and is not timed (allowed: {})",
+                allowed()
+            ));
+        }
+        if !culls.contains(&kind) {
+            culls.push(kind);
+        }
+    }
+    debug_assert!(REFERENCES.iter().all(|r| CullKind::TIMED.contains(r)));
+    Ok(culls)
+}
+
+/// `--nu`: each value must be one of the workload's (its rays are defined there); default
+/// all of them.
+fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>, String> {
+    if asked.is_empty() {
+        return Ok(workload.nu.clone());
+    }
+    let mut nus = Vec::new();
+    for &nu in asked {
+        if !workload.nu.contains(&nu) {
+            let have: Vec<String> = workload.nu.iter().map(f64::to_string).collect();
+            return Err(format!(
+                "--nu {nu} is not in workload {} (allowed: {})",
+                file.display(),
+                have.join(", ")
+            ));
+        }
+        if !nus.contains(&nu) {
+            nus.push(nu);
+        }
+    }
+    Ok(nus)
+}
+
+/// Fails now, not after the measurement, if `path` cannot be written the way every output
+/// is (see [`torus_cull::output`]).
+fn check_writable(path: &Path) -> Result<(), String> {
+    torus_cull::output::check_writable(path).map_err(|e| format!("--out {}: {e}", path.display()))
+}

@@ -1,0 +1,237 @@
+//! `torus-cull compare` on ratio records: the timing verdicts when both files have them.
+//!
+//! A `total_ns` ratio record is a **regression** when the cull's ratio against the same
+//! reference grew by more than the threshold *and* the two bootstrap intervals do not
+//! overlap; it is `faster` in the mirror case. `cull_ns` ratios are shown with the same
+//! flags but decide nothing: on a loaded virtual machine a slow spell of the host that
+//! lasts a whole run moves them by 10–20 % (it slows throughput-bound code more than
+//! latency-bound code), while the `total_ns` ratios move by a few percent. A cull that got
+//! slower still shows in `total_ns`, wherever it rejects most rays.
+//!
+//! A ratio is blind to a slow-down that hits the cull and
+//! its reference alike (the exact intersection got slower for everyone): the criterion
+//! `timing` rows still show that, as information, but with ratios on both sides they no
+//! longer decide, because two absolute timings taken minutes apart differ by 10–20 % on a
+//! shared machine whatever the code does.
+
+use crate::compare::{Report, Row, pair_up};
+use crate::results::{RatioRecord, Results};
+
+/// Adds one `ratio` row per record present in both files to `report`, and, when both
+/// files have ratios, demotes the criterion `timing` rows' regressions to notes.
+/// `threshold` is a fraction (0.10 for 10 %).
+pub fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &mut Report) {
+    if old.ratio.is_empty() || new.ratio.is_empty() {
+        return;
+    }
+    for row in report.rows.iter_mut().filter(|r| r.section == "timing") {
+        if row.regression {
+            row.regression = false;
+            for flag in &mut row.flags {
+                if let Some(rest) = flag.strip_prefix("REGRESSION: ") {
+                    *flag = format!("{rest} (criterion, not a verdict: the ratios decide)");
+                }
+            }
+        }
+    }
+    for (key, o, n) in pair_up(&old.ratio, &new.ratio, ratio_key, report, "ratio") {
+        report.rows.push(ratio_row(key, o, n, threshold));
+    }
+}
+
+fn ratio_key(r: &RatioRecord) -> String {
+    format!(
+        "{} {} {}/{} {}",
+        r.case, r.nu, r.cull, r.reference, r.metric
+    )
+}
+
+fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> Row {
+    let change = n.ratio / o.ratio - 1.0;
+    let worse_disjoint = n.ratio_ci[0] > o.ratio_ci[1];
+    let better_disjoint = n.ratio_ci[1] < o.ratio_ci[0];
+    // Ratios of different batches differ by sampling alone.
+    let same_batch = o.rays == n.rays;
+    let decides = n.metric == "total_ns" && same_batch;
+    let mut flags = Vec::new();
+    let mut regression = false;
+    if change > threshold && worse_disjoint && decides {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: {:+.1}% against {}, intervals disjoint",
+            change * 100.0,
+            n.reference
+        ));
+    } else if change > threshold && worse_disjoint && !same_batch {
+        flags.push(format!(
+            "slower, intervals disjoint (batches of {} and {} rays: not a verdict)",
+            o.rays, n.rays
+        ));
+    } else if change > threshold && worse_disjoint {
+        flags.push(format!(
+            "slower, intervals disjoint ({}: shown, not a verdict)",
+            n.metric
+        ));
+    } else if change > threshold {
+        flags.push("slower, intervals overlap (noise)".into());
+    } else if change < -threshold && better_disjoint {
+        flags.push("faster".into());
+    }
+    Row {
+        section: "ratio",
+        key,
+        metric: "ratio (cull / reference)",
+        old: o.ratio,
+        new: n.ratio,
+        flags,
+        regression,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::compare;
+    use crate::results::{Meta, Results, SCHEMA_VERSION, TimingRecord};
+
+    fn record(cull: &str, ratio: f64, ci: [f64; 2]) -> RatioRecord {
+        RatioRecord {
+            case: "uniform".into(),
+            nu: 2.0,
+            cull: cull.into(),
+            reference: "cychosz".into(),
+            metric: if cull == "aabb_alone" {
+                "cull_ns"
+            } else {
+                "total_ns"
+            }
+            .into(),
+            ratio,
+            ratio_ci: ci,
+            rounds: 250,
+            rounds_measured: 1000,
+            rays: 1024,
+            ns_per_ray: 100.0 * ratio,
+            reference_ns_per_ray: 100.0,
+        }
+    }
+
+    fn timing(total_ns: f64) -> TimingRecord {
+        TimingRecord {
+            case: "uniform".into(),
+            nu: 2.0,
+            cull: "skala".into(),
+            cull_ns: 5.0,
+            total_ns,
+            total_ns_ci: [total_ns * 0.99, total_ns * 1.01],
+            speedup_vs_none: 1.0,
+            ideal_total_ns: 50.0,
+            solve_hit_ns: None,
+            ideal_total_ns_at_hit_cost: None,
+            source: "criterion".into(),
+        }
+    }
+
+    fn results(ratio: Vec<RatioRecord>, timing: Vec<TimingRecord>) -> Results {
+        Results {
+            schema_version: SCHEMA_VERSION,
+            meta: Meta {
+                commit: None,
+                dirty: false,
+                created: "2026-11-21T12:00:00Z".into(),
+                rustc: "rustc".into(),
+                cpu: "cpu".into(),
+                workload: "quick".into(),
+                workload_sha256: "00".repeat(32),
+                seed: Some(7),
+                torus_cull_version: None,
+                tool: Some("time".into()),
+                partial: false,
+                preset: None,
+                sizes: None,
+            },
+            rejection: Vec::new(),
+            timing,
+            bvh: Vec::new(),
+            solver: Vec::new(),
+            estimates: Vec::new(),
+            ratio,
+        }
+    }
+
+    fn flags_of<'a>(report: &'a Report, cull: &str) -> &'a Row {
+        report
+            .rows
+            .iter()
+            .find(|r| r.section == "ratio" && r.key.contains(&format!(" {cull}/")))
+            .unwrap()
+    }
+
+    #[test]
+    fn ratio_verdicts_need_the_threshold_and_disjoint_intervals() {
+        let old = results(
+            vec![
+                record("skala", 0.80, [0.79, 0.81]),
+                record("aabb", 0.80, [0.79, 0.81]),
+                record("sphere", 0.80, [0.70, 0.90]),
+                record("thick_cylinder", 0.80, [0.79, 0.81]),
+                record("none", 1.20, [1.19, 1.21]),
+                record("aabb_alone", 0.50, [0.49, 0.51]),
+            ],
+            Vec::new(),
+        );
+        let new = results(
+            vec![
+                // 25 % worse, intervals apart: a regression.
+                record("skala", 1.00, [0.99, 1.01]),
+                // 5 % worse, under the 10 % threshold: nothing.
+                record("aabb", 0.84, [0.835, 0.845]),
+                // 25 % worse, but the intervals overlap: noise.
+                record("sphere", 1.00, [0.85, 1.15]),
+                // 25 % better, apart: faster.
+                record("thick_cylinder", 0.60, [0.59, 0.61]),
+                // A cull-alone ratio 30 % worse, apart: shown, not a regression.
+                record("aabb_alone", 0.65, [0.64, 0.66]),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        assert_eq!(report.regressions(), 1);
+        let skala = flags_of(&report, "skala");
+        assert!(
+            skala.regression && skala.flags[0].starts_with("REGRESSION"),
+            "{skala:?}"
+        );
+        assert!(flags_of(&report, "aabb").flags.is_empty());
+        let sphere = flags_of(&report, "sphere");
+        assert!(
+            !sphere.regression && sphere.flags[0].contains("noise"),
+            "{sphere:?}"
+        );
+        assert_eq!(flags_of(&report, "thick_cylinder").flags, ["faster"]);
+        let alone = flags_of(&report, "aabb_alone");
+        assert!(
+            !alone.regression && alone.flags[0].contains("not a verdict"),
+            "{alone:?}"
+        );
+        assert!(report.only_old.iter().any(|k| k.contains("none/cychosz")));
+    }
+
+    #[test]
+    fn criterion_timings_decide_only_when_a_file_has_no_ratios() {
+        let ratios = vec![record("skala", 0.80, [0.79, 0.81])];
+        let (slow, fast) = (vec![timing(150.0)], vec![timing(100.0)]);
+        // Without ratios the 50 % criterion slow-down is a regression ...
+        let report = compare(
+            &results(Vec::new(), fast.clone()),
+            &results(Vec::new(), slow.clone()),
+            0.10,
+        );
+        assert_eq!(report.regressions(), 1);
+        // ... with ratios on both sides (and no change in them) it is shown, not a verdict.
+        let report = compare(&results(ratios.clone(), fast), &results(ratios, slow), 0.10);
+        assert_eq!(report.regressions(), 0);
+        let row = report.rows.iter().find(|r| r.section == "timing").unwrap();
+        assert!(row.flags[0].contains("not a verdict"), "{row:?}");
+    }
+}

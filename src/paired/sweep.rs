@@ -1,0 +1,433 @@
+//! The driver: paired ratio records for every (case, ν) of a workload, or for one batch.
+
+use super::contender::{Metric, Workset, time_pass};
+use super::engine::Interleaver;
+use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
+use crate::results::RatioRecord;
+use crate::workload::spec::Workload;
+use crate::workload::{Case, GenerateError, generate};
+use crate::{CullKind, Ray, Torus};
+use rand::SeedableRng;
+use rand::seq::SliceRandom;
+use rand_pcg::Pcg64;
+use std::fmt;
+use std::time::Duration;
+
+/// The references every cull is timed against: the classic test, and no test at all.
+pub const REFERENCES: [CullKind; 2] = [CullKind::Cychosz, CullKind::None];
+
+/// One cull-alone timing lasts at least this long (the pass over the batch is repeated),
+/// so that the clock's own cost (tens of ns) stays below 0.2 % of it.
+const CULL_PASS_TARGET: Duration = Duration::from_micros(25);
+
+/// Fewest rounds left alone by the operating system that are used on their own.
+const MIN_UNDISTURBED: usize = 20;
+
+/// How much to measure, over all (case, ν) together.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairedOptions {
+    /// Rays per batch: every round times every contender on these same rays.
+    pub batch: usize,
+    /// Rounds run and discarded first, spread over every (case, ν).
+    pub warm_up: Duration,
+    /// Measured time, shared evenly by every (case, ν).
+    pub budget: Duration,
+    /// About how long one visit to a (case, ν) lasts before the next one's turn.
+    pub visit: Duration,
+    /// At least this many measured rounds per (case, ν), whatever the budget.
+    pub min_rounds: usize,
+}
+
+/// Rays per batch unless told otherwise: about 0.02–0.2 ms per `total_ns` timing, so a
+/// round of all twelve contenders stays near a millisecond.
+pub const DEFAULT_BATCH: usize = 1024;
+
+impl PairedOptions {
+    /// `seconds` in all: 5 % (at most 1 s) warms up, the rest is measured in visits of
+    /// about 0.1 s.
+    pub fn total(seconds: f64, batch: usize) -> PairedOptions {
+        let warm_up = (0.05 * seconds).min(1.0);
+        PairedOptions {
+            batch,
+            warm_up: Duration::from_secs_f64(warm_up),
+            budget: Duration::from_secs_f64(seconds - warm_up),
+            visit: Duration::from_millis(100),
+            min_rounds: 40,
+        }
+    }
+}
+
+/// Why ratios could not be measured.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PairedError {
+    /// The workload's batch could not be generated.
+    Generate(GenerateError),
+    /// No round gave a usable timing (a clock that never advanced).
+    NoRounds {
+        /// The case.
+        case: Case,
+        /// ν.
+        nu: f64,
+        /// The contender.
+        cull: CullKind,
+    },
+}
+
+impl fmt::Display for PairedError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PairedError::Generate(e) => write!(f, "{e}"),
+            PairedError::NoRounds { case, nu, cull } => write!(
+                f,
+                "case {case} at nu = {nu}: no round timed cull {cull} (the clock did not advance)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for PairedError {}
+
+impl From<GenerateError> for PairedError {
+    fn from(e: GenerateError) -> PairedError {
+        PairedError::Generate(e)
+    }
+}
+
+/// One (case, ν) to time: a torus and its batch of world rays.
+#[derive(Debug, Clone, Copy)]
+pub struct Unit<'a> {
+    /// The case.
+    pub case: Case,
+    /// ν.
+    pub nu: f64,
+    /// The torus.
+    pub torus: &'a Torus,
+    /// The batch.
+    pub rays: &'a [Ray],
+    /// Seeds the round order and the bootstrap.
+    pub seed: u64,
+}
+
+/// A unit ready to time: its batch in both forms and its cull-alone repetitions.
+struct Timed<'a> {
+    unit: Unit<'a>,
+    set: Workset<'a>,
+    cull_reps: usize,
+}
+
+impl Timed<'_> {
+    fn reps(&self, metric: Metric) -> usize {
+        match metric {
+            Metric::TotalNs => 1,
+            Metric::CullNs => self.cull_reps,
+        }
+    }
+
+    fn time(&self, contender: (CullKind, Metric)) -> Duration {
+        let (kind, metric) = contender;
+        time_pass(kind, metric, &self.set, self.reps(metric))
+    }
+}
+
+/// Ratio records of `culls` against each of [`REFERENCES`] for both metrics, on each of
+/// `units`. The references are timed whether listed or not; a cull is not timed against
+/// itself. The units are visited in turn, in a shuffled order, until the budget is
+/// spent, so that each one's rounds spread over the whole run. `progress` is told
+/// (visits done, visits in all).
+pub fn time_units(
+    units: &[Unit<'_>],
+    culls: &[CullKind],
+    options: &PairedOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<RatioRecord>, PairedError> {
+    let kinds: Vec<CullKind> = CullKind::TIMED
+        .into_iter()
+        .chain(culls.iter().copied())
+        .filter(|k| culls.contains(k) || REFERENCES.contains(k))
+        .fold(Vec::new(), |mut v, k| {
+            if !v.contains(&k) {
+                v.push(k);
+            }
+            v
+        });
+    let contenders: Vec<(CullKind, Metric)> = Metric::ALL
+        .iter()
+        .flat_map(|&m| kinds.iter().map(move |&k| (k, m)))
+        .collect();
+    let timed: Vec<Timed<'_>> = units
+        .iter()
+        .map(|&unit| {
+            let set = Workset::new(unit.torus, unit.rays);
+            Timed {
+                unit,
+                cull_reps: cull_pass_reps(&set),
+                set,
+            }
+        })
+        .collect();
+    let mut rounds: Vec<Interleaver> = units
+        .iter()
+        .map(|u| Interleaver::new(contenders.len(), u.seed))
+        .collect();
+
+    let n = timed.len().max(1) as u32;
+    let passes = ((options.budget.as_secs_f64() / (options.visit.as_secs_f64() * n as f64)).round()
+        as u32)
+        .max(1);
+    let visit = options.budget / (passes * n);
+    let mut order_rng = Pcg64::seed_from_u64(units.first().map_or(0, |u| u.seed));
+    let mut order: Vec<usize> = (0..timed.len()).collect();
+    let (timed_ref, contenders_ref) = (&timed, &contenders);
+    let time_one = |u: usize| move |i: usize| timed_ref[u].time(contenders_ref[i]);
+    for (u, r) in rounds.iter_mut().enumerate() {
+        r.warm_up(&mut time_one(u), options.warm_up / n);
+    }
+    let total = (passes * n) as usize;
+    for pass in 0..passes as usize {
+        order.shuffle(&mut order_rng);
+        for (k, &u) in order.iter().enumerate() {
+            // One discarded round re-warms caches and predictors after the other units.
+            rounds[u].visit(&mut time_one(u), 1, visit, 0, usize::MAX);
+            progress(pass * timed.len() + k + 1, total);
+        }
+    }
+    for (u, r) in rounds.iter_mut().enumerate() {
+        let short = options.min_rounds.saturating_sub(r.rounds());
+        if short > 0 {
+            r.visit(&mut time_one(u), 1, Duration::ZERO, short, usize::MAX);
+        }
+    }
+
+    let mut records = Vec::new();
+    for (t, r) in timed.iter().zip(&rounds) {
+        let quiet = quiet_rounds(&r.ns, &undisturbed(&r.disturbed), QUIET_FRACTION);
+        let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
+        let Unit { case, nu, seed, .. } = t.unit;
+        let index = |k: CullKind, m: Metric| {
+            contenders
+                .iter()
+                .position(|&c| c == (k, m))
+                .expect("every cull and reference is a contender")
+        };
+        for metric in Metric::ALL {
+            let work = (t.set.len() * t.reps(metric)) as f64;
+            for &cull in kinds.iter().filter(|k| culls.contains(k)) {
+                for reference in REFERENCES.into_iter().filter(|&r| r != cull) {
+                    let bootstrap_seed =
+                        seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
+                    let e = ratio_estimate(
+                        &pick(index(cull, metric)),
+                        &pick(index(reference, metric)),
+                        work,
+                        bootstrap_seed,
+                    )
+                    .ok_or(PairedError::NoRounds { case, nu, cull })?;
+                    records.push(RatioRecord {
+                        case: case.name().to_string(),
+                        nu,
+                        cull: cull.name().to_string(),
+                        reference: reference.name().to_string(),
+                        metric: metric.name().to_string(),
+                        ratio: e.ratio,
+                        ratio_ci: e.ratio_ci,
+                        rounds: e.rounds as u64,
+                        rounds_measured: r.rounds() as u64,
+                        rays: t.set.len() as u64,
+                        ns_per_ray: e.ns_per_ray,
+                        reference_ns_per_ray: e.reference_ns_per_ray,
+                    });
+                }
+            }
+        }
+    }
+    Ok(records)
+}
+
+/// The rounds the operating system left alone, if there are enough of them (a quarter,
+/// and at least [`MIN_UNDISTURBED`]); otherwise every round, as a machine that switches
+/// this thread out in most rounds leaves nothing better to choose from.
+fn undisturbed(disturbed: &[bool]) -> Vec<bool> {
+    let clean = disturbed.iter().filter(|d| !**d).count();
+    if clean >= MIN_UNDISTURBED.max(disturbed.len() / 4) {
+        disturbed.iter().map(|d| !d).collect()
+    } else {
+        vec![true; disturbed.len()]
+    }
+}
+
+/// [`time_units`] on a single batch.
+pub fn time_batch(
+    unit: Unit<'_>,
+    culls: &[CullKind],
+    options: &PairedOptions,
+) -> Result<Vec<RatioRecord>, PairedError> {
+    time_units(&[unit], culls, options, &mut |_, _| {})
+}
+
+/// Repetitions of the cull-alone pass that make the reference's timing reach
+/// [`CULL_PASS_TARGET`], from the fastest of a few trial passes.
+fn cull_pass_reps(set: &Workset<'_>) -> usize {
+    let one = (0..5)
+        .map(|_| time_pass(REFERENCES[0], Metric::CullNs, set, 1))
+        .min()
+        .unwrap_or(Duration::ZERO)
+        .max(Duration::from_nanos(1));
+    (CULL_PASS_TARGET.as_nanos().div_ceil(one.as_nanos()) as usize).clamp(1, 100_000)
+}
+
+/// Ratio records for every case of `workload` at each of `nus`, on the first
+/// `options.batch` rays of each (case, ν) stream; see [`time_units`].
+pub fn time_workload(
+    workload: &Workload,
+    nus: &[f64],
+    culls: &[CullKind],
+    options: &PairedOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<RatioRecord>, PairedError> {
+    let mut batches = Vec::new();
+    for &case in &workload.cases {
+        for &nu in nus {
+            batches.push(generate(
+                case,
+                nu,
+                options.batch,
+                workload.seed,
+                workload.pose,
+            )?);
+        }
+    }
+    let units: Vec<Unit<'_>> = batches
+        .iter()
+        .map(|b| Unit {
+            case: b.case,
+            nu: b.nu,
+            torus: &b.torus,
+            rays: &b.rays,
+            seed: b.stream_seed,
+        })
+        .collect();
+    time_units(&units, culls, options, progress)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::workload::Pose;
+
+    fn quick(batch: usize) -> PairedOptions {
+        PairedOptions {
+            batch,
+            warm_up: Duration::from_millis(5),
+            budget: Duration::from_millis(60),
+            visit: Duration::from_millis(20),
+            min_rounds: 30,
+        }
+    }
+
+    fn unit(b: &crate::workload::Batch) -> Unit<'_> {
+        Unit {
+            case: b.case,
+            nu: b.nu,
+            torus: &b.torus,
+            rays: &b.rays,
+            seed: b.stream_seed,
+        }
+    }
+
+    #[test]
+    fn records_cover_every_cull_reference_and_metric_once() {
+        let b = generate(Case::Uniform, 2.0, 128, 3, Pose::Random).unwrap();
+        let culls = [CullKind::Skala, CullKind::Cychosz];
+        let r = time_batch(unit(&b), &culls, &quick(128)).unwrap();
+        let keys: Vec<(&str, &str, &str)> = r
+            .iter()
+            .map(|x| (x.metric.as_str(), x.reference.as_str(), x.cull.as_str()))
+            .collect();
+        // skala vs both references, cychosz vs none only; both metrics. `none` is timed
+        // (it is a reference) but not reported, as it was not asked for.
+        let want = [
+            ("total_ns", "none", "cychosz"),
+            ("total_ns", "cychosz", "skala"),
+            ("total_ns", "none", "skala"),
+            ("cull_ns", "none", "cychosz"),
+            ("cull_ns", "cychosz", "skala"),
+            ("cull_ns", "none", "skala"),
+        ];
+        assert_eq!(keys, want);
+        for x in &r {
+            assert!(x.rounds >= 5 && x.rounds <= x.rounds_measured, "{x:?}");
+            assert_eq!(x.rays, 128);
+            assert!(x.ratio.is_finite() && x.ratio > 0.0, "{x:?}");
+            assert!(
+                x.ratio_ci[0] <= x.ratio && x.ratio <= x.ratio_ci[1],
+                "{x:?}"
+            );
+            assert!(x.ns_per_ray > 0.0 && x.reference_ns_per_ray > 0.0, "{x:?}");
+        }
+    }
+
+    /// Several units share the budget, each gets its own records, and none falls short
+    /// of the minimum rounds even when the budget is nil.
+    #[test]
+    fn units_share_the_budget_and_keep_the_minimum_rounds() {
+        let a = generate(Case::Hole, 2.0, 64, 3, Pose::Random).unwrap();
+        let b = generate(Case::Camera, 8.0, 64, 3, Pose::Random).unwrap();
+        let options = PairedOptions {
+            budget: Duration::ZERO,
+            warm_up: Duration::ZERO,
+            ..quick(64)
+        };
+        let mut calls = Vec::new();
+        let r = time_units(
+            &[unit(&a), unit(&b)],
+            &[CullKind::Aabb],
+            &options,
+            &mut |d, n| calls.push((d, n)),
+        )
+        .unwrap();
+        assert_eq!(calls.last(), Some(&(2, 2)));
+        assert_eq!(r.len(), 2 * 2 * 2);
+        // The quietest quarter of at least 30 measured rounds (at least 20 of them
+        // undisturbed, or all of them).
+        assert!(
+            r.iter().all(|x| x.rounds_measured >= 30 && x.rounds >= 5),
+            "{r:?}"
+        );
+        assert_eq!(
+            r.iter().filter(|x| x.case == "hole" && x.nu == 2.0).count(),
+            4
+        );
+        assert_eq!(
+            r.iter()
+                .filter(|x| x.case == "camera" && x.nu == 8.0)
+                .count(),
+            4
+        );
+    }
+
+    /// On rays that fall through the hole, skala rejects almost all of them without the
+    /// quartic and cychosz none: skala's total must be a small fraction of cychosz's
+    /// (about 0.2 on an idle machine), whatever the load.
+    #[test]
+    fn hole_rays_show_skala_far_cheaper_than_cychosz() {
+        let b = generate(Case::Hole, 8.0, 512, 3, Pose::Random).unwrap();
+        let r = time_batch(unit(&b), &[CullKind::Skala], &quick(512)).unwrap();
+        let total = r
+            .iter()
+            .find(|x| x.metric == "total_ns" && x.reference == "cychosz")
+            .unwrap();
+        assert!(total.ratio < 0.6 && total.ratio_ci[1] < 0.7, "{total:?}");
+        let vs_none = r
+            .iter()
+            .find(|x| x.metric == "total_ns" && x.reference == "none")
+            .unwrap();
+        assert!(vs_none.ratio < 0.6, "{vs_none:?}");
+    }
+
+    #[test]
+    fn total_splits_warm_up_and_budget() {
+        let o = PairedOptions::total(30.0, 1024);
+        assert!(((o.budget + o.warm_up).as_secs_f64() - 30.0).abs() < 1e-6);
+        assert!(o.warm_up > Duration::ZERO && o.warm_up <= Duration::from_secs(1));
+    }
+}

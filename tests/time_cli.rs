@@ -1,0 +1,210 @@
+//! `torus-cull time`: a short run writes a `ratio` section that loads and compares; a
+//! worse ratio fails `compare`; bad arguments exit 2 naming the flag and what is allowed;
+//! results files from before the `ratio` section still load.
+
+use std::path::Path;
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+use torus_cull::results::Results;
+
+fn torus_cull(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("run torus-cull")
+}
+
+/// Two cases at two ν, 200 rays each: seconds to time.
+fn tiny_workload(dir: &Path) -> String {
+    let path = dir.join("tiny.json");
+    std::fs::write(
+        &path,
+        r#"{ "name": "tiny", "seed": 3, "cases": ["hole", "uniform"], "nu": [2, 8],
+             "rays": 200, "pose": "random" }"#,
+    )
+    .unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+#[test]
+fn a_short_run_writes_ratios_that_load_and_compare() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let a = dir.path().join("a.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        &workload,
+        "--seconds",
+        "1",
+        "--out",
+        a.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    for title in [
+        "hole: total (cull + exact intersection) / cychosz, paired ratio [95% CI]",
+        "uniform: cull alone / none, paired ratio [95% CI]",
+    ] {
+        assert!(stdout.contains(title), "{stdout}");
+    }
+
+    let r = Results::load(&a).unwrap();
+    assert_eq!(r.meta.tool.as_deref(), Some("time"));
+    assert!(r.rejection.is_empty() && r.timing.is_empty());
+    // Per case × ν × metric: none and cychosz against each other, four culls against both.
+    assert_eq!(r.ratio.len(), 2 * 2 * 2 * (1 + 1 + 4 * 2));
+    for x in &r.ratio {
+        assert!(x.ratio.is_finite() && x.ratio > 0.0, "{x:?}");
+        assert!(
+            x.ratio_ci[0] <= x.ratio && x.ratio <= x.ratio_ci[1],
+            "{x:?}"
+        );
+        assert!(x.rounds >= 5 && x.rounds <= x.rounds_measured, "{x:?}");
+        assert_eq!(x.rays, 200, "the batch is the workload's 200 rays");
+        assert!(x.ns_per_ray > 0.0 && x.reference_ns_per_ray > 0.0, "{x:?}");
+        assert!(x.metric == "total_ns" || x.metric == "cull_ns");
+        assert!(x.reference == "cychosz" || x.reference == "none");
+        assert_ne!(x.cull, x.reference);
+    }
+    // The physics shows through any load: on hole rays skala skips the quartic for most
+    // lines and cychosz for none (about 0.2 on an idle machine).
+    let skala = r
+        .ratio
+        .iter()
+        .find(|x| {
+            (
+                x.case.as_str(),
+                x.nu,
+                x.cull.as_str(),
+                x.reference.as_str(),
+                x.metric.as_str(),
+            ) == ("hole", 8.0, "skala", "cychosz", "total_ns")
+        })
+        .unwrap();
+    assert!(skala.ratio < 0.6, "{skala:?}");
+
+    // A file against itself: every ratio row compared, nothing flagged.
+    let o = torus_cull(&["compare", a.to_str().unwrap(), a.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("hole 8 skala/cychosz total_ns"), "{stdout}");
+    assert!(stdout.contains("0 regressions"), "{stdout}");
+
+    // The same file with skala's hole total 50 % worse and its interval moved along: a
+    // regression, exit 1.
+    let mut worse = r.clone();
+    for x in worse.ratio.iter_mut().filter(|x| {
+        x.case == "hole" && x.cull == "skala" && x.metric == "total_ns" && x.reference == "cychosz"
+    }) {
+        x.ratio *= 1.5;
+        x.ratio_ci = [x.ratio_ci[1] * 1.4, x.ratio_ci[1] * 1.6];
+    }
+    let b = dir.path().join("b.json");
+    worse.save(&b).unwrap();
+    let o = torus_cull(&["compare", a.to_str().unwrap(), b.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}");
+    assert!(stdout.contains("2 regressions"), "{stdout}");
+    assert!(
+        stdout.contains("REGRESSION: +50.0% against cychosz"),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn bad_arguments_exit_2_naming_the_flag_and_the_allowed_values() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let out = dir.path().join("never.json");
+    let out = out.to_str().unwrap();
+    let cases: [(&[&str], &[&str]); 9] = [
+        (
+            &["--culls", "bogus"],
+            &["--culls", "unknown cull 'bogus'", "skala"],
+        ),
+        (
+            &["--culls", "skala,cychosz_printed"],
+            &[
+                "--culls",
+                "cychosz_printed",
+                "not conservative",
+                "thick_cylinder",
+            ],
+        ),
+        (&["--seconds", "0"], &["--seconds 0", "0 < seconds <= 3600"]),
+        (&["--seconds=-1"], &["--seconds -1", "0 < seconds <= 3600"]),
+        (
+            &["--seconds", "NaN"],
+            &["--seconds NaN", "0 < seconds <= 3600"],
+        ),
+        (
+            &["--seconds", "1e9"],
+            &["--seconds 1000000000", "0 < seconds <= 3600"],
+        ),
+        (&["--nu", "5"], &["--nu 5", "tiny.json", "allowed: 2, 8"]),
+        (&["--batch", "5"], &["--batch 5", "16 ..= 200"]),
+        (&["--batch", "201"], &["--batch 201", "16 ..= 200"]),
+    ];
+    for (args, want) in cases {
+        let mut all = vec!["time", "--workload", &workload, "--out", out];
+        all.extend_from_slice(args);
+        let o = torus_cull(&all);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        for w in want {
+            assert!(err.contains(w), "{args:?}: missing '{w}' in: {err}");
+        }
+        assert!(!Path::new(out).exists());
+    }
+    let o = torus_cull(&["time", "--workload", "no/such/workload.json", "--out", out]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("no/such/workload.json"));
+}
+
+/// An output that cannot be written is found before the measurement, not after it.
+#[test]
+fn an_unwritable_out_fails_before_measuring() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "not a directory").unwrap();
+    let out = file.join("r.json");
+    let start = Instant::now();
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        &workload,
+        "--seconds",
+        "20",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--out") && err.contains("r.json"), "{err}");
+    assert!(
+        start.elapsed() < Duration::from_secs(10),
+        "it measured first"
+    );
+}
+
+/// Results files written before the `ratio` section existed load, with no ratios, and
+/// round-trip.
+#[test]
+fn results_without_a_ratio_section_still_load() {
+    let old = Path::new(env!("CARGO_MANIFEST_DIR")).join("results/a13357e.json");
+    let text = std::fs::read_to_string(&old).unwrap();
+    assert!(
+        !text.contains("\"ratio\""),
+        "the fixture must predate the section"
+    );
+    let r = Results::load(&old).unwrap();
+    assert!(r.ratio.is_empty());
+    assert!(!r.timing.is_empty() && !r.rejection.is_empty());
+    let dir = tempfile::tempdir().unwrap();
+    let copy = dir.path().join("copy.json");
+    r.save(&copy).unwrap();
+    assert_eq!(Results::load(&copy).unwrap(), r);
+}
