@@ -1,8 +1,8 @@
 //! `discriminant` and `discriminant_f64`: the ray–torus quartic's real-root
 //! classification, exact and root-free.
 
-use super::{Cull, CullBounds, foot_point};
-use glam::{DVec3, Vec3};
+use super::{Cull, CullBounds, moderate};
+use glam::Vec3;
 use std::ops::{Add, Mul, Sub};
 
 /// Reject a line when its quartic has no real root, read from the discriminant; f32.
@@ -50,15 +50,20 @@ impl Cull for DiscriminantCull {
 
     #[inline(always)]
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (p, inv_len_sq) = foot_point(origin, dir);
-        // The formulas need f·d = 0, but in f32 the foot point slides along the line by
-        // ≈ ε|o|, which changes Q = f_y d_y (a nearly vertical line through a small hole
-        // was once rejected although it hit). Projecting again from p leaves ≈ ε|p|.
-        let f = p - dir * (p.dot(dir) * inv_len_sq);
-        let inside_sphere = f.length_squared() <= b.outer_safe_sq;
-        let rho_sq = (f.x * f.x + f.z * f.z) * b.inv_major_sq;
-        let fy_sq = f.y * f.y * b.inv_major_sq;
-        let unit_y_sq = dir.y * dir.y * inv_len_sq;
+        // The foot point from the moment m = o × d, f = d × m/|d|², is orthogonal to d
+        // to the rounding of f itself; o − d(o·d)/|d|² slides along the line by ≈ ε|o|,
+        // which changes Q = f_y d_y (a far, steep line through a small hole was once
+        // rejected although it hit). It is also a shorter dependency chain.
+        // With |d|² in [2⁻⁴⁰, 2⁴⁰], |m|² cannot overflow for origins within 10¹³.
+        let d = moderate(dir);
+        let m = origin.cross(d);
+        let inv_len_sq = 1.0 / d.length_squared();
+        let f_sq = m.length_squared() * inv_len_sq;
+        let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
+        let inside_sphere = f_sq <= b.outer_safe_sq;
+        let fy_sq = f_y * f_y * b.inv_major_sq;
+        let rho_sq = f_sq * b.inv_major_sq - fy_sq;
+        let unit_y_sq = d.y * d.y * inv_len_sq;
         inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq)
     }
 }
@@ -77,11 +82,13 @@ impl Cull for DiscriminantF64Cull {
     #[inline(always)]
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
         let (o, d) = (origin.as_dvec3(), dir.as_dvec3());
+        let m = o.cross(d);
         let inv_len_sq = 1.0 / d.length_squared();
-        let f: DVec3 = o - d * (o.dot(d) * inv_len_sq);
-        let inside_sphere = f.length_squared() <= f64::from(b.outer_safe_sq);
-        let rho_sq = (f.x * f.x + f.z * f.z) * b.inv_major_sq_f64;
-        let fy_sq = f.y * f.y * b.inv_major_sq_f64;
+        let f_sq = m.length_squared() * inv_len_sq;
+        let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
+        let inside_sphere = f_sq <= f64::from(b.outer_safe_sq);
+        let fy_sq = f_y * f_y * b.inv_major_sq_f64;
+        let rho_sq = f_sq * b.inv_major_sq_f64 - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
         inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq_f64)
     }
@@ -112,6 +119,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     /// The quartic's coefficients from P, Q, S against the direct expansion of
     /// (|x|² + 1 − r′²)² − 4ρ² along the line, at a few points.
@@ -156,6 +164,38 @@ mod tests {
         assert!(!classify(-2.5, 0.0, 4.0));
         // (t² + 1)² = t⁴ + 2t² + 1: a complex double pair, Δ = 0: kept.
         assert!(!classify(1.0, 0.0, 1.0));
+    }
+
+    /// The verdict does not depend on how the direction is scaled, from 1e-19 (|d|² just
+    /// above f32's smallest normal) to 1e19 (|d|² just below its largest).
+    #[test]
+    fn direction_scale_does_not_matter() {
+        let b = CullBounds::new(4.0, 1.0);
+        let lines = [
+            (Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.01, -1.0, 0.0)), // hole: rejected
+            (Vec3::new(-9.0, 0.3, 3.9), Vec3::new(1.0, 0.0, 0.05)),  // tube: kept
+            (Vec3::new(-30.0, 20.0, 5.0), Vec3::new(1.0, -0.6, -0.2)),
+        ];
+        for (o, d) in lines {
+            let unit = (
+                DiscriminantCull.keeps(&b, o, d),
+                DiscriminantF64Cull.keeps(&b, o, d),
+            );
+            assert_eq!(unit.0, unit.1, "{o} {d}");
+            for scale in [1e-19f32, 1e-12, 1e-6, 1e6, 1e12, 1e19] {
+                let scaled = d * scale;
+                assert_eq!(
+                    DiscriminantCull.keeps(&b, o, scaled),
+                    unit.0,
+                    "{o} {scaled}"
+                );
+                assert_eq!(
+                    DiscriminantF64Cull.keeps(&b, o, scaled),
+                    unit.1,
+                    "{o} {scaled}"
+                );
+            }
+        }
     }
 
     #[test]
