@@ -21,8 +21,8 @@ use std::io::{BufRead, Write};
 pub const INPUT_HEADER: &str = "ox,oy,oz,dx,dy,dz";
 
 /// The output header.
-pub const OUTPUT_HEADER: &str =
-    "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,thick_cylinder,skala";
+pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
+    thick_cylinder,skala,ellipsoid,quadric,discriminant,discriminant_f64";
 
 /// Why `eval` stopped.
 #[derive(Debug)]
@@ -151,4 +151,18 @@ fn parse_ray(line: &str) -> Result<Ray, String> {
         }
     }
     Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5])).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn header_names_every_timed_cull_in_order() {
+        let names: Vec<&str> = CullKind::TIMED.iter().map(|c| c.name()).collect();
+        assert_eq!(
+            OUTPUT_HEADER,
+            format!("index,oracle,margin,t_hit,{}", names.join(","))
+        );
+    }
 }

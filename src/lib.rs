@@ -60,7 +60,8 @@ mod torus;
 pub mod workload;
 
 pub use cull::{
-    AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, NoCull, SkalaCull, SphereCull,
+    AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
+    DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
     ThickCylinderCull,
 };
 pub use intersect::{Hit, intersect};

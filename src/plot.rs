@@ -8,7 +8,8 @@ use std::path::{Path, PathBuf};
 /// One named line of (x, y) points.
 pub type Series = (String, Vec<(f64, f64)>);
 
-const COLOURS: [RGBColor; 9] = [
+/// One colour per timed cull, so no two series of a chart share one.
+const COLOURS: [RGBColor; 12] = [
     RGBColor(120, 120, 120),
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
@@ -18,7 +19,11 @@ const COLOURS: [RGBColor; 9] = [
     RGBColor(140, 86, 75),
     RGBColor(227, 119, 194),
     RGBColor(23, 190, 207),
+    RGBColor(188, 189, 34),
+    RGBColor(0, 0, 0),
+    RGBColor(255, 187, 120),
 ];
+const _: () = assert!(COLOURS.len() >= crate::CullKind::TIMED.len());
 
 /// Draw `series` against ν on a log axis into an SVG at `path`.
 ///

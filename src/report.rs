@@ -21,22 +21,9 @@ fn table<R>(
             culls.push(cull);
         }
     }
-    let widest_cell = records.iter().map(|r| cell(r).len()).max().unwrap_or(0);
-    let width = culls
-        .iter()
-        .map(|c| c.len())
-        .max()
-        .unwrap_or(6)
-        .max(8)
-        .max(widest_cell);
     let mut out = String::new();
     for case in cases {
         let _ = writeln!(out, "{}", title(case));
-        let _ = write!(out, "{:>7}", "nu");
-        for c in &culls {
-            let _ = write!(out, " {c:>width$}");
-        }
-        let _ = writeln!(out);
         let mut nus: Vec<f64> = records
             .iter()
             .filter(|r| key(r).0 == case)
@@ -44,14 +31,42 @@ fn table<R>(
             .collect();
         nus.sort_by(f64::total_cmp);
         nus.dedup();
-        for nu in nus {
-            let _ = write!(out, "{nu:>7}");
-            for c in &culls {
-                let text = records
+        let cells: Vec<Vec<String>> = nus
+            .iter()
+            .map(|&nu| {
+                culls
                     .iter()
-                    .find(|r| key(r) == (case, nu, c))
-                    .map(&cell)
-                    .unwrap_or_else(|| "-".into());
+                    .map(|c| {
+                        records
+                            .iter()
+                            .find(|r| key(r) == (case, nu, c))
+                            .map(&cell)
+                            .unwrap_or_else(|| "-".into())
+                    })
+                    .collect()
+            })
+            .collect();
+        // Each column as wide as its name or its widest cell: ten culls stay readable.
+        let widths: Vec<usize> = culls
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                cells
+                    .iter()
+                    .map(|row| row[i].chars().count())
+                    .chain([c.len(), 5])
+                    .max()
+                    .unwrap_or(5)
+            })
+            .collect();
+        let _ = write!(out, "{:>7}", "nu");
+        for (c, width) in culls.iter().zip(&widths) {
+            let _ = write!(out, " {c:>width$}");
+        }
+        let _ = writeln!(out);
+        for (nu, row) in nus.iter().zip(&cells) {
+            let _ = write!(out, "{nu:>7}");
+            for (text, width) in row.iter().zip(&widths) {
                 let _ = write!(out, " {text:>width$}");
             }
             let _ = writeln!(out);

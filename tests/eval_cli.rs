@@ -132,14 +132,15 @@ fn good_input_round_trips() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,thick_cylinder,skala"
+        "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,thick_cylinder,skala,\
+         ellipsoid,quadric,discriminant,discriminant_f64"
     );
     let torus = Torus::canonical(2.0, 1.0).unwrap();
     let bounds = CullBounds::of(&torus);
     let mut n = 0;
     for (i, (line, r)) in lines.zip(&rows).enumerate() {
         let f: Vec<&str> = line.split(',').collect();
-        assert_eq!(f.len(), 10, "{line}");
+        assert_eq!(f.len(), 4 + CullKind::TIMED.len(), "{line}");
         assert_eq!(f[0], i.to_string());
         let ray = Ray::new(
             r[..3].try_into().map(glam::Vec3::from_array).unwrap(),
@@ -173,6 +174,8 @@ fn good_input_round_trips() {
     // The hole row: skala rejects it, cychosz keeps it.
     let hole: Vec<&str> = text.lines().nth(2).unwrap().split(',').collect();
     assert_eq!((hole[1], hole[7], hole[9]), ("miss", "1", "0"));
+    // quadric's hyperboloid and the discriminant reject it too.
+    assert_eq!((hole[11], hole[12], hole[13]), ("0", "0", "0"));
 }
 
 /// `eval` must never print `hit` with an empty `t_hit`: that is the exact intersection

@@ -34,12 +34,13 @@ proptest! {
         }
     }
 
-    /// Lines through a box around the torus, at any pose, ν and direction scale: no cull
-    /// rejects an oracle hit, and skala rejects everything cychosz does.
+    /// Lines through a box around the torus, at any pose, ν (1.01–1000), scale
+    /// (R = 1e-3–1e3) and direction scale: no cull rejects an oracle hit, skala rejects
+    /// everything cychosz does, and quadric everything ellipsoid does.
     #[test]
     fn culls_are_conservative_on_arbitrary_lines(
-        nu in 1.01f64..64.0,
-        major in 0.01f32..100.0,
+        nu in prop_oneof![1.01f64..64.0, 64.0f64..1000.0],
+        major in prop_oneof![0.001f32..1.0, 1.0f32..1000.0],
         center in vec3(-10.0..10.0),
         axis in vec3(-1.0..1.0),
         through in vec3(-1.6..1.6),
@@ -62,9 +63,15 @@ proptest! {
                 "{} rejects a hit: {:?} {:?} margin {:e}", cull, torus, ray, label.margin
             );
         }
-        let cychosz = CullKind::Cychosz.keeps(&bounds, line.origin, line.dir);
-        let skala = CullKind::Skala.keeps(&bounds, line.origin, line.dir);
-        prop_assert!(cychosz || !skala, "skala keeps what cychosz rejects: {:?}", ray);
+        let keeps = |c: CullKind| c.keeps(&bounds, line.origin, line.dir);
+        prop_assert!(
+            keeps(CullKind::Cychosz) || !keeps(CullKind::Skala),
+            "skala keeps what cychosz rejects: {:?}", ray
+        );
+        prop_assert!(
+            keeps(CullKind::Ellipsoid) || !keeps(CullKind::Quadric),
+            "quadric keeps what ellipsoid rejects: {:?}", ray
+        );
     }
 
     #[test]

@@ -28,7 +28,7 @@ fn quick_workload_writes_results_and_plots() {
     assert!(stdout.contains("hole: miss capture") && stdout.contains("uniform: miss capture"));
     let r = Results::load(&out).unwrap();
     assert_eq!(r.meta.workload, "quick");
-    assert_eq!(r.rejection.len(), 5 * 4 * 6);
+    assert_eq!(r.rejection.len(), 5 * 4 * torus_cull::CullKind::TIMED.len());
     assert!(r.rejection.iter().all(|x| x.false_rejects == 0));
     // The central claim is stated, with the number of rays behind it.
     let rays: u64 = r
@@ -50,6 +50,7 @@ fn quick_workload_writes_results_and_plots() {
     };
     assert_eq!(capture("cychosz"), 0.0);
     assert!(capture("skala") > 0.9);
+    assert!(capture("discriminant") > 0.99 && capture("discriminant_f64") > 0.99);
     let svgs = std::fs::read_dir(dir.path())
         .unwrap()
         .filter(|e| {

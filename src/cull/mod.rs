@@ -23,16 +23,22 @@
 
 mod aabb;
 mod cychosz;
+mod discriminant;
+mod ellipsoid;
 mod none;
 mod printed;
+mod quadric;
 mod skala;
 mod sphere;
 mod thick_cylinder;
 
 pub use aabb::AabbCull;
 pub use cychosz::CychoszCull;
+pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
+pub use ellipsoid::EllipsoidCull;
 pub use none::NoCull;
 pub use printed::{CychoszPrintedCull, SkalaEq102Cull, SkalaPrintedCCull};
+pub use quadric::QuadricCull;
 pub use skala::SkalaCull;
 pub use sphere::SphereCull;
 pub use thick_cylinder::ThickCylinderCull;
@@ -72,6 +78,24 @@ pub struct CullBounds {
     pub inner_safe: f32,
     /// (R − r_η)², or 0 when the padded hole closes.
     pub inner_safe_sq: f32,
+    /// s = √(ν_η + 1) with ν_η = R/r_η, rounded down: scaling y by s turns the padded
+    /// outer ellipsoid ρ² + (ν_η + 1)·y² ≤ (R + r_η)² into the sphere of radius R + r_η.
+    /// Rounding s down only widens the ellipsoid.
+    pub ellipsoid_y_scale: f32,
+    /// s·r_η: the slab |y| ≤ r_η in the y-scaled coordinates.
+    pub ellipsoid_slab: f32,
+    /// (ν_η − 1)/(ν_η + 1) = (R − r_η)/(R + r_η), rounded down, or 0 when the padded hole
+    /// closes: the inner hyperboloid ρ² − (ν_η − 1)·y² ≥ (R − r_η)² in the y-scaled
+    /// coordinates is ρ² − this·y′² ≥ (R − r_η)². Rounding down only widens it.
+    pub hyperboloid_y_coef: f32,
+    /// 1/R²: the discriminant works at R = 1.
+    pub inv_major_sq: f32,
+    /// (r_η/R)²: the padded tube radius at R = 1.
+    pub minor_rel_sq: f32,
+    /// 1/R² in f64, for `discriminant_f64`.
+    pub inv_major_sq_f64: f64,
+    /// (r_η/R)² in f64, from the f32 r_η and R, for `discriminant_f64`.
+    pub minor_rel_sq_f64: f64,
 }
 
 impl CullBounds {
@@ -81,6 +105,13 @@ impl CullBounds {
         let minor_safe = minor_radius + eta;
         let outer_safe = major_radius + minor_safe;
         let inner_safe = major_radius - minor_safe;
+        let (big, small) = (f64::from(major_radius), f64::from(minor_safe));
+        let hyperboloid_y_coef = if inner_safe > 0.0 {
+            round_down((big - small) / (big + small))
+        } else {
+            0.0
+        };
+        let ellipsoid_y_scale = round_down(((big + small) / small).sqrt());
         CullBounds {
             major_radius,
             minor_radius,
@@ -94,12 +125,29 @@ impl CullBounds {
             } else {
                 0.0
             },
+            ellipsoid_y_scale,
+            ellipsoid_slab: ellipsoid_y_scale * minor_safe,
+            hyperboloid_y_coef,
+            inv_major_sq: (1.0 / (big * big)) as f32,
+            minor_rel_sq: ((small / big) * (small / big)) as f32,
+            inv_major_sq_f64: 1.0 / (big * big),
+            minor_rel_sq_f64: (small / big) * (small / big),
         }
     }
 
     /// Bounds for a [`crate::Torus`].
     pub fn of(torus: &crate::Torus) -> CullBounds {
         CullBounds::new(torus.major_radius(), torus.minor_radius())
+    }
+}
+
+/// The largest f32 ≤ `x` (for a positive finite `x`).
+fn round_down(x: f64) -> f32 {
+    let y = x as f32;
+    if f64::from(y) > x {
+        f32::from_bits(y.to_bits() - 1)
+    } else {
+        y
     }
 }
 
@@ -135,6 +183,22 @@ pub(crate) fn rescaled(v: Vec3) -> Vec3 {
     v * f32::from_bits((254 - exponent) << 23)
 }
 
+/// `v` itself when |v|² lies in [2⁻⁴⁰, 2⁴⁰], else [`rescaled`]: either way fourth powers
+/// of `v`, and |o|²·|v|² for origins within 10¹³, stay inside f32's normal range. The
+/// test is one branch, predictable on a renderer's rays; `rescaled`'s trip through the
+/// integer unit cost a short cull about 3 ns per line when taken always.
+#[inline(always)]
+pub(crate) fn moderate(v: Vec3) -> Vec3 {
+    const LOW: f32 = 9.094_947e-13; // 2⁻⁴⁰
+    const HIGH: f32 = 1.099_511_6e12; // 2⁴⁰
+    let len_sq = v.length_squared();
+    if len_sq > LOW && len_sq < HIGH {
+        v
+    } else {
+        rescaled(v)
+    }
+}
+
 /// Every cull by name: the registry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum CullKind {
@@ -150,6 +214,14 @@ pub enum CullKind {
     ThickCylinder,
     /// Skala's circle-based test, with the paper's misprints corrected.
     Skala,
+    /// Cychosz with the sphere replaced by the outer ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².
+    Ellipsoid,
+    /// The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².
+    Quadric,
+    /// The quartic's real-root classification (no root, no branch), in f32.
+    Discriminant,
+    /// The same classification evaluated in f64.
+    DiscriminantF64,
     /// Errata tests only: Cychosz with the paper's Eq. 35 misprint. Not conservative.
     CychoszPrinted,
     /// Errata tests only: Skala with the printed Eq. 105, h_c² = r² − (a − r)². Not conservative.
@@ -159,14 +231,18 @@ pub enum CullKind {
 }
 
 impl CullKind {
-    /// The six culls measured by the harness, in table order.
-    pub const TIMED: [CullKind; 6] = [
+    /// The culls measured by the harness, in table order.
+    pub const TIMED: [CullKind; 10] = [
         CullKind::None,
         CullKind::Sphere,
         CullKind::Aabb,
         CullKind::Cychosz,
         CullKind::ThickCylinder,
         CullKind::Skala,
+        CullKind::Ellipsoid,
+        CullKind::Quadric,
+        CullKind::Discriminant,
+        CullKind::DiscriminantF64,
     ];
 
     /// The paper-as-printed variants, kept to prove the harness can see a broken cull.
@@ -185,6 +261,10 @@ impl CullKind {
             CullKind::Cychosz => "cychosz",
             CullKind::ThickCylinder => "thick_cylinder",
             CullKind::Skala => "skala",
+            CullKind::Ellipsoid => "ellipsoid",
+            CullKind::Quadric => "quadric",
+            CullKind::Discriminant => "discriminant",
+            CullKind::DiscriminantF64 => "discriminant_f64",
             CullKind::CychoszPrinted => "cychosz_printed",
             CullKind::SkalaPrintedC => "skala_printed_c",
             CullKind::SkalaEq102 => "skala_eq102",
@@ -200,6 +280,10 @@ impl CullKind {
             CullKind::Cychosz => visitor.visit(CychoszCull),
             CullKind::ThickCylinder => visitor.visit(ThickCylinderCull),
             CullKind::Skala => visitor.visit(SkalaCull),
+            CullKind::Ellipsoid => visitor.visit(EllipsoidCull),
+            CullKind::Quadric => visitor.visit(QuadricCull),
+            CullKind::Discriminant => visitor.visit(DiscriminantCull),
+            CullKind::DiscriminantF64 => visitor.visit(DiscriminantF64Cull),
             CullKind::CychoszPrinted => visitor.visit(CychoszPrintedCull),
             CullKind::SkalaPrintedC => visitor.visit(SkalaPrintedCCull),
             CullKind::SkalaEq102 => visitor.visit(SkalaEq102Cull),
@@ -286,6 +370,20 @@ mod tests {
         }
         let err = "bogus".parse::<CullKind>().unwrap_err().to_string();
         assert!(err.contains("bogus") && err.contains("skala"), "{err}");
+    }
+
+    #[test]
+    fn moderate_keeps_fourth_powers_in_range() {
+        assert_eq!(2f32.powi(-40), 9.094_947e-13);
+        assert_eq!(2f32.powi(40), 1.099_511_6e12);
+        for scale in [1e-19f32, 1e-15, 1e-5, 1.0, 1e5, 1e15, 1e19] {
+            let v = moderate(Vec3::new(0.3, -1.0, 0.2) * scale);
+            let fourth = v.length_squared() * v.length_squared();
+            assert!(fourth.is_normal() && fourth < 1.3e24, "{scale}: {v}");
+            // Only the length changes.
+            let cos = v.normalize().dot(Vec3::new(0.3, -1.0, 0.2).normalize());
+            assert!((cos - 1.0).abs() < 1e-6);
+        }
     }
 
     #[test]

@@ -1,0 +1,215 @@
+//! `discriminant` and `discriminant_f64`: the ray–torus quartic's real-root
+//! classification, exact and root-free.
+
+use super::{Cull, CullBounds, moderate};
+use glam::Vec3;
+use std::ops::{Add, Mul, Sub};
+
+/// Reject a line when its quartic has no real root, read from the discriminant; f32.
+///
+/// **Bound.** With unit d, the foot point f (f·d = 0) and lengths in units of R
+/// (r′ = r/R), the torus quartic along the line is exactly
+/// F(t) = t⁴ + 2P t² + 8Q t + S, with k = |f|² + 1 − r′², P = k − 2 + 2d_y²,
+/// Q = f_y d_y, S = k² − 4(f_x² + f_z²). A depressed quartic y⁴ + p y² + q y + s has no
+/// real root iff its discriminant is > 0 and (p > 0 or s > p²/4) (E. L. Rees, Amer.
+/// Math. Monthly 29, 1922; D. Lazard, J. Symbolic Comput. 5, 1988), here:
+/// **reject ⇔ Δ′ > 0 ∧ (P > 0 ∨ S > P²)**, with
+/// Δ′ = Δ/256 = S(S − P²)² − 8Q²(P³ − 9PS + 54Q²). Only Q² appears, so d_y enters as
+/// d_y²/|d|²: one division (as in Cychosz), no root, no branch (it vectorizes). Lines
+/// outside the padded bounding sphere are rejected too, which also keeps the degree-12
+/// terms of Δ′ far from overflow for distant lines.
+///
+/// **Why it is sound.** F > 0 exactly outside the tube (F = (D² − r²)·G with D the
+/// distance to the core circle and G > 0 on a ring torus), and its leading coefficient is
+/// positive, so no real root means the line never enters the torus. The one no-root case
+/// not rejected (two complex-conjugate double roots, Δ = 0) is kept: harmless.
+///
+/// **Floating point.** At a tangent line Δ has a simple zero, so its relative error is
+/// unbounded there: no margin is put on Δ. The tube is padded instead (r′ = r_η/R,
+/// r_η = r + η), so a line that hits the torus has to move by more than η before its
+/// T_η quartic loses its real roots: rounding that acts like a smaller move cannot make
+/// it look rootless. The kept misses are the lines within η of the surface (the padding
+/// band), and nothing else. Two evaluation details keep f32 rounding that small:
+/// * f must be orthogonal to d to the precision of the torus, not of the origin: the
+///   foot point is projected twice (the second time from a point near the torus), as a
+///   far f32 foot point slides along the line by ≈ ε|o| and changes Q;
+/// * S is evaluated as (ρ² − 1)² + b(2(ρ² + 1) + b), b = f_y² − r′², ρ² = f_x² + f_z²:
+///   k² − 4ρ² without its cancellation (both ≈ 4 on a hitting line, S ≈ r′²).
+///
+/// That this suffices is measured, not proven: 0 rejected hits on the adversarial and
+/// conservativeness families (ν 1.01–1000, R 1e-3–1e3, tangents to ±1e-7·r, near-double
+/// roots, origins 250·(R + r) away), where every cull, even `sphere`, still passes with
+/// η four times smaller, and fails at sixteen times smaller.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DiscriminantCull;
+
+impl Cull for DiscriminantCull {
+    fn name(&self) -> &'static str {
+        "discriminant"
+    }
+
+    #[inline(always)]
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        // The foot point from the moment m = o × d, f = d × m/|d|², is orthogonal to d
+        // to the rounding of f itself; o − d(o·d)/|d|² slides along the line by ≈ ε|o|,
+        // which changes Q = f_y d_y (a far, steep line through a small hole was once
+        // rejected although it hit). It is also a shorter dependency chain.
+        // With |d|² in [2⁻⁴⁰, 2⁴⁰], |m|² cannot overflow for origins within 10¹³.
+        let d = moderate(dir);
+        let m = origin.cross(d);
+        let inv_len_sq = 1.0 / d.length_squared();
+        let f_sq = m.length_squared() * inv_len_sq;
+        let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
+        let inside_sphere = f_sq <= b.outer_safe_sq;
+        let fy_sq = f_y * f_y * b.inv_major_sq;
+        let rho_sq = f_sq * b.inv_major_sq - fy_sq;
+        let unit_y_sq = d.y * d.y * inv_len_sq;
+        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq)
+    }
+}
+
+/// [`DiscriminantCull`] evaluated in f64 from the f32 line: same bound and padding, about
+/// 2⁻²⁹ times the rounding of the f32 arithmetic (the f32 line itself, from the
+/// world → torus transform, still needs the padding).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DiscriminantF64Cull;
+
+impl Cull for DiscriminantF64Cull {
+    fn name(&self) -> &'static str {
+        "discriminant_f64"
+    }
+
+    #[inline(always)]
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        let (o, d) = (origin.as_dvec3(), dir.as_dvec3());
+        let m = o.cross(d);
+        let inv_len_sq = 1.0 / d.length_squared();
+        let f_sq = m.length_squared() * inv_len_sq;
+        let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
+        let inside_sphere = f_sq <= f64::from(b.outer_safe_sq);
+        let fy_sq = f_y * f_y * b.inv_major_sq_f64;
+        let rho_sq = f_sq * b.inv_major_sq_f64 - fy_sq;
+        let unit_y_sq = d.y * d.y * inv_len_sq;
+        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq_f64)
+    }
+}
+
+/// Whether F(t) = t⁴ + 2P t² + 8Q t + S has no real root, at R = 1, from ρ² = f_x² + f_z²,
+/// f_y², d̂_y² and r′². About 20 multiplies and 12 adds, no branch.
+#[inline(always)]
+fn no_real_root<T>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> bool
+where
+    T: Copy + From<f32> + PartialOrd + Add<Output = T> + Sub<Output = T> + Mul<Output = T>,
+{
+    let c = |x: f32| T::from(x);
+    let rho_sq_m1 = rho_sq - c(1.0);
+    let b = fy_sq - minor_sq;
+    // P = k − 2 + 2d̂_y², with k − 2 = (ρ² − 1) + b.
+    let p = rho_sq_m1 + b + c(2.0) * unit_y_sq;
+    // S = k² − 4ρ², rearranged so that no two large terms cancel.
+    let s = rho_sq_m1 * rho_sq_m1 + b * (c(2.0) * (rho_sq + c(1.0)) + b);
+    let q_sq = fy_sq * unit_y_sq;
+    let p_sq = p * p;
+    let s_minus_p_sq = s - p_sq;
+    let delta = s * s_minus_p_sq * s_minus_p_sq
+        - c(8.0) * q_sq * (p_sq * p - c(9.0) * p * s + c(54.0) * q_sq);
+    (delta > c(0.0)) & ((p > c(0.0)) | (s_minus_p_sq > c(0.0)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    /// The quartic's coefficients from P, Q, S against the direct expansion of
+    /// (|x|² + 1 − r′²)² − 4ρ² along the line, at a few points.
+    #[test]
+    fn foot_point_form_matches_the_torus_quartic() {
+        let minor_sq = 0.3f64 * 0.3;
+        let f = DVec3::new(0.4, 0.16, -0.12);
+        let d = DVec3::new(0.0, 0.6, 0.8); // unit, f·d = 0
+        assert!(f.dot(d).abs() < 1e-15);
+        let rho_sq = f.x * f.x + f.z * f.z;
+        let k = f.length_squared() + 1.0 - minor_sq;
+        let p = k - 2.0 + 2.0 * d.y * d.y;
+        let q = f.y * d.y;
+        let s = k * k - 4.0 * rho_sq;
+        let a1 = rho_sq - 1.0;
+        let b = f.y * f.y - minor_sq;
+        assert!((s - (a1 * a1 + b * (2.0 * (rho_sq + 1.0) + b))).abs() < 1e-12);
+        for t in [-2.0, -0.5, 0.0, 0.3, 1.7] {
+            let x = f + d * t;
+            let direct =
+                (x.length_squared() + 1.0 - minor_sq).powi(2) - 4.0 * (x.x * x.x + x.z * x.z);
+            let folded = t * t * t * t + 2.0 * p * t * t + 8.0 * q * t + s;
+            assert!((direct - folded).abs() < 1e-12, "t={t}");
+        }
+    }
+
+    /// Quartics with known roots: (t² + a²)(t² + b²) shifted to zero mean has no real
+    /// root; (t − 1)(t + 1)(t² + 1) has two.
+    #[test]
+    fn classification_on_known_quartics() {
+        // t⁴ + 2P t² + 8Q t + S from roots: no cubic term. (t² + 1)(t² + 4):
+        // 2P = 5, Q = 0, S = 4. No real root.
+        let classify = |p: f64, q: f64, s: f64| {
+            let delta =
+                s * (s - p * p).powi(2) - 8.0 * q * q * (p.powi(3) - 9.0 * p * s + 54.0 * q * q);
+            (delta > 0.0) & ((p > 0.0) | (s > p * p))
+        };
+        assert!(classify(2.5, 0.0, 4.0));
+        // (t² − 1)(t² + 1) = t⁴ − 1: two real roots.
+        assert!(!classify(0.0, 0.0, -1.0));
+        // (t² − 1)(t² − 4) = t⁴ − 5t² + 4: four real roots, Δ > 0, P < 0, S < P².
+        assert!(!classify(-2.5, 0.0, 4.0));
+        // (t² + 1)² = t⁴ + 2t² + 1: a complex double pair, Δ = 0: kept.
+        assert!(!classify(1.0, 0.0, 1.0));
+    }
+
+    /// The verdict does not depend on how the direction is scaled, from 1e-19 (|d|² just
+    /// above f32's smallest normal) to 1e19 (|d|² just below its largest).
+    #[test]
+    fn direction_scale_does_not_matter() {
+        let b = CullBounds::new(4.0, 1.0);
+        let lines = [
+            (Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.01, -1.0, 0.0)), // hole: rejected
+            (Vec3::new(-9.0, 0.3, 3.9), Vec3::new(1.0, 0.0, 0.05)),  // tube: kept
+            (Vec3::new(-30.0, 20.0, 5.0), Vec3::new(1.0, -0.6, -0.2)),
+        ];
+        for (o, d) in lines {
+            let unit = (
+                DiscriminantCull.keeps(&b, o, d),
+                DiscriminantF64Cull.keeps(&b, o, d),
+            );
+            assert_eq!(unit.0, unit.1, "{o} {d}");
+            for scale in [1e-19f32, 1e-12, 1e-6, 1e6, 1e12, 1e19] {
+                let scaled = d * scale;
+                assert_eq!(
+                    DiscriminantCull.keeps(&b, o, scaled),
+                    unit.0,
+                    "{o} {scaled}"
+                );
+                assert_eq!(
+                    DiscriminantF64Cull.keeps(&b, o, scaled),
+                    unit.1,
+                    "{o} {scaled}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn rejects_the_hole_and_keeps_the_tube() {
+        let b = CullBounds::new(4.0, 1.0);
+        for cull in [&DiscriminantCull as &dyn Cull, &DiscriminantF64Cull] {
+            // Straight down the hole, and down through the tube.
+            assert!(!cull.keeps(&b, Vec3::new(0.5, 10.0, 0.0), Vec3::NEG_Y));
+            assert!(cull.keeps(&b, Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y));
+            // Tangent to the outer equator (ambiguous: kept), and 1 % of r outside it.
+            assert!(cull.keeps(&b, Vec3::new(5.0, 10.0, 0.0), Vec3::NEG_Y));
+            assert!(!cull.keeps(&b, Vec3::new(5.01, 10.0, 0.0), Vec3::NEG_Y));
+            // Far outside the sphere (the degree-12 terms would overflow in f32).
+            assert!(!cull.keeps(&b, Vec3::new(1e30, 0.0, 0.0), Vec3::Y));
+        }
+    }
+}
