@@ -87,9 +87,10 @@ impl RealRoots {
 /// The nearest real root of `x⁴ + p x² + q x + r` in `[lo, hi]` (either end may be
 /// infinite), or `None`: the renderer's query.
 ///
-/// Finds the roots of both Ferrari factors, takes the smallest one in range, and gives it
-/// one guarded Newton step (kept only if it lowers |f|, stays in range and moves less than
-/// half-way to the other root of its factor, so a tangent double root stays put).
+/// Finds the roots of both Ferrari factors and takes the smallest one in range, without a
+/// sort and without a final Newton step: the factors' roots are already accurate to a few
+/// ε·(R + r) in absolute terms (see the solver bench's accuracy records), and near-double
+/// factors are refined on the quartic itself on a cold path.
 ///
 /// ```
 /// use torus_cull::quartic::nearest_root_depressed;
@@ -100,18 +101,18 @@ impl RealRoots {
 /// ```
 #[inline]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
-    let c = [1.0, 0.0, p, q, r];
     let f = factor::split(p, q, r);
     let (disc1, disc2) = (f.z - 4.0 * f.n1, f.z - 4.0 * f.n2);
     let near = factor::NEAR_DOUBLE;
     // Written so that NaN (non-finite input) takes the cold path.
     let clear = disc1.abs() > near * (f.z + 4.0 * f.n1.abs())
         && disc2.abs() > near * (f.z + 4.0 * f.n2.abs());
-    let (best, partner) = if clear {
-        // Both factors are clearly two real roots or none: solve them without branches
-        // (which way a factor goes is a coin toss from ray to ray), then take the nearest.
-        let (a1, b1) = quadratic_roots(f.m, f.n1, disc1);
-        let (a2, b2) = quadratic_roots(-f.m, f.n2, disc2);
+    let best = if clear {
+        // Both factors clearly have two real roots or none: solve them without branches
+        // (which way a factor goes is a coin toss from ray to ray) and take the nearest.
+        // `(−b ± √disc)/2` is accurate to ε·(|b| + √disc) in absolute terms, which is what
+        // a hit point needs; the division-based stable form only buys relative accuracy
+        // for roots near 0, and costs a division on the critical path.
         let pick = |x: f64, ok: bool| {
             if ok && x >= lo && x <= hi {
                 x
@@ -119,51 +120,33 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
                 f64::INFINITY
             }
         };
+        let (s1, s2) = (disc1.max(0.0).sqrt(), disc2.max(0.0).sqrt());
         let (ok1, ok2) = (disc1 > 0.0, disc2 > 0.0);
-        let (a1, b1, a2, b2) = (pick(a1, ok1), pick(b1, ok1), pick(a2, ok2), pick(b2, ok2));
-        let (x1, y1) = (a1.min(b1), a1.max(b1));
-        let (x2, y2) = (a2.min(b2), a2.max(b2));
-        if x1 <= x2 { (x1, y1) } else { (x2, y2) }
+        let half_m = 0.5 * f.m;
+        pick(-half_m - 0.5 * s1, ok1)
+            .min(pick(-half_m + 0.5 * s1, ok1))
+            .min(pick(half_m - 0.5 * s2, ok2))
+            .min(pick(half_m + 0.5 * s2, ok2))
     } else {
         if !(p.is_finite() && q.is_finite() && r.is_finite()) {
             return None;
         }
-        nearest_of(&factor::real_roots(p, q, r, &c, 0.0, near), lo, hi)
+        let c = [1.0, 0.0, p, q, r];
+        let roots = factor::real_roots(p, q, r, &c, 0.0, near);
+        nearest_of(&roots, lo, hi)
     };
-    if best == f64::INFINITY {
-        return None;
-    }
-    // One guarded Newton step: kept only if it lowers |f|, stays in range and moves less
-    // than half-way to the other root of its factor (so two close roots cannot merge and a
-    // double root, where f' ≈ 0, stays put).
-    let lim = 0.5 * (partner - best).abs();
-    let (fx, dfx) = eval(&c, best);
-    let xn = best - fx / dfx;
-    // Written so that NaN (dfx = 0) keeps the root.
-    let ok = (xn - best).abs() <= lim && xn >= lo && xn <= hi && eval(&c, xn).0.abs() < fx.abs();
-    Some(if ok { xn } else { best })
+    (best != f64::INFINITY).then_some(best)
 }
 
-/// The roots of `x² + b x + c` with discriminant `disc > 0`, in the stable form
-/// (garbage, never used, when `disc ≤ 0`).
-#[inline(always)]
-fn quadratic_roots(b: f64, c: f64, disc: f64) -> (f64, f64) {
-    let t = -0.5 * (b + disc.max(0.0).sqrt().copysign(b));
-    (t, c / t)
-}
-
-/// The nearest root in `[lo, hi]` of a cold-path root set, and the other root of its
-/// factor (roots `2k`, `2k + 1` come from one factor), or `(∞, ∞)`.
+/// The nearest root in `[lo, hi]` of a cold-path root set, or ∞.
 #[cold]
-fn nearest_of(roots: &RealRoots, lo: f64, hi: f64) -> (f64, f64) {
-    let xs = roots.as_slice();
-    let mut out = (f64::INFINITY, f64::INFINITY);
-    for (i, &x) in xs.iter().enumerate() {
-        if x >= lo && x <= hi && x < out.0 {
-            out = (x, xs.get(i ^ 1).copied().unwrap_or(f64::INFINITY));
-        }
-    }
-    out
+fn nearest_of(roots: &RealRoots, lo: f64, hi: f64) -> f64 {
+    roots
+        .as_slice()
+        .iter()
+        .copied()
+        .filter(|&x| x >= lo && x <= hi)
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.

@@ -21,6 +21,9 @@
 /// by the value of `h` at its local minimum instead.
 const DISC_NEAR: f64 = 1e-9;
 
+/// Below this `|Δ| / scale` the closed form is Newton-polished.
+const POLISH_BELOW: f64 = 1e-4;
+
 /// `(z, h'(z))` with `z ≥ 0` the greatest real root of `h` for the depressed quartic
 /// `x⁴ + p x² + q x + r` (finite inputs).
 #[inline]
@@ -50,21 +53,27 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> (f64, f64) {
     // gains a factor ε per step. Near 0, h = z·((z + a)z + b) − q², so the fixed point
     // z = q²/((z + a)z + b) gives it to full relative precision at once (it contracts by
     // about z·|a|/b per step).
-    if b > 0.0 && z * (z + a.abs()) <= 1e-3 * b {
+    let small_root = b > 0.0 && z * (z + a.abs()) <= 1e-3 * b;
+    if small_root {
         z = q * q / b;
         z = q * q / ((z + a) * z + b);
     }
-    // Two Newton steps polish the closed form (which loses digits when the discriminant is
-    // small: one step was measurably short on tangents at the inner equator). A step is
-    // kept only if it lowers |h|, so a double root cannot be thrown away.
-    let mut hz = h(z);
-    for _ in 0..2 {
-        let zn = (z - hz / dh(z)).max(0.0);
-        let hn = h(zn);
-        // Written so that NaN (h' = 0) keeps z.
-        if hn.abs() < hz.abs() {
-            z = zn;
-            hz = hn;
+    // Two Newton steps polish the closed form where it loses digits: a small discriminant
+    // (close roots: the trigonometric form's acos near ±1, Cardano's cancellation; one
+    // step was measurably short on tangents at the inner equator) or a root found by the
+    // fixed point above. Elsewhere the closed form is good to a few ulps and the steps
+    // would only lengthen the hot path. A step is kept only if it lowers |h|, so a double
+    // root cannot be thrown away.
+    if small_root || disc.abs() <= POLISH_BELOW * scale {
+        let mut hz = h(z);
+        for _ in 0..2 {
+            let zn = (z - hz / dh(z)).max(0.0);
+            let hn = h(zn);
+            // Written so that NaN (h' = 0) keeps z.
+            if hn.abs() < hz.abs() {
+                z = zn;
+                hz = hn;
+            }
         }
     }
     (z, dh(z))
