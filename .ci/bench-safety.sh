@@ -25,7 +25,7 @@ TORUS_CULL_BENCH=smoke TORUS_CULL_RESULTS="$tmp/complete.json" \
 [ "$(json "$tmp/complete.json" "d['meta']['preset']")" = smoke ] || fail "preset not recorded"
 [ "$(json "$tmp/complete.json" "d['meta']['sizes']['timing_rays']")" = 256 ] || fail "batch size not recorded"
 [ "$(json "$tmp/complete.json" "d['meta']['sizes']['rejection_rays']")" = 1000 ] || fail "sweep size not recorded"
-for section in rejection timing bvh solver estimates; do
+for section in rejection timing bvh solver estimates ratio; do
   [ "$(json "$tmp/complete.json" "len(d['$section']) > 0")" = True ] || fail "no $section records"
 done
 cargo run --release --quiet -- compare "$tmp/complete.json" "$tmp/complete.json" --only-changes \
