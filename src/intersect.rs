@@ -347,22 +347,7 @@ mod tests {
     fn random_torus(rng: &mut Pcg64) -> Torus {
         let major = 10f32.powf(rng.random_range(-3.0..3.0));
         let nu = rng.random_range(1.2..10.0);
-        let axis = loop {
-            let a = Vec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            if a.length() > 0.1 {
-                break a;
-            }
-        };
-        let center = Vec3::new(
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-        ) * major;
-        Torus::new(center, axis, major, major / nu).unwrap()
+        crate::workload::adversarial::random_pose_torus(rng, major, major / nu)
     }
 
     #[test]

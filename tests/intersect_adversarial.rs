@@ -23,7 +23,7 @@ use rand_pcg::Pcg64;
 use torus_cull::intersect::{intersect_local, quartic_coefficients_local};
 use torus_cull::oracle::{OracleClass, classify, reference_roots};
 use torus_cull::workload::adversarial::{
-    SpecialCircle, hole_edge_line, random_azimuth, tangent_line,
+    SpecialCircle, hole_edge_line, random_azimuth, random_pose_torus, tangent_line,
 };
 use torus_cull::workload::{Case, Pose, generate};
 use torus_cull::{Ray, Torus, intersect};
@@ -44,22 +44,7 @@ fn random_setup(rng: &mut Pcg64) -> Setup {
     let torus = if rng.random_bool(0.5) {
         Torus::canonical(major, minor).unwrap()
     } else {
-        let axis = loop {
-            let a = Vec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            if a.length() > 0.2 {
-                break a;
-            }
-        };
-        let center = Vec3::new(
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-        ) * major;
-        Torus::new(center, axis, major, minor).unwrap()
+        random_pose_torus(rng, major, minor)
     };
     Setup {
         torus,
@@ -142,16 +127,19 @@ impl Tally {
         }
         let Some(hit) = found else { return };
         self.hits += 1;
-        let roots = reference_roots(
-            torus.center().as_dvec3(),
-            torus.axis().as_dvec3(),
-            setup.major,
-            setup.minor,
-            ray.origin().as_dvec3(),
-            ray.dir().as_dvec3(),
-            f64::from(ray.t_min()),
-            f64::from(ray.t_max()),
-        );
+        let reference = |t_min: f64, t_max: f64| {
+            reference_roots(
+                torus.center().as_dvec3(),
+                torus.axis().as_dvec3(),
+                setup.major,
+                setup.minor,
+                ray.origin().as_dvec3(),
+                ray.dir().as_dvec3(),
+                t_min,
+                t_max,
+            )
+        };
+        let roots = reference(f64::from(ray.t_min()), f64::from(ray.t_max()));
         let Some(&t_ref) = roots.first() else {
             self.failures.push(format!(
                 "{family}: oracle hit without a reference root: {ray:?}"
@@ -175,16 +163,7 @@ impl Tally {
         )
         .expect("the f32 path found a hit");
         let err64 = (t64 - t_ref).abs() * len / size;
-        let all = reference_roots(
-            torus.center().as_dvec3(),
-            torus.axis().as_dvec3(),
-            setup.major,
-            setup.minor,
-            ray.origin().as_dvec3(),
-            ray.dir().as_dvec3(),
-            f64::NEG_INFINITY,
-            f64::INFINITY,
-        );
+        let all = reference(f64::NEG_INFINITY, f64::INFINITY);
         let gap = all
             .iter()
             .filter(|&&t| t != t_ref)

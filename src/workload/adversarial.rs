@@ -9,7 +9,8 @@
 //!   ([`SpecialCircle`]) in a random tangent direction, pushed along the outward normal by
 //!   `δ·r` (δ < 0 enters the tube: a near-double pair of real roots; δ > 0 misses).
 
-use glam::DVec3;
+use crate::Torus;
+use glam::{DVec3, Vec3};
 use rand::{Rng, RngExt};
 
 /// The circles of the torus where tangent lines are hardest: the equators, where the
@@ -56,6 +57,18 @@ impl SpecialCircle {
             SpecialCircle::Bottom => (radial * major - DVec3::Y * minor, -DVec3::Y, radial),
         }
     }
+}
+
+/// A torus of radii R = `major`, r = `minor` at a random world pose: axis uniform on the
+/// sphere, centre uniform in the cube of half-side 3R around the origin.
+pub fn random_pose_torus(rng: &mut rand_pcg::Pcg64, major: f32, minor: f32) -> Torus {
+    let axis = super::unit_vector(rng).as_vec3();
+    let center = Vec3::new(
+        rng.random_range(-3.0..3.0),
+        rng.random_range(-3.0..3.0),
+        rng.random_range(-3.0..3.0),
+    ) * major;
+    Torus::new(center, axis, major, minor).expect("valid radii at any pose")
 }
 
 /// The horizontal unit vectors at a random azimuth: radial ρ̂ and along the circle φ̂.
