@@ -1,0 +1,31 @@
+//! Batch (SIMD) culls: many lines at once, branch-free, one keep bit per line.
+//!
+//! A renderer that traces packets or wavefronts has the rays of a batch side by side;
+//! there the cost model of a cull changes. A branch-free cull over 8 or 16 lanes costs a
+//! fraction of a nanosecond per ray, the keep/reject branches that a scalar loop
+//! mispredicts vanish, and what remains is the solve of the survivors.
+//!
+//! * [`Lines`]: torus-frame lines as structure of arrays ([`Lines::from_rays`] builds
+//!   them from world rays with [`crate::Torus::line_to_local`], the scalar path's own
+//!   transform).
+//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. Each batch cull
+//!   mirrors its scalar twin in [`crate::cull`] expression for expression, so the verdicts
+//!   are bit-identical (`tests/batch.rs` checks it at every dispatch level).
+//! * [`Dispatch`] and [`Isa`]: the instruction set, detected at run time (AVX-512, AVX2,
+//!   NEON, or the scalar fallback) and recorded in `meta.isa`; `TORUS_CULL_ISA` forces a
+//!   lower one.
+//!
+//! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
+//! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
+
+mod cull;
+mod isa;
+mod lanes;
+mod lines;
+mod mask;
+mod vec3s;
+
+pub use cull::{BATCHED, NoBatchForm, cull_batch};
+pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
+pub use lines::{BLOCK, Lines};
+pub use mask::KeepMask;
