@@ -44,7 +44,9 @@ use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
 use torus_cull::paired;
-use torus_cull::results::{BvhSizes, EstimateRecord, RatioRecord, Results, Sizes, TimingRecord};
+use torus_cull::results::{
+    BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
+};
 use torus_cull::workload::spec::{BvhSpec, Workload};
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
@@ -478,6 +480,7 @@ fn timing_records(
                 solve_hit_ns: solve_hit,
                 ideal_total_ns_at_hit_cost: solve_hit.map(|s| cull_ns.median + hit_fraction * s),
                 source: "criterion".into(),
+                mode: SCALAR_MODE.into(),
             });
         }
     }
