@@ -82,6 +82,11 @@ macro_rules! lanes {
             pub(crate) fn eq(self, o: Self) -> $mask<S> {
                 $mask { s: self.s, m: self.s.$eq(self.v, o.v) }
             }
+            /// Lanes that are finite (neither infinite nor NaN).
+            #[inline(always)]
+            pub(crate) fn is_finite(self) -> $mask<S> {
+                self.abs().le(Self::splat(self.s, <$elem>::MAX))
+            }
             /// Lanes that are NaN.
             #[inline(always)]
             pub(crate) fn is_nan(self) -> $mask<S> {

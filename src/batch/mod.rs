@@ -15,6 +15,10 @@
 //!   NEON, or the scalar fallback) and recorded in `meta.isa`; `TORUS_CULL_ISA` forces a
 //!   lower one.
 //!
+//! * [`nearest_roots`]: the nearest root of many depressed quartics ([`Quartics`]) at
+//!   once on f64 lanes, the scalar solver's method branch-free, its rare careful cases
+//!   handed back to it.
+//!
 //! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
 
@@ -23,9 +27,11 @@ mod isa;
 mod lanes;
 mod lines;
 mod mask;
+mod solve;
 mod vec3s;
 
 pub use cull::{BATCHED, NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
+pub use solve::{Quartics, SolveStats, nearest_roots};

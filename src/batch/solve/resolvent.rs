@@ -1,0 +1,76 @@
+//! The greatest root of Ferrari's resolvent in z = m², over f64 lanes: the scalar
+//! [`crate::quartic`] resolvent, lane for lane, with its cold case handed back.
+
+use super::cube_root::{CBRT_RANGE, cbrt, trisect_cos};
+use crate::batch::lanes::{F64s, M64s};
+use crate::quartic::DISC_NEAR;
+use pulp::Simd;
+
+/// `(z, h′(z), fallback)`: z ≥ 0 the greatest root of
+/// h(z) = z³ + 2p z² + (p² − 4r) z − q² for x⁴ + p x² + q x + r, and the lanes the
+/// scalar solver must take instead.
+///
+/// As in the scalar solver: z = w − 2p/3 with w the greatest root of the depressed cubic
+/// w³ + 3P′w + 2Q′, by Cardano (one real root, Δ = Q′² + P′³ > 0) or the trigonometric
+/// form (three), both computed on every lane and selected; a small root by the fixed
+/// point z = q²/((z + 2p)z + p² − 4r), which keeps its relative precision; then two
+/// Newton steps, each kept only where it lowers |h|.
+///
+/// Fallback lanes: |Δ| ≤ 10⁻⁹·scale (a near-double root of the resolvent, which the
+/// scalar solver settles by the cubic's value at its local minimum: rare, and not worth
+/// a lane's worth of work for everyone), a Cardano argument outside the lane cube
+/// root's range, and anything not finite.
+#[inline(always)]
+pub(super) fn greatest_root<S: Simd>(
+    p: F64s<S>,
+    q: F64s<S>,
+    r: F64s<S>,
+) -> (F64s<S>, F64s<S>, M64s<S>) {
+    let s = p.s;
+    let c_ = |x: f64| F64s::splat(s, x);
+    let a = c_(2.0) * p;
+    let b = p * p - c_(4.0) * r;
+    let c = -q * q;
+    let a3 = a / c_(3.0);
+    let third_p = (b - a * a3) / c_(3.0);
+    let half_q = c_(0.5) * (c - a3 * (b - c_(2.0) * a3 * a3));
+    let disc = half_q * half_q + third_p * third_p * third_p;
+    let scale = half_q * half_q + (third_p * third_p * third_p).abs();
+    let near_double = !disc.abs().gt(c_(DISC_NEAR) * scale);
+
+    // Cardano: u = ∓∛(|Q′| + √Δ), the sign opposite to Q′'s, w = u − P′/u.
+    let big_arg = half_q.abs() + disc.sqrt();
+    let big = cbrt(big_arg);
+    let u = half_q.gt(c_(0.0)).select(-big, big);
+    let cardano = u.eq(c_(0.0)).select(c_(0.0), u - third_p / u);
+    let outside_cbrt =
+        disc.gt(c_(0.0)) & !(big_arg.ge(c_(CBRT_RANGE.0)) & big_arg.le(c_(CBRT_RANGE.1)));
+
+    // Three real roots: w = 2k·cos(arccos(−Q′/k³)/3), k = √(−P′).
+    let k = (-third_p).max_num(c_(0.0)).sqrt();
+    let cos3 = (-half_q / (k * k * k)).max_num(c_(-1.0)).min_num(c_(1.0));
+    let trig = k
+        .eq(c_(0.0))
+        .select(c_(0.0), c_(2.0) * k * trisect_cos(cos3));
+
+    let w = disc.gt(c_(0.0)).select(cardano, trig);
+    let h = |z: F64s<S>| ((z + a) * z + b) * z + c;
+    let dh = |z: F64s<S>| (c_(3.0) * z + c_(2.0) * a) * z + b;
+    let mut z = (w - a3).max_num(c_(0.0));
+    let tiny = b.gt(c_(0.0)) & (z * (z + a.abs())).le(c_(1e-3) * b);
+    let z_fixed = q * q / b;
+    let z_fixed = q * q / ((z_fixed + a) * z_fixed + b);
+    z = tiny.select(z_fixed, z);
+    let mut hz = h(z);
+    for _ in 0..2 {
+        let zn = (z - hz / dh(z)).max_num(c_(0.0));
+        let hn = h(zn);
+        let better = hn.abs().lt(hz.abs());
+        z = better.select(zn, z);
+        hz = better.select(hn, hz);
+    }
+    let dz = dh(z);
+    let finite = |x: F64s<S>| x.is_finite();
+    let fallback = near_double | outside_cbrt | !finite(z) | !finite(dz);
+    (z, dz, fallback)
+}
