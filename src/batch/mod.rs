@@ -18,6 +18,8 @@
 //! * [`nearest_roots`]: the nearest root of many depressed quartics ([`Quartics`]) at
 //!   once on f64 lanes, the scalar solver's method branch-free, its rare careful cases
 //!   handed back to it.
+//! * [`Wavefront`]: the two together for a batch of world rays: cull, compact the
+//!   survivors, batch-solve, hits; the `"mode": "batch"` timings of `cargo bench`.
 //!
 //! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
@@ -29,9 +31,11 @@ mod lines;
 mod mask;
 mod solve;
 mod vec3s;
+mod wavefront;
 
 pub use cull::{BATCHED, NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
 pub use solve::{Quartics, SolveStats, nearest_roots};
+pub use wavefront::{Wavefront, WavefrontStats};
