@@ -115,74 +115,33 @@ pub fn intersect_local(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
-    let prepared = Prepared::new(major, minor, o, d, t_min, t_max)?;
-    let [c2, c1, c0] = prepared.red.c;
-    let u = nearest_root_depressed(c2, c1, c0, prepared.lo, prepared.hi)?;
-    Some(prepared.finish(u))
-}
-
-/// A line's quartic ready for the solver: the part of [`intersect_local`] before the
-/// root and, in [`Prepared::finish`], the part after it. The wavefront of
-/// [`crate::batch`] runs the same two halves around its batch solver, so a batch hit is
-/// the scalar hit up to the solver's last bits.
-pub(crate) struct Prepared {
-    red: Reduced,
-    major: f64,
-    /// The ray's range in u: roots are searched in `[lo, hi]`.
-    pub(crate) lo: f64,
-    pub(crate) hi: f64,
-}
-
-impl Prepared {
-    /// `None` when the line misses the bounding sphere or its chord lies outside the
-    /// range: no root can be in range.
-    #[inline]
-    pub(crate) fn new(
-        major: f64,
-        minor: f64,
-        o: DVec3,
-        d: DVec3,
-        t_min: f64,
-        t_max: f64,
-    ) -> Option<Prepared> {
-        let red = reduce(major, minor, o, d);
-        // The relative slack keeps lines within rounding of the sphere (the torus's outer
-        // equator) to the solver, which decides tangencies on the quartic itself.
-        let outer = 1.0 + minor / major;
-        let chord_sq = outer * outer * (1.0 + 1e-12) - red.p.length_squared();
-        if chord_sq < 0.0 {
-            return None;
-        }
-        let inv_major = 1.0 / major;
-        let len = 1.0 / red.inv_len;
-        let lo = (t_min * len + red.s) * inv_major;
-        let hi = (t_max * len + red.s) * inv_major;
-        // The chord lies wholly before `lo` or after `hi`: no root in range.
-        let out_of_reach = (lo > 0.0 && lo * lo > chord_sq) || (hi < 0.0 && hi * hi > chord_sq);
-        if out_of_reach {
-            return None;
-        }
-        Some(Prepared { red, major, lo, hi })
+    let red = reduce(major, minor, o, d);
+    // The relative slack keeps lines within rounding of the sphere (the torus's outer
+    // equator) to the solver, which decides tangencies on the quartic itself.
+    let outer = 1.0 + minor / major;
+    let chord_sq = outer * outer * (1.0 + 1e-12) - red.p.length_squared();
+    if chord_sq < 0.0 {
+        return None;
     }
-
-    /// `[c2, c1, c0]` of the depressed monic quartic in u.
-    #[inline]
-    pub(crate) fn coefficients(&self) -> [f64; 3] {
-        self.red.c
+    let inv_major = 1.0 / major;
+    let len = 1.0 / red.inv_len;
+    let lo = (t_min * len + red.s) * inv_major;
+    let hi = (t_max * len + red.s) * inv_major;
+    // The chord lies wholly before `lo` or after `hi`: no root in range.
+    let out_of_reach = (lo > 0.0 && lo * lo > chord_sq) || (hi < 0.0 && hi * hi > chord_sq);
+    if out_of_reach {
+        return None;
     }
+    let [c2, c1, c0] = red.c;
+    let u = nearest_root_depressed(c2, c1, c0, lo, hi)?;
+    let t = (u * major - red.s) * red.inv_len;
 
-    /// The root u as the ray's `t` and the unit outward normal (torus frame).
-    #[inline]
-    pub(crate) fn finish(&self, u: f64) -> (f64, DVec3) {
-        let red = &self.red;
-        let t = (u * self.major - red.s) * red.inv_len;
-        // ∇F ∝ (|x|² + k)·x − 2(x, 0, z), positive multiple of the tube's outward normal on
-        // the surface (the second factor of F is > 0 for a ring torus).
-        let x = red.p + u * red.dh;
-        let w = x.length_squared() + red.k;
-        let grad = DVec3::new(w * x.x - 2.0 * x.x, w * x.y, w * x.z - 2.0 * x.z);
-        (t, grad.normalize())
-    }
+    // ∇F ∝ (|x|² + k)·x − 2(x, 0, z), positive multiple of the tube's outward normal on the
+    // surface (the second factor of F is > 0 for a ring torus).
+    let x = red.p + u * red.dh;
+    let w = x.length_squared() + red.k;
+    let grad = DVec3::new(w * x.x - 2.0 * x.x, w * x.y, w * x.z - 2.0 * x.z);
+    Some((t, grad.normalize()))
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`.
@@ -200,32 +159,12 @@ pub fn intersect(torus: &Torus, ray: &Ray) -> Option<Hit> {
         f64::from(ray.t_min()),
         f64::from(ray.t_max()),
     )?;
-    Some(world_hit(torus, t, n))
-}
-
-/// A ray's [`Prepared`] quartic (world ray → torus frame in f64, as [`intersect`]).
-#[inline]
-pub(crate) fn prepare_ray(torus: &Torus, ray: &Ray) -> Option<Prepared> {
-    let (o, d) = torus.line_to_local_f64(ray);
-    Prepared::new(
-        f64::from(torus.major_radius()),
-        f64::from(torus.minor_radius()),
-        o,
-        d,
-        f64::from(ray.t_min()),
-        f64::from(ray.t_max()),
-    )
-}
-
-/// The hit at `t` with the torus-frame normal `n`, normal in world space.
-#[inline]
-pub(crate) fn world_hit(torus: &Torus, t: f64, n: DVec3) -> Hit {
     // The rotation is orthonormal: its transpose is its inverse.
     let n_world = torus.to_local_rotation_f64().transpose() * n;
-    Hit {
+    Some(Hit {
         t: t as f32,
         normal: n_world.as_vec3(),
-    }
+    })
 }
 
 #[cfg(test)]

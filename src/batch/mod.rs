@@ -25,6 +25,7 @@
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
 
 mod cull;
+mod exact;
 mod isa;
 mod lanes;
 mod lines;

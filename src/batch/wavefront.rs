@@ -1,31 +1,30 @@
-//! The wavefront: cull a batch of rays on lanes, compact the survivors, solve their
-//! quartics on lanes, then turn the roots into hits.
+//! The wavefront: cull a batch of rays on lanes, compact the survivors, intersect them
+//! on lanes, hits.
 //!
 //! This is the cost model of a renderer that traces rays in packets or wavefronts:
 //! every stage runs over many rays at once, so a cull costs what its arithmetic costs
-//! (no mispredicted keep/reject branch per ray) and the solve of the survivors is
-//! amortized over SIMD lanes too. The per-ray work around the two batch kernels (the
-//! f32 transform to the torus frame, the f64 reduction of a survivor to its depressed
-//! quartic, and the normal of a hit) is the scalar path's own code, so a wavefront hit
-//! is the [`crate::intersect_culled`] hit up to the last bits of the solver.
+//! (no mispredicted keep/reject branch per ray) and the survivors' exact intersection
+//! (f64 reduction, solve, normal) is amortized over SIMD lanes too. Both kernels follow
+//! the scalar code step for step ([`super::cull_batch`], and [`super::exact`] for
+//! [`crate::intersect()`]), and the rays whose quartic needs the scalar solver's careful
+//! paths (tangents) get the scalar [`crate::intersect()`] itself; so a wavefront hit is
+//! the [`crate::intersect_culled`] hit up to the last bits of the solver.
 
 use super::cull::{NoBatchForm, cull_batch};
+use super::exact::{Answers, RaysF64, intersect_lanes};
 use super::isa::Dispatch;
-use super::lines::Lines;
+use super::lines::{BLOCK, Lines};
 use super::mask::KeepMask;
-use super::solve::{Quartics, nearest_roots};
-use crate::intersect::{Prepared, prepare_ray, world_hit};
-use crate::{CullBounds, CullKind, Hit, Ray, Torus};
+use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
+use glam::Vec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
 #[derive(Default)]
 pub struct Wavefront {
     lines: Lines,
     keep: KeepMask,
-    quartics: Quartics,
-    /// The survivors that reach the solver: ray index and prepared quartic.
-    pending: Vec<(usize, Prepared)>,
-    roots: Vec<Option<f64>>,
+    survivors: RaysF64,
+    answers: Answers,
 }
 
 /// What one wavefront did.
@@ -33,11 +32,10 @@ pub struct Wavefront {
 pub struct WavefrontStats {
     /// Rays in.
     pub rays: usize,
-    /// Rays the cull kept.
+    /// Rays the cull kept (all of them for `none`): the exact intersection's lanes.
     pub kept: usize,
-    /// Quartics solved (kept rays whose bounding-sphere chord reaches their range).
-    pub solved: usize,
-    /// Of them, solved by the scalar solver (tangent and near-tangent lines).
+    /// Kept rays handed to the scalar [`crate::intersect()`] (tangent and near-tangent
+    /// quartics).
     pub scalar_fallbacks: usize,
     /// Rays with a hit.
     pub hits: usize,
@@ -50,10 +48,10 @@ impl Wavefront {
     }
 
     /// The nearest hit of every ray (`hits[i]` for `rays[i]`, resized), culled with
-    /// `cull` first: what [`crate::intersect_culled`] returns ray by ray, with the batch
+    /// `cull` first: what [`crate::intersect_culled`] returns ray by ray, to the batch
     /// solver's rounding.
     ///
-    /// `none` skips the cull stage (every ray goes to the solver), the baseline.
+    /// `none` skips the cull stage (every ray is intersected): the baseline.
     pub fn intersect(
         &mut self,
         dispatch: &Dispatch,
@@ -65,47 +63,57 @@ impl Wavefront {
     ) -> Result<WavefrontStats, NoBatchForm> {
         hits.clear();
         hits.resize(rays.len(), None);
-        self.pending.clear();
-        self.quartics.clear();
-        // Cull and compact: the kept rays' quartics, in ray order.
-        let kept = if cull == CullKind::None {
-            self.prepare(torus, rays, 0..rays.len());
-            rays.len()
+        // Cull, then compact the survivors into f64 lanes.
+        self.survivors.clear();
+        if cull == CullKind::None {
+            for (i, ray) in rays.iter().enumerate() {
+                self.survivors.push(i, ray);
+            }
         } else {
             self.lines.fill_from_rays(torus, rays);
             cull_batch(dispatch, cull, bounds, &self.lines, &mut self.keep)?;
-            let keep = std::mem::take(&mut self.keep);
-            self.prepare(torus, rays, keep.kept());
-            let kept = keep.count_kept();
-            self.keep = keep;
-            kept
-        };
-        let solve = nearest_roots(dispatch, &self.quartics, &mut self.roots);
-        let mut n_hits = 0;
-        for ((i, prepared), root) in self.pending.iter().zip(&self.roots) {
-            if let Some(u) = *root {
-                let (t, n) = prepared.finish(u);
-                hits[*i] = Some(world_hit(torus, t, n));
-                n_hits += 1;
+            for i in self.keep.kept() {
+                self.survivors.push(i, &rays[i]);
             }
         }
-        Ok(WavefrontStats {
+        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
+        let mut stats = WavefrontStats {
             rays: rays.len(),
-            kept,
-            solved: solve.quartics,
-            scalar_fallbacks: solve.scalar_fallbacks,
-            hits: n_hits,
-        })
-    }
-
-    /// Reduces the rays `kept` to their quartics (those whose chord reaches their range).
-    fn prepare(&mut self, torus: &Torus, rays: &[Ray], kept: impl Iterator<Item = usize>) {
-        for i in kept {
-            if let Some(prepared) = prepare_ray(torus, &rays[i]) {
-                let [c2, c1, c0] = prepared.coefficients();
-                self.quartics.push(c2, c1, c0, prepared.lo, prepared.hi);
-                self.pending.push((i, prepared));
+            kept: self.survivors.len(),
+            ..WavefrontStats::default()
+        };
+        let a = &self.answers;
+        let words = self.survivors.len().div_ceil(BLOCK);
+        for (w, (&hit, &cold)) in a.hit.iter().zip(&a.fallback).take(words).enumerate() {
+            // Padding lanes lie past `len` and are never read.
+            let valid = if (w + 1) * BLOCK <= self.survivors.len() {
+                u64::MAX
+            } else {
+                (1u64 << (self.survivors.len() % BLOCK)) - 1
+            };
+            let mut bits = hit & valid;
+            while bits != 0 {
+                let j = w * BLOCK + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                hits[self.survivors.index[j]] = Some(Hit {
+                    t: a.t[j] as f32,
+                    normal: Vec3::new(
+                        a.normal[0][j] as f32,
+                        a.normal[1][j] as f32,
+                        a.normal[2][j] as f32,
+                    ),
+                });
+            }
+            let mut bits = cold & valid;
+            while bits != 0 {
+                let j = w * BLOCK + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let i = self.survivors.index[j];
+                hits[i] = intersect(torus, &rays[i]);
+                stats.scalar_fallbacks += 1;
             }
         }
+        stats.hits = hits.iter().filter(|h| h.is_some()).count();
+        Ok(stats)
     }
 }

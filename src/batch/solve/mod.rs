@@ -15,7 +15,7 @@
 //! the last bits before the Newton polish.
 
 mod cube_root;
-mod nearest;
+pub(crate) mod nearest;
 mod resolvent;
 
 use super::isa::Dispatch;

@@ -20,7 +20,7 @@ use pulp::Simd;
 /// discriminant is within 10⁻⁷ of zero relative to its size: a tangent or near-tangent
 /// line, decided by the scalar solver on the quartic itself.
 #[inline(always)]
-pub(super) fn nearest_root<S: Simd>(
+pub(crate) fn nearest_root<S: Simd>(
     p: F64s<S>,
     q: F64s<S>,
     r: F64s<S>,
