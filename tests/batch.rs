@@ -1,7 +1,8 @@
 //! Batch culls against their scalar twins and the oracle, at every dispatch level this
 //! CPU has (scalar, AVX2, AVX-512 here; scalar and NEON on AArch64).
 //!
-//! The claim is **bit-identical verdicts**: the batch cull evaluates the scalar cull's
+//! The claim is **bit-identical verdicts** (and bit-identical lines from the lane transform
+//! of world rays, `Lines::fill_from_rays_batch`, against `Torus::line_to_local`): the batch cull evaluates the scalar cull's
 //! expressions in the same order with IEEE-exact lane operations and no fused
 //! multiply-add, so every line's keep bit must equal `Cull::keeps` on the same f32 line.
 //! Equality is asserted on every line, and so is the consequence the renderer cares
@@ -43,6 +44,8 @@ struct Tally {
     mismatches: [usize; BATCHED.len()],
     /// Batch rejects an oracle hit, per cull.
     false_rejects: [usize; BATCHED.len()],
+    /// Lines from the lane transform that differ from `Torus::line_to_local`'s.
+    transform_mismatches: usize,
     examples: Vec<String>,
 }
 
@@ -54,6 +57,24 @@ impl Tally {
         let labels: Vec<OracleClass> = rays.iter().map(|r| classify_line(torus, r).class).collect();
         self.lines += rays.len();
         self.hits += labels.iter().filter(|&&c| c == OracleClass::Hit).count();
+        // The lane transform gives the scalar transform's lines, bit for bit (far origins
+        // take the same f64 foot-point path).
+        for dispatch in levels {
+            let mut batch_lines = Lines::new();
+            batch_lines.fill_from_rays_batch(dispatch, torus, rays);
+            assert_eq!(batch_lines.len(), lines.len());
+            for (i, ray) in rays.iter().enumerate() {
+                let (a, b) = (batch_lines.get(i), lines.get(i));
+                let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
+                if bits(a.origin) != bits(b.origin) || bits(a.dir) != bits(b.dir) {
+                    self.transform_mismatches += 1;
+                    self.note(format!(
+                        "transform at {}: {a:?} vs {b:?}: ray {ray:?}",
+                        dispatch.isa()
+                    ));
+                }
+            }
+        }
         let mut keep = KeepMask::new();
         for (k, &cull) in BATCHED.iter().enumerate() {
             let scalar: Vec<bool> = (0..lines.len())
@@ -102,6 +123,7 @@ impl Tally {
         self.verdicts += o.verdicts;
         self.lines += o.lines;
         self.hits += o.hits;
+        self.transform_mismatches += o.transform_mismatches;
         for k in 0..BATCHED.len() {
             self.mismatches[k] += o.mismatches[k];
             self.false_rejects[k] += o.false_rejects[k];
@@ -113,17 +135,20 @@ impl Tally {
 
     fn assert_clean(&self, what: &str) {
         println!(
-            "{what}: {} lines ({} oracle hits), {} verdicts compared; mismatches {:?}, \
-             rejected hits {:?} (cull order {:?})",
+            "{what}: {} lines ({} oracle hits), {} verdicts compared; transform mismatches {}, \
+             mismatches {:?}, rejected hits {:?} (cull order {:?})",
             self.lines,
             self.hits,
             self.verdicts,
+            self.transform_mismatches,
             self.mismatches,
             self.false_rejects,
             BATCHED.map(|c| c.name())
         );
         assert!(
-            self.mismatches.iter().all(|&n| n == 0) && self.false_rejects.iter().all(|&n| n == 0),
+            self.transform_mismatches == 0
+                && self.mismatches.iter().all(|&n| n == 0)
+                && self.false_rejects.iter().all(|&n| n == 0),
             "{what}: mismatches {:?}, rejected hits {:?}\n{}",
             self.mismatches,
             self.false_rejects,

@@ -27,34 +27,35 @@ pub(crate) struct RaysF64 {
 }
 
 impl RaysF64 {
-    pub(crate) fn clear(&mut self) {
-        self.len = 0;
-        self.index.clear();
-        for c in &mut self.columns {
+    /// The rays `rays[i]` for each `i` of `kept` (ascending, `count` of them), widened to
+    /// f64 exactly, with whole blocks of padding: a ray from (4, 0, 0) along +x,
+    /// harmless, whose answers are dropped.
+    pub(crate) fn fill(&mut self, rays: &[Ray], kept: impl Iterator<Item = usize>, count: usize) {
+        self.len = count;
+        let padded = count.div_ceil(BLOCK) * BLOCK;
+        for (c, pad) in self
+            .columns
+            .iter_mut()
+            .zip([4.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+        {
             c.clear();
+            c.resize(padded, pad);
         }
-    }
-
-    /// Appends `ray` (caller's index `i`), widened to f64 exactly.
-    #[inline]
-    pub(crate) fn push(&mut self, i: usize, ray: &Ray) {
-        if self.len == self.columns[0].len() {
-            // Padding: a ray from (4, 0, 0) along +x: harmless, its answers are dropped.
-            for (c, pad) in self
-                .columns
-                .iter_mut()
-                .zip([4.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
-            {
-                c.resize(c.len() + BLOCK, pad);
-            }
+        self.index.clear();
+        self.index.extend(kept);
+        assert_eq!(
+            self.index.len(),
+            count,
+            "kept lines and their count disagree"
+        );
+        let [ox, oy, oz, dx, dy, dz, lo, hi] = &mut self.columns;
+        for (j, &i) in self.index.iter().enumerate() {
+            let ray = &rays[i];
+            let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
+            (ox[j], oy[j], oz[j]) = (o.x, o.y, o.z);
+            (dx[j], dy[j], dz[j]) = (d.x, d.y, d.z);
+            (lo[j], hi[j]) = (f64::from(ray.t_min()), f64::from(ray.t_max()));
         }
-        let (o, d) = (ray.origin(), ray.dir());
-        let values = [o.x, o.y, o.z, d.x, d.y, d.z, ray.t_min(), ray.t_max()];
-        for (c, v) in self.columns.iter_mut().zip(values) {
-            c[self.len] = f64::from(v);
-        }
-        self.index.push(i);
-        self.len += 1;
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -129,6 +130,14 @@ struct V<S: Simd> {
 }
 
 impl<S: Simd> V<S> {
+    #[inline(always)]
+    fn splat(s: S, v: DVec3) -> V<S> {
+        V {
+            x: F64s::splat(s, v.x),
+            y: F64s::splat(s, v.y),
+            z: F64s::splat(s, v.z),
+        }
+    }
     /// `DVec3::dot`: `(x·x′ + y·y′) + z·z′`.
     #[inline(always)]
     fn dot(self, o: V<S>) -> F64s<S> {
@@ -162,15 +171,10 @@ impl<S: Simd> V<S> {
     #[inline(always)]
     fn rotated(self, m: &DMat3) -> V<S> {
         let s = self.x.s;
-        let col = |c: DVec3| V {
-            x: F64s::splat(s, c.x),
-            y: F64s::splat(s, c.y),
-            z: F64s::splat(s, c.z),
-        };
-        col(m.x_axis)
+        V::splat(s, m.x_axis)
             .scale(self.x)
-            .add(col(m.y_axis).scale(self.y))
-            .add(col(m.z_axis).scale(self.z))
+            .add(V::splat(s, m.y_axis).scale(self.y))
+            .add(V::splat(s, m.z_axis).scale(self.z))
     }
 }
 
@@ -192,27 +196,27 @@ impl WithSimd for Kernel<'_> {
             let (mut hit_bits, mut cold_bits) = (0u64, 0u64);
             for k in (0..BLOCK).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
-                let load = |j: usize| F64s::load(s, &col[j][at.clone()]);
+                macro_rules! load {
+                    ($j:expr) => {
+                        F64s::load(s, &col[$j][at.clone()])
+                    };
+                }
                 let origin = V {
-                    x: load(0),
-                    y: load(1),
-                    z: load(2),
+                    x: load!(0),
+                    y: load!(1),
+                    z: load!(2),
                 };
                 let dir = V {
-                    x: load(3),
-                    y: load(4),
-                    z: load(5),
+                    x: load!(3),
+                    y: load!(4),
+                    z: load!(5),
                 };
-                let lane = intersect_lane(s, &frame, origin, dir, load(6), load(7));
-                let store = |v: &mut Vec<f64>, x: F64s<S>| {
-                    bytemuck::cast_slice_mut::<f64, u8>(&mut v[at.clone()])
-                        .copy_from_slice(bytemuck::bytes_of(&x.v));
-                };
-                store(&mut out.t, lane.t);
+                let lane = intersect_lane(s, &frame, origin, dir, load!(6), load!(7));
+                lane.t.store(&mut out.t[at.clone()]);
                 let [nx, ny, nz] = &mut out.normal;
-                store(nx, lane.normal.x);
-                store(ny, lane.normal.y);
-                store(nz, lane.normal.z);
+                lane.normal.x.store(&mut nx[at.clone()]);
+                lane.normal.y.store(&mut ny[at.clone()]);
+                lane.normal.z.store(&mut nz[at.clone()]);
                 hit_bits |= lane.hit.bits() << k;
                 cold_bits |= lane.fallback.bits() << k;
             }
@@ -240,52 +244,59 @@ fn intersect_lane<S: Simd>(
     t_min: F64s<S>,
     t_max: F64s<S>,
 ) -> Lane<S> {
-    let c = |x: f64| F64s::splat(s, x);
+    // Macros, not closures: a closure that LLVM leaves outlined would run without the
+    // SIMD target features and call every intrinsic out of line.
+    macro_rules! c {
+        ($x:expr) => {
+            F64s::splat(s, $x)
+        };
+    }
     // `Torus::line_to_local_f64`.
     let centre = V {
-        x: c(frame.center.x),
-        y: c(frame.center.y),
-        z: c(frame.center.z),
+        x: c!(frame.center.x),
+        y: c!(frame.center.y),
+        z: c!(frame.center.z),
     };
     let o = origin.sub(centre).rotated(&frame.to_local);
     let d = dir.rotated(&frame.to_local);
     // `reduce`.
-    let (major, minor) = (c(frame.major), c(frame.minor));
-    let inv_len = c(1.0) / d.dot(d).sqrt();
+    let (major, minor) = (c!(frame.major), c!(frame.minor));
+    let inv_len = c!(1.0) / d.dot(d).sqrt();
     let dh = d.scale(inv_len);
     let s_ = o.dot(dh);
-    let inv_r = c(1.0) / major;
+    let inv_r = c!(1.0) / major;
     let p = o.sub(dh.scale(s_)).scale(inv_r);
     let rr = minor * inv_r;
-    let k = c(1.0) - rr * rr;
+    let k = c!(1.0) - rr * rr;
     let rho = (p.x * p.x + p.z * p.z).sqrt();
     let tube = (p.y - rr) * (p.y + rr);
-    let c2 = c(2.0) * (rho - c(1.0)) * (rho + c(1.0)) + c(2.0) * tube + c(4.0) * dh.y * dh.y;
+    let c2 = c!(2.0) * (rho - c!(1.0)) * (rho + c!(1.0)) + c!(2.0) * tube + c!(4.0) * dh.y * dh.y;
     let delta = p.dot(dh);
-    let c1 = c(8.0) * (p.y - delta * dh.y) * dh.y;
-    let c0 = ((rho - c(1.0)) * (rho - c(1.0)) + tube) * ((rho + c(1.0)) * (rho + c(1.0)) + tube);
+    let c1 = c!(8.0) * (p.y - delta * dh.y) * dh.y;
+    let c0 =
+        ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
     // `intersect_local`: the chord of the bounding sphere and the range.
-    let outer = c(1.0) + minor / major;
-    let chord_sq = outer * outer * c(1.0 + 1e-12) - p.dot(p);
-    let inv_major = c(1.0) / major;
-    let len = c(1.0) / inv_len;
+    let outer = c!(1.0) + minor / major;
+    let chord_sq = outer * outer * c!(1.0 + 1e-12) - p.dot(p);
+    let inv_major = c!(1.0) / major;
+    let len = c!(1.0) / inv_len;
     let lo = (t_min * len + s_) * inv_major;
     let hi = (t_max * len + s_) * inv_major;
     let out_of_reach =
-        (lo.gt(c(0.0)) & (lo * lo).gt(chord_sq)) | (hi.lt(c(0.0)) & (hi * hi).gt(chord_sq));
-    let reaches = !chord_sq.lt(c(0.0)) & !out_of_reach;
+        (lo.gt(c!(0.0)) & (lo * lo).gt(chord_sq)) | (hi.lt(c!(0.0)) & (hi * hi).gt(chord_sq));
+    let reaches = !chord_sq.lt(c!(0.0)) & !out_of_reach;
     // The nearest root, then `t`, the normal, and the normal in the world (`intersect`).
     let (u, cold) = nearest_root(c2, c1, c0, lo, hi);
     let t = (u * major - s_) * inv_len;
     let x = p.add(dh.scale(u));
     let w = x.dot(x) + k;
     let grad = V {
-        x: w * x.x - c(2.0) * x.x,
+        x: w * x.x - c!(2.0) * x.x,
         y: w * x.y,
-        z: w * x.z - c(2.0) * x.z,
+        z: w * x.z - c!(2.0) * x.z,
     };
     let normal = grad
-        .scale(c(1.0) / grad.dot(grad).sqrt())
+        .scale(c!(1.0) / grad.dot(grad).sqrt())
         .rotated(&frame.to_world);
     let found = !u.is_nan();
     Lane {

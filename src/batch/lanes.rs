@@ -224,6 +224,12 @@ impl<S: Simd> F32s<S> {
         }
     }
 
+    /// Writes the lanes to `slice` (exactly `S::F32_LANES` values).
+    #[inline(always)]
+    pub(crate) fn store(self, slice: &mut [f32]) {
+        bytemuck::cast_slice_mut::<f32, u8>(slice).copy_from_slice(bytemuck::bytes_of(&self.v));
+    }
+
     /// `self` times the power of two 2^(127 − e), e the biased exponent of `exp_of`:
     /// the integer half of [`crate::cull`]'s `rescaled` (exact).
     #[inline(always)]
@@ -267,6 +273,15 @@ impl<S: Simd> F64s<S> {
             s,
             v: bytemuck::pod_read_unaligned(bytemuck::cast_slice::<f64, u8>(slice)),
         }
+    }
+}
+
+#[allow(dead_code)]
+impl<S: Simd> F64s<S> {
+    /// Writes the lanes to `slice` (exactly `S::F64_LANES` values).
+    #[inline(always)]
+    pub(crate) fn store(self, slice: &mut [f64]) {
+        bytemuck::cast_slice_mut::<f64, u8>(slice).copy_from_slice(bytemuck::bytes_of(&self.v));
     }
 }
 

@@ -43,6 +43,36 @@ impl Lines {
         }
     }
 
+    /// The rays' world origins and directions, untransformed (the first step of
+    /// [`Lines::fill_from_rays_batch`]), with whole blocks of padding.
+    pub(crate) fn fill_world(&mut self, rays: &[Ray]) {
+        self.len = rays.len();
+        let padded = rays.len().div_ceil(BLOCK) * BLOCK;
+        for (v, pad) in self.origin.iter_mut().zip([0.0, 0.0, 0.0]) {
+            v.clear();
+            v.resize(padded, pad);
+        }
+        for (v, pad) in self.dir.iter_mut().zip([1.0, 0.0, 0.0]) {
+            v.clear();
+            v.resize(padded, pad);
+        }
+        let [ox, oy, oz] = &mut self.origin;
+        let [dx, dy, dz] = &mut self.dir;
+        for (i, ray) in rays.iter().enumerate() {
+            let (o, d) = (ray.origin(), ray.dir());
+            (ox[i], oy[i], oz[i]) = (o.x, o.y, o.z);
+            (dx[i], dy[i], dz[i]) = (d.x, d.y, d.z);
+        }
+    }
+
+    /// Overwrites line `i`.
+    pub(crate) fn set(&mut self, i: usize, origin: Vec3, dir: Vec3) {
+        for k in 0..3 {
+            self.origin[k][i] = origin[k];
+            self.dir[k][i] = dir[k];
+        }
+    }
+
     /// From lines already in the torus frame.
     pub fn from_local(lines: &[LocalLine]) -> Lines {
         let mut out = Lines::new();

@@ -26,6 +26,7 @@
 
 mod cull;
 mod exact;
+mod frame;
 mod isa;
 mod lanes;
 mod lines;

@@ -20,6 +20,16 @@ impl<S: Simd> Vec3s<S> {
         Vec3s { x, y, z }
     }
 
+    /// Every lane `v`.
+    #[inline(always)]
+    pub(crate) fn splat(s: S, v: glam::Vec3) -> Self {
+        Vec3s {
+            x: F32s::splat(s, v.x),
+            y: F32s::splat(s, v.y),
+            z: F32s::splat(s, v.z),
+        }
+    }
+
     /// `Vec3::dot`: `(x·x′ + y·y′) + z·z′`.
     #[inline(always)]
     pub(crate) fn dot(self, o: Self) -> F32s<S> {

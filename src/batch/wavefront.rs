@@ -64,17 +64,13 @@ impl Wavefront {
         hits.clear();
         hits.resize(rays.len(), None);
         // Cull, then compact the survivors into f64 lanes.
-        self.survivors.clear();
         if cull == CullKind::None {
-            for (i, ray) in rays.iter().enumerate() {
-                self.survivors.push(i, ray);
-            }
+            self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {
-            self.lines.fill_from_rays(torus, rays);
+            self.lines.fill_from_rays_batch(dispatch, torus, rays);
             cull_batch(dispatch, cull, bounds, &self.lines, &mut self.keep)?;
-            for i in self.keep.kept() {
-                self.survivors.push(i, &rays[i]);
-            }
+            let count = self.keep.count_kept();
+            self.survivors.fill(rays, self.keep.kept(), count);
         }
         intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
         let mut stats = WavefrontStats {

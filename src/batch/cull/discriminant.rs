@@ -18,17 +18,21 @@ pub(super) struct Discriminant;
 impl LaneCull for Discriminant {
     #[inline(always)]
     fn keeps<S: Simd>(self, s: S, b: &CullBounds, origin: Vec3s<S>, dir: Vec3s<S>) -> M32s<S> {
-        let c = |x: f32| F32s::splat(s, x);
+        macro_rules! c {
+            ($x:expr) => {
+                F32s::splat(s, $x)
+            };
+        }
         let d = moderate(dir);
         let m = origin.cross(d);
-        let inv_len_sq = c(1.0) / d.length_squared();
+        let inv_len_sq = c!(1.0) / d.length_squared();
         let f_sq = m.length_squared() * inv_len_sq;
         let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
-        let inside_sphere = f_sq.le(c(b.outer_safe_sq));
-        let fy_sq = f_y * f_y * c(b.inv_major_sq);
-        let rho_sq = f_sq * c(b.inv_major_sq) - fy_sq;
+        let inside_sphere = f_sq.le(c!(b.outer_safe_sq));
+        let fy_sq = f_y * f_y * c!(b.inv_major_sq);
+        let rho_sq = f_sq * c!(b.inv_major_sq) - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
-        inside_sphere & !no_real_root(s, rho_sq, fy_sq, unit_y_sq, c(b.minor_rel_sq))
+        inside_sphere & !no_real_root(s, rho_sq, fy_sq, unit_y_sq, c!(b.minor_rel_sq))
     }
 }
 
@@ -42,15 +46,19 @@ fn no_real_root<S: Simd>(
     unit_y_sq: F32s<S>,
     minor_sq: F32s<S>,
 ) -> M32s<S> {
-    let c = |x: f32| F32s::splat(s, x);
-    let rho_sq_m1 = rho_sq - c(1.0);
+    macro_rules! c {
+        ($x:expr) => {
+            F32s::splat(s, $x)
+        };
+    }
+    let rho_sq_m1 = rho_sq - c!(1.0);
     let b = fy_sq - minor_sq;
-    let p = rho_sq_m1 + b + c(2.0) * unit_y_sq;
-    let s_ = rho_sq_m1 * rho_sq_m1 + b * (c(2.0) * (rho_sq + c(1.0)) + b);
+    let p = rho_sq_m1 + b + c!(2.0) * unit_y_sq;
+    let s_ = rho_sq_m1 * rho_sq_m1 + b * (c!(2.0) * (rho_sq + c!(1.0)) + b);
     let q_sq = fy_sq * unit_y_sq;
     let p_sq = p * p;
     let s_minus_p_sq = s_ - p_sq;
     let delta = s_ * s_minus_p_sq * s_minus_p_sq
-        - c(8.0) * q_sq * (p_sq * p - c(9.0) * p * s_ + c(54.0) * q_sq);
-    delta.gt(c(0.0)) & (p.gt(c(0.0)) | s_minus_p_sq.gt(c(0.0)))
+        - c!(8.0) * q_sq * (p_sq * p - c!(9.0) * p * s_ + c!(54.0) * q_sq);
+    delta.gt(c!(0.0)) & (p.gt(c!(0.0)) | s_minus_p_sq.gt(c!(0.0)))
 }

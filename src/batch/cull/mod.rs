@@ -179,9 +179,15 @@ impl<C: LaneCull> WithSimd for Run<'_, C> {
             let mut bits = 0u64;
             for k in (0..BLOCK).step_by(lanes) {
                 let at = base + k..base + k + lanes;
-                let load = |v: &Vec<f32>| F32s::load(s, &v[at.clone()]);
-                let origin = Vec3s::new(load(ox), load(oy), load(oz));
-                let dir = Vec3s::new(load(dx), load(dy), load(dz));
+                // A macro, not a closure: a closure that LLVM leaves outlined would run
+                // without the SIMD target features.
+                macro_rules! load {
+                    ($v:expr) => {
+                        F32s::load(s, &$v[at.clone()])
+                    };
+                }
+                let origin = Vec3s::new(load!(ox), load!(oy), load!(oz));
+                let dir = Vec3s::new(load!(dx), load!(dy), load!(dz));
                 bits |= cull.keeps(s, bounds, origin, dir).bits() << k;
             }
             *word = bits;

@@ -24,7 +24,11 @@ pub(super) struct Skala;
 impl LaneCull for Skala {
     #[inline(always)]
     fn keeps<S: Simd>(self, s: S, b: &CullBounds, origin: Vec3s<S>, dir: Vec3s<S>) -> M32s<S> {
-        let c = |x: f32| F32s::splat(s, x);
+        macro_rules! c {
+            ($x:expr) => {
+                F32s::splat(s, $x)
+            };
+        }
         let SphereSlab {
             foot: p,
             half_chord_sq,
@@ -34,28 +38,28 @@ impl LaneCull for Skala {
         let d = rescaled(dir);
         let len_sq = d.length_squared();
         let h_sq = d.x * d.x + d.z * d.z;
-        let axis_parallel = h_sq.lt(c(AXIS_PARALLEL_H2) * len_sq);
-        let axis_keep = (p.x * p.x + p.z * p.z).gt(c(b.inner_safe_sq));
+        let axis_parallel = h_sq.lt(c!(AXIS_PARALLEL_H2) * len_sq);
+        let axis_keep = (p.x * p.x + p.z * p.z).gt(c!(b.inner_safe_sq));
         let a_h = (p.x * d.z - p.z * d.x).abs();
         let a_h_sq = a_h * a_h;
         let h = h_sq.sqrt();
 
         // Outer band (cases c, d): lowest² + (a − R)² ≤ r_η², times h².
-        let band = a_h_sq.ge(c(b.major_radius) * c(b.major_radius) * h_sq);
+        let band = a_h_sq.ge(c!(b.major_radius) * c!(b.major_radius) * h_sq);
         let reach_sq = unit_y_sq * half_chord_sq;
         let crosses_mid_plane = (p.y * p.y).le(reach_sq);
         let lowest = p.y.abs() - reach_sq.sqrt();
-        let off = a_h - c(b.major_radius) * h;
-        let band_height_sq_h2 = c(b.minor_safe_sq) * h * h - off * off;
+        let off = a_h - c!(b.major_radius) * h;
+        let band_height_sq_h2 = c!(b.minor_safe_sq) * h * h - off * off;
         let band_keep = crosses_mid_plane | (lowest * lowest * h_sq).le(band_height_sq_h2);
 
         // Hole (case a): reject if x_B·h·|d_y| ≥ |M| + r_η·h·(|d| − |d_y|), squared.
-        let hole = a_h_sq.lt(c(b.inner_safe_sq) * h_sq);
+        let hole = a_h_sq.lt(c!(b.inner_safe_sq) * h_sq);
         let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
-        let edge = (c(b.inner_safe_sq) * h_sq - a_h * a_h) * (d.y * d.y);
+        let edge = (c!(b.inner_safe_sq) * h_sq - a_h * a_h) * (d.y * d.y);
         let out_of_reach = edge.lt(moment * moment);
         let len = len_sq.sqrt();
-        let rhs = moment.abs() + c(b.minor_safe) * h * (len - d.y.abs());
+        let rhs = moment.abs() + c!(b.minor_safe) * h * (len - d.y.abs());
         let hole_keep = out_of_reach | edge.lt(rhs * rhs);
 
         let by_case = axis_parallel.select_mask(

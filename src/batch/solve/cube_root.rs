@@ -62,18 +62,22 @@ pub(crate) fn cbrt<S: Simd>(y: F64s<S>) -> F64s<S> {
 #[inline(always)]
 pub(crate) fn trisect_cos<S: Simd>(x: F64s<S>) -> F64s<S> {
     let s = x.s;
-    let c = |v: f64| F64s::splat(s, v);
-    let rhs = c(2.0) * (c(1.0) + x);
-    let mut u = (rhs / c(3.0)).sqrt().min_num(c(1.0));
+    macro_rules! c {
+        ($x:expr) => {
+            F64s::splat(s, $x)
+        };
+    }
+    let rhs = c!(2.0) * (c!(1.0) + x);
+    let mut u = (rhs / c!(3.0)).sqrt().min_num(c!(1.0));
     for _ in 0..3 {
-        let f = u * u * (c(3.0) + u) - rhs;
-        let df = c(6.0) * u + c(3.0) * u * u;
-        let d2f = c(6.0) + c(6.0) * u;
-        u = u - c(2.0) * f * df / (c(2.0) * df * df - f * d2f);
+        let f = u * u * (c!(3.0) + u) - rhs;
+        let df = c!(6.0) * u + c!(3.0) * u * u;
+        let d2f = c!(6.0) + c!(6.0) * u;
+        u = u - c!(2.0) * f * df / (c!(2.0) * df * df - f * d2f);
     }
     // rhs = 0 (x = −1) has the double root u = 0, where Halley's step is 0/0.
-    let u = rhs.gt(c(0.0)).select(u, c(0.0));
-    c(0.5) * (c(1.0) + u)
+    let u = rhs.gt(c!(0.0)).select(u, c!(0.0));
+    c!(0.5) * (c!(1.0) + u)
 }
 
 #[cfg(test)]

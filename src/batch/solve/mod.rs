@@ -150,9 +150,15 @@ impl WithSimd for Solve<'_> {
             let mut bits = 0u64;
             for k in (0..BLOCK).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
-                let load = |v: &Vec<f64>| F64s::load(s, &v[at.clone()]);
+                // A macro, not a closure: a closure that LLVM leaves outlined would run
+                // without the SIMD target features.
+                macro_rules! load {
+                    ($v:expr) => {
+                        F64s::load(s, &$v[at.clone()])
+                    };
+                }
                 let (root, cold) =
-                    nearest::nearest_root(load(p), load(q), load(r), load(lo), load(hi));
+                    nearest::nearest_root(load!(p), load!(q), load!(r), load!(lo), load!(hi));
                 let out = bytemuck::cast_slice_mut::<f64, u8>(&mut self.roots[at]);
                 out.copy_from_slice(bytemuck::bytes_of(&root.v));
                 bits |= cold.bits() << k;

@@ -7,7 +7,7 @@ use crate::quartic::DISC_NEAR;
 use pulp::Simd;
 
 /// `(z, h′(z), fallback)`: z ≥ 0 the greatest root of
-/// h(z) = z³ + 2p z² + (p² − 4r) z − q² for x⁴ + p x² + q x + r, and the lanes the
+/// h!(z) = z³ + 2p z² + (p² − 4r) z − q² for x⁴ + p x² + q x + r, and the lanes the
 /// scalar solver must take instead.
 ///
 /// As in the scalar solver: z = w − 2p/3 with w the greatest root of the depressed cubic
@@ -27,50 +27,77 @@ pub(super) fn greatest_root<S: Simd>(
     r: F64s<S>,
 ) -> (F64s<S>, F64s<S>, M64s<S>) {
     let s = p.s;
-    let c_ = |x: f64| F64s::splat(s, x);
-    let a = c_(2.0) * p;
-    let b = p * p - c_(4.0) * r;
+    // Macros, not closures: a closure that LLVM leaves outlined would run without the
+    // SIMD target features and call every intrinsic out of line.
+    macro_rules! c_ {
+        ($x:expr) => {
+            F64s::splat(s, $x)
+        };
+    }
+    let a = c_!(2.0) * p;
+    let b = p * p - c_!(4.0) * r;
     let c = -q * q;
-    let a3 = a / c_(3.0);
-    let third_p = (b - a * a3) / c_(3.0);
-    let half_q = c_(0.5) * (c - a3 * (b - c_(2.0) * a3 * a3));
+    let a3 = a / c_!(3.0);
+    let third_p = (b - a * a3) / c_!(3.0);
+    let half_q = c_!(0.5) * (c - a3 * (b - c_!(2.0) * a3 * a3));
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
-    let near_double = !disc.abs().gt(c_(DISC_NEAR) * scale);
+    let near_double = !disc.abs().gt(c_!(DISC_NEAR) * scale);
 
-    // Cardano: u = ∓∛(|Q′| + √Δ), the sign opposite to Q′'s, w = u − P′/u.
-    let big_arg = half_q.abs() + disc.sqrt();
-    let big = cbrt(big_arg);
-    let u = half_q.gt(c_(0.0)).select(-big, big);
-    let cardano = u.eq(c_(0.0)).select(c_(0.0), u - third_p / u);
-    let outside_cbrt =
-        disc.gt(c_(0.0)) & !(big_arg.ge(c_(CBRT_RANGE.0)) & big_arg.le(c_(CBRT_RANGE.1)));
+    // Each formula runs only if a lane of this register needs it: in a register whose
+    // lanes agree (often, on coherent rays) that halves the work; otherwise both run and
+    // the lane's case selects.
+    let one_real = disc.gt(c_!(0.0));
+    let cases = one_real.bits();
+    let all = u64::MAX >> (64 - S::F64_LANES);
+    let (cardano, outside_cbrt) = if cases != 0 {
+        // Cardano: u = ∓∛(|Q′| + √Δ), the sign opposite to Q′'s, w = u − P′/u.
+        let big_arg = half_q.abs() + disc.sqrt();
+        let big = cbrt(big_arg);
+        let u = half_q.gt(c_!(0.0)).select(-big, big);
+        let w = u.eq(c_!(0.0)).select(c_!(0.0), u - third_p / u);
+        let in_range = big_arg.ge(c_!(CBRT_RANGE.0)) & big_arg.le(c_!(CBRT_RANGE.1));
+        (w, one_real & !in_range)
+    } else {
+        (c_!(0.0), one_real)
+    };
+    let trig = if cases != all {
+        // Three real roots: w = 2k·cos(arccos(−Q′/k³)/3), k = √(−P′).
+        let k = (-third_p).max_num(c_!(0.0)).sqrt();
+        let cos3 = (-half_q / (k * k * k)).max_num(c_!(-1.0)).min_num(c_!(1.0));
+        k.eq(c_!(0.0))
+            .select(c_!(0.0), c_!(2.0) * k * trisect_cos(cos3))
+    } else {
+        c_!(0.0)
+    };
 
-    // Three real roots: w = 2k·cos(arccos(−Q′/k³)/3), k = √(−P′).
-    let k = (-third_p).max_num(c_(0.0)).sqrt();
-    let cos3 = (-half_q / (k * k * k)).max_num(c_(-1.0)).min_num(c_(1.0));
-    let trig = k
-        .eq(c_(0.0))
-        .select(c_(0.0), c_(2.0) * k * trisect_cos(cos3));
-
-    let w = disc.gt(c_(0.0)).select(cardano, trig);
-    let h = |z: F64s<S>| ((z + a) * z + b) * z + c;
-    let dh = |z: F64s<S>| (c_(3.0) * z + c_(2.0) * a) * z + b;
-    let mut z = (w - a3).max_num(c_(0.0));
-    let tiny = b.gt(c_(0.0)) & (z * (z + a.abs())).le(c_(1e-3) * b);
+    let w = one_real.select(cardano, trig);
+    macro_rules! h {
+        ($z:expr) => {{
+            let z: F64s<S> = $z;
+            ((z + a) * z + b) * z + c
+        }};
+    }
+    macro_rules! dh {
+        ($z:expr) => {{
+            let z: F64s<S> = $z;
+            (c_!(3.0) * z + c_!(2.0) * a) * z + b
+        }};
+    }
+    let mut z = (w - a3).max_num(c_!(0.0));
+    let tiny = b.gt(c_!(0.0)) & (z * (z + a.abs())).le(c_!(1e-3) * b);
     let z_fixed = q * q / b;
     let z_fixed = q * q / ((z_fixed + a) * z_fixed + b);
     z = tiny.select(z_fixed, z);
-    let mut hz = h(z);
+    let mut hz = h!(z);
     for _ in 0..2 {
-        let zn = (z - hz / dh(z)).max_num(c_(0.0));
-        let hn = h(zn);
+        let zn = (z - hz / dh!(z)).max_num(c_!(0.0));
+        let hn = h!(zn);
         let better = hn.abs().lt(hz.abs());
         z = better.select(zn, z);
         hz = better.select(hn, hz);
     }
-    let dz = dh(z);
-    let finite = |x: F64s<S>| x.is_finite();
-    let fallback = near_double | outside_cbrt | !finite(z) | !finite(dz);
+    let dz = dh!(z);
+    let fallback = near_double | outside_cbrt | !z.is_finite() | !dz.is_finite();
     (z, dz, fallback)
 }
