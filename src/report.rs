@@ -142,6 +142,8 @@ pub fn ratio_tables(results: &Results) -> String {
             let what = match r.metric.as_str() {
                 "total_ns" => "total (cull + exact intersection)",
                 "cull_ns" => "cull alone",
+                "batch_total_ns" => "batch total (wavefront: SIMD cull + lane intersection)",
+                "batch_cull_ns" => "batch cull alone (SIMD)",
                 other => other,
             };
             (format!("{}: {what} / {}", r.case, r.reference), r)

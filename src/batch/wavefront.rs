@@ -19,7 +19,7 @@ use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
 use glam::Vec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
-#[derive(Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Wavefront {
     lines: Lines,
     keep: KeepMask,
