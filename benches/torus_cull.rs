@@ -31,9 +31,9 @@
 //! rejection sweep; a complete file is never touched by it. `--list`, `--test` and
 //! `--profile-time` write nothing, and `--list` does no setup.
 //!
-//! And the headline: the paired, interleaved ratios of `torus-cull time` for the same
-//! cases and ν (each cull against cychosz and none, both metrics, in shuffled rounds on
-//! the same rays; see [`torus_cull::paired`]).
+//! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
+//! the same cases and ν (each cull against cychosz and none, the scalar and the batch
+//! metrics, in shuffled rounds on the same rays; see [`torus_cull::paired`]).
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -377,7 +377,7 @@ fn bench() -> Result<ExitCode, String> {
     results.timing = timing_records(&home, &batches, config.batch, started);
     if complete {
         // The paired ratios take a minute: only a complete run pays for them.
-        results.ratio = paired_ratios(&batches, &config);
+        results.ratio = paired_ratios(&batches, &config, &dispatch);
         stage("paired ratios done");
     }
     results.solver = solver::records(&home, &solver_sets, started, &dispatch);
@@ -507,8 +507,12 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
 }
 
 /// Paired, interleaved ratios of every timed cull against cychosz and none, on the first
-/// rays of each timed batch (the engine `torus-cull time` uses).
-fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRecord> {
+/// rays of each timed batch (the engine `torus-cull time` uses), in both modes.
+fn paired_ratios(
+    batches: &[LabeledBatch],
+    config: &BenchConfig,
+    dispatch: &Dispatch,
+) -> Vec<RatioRecord> {
     let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
     let units: Vec<paired::Unit<'_>> = batches
         .iter()
@@ -520,7 +524,8 @@ fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRec
             seed: l.batch.stream_seed,
         })
         .collect();
-    let options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    let mut options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    options.batch_isa = Some(dispatch.isa());
     paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
         .unwrap_or_else(|e| panic!("{e}"))
 }
