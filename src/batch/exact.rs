@@ -105,18 +105,30 @@ struct Frame {
     to_local: DMat3,
     to_world: DMat3,
     major: f64,
-    minor: f64,
+    /// The per-torus constants of `reduce` and the chord test, computed once in f64
+    /// exactly as the scalar code computes them per ray: 1/R, r/R, 1 − (r/R)², 1 + r/R.
+    inv_major: f64,
+    minor_rel: f64,
+    k: f64,
+    outer: f64,
 }
 
 impl Frame {
     fn of(torus: &Torus) -> Frame {
         let to_local = torus.to_local_rotation_f64();
+        let (major, minor) = (
+            f64::from(torus.major_radius()),
+            f64::from(torus.minor_radius()),
+        );
         Frame {
             center: torus.center().as_dvec3(),
             to_local,
             to_world: to_local.transpose(),
-            major: f64::from(torus.major_radius()),
-            minor: f64::from(torus.minor_radius()),
+            major,
+            inv_major: 1.0 / major,
+            minor_rel: minor * (1.0 / major),
+            k: 1.0 - (minor * (1.0 / major)) * (minor * (1.0 / major)),
+            outer: 1.0 + minor / major,
         }
     }
 }
@@ -260,14 +272,14 @@ fn intersect_lane<S: Simd>(
     let o = origin.sub(centre).rotated(&frame.to_local);
     let d = dir.rotated(&frame.to_local);
     // `reduce`.
-    let (major, minor) = (c!(frame.major), c!(frame.minor));
+    let major = c!(frame.major);
     let inv_len = c!(1.0) / d.dot(d).sqrt();
     let dh = d.scale(inv_len);
     let s_ = o.dot(dh);
-    let inv_r = c!(1.0) / major;
+    let inv_r = c!(frame.inv_major);
     let p = o.sub(dh.scale(s_)).scale(inv_r);
-    let rr = minor * inv_r;
-    let k = c!(1.0) - rr * rr;
+    let rr = c!(frame.minor_rel);
+    let k = c!(frame.k);
     let rho = (p.x * p.x + p.z * p.z).sqrt();
     let tube = (p.y - rr) * (p.y + rr);
     let c2 = c!(2.0) * (rho - c!(1.0)) * (rho + c!(1.0)) + c!(2.0) * tube + c!(4.0) * dh.y * dh.y;
@@ -276,9 +288,9 @@ fn intersect_lane<S: Simd>(
     let c0 =
         ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
     // `intersect_local`: the chord of the bounding sphere and the range.
-    let outer = c!(1.0) + minor / major;
+    let outer = c!(frame.outer);
     let chord_sq = outer * outer * c!(1.0 + 1e-12) - p.dot(p);
-    let inv_major = c!(1.0) / major;
+    let inv_major = inv_r;
     let len = c!(1.0) / inv_len;
     let lo = (t_min * len + s_) * inv_major;
     let hi = (t_max * len + s_) * inv_major;

@@ -56,8 +56,12 @@ impl Lines {
             v.clear();
             v.resize(padded, pad);
         }
+        let n = rays.len();
+        // Sliced to the rays' length, so the indexing below needs no bounds checks.
         let [ox, oy, oz] = &mut self.origin;
+        let (ox, oy, oz) = (&mut ox[..n], &mut oy[..n], &mut oz[..n]);
         let [dx, dy, dz] = &mut self.dir;
+        let (dx, dy, dz) = (&mut dx[..n], &mut dy[..n], &mut dz[..n]);
         for (i, ray) in rays.iter().enumerate() {
             let (o, d) = (ray.origin(), ray.dir());
             (ox[i], oy[i], oz[i]) = (o.x, o.y, o.z);

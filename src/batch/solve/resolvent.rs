@@ -37,8 +37,11 @@ pub(super) fn greatest_root<S: Simd>(
     let a = c_!(2.0) * p;
     let b = p * p - c_!(4.0) * r;
     let c = -q * q;
-    let a3 = a / c_!(3.0);
-    let third_p = (b - a * a3) / c_!(3.0);
+    // Thirds by multiplication (the scalar code divides): a division costs a lane as
+    // much as ten multiplies, and the last bit of these is polished away by Newton below.
+    let third = c_!(1.0 / 3.0);
+    let a3 = a * third;
+    let third_p = (b - a * a3) * third;
     let half_q = c_!(0.5) * (c - a3 * (b - c_!(2.0) * a3 * a3));
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
@@ -86,9 +89,13 @@ pub(super) fn greatest_root<S: Simd>(
     }
     let mut z = (w - a3).max_num(c_!(0.0));
     let tiny = b.gt(c_!(0.0)) & (z * (z + a.abs())).le(c_!(1e-3) * b);
-    let z_fixed = q * q / b;
-    let z_fixed = q * q / ((z_fixed + a) * z_fixed + b);
-    z = tiny.select(z_fixed, z);
+    if tiny.bits() != 0 {
+        // Rare (a line nearly through the foot point's quartic minimum): only a register
+        // with such a lane pays the two divisions.
+        let z_fixed = q * q / b;
+        let z_fixed = q * q / ((z_fixed + a) * z_fixed + b);
+        z = tiny.select(z_fixed, z);
+    }
     let mut hz = h!(z);
     for _ in 0..2 {
         let zn = (z - hz / dh!(z)).max_num(c_!(0.0));
