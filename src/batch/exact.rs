@@ -206,7 +206,8 @@ impl WithSimd for Kernel<'_> {
         let col = &rays.columns;
         for block in 0..rays.padded() / BLOCK {
             let (mut hit_bits, mut cold_bits) = (0u64, 0u64);
-            for k in (0..BLOCK).step_by(lanes) {
+            // The last block stops at the register holding the last ray.
+            for k in (0..BLOCK.min(rays.len() - block * BLOCK)).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
                 macro_rules! load {
                     ($j:expr) => {

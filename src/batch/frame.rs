@@ -85,7 +85,8 @@ impl WithSimd for ToLocal<'_> {
         let near = F32s::splat(s, near_sq);
         for (block, word) in far.iter_mut().enumerate() {
             let mut bits = 0u64;
-            for k in (0..BLOCK).step_by(lanes) {
+            // The last block stops at the register holding the last line.
+            for k in (0..BLOCK.min(lines.len() - block * BLOCK)).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
                 let [ox, oy, oz] = &mut lines.origin;
                 let origin = Vec3s::new(

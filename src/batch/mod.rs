@@ -20,10 +20,13 @@
 //!   handed back to it.
 //! * [`Wavefront`]: the two together for a batch of world rays: cull, compact the
 //!   survivors, batch-solve, hits; the `"mode": "batch"` timings of `cargo bench`.
+//! * [`trace_leaves_batched`]: a many-torus scene's BVH in batch mode (collect each ray's
+//!   leaf candidates, then the wavefront torus by torus), and why obvhs allows no more.
 //!
 //! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
 
+mod bvh;
 mod cull;
 mod exact;
 mod frame;
@@ -35,6 +38,7 @@ mod solve;
 mod vec3s;
 mod wavefront;
 
+pub use bvh::{LeafBatchStats, trace_leaves_batched};
 pub use cull::{BATCHED, NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};

@@ -177,7 +177,9 @@ impl<C: LaneCull> WithSimd for Run<'_, C> {
         for (block, word) in words.iter_mut().enumerate().take(lines.blocks()) {
             let base = block * BLOCK;
             let mut bits = 0u64;
-            for k in (0..BLOCK).step_by(lanes) {
+            // The last block stops at the register holding the last line: a small batch
+            // (a BVH leaf's rays) pays for its own lanes, not for a whole block.
+            for k in (0..BLOCK.min(lines.len() - base)).step_by(lanes) {
                 let at = base + k..base + k + lanes;
                 // A macro, not a closure: a closure that LLVM leaves outlined would run
                 // without the SIMD target features.

@@ -148,7 +148,8 @@ impl WithSimd for Solve<'_> {
         let [p, q, r, lo, hi] = &self.quartics.columns;
         for (block, word) in self.fallback.iter_mut().enumerate() {
             let mut bits = 0u64;
-            for k in (0..BLOCK).step_by(lanes) {
+            // The last block stops at the register holding the last quartic.
+            for k in (0..BLOCK.min(self.quartics.len() - block * BLOCK)).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
                 // A macro, not a closure: a closure that LLVM leaves outlined would run
                 // without the SIMD target features.
