@@ -25,6 +25,15 @@
 //!
 //! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
+//! Why pulp: it dispatches at run time to AVX-512, AVX2 + FMA, NEON or a scalar fallback
+//! from one binary (`wide` picks its width at compile time; `std::simd` needs nightly and
+//! has no dispatch of its own; `multiversion` clones functions but leaves vectorizing to
+//! the compiler, which branchy culls defeat), it exposes every operation explicitly, so
+//! nothing is fused or reordered behind the code's back (the bit-identity above rests on
+//! that), and it gives AVX-512 masks as bit masks, one instruction from a keep bit
+//! mask. `fearless_simd` (1.x, also with runtime dispatch and an AVX-512 level) is the
+//! closest alternative; pulp was taken for its longer record (the SIMD layer of `faer`)
+//! and its mask-register support, not by a measurement of both on this code.
 
 mod bvh;
 mod cull;
