@@ -6,7 +6,17 @@
 //! * `total_ns`: [`intersect_culled`] on world rays (transform, cull, quartic if kept);
 //!   the `none` column is `solve_ns`, the baseline.
 //!
-//! Plus the quartic solver against the `roots` crate on the same coefficient sets, the
+//! And the same in batch mode (`"mode": "batch"` records, for `none`, `cychosz`,
+//! `skala`, `ellipsoid`, `quadric`, `discriminant`):
+//! * `batch_cull_ns`: the SIMD cull over structure-of-arrays lines, into a keep mask;
+//! * `batch_total_ns`: the wavefront of [`torus_cull::batch::Wavefront`] on the world
+//!   rays (lines, cull, compaction, exact intersection on f64 lanes, hits).
+//!
+//! The instruction set is picked at run time and recorded in `meta.isa`;
+//! `TORUS_CULL_ISA=avx2` (or `scalar`) forces a lower one.
+//!
+//! Plus the quartic solver (scalar, and the batch solver on lanes) against the `roots`
+//! and `kurbo` crates on the same coefficient sets, the
 //! workload's `bvh` scenes (obvhs CWBVH over many tori, each cull at the leaves, Mrays/s
 //! and quartic solves per ray) and, last, the rejection sweep over every ν. The figures
 //! are criterion's medians and confidence intervals of this run, read back from its
@@ -21,9 +31,9 @@
 //! rejection sweep; a complete file is never touched by it. `--list`, `--test` and
 //! `--profile-time` write nothing, and `--list` does no setup.
 //!
-//! And the headline: the paired, interleaved ratios of `torus-cull time` for the same
-//! cases and ν (each cull against cychosz and none, both metrics, in shuffled rounds on
-//! the same rays; see [`torus_cull::paired`]).
+//! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
+//! the same cases and ν (each cull against cychosz and none, the scalar and the batch
+//! metrics, in shuffled rounds on the same rays; see [`torus_cull::paired`]).
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -41,10 +51,13 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::SystemTime;
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
+use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
 use torus_cull::measure::{self, LabeledBatch};
 use torus_cull::oracle::OracleClass;
 use torus_cull::paired;
-use torus_cull::results::{BvhSizes, EstimateRecord, RatioRecord, Results, Sizes, TimingRecord};
+use torus_cull::results::{
+    BATCH_MODE, BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
+};
 use torus_cull::workload::spec::{BvhSpec, Workload};
 use torus_cull::workload::{Case, generate};
 use torus_cull::{
@@ -85,6 +98,57 @@ impl CullVisitor for TimeCull<'_> {
                 })
             });
     }
+}
+
+/// The culls timed in batch mode: the baseline and the five the wavefront model is
+/// about (the branch-free classics and the three new quadric/discriminant culls).
+const BATCH_TIMED: [CullKind; 6] = [
+    CullKind::None,
+    CullKind::Cychosz,
+    CullKind::Skala,
+    CullKind::Ellipsoid,
+    CullKind::Quadric,
+    CullKind::Discriminant,
+];
+
+/// Times one cull on one batch in batch mode: `batch_cull_ns` (the SIMD cull over the
+/// structure-of-arrays lines, into a keep mask) and `batch_total_ns` (the wavefront on
+/// world rays: lines, cull, compaction, exact intersection on lanes, hits).
+#[allow(clippy::too_many_arguments)]
+fn time_batch_cull(
+    c: &mut Criterion,
+    dispatch: &Dispatch,
+    cull: CullKind,
+    case: Case,
+    nu: f64,
+    torus: &Torus,
+    rays: &[Ray],
+    lines: &Lines,
+) {
+    let bounds = CullBounds::of(torus);
+    let id = BenchmarkId::new(cull.name(), nu);
+    let mut keep = KeepMask::new();
+    c.benchmark_group(format!("batch_cull_ns-{case}"))
+        .bench_with_input(id.clone(), lines, |b, lines| {
+            b.iter(|| {
+                cull_batch(dispatch, cull, &bounds, black_box(lines), &mut keep)
+                    .expect("a batched cull");
+                black_box(&keep);
+            })
+        });
+    let mut wavefront = Wavefront::new();
+    let mut hits = Vec::new();
+    c.benchmark_group(format!("batch_total_ns-{case}"))
+        .bench_with_input(id, rays, |b, rays| {
+            b.iter(|| {
+                black_box(
+                    wavefront
+                        .intersect(dispatch, cull, torus, &bounds, black_box(rays), &mut hits)
+                        .expect("a batched cull"),
+                );
+                black_box(&hits);
+            })
+        });
 }
 
 fn main() -> ExitCode {
@@ -129,6 +193,7 @@ fn bench() -> Result<ExitCode, String> {
     let workload =
         Workload::load(&workload_path).map_err(|e| format!("TORUS_CULL_WORKLOAD: {e}"))?;
     let config = BenchConfig::from_env(&workload)?;
+    let dispatch = Dispatch::from_env().map_err(|e| e.to_string())?;
     let out = match std::env::var_os("TORUS_CULL_RESULTS") {
         Some(p) if p.is_empty() => {
             return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
@@ -146,8 +211,12 @@ fn bench() -> Result<ExitCode, String> {
     let started = SystemTime::now();
     let timed_nus = config.timed_nus(&workload);
     println!(
-        "torus-cull bench: size {}, workload {}, timed nu {:?}, batch {} rays",
-        config.name, workload.name, timed_nus, config.batch
+        "torus-cull bench: size {}, workload {}, timed nu {:?}, batch {} rays, batch mode on {}",
+        config.name,
+        workload.name,
+        timed_nus,
+        config.batch,
+        dispatch.isa()
     );
     let mut c = Criterion::default()
         .warm_up_time(config.warm_up)
@@ -224,6 +293,28 @@ fn bench() -> Result<ExitCode, String> {
                     ));
                 }
             }
+            let soa = Lines::from_local(&lines);
+            for cull in BATCH_TIMED {
+                time_batch_cull(
+                    &mut c,
+                    &dispatch,
+                    cull,
+                    case,
+                    nu,
+                    &labeled.batch.torus,
+                    &labeled.batch.rays,
+                    &soa,
+                );
+                for group in ["batch_cull_ns", "batch_total_ns"] {
+                    let n = labeled.batch.rays.len();
+                    registered.push(Registered::new(
+                        format!("{group}-{case}"),
+                        cull.name(),
+                        nu,
+                        n,
+                    ));
+                }
+            }
             batches.push(labeled);
         }
     }
@@ -232,9 +323,9 @@ fn bench() -> Result<ExitCode, String> {
         .iter()
         .map(|&f| (f, solver::family_sets(f, &workload, &config)))
         .collect();
-    solver::bench(&mut c, &solver_sets);
+    solver::bench(&mut c, &solver_sets, &dispatch);
     for (family, sets) in &solver_sets {
-        for (name, _) in solver::SOLVERS {
+        for name in solver::solver_names() {
             registered.push(Registered::new(
                 format!("solver-{family}"),
                 name,
@@ -282,13 +373,14 @@ fn bench() -> Result<ExitCode, String> {
     let mut results = Results::new(&workload, "bench");
     results.meta.preset = Some(config.name.to_string());
     results.meta.partial = !complete;
+    results.meta.isa = Some(dispatch.isa().name().to_string());
     results.timing = timing_records(&home, &batches, config.batch, started);
     if complete {
         // The paired ratios take a minute: only a complete run pays for them.
-        results.ratio = paired_ratios(&batches, &config);
+        results.ratio = paired_ratios(&batches, &config, &dispatch);
         stage("paired ratios done");
     }
-    results.solver = solver::records(&home, &solver_sets, started);
+    results.solver = solver::records(&home, &solver_sets, started, &dispatch);
     results.bvh = bvh::records(&home, bvh_pending, started);
     results.estimates = estimates;
     let mut false_rejects = Vec::new();
@@ -325,6 +417,7 @@ fn bench() -> Result<ExitCode, String> {
     results.save(&path).map_err(|e| e.to_string())?;
     print!("{}", torus_cull::report::timing_tables(&results));
     print!("{}", torus_cull::report::cull_ns_tables(&results));
+    print!("{}", torus_cull::report::scalar_vs_batch_tables(&results));
     print!("{}", torus_cull::report::ratio_tables(&results));
     print!("{}", solver::table(&results.solver));
     print!("{}", torus_cull::report::bvh_tables(&results));
@@ -382,10 +475,18 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
                 name(format!("cull_ns-{case}"), cull.name(), nu.to_string());
                 name(format!("total_ns-{case}"), cull.name(), nu.to_string());
             }
+            for cull in BATCH_TIMED {
+                name(format!("batch_cull_ns-{case}"), cull.name(), nu.to_string());
+                name(
+                    format!("batch_total_ns-{case}"),
+                    cull.name(),
+                    nu.to_string(),
+                );
+            }
         }
     }
     for family in solver::FAMILIES {
-        for (solver, _) in solver::SOLVERS {
+        for solver in solver::solver_names() {
             name(format!("solver-{family}"), solver, "all".into());
         }
     }
@@ -406,8 +507,12 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
 }
 
 /// Paired, interleaved ratios of every timed cull against cychosz and none, on the first
-/// rays of each timed batch (the engine `torus-cull time` uses).
-fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRecord> {
+/// rays of each timed batch (the engine `torus-cull time` uses), in both modes.
+fn paired_ratios(
+    batches: &[LabeledBatch],
+    config: &BenchConfig,
+    dispatch: &Dispatch,
+) -> Vec<RatioRecord> {
     let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
     let units: Vec<paired::Unit<'_>> = batches
         .iter()
@@ -419,7 +524,8 @@ fn paired_ratios(batches: &[LabeledBatch], config: &BenchConfig) -> Vec<RatioRec
             seed: l.batch.stream_seed,
         })
         .collect();
-    let options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    let mut options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    options.batch_isa = Some(dispatch.isa());
     paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
         .unwrap_or_else(|e| panic!("{e}"))
 }
@@ -478,6 +584,33 @@ fn timing_records(
                 solve_hit_ns: solve_hit,
                 ideal_total_ns_at_hit_cost: solve_hit.map(|s| cull_ns.median + hit_fraction * s),
                 source: "criterion".into(),
+                mode: SCALAR_MODE.into(),
+            });
+        }
+        // Batch mode: the same rays through the wavefront; `none` is the batch baseline
+        // (every ray to the lane solver), so speedups are within the mode.
+        let Some(batch_solve) = read("batch_total_ns", CullKind::None) else {
+            continue;
+        };
+        for cull in BATCH_TIMED {
+            let (Some(cull_ns), Some(total)) =
+                (read("batch_cull_ns", cull), read("batch_total_ns", cull))
+            else {
+                continue;
+            };
+            out.push(TimingRecord {
+                case: case.name().to_string(),
+                nu,
+                cull: cull.name().to_string(),
+                cull_ns: cull_ns.median,
+                total_ns: total.median,
+                total_ns_ci: [total.lower, total.upper],
+                speedup_vs_none: batch_solve.median / total.median,
+                ideal_total_ns: cull_ns.median + hit_fraction * batch_solve.median,
+                solve_hit_ns: None,
+                ideal_total_ns_at_hit_cost: None,
+                source: "criterion".into(),
+                mode: BATCH_MODE.into(),
             });
         }
     }

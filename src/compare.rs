@@ -113,7 +113,7 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     for (key, o, n) in pair_up(
         &old.timing,
         &new.timing,
-        |r: &TimingRecord| key(&r.case, r.nu, &r.cull),
+        |r: &TimingRecord| key(&r.case, r.nu, &r.label()),
         &mut report,
         "timing",
     ) {

@@ -41,6 +41,7 @@
 
 #![warn(missing_docs)]
 
+pub mod batch;
 pub mod compare;
 pub mod cull;
 pub mod eval;

@@ -216,7 +216,11 @@ impl Record for RejectionRecord {
 
 impl Record for TimingRecord {
     fn group(&self) -> String {
-        self.case.clone()
+        if self.is_batch() {
+            format!("{}-batch", self.case)
+        } else {
+            self.case.clone()
+        }
     }
     fn cull(&self) -> &str {
         &self.cull

@@ -1,6 +1,6 @@
 //! Plain-text tables of a results file, as `run` and `cargo bench` print them.
 
-use crate::results::Results;
+use crate::results::{Results, TimingRecord};
 use std::fmt::Write;
 
 /// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
@@ -86,20 +86,30 @@ pub fn miss_capture_tables(results: &Results) -> String {
     )
 }
 
-/// Total ns per ray with the speedup over `none`, per case.
+/// The scalar-mode timing records (one ray at a time).
+fn scalar_timings(results: &Results) -> Vec<TimingRecord> {
+    results
+        .timing
+        .iter()
+        .filter(|r| !r.is_batch())
+        .cloned()
+        .collect()
+}
+
+/// Total ns per ray with the speedup over `none`, per case (scalar mode).
 pub fn timing_tables(results: &Results) -> String {
     table(
-        &results.timing,
+        &scalar_timings(results),
         |r| (r.case.as_str(), r.nu, r.cull.as_str()),
         |r| format!("{:.1} ({:.2}x)", r.total_ns, r.speedup_vs_none),
         |case| format!("{case}: total ns per ray, cull + exact intersection (speedup vs none)"),
     )
 }
 
-/// Cull-alone ns per ray, per case.
+/// Cull-alone ns per ray, per case (scalar mode).
 pub fn cull_ns_tables(results: &Results) -> String {
     table(
-        &results.timing,
+        &scalar_timings(results),
         |r| (r.case.as_str(), r.nu, r.cull.as_str()),
         |r| format!("{:.2}", r.cull_ns),
         |case| format!("{case}: cull alone, ns per ray"),
@@ -132,6 +142,8 @@ pub fn ratio_tables(results: &Results) -> String {
             let what = match r.metric.as_str() {
                 "total_ns" => "total (cull + exact intersection)",
                 "cull_ns" => "cull alone",
+                "batch_total_ns" => "batch total (wavefront: SIMD cull + lane intersection)",
+                "batch_cull_ns" => "batch cull alone (SIMD)",
                 other => other,
             };
             (format!("{}: {what} / {}", r.case, r.reference), r)
@@ -147,5 +159,39 @@ pub fn ratio_tables(results: &Results) -> String {
             )
         },
         |title| format!("{title}, paired ratio [95% CI]"),
+    )
+}
+
+/// Scalar against batch mode per case (rows ν, columns the culls timed both ways): each
+/// cell is `cull_ns scalar → batch | total_ns scalar → batch`, ns per ray. Empty when the
+/// file has no batch records.
+pub fn scalar_vs_batch_tables(results: &Results) -> String {
+    let pairs: Vec<(&TimingRecord, &TimingRecord)> = results
+        .timing
+        .iter()
+        .filter(|b| b.is_batch())
+        .filter_map(|b| {
+            results
+                .timing
+                .iter()
+                .find(|s| !s.is_batch() && s.case == b.case && s.nu == b.nu && s.cull == b.cull)
+                .map(|s| (s, b))
+        })
+        .collect();
+    let isa = results.meta.isa.as_deref().unwrap_or("unknown");
+    table(
+        &pairs,
+        |(s, _)| (s.case.as_str(), s.nu, s.cull.as_str()),
+        |(s, b)| {
+            format!(
+                "{:.2}→{:.2} | {:.1}→{:.1}",
+                s.cull_ns, b.cull_ns, s.total_ns, b.total_ns
+            )
+        },
+        |case| {
+            format!(
+                "{case}: scalar → batch ({isa}), ns per ray: cull alone | cull + exact intersection"
+            )
+        },
     )
 }

@@ -76,6 +76,10 @@ pub struct Meta {
     /// The sizes that shape the figures; null in files from before it was recorded.
     #[serde(default)]
     pub sizes: Option<Sizes>,
+    /// The instruction set the batch (`"mode": "batch"`) timings ran on: `avx512`, `avx2`,
+    /// `neon` or `scalar` (see [`crate::batch::Isa`]); null when nothing was batched.
+    #[serde(default)]
+    pub isa: Option<String>,
 }
 
 /// The sizes behind a results file's figures: two files compare only if these agree.
@@ -201,6 +205,37 @@ pub struct TimingRecord {
     pub ideal_total_ns_at_hit_cost: Option<f64>,
     /// Where the figures come from (`criterion`).
     pub source: String,
+    /// `scalar` (one ray at a time, [`crate::intersect_culled`]) or `batch` (the
+    /// wavefront of [`crate::batch`]: SIMD cull, compaction, batch solve); a record
+    /// without it is scalar, so older files still load.
+    #[serde(default = "scalar_mode")]
+    pub mode: String,
+}
+
+impl TimingRecord {
+    /// Whether this record times the batch (wavefront) mode.
+    pub fn is_batch(&self) -> bool {
+        self.mode == BATCH_MODE
+    }
+
+    /// The cull name, with ` (batch)` appended for a batch record: what tables and
+    /// comparisons key on, so the two modes never pair with each other.
+    pub fn label(&self) -> String {
+        if self.is_batch() {
+            format!("{} (batch)", self.cull)
+        } else {
+            self.cull.clone()
+        }
+    }
+}
+
+/// [`TimingRecord::mode`] of one-ray-at-a-time timings.
+pub const SCALAR_MODE: &str = "scalar";
+/// [`TimingRecord::mode`] of wavefront timings.
+pub const BATCH_MODE: &str = "batch";
+
+fn scalar_mode() -> String {
+    SCALAR_MODE.into()
 }
 
 /// One cull timed against a reference in the same interleaved rounds (see
@@ -348,6 +383,7 @@ impl Results {
                 partial: false,
                 preset: None,
                 sizes: None,
+                isa: None,
             },
             rejection: Vec::new(),
             timing: Vec::new(),
@@ -426,4 +462,34 @@ fn cpu_model() -> String {
                 .map(|m| m.trim().to_string())
         })
         .unwrap_or_else(|| std::env::consts::ARCH.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A timing record from before `mode` existed reads as scalar, and a meta block from
+    /// before `isa` existed reads as null; a batch record keys apart from its scalar twin.
+    #[test]
+    fn old_records_read_as_scalar_and_modes_key_apart() {
+        let old = r#"{"case":"uniform","nu":4.0,"cull":"skala","cull_ns":5.0,"total_ns":20.0,
+            "total_ns_ci":[19.0,21.0],"speedup_vs_none":3.0,"ideal_total_ns":6.0,
+            "source":"criterion"}"#;
+        let r: TimingRecord = serde_json::from_str(old).unwrap();
+        assert_eq!(r.mode, SCALAR_MODE);
+        assert!(!r.is_batch());
+        assert_eq!(r.label(), "skala");
+        let batch = TimingRecord {
+            mode: BATCH_MODE.into(),
+            ..r.clone()
+        };
+        assert!(batch.is_batch());
+        assert_eq!(batch.label(), "skala (batch)");
+        let text = serde_json::to_string(&batch).unwrap();
+        assert!(text.contains(r#""mode":"batch""#), "{text}");
+        let meta = r#"{"commit":null,"dirty":false,"created":"x","rustc":"r","cpu":"c",
+            "workload":"w","workload_sha256":"s"}"#;
+        let m: Meta = serde_json::from_str(meta).unwrap();
+        assert_eq!(m.isa, None);
+    }
 }

@@ -330,6 +330,12 @@ impl Scene {
         found.then(|| (indices[hit.primitive_id as usize], hit.t))
     }
 
+    /// The BVH and each torus's cull bounds (indexed like [`Scene::tori`]), for the
+    /// batch traversal of [`crate::batch::trace_leaves_batched`].
+    pub(crate) fn bvh_and_bounds(&self) -> (&CwBvh, &[CullBounds]) {
+        (&self.bvh, &self.bounds)
+    }
+
     /// The closest hit over every torus with no cull: the ground truth for the BVH.
     pub fn brute_force(&self, ray: &Ray) -> SceneHit {
         let mut best: SceneHit = None;

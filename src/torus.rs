@@ -260,6 +260,13 @@ impl Torus {
         self.to_local.transpose() * d
     }
 
+    /// (`NEAR_ORIGIN_REL`·(R + r))²: origins farther than this from the centre take
+    /// [`Torus::line_to_local`]'s f64 foot-point path.
+    #[inline]
+    pub(crate) fn near_origin_sq(&self) -> f32 {
+        self.near_origin_sq
+    }
+
     /// The ray's line in the torus frame, in f32, as the culls see it.
     ///
     /// The f32 transform errs by about 4·2⁻²⁴·|o − c|, which the culls' margin absorbs for

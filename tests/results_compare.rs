@@ -25,6 +25,7 @@ fn sample() -> Results {
             partial: false,
             preset: None,
             sizes: None,
+            isa: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -66,6 +67,7 @@ fn sample() -> Results {
             solve_hit_ns: None,
             ideal_total_ns_at_hit_cost: None,
             source: "criterion".into(),
+            mode: "scalar".into(),
         }],
         bvh: vec![BvhRecord {
             scene: "facing_grid".into(),

@@ -210,3 +210,64 @@ fn results_without_a_ratio_section_still_load() {
     r.save(&copy).unwrap();
     assert_eq!(Results::load(&copy).unwrap(), r);
 }
+
+/// `--mode both` adds the batch-mode ratios in the same rounds and records the
+/// instruction set; `TORUS_CULL_ISA` picks it, and a bad value exits 2 naming it.
+#[test]
+fn mode_both_adds_batch_ratios_at_the_chosen_isa() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let a = dir.path().join("a.json");
+    let run = |isa: &str, out: &Path| {
+        Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+            .args([
+                "time",
+                "--workload",
+                &workload,
+                "--seconds",
+                "1",
+                "--culls",
+                "skala,discriminant_f64",
+                "--mode",
+                "both",
+                "--out",
+                out.to_str().unwrap(),
+            ])
+            .env("TORUS_CULL_ISA", isa)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .expect("run torus-cull")
+    };
+    let o = run("scalar", &a);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("hole: batch total (wavefront: SIMD cull + lane intersection) / none"),
+        "{stdout}"
+    );
+    let r = Results::load(&a).unwrap();
+    assert_eq!(r.meta.isa.as_deref(), Some("scalar"));
+    let count = |metric: &str, cull: &str| {
+        r.ratio
+            .iter()
+            .filter(|x| x.metric == metric && x.cull == cull)
+            .count()
+    };
+    // Per case × ν (2 × 2), against both references.
+    for metric in ["total_ns", "cull_ns", "batch_total_ns", "batch_cull_ns"] {
+        assert_eq!(count(metric, "skala"), 8, "{metric}");
+    }
+    // discriminant_f64 has no batch form: scalar ratios only.
+    assert_eq!(count("total_ns", "discriminant_f64"), 8);
+    assert_eq!(count("batch_total_ns", "discriminant_f64"), 0);
+
+    let b = dir.path().join("b.json");
+    let o = run("sse9", &b);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("TORUS_CULL_ISA") && err.contains("sse9") && err.contains("avx2"),
+        "{err}"
+    );
+    assert!(!b.exists());
+}

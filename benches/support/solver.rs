@@ -16,6 +16,7 @@ use std::fmt::Write;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
+use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
 use torus_cull::intersect::quartic_coefficients_local;
 use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
@@ -175,7 +176,25 @@ pub const SOLVERS: [Solver; 4] = [
     ("kurbo_0.13", kurbo_crate),
 ];
 
-pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)]) {
+/// The batch solver ([`nearest_roots`]: every quartic of a family at once, on SIMD
+/// lanes), timed per solve like the others.
+pub const BATCH_SOLVER: &str = "torus_cull_batch";
+
+/// Every solver's name, in table order: the scalar ones, then the batch solver.
+pub fn solver_names() -> impl Iterator<Item = &'static str> {
+    SOLVERS.iter().map(|(n, _)| *n).chain([BATCH_SOLVER])
+}
+
+/// The family's quartics as the batch solver takes them (nearest root u ≥ u_origin).
+fn quartics(sets: &[SolverSet]) -> Quartics {
+    let mut q = Quartics::new();
+    for s in sets {
+        q.push(s.c[0], s.c[1], s.c[2], s.u_origin, f64::INFINITY);
+    }
+    q
+}
+
+pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)], dispatch: &Dispatch) {
     for (family, sets) in families {
         let mut group = c.benchmark_group(format!("solver-{family}"));
         for (name, solve) in SOLVERS {
@@ -187,6 +206,11 @@ pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)]) {
                 })
             });
         }
+        let q = quartics(sets);
+        let mut roots = Vec::new();
+        group.bench_function(BenchmarkId::new(BATCH_SOLVER, "all"), |b| {
+            b.iter(|| black_box(nearest_roots(dispatch, black_box(&q), &mut roots)))
+        });
         group.finish();
     }
 }
@@ -196,14 +220,22 @@ pub fn records(
     home: &Path,
     families: &[(&str, Vec<SolverSet>)],
     since: SystemTime,
+    dispatch: &Dispatch,
 ) -> Vec<SolverRecord> {
     let mut out = Vec::new();
     for (family, sets) in families {
-        for (name, solve) in SOLVERS {
+        let mut batch = Vec::new();
+        nearest_roots(dispatch, &quartics(sets), &mut batch);
+        for name in solver_names() {
+            let solve = SOLVERS.iter().find(|(n, _)| *n == name).map(|(_, f)| *f);
             let (mut missed, mut spurious, mut reference, mut max_err) = (0u64, 0u64, 0u64, 0f64);
-            for s in sets {
+            for (i, s) in sets.iter().enumerate() {
                 let tol = MATCH_TOLERANCE_REL * (s.major + s.minor) * s.inv_len;
-                let found = solve(&s.c, s.u_origin).map(|u| s.t_of_u(u));
+                let root = match solve {
+                    Some(solve) => solve(&s.c, s.u_origin),
+                    None => batch[i],
+                };
+                let found = root.map(|u| s.t_of_u(u));
                 let want = s.reference.first().copied();
                 reference += u64::from(want.is_some());
                 match (found, want) {

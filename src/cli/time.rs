@@ -5,6 +5,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::CullKind;
+use torus_cull::batch::Dispatch;
 use torus_cull::paired::sweep::{DEFAULT_BATCH, PairedOptions, REFERENCES, time_workload};
 use torus_cull::results::{self, Results};
 use torus_cull::workload::spec::Workload;
@@ -38,6 +39,21 @@ pub struct TimeArgs {
     /// Results JSON (default: results/<short commit>[-dirty]-time.json).
     #[arg(long)]
     out: Option<PathBuf>,
+    /// `scalar`: one ray at a time (`total_ns`, `cull_ns`); `both`: also the batch mode
+    /// (`batch_total_ns`, `batch_cull_ns`: SIMD cull and wavefront) in the same rounds,
+    /// for the culls with a batch form, at the instruction set `TORUS_CULL_ISA` names
+    /// (default: the best this CPU has).
+    #[arg(long, value_enum, default_value_t = Mode::Scalar)]
+    mode: Mode,
+}
+
+/// Which modes `torus-cull time` measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Mode {
+    /// One ray at a time.
+    Scalar,
+    /// One ray at a time and batch mode, in the same rounds.
+    Both,
 }
 
 /// Runs `torus-cull time`.
@@ -78,7 +94,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     check_writable(&path)?;
 
     let units = workload.cases.len() * nus.len();
-    let options = PairedOptions::total(args.seconds, batch);
+    let mut options = PairedOptions::total(args.seconds, batch);
+    if args.mode == Mode::Both {
+        options.batch_isa = Some(Dispatch::from_env()?.isa());
+    }
     let bar = ProgressBar::new(0).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} visits ({eta})")
             .expect("valid template")
@@ -96,6 +115,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
 
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
+    results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
     print!("{}", torus_cull::report::ratio_tables(&results));
     results.save(&path)?;
     println!("wrote {}", path.display());

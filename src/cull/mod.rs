@@ -38,6 +38,7 @@ pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
 pub use ellipsoid::EllipsoidCull;
 pub use none::NoCull;
 pub use printed::{CychoszPrintedCull, SkalaEq102Cull, SkalaPrintedCCull};
+pub(crate) use quadric::HORIZONTAL_DY;
 pub use quadric::QuadricCull;
 pub use skala::SkalaCull;
 pub use sphere::SphereCull;
@@ -183,16 +184,18 @@ pub(crate) fn rescaled(v: Vec3) -> Vec3 {
     v * f32::from_bits((254 - exponent) << 23)
 }
 
+/// 2⁻⁴⁰ and 2⁴⁰: the range of |v|² that [`moderate`] leaves alone.
+pub(crate) const MODERATE_LOW: f32 = 9.094_947e-13;
+pub(crate) const MODERATE_HIGH: f32 = 1.099_511_6e12;
+
 /// `v` itself when |v|² lies in [2⁻⁴⁰, 2⁴⁰], else [`rescaled`]: either way fourth powers
 /// of `v`, and |o|²·|v|² for origins within 10¹³, stay inside f32's normal range. The
 /// test is one branch, predictable on a renderer's rays; `rescaled`'s trip through the
 /// integer unit cost a short cull about 3 ns per line when taken always.
 #[inline(always)]
 pub(crate) fn moderate(v: Vec3) -> Vec3 {
-    const LOW: f32 = 9.094_947e-13; // 2⁻⁴⁰
-    const HIGH: f32 = 1.099_511_6e12; // 2⁴⁰
     let len_sq = v.length_squared();
-    if len_sq > LOW && len_sq < HIGH {
+    if len_sq > MODERATE_LOW && len_sq < MODERATE_HIGH {
         v
     } else {
         rescaled(v)

@@ -129,6 +129,7 @@ mod tests {
             solve_hit_ns: None,
             ideal_total_ns_at_hit_cost: None,
             source: "criterion".into(),
+            mode: "scalar".into(),
         }
     }
 
@@ -149,6 +150,7 @@ mod tests {
                 partial: false,
                 preset: None,
                 sizes: None,
+                isa: None,
             },
             rejection: Vec::new(),
             timing,

@@ -4,7 +4,11 @@
 //! is compiled per cull and nothing is dispatched per ray; the one `match` per pass sits
 //! outside the timed region.
 
-use crate::{Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect_culled};
+use crate::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
+use crate::{
+    Cull, CullBounds, CullKind, CullVisitor, Hit, LocalLine, Ray, Torus, intersect_culled,
+};
+use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -17,18 +21,40 @@ pub enum Metric {
     TotalNs,
     /// The cull alone on torus-frame lines.
     CullNs,
+    /// [`Metric::TotalNs`] in batch mode: the wavefront of [`crate::batch::Wavefront`]
+    /// (SIMD cull, compaction, exact intersection on lanes).
+    BatchTotalNs,
+    /// [`Metric::CullNs`] in batch mode: [`crate::batch::cull_batch`] on
+    /// structure-of-arrays lines.
+    BatchCullNs,
 }
 
 impl Metric {
-    /// Both, in table order.
+    /// The scalar (one ray at a time) metrics, in table order.
     pub const ALL: [Metric; 2] = [Metric::TotalNs, Metric::CullNs];
 
-    /// The stable name used in results: `total_ns` or `cull_ns`.
+    /// The batch-mode metrics, in table order.
+    pub const BATCH: [Metric; 2] = [Metric::BatchTotalNs, Metric::BatchCullNs];
+
+    /// The stable name used in results: `total_ns`, `cull_ns`, `batch_total_ns` or
+    /// `batch_cull_ns`.
     pub fn name(self) -> &'static str {
         match self {
             Metric::TotalNs => "total_ns",
             Metric::CullNs => "cull_ns",
+            Metric::BatchTotalNs => "batch_total_ns",
+            Metric::BatchCullNs => "batch_cull_ns",
         }
+    }
+
+    /// Whether this times the batch mode.
+    pub fn is_batch(self) -> bool {
+        matches!(self, Metric::BatchTotalNs | Metric::BatchCullNs)
+    }
+
+    /// Whether `cull` can be timed under this metric (batch metrics need a batch form).
+    pub fn covers(self, cull: CullKind) -> bool {
+        !self.is_batch() || crate::batch::BATCHED.contains(&cull)
     }
 }
 
@@ -38,24 +64,48 @@ impl fmt::Display for Metric {
     }
 }
 
-/// One torus and its batch, in both forms the metrics need.
+/// One torus and its batch, in every form the metrics need.
 #[derive(Debug, Clone)]
 pub struct Workset<'a> {
     torus: &'a Torus,
     bounds: CullBounds,
     rays: &'a [Ray],
     lines: Vec<LocalLine>,
+    /// For the batch metrics: the lines as structure of arrays, the dispatch level, and
+    /// the wavefront's buffers (reused from pass to pass, as a renderer would).
+    batch: Option<BatchSet>,
+}
+
+/// What the batch metrics need besides the rays.
+#[derive(Debug, Clone)]
+struct BatchSet {
+    dispatch: Dispatch,
+    soa: Lines,
+    scratch: RefCell<(Wavefront, Vec<Option<Hit>>, KeepMask)>,
 }
 
 impl<'a> Workset<'a> {
     /// The batch `rays` of `torus`; the torus-frame lines are made here, outside any timing.
     pub fn new(torus: &'a Torus, rays: &'a [Ray]) -> Workset<'a> {
+        let lines: Vec<LocalLine> = rays.iter().map(|r| torus.line_to_local(r)).collect();
         Workset {
             torus,
             bounds: CullBounds::of(torus),
             rays,
-            lines: rays.iter().map(|r| torus.line_to_local(r)).collect(),
+            lines,
+            batch: None,
         }
+    }
+
+    /// [`Workset::new`], ready for the batch metrics too, at the level `dispatch`.
+    pub fn with_batch(torus: &'a Torus, rays: &'a [Ray], dispatch: Dispatch) -> Workset<'a> {
+        let mut set = Workset::new(torus, rays);
+        set.batch = Some(BatchSet {
+            dispatch,
+            soa: Lines::from_local(&set.lines),
+            scratch: RefCell::default(),
+        });
+        set
     }
 
     /// Rays in the batch.
@@ -70,8 +120,47 @@ impl<'a> Workset<'a> {
 }
 
 /// Time `reps` passes of `cull` over the batch, measuring `metric`.
+///
+/// Panics for a batch metric on a [`Workset`] made without [`Workset::with_batch`], or
+/// on a cull without a batch form (see [`Metric::covers`]).
 pub fn time_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize) -> Duration {
+    if metric.is_batch() {
+        return time_batch_pass(cull, metric, set, reps);
+    }
     cull.visit(Pass { metric, set, reps })
+}
+
+/// A batch-mode pass: one call per pass over the whole batch (the kernels dispatch once
+/// per call, outside the per-ray work).
+#[inline(never)]
+fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize) -> Duration {
+    let batch = set
+        .batch
+        .as_ref()
+        .expect("a batch metric needs Workset::with_batch");
+    let mut scratch = batch.scratch.borrow_mut();
+    let (wavefront, hits, keep) = &mut *scratch;
+    let start = Instant::now();
+    for _ in 0..reps {
+        if metric == Metric::BatchTotalNs {
+            let rays = black_box(set.rays);
+            wavefront
+                .intersect(&batch.dispatch, cull, set.torus, &set.bounds, rays, hits)
+                .expect("a cull with a batch form");
+            black_box(&hits);
+        } else {
+            cull_batch(
+                &batch.dispatch,
+                cull,
+                &set.bounds,
+                black_box(&batch.soa),
+                keep,
+            )
+            .expect("a cull with a batch form");
+            black_box(&keep);
+        }
+    }
+    start.elapsed()
 }
 
 struct Pass<'s, 'a> {
@@ -90,6 +179,7 @@ impl CullVisitor for Pass<'_, '_> {
             bounds,
             rays,
             lines,
+            ..
         } = self.set;
         let start = Instant::now();
         match self.metric {
@@ -107,6 +197,9 @@ impl CullVisitor for Pass<'_, '_> {
                         black_box(cull.keeps(bounds, line.origin, line.dir));
                     }
                 }
+            }
+            Metric::BatchTotalNs | Metric::BatchCullNs => {
+                unreachable!("batch metrics are timed by time_batch_pass")
             }
         }
         start.elapsed()

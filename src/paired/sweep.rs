@@ -3,6 +3,7 @@
 use super::contender::{Metric, Workset, time_pass};
 use super::engine::Interleaver;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
+use crate::batch::{Dispatch, Isa};
 use crate::results::RatioRecord;
 use crate::workload::spec::Workload;
 use crate::workload::{Case, GenerateError, generate};
@@ -36,6 +37,9 @@ pub struct PairedOptions {
     pub visit: Duration,
     /// At least this many measured rounds per (case, ν), whatever the budget.
     pub min_rounds: usize,
+    /// Also time the batch metrics (`batch_total_ns`, `batch_cull_ns`, for the culls
+    /// with a batch form) at this instruction set, in the same rounds as the scalar ones.
+    pub batch_isa: Option<Isa>,
 }
 
 /// Rays per batch unless told otherwise: about 0.02–0.2 ms per `total_ns` timing, so a
@@ -53,6 +57,7 @@ impl PairedOptions {
             budget: Duration::from_secs_f64(seconds - warm_up),
             visit: Duration::from_millis(100),
             min_rounds: 40,
+            batch_isa: None,
         }
     }
 }
@@ -62,6 +67,8 @@ impl PairedOptions {
 pub enum PairedError {
     /// The workload's batch could not be generated.
     Generate(GenerateError),
+    /// The batch metrics were asked for at an instruction set this CPU lacks.
+    Isa(crate::batch::IsaError),
     /// No round gave a usable timing (a clock that never advanced).
     NoRounds {
         /// The case.
@@ -77,6 +84,7 @@ impl fmt::Display for PairedError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             PairedError::Generate(e) => write!(f, "{e}"),
+            PairedError::Isa(e) => write!(f, "{e}"),
             PairedError::NoRounds { case, nu, cull } => write!(
                 f,
                 "case {case} at nu = {nu}: no round timed cull {cull} (the clock did not advance)"
@@ -108,18 +116,20 @@ pub struct Unit<'a> {
     pub seed: u64,
 }
 
-/// A unit ready to time: its batch in both forms and its cull-alone repetitions.
+/// A unit ready to time: its batch in every form and its cull-alone repetitions.
 struct Timed<'a> {
     unit: Unit<'a>,
     set: Workset<'a>,
     cull_reps: usize,
+    batch_cull_reps: usize,
 }
 
 impl Timed<'_> {
     fn reps(&self, metric: Metric) -> usize {
         match metric {
-            Metric::TotalNs => 1,
+            Metric::TotalNs | Metric::BatchTotalNs => 1,
             Metric::CullNs => self.cull_reps,
+            Metric::BatchCullNs => self.batch_cull_reps,
         }
     }
 
@@ -150,17 +160,38 @@ pub fn time_units(
             }
             v
         });
-    let contenders: Vec<(CullKind, Metric)> = Metric::ALL
+    let dispatch = match options.batch_isa {
+        Some(isa) => Some(Dispatch::forced(isa).map_err(PairedError::Isa)?),
+        None => None,
+    };
+    let metrics: Vec<Metric> = Metric::ALL
+        .into_iter()
+        .chain(dispatch.iter().flat_map(|_| Metric::BATCH))
+        .collect();
+    let contenders: Vec<(CullKind, Metric)> = metrics
         .iter()
-        .flat_map(|&m| kinds.iter().map(move |&k| (k, m)))
+        .flat_map(|&m| {
+            kinds
+                .iter()
+                .filter(move |&&k| m.covers(k))
+                .map(move |&k| (k, m))
+        })
         .collect();
     let timed: Vec<Timed<'_>> = units
         .iter()
         .map(|&unit| {
-            let set = Workset::new(unit.torus, unit.rays);
+            let set = match dispatch {
+                Some(d) => Workset::with_batch(unit.torus, unit.rays, d),
+                None => Workset::new(unit.torus, unit.rays),
+            };
             Timed {
                 unit,
-                cull_reps: cull_pass_reps(&set),
+                cull_reps: cull_pass_reps(&set, Metric::CullNs),
+                batch_cull_reps: if dispatch.is_some() {
+                    cull_pass_reps(&set, Metric::BatchCullNs)
+                } else {
+                    1
+                },
                 set,
             }
         })
@@ -209,10 +240,16 @@ pub fn time_units(
                 .position(|&c| c == (k, m))
                 .expect("every cull and reference is a contender")
         };
-        for metric in Metric::ALL {
+        for &metric in &metrics {
             let work = (t.set.len() * t.reps(metric)) as f64;
-            for &cull in kinds.iter().filter(|k| culls.contains(k)) {
-                for reference in REFERENCES.into_iter().filter(|&r| r != cull) {
+            for &cull in kinds
+                .iter()
+                .filter(|&&k| culls.contains(&k) && metric.covers(k))
+            {
+                for reference in REFERENCES
+                    .into_iter()
+                    .filter(|&r| r != cull && metric.covers(r))
+                {
                     let bootstrap_seed =
                         seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
                     let e = ratio_estimate(
@@ -264,11 +301,11 @@ pub fn time_batch(
     time_units(&[unit], culls, options, &mut |_, _| {})
 }
 
-/// Repetitions of the cull-alone pass that make the reference's timing reach
-/// [`CULL_PASS_TARGET`], from the fastest of a few trial passes.
-fn cull_pass_reps(set: &Workset<'_>) -> usize {
+/// Repetitions of the cull-alone pass (`metric`: scalar or batch) that make the
+/// reference's timing reach [`CULL_PASS_TARGET`], from the fastest of a few trial passes.
+fn cull_pass_reps(set: &Workset<'_>, metric: Metric) -> usize {
     let one = (0..5)
-        .map(|_| time_pass(REFERENCES[0], Metric::CullNs, set, 1))
+        .map(|_| time_pass(REFERENCES[0], metric, set, 1))
         .min()
         .unwrap_or(Duration::ZERO)
         .max(Duration::from_nanos(1));
@@ -321,6 +358,7 @@ mod tests {
             budget: Duration::from_millis(60),
             visit: Duration::from_millis(20),
             min_rounds: 30,
+            batch_isa: None,
         }
     }
 
@@ -331,6 +369,50 @@ mod tests {
             torus: &b.torus,
             rays: &b.rays,
             seed: b.stream_seed,
+        }
+    }
+
+    /// With a batch level: the batch metrics for the culls with a batch form, in the
+    /// same rounds; `discriminant_f64` (no batch form) keeps its scalar records only.
+    #[test]
+    fn batch_metrics_cover_the_batched_culls() {
+        let b = generate(Case::Hole, 8.0, 128, 3, Pose::Random).unwrap();
+        let culls = [CullKind::Skala, CullKind::DiscriminantF64];
+        let options = PairedOptions {
+            batch_isa: Some(Isa::Scalar),
+            ..quick(128)
+        };
+        let r = time_batch(unit(&b), &culls, &options).unwrap();
+        let count = |metric: &str, cull: &str| {
+            r.iter()
+                .filter(|x| x.metric == metric && x.cull == cull)
+                .count()
+        };
+        for metric in ["total_ns", "cull_ns"] {
+            assert_eq!(count(metric, "skala"), 2);
+            assert_eq!(count(metric, "discriminant_f64"), 2);
+        }
+        for metric in ["batch_total_ns", "batch_cull_ns"] {
+            assert_eq!(count(metric, "skala"), 2);
+            assert_eq!(count(metric, "discriminant_f64"), 0);
+        }
+        // On hole lines the batch skala skips the lane solver for almost every ray.
+        let skala = r
+            .iter()
+            .find(|x| x.metric == "batch_total_ns" && x.cull == "skala" && x.reference == "none")
+            .unwrap();
+        assert!(skala.ratio < 0.6, "{skala:?}");
+        // A level this CPU lacks is an error, not a silent fallback.
+        let missing = Isa::ALL.into_iter().find(|i| !Isa::available().contains(i));
+        if let Some(isa) = missing {
+            let options = PairedOptions {
+                batch_isa: Some(isa),
+                ..quick(128)
+            };
+            assert!(matches!(
+                time_batch(unit(&b), &culls, &options),
+                Err(PairedError::Isa(_))
+            ));
         }
     }
 

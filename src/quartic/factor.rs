@@ -14,7 +14,7 @@ use super::{EPS, RealRoots, eval, eval2, resolvent};
 /// Below this `|disc| / (m² + 4|n|)` a factor's two roots are decided on the quartic, for a
 /// quartic given in depressed form (a depression by the caller adds its own rounding:
 /// see [`near_double_threshold`]).
-pub(super) const NEAR_DOUBLE: f64 = 1e-7;
+pub(crate) const NEAR_DOUBLE: f64 = 1e-7;
 
 /// The near-double threshold for a quartic depressed from `orig` by `t = x − shift`: the
 /// depression rounds `p, q, r` by about `ε·Σ|cᵢ||shift|ⁱ`, which, next to the depressed

@@ -24,6 +24,11 @@
 mod factor;
 mod resolvent;
 
+/// The thresholds below which the solver takes its careful (cold) paths; the batch solver
+/// hands exactly those lanes back to [`nearest_root_depressed`].
+pub(crate) use factor::NEAR_DOUBLE;
+pub(crate) use resolvent::DISC_NEAR;
+
 const EPS: f64 = f64::EPSILON;
 
 /// Up to four real roots, sorted ascending. A double root is reported twice.

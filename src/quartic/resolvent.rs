@@ -19,7 +19,7 @@
 /// Below this `|Δ| / scale` the sign of the cubic's discriminant is not trusted: a
 /// near-double pair of roots may be real or complex by rounding. Then the pair is classified
 /// by the value of `h` at its local minimum instead.
-const DISC_NEAR: f64 = 1e-9;
+pub(crate) const DISC_NEAR: f64 = 1e-9;
 
 /// Below this `|Δ| / scale` the closed form is Newton-polished.
 const POLISH_BELOW: f64 = 1e-4;

@@ -1,0 +1,60 @@
+//! `thick_cylinder` over lanes: the shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's
+//! `Test_Thick_Cylinder`; see [`crate::ThickCylinderCull`]).
+
+use super::{LaneCull, foot_point};
+use crate::CullBounds;
+use crate::batch::lanes::{F32s, M32s};
+use crate::batch::vec3s::Vec3s;
+use crate::cull::AXIS_PARALLEL_H2;
+use pulp::Simd;
+
+/// Clip the line to the slab and the outer cylinder; reject when nothing is left or
+/// what is left lies inside the inner cylinder. The scalar cull's four early exits become
+/// four masks; the clip uses `f32::min`/`max` (NaN-ignoring) as there.
+#[derive(Clone, Copy)]
+pub(super) struct ThickCylinder;
+
+impl LaneCull for ThickCylinder {
+    #[inline(always)]
+    fn keeps<S: Simd>(self, s: S, b: &CullBounds, origin: Vec3s<S>, dir: Vec3s<S>) -> M32s<S> {
+        // Macros, not closures: a closure that LLVM leaves outlined would run without
+        // the SIMD target features and call every intrinsic out of line.
+        macro_rules! c {
+            ($x:expr) => {
+                F32s::splat(s, $x)
+            };
+        }
+        let (p, inv_len_sq) = foot_point(origin, dir);
+        let n = dir * inv_len_sq.sqrt();
+        let ms = c!(b.minor_safe);
+        // Slab |y| ≤ r_η as an interval of t; a horizontal line is in it or not at all.
+        let horizontal = n.y.eq(c!(0.0));
+        let outside_slab = horizontal & p.y.abs().gt(ms);
+        let inv = c!(1.0) / n.y;
+        let t0 = (-ms - p.y) * inv;
+        let t1 = (ms - p.y) * inv;
+        let lo = horizontal.select(c!(f32::NEG_INFINITY), t0.min_num(t1));
+        let hi = horizontal.select(c!(f32::INFINITY), t0.max_num(t1));
+        // Outer cylinder: ρ²(t) = h² t² + 2 (p_x n_x + p_z n_z) t + (p_x² + p_z²).
+        let h2 = n.x * n.x + n.z * n.z;
+        let half_b = p.x * n.x + p.z * n.z;
+        let rho2_foot = p.x * p.x + p.z * p.z;
+        let (outer_sq, inner_sq) = (c!(b.outer_safe_sq), c!(b.inner_safe_sq));
+        let axis_parallel = h2.lt(c!(AXIS_PARALLEL_H2));
+        let axis_keep = rho2_foot.le(outer_sq) & rho2_foot.ge(inner_sq);
+        let disc = half_b * half_b - h2 * (rho2_foot - outer_sq);
+        let misses_cylinder = disc.lt(c!(0.0));
+        let root = disc.sqrt();
+        let lo = lo.max_num((-half_b - root) / h2);
+        let hi = hi.min_num((-half_b + root) / h2);
+        let empty = lo.gt(hi);
+        macro_rules! rho2 {
+            ($t:expr) => {
+                (h2 * $t + c!(2.0) * half_b) * $t + rho2_foot
+            };
+        }
+        let in_hole = rho2!(lo).lt(inner_sq) & rho2!(hi).lt(inner_sq);
+        let general = !misses_cylinder & !empty & !in_hole;
+        !outside_slab & axis_parallel.select_mask(axis_keep, general)
+    }
+}

@@ -1,0 +1,321 @@
+//! The exact intersection over f64 lanes: [`crate::intersect()`] for many rays at once.
+//!
+//! Every step is the scalar code's, in the same order (see `src/intersect.rs`): the world
+//! ray to the torus frame in f64, the foot point and the scale 1/R, the quartic's
+//! coefficients in their non-cancelling forms, the bounding-sphere chord and range tests,
+//! the nearest root (the batch solver, [`super::solve`]), and the normal. A lane whose
+//! quartic needs the scalar solver's careful paths is flagged, and the wavefront runs the
+//! scalar [`crate::intersect()`] on that ray instead, so tangent rays get exactly the
+//! scalar answer.
+
+use super::lanes::{F64s, M64s};
+use super::lines::BLOCK;
+use super::solve::nearest::nearest_root;
+use crate::{Ray, Torus};
+use glam::{DMat3, DVec3};
+use pulp::{Simd, WithSimd};
+
+/// World rays in f64, structure of arrays, padded to whole blocks; each remembers its
+/// index in the caller's ray slice.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct RaysF64 {
+    len: usize,
+    /// origin x, y, z, direction x, y, z, t_min, t_max.
+    columns: [Vec<f64>; 8],
+    /// The ray's index in the caller's slice.
+    pub(crate) index: Vec<usize>,
+}
+
+impl RaysF64 {
+    /// The rays `rays[i]` for each `i` of `kept` (ascending, `count` of them), widened to
+    /// f64 exactly, with whole blocks of padding: a ray from (4, 0, 0) along +x,
+    /// harmless, whose answers are dropped.
+    pub(crate) fn fill(&mut self, rays: &[Ray], kept: impl Iterator<Item = usize>, count: usize) {
+        self.len = count;
+        let padded = count.div_ceil(BLOCK) * BLOCK;
+        for (c, pad) in self
+            .columns
+            .iter_mut()
+            .zip([4.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0])
+        {
+            c.clear();
+            c.resize(padded, pad);
+        }
+        self.index.clear();
+        self.index.extend(kept);
+        assert_eq!(
+            self.index.len(),
+            count,
+            "kept lines and their count disagree"
+        );
+        let [ox, oy, oz, dx, dy, dz, lo, hi] = &mut self.columns;
+        for (j, &i) in self.index.iter().enumerate() {
+            let ray = &rays[i];
+            let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
+            (ox[j], oy[j], oz[j]) = (o.x, o.y, o.z);
+            (dx[j], dy[j], dz[j]) = (d.x, d.y, d.z);
+            (lo[j], hi[j]) = (f64::from(ray.t_min()), f64::from(ray.t_max()));
+        }
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.len
+    }
+
+    fn padded(&self) -> usize {
+        self.columns[0].len()
+    }
+}
+
+/// The lanes' answers: t and the world normal (f64, to be narrowed to the [`crate::Hit`]'s
+/// f32), and per block a bit of "hit" and a bit of "ask the scalar path".
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Answers {
+    pub(crate) t: Vec<f64>,
+    pub(crate) normal: [Vec<f64>; 3],
+    pub(crate) hit: Vec<u64>,
+    pub(crate) fallback: Vec<u64>,
+}
+
+/// Runs the exact intersection on every ray of `rays` for `torus`.
+pub(crate) fn intersect_lanes(
+    dispatch: &super::Dispatch,
+    torus: &Torus,
+    rays: &RaysF64,
+    out: &mut Answers,
+) {
+    let n = rays.padded();
+    out.t.resize(n, 0.0);
+    for c in &mut out.normal {
+        c.resize(n, 0.0);
+    }
+    out.hit.resize(n / BLOCK, 0);
+    out.fallback.resize(n / BLOCK, 0);
+    dispatch.run(Kernel {
+        frame: Frame::of(torus),
+        rays,
+        out,
+    });
+}
+
+/// The torus as the scalar exact path sees it, in f64.
+#[derive(Clone, Copy)]
+struct Frame {
+    center: DVec3,
+    to_local: DMat3,
+    to_world: DMat3,
+    major: f64,
+    /// The per-torus constants of `reduce` and the chord test, computed once in f64
+    /// exactly as the scalar code computes them per ray: 1/R, r/R, 1 − (r/R)², 1 + r/R.
+    inv_major: f64,
+    minor_rel: f64,
+    k: f64,
+    outer: f64,
+}
+
+impl Frame {
+    fn of(torus: &Torus) -> Frame {
+        let to_local = torus.to_local_rotation_f64();
+        let (major, minor) = (
+            f64::from(torus.major_radius()),
+            f64::from(torus.minor_radius()),
+        );
+        Frame {
+            center: torus.center().as_dvec3(),
+            to_local,
+            to_world: to_local.transpose(),
+            major,
+            inv_major: 1.0 / major,
+            minor_rel: minor * (1.0 / major),
+            k: 1.0 - (minor * (1.0 / major)) * (minor * (1.0 / major)),
+            outer: 1.0 + minor / major,
+        }
+    }
+}
+
+/// A 3-vector of f64 lanes.
+#[derive(Clone, Copy)]
+struct V<S: Simd> {
+    x: F64s<S>,
+    y: F64s<S>,
+    z: F64s<S>,
+}
+
+impl<S: Simd> V<S> {
+    #[inline(always)]
+    fn splat(s: S, v: DVec3) -> V<S> {
+        V {
+            x: F64s::splat(s, v.x),
+            y: F64s::splat(s, v.y),
+            z: F64s::splat(s, v.z),
+        }
+    }
+    /// `DVec3::dot`: `(x·x′ + y·y′) + z·z′`.
+    #[inline(always)]
+    fn dot(self, o: V<S>) -> F64s<S> {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+    #[inline(always)]
+    fn scale(self, k: F64s<S>) -> V<S> {
+        V {
+            x: self.x * k,
+            y: self.y * k,
+            z: self.z * k,
+        }
+    }
+    #[inline(always)]
+    fn sub(self, o: V<S>) -> V<S> {
+        V {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+    #[inline(always)]
+    fn add(self, o: V<S>) -> V<S> {
+        V {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
+    }
+    /// `DMat3 * DVec3` as glam computes it: `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
+    #[inline(always)]
+    fn rotated(self, m: &DMat3) -> V<S> {
+        let s = self.x.s;
+        V::splat(s, m.x_axis)
+            .scale(self.x)
+            .add(V::splat(s, m.y_axis).scale(self.y))
+            .add(V::splat(s, m.z_axis).scale(self.z))
+    }
+}
+
+struct Kernel<'a> {
+    frame: Frame,
+    rays: &'a RaysF64,
+    out: &'a mut Answers,
+}
+
+impl WithSimd for Kernel<'_> {
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: Simd>(self, s: S) {
+        let lanes = S::F64_LANES;
+        let Kernel { frame, rays, out } = self;
+        let col = &rays.columns;
+        for block in 0..rays.padded() / BLOCK {
+            let (mut hit_bits, mut cold_bits) = (0u64, 0u64);
+            // The last block stops at the register holding the last ray.
+            for k in (0..BLOCK.min(rays.len() - block * BLOCK)).step_by(lanes) {
+                let at = block * BLOCK + k..block * BLOCK + k + lanes;
+                macro_rules! load {
+                    ($j:expr) => {
+                        F64s::load(s, &col[$j][at.clone()])
+                    };
+                }
+                let origin = V {
+                    x: load!(0),
+                    y: load!(1),
+                    z: load!(2),
+                };
+                let dir = V {
+                    x: load!(3),
+                    y: load!(4),
+                    z: load!(5),
+                };
+                let lane = intersect_lane(s, &frame, origin, dir, load!(6), load!(7));
+                lane.t.store(&mut out.t[at.clone()]);
+                let [nx, ny, nz] = &mut out.normal;
+                lane.normal.x.store(&mut nx[at.clone()]);
+                lane.normal.y.store(&mut ny[at.clone()]);
+                lane.normal.z.store(&mut nz[at.clone()]);
+                hit_bits |= lane.hit.bits() << k;
+                cold_bits |= lane.fallback.bits() << k;
+            }
+            out.hit[block] = hit_bits;
+            out.fallback[block] = cold_bits;
+        }
+    }
+}
+
+/// One register of rays' answers.
+struct Lane<S: Simd> {
+    t: F64s<S>,
+    normal: V<S>,
+    hit: M64s<S>,
+    fallback: M64s<S>,
+}
+
+/// [`crate::intersect()`], lane for lane (with the batch solver).
+#[inline(always)]
+fn intersect_lane<S: Simd>(
+    s: S,
+    frame: &Frame,
+    origin: V<S>,
+    dir: V<S>,
+    t_min: F64s<S>,
+    t_max: F64s<S>,
+) -> Lane<S> {
+    // Macros, not closures: a closure that LLVM leaves outlined would run without the
+    // SIMD target features and call every intrinsic out of line.
+    macro_rules! c {
+        ($x:expr) => {
+            F64s::splat(s, $x)
+        };
+    }
+    // `Torus::line_to_local_f64`.
+    let centre = V {
+        x: c!(frame.center.x),
+        y: c!(frame.center.y),
+        z: c!(frame.center.z),
+    };
+    let o = origin.sub(centre).rotated(&frame.to_local);
+    let d = dir.rotated(&frame.to_local);
+    // `reduce`.
+    let major = c!(frame.major);
+    let inv_len = c!(1.0) / d.dot(d).sqrt();
+    let dh = d.scale(inv_len);
+    let s_ = o.dot(dh);
+    let inv_r = c!(frame.inv_major);
+    let p = o.sub(dh.scale(s_)).scale(inv_r);
+    let rr = c!(frame.minor_rel);
+    let k = c!(frame.k);
+    let rho = (p.x * p.x + p.z * p.z).sqrt();
+    let tube = (p.y - rr) * (p.y + rr);
+    let c2 = c!(2.0) * (rho - c!(1.0)) * (rho + c!(1.0)) + c!(2.0) * tube + c!(4.0) * dh.y * dh.y;
+    let delta = p.dot(dh);
+    let c1 = c!(8.0) * (p.y - delta * dh.y) * dh.y;
+    let c0 =
+        ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
+    // `intersect_local`: the chord of the bounding sphere and the range.
+    let outer = c!(frame.outer);
+    let chord_sq = outer * outer * c!(1.0 + 1e-12) - p.dot(p);
+    let inv_major = inv_r;
+    let len = c!(1.0) / inv_len;
+    let lo = (t_min * len + s_) * inv_major;
+    let hi = (t_max * len + s_) * inv_major;
+    let out_of_reach =
+        (lo.gt(c!(0.0)) & (lo * lo).gt(chord_sq)) | (hi.lt(c!(0.0)) & (hi * hi).gt(chord_sq));
+    let reaches = !chord_sq.lt(c!(0.0)) & !out_of_reach;
+    // The nearest root, then `t`, the normal, and the normal in the world (`intersect`).
+    let (u, cold) = nearest_root(c2, c1, c0, lo, hi);
+    let t = (u * major - s_) * inv_len;
+    let x = p.add(dh.scale(u));
+    let w = x.dot(x) + k;
+    let grad = V {
+        x: w * x.x - c!(2.0) * x.x,
+        y: w * x.y,
+        z: w * x.z - c!(2.0) * x.z,
+    };
+    let normal = grad
+        .scale(c!(1.0) / grad.dot(grad).sqrt())
+        .rotated(&frame.to_world);
+    let found = !u.is_nan();
+    Lane {
+        t,
+        normal,
+        hit: reaches & found & !cold,
+        fallback: reaches & cold,
+    }
+}

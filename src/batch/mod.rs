@@ -1,0 +1,56 @@
+//! Batch (SIMD) culls: many lines at once, branch-free, one keep bit per line.
+//!
+//! A renderer that traces packets or wavefronts has the rays of a batch side by side;
+//! there the cost model of a cull changes. A branch-free cull over 8 or 16 lanes costs a
+//! fraction of a nanosecond per ray, the keep/reject branches that a scalar loop
+//! mispredicts vanish, and what remains is the solve of the survivors.
+//!
+//! * [`Lines`]: torus-frame lines as structure of arrays ([`Lines::from_rays`] builds
+//!   them from world rays with [`crate::Torus::line_to_local`], the scalar path's own
+//!   transform).
+//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. Each batch cull
+//!   mirrors its scalar twin in [`crate::cull`] expression for expression, so the verdicts
+//!   are bit-identical (`tests/batch.rs` checks it at every dispatch level).
+//! * [`Dispatch`] and [`Isa`]: the instruction set, detected at run time (AVX-512, AVX2,
+//!   NEON, or the scalar fallback) and recorded in `meta.isa`; `TORUS_CULL_ISA` forces a
+//!   lower one.
+//!
+//! * [`nearest_roots`]: the nearest root of many depressed quartics ([`Quartics`]) at
+//!   once on f64 lanes, the scalar solver's method branch-free, its rare careful cases
+//!   handed back to it.
+//! * [`Wavefront`]: the two together for a batch of world rays: cull, compact the
+//!   survivors, batch-solve, hits; the `"mode": "batch"` timings of `cargo bench`.
+//! * [`trace_leaves_batched`]: a many-torus scene's BVH in batch mode (collect each ray's
+//!   leaf candidates, then the wavefront torus by torus), and why obvhs allows no more.
+//!
+//! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
+//! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
+//! Why pulp: it dispatches at run time to AVX-512, AVX2 + FMA, NEON or a scalar fallback
+//! from one binary (`wide` picks its width at compile time; `std::simd` needs nightly and
+//! has no dispatch of its own; `multiversion` clones functions but leaves vectorizing to
+//! the compiler, which branchy culls defeat), it exposes every operation explicitly, so
+//! nothing is fused or reordered behind the code's back (the bit-identity above rests on
+//! that), and it gives AVX-512 masks as bit masks, one instruction from a keep bit
+//! mask. `fearless_simd` (1.x, also with runtime dispatch and an AVX-512 level) is the
+//! closest alternative; pulp was taken for its longer record (the SIMD layer of `faer`)
+//! and its mask-register support, not by a measurement of both on this code.
+
+mod bvh;
+mod cull;
+mod exact;
+mod frame;
+mod isa;
+mod lanes;
+mod lines;
+mod mask;
+mod solve;
+mod vec3s;
+mod wavefront;
+
+pub use bvh::{LeafBatchStats, trace_leaves_batched};
+pub use cull::{BATCHED, NoBatchForm, cull_batch};
+pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
+pub use lines::{BLOCK, Lines};
+pub use mask::KeepMask;
+pub use solve::{Quartics, SolveStats, nearest_roots};
+pub use wavefront::{Wavefront, WavefrontStats};

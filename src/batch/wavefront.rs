@@ -1,0 +1,115 @@
+//! The wavefront: cull a batch of rays on lanes, compact the survivors, intersect them
+//! on lanes, hits.
+//!
+//! This is the cost model of a renderer that traces rays in packets or wavefronts:
+//! every stage runs over many rays at once, so a cull costs what its arithmetic costs
+//! (no mispredicted keep/reject branch per ray) and the survivors' exact intersection
+//! (f64 reduction, solve, normal) is amortized over SIMD lanes too. Both kernels follow
+//! the scalar code step for step ([`super::cull_batch`], and [`super::exact`] for
+//! [`crate::intersect()`]), and the rays whose quartic needs the scalar solver's careful
+//! paths (tangents) get the scalar [`crate::intersect()`] itself; so a wavefront hit is
+//! the [`crate::intersect_culled`] hit up to the last bits of the solver.
+
+use super::cull::{NoBatchForm, cull_batch};
+use super::exact::{Answers, RaysF64, intersect_lanes};
+use super::isa::Dispatch;
+use super::lines::{BLOCK, Lines};
+use super::mask::KeepMask;
+use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
+use glam::Vec3;
+
+/// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
+#[derive(Debug, Clone, Default)]
+pub struct Wavefront {
+    lines: Lines,
+    keep: KeepMask,
+    survivors: RaysF64,
+    answers: Answers,
+}
+
+/// What one wavefront did.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct WavefrontStats {
+    /// Rays in.
+    pub rays: usize,
+    /// Rays the cull kept (all of them for `none`): the exact intersection's lanes.
+    pub kept: usize,
+    /// Kept rays handed to the scalar [`crate::intersect()`] (tangent and near-tangent
+    /// quartics).
+    pub scalar_fallbacks: usize,
+    /// Rays with a hit.
+    pub hits: usize,
+}
+
+impl Wavefront {
+    /// Empty buffers.
+    pub fn new() -> Wavefront {
+        Wavefront::default()
+    }
+
+    /// The nearest hit of every ray (`hits[i]` for `rays[i]`, resized), culled with
+    /// `cull` first: what [`crate::intersect_culled`] returns ray by ray, to the batch
+    /// solver's rounding.
+    ///
+    /// `none` skips the cull stage (every ray is intersected): the baseline.
+    pub fn intersect(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: CullKind,
+        torus: &Torus,
+        bounds: &CullBounds,
+        rays: &[Ray],
+        hits: &mut Vec<Option<Hit>>,
+    ) -> Result<WavefrontStats, NoBatchForm> {
+        hits.clear();
+        hits.resize(rays.len(), None);
+        // Cull, then compact the survivors into f64 lanes.
+        if cull == CullKind::None {
+            self.survivors.fill(rays, 0..rays.len(), rays.len());
+        } else {
+            self.lines.fill_from_rays_batch(dispatch, torus, rays);
+            cull_batch(dispatch, cull, bounds, &self.lines, &mut self.keep)?;
+            let count = self.keep.count_kept();
+            self.survivors.fill(rays, self.keep.kept(), count);
+        }
+        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
+        let mut stats = WavefrontStats {
+            rays: rays.len(),
+            kept: self.survivors.len(),
+            ..WavefrontStats::default()
+        };
+        let a = &self.answers;
+        let words = self.survivors.len().div_ceil(BLOCK);
+        for (w, (&hit, &cold)) in a.hit.iter().zip(&a.fallback).take(words).enumerate() {
+            // Padding lanes lie past `len` and are never read.
+            let valid = if (w + 1) * BLOCK <= self.survivors.len() {
+                u64::MAX
+            } else {
+                (1u64 << (self.survivors.len() % BLOCK)) - 1
+            };
+            let mut bits = hit & valid;
+            while bits != 0 {
+                let j = w * BLOCK + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                hits[self.survivors.index[j]] = Some(Hit {
+                    t: a.t[j] as f32,
+                    normal: Vec3::new(
+                        a.normal[0][j] as f32,
+                        a.normal[1][j] as f32,
+                        a.normal[2][j] as f32,
+                    ),
+                });
+            }
+            let mut bits = cold & valid;
+            while bits != 0 {
+                let j = w * BLOCK + bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let i = self.survivors.index[j];
+                hits[i] = intersect(torus, &rays[i]);
+                stats.scalar_fallbacks += 1;
+            }
+        }
+        stats.hits = hits.iter().filter(|h| h.is_some()).count();
+        Ok(stats)
+    }
+}
