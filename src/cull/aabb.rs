@@ -6,8 +6,11 @@ use glam::Vec3;
 /// Rejects lines that miss the box [−(R+r_η), R+r_η] × [−r_η, r_η] × [−(R+r_η), R+r_η].
 ///
 /// The slab method over all t. A zero direction component gives ±∞ slab distances, and
-/// an origin exactly on that slab's plane gives 0·∞ = NaN; `f32::min`/`max` drop the NaN,
-/// which leaves that slab unconstrained, the conservative answer.
+/// an origin exactly on that slab's plane gives 0·∞ = NaN. glam's component-wise
+/// `min`/`max` (`a < b ? a : b`) can pass that NaN on, and the verdict for such a line
+/// is then whatever the comparisons make of it. That is still conservative: the line lies
+/// in the plane of a padded face, η = 2⁻¹²·(R + r) beyond the torus's own box, so it cannot
+/// hit the torus.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct AabbCull;
 
