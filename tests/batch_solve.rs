@@ -9,14 +9,13 @@
 //!   scalar answer to rounding (both none, or both within 1e-9 relative): the lane code
 //!   follows the scalar method step for step, only libm's `cbrt`/`acos`/`cos` differ.
 
-use glam::DVec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
 use torus_cull::intersect::quartic_coefficients_local;
 use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::quartic::nearest_root_depressed;
-use torus_cull::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
+use torus_cull::workload::adversarial::{LineFamily, family_rays};
 use torus_cull::workload::{Case, Pose, generate};
 use torus_cull::{Ray, Torus};
 
@@ -81,26 +80,14 @@ fn family(name: &str) -> Vec<Case1> {
             out.extend(b.rays.iter().filter_map(|r| Case1::new(&b.torus, r)));
             continue;
         }
-        let torus = Torus::canonical(1.0, (1.0 / nu) as f32).unwrap();
-        let (big, small) = (1.0, f64::from(torus.minor_radius()));
-        let offsets: [f64; 6] = if name == "tangent" {
-            [1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4]
-        } else {
-            [1e-7, -1e-7, 1e-8, -1e-8, 1e-9, -1e-9]
+        let kind = match name {
+            "hole_edge" => LineFamily::HoleEdge,
+            "tangent" => LineFamily::Tangent,
+            _ => LineFamily::TangentLimit,
         };
         let mut rng = Pcg64::seed_from_u64(0x501E ^ nu.to_bits() ^ name.len() as u64);
-        for i in 0..2048 {
-            let (p, d): (DVec3, DVec3) = if name == "hole_edge" {
-                hole_edge_line(&mut rng, big, small)
-            } else {
-                let circle = SpecialCircle::ALL[i % 4];
-                tangent_line(&mut rng, big, small, circle, offsets[(i / 4) % 6])
-            };
-            let o = p - d * 3.0 * (big + small);
-            if let Ok(ray) = Ray::new(o.as_vec3(), d.as_vec3()) {
-                out.extend(Case1::new(&torus, &ray));
-            }
-        }
+        let (torus, rays) = family_rays(kind, nu, 2048, &mut rng);
+        out.extend(rays.iter().filter_map(|r| Case1::new(&torus, r)));
     }
     out
 }

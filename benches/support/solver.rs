@@ -21,7 +21,7 @@ use torus_cull::intersect::quartic_coefficients_local;
 use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
 use torus_cull::results::SolverRecord;
-use torus_cull::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
+use torus_cull::workload::adversarial::{LineFamily, family_rays};
 use torus_cull::workload::spec::Workload;
 use torus_cull::workload::{Case, generate};
 use torus_cull::{Ray, Torus};
@@ -31,11 +31,6 @@ pub const MATCH_TOLERANCE_REL: f64 = 1e-6;
 
 /// The line families, each timed and scored on its own.
 pub const FAMILIES: [&str; 4] = ["uniform", "hole_edge", "tangent", "tangent_limit"];
-
-/// Offsets δ (× r) of the `tangent` family, where the accuracy goal applies.
-const TANGENT_OFFSETS: [f64; 6] = [1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4];
-/// Offsets of `tangent_limit`, closer than 1e-7·r: f64 conditioning sets the error there.
-const LIMIT_OFFSETS: [f64; 6] = [1e-7, -1e-7, 1e-8, -1e-8, 1e-9, -1e-9];
 
 /// One line's quartic, with what it takes to map its roots u back to t.
 pub struct SolverSet {
@@ -103,28 +98,15 @@ pub fn family_sets(family: &str, workload: &Workload, config: &BenchConfig) -> V
             sets.extend(b.rays.iter().filter_map(|r| SolverSet::new(&b.torus, r)));
             continue;
         }
-        let torus = Torus::canonical(1.0, (1.0 / nu) as f32).unwrap();
-        let (big, small) = (1.0, f64::from(torus.minor_radius()));
+        let kind = match family {
+            "hole_edge" => LineFamily::HoleEdge,
+            "tangent" => LineFamily::Tangent,
+            _ => LineFamily::TangentLimit,
+        };
         let seed = workload.seed ^ nu.to_bits() ^ family.len() as u64;
         let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
-        for i in 0..per_nu {
-            let (p, d) = match family {
-                "hole_edge" => hole_edge_line(&mut rng, big, small),
-                _ => {
-                    let offsets = if family == "tangent" {
-                        &TANGENT_OFFSETS
-                    } else {
-                        &LIMIT_OFFSETS
-                    };
-                    let circle = SpecialCircle::ALL[i % 4];
-                    tangent_line(&mut rng, big, small, circle, offsets[(i / 4) % 6])
-                }
-            };
-            let o = p - d * 3.0 * (big + small);
-            if let Ok(ray) = Ray::new(o.as_vec3(), d.as_vec3()) {
-                sets.extend(SolverSet::new(&torus, &ray));
-            }
-        }
+        let (torus, rays) = family_rays(kind, nu, per_nu, &mut rng);
+        sets.extend(rays.iter().filter_map(|r| SolverSet::new(&torus, r)));
     }
     sets
 }

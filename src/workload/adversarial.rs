@@ -9,7 +9,7 @@
 //!   ([`SpecialCircle`]) in a random tangent direction, pushed along the outward normal by
 //!   `δ·r` (δ < 0 enters the tube: a near-double pair of real roots; δ > 0 misses).
 
-use crate::Torus;
+use crate::{Ray, Torus};
 use glam::{DVec3, Vec3};
 use rand::{Rng, RngExt};
 
@@ -118,6 +118,56 @@ pub fn tangent_line(
     };
     let dir = along * alpha.cos() + meridian * alpha.sin();
     (point + normal * (delta * minor), dir.normalize())
+}
+
+/// Offsets δ (× r) of [`LineFamily::Tangent`], where a solver's accuracy goal applies.
+pub const TANGENT_OFFSETS: [f64; 6] = [1e-6, -1e-6, 1e-5, -1e-5, 1e-4, -1e-4];
+
+/// Offsets of [`LineFamily::TangentLimit`], closer than 1e-7·r: f64 conditioning sets the
+/// error there.
+pub const TANGENT_LIMIT_OFFSETS: [f64; 6] = [1e-7, -1e-7, 1e-8, -1e-8, 1e-9, -1e-9];
+
+/// The adversarial line families the solvers are measured and tested on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineFamily {
+    /// [`hole_edge_line`]s.
+    HoleEdge,
+    /// [`tangent_line`]s, the four circles in turn, offsets cycling through
+    /// [`TANGENT_OFFSETS`].
+    Tangent,
+    /// The same with [`TANGENT_LIMIT_OFFSETS`].
+    TangentLimit,
+}
+
+/// `count` lines of `family` on the canonical torus R = 1, r = 1/ν, as rays starting
+/// 3·(R + r) back along each line (the rays a line's f32 rounding refuses are left out).
+pub fn family_rays(
+    family: LineFamily,
+    nu: f64,
+    count: usize,
+    rng: &mut rand_pcg::Pcg64,
+) -> (Torus, Vec<Ray>) {
+    let torus = Torus::canonical(1.0, (1.0 / nu) as f32).expect("nu > 1");
+    let (big, small) = (1.0, f64::from(torus.minor_radius()));
+    let rays = (0..count)
+        .filter_map(|i| {
+            let (p, d) = match family {
+                LineFamily::HoleEdge => hole_edge_line(rng, big, small),
+                LineFamily::Tangent | LineFamily::TangentLimit => {
+                    let offsets = if family == LineFamily::Tangent {
+                        &TANGENT_OFFSETS
+                    } else {
+                        &TANGENT_LIMIT_OFFSETS
+                    };
+                    let circle = SpecialCircle::ALL[i % 4];
+                    tangent_line(rng, big, small, circle, offsets[(i / 4) % 6])
+                }
+            };
+            let o = p - d * 3.0 * (big + small);
+            Ray::new(o.as_vec3(), d.as_vec3()).ok()
+        })
+        .collect();
+    (torus, rays)
 }
 
 #[cfg(test)]
