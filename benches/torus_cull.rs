@@ -33,7 +33,7 @@
 //!
 //! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
 //! the same cases and ν (each cull against cychosz and none, the scalar and the batch
-//! metrics, in shuffled rounds on the same rays; see [`torus_cull::paired`]).
+//! metrics, in shuffled rounds on the same rays; see [`torus_cull::harness::paired`]).
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -52,14 +52,14 @@ use std::process::ExitCode;
 use std::time::SystemTime;
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
-use torus_cull::measure::{self, LabeledBatch};
-use torus_cull::oracle::OracleClass;
-use torus_cull::paired;
-use torus_cull::results::{
+use torus_cull::harness::measure::{self, LabeledBatch};
+use torus_cull::harness::oracle::OracleClass;
+use torus_cull::harness::paired;
+use torus_cull::harness::results::{
     BATCH_MODE, BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
 };
-use torus_cull::workload::spec::{BvhSpec, Workload};
-use torus_cull::workload::{Case, generate};
+use torus_cull::harness::workload::spec::{BvhSpec, Workload};
+use torus_cull::harness::workload::{Case, generate};
 use torus_cull::{
     Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled,
 };
@@ -199,13 +199,14 @@ fn bench() -> Result<ExitCode, String> {
             return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
         }
         Some(p) => PathBuf::from(p),
-        None => {
-            torus_cull::results::default_path(Path::new("results"), &config.file_suffix(&workload))
-        }
+        None => torus_cull::harness::results::default_path(
+            Path::new("results"),
+            &config.file_suffix(&workload),
+        ),
     };
     if mode == Mode::Benchmark {
         // Before the measurements, not after them.
-        torus_cull::output::check_writable(&out)
+        torus_cull::harness::output::check_writable(&out)
             .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", out.display()))?;
     }
     let started = SystemTime::now();
@@ -389,7 +390,7 @@ fn bench() -> Result<ExitCode, String> {
         // sweep with part of the timings (or old timings with a new sweep).
         let sweep = config.sweep_workload(&workload);
         let (records, rejected_hits) =
-            measure::rejection_sweep(&sweep, &CullKind::TIMED, 2, &|_| {})
+            measure::rejection_sweep(&sweep, &CullKind::TIMED.map(Into::into), 2, &|_| {})
                 .map_err(|e| e.to_string())?;
         results.rejection = records;
         false_rejects = rejected_hits;
@@ -415,12 +416,15 @@ fn bench() -> Result<ExitCode, String> {
         bench_args: args.into_iter().filter(|a| a != "--bench").collect(),
     });
     results.save(&path).map_err(|e| e.to_string())?;
-    print!("{}", torus_cull::report::timing_tables(&results));
-    print!("{}", torus_cull::report::cull_ns_tables(&results));
-    print!("{}", torus_cull::report::scalar_vs_batch_tables(&results));
-    print!("{}", torus_cull::report::ratio_tables(&results));
+    print!("{}", torus_cull::harness::report::timing_tables(&results));
+    print!("{}", torus_cull::harness::report::cull_ns_tables(&results));
+    print!(
+        "{}",
+        torus_cull::harness::report::scalar_vs_batch_tables(&results)
+    );
+    print!("{}", torus_cull::harness::report::ratio_tables(&results));
     print!("{}", solver::table(&results.solver));
-    print!("{}", torus_cull::report::bvh_tables(&results));
+    print!("{}", torus_cull::harness::report::bvh_tables(&results));
     if complete {
         println!("wrote {}", path.display());
     } else {
@@ -435,7 +439,7 @@ fn bench() -> Result<ExitCode, String> {
     let stem = path
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    match torus_cull::plot::plot_results(&results, dir, &stem) {
+    match torus_cull::harness::plot::plot_results(&results, dir, &stem) {
         Ok(w) => println!("wrote {} plots to {}/{stem}-*.svg", w.len(), dir.display()),
         Err(e) => eprintln!("plots failed: {e}"),
     }

@@ -347,7 +347,23 @@ mod tests {
     fn random_torus(rng: &mut Pcg64) -> Torus {
         let major = 10f32.powf(rng.random_range(-3.0..3.0));
         let nu = rng.random_range(1.2..10.0);
-        crate::workload::adversarial::random_pose_torus(rng, major, major / nu)
+        // A uniform axis by rejection from the unit ball (the harness's generators are not
+        // part of the renderer build).
+        let mut cube = || {
+            Vec3::new(
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            )
+        };
+        let axis = loop {
+            let v = cube();
+            if (0.01..=1.0).contains(&v.length_squared()) {
+                break v.normalize();
+            }
+        };
+        let center = cube() * 3.0 * major;
+        Torus::new(center, axis, major, major / nu).expect("valid radii at any pose")
     }
 
     #[test]

@@ -1,18 +1,31 @@
 //! # torus-cull
 //!
-//! Bounding tests ("culls") for ray–torus intersection, an exact intersection, and an
-//! independent f64 oracle to prove the culls conservative.
+//! Bounding tests ("culls") for ray–torus intersection, and an exact intersection that
+//! never misses a hit.
+//!
+//! # The renderer API
 //!
 //! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect()`]
 //! (or both at once: [`intersect_culled`]).
 //!
-//! The rest of the crate is the measuring harness behind the `torus-cull` command and
-//! `cargo bench`: [`oracle`] (f64 ground truth, never timed), [`workload`] (ray
-//! generators and workload files), [`measure`] (counting), [`results`] (the results
-//! JSON), [`compare`], [`report`] and [`plot`], [`eval`], [`output`] (how every output file
-//! is written), and [`scene`] (many tori in an obvhs BVH) with [`render`]. [`paired`]
-//! times culls against each other in interleaved rounds (`torus-cull time`), so that
-//! ratios hold on a loaded machine.
+//! * [`Torus`] and [`Ray`]: validated shapes; [`Torus::line_to_local`] moves a ray into
+//!   the torus frame (centre at the origin, axis +y) where every cull works.
+//! * [`cull`]: one file per cull behind the one-method [`Cull`] trait, all conservative
+//!   (a rejected line provably misses), from Cychosz's sphere + slab ([`CychoszCull`]) and
+//!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
+//!   root-free [`DiscriminantCull`]; [`CullKind`] names them for run-time choice.
+//! * [`intersect()`]: the nearest hit, from [`quartic`]'s nearest-root solver on the
+//!   torus quartic; [`quartic::solve_quartic`] gives every real root (for CSG).
+//! * [`batch`]: the same culls and solver on SIMD lanes, for packets and wavefronts, with
+//!   the instruction set picked at run time.
+//!
+//! With `default-features = false` this is all the crate builds, and its only
+//! dependencies are `glam` and `pulp` (the SIMD lanes of [`batch`]):
+//!
+//! ```toml
+//! [dependencies]
+//! torus-cull = { git = "…", default-features = false }
+//! ```
 //!
 //! The geometry, each cull's bound and soundness argument, the floating-point margin, the
 //! supported range and the seed paper's errata are written up in the repository's
@@ -38,38 +51,34 @@
 //! assert!((hit.t - 9.0).abs() < 1e-4);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! # The measuring harness
+//!
+//! The feature `harness` (on by default) adds the `harness` module: the f64 oracle, the workload
+//! generators, counting, paired timing, BVH scenes, results files, plots and reports
+//! behind the `torus-cull` command and `cargo bench`. See its module page.
 
 #![warn(missing_docs)]
 
 pub mod batch;
-pub mod compare;
 pub mod cull;
-pub mod eval;
+mod geometry;
 pub mod intersect;
-pub mod measure;
-pub mod oracle;
-pub mod output;
-pub mod paired;
-pub mod plot;
 pub mod quartic;
-mod ray;
-pub mod render;
-pub mod report;
-pub mod results;
-pub mod scene;
-mod torus;
-pub mod workload;
+
+#[cfg(feature = "harness")]
+pub mod harness;
 
 pub use cull::{
     AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
     DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
     ThickCylinderCull,
 };
-pub use intersect::{Hit, intersect};
-pub use ray::{Ray, RayError};
-pub use torus::{
-    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+pub use geometry::{
+    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, RayError, Torus,
+    TorusError,
 };
+pub use intersect::{Hit, intersect};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.

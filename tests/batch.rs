@@ -16,6 +16,9 @@
 //! copies of lines with the direction scaled by 1e-19 … 1e19 (the `moderate` and
 //! `rescaled` paths).
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 mod common;
 
 use common::{NUS, family, pushed_back};
@@ -23,9 +26,9 @@ use glam::{DMat3, DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{BATCHED, Dispatch, Isa, KeepMask, Lines, cull_batch};
-use torus_cull::oracle::{OracleClass, classify_line};
-use torus_cull::workload::Case;
-use torus_cull::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
+use torus_cull::harness::oracle::{OracleClass, classify_line};
+use torus_cull::harness::workload::Case;
+use torus_cull::harness::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 use torus_cull::{CullBounds, CullKind, Ray, Torus};
 
 /// One torus and rays on it.
@@ -357,12 +360,12 @@ fn batch_verdicts_equal_scalar_verdicts_at_every_dispatch_level() {
 fn any_length_and_the_padding_never_shows() {
     let torus = Torus::canonical(1.0, 0.25).unwrap();
     let bounds = CullBounds::of(&torus);
-    let batch = torus_cull::workload::generate(
+    let batch = torus_cull::harness::workload::generate(
         Case::Uniform,
         4.0,
         300,
         7,
-        torus_cull::workload::Pose::Canonical,
+        torus_cull::harness::workload::Pose::Canonical,
     )
     .unwrap();
     for dispatch in Isa::available()

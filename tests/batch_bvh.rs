@@ -3,9 +3,13 @@
 //! level, and tests every leaf the scalar closest-hit traversal tests (and more: it has
 //! no shrinking t_max).
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 use glam::Vec3;
-use torus_cull::batch::{BATCHED, Dispatch, Isa, LeafBatchStats, trace_leaves_batched};
-use torus_cull::scene::{Scene, SceneHit, SceneKind, TraceStats};
+use torus_cull::batch::{BATCHED, Dispatch, Isa};
+use torus_cull::harness::scene::{LeafBatchStats, trace_leaves_batched};
+use torus_cull::harness::scene::{Scene, SceneHit, SceneKind, TraceStats};
 use torus_cull::{CullKind, NoCull, Ray};
 
 /// Both miss, or both hit at the same t up to the batch solver's rounding (the torus may

@@ -9,14 +9,17 @@
 //!   scalar answer to rounding (both none, or both within 1e-9 relative): the lane code
 //!   follows the scalar method step for step, only libm's `cbrt`/`acos`/`cos` differ.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
+use torus_cull::harness::oracle::{OracleClass, classify_line, reference_roots};
+use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
+use torus_cull::harness::workload::{Case, Pose, generate};
 use torus_cull::intersect::quartic_coefficients_local;
-use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::quartic::nearest_root_depressed;
-use torus_cull::workload::adversarial::{LineFamily, family_rays};
-use torus_cull::workload::{Case, Pose, generate};
 use torus_cull::{Ray, Torus};
 
 const NUS: [f64; 5] = [1.25, 2.0, 4.0, 8.0, 16.0];

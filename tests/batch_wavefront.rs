@@ -6,12 +6,15 @@
 //! camera) at ν = 1.01 … 1000 and random world poses, plus the grazing rays pushed
 //! 250·(R + r) back.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 mod common;
 
 use common::{family, pushed_back};
 use torus_cull::batch::{BATCHED, Dispatch, Isa, Wavefront};
-use torus_cull::oracle::{OracleClass, classify};
-use torus_cull::workload::Case;
+use torus_cull::harness::oracle::{OracleClass, classify};
+use torus_cull::harness::workload::Case;
 use torus_cull::{CullBounds, CullKind, CullVisitor, Hit, Ray, Torus, intersect_culled};
 
 /// The scalar path for one cull, ray by ray.

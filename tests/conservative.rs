@@ -7,11 +7,14 @@
 //! tangent to the surface pushed off by ±1e-2, ±1e-4, ±1e-6 of r; plus copies of the
 //! grazing lines whose origin sits 100·(R + r) and 250·(R + r) away.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
-use torus_cull::oracle::{OracleClass, classify_line};
-use torus_cull::workload::Case;
+use torus_cull::harness::oracle::{OracleClass, classify_line};
+use torus_cull::harness::workload::Case;
 use torus_cull::{CullBounds, CullKind, Ray, Torus};
 
 /// The position of `cull` in [`CullKind::TIMED`].

@@ -1,11 +1,14 @@
 //! The timed exact intersection agrees with the oracle, and the oracle's two methods agree.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
+use torus_cull::harness::oracle::{OracleClass, classify, margin_by_sampling, reference_roots};
+use torus_cull::harness::workload::Case;
 use torus_cull::intersect;
-use torus_cull::oracle::{OracleClass, classify, margin_by_sampling, reference_roots};
-use torus_cull::workload::Case;
 
 /// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between `intersect` (its t is f32) and
 /// the oracle's reference root: relative to the hit distance, or to the torus size for
@@ -90,7 +93,7 @@ fn oracle_methods_agree_outside_the_band() {
                 ray.t_min() as f64,
                 ray.t_max() as f64,
             );
-            let band = torus_cull::oracle::AMBIGUITY_REL * torus.outer_radius() as f64;
+            let band = torus_cull::harness::oracle::AMBIGUITY_REL * torus.outer_radius() as f64;
             if label.margin.abs() > band {
                 assert_eq!(
                     label.margin < 0.0,

@@ -3,12 +3,15 @@
 //! 10⁻¹⁸ to 10¹⁸ and origins up to 10⁶·(R + r) away; tori outside the range are refused
 //! with an error that states it.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 mod common;
 
 use common::{family, pairs, pushed_back};
 use glam::Vec3;
-use torus_cull::oracle::{OracleClass, classify_line};
-use torus_cull::workload::Case;
+use torus_cull::harness::oracle::{OracleClass, classify_line};
+use torus_cull::harness::workload::Case;
 use torus_cull::{
     CullBounds, CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus,
     TorusError,

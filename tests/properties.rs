@@ -2,9 +2,12 @@
 //! cull stays conservative on arbitrary lines at arbitrary poses and direction scales, and
 //! `eval` never panics on arbitrary rows.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 use glam::Vec3;
 use proptest::prelude::*;
-use torus_cull::oracle::{OracleClass, classify_line};
+use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::{CullBounds, CullKind, Ray, Torus};
 
 fn vec3(range: std::ops::Range<f32>) -> impl Strategy<Value = Vec3> {
@@ -78,7 +81,7 @@ proptest! {
     fn eval_never_panics(rows in prop::collection::vec("[-0-9.,eEnaifNI ]{0,40}", 0..6)) {
         let input = format!("ox,oy,oz,dx,dy,dz\n{}\n", rows.join("\n"));
         let mut out = Vec::new();
-        match torus_cull::eval::eval_csv(2.0, 1.0, input.as_bytes(), "prop.csv", &mut out) {
+        match torus_cull::harness::eval::eval_csv(2.0, 1.0, input.as_bytes(), "prop.csv", &mut out) {
             Ok(n) => prop_assert!(n <= rows.len()),
             Err(e) => prop_assert!(e.to_string().starts_with("prop.csv:")),
         }

@@ -1,8 +1,11 @@
 //! `torus-cull run`: a real sweep writes the results JSON and plots; a broken cull makes it
 //! exit 1 and name the ray and seed; a bad workload exits 2 naming file and field.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 use std::process::{Command, Output};
-use torus_cull::results::Results;
+use torus_cull::harness::results::Results;
 
 fn run(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -151,7 +154,7 @@ fn bad_inputs_exit_2_and_say_where() {
 /// it was built from.
 #[test]
 fn the_commit_is_the_builds_not_the_current_directorys() {
-    let (built, _) = torus_cull::results::git_state();
+    let (built, _) = torus_cull::harness::results::git_state();
     let dir = tempfile::tempdir().unwrap();
     let git = |args: &[&str]| {
         let o = Command::new("git")

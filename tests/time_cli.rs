@@ -2,10 +2,13 @@
 //! worse ratio fails `compare`; bad arguments exit 2 naming the flag and what is allowed;
 //! results files from before the `ratio` section still load.
 
+// Every check here runs against the harness's oracle or CLI.
+#![cfg(feature = "harness")]
+
 use std::path::Path;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
-use torus_cull::results::Results;
+use torus_cull::harness::results::Results;
 
 fn torus_cull(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))

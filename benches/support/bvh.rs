@@ -6,9 +6,9 @@ use criterion::{BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
-use torus_cull::results::BvhRecord;
-use torus_cull::scene::{Scene, SceneHit, TraceStats, same_hit};
-use torus_cull::workload::spec::BvhSpec;
+use torus_cull::harness::results::BvhRecord;
+use torus_cull::harness::scene::{Scene, SceneHit, TraceStats, same_hit};
+use torus_cull::harness::workload::spec::BvhSpec;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 
 /// Rays per timed iteration: an evenly strided subset of each ray set.

@@ -17,13 +17,13 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
 use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
+use torus_cull::harness::oracle::{OracleClass, classify_line, reference_roots};
+use torus_cull::harness::results::SolverRecord;
+use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
+use torus_cull::harness::workload::spec::Workload;
+use torus_cull::harness::workload::{Case, generate};
 use torus_cull::intersect::quartic_coefficients_local;
-use torus_cull::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
-use torus_cull::results::SolverRecord;
-use torus_cull::workload::adversarial::{LineFamily, family_rays};
-use torus_cull::workload::spec::Workload;
-use torus_cull::workload::{Case, generate};
 use torus_cull::{Ray, Torus};
 
 /// A root counts as found when it is within this distance, × (R + r), of the reference.

@@ -220,14 +220,15 @@ impl<S: Simd> F32s<S> {
     pub(crate) fn load(s: S, slice: &[f32]) -> Self {
         F32s {
             s,
-            v: bytemuck::pod_read_unaligned(bytemuck::cast_slice::<f32, u8>(slice)),
+            v: pulp::bytemuck::pod_read_unaligned(pulp::bytemuck::cast_slice::<f32, u8>(slice)),
         }
     }
 
     /// Writes the lanes to `slice` (exactly `S::F32_LANES` values).
     #[inline(always)]
     pub(crate) fn store(self, slice: &mut [f32]) {
-        bytemuck::cast_slice_mut::<f32, u8>(slice).copy_from_slice(bytemuck::bytes_of(&self.v));
+        pulp::bytemuck::cast_slice_mut::<f32, u8>(slice)
+            .copy_from_slice(pulp::bytemuck::bytes_of(&self.v));
     }
 
     /// `self` times the power of two 2^(127 − e), e the biased exponent of `exp_of`:
@@ -271,7 +272,7 @@ impl<S: Simd> F64s<S> {
     pub(crate) fn load(s: S, slice: &[f64]) -> Self {
         F64s {
             s,
-            v: bytemuck::pod_read_unaligned(bytemuck::cast_slice::<f64, u8>(slice)),
+            v: pulp::bytemuck::pod_read_unaligned(pulp::bytemuck::cast_slice::<f64, u8>(slice)),
         }
     }
 }
@@ -281,7 +282,8 @@ impl<S: Simd> F64s<S> {
     /// Writes the lanes to `slice` (exactly `S::F64_LANES` values).
     #[inline(always)]
     pub(crate) fn store(self, slice: &mut [f64]) {
-        bytemuck::cast_slice_mut::<f64, u8>(slice).copy_from_slice(bytemuck::bytes_of(&self.v));
+        pulp::bytemuck::cast_slice_mut::<f64, u8>(slice)
+            .copy_from_slice(pulp::bytemuck::bytes_of(&self.v));
     }
 }
 
@@ -298,8 +300,8 @@ impl<S: Simd> M64s<S> {
 /// one byte or two); every other level as one all-ones or all-zeros element per lane,
 /// whose top bit is the lane's bit.
 #[inline(always)]
-fn lane_bits<M: bytemuck::NoUninit>(mask: &M, lanes: usize) -> u64 {
-    let bytes = bytemuck::bytes_of(mask);
+fn lane_bits<M: pulp::bytemuck::NoUninit>(mask: &M, lanes: usize) -> u64 {
+    let bytes = pulp::bytemuck::bytes_of(mask);
     match bytes.len() {
         1 => u64::from(bytes[0]),
         2 => u64::from(u16::from_le_bytes([bytes[0], bytes[1]])),

@@ -20,8 +20,8 @@
 //!   handed back to it.
 //! * [`Wavefront`]: the two together for a batch of world rays: cull, compact the
 //!   survivors, batch-solve, hits; the `"mode": "batch"` timings of `cargo bench`.
-//! * [`trace_leaves_batched`]: a many-torus scene's BVH in batch mode (collect each ray's
-//!   leaf candidates, then the wavefront torus by torus), and why obvhs allows no more.
+//!
+//! The harness's BVH scenes use the wavefront at their leaves (`harness::scene::batched`).
 //!
 //! The lanes are [pulp](https://crates.io/crates/pulp)'s: one generic kernel, compiled
 //! for each level with `#[target_feature]`, picked by a runtime check, on stable Rust.
@@ -35,7 +35,6 @@
 //! closest alternative; pulp was taken for its longer record (the SIMD layer of `faer`)
 //! and its mask-register support, not by a measurement of both on this code.
 
-mod bvh;
 mod cull;
 mod exact;
 mod frame;
@@ -47,7 +46,6 @@ mod solve;
 mod vec3s;
 mod wavefront;
 
-pub use bvh::{LeafBatchStats, trace_leaves_batched};
 pub use cull::{BATCHED, NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};

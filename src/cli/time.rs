@@ -6,9 +6,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::CullKind;
 use torus_cull::batch::Dispatch;
-use torus_cull::paired::sweep::{DEFAULT_BATCH, PairedOptions, REFERENCES, time_workload};
-use torus_cull::results::{self, Results};
-use torus_cull::workload::spec::Workload;
+use torus_cull::harness::measure::CountedCull;
+use torus_cull::harness::paired::sweep::{DEFAULT_BATCH, PairedOptions, REFERENCES, time_workload};
+use torus_cull::harness::results::{self, Results};
+use torus_cull::harness::workload::spec::Workload;
 
 /// The longest `--seconds` accepted: an hour.
 const MAX_SECONDS: f64 = 3600.0;
@@ -116,7 +117,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
     results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
-    print!("{}", torus_cull::report::ratio_tables(&results));
+    print!("{}", torus_cull::harness::report::ratio_tables(&results));
     results.save(&path)?;
     println!("wrote {}", path.display());
     Ok(ExitCode::SUCCESS)
@@ -137,13 +138,16 @@ fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
     };
     let mut culls = Vec::new();
     for name in names {
-        let kind: CullKind = name.trim().parse().map_err(|e| format!("--culls: {e}"))?;
-        if !CullKind::TIMED.contains(&kind) {
-            return Err(format!(
-                "--culls: '{kind}' is not conservative and is not timed (allowed: {})",
-                allowed()
-            ));
-        }
+        let kind = match name.trim().parse().map_err(|e| format!("--culls: {e}"))? {
+            CountedCull::Timed(kind) => kind,
+            CountedCull::Printed(printed) => {
+                return Err(format!(
+                    "--culls: '{}' is not conservative and is not timed (allowed: {})",
+                    printed.name(),
+                    allowed()
+                ));
+            }
+        };
         if !culls.contains(&kind) {
             culls.push(kind);
         }
@@ -176,7 +180,8 @@ fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>,
 }
 
 /// Fails now, not after the measurement, if `path` cannot be written the way every output
-/// is (see [`torus_cull::output`]).
+/// is (see [`torus_cull::harness::output`]).
 fn check_writable(path: &Path) -> Result<(), String> {
-    torus_cull::output::check_writable(path).map_err(|e| format!("--out {}: {e}", path.display()))
+    torus_cull::harness::output::check_writable(path)
+        .map_err(|e| format!("--out {}: {e}", path.display()))
 }

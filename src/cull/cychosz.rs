@@ -9,7 +9,8 @@ use glam::Vec3;
 /// p_y ± |d̂_y|·w, so "both ends beyond the same plane" is |p_y| − |d̂_y|·w > r, which is
 /// squared here to `s > 0 ∧ s² > (d_y²/|d|²)·((R + r)² − |p|²)` with s = |p_y| − r:
 /// one division (1/|d|²) and no square root, no branch on the sign of d_y.
-/// (The paper's Eq. 35 prints the second clause as "< r"; see [`super::CychoszPrintedCull`].)
+/// (The paper's Eq. 35 prints the second clause as "< r", which rejects lines that cross the
+/// tube; the harness keeps that form only as a test fixture, to show the oracle catching it.)
 #[derive(Debug, Clone, Copy, Default)]
 pub struct CychoszCull;
 

@@ -26,7 +26,6 @@ mod cychosz;
 mod discriminant;
 mod ellipsoid;
 mod none;
-mod printed;
 mod quadric;
 mod skala;
 mod sphere;
@@ -37,10 +36,12 @@ pub use cychosz::CychoszCull;
 pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
 pub use ellipsoid::EllipsoidCull;
 pub use none::NoCull;
-pub use printed::{CychoszPrintedCull, SkalaEq102Cull, SkalaPrintedCCull};
 pub(crate) use quadric::HORIZONTAL_DY;
 pub use quadric::QuadricCull;
 pub use skala::SkalaCull;
+// The paper-as-printed fixtures (`harness::errata`) reuse the section formulas.
+#[cfg(feature = "harness")]
+pub(crate) use skala::{SectionFormulas, skala_keeps};
 pub use sphere::SphereCull;
 pub use thick_cylinder::ThickCylinderCull;
 
@@ -225,12 +226,6 @@ pub enum CullKind {
     Discriminant,
     /// The same classification evaluated in f64.
     DiscriminantF64,
-    /// Errata tests only: Cychosz with the paper's Eq. 35 misprint. Not conservative.
-    CychoszPrinted,
-    /// Errata tests only: Skala with the printed Eq. 105, h_c² = r² − (a − r)². Not conservative.
-    SkalaPrintedC,
-    /// Errata tests only: Skala with the printed Eq. 102–103 x_B. Not conservative.
-    SkalaEq102,
 }
 
 impl CullKind {
@@ -248,13 +243,6 @@ impl CullKind {
         CullKind::DiscriminantF64,
     ];
 
-    /// The paper-as-printed variants, kept to prove the harness can see a broken cull.
-    pub const PRINTED: [CullKind; 3] = [
-        CullKind::CychoszPrinted,
-        CullKind::SkalaPrintedC,
-        CullKind::SkalaEq102,
-    ];
-
     /// The stable name.
     pub fn name(self) -> &'static str {
         match self {
@@ -268,9 +256,6 @@ impl CullKind {
             CullKind::Quadric => "quadric",
             CullKind::Discriminant => "discriminant",
             CullKind::DiscriminantF64 => "discriminant_f64",
-            CullKind::CychoszPrinted => "cychosz_printed",
-            CullKind::SkalaPrintedC => "skala_printed_c",
-            CullKind::SkalaEq102 => "skala_eq102",
         }
     }
 
@@ -287,9 +272,6 @@ impl CullKind {
             CullKind::Quadric => visitor.visit(QuadricCull),
             CullKind::Discriminant => visitor.visit(DiscriminantCull),
             CullKind::DiscriminantF64 => visitor.visit(DiscriminantF64Cull),
-            CullKind::CychoszPrinted => visitor.visit(CychoszPrintedCull),
-            CullKind::SkalaPrintedC => visitor.visit(SkalaPrintedCCull),
-            CullKind::SkalaEq102 => visitor.visit(SkalaEq102Cull),
         }
     }
 
@@ -326,11 +308,7 @@ pub struct UnknownCull(pub String);
 
 impl fmt::Display for UnknownCull {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let names: Vec<_> = CullKind::TIMED
-            .iter()
-            .chain(CullKind::PRINTED.iter())
-            .map(|c| c.name())
-            .collect();
+        let names: Vec<_> = CullKind::TIMED.iter().map(|c| c.name()).collect();
         write!(
             f,
             "unknown cull '{}' (allowed: {})",
@@ -347,7 +325,6 @@ impl FromStr for CullKind {
     fn from_str(s: &str) -> Result<CullKind, UnknownCull> {
         CullKind::TIMED
             .iter()
-            .chain(CullKind::PRINTED.iter())
             .copied()
             .find(|c| c.name() == s)
             .ok_or_else(|| UnknownCull(s.to_string()))
@@ -360,8 +337,8 @@ mod tests {
 
     #[test]
     fn registry_round_trips_names() {
-        for c in CullKind::TIMED.iter().chain(CullKind::PRINTED.iter()) {
-            assert_eq!(c.name().parse::<CullKind>().unwrap(), *c);
+        for c in CullKind::TIMED {
+            assert_eq!(c.name().parse::<CullKind>().unwrap(), c);
             struct Name;
             impl CullVisitor for Name {
                 type Output = &'static str;

@@ -1,7 +1,7 @@
 //! Line families shared by the integration tests.
 #![allow(dead_code)]
 
-use torus_cull::workload::{Batch, Case, Pose, generate};
+use torus_cull::harness::workload::{Batch, Case, Pose, generate};
 use torus_cull::{Ray, Torus};
 
 /// The ν values the conservativeness claims are tested at.

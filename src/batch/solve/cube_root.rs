@@ -26,22 +26,22 @@ pub(crate) fn cbrt<S: Simd>(y: F64s<S>) -> F64s<S> {
     let s = y.s;
     if size_of::<S::f64s>() != size_of::<S::u32s>() || S::F64_LANES == 1 {
         let mut v = y.v;
-        for x in bytemuck::cast_slice_mut::<S::f64s, f64>(std::slice::from_mut(&mut v)) {
+        for x in pulp::bytemuck::cast_slice_mut::<S::f64s, f64>(std::slice::from_mut(&mut v)) {
             *x = x.cbrt();
         }
         return F64s { s, v };
     }
-    let words: S::u32s = bytemuck::cast(y.v);
+    let words: S::u32s = pulp::bytemuck::cast(y.v);
     // ⌊w/3⌋ = ⌊w·⌈2³³/3⌉ / 2³³⌋ for every 32-bit w.
     let (_, high) = s.widening_mul_u32s(words, s.splat_u32s(0xAAAA_AAAB));
     let third = s.wrapping_dyn_shr_u32s(high, s.splat_u32s(1));
     let seed_words = s.add_u32s(third, s.splat_u32s(715_094_163));
     // Keep the high word of each f64 lane (little-endian: the odd u32 lane), zero the low.
-    let high_words: S::u32s = bytemuck::cast(s.splat_u64s(0xFFFF_FFFF_0000_0000));
+    let high_words: S::u32s = pulp::bytemuck::cast(s.splat_u64s(0xFFFF_FFFF_0000_0000));
     let seed = s.and_u32s(seed_words, high_words);
     let mut t = F64s {
         s,
-        v: bytemuck::cast(seed),
+        v: pulp::bytemuck::cast(seed),
     };
     let two = F64s::splat(s, 2.0);
     for _ in 0..3 {
@@ -108,7 +108,7 @@ mod tests {
                     Kind::Trisect => trisect_cos(x),
                 };
                 let v = y.v;
-                let got = bytemuck::cast_slice::<S::f64s, f64>(std::slice::from_ref(&v));
+                let got = pulp::bytemuck::cast_slice::<S::f64s, f64>(std::slice::from_ref(&v));
                 out.extend_from_slice(&got[..chunk.len()]);
             }
             out

@@ -160,8 +160,8 @@ impl WithSimd for Solve<'_> {
                 }
                 let (root, cold) =
                     nearest::nearest_root(load!(p), load!(q), load!(r), load!(lo), load!(hi));
-                let out = bytemuck::cast_slice_mut::<f64, u8>(&mut self.roots[at]);
-                out.copy_from_slice(bytemuck::bytes_of(&root.v));
+                let out = pulp::bytemuck::cast_slice_mut::<f64, u8>(&mut self.roots[at]);
+                out.copy_from_slice(pulp::bytemuck::bytes_of(&root.v));
                 bits |= cold.bits() << k;
             }
             *word = bits;

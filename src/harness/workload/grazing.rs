@@ -1,7 +1,7 @@
 //! `grazing`: lines tangent to the surface, pushed off it by a signed fraction of r.
 
 use super::{Batch, Frame, GenerateError, rejection_sample};
-use crate::oracle::classify;
+use crate::harness::oracle::classify;
 use glam::DVec3;
 use rand::RngExt;
 use rand_pcg::Pcg64;

@@ -11,7 +11,7 @@
 //! | blue | every box it entered was rejected by `cychosz` |
 //! | near black | entered no box |
 
-use crate::scene::Scene;
+use crate::harness::scene::Scene;
 use crate::{Cull, CychoszCull, SkalaCull, intersect};
 use std::path::Path;
 
@@ -123,6 +123,7 @@ pub fn write_png(path: &Path, size: usize, rgb: &[u8]) -> Result<(), Box<dyn std
         let mut writer = encoder.write_header()?;
         writer.write_image_data(rgb)?;
     }
-    crate::output::write_file(path, &bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    crate::harness::output::write_file(path, &bytes)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(())
 }

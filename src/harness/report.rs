@@ -1,6 +1,6 @@
 //! Plain-text tables of a results file, as `run` and `cargo bench` print them.
 
-use crate::results::{Results, TimingRecord};
+use crate::harness::results::{Results, TimingRecord};
 use std::fmt::Write;
 
 /// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
@@ -118,7 +118,7 @@ pub fn cull_ns_tables(results: &Results) -> String {
 
 /// BVH figures: Mrays/s and quartic solves per ray, per scene.
 pub fn bvh_tables(results: &Results) -> String {
-    let keyed: Vec<(String, &crate::results::BvhRecord)> = results
+    let keyed: Vec<(String, &crate::harness::results::BvhRecord)> = results
         .bvh
         .iter()
         .map(|r| (format!("{} {} rays", r.scene, r.ray_set), r))
@@ -135,7 +135,7 @@ pub fn bvh_tables(results: &Results) -> String {
 /// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval. Below 1 the cull
 /// is faster than the reference.
 pub fn ratio_tables(results: &Results) -> String {
-    let keyed: Vec<(String, &crate::results::RatioRecord)> = results
+    let keyed: Vec<(String, &crate::harness::results::RatioRecord)> = results
         .ratio
         .iter()
         .map(|r| {

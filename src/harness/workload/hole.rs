@@ -1,7 +1,7 @@
 //! `hole`: lines that fall through the hole.
 
 use super::{Batch, Frame, GenerateError, rejection_sample, unit_vector};
-use crate::oracle::{OracleClass, classify};
+use crate::harness::oracle::{OracleClass, classify};
 use glam::DVec3;
 use rand::RngExt;
 use rand_pcg::Pcg64;

@@ -36,7 +36,7 @@
 //! [`stats`] holds the median, the bootstrap and the choice of quiet rounds, [`engine`]
 //! the rounds, [`switches`] the context-switch count, [`contender`] the per-cull timed
 //! loops, [`sweep`] the workload driver that makes
-//! [`RatioRecord`](crate::results::RatioRecord)s, and [`compare`] the verdicts of
+//! [`RatioRecord`](crate::harness::results::RatioRecord)s, and [`compare`] the verdicts of
 //! `torus-cull compare` on them.
 
 pub mod compare;

@@ -14,8 +14,8 @@
 //! longer decide, because two absolute timings taken minutes apart differ by 10–20 % on a
 //! shared machine whatever the code does.
 
-use crate::compare::{Report, Row, pair_up};
-use crate::results::{RatioRecord, Results};
+use crate::harness::compare::{Report, Row, pair_up};
+use crate::harness::results::{RatioRecord, Results};
 
 /// Adds one `ratio` row per record present in both files to `report`, and, when both
 /// files have ratios, demotes the criterion `timing` rows' regressions to notes.
@@ -91,8 +91,8 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compare::compare;
-    use crate::results::{Meta, Results, SCHEMA_VERSION, TimingRecord};
+    use crate::harness::compare::compare;
+    use crate::harness::results::{Meta, Results, SCHEMA_VERSION, TimingRecord};
 
     fn record(cull: &str, ratio: f64, ci: [f64; 2]) -> RatioRecord {
         RatioRecord {

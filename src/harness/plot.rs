@@ -1,6 +1,6 @@
 //! SVG charts (plotters): rejection, capture, timing and BVH figures against ν.
 
-use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
+use crate::harness::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
 use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -27,7 +27,7 @@ const _: () = assert!(COLOURS.len() >= crate::CullKind::TIMED.len());
 
 /// Draw `series` against ν on a log axis into an SVG at `path`.
 ///
-/// The chart is drawn in memory and then written through [`crate::output`], so a failed
+/// The chart is drawn in memory and then written through [`crate::harness::output`], so a failed
 /// or interrupted plot never leaves a truncated SVG; every error names `path`.
 pub fn line_chart(
     path: &Path,
@@ -39,7 +39,7 @@ pub fn line_chart(
     let mut svg = String::new();
     draw_chart(&mut svg, title, y_label, series, y_from_zero)
         .map_err(|e| format!("{}: {e}", path.display()))?;
-    crate::output::write_file(path, svg.as_bytes())
+    crate::harness::output::write_file(path, svg.as_bytes())
         .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(())
 }

@@ -6,7 +6,7 @@
 //! * **timing**: `total_ns` slower by more than the threshold *and* with disjoint
 //!   confidence intervals is a regression; anything else is noise.
 //! * **ratio**: when both files have paired ratio records, they give the timing verdicts
-//!   instead (see [`crate::paired::compare`]).
+//!   instead (see [`crate::harness::paired::compare`]).
 //! * **bvh**: a changed hit count, `matches_brute_force: false`, or Mrays/s down by more
 //!   than the threshold is a regression.
 //!
@@ -17,7 +17,7 @@
 //! not regressions; the CLI then exits 2, as it does when the two files share no record,
 //! so that a vacuous comparison never passes a CI gate.
 
-use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
+use crate::harness::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
@@ -128,7 +128,7 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     ) {
         report.rows.push(bvh_row(key, o, n, threshold));
     }
-    crate::paired::compare::ratio_rows(old, new, threshold, &mut report);
+    crate::harness::paired::compare::ratio_rows(old, new, threshold, &mut report);
     report
 }
 

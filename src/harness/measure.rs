@@ -2,10 +2,77 @@
 //! against the labels (the metrics are defined in `docs/math.md`). The oracle runs here,
 //! never inside a timed loop.
 
-use crate::oracle::{OracleClass, OracleLabel, classify};
-use crate::results::RejectionRecord;
-use crate::workload::{Batch, Case, GenerateError, generate, spec::Workload};
+use crate::harness::errata::PrintedCull;
+use crate::harness::oracle::{OracleClass, OracleLabel, classify};
+use crate::harness::results::RejectionRecord;
+use crate::harness::workload::{Batch, Case, GenerateError, generate, spec::Workload};
 use crate::{Cull, CullBounds, CullKind, CullVisitor, Ray};
+use std::fmt;
+use std::str::FromStr;
+
+/// A cull the harness can count: a real one, or a paper-as-printed test fixture (counted
+/// only to watch the oracle catch it; never timed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CountedCull {
+    /// A conservative cull of the renderer API.
+    Timed(CullKind),
+    /// A paper-as-printed variant ([`crate::harness::errata`]).
+    Printed(PrintedCull),
+}
+
+impl CountedCull {
+    /// The stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            CountedCull::Timed(c) => c.name(),
+            CountedCull::Printed(c) => c.name(),
+        }
+    }
+
+    /// Hands the concrete cull to `visitor`.
+    pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
+        match self {
+            CountedCull::Timed(c) => c.visit(visitor),
+            CountedCull::Printed(c) => c.visit(visitor),
+        }
+    }
+
+    /// Every countable cull: the timed ones in table order, then the printed ones.
+    pub fn all() -> impl Iterator<Item = CountedCull> {
+        CullKind::TIMED
+            .into_iter()
+            .map(CountedCull::Timed)
+            .chain(PrintedCull::ALL.into_iter().map(CountedCull::Printed))
+    }
+}
+
+impl From<CullKind> for CountedCull {
+    fn from(c: CullKind) -> CountedCull {
+        CountedCull::Timed(c)
+    }
+}
+
+impl From<PrintedCull> for CountedCull {
+    fn from(c: PrintedCull) -> CountedCull {
+        CountedCull::Printed(c)
+    }
+}
+
+impl fmt::Display for CountedCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for CountedCull {
+    type Err = String;
+    fn from_str(s: &str) -> Result<CountedCull, String> {
+        CountedCull::all().find(|c| c.name() == s).ok_or_else(|| {
+            let names: Vec<_> = CountedCull::all().map(|c| c.name()).collect();
+            format!("unknown cull '{s}' (allowed: {})", names.join(", "))
+        })
+    }
+}
 
 /// A batch with the oracle's label for each ray (ray mode, t ≥ 0).
 #[derive(Debug, Clone)]
@@ -54,7 +121,7 @@ pub struct FalseReject {
     /// ν.
     pub nu: f64,
     /// The cull at fault.
-    pub cull: CullKind,
+    pub cull: CountedCull,
     /// Index of the ray in its batch.
     pub index: usize,
     /// The ray (world space).
@@ -66,7 +133,7 @@ pub struct FalseReject {
 }
 
 /// Each cull's verdict on each ray of the batch (`true` = keep), cull by cull.
-pub fn verdicts(cull: CullKind, batch: &Batch) -> Vec<bool> {
+pub fn verdicts(cull: impl Into<CountedCull>, batch: &Batch) -> Vec<bool> {
     struct All<'a>(&'a Batch);
     impl CullVisitor for All<'_> {
         type Output = Vec<bool>;
@@ -83,11 +150,15 @@ pub fn verdicts(cull: CullKind, batch: &Batch) -> Vec<bool> {
                 .collect()
         }
     }
-    cull.visit(All(batch))
+    cull.into().visit(All(batch))
 }
 
 /// The rejection counts of `cull` on a labeled batch, and its false rejects.
-pub fn count(cull: CullKind, labeled: &LabeledBatch) -> (RejectionRecord, Vec<FalseReject>) {
+pub fn count(
+    cull: impl Into<CountedCull>,
+    labeled: &LabeledBatch,
+) -> (RejectionRecord, Vec<FalseReject>) {
+    let cull = cull.into();
     let batch = &labeled.batch;
     let keeps = verdicts(cull, batch);
     let (mut hits, mut misses, mut ambiguous, mut rejected) = (0u64, 0u64, 0u64, 0u64);
@@ -147,7 +218,7 @@ pub fn units(workload: &Workload) -> Vec<(Case, f64)> {
 /// `threads` threads; `progress` is called with each finished unit's rays.
 pub fn rejection_sweep(
     workload: &Workload,
-    culls: &[CullKind],
+    culls: &[CountedCull],
     threads: usize,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError> {

@@ -1,9 +1,50 @@
-//! The paper-as-printed variants. **Not conservative**: they exist so the errata tests can
-//! show that the oracle catches a broken cull. Never use them to render.
+//! Test fixtures: the seed paper's culls as printed. **Not conservative**: they exist so the
+//! errata tests (and `torus-cull run --culls cychosz_printed`) can show that the oracle
+//! catches a broken cull. They are not part of the renderer API; never render with them.
+//!
+//! Each misprint and its correction are written up in the repository's `docs/math.md`
+//! (errata) and in the docs of [`crate::cull::CychoszCull`] and [`crate::cull::SkalaCull`].
 
-use super::skala::{SectionFormulas, skala_keeps};
-use super::{Cull, CullBounds, foot_point};
+use crate::cull::{Cull, CullBounds, CullVisitor, SectionFormulas, foot_point, skala_keeps};
 use glam::Vec3;
+
+/// The paper-as-printed culls by stable name, as [`crate::cull::CullKind`] names the real ones.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum PrintedCull {
+    /// Cychosz with the paper's Eq. 35 misprint ([`CychoszPrintedCull`]).
+    CychoszPrinted,
+    /// Skala with the printed Eq. 105, h_c² = r² − (a − r)² ([`SkalaPrintedCCull`]).
+    SkalaPrintedC,
+    /// Skala with the printed Eq. 102–103 x_B ([`SkalaEq102Cull`]).
+    SkalaEq102,
+}
+
+impl PrintedCull {
+    /// Every printed variant.
+    pub const ALL: [PrintedCull; 3] = [
+        PrintedCull::CychoszPrinted,
+        PrintedCull::SkalaPrintedC,
+        PrintedCull::SkalaEq102,
+    ];
+
+    /// The stable name used in results and the CLI.
+    pub fn name(self) -> &'static str {
+        match self {
+            PrintedCull::CychoszPrinted => "cychosz_printed",
+            PrintedCull::SkalaPrintedC => "skala_printed_c",
+            PrintedCull::SkalaEq102 => "skala_eq102",
+        }
+    }
+
+    /// Hands the concrete cull to `visitor`, as [`crate::cull::CullKind::visit`] does.
+    pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
+        match self {
+            PrintedCull::CychoszPrinted => visitor.visit(CychoszPrintedCull),
+            PrintedCull::SkalaPrintedC => visitor.visit(SkalaPrintedCCull),
+            PrintedCull::SkalaEq102 => visitor.visit(SkalaEq102Cull),
+        }
+    }
+}
 
 /// Cychosz with Eq. 35 as printed: reject if (y_min > r ∧ y_max > r) ∨ (y_min < r ∧ y_max < r).
 /// The second clause should read "< −r"; as printed it rejects lines crossing the tube.

@@ -209,7 +209,7 @@ impl CullVisitor for Pass<'_, '_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::workload::{Case, Pose, generate};
+    use crate::harness::workload::{Case, Pose, generate};
 
     #[test]
     fn every_timed_cull_runs_both_metrics() {

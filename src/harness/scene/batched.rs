@@ -5,16 +5,16 @@
 //! resumable `ray_traverse_dynamic` / `traverse!`); it has no packet traversal. What it
 //! allows is this two-pass form: `ray_traverse_anyhit` reports every leaf whose box a ray
 //! enters, the candidates are grouped by torus, and each torus's rays go through
-//! [`super::Wavefront`] as one batch (one torus per batch, because the lane kernels share
+//! [`crate::batch::Wavefront`] as one batch (one torus per batch, because the lane kernels share
 //! the torus's frame and bounds across lanes). It gives up two things the scalar
 //! closest-hit traversal has: the shrinking `t_max` that skips boxes behind the nearest
 //! hit found so far (every box on the ray is a candidate), and full registers (a torus
 //! sees only the few rays that reach its box). [`LeafBatchStats`] counts both.
 
-use super::cull::NoBatchForm;
-use super::isa::Dispatch;
-use super::wavefront::Wavefront;
-use crate::scene::{Scene, SceneHit};
+use crate::batch::Dispatch;
+use crate::batch::NoBatchForm;
+use crate::batch::Wavefront;
+use crate::harness::scene::{Scene, SceneHit};
 use crate::{CullKind, Ray};
 use glam::Vec3A;
 

@@ -4,9 +4,9 @@ use super::contender::{Metric, Workset, time_pass};
 use super::engine::Interleaver;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use crate::batch::{Dispatch, Isa};
-use crate::results::RatioRecord;
-use crate::workload::spec::Workload;
-use crate::workload::{Case, GenerateError, generate};
+use crate::harness::results::RatioRecord;
+use crate::harness::workload::spec::Workload;
+use crate::harness::workload::{Case, GenerateError, generate};
 use crate::{CullKind, Ray, Torus};
 use rand::SeedableRng;
 use rand::seq::SliceRandom;
@@ -349,7 +349,7 @@ pub fn time_workload(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::workload::Pose;
+    use crate::harness::workload::Pose;
 
     fn quick(batch: usize) -> PairedOptions {
         PairedOptions {
@@ -362,7 +362,7 @@ mod tests {
         }
     }
 
-    fn unit(b: &crate::workload::Batch) -> Unit<'_> {
+    fn unit(b: &crate::harness::workload::Batch) -> Unit<'_> {
         Unit {
             case: b.case,
             nu: b.nu,

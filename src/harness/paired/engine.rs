@@ -165,7 +165,7 @@ pub fn interleave(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paired::stats::ratio_estimate;
+    use crate::harness::paired::stats::ratio_estimate;
     use std::hint::black_box;
 
     fn schedule(min_rounds: usize, seed: u64) -> Schedule {

@@ -5,7 +5,11 @@
 //! test. [`Scene::trace`] counts leaf visits, cull rejections and quartic solves, and the
 //! closest hit must be identical to [`Scene::brute_force`] whatever the cull.
 
-use crate::workload::CameraView;
+pub mod batched;
+
+pub use batched::{LeafBatchStats, trace_leaves_batched};
+
+use crate::harness::workload::CameraView;
 use crate::{Cull, CullBounds, Ray, Torus, intersect};
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
@@ -142,8 +146,11 @@ impl Scene {
             return Err(SceneError("a scene needs at least one torus".into()));
         }
         let mut rng = Pcg64::seed_from_u64(
-            crate::workload::stream_seed(seed, crate::workload::Case::Uniform, nu)
-                ^ (kind as u64 + 1).wrapping_mul(0xA24B_AED4_963E_E407),
+            crate::harness::workload::stream_seed(
+                seed,
+                crate::harness::workload::Case::Uniform,
+                nu,
+            ) ^ (kind as u64 + 1).wrapping_mul(0xA24B_AED4_963E_E407),
         );
         let (major, minor) = (1.0f64, 1.0 / nu);
         let outer = major + minor;
@@ -158,9 +165,9 @@ impl Scene {
                         rng.random_range(-0.5..0.5),
                         rng.random_range(-0.5..0.5),
                     ) * side;
-                    placed.push((c, crate::workload::unit_vector(&mut rng)));
+                    placed.push((c, crate::harness::workload::unit_vector(&mut rng)));
                 }
-                let view = crate::workload::unit_vector(&mut rng);
+                let view = crate::harness::workload::unit_vector(&mut rng);
                 eye = view * side * 1.8;
             }
             SceneKind::Chain => {
@@ -283,8 +290,8 @@ impl Scene {
         let (centre, radius) = self.bounding_sphere;
         (0..count)
             .map(|_| {
-                let d = crate::workload::unit_vector(&mut rng);
-                let p = centre + crate::workload::disk_point(&mut rng, d, radius);
+                let d = crate::harness::workload::unit_vector(&mut rng);
+                let p = centre + crate::harness::workload::disk_point(&mut rng, d, radius);
                 Ray::new((p - d * (2.0 * radius)).as_vec3(), d.as_vec3())
                     .expect("random rays are finite")
             })

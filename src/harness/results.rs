@@ -1,5 +1,5 @@
 //! The results JSON (schema version 1): what `run` and `cargo bench` write and `compare`
-//! reads. Files are written through [`crate::output`]: a regular file is replaced
+//! reads. Files are written through [`crate::harness::output`]: a regular file is replaced
 //! atomically, so an interrupted run never leaves half a file. Field names are stable;
 //! new fields may be added.
 
@@ -239,7 +239,7 @@ fn scalar_mode() -> String {
 }
 
 /// One cull timed against a reference in the same interleaved rounds (see
-/// [`crate::paired`]): the median of the per-round ratios `t(cull) / t(reference)`.
+/// [`crate::harness::paired`]): the median of the per-round ratios `t(cull) / t(reference)`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RatioRecord {
     /// Workload case.
@@ -364,7 +364,7 @@ impl std::error::Error for ResultsError {}
 
 impl Results {
     /// An empty results file with fresh metadata for `workload`.
-    pub fn new(workload: &crate::workload::spec::Workload, tool: &str) -> Results {
+    pub fn new(workload: &crate::harness::workload::spec::Workload, tool: &str) -> Results {
         let (commit, dirty) = git_state();
         Results {
             schema_version: SCHEMA_VERSION,
@@ -412,7 +412,7 @@ impl Results {
         serde_json::from_value(value).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))
     }
 
-    /// Write the file (atomically when it is a regular file; see [`crate::output`]).
+    /// Write the file (atomically when it is a regular file; see [`crate::harness::output`]).
     pub fn save(&self, path: &Path) -> Result<(), ResultsError> {
         let mut text = serde_json::to_string_pretty(self).expect("results serialize");
         text.push('\n');
@@ -422,9 +422,9 @@ impl Results {
 
 /// Write `bytes` to `path` the way every output of this crate is written: a regular file
 /// is replaced atomically (temp file + rename), symlinks are followed, a FIFO or device is
-/// written in place; see [`crate::output`].
+/// written in place; see [`crate::harness::output`].
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    crate::output::write_file(path, bytes)
+    crate::harness::output::write_file(path, bytes)
 }
 
 /// The default output path: `<results_dir>/<short commit>[-dirty]<suffix>.json`, or

@@ -11,7 +11,7 @@
 //! non-finite direction) ends it with an error naming the input and the line number, and
 //! the command exits non-zero: no answer is ever silently wrong or skipped.
 
-use crate::oracle::{OracleClass, classify};
+use crate::harness::oracle::{OracleClass, classify};
 use crate::{CullBounds, CullKind, Ray, Torus, TorusError, intersect};
 use glam::Vec3;
 use std::fmt;

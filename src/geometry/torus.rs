@@ -1,6 +1,6 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
-use crate::ray::Ray;
+use super::ray::Ray;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 

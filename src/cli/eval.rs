@@ -1,0 +1,83 @@
+//! `torus-cull eval`: every cull and the oracle on the user's rays, CSV in and out.
+
+use super::CliResult;
+use std::fs::File;
+use std::io::{BufReader, BufWriter, Write};
+use std::process::ExitCode;
+
+/// Runs `eval`.
+pub fn eval(
+    major: f32,
+    minor: f32,
+    rays: &std::path::Path,
+    out: Option<&std::path::Path>,
+) -> CliResult {
+    let name = rays.display().to_string();
+    let input: Box<dyn std::io::BufRead> = if name == "-" {
+        Box::new(std::io::stdin().lock())
+    } else {
+        let file = File::open(rays).map_err(|e| format!("--rays {name}: {e}"))?;
+        Box::new(BufReader::new(file))
+    };
+    let result: Result<usize, Box<dyn std::error::Error>> = match out {
+        // Written through `output`: a regular file appears only when complete.
+        Some(path) => {
+            let named = |e: std::io::Error| format!("--out {}: {e}", path.display());
+            let mut file = torus_cull::harness::output::Output::create(path).map_err(named)?;
+            let rows = torus_cull::harness::eval::eval_csv(
+                major,
+                minor,
+                input,
+                &name,
+                BufWriter::new(Named(&mut file, format!("--out {}", path.display()))),
+            );
+            match rows {
+                Ok(rows) => file.finish().map(|()| rows).map_err(|e| named(e).into()),
+                Err(e) => Err(e.into()),
+            }
+        }
+        None => torus_cull::harness::eval::eval_csv(
+            major,
+            minor,
+            input,
+            &name,
+            BufWriter::new(Named(std::io::stdout().lock(), "stdout".into())),
+        )
+        .map_err(Into::into),
+    };
+    let rows = match result {
+        Ok(rows) => rows,
+        // The reader went away (`eval … | head`): stop quietly, as `cat` would.
+        Err(e) if is_broken_pipe(e.as_ref()) => return Ok(ExitCode::SUCCESS),
+        Err(e) => return Err(e),
+    };
+    eprintln!("evaluated {rows} rays");
+    Ok(ExitCode::SUCCESS)
+}
+
+/// A writer whose errors name what it writes to (the kind is kept).
+struct Named<W>(W, String);
+
+impl<W: Write> Write for Named<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.write(buf).map_err(|e| self.name(e))
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.0.flush().map_err(|e| self.name(e))
+    }
+}
+
+impl<W> Named<W> {
+    fn name(&self, e: std::io::Error) -> std::io::Error {
+        std::io::Error::new(e.kind(), format!("{}: {e}", self.1))
+    }
+}
+
+/// Whether `e` is a write to a pipe whose reader has gone.
+fn is_broken_pipe(e: &(dyn std::error::Error + 'static)) -> bool {
+    let io = match e.downcast_ref::<torus_cull::harness::eval::EvalError>() {
+        Some(torus_cull::harness::eval::EvalError::Io(io)) => Some(io),
+        _ => e.downcast_ref::<std::io::Error>(),
+    };
+    io.is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+}

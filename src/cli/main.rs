@@ -1,0 +1,174 @@
+//! The `torus-cull` command line.
+//!
+//! Exit codes: 0 fine; 1 the measurement found a problem (a false reject in `run`, a
+//! regression in `compare`); 2 the input or environment is bad (the message says which
+//! file and field).
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+mod compare;
+mod eval;
+mod plot;
+mod render;
+mod run;
+mod time;
+
+#[derive(Parser)]
+#[command(
+    name = "torus-cull",
+    version,
+    about = "Measure ray-torus culls against an f64 oracle"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a workload: rejection counts for every case × ν × cull, tables, JSON and plots.
+    Run {
+        /// Workload file.
+        #[arg(long, default_value = "workloads/default.json")]
+        workload: PathBuf,
+        /// Results JSON (default: results/<short commit>[-dirty].json).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Worker threads (default: available cores).
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Skip the SVG plots.
+        #[arg(long)]
+        no_plots: bool,
+        /// Culls to count, comma-separated (default: every timed cull). The
+        /// paper-as-printed variants are accepted too, to watch the oracle catch them.
+        #[arg(long, value_delimiter = ',')]
+        culls: Vec<String>,
+    },
+    /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
+    /// 95% intervals), in about 30 s.
+    Time(time::TimeArgs),
+    /// Diff two results files; exits 1 on a regression (for CI gates).
+    Compare {
+        /// The older results JSON.
+        old: PathBuf,
+        /// The newer results JSON.
+        new: PathBuf,
+        /// Slowdown (percent) beyond which a timing with disjoint intervals is a regression.
+        #[arg(long, default_value_t = 10.0)]
+        threshold: f64,
+        /// Show only records with a flag.
+        #[arg(long)]
+        only_changes: bool,
+    },
+    /// Render a many-torus scene and its cull map (PNG).
+    Render {
+        /// Scene: ring_field, chain or facing_grid.
+        #[arg(long)]
+        scene: String,
+        /// ν = R/r of the scene's tori (> 1).
+        #[arg(long)]
+        nu: f64,
+        /// Output PNG; the cull map goes next to it as <stem>-cullmap.png.
+        #[arg(long)]
+        out: PathBuf,
+        /// Image side in pixels.
+        #[arg(long, default_value_t = 512)]
+        size: usize,
+        /// Tori in the scene.
+        #[arg(long, default_value_t = 1000)]
+        tori: usize,
+        /// Scene seed.
+        #[arg(long, default_value_t = 20261121)]
+        seed: u64,
+    },
+    /// Write the SVG charts of a results file.
+    Plot {
+        /// Results JSON.
+        file: PathBuf,
+        /// Where to write the SVGs (default: next to the file).
+        #[arg(long)]
+        out_dir: Option<PathBuf>,
+    },
+    /// Check every cull and the oracle on your own rays (CSV in the torus frame).
+    Eval {
+        /// Major radius R.
+        #[arg(long = "major")]
+        major: f32,
+        /// Minor radius r (R > r > 0).
+        #[arg(long = "minor")]
+        minor: f32,
+        /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin).
+        #[arg(long)]
+        rays: PathBuf,
+        /// Output CSV (default: stdout).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    remove_temp_files_on_signals();
+    let result = match cli.command {
+        Command::Run {
+            workload,
+            out,
+            threads,
+            no_plots,
+            culls,
+        } => run::run(&workload, out, threads, no_plots, &culls),
+        Command::Time(args) => time::run(args),
+        Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
+        Command::Render {
+            scene,
+            nu,
+            out,
+            size,
+            tori,
+            seed,
+        } => render::render(&scene, nu, &out, size, tori, seed),
+        Command::Compare {
+            old,
+            new,
+            threshold,
+            only_changes,
+        } => compare::compare(&old, &new, threshold, only_changes),
+        Command::Eval {
+            major,
+            minor,
+            rays,
+            out,
+        } => eval::eval(major, minor, &rays, out.as_deref()),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
+
+/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, then die of
+/// the signal as if there were no handler (so the caller sees the usual status).
+fn remove_temp_files_on_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+        // Without the handler an interrupt still stops the run; only the clean-up is lost.
+        if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+            std::thread::spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    torus_cull::harness::output::remove_pending();
+                    let _ = signal_hook::low_level::emulate_default_handler(signal);
+                    std::process::exit(128 + signal);
+                }
+            });
+        }
+    }
+}

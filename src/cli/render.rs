@@ -1,0 +1,40 @@
+//! `torus-cull render`: a scene's picture and cull map (PNG).
+
+use super::CliResult;
+use std::path::Path;
+use std::process::ExitCode;
+
+/// Runs `render`.
+pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: u64) -> CliResult {
+    let kind: torus_cull::harness::scene::SceneKind =
+        scene.parse().map_err(|e| format!("--scene: {e}"))?;
+    if !(1..=8192).contains(&size) {
+        return Err(format!("--size {size} is invalid (allowed: 1 ..= 8192)").into());
+    }
+    if !(1..=1_000_000).contains(&tori) {
+        return Err(format!("--tori {tori} is invalid (allowed: 1 ..= 1000000)").into());
+    }
+    let scene = torus_cull::harness::scene::Scene::build(kind, nu, tori, seed)
+        .map_err(|e| format!("--nu: {e}"))?;
+    let image = torus_cull::harness::render::render(&scene, size);
+    let map_path = out.with_file_name(format!(
+        "{}-cullmap.png",
+        out.file_stem()
+            .map_or("render".into(), |s| s.to_string_lossy())
+    ));
+    torus_cull::harness::render::write_png(out, size, &image.shaded)?;
+    torus_cull::harness::render::write_png(&map_path, size, &image.cull_map)?;
+    let c = image.counts;
+    let total = (size * size) as f64;
+    println!("wrote {} and {}", out.display(), map_path.display());
+    for (name, n) in [
+        ("hit", c.hit),
+        ("reached the quartic and missed (skala)", c.quartic_missed),
+        ("rejected only by skala", c.skala_only),
+        ("rejected by cychosz", c.cychosz),
+        ("entered no box", c.no_box),
+    ] {
+        println!("  {name:<40} {n:>8} ({:.1}%)", 100.0 * n as f64 / total);
+    }
+    Ok(ExitCode::SUCCESS)
+}

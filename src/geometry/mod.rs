@@ -1,0 +1,9 @@
+//! The shapes a renderer hands over: a ring torus with its pose, and a ray.
+
+mod ray;
+mod torus;
+
+pub use ray::{Ray, RayError};
+pub use torus::{
+    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+};

@@ -1,0 +1,32 @@
+//! **The measuring harness** (feature `harness`, on by default): everything behind the
+//! `torus-cull` command and `cargo bench`. A renderer does not need any of it; depend on
+//! the crate with `default-features = false` to leave it (and clap, plotters, serde, rand,
+//! obvhs, …) out.
+//!
+//! * Ground truth: [`oracle`], the independent f64 labels (hit / miss / ambiguous with a
+//!   margin); it shares no code with the timed path, so it can catch its bugs.
+//! * Rays: [`workload`], the seeded generators per case (hole, outer band, grazing,
+//!   uniform, camera, and the adversarial line families) and the workload files.
+//! * Counting and timing: [`measure`] (rejection counts against the oracle) and
+//!   [`paired`] (culls timed against each other in interleaved rounds, so ratios hold on a
+//!   loaded machine).
+//! * Many tori: [`scene`], an obvhs BVH with a cull at the leaves, and [`render`], its
+//!   picture and cull map.
+//! * Output: [`results`] (the results JSON), [`compare`], [`report`] (tables), [`plot`]
+//!   (SVG), [`eval`] (a user's own rays) and [`output`] (how every file is written).
+//! * Test fixtures: [`errata`], the seed paper's culls as printed, which are **not
+//!   conservative**; they exist to prove that the oracle catches a broken cull.
+
+pub mod compare;
+pub mod errata;
+pub mod eval;
+pub mod measure;
+pub mod oracle;
+pub mod output;
+pub mod paired;
+pub mod plot;
+pub mod render;
+pub mod report;
+pub mod results;
+pub mod scene;
+pub mod workload;

@@ -1,0 +1,184 @@
+//! The line in the torus's frame, by unit arc length from its foot point, and the
+//! critical points of its distance to the core circle.
+
+use super::check_inputs;
+use super::interval::{bisect, cubic_real_roots};
+use glam::DVec3;
+
+/// The line in the torus's own terms, parametrized by unit arc length `s` from the foot
+/// point: `x(s) − c = p + s u`, `s = s0 + t |d|`.
+///
+/// With `uh`, `ph` the parts of `u`, `p` perpendicular to the axis, the distance from the
+/// axis is `ρ(s)² = A (s − s_m)² + m2`, with `A = |uh|²`, `s_m = −(ph·uh)/A` and
+/// `m2 = |ph × uh|²/A` (the closest approach to the axis, exact via the cross product).
+pub(super) struct Frame {
+    pub(super) major: f64,
+    pub(super) minor: f64,
+    pub(super) axis: DVec3,
+    /// The foot point relative to the centre.
+    pub(super) p: DVec3,
+    /// The unit direction.
+    pub(super) u: DVec3,
+    /// |d|: t = (s − s0)/|d|.
+    pub(super) len: f64,
+    /// The s of the ray origin.
+    pub(super) s0: f64,
+    /// p·u, zero up to rounding; kept so that x(s)·u is exact to rounding.
+    pub(super) e: f64,
+    /// u·u, one up to rounding.
+    pub(super) uu: f64,
+    pub(super) a_h: f64,
+    pub(super) s_m: f64,
+    pub(super) m2: f64,
+}
+
+impl Frame {
+    pub(super) fn new(
+        center: DVec3,
+        axis: DVec3,
+        major: f64,
+        minor: f64,
+        o: DVec3,
+        d: DVec3,
+    ) -> Frame {
+        check_inputs(center, axis, major, minor, o, d, 0.0, 0.0);
+        let axis = axis.normalize();
+        let len = d.length();
+        let u = d / len;
+        let q = o - center;
+        let s_origin = q.dot(u);
+        // The foot point: removing the along-line part first keeps |p| ≤ |q| and makes
+        // every later quantity O(R) for lines near the torus, however far the origin.
+        let p = q - s_origin * u;
+        let uh = u - u.dot(axis) * axis;
+        let ph = p - p.dot(axis) * axis;
+        let a_h = uh.length_squared();
+        let (s_m, m2) = if a_h > 0.0 {
+            (-ph.dot(uh) / a_h, ph.cross(uh).length_squared() / a_h)
+        } else {
+            (0.0, ph.length_squared())
+        };
+        Frame {
+            major,
+            minor,
+            axis,
+            p,
+            u,
+            len,
+            s0: s_origin,
+            e: p.dot(u),
+            uu: u.length_squared(),
+            a_h,
+            s_m,
+            m2,
+        }
+    }
+
+    pub(super) fn s_of_t(&self, t: f64) -> f64 {
+        if t.is_infinite() {
+            t
+        } else {
+            self.s0 + t * self.len
+        }
+    }
+
+    pub(super) fn t_of_s(&self, s: f64) -> f64 {
+        (s - self.s0) / self.len
+    }
+
+    pub(super) fn s_range(&self, t_min: f64, t_max: f64) -> (f64, f64) {
+        assert!(t_min <= t_max, "bad range [{t_min}, {t_max}]");
+        (self.s_of_t(t_min), self.s_of_t(t_max))
+    }
+
+    /// D(s), from the point itself (not from the ρ² formula), so that it is accurate to
+    /// rounding wherever the point is.
+    pub(super) fn dist(&self, s: f64) -> f64 {
+        let x = self.p + s * self.u;
+        let y = x.dot(self.axis);
+        let rho = (x - y * self.axis).length();
+        (rho - self.major).hypot(y)
+    }
+
+    /// h(s) = ½ dD²/ds = x·u − R (A (s − s_m))/ρ(s), from D² = |x|² + R² − 2Rρ.
+    ///
+    /// h′(s) = |u|² − R·A·m2/ρ³, which changes sign only where ρ² = k = (R A m2)^(2/3):
+    /// so h is monotone on at most three pieces, split at s_m ± √((k − m2)/A). When the
+    /// line crosses the axis (m2 = 0) h jumps at s_m by −2R√A; `side` (−1 from the left,
+    /// +1 from the right) picks the one-sided limit there.
+    pub(super) fn half_slope(&self, s: f64, side: f64) -> f64 {
+        let along = self.e + s * self.uu;
+        if self.a_h == 0.0 {
+            return along;
+        }
+        let sigma = s - self.s_m;
+        let rho = (self.a_h * sigma * sigma + self.m2).sqrt();
+        if rho == 0.0 {
+            along - side * self.major * self.a_h.sqrt()
+        } else {
+            along - self.major * self.a_h * sigma / rho
+        }
+    }
+
+    /// Where h′ changes sign (and s_m itself), sorted; empty for a line parallel to the axis.
+    pub(super) fn breakpoints(&self) -> Vec<f64> {
+        if self.a_h == 0.0 || !self.s_m.is_finite() {
+            return Vec::new();
+        }
+        let k = (self.major * self.a_h * self.m2).cbrt().powi(2);
+        let off = ((k - self.m2).max(0.0) / self.a_h).sqrt();
+        vec![self.s_m - off, self.s_m, self.s_m + off]
+    }
+
+    /// Every critical point of D (both kinds) and every breakpoint, within [lo, hi].
+    ///
+    /// Critical points satisfy |x·u| = R|A(s − s_m)|/ρ ≤ R√A ≤ R, so they lie in
+    /// |s + p·u| ≤ R; the scan covers a little more.
+    pub(super) fn d_candidates(&self, lo: f64, hi: f64) -> Vec<f64> {
+        let reach = 1.01 * self.major + self.e.abs() + f64::MIN_POSITIVE;
+        let mut cuts = vec![-reach];
+        cuts.extend(self.breakpoints().into_iter().filter(|s| s.abs() < reach));
+        cuts.push(reach);
+        let mut out: Vec<f64> = cuts[1..cuts.len() - 1].to_vec();
+        for w in cuts.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if a >= b {
+                continue;
+            }
+            let ha = self.half_slope(a, 1.0);
+            let hb = self.half_slope(b, -1.0);
+            if ha == 0.0 {
+                out.push(a);
+            }
+            if hb == 0.0 {
+                out.push(b);
+            }
+            if (ha < 0.0) != (hb < 0.0) && ha != 0.0 && hb != 0.0 {
+                // Inside the open piece ρ > 0 (or m2 > 0), so the plain formula is fine.
+                out.push(bisect(&|s| self.half_slope(s, 0.0), a, b, ha));
+            }
+        }
+        out.retain(|&s| s >= lo && s <= hi);
+        out
+    }
+
+    /// The real roots of F′(s), F the torus quartic written in s:
+    /// F = W² − 4R²ρ², W = ρ² + y² + R² − r² = w2 s² + w1 s + w0, ρ² = A s² + 2B s + C.
+    pub(super) fn f_prime_roots(&self) -> Vec<f64> {
+        let ax = self.axis;
+        let (uy, py) = (self.u.dot(ax), self.p.dot(ax));
+        let uh = self.u - uy * ax;
+        let ph = self.p - py * ax;
+        let (a, b, c) = (uh.length_squared(), ph.dot(uh), ph.length_squared());
+        let r2 = self.major * self.major;
+        let w2 = a + uy * uy;
+        let w1 = 2.0 * (b + py * uy);
+        let w0 = c + py * py + r2 - self.minor * self.minor;
+        // ½F′ = W W′ − 4R²(A s + B), expanded by powers of s.
+        let c3 = 2.0 * w2 * w2;
+        let c2 = 3.0 * w1 * w2;
+        let c1 = w1 * w1 + 2.0 * w0 * w2 - 4.0 * r2 * a;
+        let c0 = w0 * w1 - 4.0 * r2 * b;
+        cubic_real_roots(c3, c2, c1, c0)
+    }
+}

@@ -1,0 +1,58 @@
+//! The crossings of a line with the torus surface, to near f64 precision: the reference
+//! the solver bench and the intersection tests score roots against.
+
+use super::frame::Frame;
+use super::interval::bisect;
+use glam::DVec3;
+
+/// All `t ∈ [t_min, t_max]` where the line `o + t d` crosses the torus surface (D = r),
+/// sorted, to near f64 precision. Pass infinite ends for the whole line.
+///
+/// D is monotone between consecutive critical points of D, so each such segment holds at
+/// most one crossing; each sign change of `g = D − r` is bisected to adjacent floats in the
+/// unit-arc-length parameter, then mapped back to `t`.
+///
+/// **Tangencies.** Only sign changes are reported (g = 0 counts as outside). A line that
+/// touches the surface reports no root if its computed minimum of g is ≥ 0 and two nearly
+/// equal roots if it is < 0. So for an [`OracleClass::Ambiguous`] line the roots near the
+/// tangency are not meaningful: compare root counts only outside the ambiguity band, where a
+/// line hit gives 2 or 4 roots and a line miss gives none.
+///
+/// # Panics
+/// As [`classify_f64`].
+#[allow(clippy::too_many_arguments)]
+pub fn reference_roots(
+    center: DVec3,
+    axis: DVec3,
+    major: f64,
+    minor: f64,
+    o: DVec3,
+    d: DVec3,
+    t_min: f64,
+    t_max: f64,
+) -> Vec<f64> {
+    let frame = Frame::new(center, axis, major, minor, o, d);
+    // Beyond |s + p·u| > R + r the point is farther than R + r from the centre, so D > r.
+    let reach = (major + minor) * (1.0 + 1e-6) + frame.e.abs();
+    let mut cuts = vec![-reach - frame.e];
+    cuts.extend(
+        frame
+            .d_candidates(f64::NEG_INFINITY, f64::INFINITY)
+            .into_iter()
+            .filter(|&s| s > -reach - frame.e && s < reach - frame.e),
+    );
+    cuts.push(reach - frame.e);
+    cuts.sort_by(f64::total_cmp);
+    let g = |s: f64| frame.dist(s) - minor;
+    let mut roots = Vec::new();
+    for w in cuts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (ga, gb) = (g(a), g(b));
+        if (ga < 0.0) != (gb < 0.0) {
+            let s = bisect(&g, a, b, ga);
+            roots.push(frame.t_of_s(s));
+        }
+    }
+    roots.retain(|&t| t >= t_min && t <= t_max);
+    roots
+}
