@@ -64,8 +64,7 @@ pub(super) struct Split {
 /// Ferrari's split of `x⁴ + p x² + q x + r` (see the module docs).
 #[inline]
 pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
-    let (z, dh) = resolvent::greatest_root(p, q, r);
-    let m = z.sqrt();
+    let resolvent::Root { z, dh, m, q_over_m } = resolvent::greatest_root(p, q, r);
     let s = p + z;
     let w2 = s * s - 4.0 * r;
 
@@ -84,7 +83,7 @@ pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
     let use_q_over_m = zdh > 0.0 && (w2 <= 0.0 || EPS * h_mag * w2 <= err_w_zdh);
     // Both candidates are computed and one is selected: which one wins is a coin toss from
     // ray to ray, and a mispredicted branch costs more than a division and a root.
-    let by_q = q / m;
+    let by_q = q_over_m;
     let by_w = w2.max(0.0).sqrt().copysign(q);
     let d = if use_q_over_m { by_q } else { by_w };
 
