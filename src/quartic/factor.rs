@@ -45,7 +45,13 @@ pub(super) fn real_roots(
     shift: f64,
     near: f64,
 ) -> RealRoots {
-    let f = split(p, q, r);
+    roots_of_split(&split(p, q, r), orig, shift, near)
+}
+
+/// The real roots (unsorted, not yet polished) of both factors of a [`split`]; `orig`,
+/// `shift` and `near` as for [`real_roots`].
+#[inline]
+pub(super) fn roots_of_split(f: &Split, orig: &[f64; 5], shift: f64, near: f64) -> RealRoots {
     let mut out = RealRoots::default();
     quadratic_factor(f.m, f.n1, f.z, orig, shift, near, &mut out);
     quadratic_factor(-f.m, f.n2, f.z, orig, shift, near, &mut out);

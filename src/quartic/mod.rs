@@ -144,8 +144,7 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
             return None;
         }
         let c = [1.0, 0.0, p, q, r];
-        let roots = factor::real_roots(p, q, r, &c, 0.0, near);
-        nearest_of(&roots, lo, hi)
+        nearest_of(&factor::roots_of_split(&f, &c, 0.0, near), lo, hi)
     };
     (best != f64::INFINITY).then_some(best)
 }

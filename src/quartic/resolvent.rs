@@ -61,6 +61,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
     let near = disc.abs() <= DISC_NEAR * scale;
     let (mut z, mut m, mut q_over_m);
     let mut small_root = false;
+    let mut vieta = false;
     if !near && disc > 0.0 {
         let (u, v) = cardano(third_p, half_q, disc);
         z = (u + v - a3).max(0.0);
@@ -70,7 +71,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         // q/m then follow from √pair without the two divisions. Both are computed and
         // one is selected: which one applies is a coin toss from ray to ray.
         let pair = (z + a) * (z + a) + 3.0 * (u - v) * (u - v);
-        let vieta = z < a3.abs() && pair > 0.0;
+        vieta = z < a3.abs() && pair > 0.0;
         let half_sp = 0.5 * pair.sqrt();
         let (m_direct, m_vieta) = (z.sqrt(), q.abs() / half_sp);
         m = if vieta { m_vieta } else { m_direct };
@@ -79,7 +80,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         } else {
             q / m_direct
         };
-        z = if vieta { m_vieta * m_vieta } else { z };
+        z = if vieta { 4.0 * q * q / pair } else { z };
     } else {
         let w = if near {
             near_double(a, b, c, a3, third_p, half_q)
@@ -104,9 +105,10 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
     // (close roots: the trisection near −1, Cardano's cancellation; one step was
     // measurably short on tangents at the inner equator) or a root found by the fixed
     // point above. Elsewhere the closed form is good to a few ulps and the steps would
-    // only lengthen the hot path. A step is kept only if it lowers |h|, so a double root
-    // cannot be thrown away.
-    if small_root || disc.abs() <= POLISH_BELOW * scale {
+    // only lengthen the hot path; so is Vieta's z even at a small discriminant (its pair
+    // is dominated by (z + a)², which has no cancellation: a tangent at the foot point).
+    // A step is kept only if it lowers |h|, so a double root cannot be thrown away.
+    if !vieta && (small_root || disc.abs() <= POLISH_BELOW * scale) {
         let mut hz = h(z);
         for _ in 0..2 {
             let zn = (z - hz / dh(z)).max(0.0);
@@ -133,13 +135,14 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
 /// larger-magnitude term to avoid cancellation.
 #[inline]
 fn cardano(third_p: f64, half_q: f64, disc: f64) -> (f64, f64) {
-    let big = cbrt(half_q.abs() + disc.sqrt());
-    let u = if half_q > 0.0 { -big } else { big };
-    if u != 0.0 {
-        (u, -third_p / u)
-    } else {
-        (0.0, 0.0)
-    }
+    let cube = half_q.abs() + disc.sqrt();
+    // u = ±∛cube and v = −P'/u = ±(−P'/cube)·∛cube²: the division runs while the cube
+    // root does.
+    let ratio = -third_p / cube;
+    let big = cbrt(cube);
+    let v = ratio * big * big;
+    let (u, v) = if half_q > 0.0 { (-big, -v) } else { (big, v) };
+    if big != 0.0 { (u, v) } else { (0.0, 0.0) }
 }
 
 /// The greatest of three real roots (`disc ≤ 0`, so `third_p ≤ 0`): `2k cos(θ/3)`.
@@ -180,10 +183,15 @@ fn near_double(a: f64, b: f64, c: f64, a3: f64, third_p: f64, half_q: f64) -> f6
     }
 }
 
-/// Horner, highest coefficient first.
+/// The degree-5 polynomial `c` (highest coefficient first) at `x`, by Estrin's scheme: half
+/// the dependency chain of Horner's.
 #[inline(always)]
-fn horner(coeffs: &[f64], x: f64) -> f64 {
-    coeffs.iter().fold(0.0, |acc, &c| acc * x + c)
+fn poly5(c: &[f64; 6], x: f64) -> f64 {
+    let x2 = x * x;
+    let low = c[4] * x + c[5];
+    let mid = c[2] * x + c[3];
+    let high = c[0] * x + c[1];
+    low + x2 * (mid + x2 * high)
 }
 
 /// ∛y for y ≥ 0.
@@ -214,7 +222,7 @@ fn cbrt(y: f64) -> f64 {
     let (k_plus, j) = (u64::from(biased / 3), (biased % 3) as usize);
     let mu = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
     let scale = f64::from_bits((k_plus + 1023 - 341) << 52) * CBRT_2J[j];
-    let t = horner(&FIT, mu - 1.5) * scale;
+    let t = poly5(&FIT, mu - 1.5) * scale;
     let t3 = t * t * t;
     t * ((t3 + 2.0 * y) / (2.0 * t3 + y))
 }
@@ -245,7 +253,7 @@ fn trisect_cos(x: f64) -> f64 {
     const HALF_RANGE: f64 = 0.5773502691896257;
     let rhs = 2.0 * (1.0 + x);
     let s = (rhs * (1.0 / 3.0)).sqrt();
-    let u = s * horner(&FIT, s - HALF_RANGE);
+    let u = s * poly5(&FIT, s - HALF_RANGE);
     let f = u * u * (3.0 + u) - rhs;
     let df = (3.0 * u + 6.0) * u;
     let d2f = 6.0 * u + 6.0;
