@@ -135,10 +135,9 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
         let (s1, s2) = (disc1.max(0.0).sqrt(), disc2.max(0.0).sqrt());
         let (ok1, ok2) = (disc1 > 0.0, disc2 > 0.0);
         let half_m = 0.5 * f.m;
-        pick(-half_m - 0.5 * s1, ok1)
-            .min(pick(-half_m + 0.5 * s1, ok1))
-            .min(pick(half_m - 0.5 * s2, ok2))
-            .min(pick(half_m + 0.5 * s2, ok2))
+        let first = pick(-half_m - 0.5 * s1, ok1).min(pick(-half_m + 0.5 * s1, ok1));
+        let second = pick(half_m - 0.5 * s2, ok2).min(pick(half_m + 0.5 * s2, ok2));
+        first.min(second)
     } else {
         if !(p.is_finite() && q.is_finite() && r.is_finite()) {
             return None;

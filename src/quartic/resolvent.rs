@@ -33,12 +33,17 @@ const POLISH_BELOW: f64 = 1e-4;
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Root {
     pub z: f64,
-    /// `h'(z)`.
+    /// `h'(z)` (at `z_early`: it only sizes errors).
     pub dh: f64,
     /// `m = √z`.
     pub m: f64,
     /// `q/m` (garbage when `m = 0`).
     pub q_over_m: f64,
+    /// `q/m` is good to a few ulps, whatever `h'(z)` says (Vieta's `z`, below).
+    pub q_over_m_exact: bool,
+    /// `z` to within a few `ε·|p|`, earlier on the dependency chain than `z` itself: for
+    /// `p + z`, whose rounding is that large anyway.
+    pub z_early: f64,
 }
 
 /// The greatest real root of `h` for the depressed quartic `x⁴ + p x² + q x + r` (finite
@@ -59,7 +64,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
     let h = |z: f64| ((z + a) * z + b) * z + c;
     let dh = |z: f64| (3.0 * z + 2.0 * a) * z + b;
     let near = disc.abs() <= DISC_NEAR * scale;
-    let (mut z, mut m, mut q_over_m);
+    let (mut z, mut m, mut q_over_m, mut z_early);
     let mut small_root = false;
     let mut vieta = false;
     if !near && disc > 0.0 {
@@ -80,6 +85,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         } else {
             q / m_direct
         };
+        z_early = z;
         z = if vieta { 4.0 * q * q / pair } else { z };
     } else {
         let w = if near {
@@ -100,6 +106,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         }
         m = z.sqrt();
         q_over_m = q / m;
+        z_early = z;
     }
     // Two Newton steps polish the closed form where it loses digits: a small discriminant
     // (close roots: the trisection near −1, Cardano's cancellation; one step was
@@ -121,12 +128,15 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         }
         m = z.sqrt();
         q_over_m = q / m;
+        z_early = z;
     }
     Root {
         z,
-        dh: dh(z),
+        dh: dh(z_early),
         m,
         q_over_m,
+        q_over_m_exact: vieta,
+        z_early,
     }
 }
 
@@ -145,15 +155,20 @@ fn cardano(third_p: f64, half_q: f64, disc: f64) -> (f64, f64) {
     if big != 0.0 { (u, v) } else { (0.0, 0.0) }
 }
 
-/// The greatest of three real roots (`disc ≤ 0`, so `third_p ≤ 0`): `2k cos(θ/3)`.
+/// The greatest of three real roots (`disc ≤ 0`, so `third_p ≤ 0`): `2k cos(θ/3)` with
+/// `k = √(−P')` and `cos θ = −Q'/k³`.
 #[inline]
 fn trigonometric(third_p: f64, half_q: f64) -> f64 {
     let k = (-third_p).max(0.0).sqrt();
-    // k = 0 makes the argument NaN or infinite, which `max` and `min` clamp (`clamp`
-    // would keep NaN); then 2k·… is 0.
+    // −Q'/k³ = (Q'/P')·√(−1/P'): both divisions and the root overlap the root k. P' = 0
+    // makes it NaN or infinite, which `max` and `min` clamp (`clamp` would keep NaN);
+    // then k·… is 0.
     #[allow(clippy::manual_clamp)]
-    let cos3 = (-half_q / (k * k * k)).max(-1.0).min(1.0);
-    2.0 * k * trisect_cos(cos3)
+    let cos3 = ((half_q / third_p) * (-1.0 / third_p).sqrt())
+        .max(-1.0)
+        .min(1.0);
+    // 2k·cos(θ/3) = k·(1 + u).
+    k + k * trisect_u(cos3)
 }
 
 /// `disc ≈ 0`: two roots of `h` (nearly) coincide. If the pair is the top one, whether it is
@@ -233,14 +248,14 @@ fn cbrt_outside(y: f64) -> f64 {
     y.cbrt()
 }
 
-/// cos(arccos(x)/3) for x ∈ [−1, 1]: the largest root t ∈ [½, 1] of 4t³ − 3t = x.
+/// `u = 2 cos(arccos(x)/3) − 1` for x ∈ [−1, 1]: with `t = cos(arccos(x)/3)` the largest
+/// root of `4t³ − 3t = x`, `u ∈ [0, 1]` is the root of `u²(3 + u) = 2(1 + x)`.
 ///
-/// With u = 2t − 1 ∈ [0, 1] the cubic is u²(3 + u) = 2(1 + x). Its root is u = s·g(s) with
-/// s = √(2(1 + x)/3) ∈ [0, 2/√3] and g smooth (g(0) = 1); a degree-5 fit of g (error
-/// 1.7·10⁻⁶, relative) and one Halley step, which cubes the relative error even next to
-/// the double root u = 0 at x = −1.
+/// That root is `u = s·g(s)` with `s = √(2(1 + x)/3) ∈ [0, 2/√3]` and `g` smooth (`g(0) = 1`);
+/// a degree-5 fit of `g` (error 1.7·10⁻⁶, relative) and one Halley step, which cubes the
+/// relative error even next to the double root `u = 0` at `x = −1`.
 #[inline]
-fn trisect_cos(x: f64) -> f64 {
+fn trisect_u(x: f64) -> f64 {
     /// g(1/√3 + d) on [−1/√3, 1/√3].
     const FIT: [f64; 6] = [
         -0.0023725581002014035,
@@ -259,8 +274,7 @@ fn trisect_cos(x: f64) -> f64 {
     let d2f = 6.0 * u + 6.0;
     let u = u - 2.0 * f * df / (2.0 * df * df - f * d2f);
     // rhs = 0 (x = −1) has the double root u = 0, where Halley's step is 0/0.
-    let u = if rhs > 0.0 { u } else { 0.0 };
-    0.5 * (1.0 + u)
+    if rhs > 0.0 { u } else { 0.0 }
 }
 
 #[cfg(test)]
@@ -298,7 +312,7 @@ mod tests {
             1.0 - 1e-12,
         ]);
         for x in xs {
-            let (got, want) = (trisect_cos(x), (x.acos() / 3.0).cos());
+            let (got, want) = (0.5 * (1.0 + trisect_u(x)), (x.acos() / 3.0).cos());
             assert!(
                 (got - want).abs() <= 2.0 * f64::EPSILON,
                 "x = {x}: {got} vs {want}"
