@@ -45,7 +45,13 @@ pub(super) fn real_roots(
     shift: f64,
     near: f64,
 ) -> RealRoots {
-    let f = split(p, q, r);
+    roots_of_split(&split(p, q, r), orig, shift, near)
+}
+
+/// The real roots (unsorted, not yet polished) of both factors of a [`split`]; `orig`,
+/// `shift` and `near` as for [`real_roots`].
+#[inline]
+pub(super) fn roots_of_split(f: &Split, orig: &[f64; 5], shift: f64, near: f64) -> RealRoots {
     let mut out = RealRoots::default();
     quadratic_factor(f.m, f.n1, f.z, orig, shift, near, &mut out);
     quadratic_factor(-f.m, f.n2, f.z, orig, shift, near, &mut out);
@@ -64,9 +70,9 @@ pub(super) struct Split {
 /// Ferrari's split of `x⁴ + p x² + q x + r` (see the module docs).
 #[inline]
 pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
-    let (z, dh) = resolvent::greatest_root(p, q, r);
-    let m = z.sqrt();
-    let s = p + z;
+    let root = resolvent::greatest_root(p, q, r);
+    let (z, dh, m) = (root.z, root.dh, root.m);
+    let s = p + root.z_early;
     let w2 = s * s - 4.0 * r;
 
     // n₂ − n₁ is both q/m and sign(q)·√((p + z)² − 4r). The first inherits half the
@@ -75,16 +81,18 @@ pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
     // ε·((p + z)² + 4|r|)/(2w²) plus what the error of z adds to p + z. Take whichever is
     // better determined (compared without dividing: both denominators are > 0 when used).
     let b_abs = p * p + 4.0 * r.abs();
-    let h_mag = ((z + 2.0 * p.abs()) * z + b_abs) * z + q * q;
+    let z_early = root.z_early;
+    let h_mag = ((z_early + 2.0 * p.abs()) * z_early + b_abs) * z_early + q * q;
     let zdh = z * dh;
     // rel(q/m) = ½·ε·h_mag/zdh ≤ rel(√w²) = ½·err_w/w2, with err_w = ε·(s² + 4|r|) plus
     // 2|s|·(ε|p| + ε·h_mag/dh), multiplied out so that no division is needed.
     let err_w_zdh =
         EPS * ((s * s + 4.0 * r.abs() + 2.0 * s.abs() * p.abs()) * zdh + 2.0 * s.abs() * h_mag * z);
-    let use_q_over_m = zdh > 0.0 && (w2 <= 0.0 || EPS * h_mag * w2 <= err_w_zdh);
+    let use_q_over_m =
+        root.q_over_m_exact | (zdh > 0.0 && (w2 <= 0.0 || EPS * h_mag * w2 <= err_w_zdh));
     // Both candidates are computed and one is selected: which one wins is a coin toss from
     // ray to ray, and a mispredicted branch costs more than a division and a root.
-    let by_q = q / m;
+    let by_q = root.q_over_m;
     let by_w = w2.max(0.0).sqrt().copysign(q);
     let d = if use_q_over_m { by_q } else { by_w };
 
@@ -92,8 +100,16 @@ pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
     // which avoids the cancellation in (p + z ∓ d)/2 (again selected, not branched).
     let (n1_direct, n2_direct) = (0.5 * (s - d), 0.5 * (s + d));
     let n2_bigger = n2_direct.abs() >= n1_direct.abs();
+    // Both quotients start before the comparison is known (a division is long).
+    let (r_over_n2, r_over_n1) = (r / n2_direct, r / n1_direct);
     let big = if n2_bigger { n2_direct } else { n1_direct };
-    let other = if big != 0.0 { r / big } else { 0.0 };
+    let other = if big == 0.0 {
+        0.0
+    } else if n2_bigger {
+        r_over_n2
+    } else {
+        r_over_n1
+    };
     let n1 = if n2_bigger { other } else { n1_direct };
     let n2 = if n2_bigger { n2_direct } else { other };
     Split { z, m, n1, n2 }
