@@ -1,0 +1,140 @@
+//! Every real root, sorted and Newton-polished on the caller's polynomial: for CSG, the
+//! oracle's checks and the tests.
+
+use super::{RealRoots, eval, eval2, factor};
+
+/// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
+///
+/// The quartic is made monic and depressed (`t = x − c[1]/(4c[0])`), factored, and each
+/// root is then Newton-polished on the original coefficients (the depression loses
+/// absolute accuracy when the shift is large).
+/// Returns no roots if `c[0] = 0` or a coefficient is not finite.
+pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
+    let [c4, c3, c2, c1, c0] = c;
+    if c4 == 0.0 || !c.iter().all(|v| v.is_finite()) {
+        return RealRoots::default();
+    }
+    let inv = 1.0 / c4;
+    let (b, cc, d) = (c2 * inv, c1 * inv, c0 * inv);
+    let s = 0.25 * c3 * inv;
+    // t = x − s:  p = b − 6s², q = c − 2s(b − 4s²), r = d − s(c − s(b − 3s²)).
+    let p = b - 6.0 * s * s;
+    let q = cc - 2.0 * s * (b - 4.0 * s * s);
+    let r = d - s * (cc - s * (b - 3.0 * s * s));
+    // Near-tangent decisions look for a local extremum, so they need the monic form.
+    let monic = [1.0, c3 * inv, b, cc, d];
+    let near = factor::near_double_threshold(p, q, r, &monic, s);
+    let mut roots = factor::real_roots(p, q, r, &monic, s, near).map_increasing(|x| x - s);
+    roots.sort();
+    polish(&mut roots, &c);
+    roots
+}
+
+/// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
+/// Newton-polished on that quartic. A double root is reported twice.
+pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
+    if !(p.is_finite() && q.is_finite() && r.is_finite()) {
+        return RealRoots::default();
+    }
+    let c = [1.0, 0.0, p, q, r];
+    let mut roots = factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE);
+    roots.sort();
+    polish(&mut roots, &c);
+    roots
+}
+
+/// Up to two Newton steps per (sorted) root on `c`. A step is taken only if it stays
+/// within half the distance to the neighbouring roots (so two close roots cannot merge; a
+/// double root reported twice does not move) and reduces |f|.
+#[inline]
+fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
+    let n = roots.len;
+    refine_close_pairs(roots, c);
+    let orig = roots.roots;
+    for i in 0..n {
+        let x0 = orig[i];
+        let mut lim = f64::INFINITY;
+        if i > 0 {
+            lim = lim.min(x0 - orig[i - 1]);
+        }
+        if i + 1 < n {
+            lim = lim.min(orig[i + 1] - x0);
+        }
+        lim *= 0.5;
+        let mut x = x0;
+        let (mut f, mut df) = eval(c, x);
+        for _ in 0..2 {
+            if f == 0.0 || df == 0.0 {
+                break;
+            }
+            let xn = x - f / df;
+            // Written so that NaN also fails the test.
+            let ok = (xn - x0).abs() <= lim;
+            if !ok {
+                break;
+            }
+            let (fnew, dfnew) = eval(c, xn);
+            if fnew.abs() >= f.abs() {
+                break;
+            }
+            x = xn;
+            f = fnew;
+            df = dfnew;
+        }
+        roots.roots[i] = x;
+    }
+    roots.sort();
+}
+
+/// A pair of roots much closer to each other than to the rest is a (near-)double root,
+/// which Newton on `f` cannot improve (f' ≈ 0) and which the depression may have blurred by
+/// √(rounding of the shift). Re-derive it from the caller's `c`: Newton on `f'` to the
+/// extremum `x*` between them, then `x* ± √(−2f/f'')` (both `x*` if `f(x*)` has the wrong sign,
+/// which is within rounding since Ferrari found the pair real).
+#[inline]
+fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) {
+    let n = roots.len;
+    let mut i = 0;
+    while i + 1 < n {
+        let (a, b) = (roots.roots[i], roots.roots[i + 1]);
+        let gap = b - a;
+        let mid = 0.5 * (a + b);
+        let mut other = f64::INFINITY;
+        if i > 0 {
+            other = other.min(mid - roots.roots[i - 1]);
+        }
+        if i + 2 < n {
+            other = other.min(roots.roots[i + 2] - mid);
+        }
+        // Distance scale: to the other real roots, or |x| if there are none.
+        let scale = if other.is_finite() { other } else { mid.abs() };
+        if gap > 1e-4 * scale {
+            i += 1;
+            continue;
+        }
+        let mut x = mid;
+        for _ in 0..3 {
+            let (_, d1, d2) = eval2(c, x);
+            if d2 == 0.0 {
+                break;
+            }
+            let xn = x - d1 / d2;
+            // Stay far from the other critical points (≈ half-way to the other roots).
+            // Written so that NaN also fails the test.
+            let ok = (xn - mid).abs() <= 0.1 * scale;
+            if !ok {
+                break;
+            }
+            x = xn;
+        }
+        let (f, _, d2) = eval2(c, x);
+        let delta = if d2 != 0.0 && f * d2 < 0.0 {
+            (-2.0 * f / d2).sqrt()
+        } else {
+            0.0
+        };
+        roots.roots[i] = x - delta;
+        roots.roots[i + 1] = x + delta;
+        i += 2;
+    }
+}
