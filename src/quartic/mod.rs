@@ -16,7 +16,7 @@
 //!   rounding, say it has no real root: a missed line costs no resolvent.
 //!
 //! Two entry points: [`nearest_root_depressed`], the nearest root in an interval, which is
-//! all a renderer needs (one Newton step, no sort); and the all-roots [`solve_depressed_monic`]
+//! all a renderer needs (no sort, no final Newton step); and the all-roots [`solve_depressed_monic`]
 //! / [`solve_quartic`] for CSG and the tests.
 //!
 //! Files: `nearest.rs` and `all_roots.rs` (the entry points), `resolvent.rs` (the cubic in
