@@ -1,5 +1,6 @@
-//! Quartic solvers on the same torus quartics, per line family: speed by criterion,
-//! accuracy against the oracle's high-precision reference roots.
+//! Quartic solvers on the same torus quartics, per line family: speed by criterion and
+//! by a paired, interleaved ratio against `roots` 0.0.8, accuracy against the oracle's
+//! high-precision reference roots.
 //!
 //! Every solver answers the renderer's question, the nearest root at or after the ray's
 //! origin (t ≥ 0): ours directly ([`nearest_root_depressed`]), the all-roots solvers
@@ -15,10 +16,12 @@ use rand::SeedableRng;
 use std::fmt::Write;
 use std::hint::black_box;
 use std::path::Path;
-use std::time::SystemTime;
+use std::time::{Duration, Instant, SystemTime};
 use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
 use torus_cull::harness::oracle::{OracleClass, classify_line, reference_roots};
-use torus_cull::harness::results::SolverRecord;
+use torus_cull::harness::paired::stats::{QUIET_FRACTION, quiet_rounds};
+use torus_cull::harness::paired::{Schedule, interleave, ratio_estimate};
+use torus_cull::harness::results::{SolverPairedRatio, SolverRecord};
 use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
 use torus_cull::harness::workload::spec::Workload;
 use torus_cull::harness::workload::{Case, generate};
@@ -197,7 +200,70 @@ pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)], dispatch: &
     }
 }
 
-/// Speed (from this run's estimates) and accuracy of each solver on each family.
+/// The peer every paired ratio is taken against.
+const REFERENCE: &str = "roots_0.0.8";
+
+/// Paired ratios t(solver) / t([`REFERENCE`]) on one family's quartics, in
+/// [`solver_names`] order: every solver runs once over all of them per round, in a
+/// shuffled order, for about 3 s at the default size (0.3 s or more), and the ratio is
+/// the median over the quietest rounds, with its bootstrap interval ([`torus_cull::harness::paired`]).
+fn paired_vs_roots(
+    sets: &[SolverSet],
+    q: &Quartics,
+    dispatch: &Dispatch,
+    seed: u64,
+) -> Vec<Option<SolverPairedRatio>> {
+    let names: Vec<&str> = solver_names().collect();
+    let Some(reference) = names.iter().position(|n| *n == REFERENCE) else {
+        return vec![None; names.len()];
+    };
+    let schedule = Schedule {
+        warm_up: Duration::from_millis(200),
+        budget: Duration::from_secs_f64((sets.len() as f64 * 3e-4).clamp(0.3, 3.0)),
+        min_rounds: 40,
+        max_rounds: 100_000,
+        seed,
+    };
+    let mut batch_roots = Vec::new();
+    let rounds = interleave(names.len(), &schedule, |i| {
+        let start = Instant::now();
+        match SOLVERS.get(i) {
+            Some((_, solve)) => {
+                for s in sets {
+                    black_box(solve(black_box(&s.c), s.u_origin));
+                }
+            }
+            None => {
+                black_box(nearest_roots(dispatch, black_box(q), &mut batch_roots));
+            }
+        }
+        start.elapsed()
+    });
+    // As the cull ratios do: the rounds the operating system left alone, if most were.
+    let clean = rounds.disturbed.iter().filter(|d| !**d).count();
+    let eligible: Vec<bool> = if clean >= 20.max(rounds.len() / 4) {
+        rounds.disturbed.iter().map(|d| !d).collect()
+    } else {
+        vec![true; rounds.len()]
+    };
+    let quiet = quiet_rounds(&rounds.ns, &eligible, QUIET_FRACTION);
+    let pick = |i: usize| quiet.iter().map(|&k| rounds.ns[i][k]).collect::<Vec<f64>>();
+    let work = sets.len().max(1) as f64;
+    (0..names.len())
+        .map(|i| {
+            let e = ratio_estimate(&pick(i), &pick(reference), work, seed ^ i as u64)?;
+            Some(SolverPairedRatio {
+                ratio: e.ratio,
+                ratio_ci: e.ratio_ci,
+                rounds: e.rounds as u64,
+                ns_per_solve: e.ns_per_ray,
+            })
+        })
+        .collect()
+}
+
+/// Speed (from this run's estimates, and paired against `roots` 0.0.8) and accuracy of
+/// each solver on each family.
 pub fn records(
     home: &Path,
     families: &[(&str, Vec<SolverSet>)],
@@ -205,10 +271,12 @@ pub fn records(
     dispatch: &Dispatch,
 ) -> Vec<SolverRecord> {
     let mut out = Vec::new();
-    for (family, sets) in families {
+    for (f, (family, sets)) in families.iter().enumerate() {
+        let q = quartics(sets);
         let mut batch = Vec::new();
-        nearest_roots(dispatch, &quartics(sets), &mut batch);
-        for name in solver_names() {
+        nearest_roots(dispatch, &q, &mut batch);
+        let paired = paired_vs_roots(sets, &q, dispatch, 0x5017_0000 + f as u64);
+        for (name, paired) in solver_names().zip(paired) {
             let solve = SOLVERS.iter().find(|(n, _)| *n == name).map(|(_, f)| *f);
             let (mut missed, mut spurious, mut reference, mut max_err) = (0u64, 0u64, 0u64, 0f64);
             for (i, s) in sets.iter().enumerate() {
@@ -250,6 +318,7 @@ pub fn records(
                 ns_per_solve: est.median,
                 ns_per_solve_ci: [est.lower, est.upper],
                 source: "criterion".into(),
+                paired_vs_roots: paired,
             });
         }
     }
@@ -258,25 +327,33 @@ pub fn records(
 
 pub fn table(records: &[SolverRecord]) -> String {
     let mut out = String::from(
-        "quartic solvers, nearest root t ≥ 0, same quartics per family (ratio: ns vs roots_0.0.8 in this run):\n",
+        "quartic solvers, nearest root t ≥ 0, same quartics per family (ratio: ns vs roots_0.0.8 in this run;\n\
+         paired: median per-round ratio vs roots_0.0.8, interleaved, [95 % interval]):\n",
     );
     let _ = writeln!(
         out,
-        "  {:<14} {:<15} {:>9} {:>6} {:>7} {:>7} {:>9} {:>11}",
-        "family", "solver", "ns/solve", "ratio", "missed", "spur.", "sets", "max err"
+        "  {:<14} {:<15} {:>9} {:>6} {:>19} {:>7} {:>7} {:>9} {:>11}",
+        "family", "solver", "ns/solve", "ratio", "paired", "missed", "spur.", "sets", "max err"
     );
     for r in records {
         let peer = records
             .iter()
             .find(|p| p.family == r.family && p.solver == "roots_0.0.8")
             .map_or(f64::NAN, |p| r.ns_per_solve / p.ns_per_solve);
+        let paired = r.paired_vs_roots.as_ref().map_or("-".to_string(), |p| {
+            format!(
+                "{:.2} [{:.2}, {:.2}]",
+                p.ratio, p.ratio_ci[0], p.ratio_ci[1]
+            )
+        });
         let _ = writeln!(
             out,
-            "  {:<14} {:<15} {:>9.1} {:>6.2} {:>7} {:>7} {:>9} {:>11.2e}",
+            "  {:<14} {:<15} {:>9.1} {:>6.2} {:>19} {:>7} {:>7} {:>9} {:>11.2e}",
             r.family,
             r.solver,
             r.ns_per_solve,
             peer,
+            paired,
             r.missed_roots,
             r.spurious_roots,
             r.coefficient_sets,

@@ -331,6 +331,25 @@ pub struct SolverRecord {
     pub ns_per_solve_ci: [f64; 2],
     /// `criterion`.
     pub source: String,
+    /// Paired, interleaved t(solver) / t(`roots_0.0.8`) on the same quartics in the same
+    /// run; null in files written before it.
+    #[serde(default)]
+    pub paired_vs_roots: Option<SolverPairedRatio>,
+}
+
+/// One solver's time against `roots_0.0.8`'s, every solver timed once per round over the
+/// family's quartics in a shuffled order (see [`crate::paired`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SolverPairedRatio {
+    /// Median per-round ratio: below 1 the solver is faster.
+    pub ratio: f64,
+    /// Percentile bootstrap 95 % interval of that median, `[lo, hi]`.
+    pub ratio_ci: [f64; 2],
+    /// Rounds the ratio was taken over: the quietest quarter of those the operating
+    /// system did not switch the thread out of (of all, if it did so in most).
+    pub rounds: u64,
+    /// The solver's median ns per solve over those rounds.
+    pub ns_per_solve: f64,
 }
 
 /// A results file that cannot be read.
@@ -491,5 +510,27 @@ mod tests {
             "workload":"w","workload_sha256":"s"}"#;
         let m: Meta = serde_json::from_str(meta).unwrap();
         assert_eq!(m.isa, None);
+    }
+
+    /// A solver record from before the paired ratio reads with none, and one with it
+    /// round-trips.
+    #[test]
+    fn old_solver_records_have_no_paired_ratio() {
+        let old = r#"{"solver":"torus_cull","family":"uniform","coefficient_sets":1,
+            "reference_roots":1,"missed_roots":0,"spurious_roots":0,"max_rel_t_error":0.0,
+            "ns_per_solve":40.0,"ns_per_solve_ci":[39.0,41.0],"source":"criterion"}"#;
+        let r: SolverRecord = serde_json::from_str(old).unwrap();
+        assert_eq!(r.paired_vs_roots, None);
+        let paired = SolverRecord {
+            paired_vs_roots: Some(SolverPairedRatio {
+                ratio: 0.6,
+                ratio_ci: [0.59, 0.61],
+                rounds: 100,
+                ns_per_solve: 40.0,
+            }),
+            ..r
+        };
+        let text = serde_json::to_string(&paired).unwrap();
+        assert_eq!(serde_json::from_str::<SolverRecord>(&text).unwrap(), paired);
     }
 }

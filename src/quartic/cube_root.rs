@@ -8,10 +8,11 @@
 #[inline(always)]
 fn poly5(c: &[f64; 6], x: f64) -> f64 {
     let x2 = x * x;
+    let x4 = x2 * x2;
     let low = c[4] * x + c[5];
     let mid = c[2] * x + c[3];
     let high = c[0] * x + c[1];
-    low + x2 * (mid + x2 * high)
+    (low + x2 * mid) + x4 * high
 }
 
 /// ∛y for y ≥ 0.
@@ -25,14 +26,14 @@ pub(super) fn cbrt(y: f64) -> f64 {
     if !(1e-300..=1e300).contains(&y) {
         return cbrt_outside(y);
     }
-    /// ∛(1.5 + x) on [−½, ½].
+    /// ∛μ on [1, 2].
     const FIT: [f64; 6] = [
         0.005072953325277491,
-        -0.010271170742079951,
-        0.020886322742377506,
-        -0.05643629468272744,
-        0.25438164562453464,
-        1.144712948162971,
+        -0.04831832068166114,
+        0.19665479701360078,
+        -0.4602977267696209,
+        0.8317431442479309,
+        0.47514693623890253,
     ];
     /// 2^(j/3).
     const CBRT_2J: [f64; 3] = [1.0, 1.259_921_049_894_873_2, 1.587_401_051_968_199_5];
@@ -42,7 +43,7 @@ pub(super) fn cbrt(y: f64) -> f64 {
     let (k_plus, j) = (u64::from(biased / 3), (biased % 3) as usize);
     let mu = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
     let scale = f64::from_bits((k_plus + 1023 - 341) << 52) * CBRT_2J[j];
-    let t = poly5(&FIT, mu - 1.5) * scale;
+    let t = poly5(&FIT, mu) * scale;
     let t3 = t * t * t;
     t * ((t3 + 2.0 * y) / (2.0 * t3 + y))
 }

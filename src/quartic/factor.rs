@@ -169,7 +169,12 @@ fn near_double_root(x0: f64, spread: f64, orig: &[f64; 5], shift: f64, out: &mut
         if !ok {
             break;
         }
+        let step = (tn - t).abs();
         t = tn;
+        // Converged (quadratically): a further step would move t by rounding only.
+        if step <= 4.0 * EPS * t.abs() {
+            break;
+        }
     }
     let (f, _, d2) = eval2(orig, t);
     let mag = orig.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
@@ -188,22 +193,31 @@ fn near_double_root(x0: f64, spread: f64, orig: &[f64; 5], shift: f64, out: &mut
         return;
     }
     // The parabola's roots are only approximate (the cubic term); Newton on f converges from
-    // them, and is kept on its own side of t* so the two roots cannot merge.
-    for side in [-1.0, 1.0] {
-        let mut x = t + side * delta;
-        for _ in 0..3 {
-            let (fx, dfx) = eval(orig, x);
-            if fx == 0.0 || dfx == 0.0 {
-                break;
+    // them, and is kept on its own side of t* so the two roots cannot merge. Both sides
+    // step together, so that their independent chains overlap.
+    let sides = [-1.0, 1.0];
+    let mut xs = sides.map(|side| t + side * delta);
+    let mut active = [true; 2];
+    for _ in 0..3 {
+        for ((x, live), side) in xs.iter_mut().zip(&mut active).zip(sides) {
+            if !*live {
+                continue;
             }
-            let xn = x - fx / dfx;
-            // Written so that NaN also fails the test.
-            let ok = (xn - t) * side > 0.0 && (xn - t).abs() <= 4.0 * delta;
+            let (fx, dfx) = eval(orig, *x);
+            let xn = *x - fx / dfx;
+            // Written so that NaN (and f = 0 or f' = 0) also fails the test.
+            let ok = fx != 0.0 && (xn - t) * side > 0.0 && (xn - t).abs() <= 4.0 * delta;
             if !ok {
-                break;
+                *live = false;
+                continue;
             }
-            x = xn;
+            let step = (xn - *x).abs();
+            *x = xn;
+            // Converged: a further step would move x by rounding only.
+            *live = step > 4.0 * EPS * x.abs();
         }
+    }
+    for x in xs {
         out.push(x + shift);
     }
 }
