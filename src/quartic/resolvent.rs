@@ -57,9 +57,12 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
     let c = -q * q;
     // z = w − a/3 gives w³ + P w + Q. Thirds by multiplication: a division is on the
     // critical path, and the last bit of these is below what the formulas resolve.
+    // In p, q, r directly: P' = −(p²/9 + 4r/3), Q' = p(4r/3 − p²/27) − q²/2 (a shorter
+    // chain than through a, b and c).
     let a3 = a * (1.0 / 3.0);
-    let third_p = (b - a * a3) * (1.0 / 3.0);
-    let half_q = 0.5 * (c - a3 * (b - 2.0 * a3 * a3));
+    let (p2, r43) = (p * p, r * (4.0 / 3.0));
+    let third_p = -(p2 * (1.0 / 9.0) + r43);
+    let half_q = p * (r43 - p2 * (1.0 / 27.0)) - 0.5 * (q * q);
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
 
@@ -107,7 +110,8 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
             z = q * q / ((z + a) * z + b);
         }
         m = z.sqrt();
-        q_over_m = q / m;
+        // q/m = (q/z)·m: the division overlaps the root instead of waiting for it.
+        q_over_m = q / z * m;
         z_early = z;
     }
     // Two Newton steps polish the closed form where it loses digits: a small discriminant
