@@ -338,7 +338,7 @@ pub struct SolverRecord {
 }
 
 /// One solver's time against `roots_0.0.8`'s, every solver timed once per round over the
-/// family's quartics in a shuffled order (see [`crate::paired`]).
+/// family's quartics in a shuffled order (see [`crate::harness::paired`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SolverPairedRatio {
     /// Median per-round ratio: below 1 the solver is faster.

@@ -14,12 +14,13 @@ use glam::DVec3;
 ///
 /// **Tangencies.** Only sign changes are reported (g = 0 counts as outside). A line that
 /// touches the surface reports no root if its computed minimum of g is ≥ 0 and two nearly
-/// equal roots if it is < 0. So for an [`OracleClass::Ambiguous`] line the roots near the
-/// tangency are not meaningful: compare root counts only outside the ambiguity band, where a
-/// line hit gives 2 or 4 roots and a line miss gives none.
+/// equal roots if it is < 0. So for an ambiguous line
+/// ([`OracleClass::Ambiguous`](super::OracleClass::Ambiguous)) the roots near the tangency
+/// are not meaningful: compare root counts only outside the ambiguity band, where a line
+/// hit gives 2 or 4 roots and a line miss gives none.
 ///
 /// # Panics
-/// As [`classify_f64`].
+/// As [`classify_f64`](super::classify_f64).
 #[allow(clippy::too_many_arguments)]
 pub fn reference_roots(
     center: DVec3,

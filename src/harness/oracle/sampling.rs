@@ -6,8 +6,8 @@ use glam::DVec3;
 
 /// The margin by the second, independent method: dense sampling of D in world coordinates
 /// over the part of the line that can hold the minimum, then golden-section refinement
-/// around every discrete local minimum. Same inputs and meaning as [`classify_f64`]; slow,
-/// for tests only.
+/// around every discrete local minimum. Same inputs and meaning as
+/// [`classify_f64`](super::classify_f64); slow, for tests only.
 ///
 /// The window: let x_n be the point of the range closest to the centre. D(x_n) ≤ |x_n| + R
 /// and D(x) ≥ |x| − R everywhere, so every minimizer has |x| ≤ |x_n| + 2R: sampling the
