@@ -15,122 +15,31 @@
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
-use torus_cull::harness::oracle::{OracleClass, classify_line, reference_roots};
-use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
-use torus_cull::harness::workload::{Case, Pose, generate};
-use torus_cull::intersect::quartic_coefficients_local;
+use torus_cull::harness::solver_suite::{NearestScore, SolverCase, family_cases};
+use torus_cull::harness::workload::Pose;
 use torus_cull::quartic::nearest_root_depressed;
-use torus_cull::{Ray, Torus};
 
 const NUS: [f64; 5] = [1.25, 2.0, 4.0, 8.0, 16.0];
-const MATCH_TOLERANCE_REL: f64 = 1e-6;
-
-/// One line's quartic and what it takes to check its nearest root.
-struct Case1 {
-    c: [f64; 3],
-    u_origin: f64,
-    major: f64,
-    minor: f64,
-    foot_offset: f64,
-    len: f64,
-    reference: Vec<f64>,
-}
-
-impl Case1 {
-    fn new(torus: &Torus, ray: &Ray) -> Option<Case1> {
-        if classify_line(torus, ray).class == OracleClass::Ambiguous {
-            return None;
-        }
-        let (major, minor) = (
-            f64::from(torus.major_radius()),
-            f64::from(torus.minor_radius()),
-        );
-        let (o, d) = torus.line_to_local_f64(ray);
-        let len = d.length();
-        let foot_offset = o.dot(d / len);
-        let c = quartic_coefficients_local(major, minor, o, d);
-        Some(Case1 {
-            c: [c[2], c[3], c[4]],
-            u_origin: foot_offset / major,
-            major,
-            minor,
-            foot_offset,
-            len,
-            reference: reference_roots(
-                torus.center().as_dvec3(),
-                torus.axis().as_dvec3(),
-                major,
-                minor,
-                ray.origin().as_dvec3(),
-                ray.dir().as_dvec3(),
-                0.0,
-                f64::INFINITY,
-            ),
-        })
-    }
-
-    fn t_of_u(&self, u: f64) -> f64 {
-        (u * self.major - self.foot_offset) / self.len
-    }
-}
 
 /// The bench's solver families at the timed ν.
-fn family(name: &str) -> Vec<Case1> {
-    let mut out = Vec::new();
-    for nu in NUS {
-        if name == "uniform" {
-            let b = generate(Case::Uniform, nu, 2048, 20261121, Pose::Random).unwrap();
-            out.extend(b.rays.iter().filter_map(|r| Case1::new(&b.torus, r)));
-            continue;
-        }
-        let kind = match name {
-            "hole_edge" => LineFamily::HoleEdge,
-            "tangent" => LineFamily::Tangent,
-            _ => LineFamily::TangentLimit,
-        };
-        let mut rng = Pcg64::seed_from_u64(0x501E ^ nu.to_bits() ^ name.len() as u64);
-        let (torus, rays) = family_rays(kind, nu, 2048, &mut rng);
-        out.extend(rays.iter().filter_map(|r| Case1::new(&torus, r)));
-    }
-    out
+fn family(name: &str) -> Vec<SolverCase> {
+    family_cases(name, &NUS, 2048, (20261121, Pose::Random), 0x501E).unwrap()
 }
 
-#[derive(Debug, Default)]
-struct Score {
-    sets: usize,
-    reference: usize,
-    missed: usize,
-    spurious: usize,
-    disagree_with_scalar: usize,
-}
-
-/// Counts as the bench does: the nearest root t ≥ 0 against the reference's first.
-fn score(cases: &[Case1], roots: &[Option<f64>], scalar: &[Option<f64>]) -> Score {
-    let mut s = Score {
-        sets: cases.len(),
-        ..Score::default()
-    };
+/// The bench's count of missed and spurious roots, and the answers that differ from the
+/// scalar solver's.
+fn score(
+    cases: &[SolverCase],
+    roots: &[Option<f64>],
+    scalar: &[Option<f64>],
+) -> (NearestScore, usize) {
+    let mut score = NearestScore::default();
+    let mut disagree_with_scalar = 0;
     for ((case, &got), &control) in cases.iter().zip(roots).zip(scalar) {
-        let tol = MATCH_TOLERANCE_REL * (case.major + case.minor) / case.len;
-        let found = got.map(|u| case.t_of_u(u));
-        let want = case.reference.first().copied();
-        s.reference += usize::from(want.is_some());
-        match (found, want) {
-            (Some(t), Some(r)) if (t - r).abs() <= tol => {}
-            (Some(t), Some(r)) => {
-                s.missed += 1;
-                let later = case.reference.iter().any(|&x| (t - x).abs() <= tol);
-                s.spurious += usize::from(!later || t < r);
-            }
-            (Some(_), None) => s.spurious += 1,
-            (None, Some(_)) => s.missed += 1,
-            (None, None) => {}
-        }
-        if !same(got, control) {
-            s.disagree_with_scalar += 1;
-        }
+        score.add(case, got);
+        disagree_with_scalar += usize::from(!same(got, control));
     }
-    s
+    (score, disagree_with_scalar)
 }
 
 fn same(a: Option<f64>, b: Option<f64>) -> bool {
@@ -161,7 +70,7 @@ fn batch_solver_misses_nothing_and_invents_nothing_on_the_solver_families() {
             .iter()
             .map(|c| nearest_root_depressed(c.c[0], c.c[1], c.c[2], c.u_origin, f64::INFINITY))
             .collect();
-        let control = score(&cases, &scalar, &scalar);
+        let (control, _) = score(&cases, &scalar, &scalar);
         println!("{name:<14} scalar: {control:?}");
         assert!(
             control.missed == 0 && control.spurious == 0,
@@ -170,7 +79,7 @@ fn batch_solver_misses_nothing_and_invents_nothing_on_the_solver_families() {
         let mut roots = Vec::new();
         for d in &levels {
             let stats = nearest_roots(d, &quartics, &mut roots);
-            let s = score(&cases, &roots, &scalar);
+            let (s, disagree_with_scalar) = score(&cases, &roots, &scalar);
             println!(
                 "{name:<14} {:<7} {s:?}, scalar fallbacks {} of {}",
                 d.isa().name(),
@@ -179,9 +88,9 @@ fn batch_solver_misses_nothing_and_invents_nothing_on_the_solver_families() {
             );
             assert!(s.sets > 5_000 && s.reference > 1_000, "{name}: {s:?}");
             assert_eq!(
-                (s.missed, s.spurious, s.disagree_with_scalar),
+                (s.missed, s.spurious, disagree_with_scalar),
                 (0, 0, 0),
-                "{name} at {}: {s:?}",
+                "{name} at {}: {s:?}, {disagree_with_scalar} differ from the scalar solver",
                 d.isa()
             );
             if name == "uniform" {

@@ -5,113 +5,35 @@
 //! Every solver answers the renderer's question, the nearest root at or after the ray's
 //! origin (t ≥ 0): ours directly ([`nearest_root_depressed`]), the all-roots solvers
 //! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking.
-//! Accuracy is counted on that nearest root: *missed* when the reference has one and the
-//! solver gives none within [`MATCH_TOLERANCE_REL`], *spurious* when the solver gives one
-//! that matches no reference root at or after the origin.
+//! Accuracy is counted on that nearest root by [`NearestScore`], the count
+//! `tests/batch_solve.rs` uses too.
 
 use super::{BenchConfig, read_estimate};
 use criterion::{BenchmarkId, Criterion};
-use glam::DVec3;
-use rand::SeedableRng;
 use std::fmt::Write;
 use std::hint::black_box;
 use std::path::Path;
 use std::time::{Duration, Instant, SystemTime};
 use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
-use torus_cull::harness::oracle::{OracleClass, classify_line, reference_roots};
 use torus_cull::harness::paired::stats::{QUIET_FRACTION, quiet_rounds};
 use torus_cull::harness::paired::{Schedule, interleave, ratio_estimate};
 use torus_cull::harness::results::{SolverPairedRatio, SolverRecord};
-use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
+use torus_cull::harness::solver_suite::{NearestScore, SolverCase, family_cases};
 use torus_cull::harness::workload::spec::Workload;
-use torus_cull::harness::workload::{Case, generate};
-use torus_cull::intersect::quartic_coefficients_local;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
-use torus_cull::{Ray, Torus};
 
-/// A root counts as found when it is within this distance, × (R + r), of the reference.
-pub const MATCH_TOLERANCE_REL: f64 = 1e-6;
+pub use torus_cull::harness::solver_suite::FAMILIES;
 
-/// The line families, each timed and scored on its own.
-pub const FAMILIES: [&str; 4] = ["uniform", "hole_edge", "tangent", "tangent_limit"];
-
-/// One line's quartic, with what it takes to map its roots u back to t.
-pub struct SolverSet {
-    /// `[c2, c1, c0]` of the depressed monic quartic in u.
-    c: [f64; 3],
-    /// u of the ray's origin (t = 0): the solvers look for roots at or after it.
-    u_origin: f64,
-    major: f64,
-    minor: f64,
-    foot_offset: f64,
-    inv_len: f64,
-    len: f64,
-    /// The oracle's roots at or after the origin, sorted.
-    reference: Vec<f64>,
-}
-
-impl SolverSet {
-    fn new(torus: &Torus, ray: &Ray) -> Option<SolverSet> {
-        if classify_line(torus, ray).class == OracleClass::Ambiguous {
-            return None;
-        }
-        let (major, minor) = (
-            f64::from(torus.major_radius()),
-            f64::from(torus.minor_radius()),
-        );
-        let (o, d): (DVec3, DVec3) = torus.line_to_local_f64(ray);
-        let len = d.length();
-        let foot_offset = o.dot(d / len);
-        let c = quartic_coefficients_local(major, minor, o, d);
-        Some(SolverSet {
-            c: [c[2], c[3], c[4]],
-            u_origin: foot_offset / major,
-            major,
-            minor,
-            foot_offset,
-            inv_len: 1.0 / len,
-            len,
-            reference: reference_roots(
-                torus.center().as_dvec3(),
-                torus.axis().as_dvec3(),
-                major,
-                minor,
-                ray.origin().as_dvec3(),
-                ray.dir().as_dvec3(),
-                0.0,
-                f64::INFINITY,
-            ),
-        })
-    }
-
-    fn t_of_u(&self, u: f64) -> f64 {
-        (u * self.major - self.foot_offset) * self.inv_len
-    }
-}
-
-/// The family's quartics at the timed ν (lines the oracle calls ambiguous are left out:
-/// their tangent roots are not defined to better than the band).
-pub fn family_sets(family: &str, workload: &Workload, config: &BenchConfig) -> Vec<SolverSet> {
-    let per_nu = config.batch.min(2048);
-    let mut sets = Vec::new();
-    for nu in config.timed_nus(workload) {
-        if family == "uniform" {
-            let b = generate(Case::Uniform, nu, per_nu, workload.seed, workload.pose)
-                .unwrap_or_else(|e| panic!("{e}"));
-            sets.extend(b.rays.iter().filter_map(|r| SolverSet::new(&b.torus, r)));
-            continue;
-        }
-        let kind = match family {
-            "hole_edge" => LineFamily::HoleEdge,
-            "tangent" => LineFamily::Tangent,
-            _ => LineFamily::TangentLimit,
-        };
-        let seed = workload.seed ^ nu.to_bits() ^ family.len() as u64;
-        let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
-        let (torus, rays) = family_rays(kind, nu, per_nu, &mut rng);
-        sets.extend(rays.iter().filter_map(|r| SolverSet::new(&torus, r)));
-    }
-    sets
+/// The family's quartics at the timed ν (lines the oracle calls ambiguous are left out).
+pub fn family_sets(family: &str, workload: &Workload, config: &BenchConfig) -> Vec<SolverCase> {
+    family_cases(
+        family,
+        &config.timed_nus(workload),
+        config.batch.min(2048),
+        (workload.seed, workload.pose),
+        workload.seed,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The nearest of `roots` at or after `lo`.
@@ -171,7 +93,7 @@ pub fn solver_names() -> impl Iterator<Item = &'static str> {
 }
 
 /// The family's quartics as the batch solver takes them (nearest root u ≥ u_origin).
-fn quartics(sets: &[SolverSet]) -> Quartics {
+fn quartics(sets: &[SolverCase]) -> Quartics {
     let mut q = Quartics::new();
     for s in sets {
         q.push(s.c[0], s.c[1], s.c[2], s.u_origin, f64::INFINITY);
@@ -179,7 +101,7 @@ fn quartics(sets: &[SolverSet]) -> Quartics {
     q
 }
 
-pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverSet>)], dispatch: &Dispatch) {
+pub fn bench(c: &mut Criterion, families: &[(&str, Vec<SolverCase>)], dispatch: &Dispatch) {
     for (family, sets) in families {
         let mut group = c.benchmark_group(format!("solver-{family}"));
         for (name, solve) in SOLVERS {
@@ -208,7 +130,7 @@ const REFERENCE: &str = "roots_0.0.8";
 /// shuffled order, for about 3 s at the default size (0.3 s or more), and the ratio is
 /// the median over the quietest rounds, with its bootstrap interval ([`torus_cull::harness::paired`]).
 fn paired_vs_roots(
-    sets: &[SolverSet],
+    sets: &[SolverCase],
     q: &Quartics,
     dispatch: &Dispatch,
     seed: u64,
@@ -266,7 +188,7 @@ fn paired_vs_roots(
 /// each solver on each family.
 pub fn records(
     home: &Path,
-    families: &[(&str, Vec<SolverSet>)],
+    families: &[(&str, Vec<SolverCase>)],
     since: SystemTime,
     dispatch: &Dispatch,
 ) -> Vec<SolverRecord> {
@@ -278,31 +200,13 @@ pub fn records(
         let paired = paired_vs_roots(sets, &q, dispatch, 0x5017_0000 + f as u64);
         for (name, paired) in solver_names().zip(paired) {
             let solve = SOLVERS.iter().find(|(n, _)| *n == name).map(|(_, f)| *f);
-            let (mut missed, mut spurious, mut reference, mut max_err) = (0u64, 0u64, 0u64, 0f64);
+            let mut score = NearestScore::default();
             for (i, s) in sets.iter().enumerate() {
-                let tol = MATCH_TOLERANCE_REL * (s.major + s.minor) * s.inv_len;
                 let root = match solve {
                     Some(solve) => solve(&s.c, s.u_origin),
                     None => batch[i],
                 };
-                let found = root.map(|u| s.t_of_u(u));
-                let want = s.reference.first().copied();
-                reference += u64::from(want.is_some());
-                match (found, want) {
-                    (Some(t), Some(r)) if (t - r).abs() <= tol => {
-                        max_err = max_err.max((t - r).abs() * s.len / (s.major + s.minor));
-                    }
-                    (Some(t), Some(r)) => {
-                        // A wrong nearest root: the true one was missed, and the returned
-                        // one is spurious unless it is some later reference root.
-                        missed += 1;
-                        let later = s.reference.iter().any(|&x| (t - x).abs() <= tol);
-                        spurious += u64::from(!later || t < r);
-                    }
-                    (Some(_), None) => spurious += 1,
-                    (None, Some(_)) => missed += 1,
-                    (None, None) => {}
-                }
+                score.add(s, root);
             }
             let est = read_estimate(home, &format!("solver-{family}"), name, "all", since)
                 .map(|e| e.scaled(1.0 / sets.len().max(1) as f64));
@@ -311,10 +215,10 @@ pub fn records(
                 solver: name.to_string(),
                 family: family.to_string(),
                 coefficient_sets: sets.len() as u64,
-                reference_roots: reference,
-                missed_roots: missed,
-                spurious_roots: spurious,
-                max_rel_t_error: max_err,
+                reference_roots: score.reference,
+                missed_roots: score.missed,
+                spurious_roots: score.spurious,
+                max_rel_t_error: score.max_rel_t_error,
                 ns_per_solve: est.median,
                 ns_per_solve_ci: [est.lower, est.upper],
                 source: "criterion".into(),

@@ -29,4 +29,5 @@ pub mod render;
 pub mod report;
 pub mod results;
 pub mod scene;
+pub mod solver_suite;
 pub mod workload;
