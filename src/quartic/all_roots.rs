@@ -1,7 +1,7 @@
 //! Every real root, sorted and Newton-polished on the caller's polynomial: for CSG, the
 //! oracle's checks and the tests.
 
-use super::{RealRoots, eval, eval2, factor};
+use super::{RealRoots, eval, eval2, even, factor};
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
 ///
@@ -37,7 +37,13 @@ pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
         return RealRoots::default();
     }
     let c = [1.0, 0.0, p, q, r];
-    let mut roots = factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE);
+    let even = if q == 0.0 {
+        even::real_roots(p, r)
+    } else {
+        None
+    };
+    let mut roots =
+        even.unwrap_or_else(|| factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE));
     roots.sort();
     polish(&mut roots, &c);
     roots

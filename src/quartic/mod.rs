@@ -12,6 +12,8 @@
 //! - a factor with a near-zero discriminant is decided on the quartic itself (its value at
 //!   the nearby extremum against a rounding bound), never on the factor;
 //! - roots get guarded Newton steps on the caller's polynomial;
+//! - an even quartic (`q = 0`, a line perpendicular or parallel to the axis) is solved as
+//!   a quadratic in `x²` (`even.rs`), where every tangent is decided by an exact sign;
 //! - the nearest-root query first rejects a quartic whose discriminant's signs, beyond
 //!   rounding, say it has no real root: a missed line costs no resolvent.
 //!
@@ -19,9 +21,9 @@
 //! all a renderer needs (no sort, no final Newton step); and the all-roots [`solve_depressed_monic`]
 //! / [`solve_quartic`] for CSG and the tests.
 //!
-//! Files: `nearest.rs` and `all_roots.rs` (the entry points), `resolvent.rs` (the cubic in
-//! `m²`), `cube_root.rs` (its cube root and trisection without libm), `factor.rs`
-//! (Ferrari's split and near-double factors), `roots.rs` ([`RealRoots`]).
+//! Files: `nearest.rs` and `all_roots.rs` (the entry points), `even.rs` (`q = 0`),
+//! `resolvent.rs` (the cubic in `m²`), `cube_root.rs` (its cube root and trisection without
+//! libm), `factor.rs` (Ferrari's split and near-double factors), `roots.rs` ([`RealRoots`]).
 //!
 //! References: L. Ferrari's method as in Abramowitz & Stegun 3.8.3; the resolvent in `m²`
 //! is Descartes'. Peers measured in the bench: the `roots` crate (Ferrari) and
@@ -29,6 +31,7 @@
 
 mod all_roots;
 mod cube_root;
+mod even;
 mod factor;
 mod nearest;
 mod resolvent;

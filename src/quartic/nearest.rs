@@ -1,13 +1,14 @@
 //! The renderer's query: the nearest real root in an interval, with an early exit for
 //! quartics that surely have no real root.
 
-use super::{EPS, RealRoots, factor};
+use super::{EPS, RealRoots, even, factor};
 
 /// The nearest real root of `x⁴ + p x² + q x + r` in `[lo, hi]` (either end may be
 /// infinite), or `None`: the renderer's query.
 ///
 /// A quartic whose discriminant says, beyond rounding, that it has no real root returns at
-/// once (half the lines of a uniform workload). Otherwise finds the roots of both Ferrari
+/// once (half the lines of a uniform workload); an even one (`q = 0`) is solved as a
+/// quadratic in `x²`. Otherwise finds the roots of both Ferrari
 /// factors and takes the smallest one in range, without a sort and without a final Newton
 /// step: the factors' roots are already accurate to a few ε·(R + r) in absolute terms (see
 /// the solver bench's accuracy records), and near-double factors are refined on the
@@ -24,6 +25,13 @@ use super::{EPS, RealRoots, factor};
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
     if surely_no_real_root(p, q, r) {
         return None;
+    }
+    // An even quartic (a line perpendicular or parallel to the axis) is a quadratic in x²,
+    // where a tangent at the foot point is decided by a sign, not by rounding.
+    if q == 0.0 {
+        if let Some(best) = even::nearest_root(p, r, lo, hi) {
+            return best;
+        }
     }
     let f = factor::split(p, q, r);
     let (disc1, disc2) = (f.z - 4.0 * f.n1, f.z - 4.0 * f.n2);
