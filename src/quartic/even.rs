@@ -16,7 +16,7 @@
 //! point, such as any line in the plane of the top circle that touches it) is decided by the
 //! sign of `p² − 4r`, which a fused multiply-add makes exact too.
 
-use super::{RealRoots, factor::NEAR_DOUBLE};
+use super::{RealRoots, factor::NEAR_DOUBLE, nearest::in_range};
 
 /// The roots `y₁, y₂` of `y² + p y + r`, `Some(None)` when they are complex (no real
 /// `x`), or `None` for non-finite input (left to the general solver, which rejects it).
@@ -42,30 +42,22 @@ fn y_roots(p: f64, r: f64) -> Option<Option<(f64, f64)>> {
     Some(Some((y1, y2)))
 }
 
-/// The nearest real root of `x⁴ + p x² + r` in `[lo, hi]`: `Some(None)` when there is none
-/// in range, `None` for non-finite input.
+/// The nearest real root of `x⁴ + p x² + r` in `[lo, hi]`, ∞ when there is none in range,
+/// or `None` for non-finite input.
 #[inline]
-pub(super) fn nearest_root(p: f64, r: f64, lo: f64, hi: f64) -> Option<Option<f64>> {
-    let (y1, y2) = match y_roots(p, r)? {
-        Some(ys) => ys,
-        None => return Some(None),
+pub(super) fn nearest_root(p: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
+    let Some((y1, y2)) = y_roots(p, r)? else {
+        return Some(f64::INFINITY);
     };
-    // Each y ≥ 0 gives ±√y (y = 0: the double root 0). Selected, not branched: which roots
-    // are real and in range is a coin toss from ray to ray.
-    let pick = |x: f64, ok: bool| {
-        if ok && x >= lo && x <= hi {
-            x
-        } else {
-            f64::INFINITY
-        }
-    };
+    // Each y ≥ 0 gives ±√y (y = 0: the double root 0).
+    let pick = |x: f64, real: bool| in_range(x, real, lo, hi);
     let (x1, x2) = (y1.max(0.0).sqrt(), y2.max(0.0).sqrt());
-    let (ok1, ok2) = (y1 >= 0.0, y2 >= 0.0);
-    let best = pick(-x1, ok1)
-        .min(pick(x1, ok1))
-        .min(pick(-x2, ok2))
-        .min(pick(x2, ok2));
-    Some((best != f64::INFINITY).then_some(best))
+    let (real1, real2) = (y1 >= 0.0, y2 >= 0.0);
+    let best = pick(-x1, real1)
+        .min(pick(x1, real1))
+        .min(pick(-x2, real2))
+        .min(pick(x2, real2));
+    Some(best)
 }
 
 /// Every real root of `x⁴ + p x² + r`, unsorted and unpolished (a double root twice), or
@@ -95,8 +87,8 @@ mod tests {
         let mut roots = real_roots(-5.0, 4.0).unwrap();
         roots.sort();
         assert_eq!(roots.as_slice(), &[-2.0, -1.0, 1.0, 2.0]);
-        assert_eq!(nearest_root(-5.0, 4.0, -1.5, 9.0), Some(Some(-1.0)));
-        assert_eq!(nearest_root(-5.0, 4.0, 2.5, 9.0), Some(None));
+        assert_eq!(nearest_root(-5.0, 4.0, -1.5, 9.0), Some(-1.0));
+        assert_eq!(nearest_root(-5.0, 4.0, 2.5, 9.0), Some(f64::INFINITY));
     }
 
     #[test]
@@ -113,8 +105,8 @@ mod tests {
         let above = real_roots(p, -tiny).unwrap();
         assert_eq!(above.len(), 2, "y₂ < 0: only ±√2");
         // Nearest from the far left is −√2 either way; from 0 it is the tiny root or √2.
-        assert_eq!(nearest_root(p, tiny, 0.0, 9.0), Some(Some(x)));
-        assert_eq!(nearest_root(p, -tiny, 0.0, 9.0), Some(Some(2f64.sqrt())));
+        assert_eq!(nearest_root(p, tiny, 0.0, 9.0), Some(x));
+        assert_eq!(nearest_root(p, -tiny, 0.0, 9.0), Some(2f64.sqrt()));
     }
 
     #[test]
@@ -123,7 +115,7 @@ mod tests {
         assert_eq!(real_roots(1.0, 1.0), Some(RealRoots::default()));
         assert_eq!(
             nearest_root(1.0, 1.0, f64::NEG_INFINITY, f64::INFINITY),
-            Some(None)
+            Some(f64::INFINITY)
         );
     }
 
@@ -136,7 +128,10 @@ mod tests {
         // r = 1 + 2⁻⁴⁰ is above the double root: no real root.
         let tiny = 2f64.powi(-40);
         assert_eq!(real_roots(-2.0, 1.0 + tiny), Some(RealRoots::default()));
-        assert_eq!(nearest_root(-2.0, 1.0 + tiny, 0.0, 9.0), Some(None));
+        assert_eq!(
+            nearest_root(-2.0, 1.0 + tiny, 0.0, 9.0),
+            Some(f64::INFINITY)
+        );
         // p = −2(1 + 2⁻³⁰), r = 1 + 2⁻²⁹: p² = 4r + 2⁻⁵⁸ rounds to 4r, so unfused the y's
         // would merge into a double 1 + 2⁻³⁰. Fused, they are 1 + 2⁻²⁹ and exactly 1.
         let (p, r) = (-2.0 * (1.0 + 2f64.powi(-30)), 1.0 + 2f64.powi(-29));
@@ -145,7 +140,7 @@ mod tests {
         roots.sort();
         let big = (1.0 + 2f64.powi(-29)).sqrt();
         assert_eq!(roots.as_slice(), &[-big, -1.0, 1.0, big]);
-        assert_eq!(nearest_root(p, r, 0.0, 9.0), Some(Some(1.0)));
+        assert_eq!(nearest_root(p, r, 0.0, 9.0), Some(1.0));
         // x⁴: the quadruple root 0.
         assert_eq!(
             real_roots(0.0, 0.0).unwrap().as_slice(),

@@ -30,7 +30,7 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
     // where a tangent at the foot point is decided by a sign, not by rounding.
     if q == 0.0 {
         if let Some(best) = even::nearest_root(p, r, lo, hi) {
-            return best;
+            return found(best);
         }
     }
     let f = factor::split(p, q, r);
@@ -45,13 +45,7 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
         // `(−b ± √disc)/2` is accurate to ε·(|b| + √disc) in absolute terms, which is what
         // a hit point needs; the division-based stable form only buys relative accuracy
         // for roots near 0, and costs a division on the critical path.
-        let pick = |x: f64, ok: bool| {
-            if ok && x >= lo && x <= hi {
-                x
-            } else {
-                f64::INFINITY
-            }
-        };
+        let pick = |x: f64, real: bool| in_range(x, real, lo, hi);
         let (s1, s2) = (disc1.max(0.0).sqrt(), disc2.max(0.0).sqrt());
         let (ok1, ok2) = (disc1 > 0.0, disc2 > 0.0);
         let half_m = 0.5 * f.m;
@@ -65,6 +59,24 @@ pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Optio
         let c = [1.0, 0.0, p, q, r];
         nearest_of(&factor::roots_of_split(&f, &c, 0.0, near), lo, hi)
     };
+    found(best)
+}
+
+/// `x` if it is a real root (`real`) in `[lo, hi]`, else ∞: a candidate for the nearest
+/// root, selected rather than branched on, since which roots qualify is a coin toss from
+/// ray to ray.
+#[inline(always)]
+pub(super) fn in_range(x: f64, real: bool, lo: f64, hi: f64) -> f64 {
+    if real && x >= lo && x <= hi {
+        x
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The nearest root found (∞: none).
+#[inline(always)]
+fn found(best: f64) -> Option<f64> {
     (best != f64::INFINITY).then_some(best)
 }
 
@@ -94,7 +106,6 @@ fn nearest_of(roots: &RealRoots, lo: f64, hi: f64) -> f64 {
     roots
         .as_slice()
         .iter()
-        .copied()
-        .filter(|&x| x >= lo && x <= hi)
+        .map(|&x| in_range(x, true, lo, hi))
         .fold(f64::INFINITY, f64::min)
 }
