@@ -109,3 +109,8 @@ pub fn intersect_culled<C: Cull>(
         None
     }
 }
+
+/// The README's examples, compiled and run by `cargo test --doc`.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeExamples;
