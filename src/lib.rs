@@ -60,6 +60,10 @@
 
 #![warn(missing_docs)]
 
+/// The glam this API speaks (0.34): a renderer on another glam version converts through
+/// `torus_cull::glam::Vec3` instead of meeting "multiple different versions of crate glam".
+pub use glam;
+
 pub mod batch;
 pub mod cull;
 mod geometry;
