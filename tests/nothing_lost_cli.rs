@@ -484,3 +484,88 @@ fn help_texts_state_the_real_defaults() {
     assert!(!time.contains("six") && time.contains("ten"), "{time}");
     assert!(time.contains("<workload>-time.json"), "{time}");
 }
+
+/// With stderr not a terminal (a log, a CI job) `run` and `time` say what they are doing
+/// as they go; their files record cores, threads and OS, and `time`'s its sizes; `plot`
+/// draws a `time` file's paired ratios with their intervals, titled with the workload and
+/// commit, and says so when a file has nothing to plot.
+#[test]
+fn progress_meta_and_plots_of_time_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let run_json = dir.path().join("r.json");
+    let o = torus_cull(&[
+        "run",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--threads",
+        "2",
+        "--no-plots",
+        "--out",
+        run_json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("run tiny") && stderr(&o).contains("800/800 rays (100%)"),
+        "{}",
+        stderr(&o)
+    );
+    let r = torus_cull::harness::results::Results::load(&run_json).unwrap();
+    assert_eq!(r.meta.threads, Some(2));
+    assert!(r.meta.cores.is_some_and(|c| c >= 1));
+    assert!(
+        r.meta
+            .os
+            .as_deref()
+            .is_some_and(|os| os.starts_with(std::env::consts::OS))
+    );
+
+    let time_json = dir.path().join("t.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--seconds",
+        "0.5",
+        "--out",
+        time_json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("time tiny") && stderr(&o).contains("(100%)"),
+        "{}",
+        stderr(&o)
+    );
+    let t = torus_cull::harness::results::Results::load(&time_json).unwrap();
+    let sizes = t.meta.sizes.clone().expect("time records its sizes");
+    assert_eq!(sizes.timing_rays, Some(200));
+    assert_eq!(sizes.timed_nu, vec![2.0, 8.0]);
+    assert_eq!(t.meta.threads, Some(1));
+
+    let o = torus_cull(&["plot", time_json.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg");
+    let text = std::fs::read_to_string(&svg).expect("a ratio chart");
+    assert!(
+        text.contains("paired ratio [95% CI]") && text.contains("tiny, "),
+        "{svg:?}"
+    );
+    let charts = std::fs::read_dir(dir.path())
+        .unwrap()
+        .filter(|e| {
+            let name = e.as_ref().unwrap().file_name();
+            let name = name.to_string_lossy();
+            name.starts_with("t-ratio-") && name.ends_with(".svg")
+        })
+        .count();
+    // case × metric × reference.
+    assert_eq!(charts, 2 * 2 * 2);
+
+    let empty = dir.path().join("empty.json");
+    let mut e = t.clone();
+    e.ratio.clear();
+    e.save(&empty).unwrap();
+    let o = torus_cull(&["plot", empty.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nothing to plot"), "{}", stderr(&o));
+}

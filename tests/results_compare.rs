@@ -29,6 +29,9 @@ fn sample() -> Results {
             preset: None,
             sizes: None,
             isa: None,
+            cores: None,
+            threads: None,
+            os: None,
         },
         rejection: vec![
             RejectionRecord {

@@ -17,6 +17,13 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
     let written = torus_cull::harness::plot::plot_results(&results, &dir, &stem)?;
+    if written.is_empty() {
+        return Err(format!(
+            "{}: nothing to plot (no rejection, timing, bvh or ratio records)",
+            file.display()
+        )
+        .into());
+    }
     for p in &written {
         outln!("wrote {}", p.display())?;
     }

@@ -33,14 +33,23 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
     let c = image.counts;
     let total = (size * size) as f64;
     outln!("wrote {} and {}", out.display(), map_path.display())?;
-    for (name, n) in [
-        ("hit", c.hit),
-        ("reached the quartic and missed (skala)", c.quartic_missed),
-        ("rejected only by skala", c.skala_only),
-        ("rejected by cychosz", c.cychosz),
-        ("entered no box", c.no_box),
+    // The cull map's key: its colour, what it means, how many pixels.
+    outln!("cull map key (colour, meaning, pixels):")?;
+    for (colour, name, n) in [
+        ("light grey", "hit", c.hit),
+        (
+            "orange",
+            "reached the quartic and missed (skala)",
+            c.quartic_missed,
+        ),
+        ("green", "rejected only by skala", c.skala_only),
+        ("blue", "rejected by cychosz", c.cychosz),
+        ("near black", "entered no box", c.no_box),
     ] {
-        outln!("  {name:<40} {n:>8} ({:.1}%)", 100.0 * n as f64 / total)?;
+        outln!(
+            "  {colour:<12} {name:<40} {n:>8} ({:.1}%)",
+            100.0 * n as f64 / total
+        )?;
     }
     Ok(ExitCode::SUCCESS)
 }

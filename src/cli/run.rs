@@ -59,12 +59,19 @@ pub fn run(
             .expect("valid template")
             .progress_chars("=> "),
     );
-    bar.set_message(format!("{}: {} case x nu", workload.name, units));
-    let (records, false_rejects) =
-        measure::rejection_sweep(&workload, &culls, threads, &|n| bar.inc(n))?;
+    let message = format!("{}: {} case x nu", workload.name, units);
+    bar.set_message(message.clone());
+    let heartbeat = crate::Heartbeat::new(format!("run {message}"), "rays");
+    let total = units * workload.rays as u64;
+    heartbeat.update(0, total);
+    let (records, false_rejects) = measure::rejection_sweep(&workload, &culls, threads, &|n| {
+        bar.inc(n);
+        heartbeat.update(bar.position(), total);
+    })?;
     bar.finish_and_clear();
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
+    results.meta.threads = Some(threads as u64);
     results.rejection = records;
     out!("{}", report::miss_capture_tables(&results))?;
     // The project's central claim, stated every time. Each ray is counted once, with the

@@ -120,18 +120,31 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             .expect("valid template")
             .progress_chars("=> "),
     );
-    bar.set_message(format!(
-        "{}: {units} case x nu, {batch} rays each",
-        workload.name
-    ));
+    let message = format!("{}: {units} case x nu, {batch} rays each", workload.name);
+    bar.set_message(message.clone());
+    let heartbeat = crate::Heartbeat::new(format!("time {message}"), "visits");
     let records = time_workload(&workload, &nus, &culls, &options, &mut |done, all| {
         bar.set_length(all as u64);
         bar.set_position(done as u64);
+        heartbeat.update(done as u64, all as u64);
     })?;
     bar.finish_and_clear();
 
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
+    // The timings run on one thread; the sizes say what was timed, so that compare can
+    // tell files of other batches apart.
+    results.meta.threads = Some(1);
+    results.meta.sizes = Some(results::Sizes {
+        rejection_rays: None,
+        timing_rays: Some(batch as u64),
+        timed_nu: nus.clone(),
+        warm_up_s: None,
+        measurement_s: None,
+        samples: None,
+        bvh: None,
+        bench_args: Vec::new(),
+    });
     results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
     out!("{}", torus_cull::harness::report::ratio_tables(&results))?;
     results.save(&path)?;
