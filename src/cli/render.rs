@@ -29,7 +29,8 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
     }
     let image = torus_cull::harness::render::render(&scene, size);
     torus_cull::harness::render::write_png(out, size, &image.shaded)?;
-    torus_cull::harness::render::write_png(&map_path, size, &image.cull_map)?;
+    let (map, height) = torus_cull::harness::render::cull_map_with_legend(&image.cull_map, size);
+    torus_cull::harness::render::write_png_rect(&map_path, size, height, &map)?;
     let c = image.counts;
     let total = (size * size) as f64;
     outln!("wrote {} and {}", out.display(), map_path.display())?;
