@@ -71,6 +71,10 @@ check_error TORUS_CULL_WORKLOAD=/no/such.json 'TORUS_CULL_WORKLOAD: workload /no
 printf '{"name":"w","seed":1,"cases":["hole"],"nu":[0.5],"rays":10}' >"$tmp/bad.json"
 check_error TORUS_CULL_WORKLOAD="$tmp/bad.json" 'field `nu[0]`'
 check_error TORUS_CULL_RESULTS="$tmp/complete.json/x.json" 'TORUS_CULL_RESULTS'
+# A directory, or a file in a directory that does not exist: refused before the run, not
+# after it (no mkdir -p).
+check_error TORUS_CULL_RESULTS="$tmp" 'is a directory'
+check_error TORUS_CULL_RESULTS="$tmp/no/such/r.json" 'does not exist'
 
 echo "-- default names: a smoke bench and run never share a file"
 before=$(ls results)

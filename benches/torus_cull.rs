@@ -199,15 +199,27 @@ fn bench() -> Result<ExitCode, String> {
             return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
         }
         Some(p) => PathBuf::from(p),
-        None => torus_cull::harness::results::default_path(
-            Path::new("results"),
-            &config.file_suffix(&workload),
-        ),
+        None => {
+            let out = torus_cull::harness::results::default_path(
+                Path::new("results"),
+                &config.file_suffix(&workload),
+            );
+            if mode == Mode::Benchmark {
+                torus_cull::harness::output::create_default_dir(&out)
+                    .map_err(|e| format!("{}: {e}", out.display()))?;
+            }
+            out
+        }
     };
     if mode == Mode::Benchmark {
-        // Before the measurements, not after them.
+        // Before the measurements, not after them: a directory, a missing parent or the
+        // workload file itself is refused here.
         torus_cull::harness::output::check_writable(&out)
             .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", out.display()))?;
+        torus_cull::harness::output::check_not_input(
+            ("TORUS_CULL_RESULTS", &out),
+            &[("TORUS_CULL_WORKLOAD", &workload_path)],
+        )?;
     }
     let started = SystemTime::now();
     let timed_nus = config.timed_nus(&workload);

@@ -79,7 +79,7 @@ pub use cull::{
     ThickCylinderCull,
 };
 pub use geometry::{
-    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, RayError, Torus,
+    LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, RayError, Torus,
     TorusError,
 };
 pub use intersect::{Hit, intersect};

@@ -29,6 +29,9 @@ fn sample() -> Results {
             preset: None,
             sizes: None,
             isa: None,
+            cores: None,
+            threads: None,
+            os: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -300,4 +303,62 @@ fn worse_of(mut r: Results) -> Results {
     r.rejection[0].miss_capture = Some(0.5);
     r.rejection[0].rejected = 500;
     r
+}
+
+/// Issue 17: a BVH Mrays/s figure is one criterion median with no interval, so a change
+/// (−18.5 % on unchanged code once) is shown as "no verdict", never a regression; a changed
+/// hit count still is.
+#[test]
+fn bvh_throughput_without_an_interval_gets_no_verdict() {
+    let old = sample();
+    let mut slower = sample();
+    slower.bvh[0].mrays_per_s = old.bvh[0].mrays_per_s * 0.815;
+    let r = compare(&old, &slower, 0.1);
+    assert_eq!(r.regressions(), 0, "{:?}", r.rows);
+    let row = r.rows.iter().find(|r| r.section == "bvh").unwrap();
+    assert!(
+        row.flags
+            .iter()
+            .any(|f| f.contains("no verdict (no interval)")),
+        "{row:?}"
+    );
+    slower.bvh[0].hits += 1;
+    assert_eq!(compare(&old, &slower, 0.1).regressions(), 1);
+}
+
+/// Issue 17: a new file that lost records fails the comparison (exit 1, naming the flag
+/// that only warns); with `--allow-missing` it passes with a warning. Records only in the
+/// new file are fine.
+#[test]
+fn records_missing_from_the_new_file_fail_unless_allowed() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    sample().save(&a).unwrap();
+    let mut fewer = sample();
+    fewer.rejection.pop();
+    fewer.bvh.clear();
+    fewer.save(&b).unwrap();
+    let (code, text) = cli_compare(&a, &b);
+    assert_eq!(code, 1, "{text}");
+    assert!(
+        text.contains("2 records of")
+            && text.contains("missing")
+            && text.contains("--allow-missing"),
+        "{text}"
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args([
+            "compare",
+            a.to_str().unwrap(),
+            b.to_str().unwrap(),
+            "--allow-missing",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(err.contains("warning") && err.contains("missing"), "{err}");
+    // The other way round (new records) is no failure.
+    let (code, text) = cli_compare(&b, &a);
+    assert_eq!(code, 0, "{text}");
 }

@@ -127,7 +127,7 @@ fn bad_arguments_exit_2_naming_the_flag_and_the_allowed_values() {
     let cases: [(&[&str], &[&str]); 9] = [
         (
             &["--culls", "bogus"],
-            &["--culls", "unknown cull 'bogus'", "skala"],
+            &["--culls", "'bogus' is not a timed cull", "skala"],
         ),
         (
             &["--culls", "skala,cychosz_printed"],

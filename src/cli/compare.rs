@@ -1,12 +1,19 @@
 //! `torus-cull compare OLD NEW`: the diff of two results files, exit 1 on a regression.
 
 use super::CliResult;
+use crate::out;
 use std::path::Path;
 use std::process::ExitCode;
 use torus_cull::harness::results::Results;
 
 /// Runs `compare`.
-pub fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> CliResult {
+pub fn compare(
+    old: &Path,
+    new: &Path,
+    threshold: f64,
+    only_changes: bool,
+    allow_missing: bool,
+) -> CliResult {
     if !(threshold.is_finite() && threshold >= 0.0) {
         return Err(
             format!("--threshold {threshold} is invalid (allowed: a percentage >= 0)").into(),
@@ -20,10 +27,10 @@ pub fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> Cl
         p.file_stem()
             .map_or("?".into(), |s| s.to_string_lossy().into_owned())
     };
-    print!(
+    out!(
         "{}",
         torus_cull::harness::compare::render(&report, &name(old), &name(new), only_changes)
-    );
+    )?;
     if report.rows.is_empty() {
         // A comparison of nothing must not pass a CI gate.
         return Err(format!(
@@ -33,7 +40,22 @@ pub fn compare(old: &Path, new: &Path, threshold: f64, only_changes: bool) -> Cl
         )
         .into());
     }
-    Ok(if report.regressions() > 0 {
+    let missing = report.missing();
+    let lost = missing > 0 && !allow_missing;
+    if missing > 0 {
+        eprintln!(
+            "{}: {missing} records of {} are missing from {} (listed above as 'only in'){}",
+            if lost { "error" } else { "warning" },
+            old.display(),
+            new.display(),
+            if lost {
+                "; pass --allow-missing to only warn"
+            } else {
+                ""
+            }
+        );
+    }
+    Ok(if report.regressions() > 0 || lost {
         ExitCode::from(1)
     } else {
         ExitCode::SUCCESS

@@ -13,10 +13,18 @@ pub fn eval(
     out: Option<&std::path::Path>,
 ) -> CliResult {
     let name = rays.display().to_string();
+    if let Some(out) = out {
+        if name != "-" {
+            torus_cull::harness::output::check_not_input(("--out", out), &[("--rays", rays)])?;
+        }
+    }
     let input: Box<dyn std::io::BufRead> = if name == "-" {
         Box::new(std::io::stdin().lock())
     } else {
         let file = File::open(rays).map_err(|e| format!("--rays {name}: {e}"))?;
+        if file.metadata().is_ok_and(|m| m.is_dir()) {
+            return Err(format!("--rays {name}: is a directory (expected a CSV file)").into());
+        }
         Box::new(BufReader::new(file))
     };
     let result: Result<usize, Box<dyn std::error::Error>> = match out {
@@ -71,6 +79,30 @@ impl<W> Named<W> {
     fn name(&self, e: std::io::Error) -> std::io::Error {
         std::io::Error::new(e.kind(), format!("{}: {e}", self.1))
     }
+}
+
+/// Parses `--major`/`--minor`: a number that is finite and non-zero in f32 when it is so
+/// as typed, so that the error names the value typed, not what f32 made of it (`1e300`
+/// is not `inf`, `1e-300` is not `0`).
+pub fn parse_radius(s: &str) -> Result<f32, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a number"))?;
+    let f = v as f32;
+    if v.is_finite() && !f.is_finite() {
+        return Err(format!(
+            "{s} is too large for f32 (allowed: |value| <= {:e})",
+            f32::MAX
+        ));
+    }
+    if v != 0.0 && (f == 0.0 || !f.is_normal()) {
+        return Err(format!(
+            "{s} is too small for f32 (allowed: |value| >= {:e})",
+            f32::MIN_POSITIVE
+        ));
+    }
+    Ok(f)
 }
 
 /// Whether `e` is a write to a pipe whose reader has gone.

@@ -1,8 +1,10 @@
 //! The `torus-cull` command line.
 //!
 //! Exit codes: 0 fine; 1 the measurement found a problem (a false reject in `run`, a
-//! regression in `compare`); 2 the input or environment is bad (the message says which
-//! file and field).
+//! regression or records missing from the new file in `compare`); 2 the input or
+//! environment is bad (the message says which file and field). A closed stdout (`| head`)
+//! is not an error: output stops, the files are still written, and the exit code is the
+//! command's own.
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -33,7 +35,9 @@ enum Command {
         /// Workload file.
         #[arg(long, default_value = "workloads/default.json")]
         workload: PathBuf,
-        /// Results JSON (default: results/<short commit>[-dirty].json).
+        /// Results JSON (default: results/<short commit>[-dirty]-<workload>-run.json, or
+        /// …-run.json for the workload named `default`). Its directory must exist; the
+        /// plots go next to it.
         #[arg(long)]
         out: Option<PathBuf>,
         /// Worker threads (default: available cores).
@@ -50,7 +54,8 @@ enum Command {
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
     /// 95% intervals), in about 30 s.
     Time(time::TimeArgs),
-    /// Diff two results files; exits 1 on a regression (for CI gates).
+    /// Diff two results files; exits 1 on a regression or when records of OLD are
+    /// missing from NEW, 2 on unusable input (for CI gates).
     Compare {
         /// The older results JSON.
         old: PathBuf,
@@ -62,6 +67,9 @@ enum Command {
         /// Show only records with a flag.
         #[arg(long)]
         only_changes: bool,
+        /// Records of OLD missing from NEW only warn instead of failing (exit 1).
+        #[arg(long)]
+        allow_missing: bool,
     },
     /// Render a many-torus scene and its cull map (PNG).
     Render {
@@ -95,10 +103,10 @@ enum Command {
     /// Check every cull and the oracle on your own rays (CSV in the torus frame).
     Eval {
         /// Major radius R.
-        #[arg(long = "major")]
+        #[arg(long = "major", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         major: f32,
         /// Minor radius r (R > r > 0).
-        #[arg(long = "minor")]
+        #[arg(long = "minor", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         minor: f32,
         /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin).
         #[arg(long)]
@@ -135,7 +143,8 @@ fn main() -> ExitCode {
             new,
             threshold,
             only_changes,
-        } => compare::compare(&old, &new, threshold, only_changes),
+            allow_missing,
+        } => compare::compare(&old, &new, threshold, only_changes, allow_missing),
         Command::Eval {
             major,
             minor,
@@ -153,6 +162,102 @@ fn main() -> ExitCode {
 }
 
 type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
+
+/// Progress where the bar cannot be seen: with stderr not a terminal (a CI log, `2> log`)
+/// indicatif draws nothing, so this prints a line when the work starts, then at most one
+/// every [`Heartbeat::EVERY`], and one at the end.
+pub(crate) struct Heartbeat {
+    label: String,
+    unit: &'static str,
+    start: std::time::Instant,
+    last: std::sync::Mutex<Option<std::time::Instant>>,
+    active: bool,
+}
+
+impl Heartbeat {
+    /// The longest silence between two lines.
+    const EVERY: std::time::Duration = std::time::Duration::from_secs(5);
+
+    /// Active only when stderr is not a terminal.
+    pub(crate) fn new(label: String, unit: &'static str) -> Heartbeat {
+        use std::io::IsTerminal;
+        Heartbeat {
+            label,
+            unit,
+            start: std::time::Instant::now(),
+            last: std::sync::Mutex::new(None),
+            active: !std::io::stderr().is_terminal(),
+        }
+    }
+
+    /// `done` of `total` units finished.
+    pub(crate) fn update(&self, done: u64, total: u64) {
+        if !self.active {
+            return;
+        }
+        let now = std::time::Instant::now();
+        let Ok(mut last) = self.last.lock() else {
+            return;
+        };
+        let due = last.is_none_or(|t| now - t >= Self::EVERY) || (total > 0 && done >= total);
+        if due && *last != Some(now) {
+            let pct = if total > 0 {
+                100.0 * done as f64 / total as f64
+            } else {
+                0.0
+            };
+            eprintln!(
+                "{}: {done}/{total} {} ({pct:.0}%), {:.0} s",
+                self.label,
+                self.unit,
+                (now - self.start).as_secs_f64()
+            );
+            *last = Some(now);
+        }
+    }
+}
+
+/// Set once stdout's reader has gone (`torus-cull run … | head -1`): later output is
+/// dropped, and the command finishes its files and exits as it would have.
+static STDOUT_CLOSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Writes to stdout like `print!`, but a closed pipe is not an error (nor a panic): the
+/// output is dropped from then on. Other write errors (`/dev/full`) are returned, naming
+/// stdout.
+fn write_stdout(args: std::fmt::Arguments) -> std::io::Result<()> {
+    use std::io::Write;
+    use std::sync::atomic::Ordering;
+    if STDOUT_CLOSED.load(Ordering::Relaxed) {
+        return Ok(());
+    }
+    let mut out = std::io::stdout().lock();
+    match out.write_fmt(args).and_then(|()| out.flush()) {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+            STDOUT_CLOSED.store(true, Ordering::Relaxed);
+            Ok(())
+        }
+        Err(e) => Err(std::io::Error::new(e.kind(), format!("stdout: {e}"))),
+        Ok(()) => Ok(()),
+    }
+}
+
+/// `print!` through [`write_stdout`]: `out!(...)?`.
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::write_stdout(format_args!($($arg)*))
+    };
+}
+
+/// `println!` through [`write_stdout`]: `outln!(...)?`.
+macro_rules! outln {
+    () => {
+        $crate::write_stdout(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::write_stdout(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+pub(crate) use {out, outln};
 
 /// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, then die of
 /// the signal as if there were no handler (so the caller sees the usual status).

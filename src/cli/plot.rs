@@ -1,6 +1,7 @@
 //! `torus-cull plot`: the SVG figures of a results file.
 
 use super::CliResult;
+use crate::outln;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::harness::results::Results;
@@ -16,8 +17,15 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
     let written = torus_cull::harness::plot::plot_results(&results, &dir, &stem)?;
+    if written.is_empty() {
+        return Err(format!(
+            "{}: nothing to plot (no rejection, timing, bvh or ratio records)",
+            file.display()
+        )
+        .into());
+    }
     for p in &written {
-        println!("wrote {}", p.display());
+        outln!("wrote {}", p.display())?;
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -1,6 +1,7 @@
 //! `torus-cull render`: a scene's picture and cull map (PNG).
 
 use super::CliResult;
+use crate::outln;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -16,25 +17,40 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
     }
     let scene = torus_cull::harness::scene::Scene::build(kind, nu, tori, seed)
         .map_err(|e| format!("--nu: {e}"))?;
-    let image = torus_cull::harness::render::render(&scene, size);
     let map_path = out.with_file_name(format!(
         "{}-cullmap.png",
         out.file_stem()
             .map_or("render".into(), |s| s.to_string_lossy())
     ));
+    // Both outputs are checked before the picture is drawn.
+    for path in [out, map_path.as_path()] {
+        torus_cull::harness::output::check_writable(path)
+            .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    }
+    let image = torus_cull::harness::render::render(&scene, size);
     torus_cull::harness::render::write_png(out, size, &image.shaded)?;
-    torus_cull::harness::render::write_png(&map_path, size, &image.cull_map)?;
+    let (map, height) = torus_cull::harness::render::cull_map_with_legend(&image.cull_map, size);
+    torus_cull::harness::render::write_png_rect(&map_path, size, height, &map)?;
     let c = image.counts;
     let total = (size * size) as f64;
-    println!("wrote {} and {}", out.display(), map_path.display());
-    for (name, n) in [
-        ("hit", c.hit),
-        ("reached the quartic and missed (skala)", c.quartic_missed),
-        ("rejected only by skala", c.skala_only),
-        ("rejected by cychosz", c.cychosz),
-        ("entered no box", c.no_box),
+    outln!("wrote {} and {}", out.display(), map_path.display())?;
+    // The cull map's key: its colour, what it means, how many pixels.
+    outln!("cull map key (colour, meaning, pixels):")?;
+    for (colour, name, n) in [
+        ("light grey", "hit", c.hit),
+        (
+            "orange",
+            "reached the quartic and missed (skala)",
+            c.quartic_missed,
+        ),
+        ("green", "rejected only by skala", c.skala_only),
+        ("blue", "rejected by cychosz", c.cychosz),
+        ("near black", "entered no box", c.no_box),
     ] {
-        println!("  {name:<40} {n:>8} ({:.1}%)", 100.0 * n as f64 / total);
+        outln!(
+            "  {colour:<12} {name:<40} {n:>8} ({:.1}%)",
+            100.0 * n as f64 / total
+        )?;
     }
     Ok(ExitCode::SUCCESS)
 }

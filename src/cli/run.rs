@@ -1,10 +1,12 @@
 //! `torus-cull run`: the rejection sweep of a workload, its tables, JSON and plots.
 
 use super::CliResult;
+use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::harness::measure::{self, CountedCull};
+use torus_cull::harness::output;
 use torus_cull::harness::report;
 use torus_cull::harness::results::{self, Results};
 use torus_cull::harness::workload::spec::Workload;
@@ -17,7 +19,8 @@ pub fn run(
     no_plots: bool,
     culls: &[String],
 ) -> CliResult {
-    let workload = Workload::load(workload)?;
+    let workload_path = workload;
+    let workload = Workload::load(workload_path)?;
     let culls: Vec<CountedCull> = if culls.is_empty() {
         torus_cull::CullKind::TIMED.map(CountedCull::Timed).to_vec()
     } else {
@@ -34,30 +37,43 @@ pub fn run(
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
     // `run` has its own default name, so that it never overwrites `cargo bench`'s file.
-    let path = out.unwrap_or_else(|| {
-        let suffix = match workload.name.as_str() {
-            "default" => "-run".to_string(),
-            other => format!("-{other}-run"),
-        };
-        results::default_path(Path::new("results"), &suffix)
-    });
+    let path = match out {
+        Some(path) => path,
+        None => {
+            let suffix = match workload.name.as_str() {
+                "default" => "-run".to_string(),
+                other => format!("-{other}-run"),
+            };
+            let path = results::default_path(Path::new("results"), &suffix);
+            output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
     // Before the sweep, not after it: an unwritable --out must not cost the whole run.
-    torus_cull::harness::output::check_writable(&path)
-        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
     let units = measure::units(&workload).len() as u64;
     let bar = ProgressBar::new(units * workload.rays as u64).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rays ({eta})")
             .expect("valid template")
             .progress_chars("=> "),
     );
-    bar.set_message(format!("{}: {} case x nu", workload.name, units));
-    let (records, false_rejects) =
-        measure::rejection_sweep(&workload, &culls, threads, &|n| bar.inc(n))?;
+    let message = format!("{}: {} case x nu", workload.name, units);
+    bar.set_message(message.clone());
+    let heartbeat = crate::Heartbeat::new(format!("run {message}"), "rays");
+    let total = units * workload.rays as u64;
+    heartbeat.update(0, total);
+    let (records, false_rejects) = measure::rejection_sweep(&workload, &culls, threads, &|n| {
+        bar.inc(n);
+        heartbeat.update(bar.position(), total);
+    })?;
     bar.finish_and_clear();
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
+    results.meta.threads = Some(threads as u64);
     results.rejection = records;
-    print!("{}", report::miss_capture_tables(&results));
+    out!("{}", report::miss_capture_tables(&results))?;
     // The project's central claim, stated every time. Each ray is counted once, with the
     // first cull's records: every cull sees the same rays.
     let of_one_cull = || {
@@ -69,13 +85,13 @@ pub fn run(
     let rays: u64 = of_one_cull().map(|r| r.rays).sum();
     let ambiguous: u64 = of_one_cull().map(|r| r.ambiguous).sum();
     let rejected_hits: u64 = results.rejection.iter().map(|r| r.false_rejects).sum();
-    println!(
+    outln!(
         "{rejected_hits} false rejects in {rays} rays (each checked by {} culls; {ambiguous} \
          rays the oracle calls ambiguous are not counted)",
         culls.len()
-    );
+    )?;
     results.save(&path)?;
-    println!("wrote {}", path.display());
+    outln!("wrote {}", path.display())?;
     if !no_plots {
         let dir = path
             .parent()
@@ -84,11 +100,11 @@ pub fn run(
             .file_stem()
             .map_or("results".into(), |s| s.to_string_lossy());
         let written = torus_cull::harness::plot::plot_results(&results, &dir, &stem)?;
-        println!(
+        outln!(
             "wrote {} plots to {}/{stem}-*.svg",
             written.len(),
             dir.display()
-        );
+        )?;
     }
     if !false_rejects.is_empty() {
         for f in false_rejects.iter().take(20) {

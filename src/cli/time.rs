@@ -1,6 +1,7 @@
 //! `torus-cull time`: paired, interleaved timing ratios of the culls on a workload, in
 //! about half a minute, written as the `ratio` section of a results file.
 
+use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -23,8 +24,9 @@ pub struct TimeArgs {
     /// Workload file.
     #[arg(long, default_value = "workloads/quick.json")]
     workload: PathBuf,
-    /// Culls to time, comma-separated (default: the six timed culls). The references
-    /// cychosz and none are timed in any case.
+    /// Culls to time, comma-separated (default: all ten timed culls: none, sphere, aabb,
+    /// cychosz, thick_cylinder, skala, ellipsoid, quadric, discriminant,
+    /// discriminant_f64). The references cychosz and none are timed in any case.
     #[arg(long, value_delimiter = ',')]
     culls: Vec<String>,
     /// ν values to time, comma-separated, each one of the workload's (default: all).
@@ -37,7 +39,8 @@ pub struct TimeArgs {
     /// workload's rays if fewer).
     #[arg(long)]
     batch: Option<usize>,
-    /// Results JSON (default: results/<short commit>[-dirty]-time.json).
+    /// Results JSON (default: results/<short commit>[-dirty]-<workload>-time.json, or
+    /// …-time.json for the workload named `default`). Its directory must exist.
     #[arg(long)]
     out: Option<PathBuf>,
     /// `scalar`: one ray at a time (`total_ns`, `cull_ns`); `both`: also the batch mode
@@ -89,37 +92,63 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         )
         .into());
     }
-    let path = args
-        .out
-        .unwrap_or_else(|| results::default_path(Path::new("results"), "-time"));
+    let path = match args.out {
+        Some(path) => path,
+        None => {
+            let path = results::default_path(Path::new("results"), &time_suffix(&workload.name));
+            torus_cull::harness::output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
     check_writable(&path)?;
+    torus_cull::harness::output::check_not_input(
+        ("--out", &path),
+        &[("--workload", &args.workload)],
+    )?;
 
+    // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
+    // only `--mode both` uses it.
+    let dispatch = Dispatch::from_env()?;
     let units = workload.cases.len() * nus.len();
     let mut options = PairedOptions::total(args.seconds, batch);
     if args.mode == Mode::Both {
-        options.batch_isa = Some(Dispatch::from_env()?.isa());
+        options.batch_isa = Some(dispatch.isa());
     }
     let bar = ProgressBar::new(0).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} visits ({eta})")
             .expect("valid template")
             .progress_chars("=> "),
     );
-    bar.set_message(format!(
-        "{}: {units} case x nu, {batch} rays each",
-        workload.name
-    ));
+    let message = format!("{}: {units} case x nu, {batch} rays each", workload.name);
+    bar.set_message(message.clone());
+    let heartbeat = crate::Heartbeat::new(format!("time {message}"), "visits");
     let records = time_workload(&workload, &nus, &culls, &options, &mut |done, all| {
         bar.set_length(all as u64);
         bar.set_position(done as u64);
+        heartbeat.update(done as u64, all as u64);
     })?;
     bar.finish_and_clear();
 
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
+    // The timings run on one thread; the sizes say what was timed, so that compare can
+    // tell files of other batches apart.
+    results.meta.threads = Some(1);
+    results.meta.sizes = Some(results::Sizes {
+        rejection_rays: None,
+        timing_rays: Some(batch as u64),
+        timed_nu: nus.clone(),
+        warm_up_s: None,
+        measurement_s: None,
+        samples: None,
+        bvh: None,
+        bench_args: Vec::new(),
+    });
     results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
-    print!("{}", torus_cull::harness::report::ratio_tables(&results));
+    out!("{}", torus_cull::harness::report::ratio_tables(&results))?;
     results.save(&path)?;
-    println!("wrote {}", path.display());
+    outln!("wrote {}", path.display())?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -138,7 +167,14 @@ fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
     };
     let mut culls = Vec::new();
     for name in names {
-        let kind = match name.trim().parse().map_err(|e| format!("--culls: {e}"))? {
+        let parsed = name.trim().parse().map_err(|_| {
+            format!(
+                "--culls: '{}' is not a timed cull (allowed: {})",
+                name.trim(),
+                allowed()
+            )
+        })?;
+        let kind = match parsed {
             CountedCull::Timed(kind) => kind,
             CountedCull::Printed(printed) => {
                 return Err(format!(
@@ -177,6 +213,15 @@ fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>,
         }
     }
     Ok(nus)
+}
+
+/// The default file name's suffix: `-time` for the `default` workload, `-<name>-time` for
+/// any other (as `run` names its files), so that timing two workloads keeps both files.
+fn time_suffix(workload: &str) -> String {
+    match workload {
+        "default" => "-time".to_string(),
+        other => format!("-{other}-time"),
+    }
 }
 
 /// Fails now, not after the measurement, if `path` cannot be written the way every output

@@ -5,5 +5,5 @@ mod torus;
 
 pub use ray::{Ray, RayError};
 pub use torus::{
-    LocalLine, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+    LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
 };

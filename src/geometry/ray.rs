@@ -41,12 +41,22 @@ impl fmt::Display for RayError {
         match self {
             RayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
             RayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
-            RayError::ZeroDirection(d) => {
+            RayError::ZeroDirection(d) if *d == Vec3::ZERO => {
                 write!(
                     f,
                     "ray direction {d} is zero (|d|² must be a normal f32 > 0)"
                 )
             }
+            RayError::ZeroDirection(d) => write!(
+                f,
+                "ray direction [{:e}, {:e}, {:e}] is too short: |d|² = {:e} is below the \
+                 smallest normal f32 {:e} (scale it up: only its direction matters)",
+                d.x,
+                d.y,
+                d.z,
+                (d.as_dvec3()).length_squared(),
+                f32::MIN_POSITIVE
+            ),
             RayError::HugeDirection(d) => write!(
                 f,
                 "ray direction {d} is too long (|d|² must be finite in f32: |d| < 1.8e19)"

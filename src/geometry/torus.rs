@@ -16,6 +16,12 @@ use std::fmt;
 /// which the oracle and the hole test rely on, would fail silently. [`Torus::new`]
 /// returns [`TorusError::NoHole`] instead.
 ///
+/// **ν is limited to [`MAX_NU`] (1000).** The tests check the exact intersection against
+/// the oracle, and every cull's conservativeness, up to ν = 1000 and no further; far
+/// thinner tubes are not only untested but known wrong (at ν ≈ 3.3·10⁸ `intersect`
+/// reported a hit half a tube radius outside the surface). [`Torus::new`] returns
+/// [`TorusError::TooThin`] above it.
+///
 /// **The size is limited to [`MIN_OUTER_RADIUS`] ≤ R + r ≤ [`MAX_OUTER_RADIUS`]**
 /// (10⁻¹⁵ to 10¹⁵). The culls run in f32 and square lengths and products of lengths:
 /// past about 10¹⁹ the squares overflow (`cychosz` and `skala` then reject real hits) and
@@ -62,6 +68,14 @@ pub enum TorusError {
         /// r as given.
         minor_radius: f32,
     },
+    /// ν = R/r > [`MAX_NU`]: a tube thinner than the tests prove the intersection and
+    /// the culls right for.
+    TooThin {
+        /// R as given.
+        major_radius: f32,
+        /// r as given.
+        minor_radius: f32,
+    },
     /// The centre has a NaN or infinite component.
     NonFiniteCenter(Vec3),
     /// The axis is zero, NaN or infinite.
@@ -75,6 +89,17 @@ pub enum TorusError {
         minor_radius: f32,
     },
 }
+
+/// The largest supported ν = R/r, 1000: the edge of what the tests prove (the exact
+/// intersection against the f64 oracle, and every cull's conservativeness, are checked up
+/// to ν = 1000 at R from 10⁻³ to 10³). ν is taken in f64 from the f32 radii, and a
+/// radius rounded to f32 may put a requested ν = 1000 a few parts in 10⁸ above it, so
+/// [`Torus::new`] allows ν ≤ `MAX_NU`·(1 + 10⁻⁶).
+pub const MAX_NU: f64 = 1000.0;
+
+/// The relative slack [`Torus::new`] allows above [`MAX_NU`] for the f32 rounding of the
+/// radii.
+const MAX_NU_SLACK: f64 = 1e-6;
 
 /// The smallest supported R + r, 10⁻¹⁵: below about 10⁻¹⁹ the culls' squared lengths
 /// become subnormal f32 and lose the bits the safety margin relies on.
@@ -103,6 +128,16 @@ impl fmt::Display for TorusError {
                 "major_radius = {major_radius}, minor_radius = {minor_radius}: nu = R/r = {} must be > 1 \
                  (a horn or spindle torus has no hole; torus-cull supports ring tori only)",
                 major_radius / minor_radius
+            ),
+            TorusError::TooThin {
+                major_radius,
+                minor_radius,
+            } => write!(
+                f,
+                "major_radius = {major_radius}, minor_radius = {minor_radius}: nu = R/r = {:e} \
+                 is above the supported range (allowed: 1 < nu <= {MAX_NU}, where the \
+                 intersection and the culls are tested; scale r up or split the scene)",
+                *major_radius as f64 / *minor_radius as f64
             ),
             TorusError::NonFiniteCenter(c) => write!(f, "torus centre {c} is not finite"),
             TorusError::BadAxis(a) => write!(f, "torus axis {a} must be finite and non-zero"),
@@ -162,6 +197,13 @@ impl Torus {
         let outer = major_radius as f64 + minor_radius as f64;
         if !(MIN_OUTER_RADIUS as f64..=MAX_OUTER_RADIUS as f64).contains(&outer) {
             return Err(TorusError::OutOfRange {
+                major_radius,
+                minor_radius,
+            });
+        }
+        // After the size: a torus out of range says so first.
+        if major_radius as f64 / minor_radius as f64 > MAX_NU * (1.0 + MAX_NU_SLACK) {
+            return Err(TorusError::TooThin {
                 major_radius,
                 minor_radius,
             });

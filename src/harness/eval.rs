@@ -150,7 +150,14 @@ fn parse_ray(line: &str) -> Result<Ray, String> {
             return Err(format!("column {name}: {} is not finite", field.trim()));
         }
     }
-    Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5])).map_err(|e| e.to_string())
+    Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5])).map_err(|e| {
+        format!(
+            "{e} (as typed: dx,dy,dz = {},{},{})",
+            fields[3].trim(),
+            fields[4].trim(),
+            fields[5].trim()
+        )
+    })
 }
 
 #[cfg(test)]

@@ -13,6 +13,10 @@
 //!   `/dev/full` is opened and written directly: renaming over it would replace the node
 //!   and nothing would reach its reader. Write errors (`/dev/full`'s "no space") are
 //!   returned, never dropped.
+//! * **Nothing is created but the file.** A missing parent directory is an error (no
+//!   `mkdir -p`), and so is an existing directory given as the file: [`check_writable`]
+//!   finds both before any work, and [`check_not_input`] refuses an output that is one of
+//!   the command's inputs (same file, by device and inode).
 //! * **No temp file outlives the process.** A temp file is deleted when its [`Output`] is
 //!   dropped unfinished (an error or a panic), and every pending one is listed so that a
 //!   signal handler can delete them with [`remove_pending`] before the process dies; the
@@ -58,7 +62,7 @@ enum Resolved {
 
 impl Output {
     /// Start writing `path` (see the module docs for what happens to what is there).
-    /// A missing parent directory is created.
+    /// A missing parent directory is an error, as for a shell redirection.
     pub fn create(path: &Path) -> io::Result<Output> {
         let target = match resolve(path)? {
             Resolved::Direct(p) => Target::Direct(fs::OpenOptions::new().write(true).open(p)?),
@@ -140,13 +144,68 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> io::Result<()> {
 }
 
 /// Fail now, not after a long computation, if `path` cannot be written: for a regular
-/// file (or nothing yet) a temp file must be creatable next to it. A FIFO or device is
-/// not opened here (opening a FIFO waits for its reader).
+/// file (or nothing yet) its directory must exist and a temp file must be creatable there;
+/// a directory is refused (`Is a directory`); a FIFO or device is not opened here (opening
+/// a FIFO waits for its reader).
 pub fn check_writable(path: &Path) -> io::Result<()> {
     match resolve(path)? {
         // A rename needs only the directory's permission, not the old file's.
         Resolved::Regular(dest, _) => temp_in(parent_of(&dest)).map(drop),
-        Resolved::Direct(p) => fs::metadata(p).map(drop),
+        Resolved::Direct(p) => {
+            if fs::metadata(&p)?.is_dir() {
+                Err(io::Error::new(
+                    io::ErrorKind::IsADirectory,
+                    "is a directory (give a file name)",
+                ))
+            } else {
+                Ok(())
+            }
+        }
+    }
+}
+
+/// Refuse to write `output` when it is one of `inputs` (each `(option, path)`): the same
+/// file once links are followed (same device and inode). Nothing there yet is never an
+/// input. The error names both options.
+pub fn check_not_input(output: (&str, &Path), inputs: &[(&str, &Path)]) -> Result<(), String> {
+    for (option, input) in inputs {
+        if same_file(output.1, input) {
+            return Err(format!(
+                "{} {}: is the same file as {option} {} (refusing to overwrite an input)",
+                output.0,
+                output.1.display(),
+                input.display()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Whether `a` and `b` name the same existing file (links followed).
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (fs::metadata(a), fs::metadata(b)) {
+        #[cfg(unix)]
+        (Ok(ma), Ok(mb)) => {
+            use std::os::unix::fs::MetadataExt;
+            ma.dev() == mb.dev() && ma.ino() == mb.ino()
+        }
+        #[cfg(not(unix))]
+        (Ok(_), Ok(_)) => match (fs::canonicalize(a), fs::canonicalize(b)) {
+            (Ok(ca), Ok(cb)) => ca == cb,
+            _ => false,
+        },
+        _ => false,
+    }
+}
+
+/// For a default output path (one the user did not type, such as `results/<commit>.json`):
+/// create its directory if it is missing, one level only, as the tool's own place for
+/// results. A path the user typed never gets a directory created.
+pub fn create_default_dir(path: &Path) -> io::Result<()> {
+    let dir = parent_of(path);
+    match fs::create_dir(dir) {
+        Err(e) if e.kind() != io::ErrorKind::AlreadyExists => Err(e),
+        _ => Ok(()),
     }
 }
 
@@ -174,9 +233,27 @@ fn unregister(path: &Path) {
     }
 }
 
-/// A temp file in `dir` (created if missing) whose mode is 0666 minus the umask.
+/// A temp file in `dir` (which must exist) whose mode is 0666 minus the umask.
 fn temp_in(dir: &Path) -> io::Result<NamedTempFile> {
-    fs::create_dir_all(dir)?;
+    match fs::metadata(dir) {
+        Ok(m) if m.is_dir() => {}
+        Ok(_) => {
+            return Err(io::Error::new(
+                io::ErrorKind::NotADirectory,
+                format!("{} is not a directory", dir.display()),
+            ));
+        }
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Err(io::Error::new(
+                io::ErrorKind::NotFound,
+                format!(
+                    "directory {} does not exist (it is not created: make it first)",
+                    dir.display()
+                ),
+            ));
+        }
+        Err(e) => return Err(e),
+    }
     let mut builder = tempfile::Builder::new();
     builder.prefix(TEMP_PREFIX).suffix(".tmp");
     #[cfg(unix)]
@@ -255,6 +332,44 @@ mod tests {
             .map(|e| e.unwrap().file_name())
             .collect();
         assert_eq!(names.len(), 2, "{names:?}");
+    }
+
+    /// Issue 17: a directory given as the file (`TORUS_CULL_RESULTS=DIR cargo bench`,
+    /// `run --out DIR`) and a missing parent are found before any work, and nothing is
+    /// created.
+    #[test]
+    fn a_directory_or_a_missing_parent_is_refused_before_the_work() {
+        let dir = tempfile::tempdir().unwrap();
+        let e = check_writable(dir.path()).unwrap_err();
+        assert_eq!(e.kind(), io::ErrorKind::IsADirectory, "{e}");
+        // Through a symlink too.
+        #[cfg(unix)]
+        {
+            let link = dir.path().join("link");
+            std::os::unix::fs::symlink(dir.path(), &link).unwrap();
+            assert!(check_writable(&link).is_err());
+        }
+        let nested = dir.path().join("a").join("b.json");
+        let e = check_writable(&nested).unwrap_err();
+        assert!(e.to_string().contains("does not exist"), "{e}");
+        assert!(write_file(&nested, b"x").is_err());
+        assert!(!dir.path().join("a").exists());
+        // A default path's own directory is made, one level only.
+        create_default_dir(&nested).unwrap();
+        check_writable(&nested).unwrap();
+        assert!(create_default_dir(&dir.path().join("c").join("d").join("e.json")).is_err());
+    }
+
+    #[test]
+    fn an_input_is_not_an_output() {
+        let dir = tempfile::tempdir().unwrap();
+        let input = dir.path().join("in.csv");
+        fs::write(&input, "x").unwrap();
+        let same = dir.path().join(".").join("in.csv");
+        let e = check_not_input(("--out", &same), &[("--rays", &input)]).unwrap_err();
+        assert!(e.contains("--out") && e.contains("--rays"), "{e}");
+        let other = dir.path().join("out.csv");
+        check_not_input(("--out", &other), &[("--rays", &input)]).unwrap();
     }
 
     #[test]

@@ -1,6 +1,7 @@
-//! SVG charts (plotters): rejection, capture, timing and BVH figures against ν.
+//! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
+//! against ν.
 
-use crate::harness::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
+use crate::harness::results::{BvhRecord, RatioRecord, RejectionRecord, Results, TimingRecord};
 use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -36,29 +37,59 @@ pub fn line_chart(
     series: &[Series],
     y_from_zero: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
+    let lines: Vec<Line> = series
+        .iter()
+        .enumerate()
+        .map(|(i, (name, pts))| Line {
+            name: name.clone(),
+            colour: i,
+            pts: pts.iter().map(|&(x, y)| (x, y, None)).collect(),
+        })
+        .collect();
+    write_chart(path, title, y_label, &lines, y_from_zero)
+}
+
+/// One line of a chart: its points (x, y, optional 95 % interval of y) and its colour
+/// index (the series' place among all the file's culls, so a cull keeps its colour).
+struct Line {
+    name: String,
+    colour: usize,
+    pts: Vec<(f64, f64, Option<[f64; 2]>)>,
+}
+
+fn write_chart(
+    path: &Path,
+    title: &str,
+    y_label: &str,
+    lines: &[Line],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
     let mut svg = String::new();
-    draw_chart(&mut svg, title, y_label, series, y_from_zero)
+    draw_chart(&mut svg, title, y_label, lines, y_from_zero)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     crate::harness::output::write_file(path, svg.as_bytes())
         .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(())
 }
 
-/// The SVG text of one chart.
+/// The SVG text of one chart. Lines with no points are left out (legend included); a line
+/// identical to an earlier one says so in the legend, and each line has its own marker
+/// shape, so that neither hides the other; intervals are drawn as error bars.
 fn draw_chart(
     svg: &mut String,
     title: &str,
     y_label: &str,
-    series: &[Series],
+    lines: &[Line],
     y_from_zero: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let points = series.iter().flat_map(|(_, p)| p.iter());
+    let lines: Vec<&Line> = lines.iter().filter(|l| !l.pts.is_empty()).collect();
     let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y) in points {
+    for &(x, y, ci) in lines.iter().flat_map(|l| l.pts.iter()) {
         x_min = x_min.min(x);
         x_max = x_max.max(x);
-        y_min = y_min.min(y);
-        y_max = y_max.max(y);
+        let [lo, hi] = ci.unwrap_or([y, y]);
+        y_min = y_min.min(y).min(lo);
+        y_max = y_max.max(y).max(hi);
     }
     if x_min > x_max {
         return Err("nothing to plot".into());
@@ -72,14 +103,14 @@ fn draw_chart(
     root.fill(&WHITE)?;
     // The legend gets its own strip, so it never hides a line.
     let (plot_area, legend_area) = root.split_horizontally(740);
-    let mut ticks: Vec<f64> = series
+    let mut ticks: Vec<f64> = lines
         .iter()
-        .flat_map(|(_, p)| p.iter().map(|&(x, _)| x))
+        .flat_map(|l| l.pts.iter().map(|&(x, _, _)| x))
         .collect();
     ticks.sort_by(f64::total_cmp);
     ticks.dedup();
     let mut chart = ChartBuilder::on(&plot_area)
-        .caption(title, ("sans-serif", 20))
+        .caption(title, ("sans-serif", 17))
         .margin(12)
         .x_label_area_size(44)
         .y_label_area_size(64)
@@ -97,27 +128,97 @@ fn draw_chart(
         .light_line_style(WHITE)
         .x_label_formatter(&|x| format!("{x}"))
         .draw()?;
-    for (i, (name, pts)) in series.iter().enumerate() {
-        let colour = COLOURS[i % COLOURS.len()];
-        chart.draw_series(LineSeries::new(pts.iter().copied(), colour.stroke_width(2)))?;
-        chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+    for (i, line) in lines.iter().enumerate() {
+        let colour = COLOURS[line.colour % COLOURS.len()];
+        let xy = || line.pts.iter().map(|&(x, y, _)| (x, y));
+        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(2)))?;
+        // Error bars: the interval, with caps a few pixels wide (in data units on a log
+        // axis: a small factor of x).
+        for &(x, _, ci) in &line.pts {
+            if let Some([lo, hi]) = ci {
+                let (xl, xr) = (x / 1.012, x * 1.012);
+                chart.draw_series(std::iter::once(PathElement::new(
+                    vec![(x, lo), (x, hi)],
+                    colour.stroke_width(1),
+                )))?;
+                for y in [lo, hi] {
+                    chart.draw_series(std::iter::once(PathElement::new(
+                        vec![(xl, y), (xr, y)],
+                        colour.stroke_width(1),
+                    )))?;
+                }
+            }
+        }
+        draw_markers(&mut chart, i, xy(), colour)?;
         let y = 60 + 24 * i as i32;
         legend_area.draw(&PathElement::new(
             vec![(8, y), (32, y)],
             colour.stroke_width(3),
         ))?;
+        legend_marker(&legend_area, i, (20, y), colour)?;
+        let same_as = lines[..i]
+            .iter()
+            .find(|earlier| earlier.pts == line.pts)
+            .map(|earlier| format!(" (= {})", earlier.name))
+            .unwrap_or_default();
         legend_area.draw(&Text::new(
-            name.clone(),
+            format!("{}{same_as}", line.name),
             (40, y - 8),
-            ("sans-serif", 15).into_font().color(&BLACK),
+            ("sans-serif", 13).into_font().color(&BLACK),
         ))?;
     }
     root.present()?;
     Ok(())
 }
 
+/// The markers of line `i`: a circle, triangle, cross or square in turn, so lines that
+/// coincide stay distinguishable.
+fn draw_markers(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, impl CoordTranslate<From = (f64, f64)>>,
+    i: usize,
+    pts: impl Iterator<Item = (f64, f64)> + Clone,
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    match i % 4 {
+        0 => chart.draw_series(pts.map(|p| Circle::new(p, 3, colour.filled())))?,
+        1 => chart.draw_series(pts.map(|p| TriangleMarker::new(p, 5, colour.stroke_width(1))))?,
+        2 => chart.draw_series(pts.map(|p| Cross::new(p, 5, colour.stroke_width(2))))?,
+        _ => chart.draw_series(pts.map(|p| {
+            EmptyElement::at(p) + Rectangle::new([(-3, -3), (3, 3)], colour.stroke_width(1))
+        }))?,
+    };
+    Ok(())
+}
+
+/// Line `i`'s marker in the legend, at pixel `at`.
+fn legend_marker(
+    area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    i: usize,
+    at: (i32, i32),
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    match i % 4 {
+        0 => area.draw(&Circle::new(at, 4, colour.filled()))?,
+        1 => area.draw(&TriangleMarker::new(at, 6, WHITE.filled()))?,
+        2 => area.draw(&Cross::new(at, 5, WHITE.stroke_width(2)))?,
+        _ => {
+            area.draw(&(EmptyElement::at(at) + Rectangle::new([(-4, -4), (4, 4)], WHITE.filled())))?
+        }
+    };
+    match i % 4 {
+        1 => area.draw(&TriangleMarker::new(at, 6, colour.stroke_width(1)))?,
+        2 => area.draw(&Cross::new(at, 5, colour.stroke_width(2)))?,
+        3 => area.draw(
+            &(EmptyElement::at(at) + Rectangle::new([(-4, -4), (4, 4)], colour.stroke_width(1))),
+        )?,
+        _ => {}
+    };
+    Ok(())
+}
+
 /// Every chart a results file supports, written to `out_dir` with file names starting
-/// with `stem`; returns the paths written.
+/// with `stem`; returns the paths written. Titles name the workload and the commit;
+/// timings and paired ratios carry their 95 % intervals as error bars.
 pub fn plot_results(
     results: &Results,
     out_dir: &Path,
@@ -125,17 +226,25 @@ pub fn plot_results(
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
     let mut written = Vec::new();
-    let mut chart = |name: String, title: String, y: &str, series: Vec<Series>, zero: bool| {
-        if series.iter().all(|(_, p)| p.is_empty()) {
+    let provenance = format!(
+        "{}, {}{}",
+        results.meta.workload,
+        results.meta.commit.as_deref().unwrap_or("no commit"),
+        if results.meta.dirty { "-dirty" } else { "" }
+    );
+    let mut chart = |name: String, title: String, y: &str, lines: Vec<Line>, zero: bool| {
+        if lines.iter().all(|l| l.pts.is_empty()) {
             return Ok::<(), Box<dyn std::error::Error>>(());
         }
         let path = out_dir.join(format!("{stem}-{name}.svg"));
-        line_chart(&path, &title, y, &series, zero)?;
+        write_chart(&path, &format!("{title} ({provenance})"), y, &lines, zero)?;
         written.push(path);
         Ok(())
     };
     for group in ordered(results.rejection.iter().map(Record::group)) {
-        let of = |y: fn(&RejectionRecord) -> Option<f64>| series(&results.rejection, &group, y);
+        let of = |y: fn(&RejectionRecord) -> Option<f64>| {
+            lines(&results.rejection, &group, |r| y(r).map(|v| (v, None)))
+        };
         let capture = of(|r| r.miss_capture);
         let rate = of(|r| Some(r.rejection_rate));
         chart(
@@ -154,12 +263,13 @@ pub fn plot_results(
         )?;
     }
     for group in ordered(results.timing.iter().map(Record::group)) {
-        let of = |y: fn(&TimingRecord) -> Option<f64>| series(&results.timing, &group, y);
-        let total = of(|r| Some(r.total_ns));
-        let speedup = of(|r| Some(r.speedup_vs_none));
+        let total = lines(&results.timing, &group, |r| {
+            Some((r.total_ns, Some(r.total_ns_ci)))
+        });
+        let speedup = lines(&results.timing, &group, |r| Some((r.speedup_vs_none, None)));
         chart(
             format!("{group}-total_ns"),
-            format!("{group}: cull + exact intersection, ns per ray"),
+            format!("{group}: cull + exact intersection, ns per ray [CI]"),
             "total ns per ray",
             total,
             true,
@@ -173,7 +283,9 @@ pub fn plot_results(
         )?;
     }
     for group in ordered(results.bvh.iter().map(Record::group)) {
-        let of = |y: fn(&BvhRecord) -> Option<f64>| series(&results.bvh, &group, y);
+        let of = |y: fn(&BvhRecord) -> Option<f64>| {
+            lines(&results.bvh, &group, |r| y(r).map(|v| (v, None)))
+        };
         let mrays = of(|r| Some(r.mrays_per_s));
         let solves = of(|r| Some(r.quartic_solves_per_ray));
         chart(
@@ -191,7 +303,56 @@ pub fn plot_results(
             true,
         )?;
     }
+    // `torus-cull time`'s paired ratios: one chart per case × metric × reference.
+    for group in ordered(results.ratio.iter().map(Record::group)) {
+        let ratios = lines(&results.ratio, &group, |r| {
+            Some((r.ratio, Some(r.ratio_ci)))
+        });
+        let Some(first) = results.ratio.iter().find(|r| r.group() == group) else {
+            continue;
+        };
+        let what = if first.metric == "cull_ns" {
+            "cull alone"
+        } else {
+            "cull + exact intersection"
+        };
+        chart(
+            format!("ratio-{group}"),
+            format!(
+                "{}: {what} / {}, paired ratio [95% CI]",
+                first.case, first.reference
+            ),
+            &format!("t(cull) / t({}), below 1 faster", first.reference),
+            ratios,
+            false,
+        )?;
+    }
     Ok(written)
+}
+
+/// One line per cull of the file (first-seen order, which fixes its colour): the (ν, y,
+/// interval) of the records in `group`; a cull with no record there has no points.
+fn lines<R: Record>(
+    records: &[R],
+    group: &str,
+    y: impl Fn(&R) -> Option<(f64, Option<[f64; 2]>)>,
+) -> Vec<Line> {
+    ordered(records.iter().map(|r| r.cull().to_string()))
+        .into_iter()
+        .enumerate()
+        .map(|(colour, cull)| {
+            let pts = records
+                .iter()
+                .filter(|r| r.group() == group && r.cull() == cull)
+                .filter_map(|r| y(r).map(|(v, ci)| (r.nu(), v, ci)))
+                .collect();
+            Line {
+                name: cull,
+                colour,
+                pts,
+            }
+        })
+        .collect()
 }
 
 /// What the charts need of a record: its chart (case, or scene and ray set), its series
@@ -242,19 +403,16 @@ impl Record for BvhRecord {
     }
 }
 
-/// One series per cull, in first-seen order: (ν, y) of the records in `group`.
-fn series<R: Record>(records: &[R], group: &str, y: fn(&R) -> Option<f64>) -> Vec<Series> {
-    ordered(records.iter().map(|r| r.cull().to_string()))
-        .into_iter()
-        .map(|cull| {
-            let pts = records
-                .iter()
-                .filter(|r| r.group() == group && r.cull() == cull)
-                .filter_map(|r| y(r).map(|v| (r.nu(), v)))
-                .collect();
-            (cull, pts)
-        })
-        .collect()
+impl Record for RatioRecord {
+    fn group(&self) -> String {
+        format!("{}-{}-vs-{}", self.case, self.metric, self.reference)
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
 }
 
 /// Distinct values in first-seen order.
@@ -267,4 +425,82 @@ fn ordered(values: impl Iterator<Item = String>) -> Vec<String> {
     let mut v: Vec<_> = seen.into_iter().collect();
     v.sort_by_key(|(_, i)| *i);
     v.into_iter().map(|(k, _)| k).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn texts(svg: &str) -> Vec<String> {
+        svg.split("<text")
+            .skip(1)
+            .filter_map(|t| t.split_once('>').map(|(_, rest)| rest))
+            .filter_map(|t| t.split_once("</text>").map(|(v, _)| v.trim().to_string()))
+            .collect()
+    }
+
+    /// Issue 17: a series identical to another says so in the legend, a series with no
+    /// points is left out of it, and intervals are drawn (one error bar and two caps per
+    /// point).
+    #[test]
+    fn legends_name_twins_and_skip_empty_series_and_intervals_are_drawn() {
+        let pts = |ci: Option<[f64; 2]>| vec![(2.0, 1.0, ci), (4.0, 2.0, ci)];
+        let lines = vec![
+            Line {
+                name: "discriminant_f64".into(),
+                colour: 0,
+                pts: pts(None),
+            },
+            Line {
+                name: "no_batch_data".into(),
+                colour: 1,
+                pts: Vec::new(),
+            },
+            Line {
+                name: "discriminant".into(),
+                colour: 2,
+                pts: pts(None),
+            },
+            Line {
+                name: "skala".into(),
+                colour: 3,
+                pts: vec![(2.0, 2.5, Some([2.0, 3.0])), (4.0, 2.5, Some([2.4, 2.6]))],
+            },
+        ];
+        let mut svg = String::new();
+        draw_chart(&mut svg, "title (w, abc1234)", "y", &lines, true).unwrap();
+        let t = texts(&svg);
+        assert!(
+            t.iter().any(|x| x == "discriminant (= discriminant_f64)"),
+            "{t:?}"
+        );
+        assert!(!t.iter().any(|x| x.contains("no_batch_data")), "{t:?}");
+        assert!(t.iter().any(|x| x.contains("abc1234")), "{t:?}");
+        let without = {
+            let mut s = String::new();
+            let no_ci: Vec<Line> = lines
+                .iter()
+                .map(|l| Line {
+                    name: l.name.clone(),
+                    colour: l.colour,
+                    pts: l.pts.iter().map(|&(x, y, _)| (x, y, None)).collect(),
+                })
+                .collect();
+            draw_chart(&mut s, "title", "y", &no_ci, true).unwrap();
+            s
+        };
+        // skala's colour (index 3): its line and markers, plus a bar and two caps for each
+        // of its two intervals.
+        let skala = |s: &str| {
+            s.split('<')
+                .filter(|e| e.starts_with("line") || e.starts_with("polyline"))
+                .filter(|e| e.contains("stroke=\"#2CA02C\""))
+                .count()
+        };
+        assert_eq!(
+            skala(&svg),
+            skala(&without) + 2 * 3,
+            "two points with an interval: a bar and two caps each"
+        );
+    }
 }

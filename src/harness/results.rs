@@ -80,6 +80,17 @@ pub struct Meta {
     /// `neon` or `scalar` (see [`crate::batch::Isa`]); null when nothing was batched.
     #[serde(default)]
     pub isa: Option<String>,
+    /// Logical cores the process could use (`available_parallelism`); null in older files.
+    #[serde(default)]
+    pub cores: Option<u64>,
+    /// Worker threads the measurement ran on (`run --threads`; 1 for the timings, which
+    /// run on one thread); null in older files.
+    #[serde(default)]
+    pub threads: Option<u64>,
+    /// The operating system and architecture, and the kernel release where it can be read
+    /// (e.g. `linux x86_64 6.8.0-49-generic`); null in older files.
+    #[serde(default)]
+    pub os: Option<String>,
 }
 
 /// The sizes behind a results file's figures: two files compare only if these agree.
@@ -403,6 +414,11 @@ impl Results {
                 preset: None,
                 sizes: None,
                 isa: None,
+                cores: std::thread::available_parallelism()
+                    .ok()
+                    .map(|n| n.get() as u64),
+                threads: None,
+                os: Some(os_description()),
             },
             rejection: Vec::new(),
             timing: Vec::new(),
@@ -471,6 +487,15 @@ pub fn git_state() -> (Option<String>, bool) {
     )
 }
 
+/// `<os> <arch>[ <kernel release>]`.
+fn os_description() -> String {
+    let base = format!("{} {}", std::env::consts::OS, std::env::consts::ARCH);
+    match std::fs::read_to_string("/proc/sys/kernel/osrelease") {
+        Ok(release) if !release.trim().is_empty() => format!("{base} {}", release.trim()),
+        _ => base,
+    }
+}
+
 fn cpu_model() -> String {
     std::fs::read_to_string("/proc/cpuinfo")
         .ok()
@@ -510,6 +535,7 @@ mod tests {
             "workload":"w","workload_sha256":"s"}"#;
         let m: Meta = serde_json::from_str(meta).unwrap();
         assert_eq!(m.isa, None);
+        assert_eq!((m.cores, m.threads, m.os), (None, None, None));
     }
 
     /// A solver record from before the paired ratio reads with none, and one with it

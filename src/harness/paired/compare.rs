@@ -8,6 +8,15 @@
 //! latency-bound code), while the `total_ns` ratios move by a few percent. A cull that got
 //! slower still shows in `total_ns`, wherever it rejects most rays.
 //!
+//! **A ratio decides only about its cull.** Ratios against `none` (and `none`'s own
+//! ratio) measure the reference, the exact intersection, as much as the cull: when the
+//! intersection gets faster every cull's ratio against `none` grows, with no cull changed.
+//! They are shown, flagged `(against none: not a verdict)`, and decide nothing. A ratio
+//! against `cychosz` that grew while `cychosz` itself got faster by more than the
+//! threshold (its `reference_ns_per_ray`) and the cull's own time (`ns_per_ray`) did not
+//! grow by more than the threshold is a faster reference, not a slower cull: it is shown,
+//! flagged, and decides nothing.
+//!
 //! A ratio is blind to a slow-down that hits the cull and
 //! its reference alike (the exact intersection got slower for everyone): the criterion
 //! `timing` rows still show that, as information, but with ratios on both sides they no
@@ -52,10 +61,27 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     let better_disjoint = n.ratio_ci[1] < o.ratio_ci[0];
     // Ratios of different batches differ by sampling alone.
     let same_batch = o.rays == n.rays;
-    let decides = n.metric == "total_ns" && same_batch;
+    // Against `none` the ratio measures the exact intersection as much as the cull.
+    let about_none = n.reference == "none" || n.cull == "none";
+    // The ratio grew because the reference got faster, not because the cull got slower.
+    let faster_reference = n.reference_ns_per_ray < o.reference_ns_per_ray * (1.0 - threshold)
+        && n.ns_per_ray <= o.ns_per_ray * (1.0 + threshold);
+    let decides = n.metric == "total_ns" && same_batch && !about_none && !faster_reference;
     let mut flags = Vec::new();
     let mut regression = false;
-    if change > threshold && worse_disjoint && decides {
+    if change > threshold && worse_disjoint && about_none {
+        flags.push(
+            "slower, intervals disjoint (against none: measures the exact intersection too, \
+             not a verdict)"
+                .to_string(),
+        );
+    } else if change > threshold && worse_disjoint && faster_reference && same_batch {
+        flags.push(format!(
+            "slower against {0}, but {0} itself got faster ({1:.2} -> {2:.2} ns/ray) and \
+             this cull did not slow ({3:.2} -> {4:.2} ns/ray): not a verdict",
+            n.reference, o.reference_ns_per_ray, n.reference_ns_per_ray, o.ns_per_ray, n.ns_per_ray
+        ));
+    } else if change > threshold && worse_disjoint && decides {
         regression = true;
         flags.push(format!(
             "REGRESSION: {:+.1}% against {}, intervals disjoint",
@@ -151,6 +177,9 @@ mod tests {
                 preset: None,
                 sizes: None,
                 isa: None,
+                cores: None,
+                threads: None,
+                os: None,
             },
             rejection: Vec::new(),
             timing,
@@ -217,6 +246,58 @@ mod tests {
             "{alone:?}"
         );
         assert!(report.only_old.iter().any(|k| k.contains("none/cychosz")));
+    }
+
+    /// Issue 17: the exact intersection got faster, so every ratio against `none` grew
+    /// and `cychosz` (the other reference) got faster: no cull got slower, and nothing is
+    /// a regression; a cull that did get slower against `cychosz` still is.
+    #[test]
+    fn a_faster_reference_is_not_a_slower_cull() {
+        let against = |cull: &str, reference: &str, ratio: f64, ns: f64, ref_ns: f64| RatioRecord {
+            reference: reference.into(),
+            metric: "total_ns".into(),
+            ns_per_ray: ns,
+            reference_ns_per_ray: ref_ns,
+            ..record(cull, ratio, [ratio * 0.99, ratio * 1.01])
+        };
+        let old = results(
+            vec![
+                against("skala", "none", 0.5, 50.0, 100.0),
+                against("cychosz", "none", 0.8, 80.0, 100.0),
+                against("none", "cychosz", 1.25, 100.0, 80.0),
+                against("skala", "cychosz", 0.625, 50.0, 80.0),
+                against("aabb", "cychosz", 0.9, 72.0, 80.0),
+            ],
+            Vec::new(),
+        );
+        let new = results(
+            vec![
+                // The intersection 40 % faster: skala's ratio against none 0.5 -> 0.8.
+                against("skala", "none", 0.8, 48.0, 60.0),
+                against("cychosz", "none", 1.0, 60.0, 60.0),
+                against("none", "cychosz", 1.0, 60.0, 60.0),
+                // cychosz 25 % faster, skala the same: its ratio grew 28 %.
+                against("skala", "cychosz", 0.8, 48.0, 60.0),
+                // aabb itself 50 % slower against an unchanged reference: a regression.
+                against("aabb", "cychosz", 1.35, 108.0, 80.0),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        let flagged: Vec<_> = report.rows.iter().filter(|r| r.regression).collect();
+        assert_eq!(flagged.len(), 1, "{:#?}", report.rows);
+        assert!(flagged[0].key.contains("aabb/cychosz"), "{flagged:?}");
+        let row = |k: &str| report.rows.iter().find(|r| r.key.contains(k)).unwrap();
+        assert!(
+            row("skala/none").flags[0].contains("against none"),
+            "{:?}",
+            row("skala/none")
+        );
+        assert!(
+            row("skala/cychosz").flags[0].contains("cychosz itself got faster"),
+            "{:?}",
+            row("skala/cychosz")
+        );
     }
 
     #[test]

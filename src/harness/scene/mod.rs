@@ -137,9 +137,10 @@ impl std::error::Error for SceneError {}
 impl Scene {
     /// Build `count` tori of `kind` at ν, deterministically from `seed`.
     pub fn build(kind: SceneKind, nu: f64, count: usize, seed: u64) -> Result<Scene, SceneError> {
-        if !(nu.is_finite() && nu > 1.0) {
+        if !(nu.is_finite() && nu > 1.0 && nu <= crate::MAX_NU) {
             return Err(SceneError(format!(
-                "nu = {nu} is invalid (must be finite and > 1)"
+                "nu = {nu} is invalid (allowed: 1 < nu <= {})",
+                crate::MAX_NU
             )));
         }
         if count == 0 {

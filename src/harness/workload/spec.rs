@@ -7,6 +7,7 @@
 //! Unknown fields are errors. Every error names the file, the field and what is allowed.
 
 use super::{Case, Pose};
+use crate::MAX_NU;
 use crate::harness::scene::SceneKind;
 use serde::Deserialize;
 use sha2::{Digest, Sha256};
@@ -141,6 +142,17 @@ impl Workload {
         if raw.name.trim().is_empty() {
             return Err(err(Some("name"), "must not be empty".into()));
         }
+        // The name goes into default file names under results/: it must stay a file name.
+        if raw.name.contains(['/', '\\', '\0']) || raw.name == "." || raw.name.contains("..") {
+            return Err(err(
+                Some("name"),
+                format!(
+                    "'{}' is invalid: it is part of output file names under results/ \
+                     (allowed: no '/', '\\', NUL or '..')",
+                    raw.name.escape_debug()
+                ),
+            ));
+        }
         if raw.cases.is_empty() {
             return Err(err(
                 Some("cases"),
@@ -173,10 +185,23 @@ impl Workload {
                     format!("{nu} is invalid: {why}"),
                 ));
             }
-            if nu > 1e6 {
+            if nu > MAX_NU {
                 return Err(err(
                     Some(&format!("nu[{i}]")),
-                    format!("{nu} is invalid (allowed: 1 < nu <= 1e6)"),
+                    format!(
+                        "{nu} is invalid (allowed: 1 < nu <= {MAX_NU}, the largest nu the \
+                         intersection and the culls are tested at)"
+                    ),
+                ));
+            }
+            if let Some(case) = cases.iter().find(|c| nu < c.min_nu()) {
+                return Err(err(
+                    Some(&format!("nu[{i}]")),
+                    format!(
+                        "{nu} is too close to 1 for case {case}: its generator could not find \
+                         enough rays (allowed with case {case}: nu >= {})",
+                        case.min_nu()
+                    ),
                 ));
             }
         }
@@ -257,10 +282,10 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, (String, String)> {
         ));
     }
     for (i, &nu) in raw.nu.iter().enumerate() {
-        if !(nu.is_finite() && nu > 1.0 && nu <= 1e6) {
+        if !(nu.is_finite() && nu > 1.0 && nu <= MAX_NU) {
             return Err((
                 format!("bvh.nu[{i}]"),
-                format!("{nu} is invalid (allowed: 1 < nu <= 1e6)"),
+                format!("{nu} is invalid (allowed: 1 < nu <= {MAX_NU})"),
             ));
         }
     }
@@ -326,6 +351,22 @@ mod tests {
             (
                 r#"{"name":"t","seed":7,"cases":["uniform"],"nu":[0.5],"rays":10}"#,
                 "field `nu[0]`: 0.5 is invalid",
+            ),
+            (
+                r#"{"name":"t","seed":7,"cases":["hole"],"nu":[1.0000001],"rays":10}"#,
+                "field `nu[0]`: 1.0000001 is too close to 1 for case hole",
+            ),
+            (
+                r#"{"name":"t","seed":7,"cases":["uniform"],"nu":[1001],"rays":10}"#,
+                "field `nu[0]`: 1001 is invalid (allowed: 1 < nu <= 1000",
+            ),
+            (
+                r#"{"name":"../../evil","seed":7,"cases":["uniform"],"nu":[2],"rays":10}"#,
+                "field `name`: '../../evil' is invalid",
+            ),
+            (
+                r#"{"name":"a/b","seed":7,"cases":["uniform"],"nu":[2],"rays":10}"#,
+                "field `name`: 'a/b' is invalid",
             ),
             (
                 r#"{"name":"t","seed":7,"cases":["hole"],"nu":[],"rays":10}"#,

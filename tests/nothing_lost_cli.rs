@@ -1,0 +1,571 @@
+//! Issue 17's reproducers, each now a one-line error before any work or a correct answer:
+//! outputs checked first (an existing directory, a missing parent, an input, a workload
+//! name escaping `results/`), a closed pipe ends every command quietly after its files, ν
+//! beyond the tested range and workloads whose generators cannot succeed are refused at
+//! once, `time`'s default file carries the workload, and messages name the value typed,
+//! the file and the option.
+
+// Every check here runs against the harness's CLI.
+#![cfg(feature = "harness")]
+#![cfg(unix)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
+const ROOT: &str = env!("CARGO_MANIFEST_DIR");
+
+fn torus_cull(args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .current_dir(ROOT)
+        .output()
+        .expect("run torus-cull")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Two cases at two ν, 200 rays: a second to run, a few to time.
+fn tiny_workload(dir: &Path, name: &str) -> PathBuf {
+    let path = dir.join(format!("{name}.json"));
+    std::fs::write(
+        &path,
+        format!(
+            r#"{{ "name": "{name}", "seed": 3, "cases": ["hole", "uniform"], "nu": [2, 8],
+                 "rays": 200, "pose": "random" }}"#
+        ),
+    )
+    .unwrap();
+    path
+}
+
+/// Exit 2, one line on stderr naming every needle, nothing on stdout, and fast: the work
+/// never started.
+fn refused_before_work(o: &Output, started: Instant, needles: &[&str]) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    for needle in needles {
+        assert!(err.contains(needle), "no '{needle}' in: {err}");
+    }
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        o.stdout.is_empty(),
+        "the work ran: {}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    assert!(
+        started.elapsed() < Duration::from_secs(10),
+        "it worked first"
+    );
+}
+
+#[test]
+fn an_existing_directory_as_out_is_refused_before_the_work() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let target = dir.path().to_str().unwrap();
+    for command in ["run", "time"] {
+        let start = Instant::now();
+        let o = torus_cull(&[
+            command,
+            "--workload",
+            workload.to_str().unwrap(),
+            "--out",
+            target,
+        ]);
+        refused_before_work(&o, start, &["--out", target, "is a directory"]);
+    }
+}
+
+#[test]
+fn a_missing_parent_directory_is_an_error_not_created() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let out = dir.path().join("no").join("such").join("r.json");
+    for command in ["run", "time"] {
+        let start = Instant::now();
+        let o = torus_cull(&[
+            command,
+            "--workload",
+            workload.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        refused_before_work(&o, start, &["--out", "does not exist"]);
+        assert!(
+            !dir.path().join("no").exists(),
+            "{command} made the directory"
+        );
+    }
+    let rays = dir.path().join("rays.csv");
+    std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "2",
+        "--minor",
+        "1",
+        "--rays",
+        rays.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--out"), "{}", stderr(&o));
+    assert!(!dir.path().join("no").exists());
+}
+
+#[test]
+fn an_output_that_is_an_input_is_refused_and_the_input_kept() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("a.csv");
+    let csv = "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n";
+    std::fs::write(&rays, csv).unwrap();
+    // The same path, a symlink to it and a hard link to it are all the same file.
+    let sym = dir.path().join("sym.csv");
+    std::os::unix::fs::symlink(&rays, &sym).unwrap();
+    let hard = dir.path().join("hard.csv");
+    std::fs::hard_link(&rays, &hard).unwrap();
+    for out in [&rays, &sym, &hard] {
+        let o = torus_cull(&[
+            "eval",
+            "--major",
+            "2",
+            "--minor",
+            "1",
+            "--rays",
+            rays.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("--out") && err.contains("--rays") && err.contains("same file"),
+            "{err}"
+        );
+        assert_eq!(std::fs::read_to_string(&rays).unwrap(), csv);
+    }
+
+    let workload = tiny_workload(dir.path(), "tiny");
+    let text = std::fs::read_to_string(&workload).unwrap();
+    for command in ["run", "time"] {
+        let start = Instant::now();
+        let o = torus_cull(&[
+            command,
+            "--workload",
+            workload.to_str().unwrap(),
+            "--out",
+            workload.to_str().unwrap(),
+        ]);
+        refused_before_work(&o, start, &["--out", "--workload", "same file"]);
+        assert_eq!(std::fs::read_to_string(&workload).unwrap(), text);
+    }
+}
+
+#[test]
+fn a_workload_name_that_escapes_results_is_refused_at_load() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let text = std::fs::read_to_string(&workload)
+        .unwrap()
+        .replace("\"tiny\"", "\"../../evil\"");
+    std::fs::write(&workload, text).unwrap();
+    for command in ["run", "time"] {
+        let start = Instant::now();
+        let o = Command::new(BIN)
+            .args([command, "--workload", workload.to_str().unwrap()])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        refused_before_work(
+            &o,
+            start,
+            &[workload.to_str().unwrap(), "field `name`", "../../evil"],
+        );
+    }
+    assert!(!dir.path().join("results").exists());
+}
+
+#[test]
+fn time_names_its_default_file_after_the_workload() {
+    let dir = tempfile::tempdir().unwrap();
+    let cwd = dir.path().join("cwd");
+    std::fs::create_dir(&cwd).unwrap();
+    for name in ["tiny", "small"] {
+        let workload = tiny_workload(dir.path(), name);
+        let o = Command::new(BIN)
+            .args([
+                "time",
+                "--workload",
+                workload.to_str().unwrap(),
+                "--seconds",
+                "0.5",
+            ])
+            .current_dir(&cwd)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    // The tool's own results/ is made (one level) for a default name; both files are kept.
+    let mut names: Vec<String> = std::fs::read_dir(cwd.join("results"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names.len(), 2, "{names:?}");
+    assert!(names[0].ends_with("-small-time.json"), "{names:?}");
+    assert!(names[1].ends_with("-tiny-time.json"), "{names:?}");
+}
+
+/// Runs `args` with stdout a pipe whose reader has already gone.
+fn with_closed_stdout(args: &[&str], cwd: &Path) -> Output {
+    let mut child = Command::new(BIN)
+        .args(args)
+        .current_dir(cwd)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let json = dir.path().join("r.json");
+    let o = with_closed_stdout(
+        &[
+            "run",
+            "--workload",
+            workload.to_str().unwrap(),
+            "--out",
+            json.to_str().unwrap(),
+        ],
+        Path::new(ROOT),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
+    let svgs = |d: &Path| {
+        std::fs::read_dir(d)
+            .unwrap()
+            .filter(|e| e.as_ref().unwrap().path().extension() == Some("svg".as_ref()))
+            .count()
+    };
+    let written = svgs(dir.path());
+    assert!(json.exists());
+    // Every plot of the file: the same count as `plot` writes.
+    let again = dir.path().join("again");
+    std::fs::create_dir(&again).unwrap();
+    let o = with_closed_stdout(
+        &[
+            "plot",
+            json.to_str().unwrap(),
+            "--out-dir",
+            again.to_str().unwrap(),
+        ],
+        Path::new(ROOT),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        written > 0 && written == svgs(&again),
+        "{written} vs {}",
+        svgs(&again)
+    );
+
+    // compare keeps its documented exit code (0: no regression).
+    let o = with_closed_stdout(
+        &["compare", json.to_str().unwrap(), json.to_str().unwrap()],
+        Path::new(ROOT),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+
+    let timed = dir.path().join("t.json");
+    let o = with_closed_stdout(
+        &[
+            "time",
+            "--workload",
+            workload.to_str().unwrap(),
+            "--seconds",
+            "0.5",
+            "--out",
+            timed.to_str().unwrap(),
+        ],
+        Path::new(ROOT),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(timed.exists());
+
+    let png = dir.path().join("scene.png");
+    let o = with_closed_stdout(
+        &[
+            "render",
+            "--scene",
+            "chain",
+            "--nu",
+            "4",
+            "--size",
+            "16",
+            "--tori",
+            "4",
+            "--out",
+            png.to_str().unwrap(),
+        ],
+        Path::new(ROOT),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(png.exists() && dir.path().join("scene-cullmap.png").exists());
+}
+
+#[test]
+fn nu_beyond_the_tested_range_is_a_one_line_error() {
+    // The reproducer: R = 1, r = 3e-9 (nu = 3.3e8) once answered a hit for a miss.
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("rays.csv");
+    std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,4.5e-9,0,1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "1",
+        "--minor",
+        "3e-9",
+        "--rays",
+        rays.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--major/--minor") && err.contains("3.33") && err.contains("<= 1000"),
+        "{err}"
+    );
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        o.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let png = dir.path().join("thin.png");
+    let o = torus_cull(&[
+        "render",
+        "--scene",
+        "chain",
+        "--nu",
+        "2000",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--nu") && stderr(&o).contains("1000"));
+}
+
+#[test]
+fn a_workload_its_generators_cannot_fill_is_refused_at_load() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = dir.path().join("thin.json");
+    std::fs::write(
+        &workload,
+        r#"{ "name": "thin", "seed": 1, "cases": ["hole"], "nu": [1.0000001],
+             "rays": 20000 }"#,
+    )
+    .unwrap();
+    let start = Instant::now();
+    let o = torus_cull(&[
+        "run",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--out",
+        dir.path().join("r.json").to_str().unwrap(),
+    ]);
+    refused_before_work(
+        &o,
+        start,
+        &[
+            workload.to_str().unwrap(),
+            "field `nu[0]`",
+            "1.0000001",
+            "case hole",
+        ],
+    );
+}
+
+#[test]
+fn eval_messages_name_the_value_typed_and_the_option() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("rays.csv");
+    std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
+    let rays = rays.to_str().unwrap();
+    for (major, minor, needles) in [
+        ("1e300", "1", vec!["--major", "1e300"]),
+        ("1e-300", "1e-301", vec!["--major", "1e-300"]),
+        ("2", "-1", vec!["minor_radius = -1"]),
+        ("2", "-1e-300", vec!["--minor", "-1e-300"]),
+    ] {
+        let o = torus_cull(&["eval", "--major", major, "--minor", minor, "--rays", rays]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{major} {minor}: {err}");
+        for n in needles {
+            assert!(err.contains(n), "{major} {minor}: no '{n}' in {err}");
+        }
+        assert!(
+            !err.contains("= inf") && !err.contains("= 0 ") && !err.contains("unexpected"),
+            "{err}"
+        );
+    }
+    // A tiny direction is not "zero", and the row says what was typed.
+    let tiny = dir.path().join("tiny.csv");
+    std::fs::write(&tiny, "ox,oy,oz,dx,dy,dz\n-5,0,0,1e-20,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "2",
+        "--minor",
+        "1",
+        "--rays",
+        tiny.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains(":2:") && err.contains("1e-20") && err.contains("too short"),
+        "{err}"
+    );
+    assert!(!err.contains("is zero"), "{err}");
+    // A directory as --rays names the option and the path.
+    let d = dir.path().to_str().unwrap();
+    let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", d]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--rays") && err.contains(d) && err.contains("is a directory"),
+        "{err}"
+    );
+}
+
+#[test]
+fn time_lists_only_what_it_times_and_checks_the_isa_in_every_mode() {
+    let o = torus_cull(&["time", "--culls", "bogus"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("'bogus'") && err.contains("discriminant_f64"),
+        "{err}"
+    );
+    assert!(!err.contains("printed") && !err.contains("eq102"), "{err}");
+
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let start = Instant::now();
+    let o = Command::new(BIN)
+        .args([
+            "time",
+            "--workload",
+            workload.to_str().unwrap(),
+            "--seconds",
+            "5",
+            "--out",
+            dir.path().join("t.json").to_str().unwrap(),
+        ])
+        .env("TORUS_CULL_ISA", "avx3")
+        .output()
+        .unwrap();
+    refused_before_work(&o, start, &["TORUS_CULL_ISA", "avx3"]);
+}
+
+#[test]
+fn help_texts_state_the_real_defaults() {
+    let run = String::from_utf8_lossy(&torus_cull(&["run", "--help"]).stdout).into_owned();
+    assert!(run.contains("-run.json"), "{run}");
+    let time = String::from_utf8_lossy(&torus_cull(&["time", "--help"]).stdout).into_owned();
+    assert!(!time.contains("six") && time.contains("ten"), "{time}");
+    assert!(time.contains("<workload>-time.json"), "{time}");
+}
+
+/// With stderr not a terminal (a log, a CI job) `run` and `time` say what they are doing
+/// as they go; their files record cores, threads and OS, and `time`'s its sizes; `plot`
+/// draws a `time` file's paired ratios with their intervals, titled with the workload and
+/// commit, and says so when a file has nothing to plot.
+#[test]
+fn progress_meta_and_plots_of_time_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let run_json = dir.path().join("r.json");
+    let o = torus_cull(&[
+        "run",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--threads",
+        "2",
+        "--no-plots",
+        "--out",
+        run_json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("run tiny") && stderr(&o).contains("800/800 rays (100%)"),
+        "{}",
+        stderr(&o)
+    );
+    let r = torus_cull::harness::results::Results::load(&run_json).unwrap();
+    assert_eq!(r.meta.threads, Some(2));
+    assert!(r.meta.cores.is_some_and(|c| c >= 1));
+    assert!(
+        r.meta
+            .os
+            .as_deref()
+            .is_some_and(|os| os.starts_with(std::env::consts::OS))
+    );
+
+    let time_json = dir.path().join("t.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--seconds",
+        "0.5",
+        "--out",
+        time_json.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("time tiny") && stderr(&o).contains("(100%)"),
+        "{}",
+        stderr(&o)
+    );
+    let t = torus_cull::harness::results::Results::load(&time_json).unwrap();
+    let sizes = t.meta.sizes.clone().expect("time records its sizes");
+    assert_eq!(sizes.timing_rays, Some(200));
+    assert_eq!(sizes.timed_nu, vec![2.0, 8.0]);
+    assert_eq!(t.meta.threads, Some(1));
+
+    let o = torus_cull(&["plot", time_json.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg");
+    let text = std::fs::read_to_string(&svg).expect("a ratio chart");
+    assert!(
+        text.contains("paired ratio [95% CI]") && text.contains("tiny, "),
+        "{svg:?}"
+    );
+    let charts = std::fs::read_dir(dir.path())
+        .unwrap()
+        .filter(|e| {
+            let name = e.as_ref().unwrap().file_name();
+            let name = name.to_string_lossy();
+            name.starts_with("t-ratio-") && name.ends_with(".svg")
+        })
+        .count();
+    // case × metric × reference.
+    assert_eq!(charts, 2 * 2 * 2);
+
+    let empty = dir.path().join("empty.json");
+    let mut e = t.clone();
+    e.ratio.clear();
+    e.save(&empty).unwrap();
+    let o = torus_cull(&["plot", empty.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("nothing to plot"), "{}", stderr(&o));
+}
