@@ -38,12 +38,12 @@
 
 mod cull;
 mod exact;
-mod frame;
 mod isa;
 pub(crate) mod lanes;
 mod lines;
 mod mask;
 mod solve;
+mod to_local;
 pub(crate) mod vec3s;
 mod wavefront;
 
