@@ -328,4 +328,10 @@ impl<S: Simd> M32s<S> {
     pub(crate) fn any(self) -> bool {
         self.bits() != 0
     }
+
+    /// Whether every lane is true (at width 1: the lane itself).
+    #[inline(always)]
+    pub(crate) fn all(self) -> bool {
+        !(!self).any()
+    }
 }

@@ -142,12 +142,19 @@ pub(crate) const MODERATE_HIGH: f32 = 1.099_511_6e12;
 
 /// `v` itself when |v|² lies in (2⁻⁴⁰, 2⁴⁰), else [`rescaled`]: either way fourth powers
 /// of `v`, and |o|²·|v|² for origins within 10¹³, stay inside f32's normal range.
-/// Selected, not branched: on lanes both are computed; at width 1 LLVM is free to branch.
+///
+/// When every lane is in range (a renderer's rays nearly always are) `v` is returned
+/// before `rescaled` runs: at width 1 that is the scalar branch, predictable on a
+/// renderer's rays; `rescaled`'s trip through the integer unit cost a short cull about
+/// 3 ns per line when taken always. Otherwise the lanes select.
 #[inline(always)]
 pub(crate) fn moderate<S: Simd>(v: Vec3s<S>) -> Vec3s<S> {
     let s = v.x.s;
     let len_sq = v.length_squared();
     let plain = len_sq.gt(F32s::splat(s, MODERATE_LOW)) & len_sq.lt(F32s::splat(s, MODERATE_HIGH));
+    if plain.all() {
+        return v;
+    }
     let r = rescaled(v);
     Vec3s::new(
         plain.select(v.x, r.x),

@@ -127,6 +127,10 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
         unit_y_sq,
         keep,
     } = sphere_slab(s, b, origin, dir);
+    // No line left to decide: at width 1 the scalar early exit (most lines leave here).
+    if !keep.any() {
+        return keep;
+    }
     // The tail has terms of fourth degree in d (x_B²h²·d_y², M²): with |d| ~ 1e10 they
     // overflow and with |d| ~ 1e-10 they underflow, which once rejected hits.
     let d = rescaled(dir);
@@ -138,36 +142,60 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     // a·h, with h = |(d_x, d_z)| unnormalized.
     let a_h = (p.x * d.z - p.z * d.x).abs();
     let a_h_sq = a_h * a_h;
-    let h = h_sq.sqrt();
+
+    // Each case below runs only if some lane is in it, and takes its roots only if some
+    // lane is still open in it: at width 1, the scalar code's branches and early keeps.
+    // A lane that is not in a case (or not open in it) is not decided by that case's
+    // answer, or is kept by it anyway, so `true` stands in for it.
+    let undecided = keep & !axis_parallel;
+    let yes = M32s::splat(s, true);
 
     // Outer band (case c, and d when h_c² < 0): the slab shrinks to |Y| ≤ h_c, tested as
     // lowest² + (a − R)² ≤ r², times h² so that no division is needed. A chord that
-    // crosses y = 0 (p_y² ≤ its squared height reach) has lowest = 0: keep.
+    // crosses y = 0 (p_y² ≤ its squared height reach) has lowest = 0: keep, no root.
     let band = a_h_sq.ge(c!(b.major_radius) * c!(b.major_radius) * h_sq);
-    let reach_sq = unit_y_sq * half_chord_sq;
-    let crosses_mid_plane = (p.y * p.y).le(reach_sq);
-    let lowest = p.y.abs() - reach_sq.sqrt();
-    let band_keep =
-        crosses_mid_plane | (lowest * lowest * h_sq).le(F::band_height_sq_h2(b, a_h, h));
+    let band_keep = if (undecided & band).any() {
+        let reach_sq = unit_y_sq * half_chord_sq;
+        let crosses_mid_plane = (p.y * p.y).le(reach_sq);
+        if (undecided & band & !crosses_mid_plane).any() {
+            let lowest = p.y.abs() - reach_sq.sqrt();
+            let h = h_sq.sqrt();
+            crosses_mid_plane | (lowest * lowest * h_sq).le(F::band_height_sq_h2(b, a_h, h))
+        } else {
+            yes
+        }
+    } else {
+        yes
+    };
 
     // Hole (case a): reject if the line falls through between k and k′. The in-plane
     // moment, times h·|d|, is M = (p_x d_x + p_z d_z)·d_y − p_y·h², the same at every
     // point of the line. (p_y·|d|/h would do at the exact foot point, but in f32 p slides
     // along the line by ~ε|o|, and 1/h would amplify that for steep lines.) Rejection
     // needs x_B·h·|d_y| ≥ |M| + r·h·(|d| − |d_y|): if even |M| alone is out of reach the
-    // line is kept.
+    // line is kept, before any root is taken.
     let hole = a_h_sq.lt(c!(b.inner_safe_sq) * h_sq);
-    let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
-    let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
-    let out_of_reach = edge.lt(moment * moment);
-    let len = len_sq.sqrt();
-    let rhs = moment.abs() + c!(F::minor(b)) * h * (len - d.y.abs());
-    let hole_keep = out_of_reach | edge.lt(rhs * rhs);
+    let in_hole = undecided & !band & hole;
+    let hole_keep = if in_hole.any() {
+        let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
+        let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
+        let out_of_reach = edge.lt(moment * moment);
+        if (in_hole & !out_of_reach).any() {
+            let h = h_sq.sqrt();
+            let len = len_sq.sqrt();
+            let rhs = moment.abs() + c!(F::minor(b)) * h * (len - d.y.abs());
+            out_of_reach | edge.lt(rhs * rhs)
+        } else {
+            yes
+        }
+    } else {
+        yes
+    };
 
     // Case b (R − r ≤ a < R) keeps what sphere + slab keep.
     let by_case = axis_parallel.select_mask(
         axis_keep,
-        band.select_mask(band_keep, hole.select_mask(hole_keep, M32s::splat(s, true))),
+        band.select_mask(band_keep, hole.select_mask(hole_keep, yes)),
     );
     keep & by_case
 }

@@ -13,8 +13,9 @@ scalar_cull! {
     /// ρ² along the line is a convex quadratic in t, so "both clip ends inside the inner
     /// cylinder" means the whole clipped piece is inside it. Works from the foot point so the
     /// quadratic is well conditioned for far origins. The four cases (outside the slab,
-    /// parallel to the axis, missing the cylinder, inside the hole) are masks, selected; the
-    /// clip uses the float type's `min`/`max`, which ignore a NaN operand.
+    /// parallel to the axis, missing the cylinder, nothing left after the clip) are masks,
+    /// selected, with an exit wherever no lane is still undecided (at width 1, the scalar
+    /// early exits); the clip uses the float type's `min`/`max`, which ignore a NaN operand.
     pub struct ThickCylinderCull = "thick_cylinder";
 }
 
@@ -35,6 +36,11 @@ impl CullKernel for ThickCylinderCull {
         // speed); a horizontal line is in it or not at all.
         let horizontal = n.y.eq(c!(0.0));
         let outside_slab = horizontal & p.y.abs().gt(ms);
+        // The scalar code's early exits, as "no lane is still undecided" (at width 1, the
+        // exit itself): every lane outside the slab, …
+        if outside_slab.all() {
+            return !outside_slab;
+        }
         let inv = c!(1.0) / n.y;
         let t0 = (-ms - p.y) * inv;
         let t1 = (ms - p.y) * inv;
@@ -50,10 +56,19 @@ impl CullKernel for ThickCylinderCull {
         let axis_keep = rho2_foot.le(outer_sq) & rho2_foot.ge(inner_sq);
         let disc = half_b * half_b - h2 * (rho2_foot - outer_sq);
         let misses_cylinder = disc.lt(c!(0.0));
+        // … or every lane settled without the cylinder's root: outside the slab, parallel
+        // to the axis, or missing the cylinder.
+        if (outside_slab | axis_parallel | misses_cylinder).all() {
+            return !outside_slab & axis_parallel & axis_keep;
+        }
         let root = disc.sqrt();
         let lo = lo.max_num((-half_b - root) / h2);
         let hi = hi.min_num((-half_b + root) / h2);
         let empty = lo.gt(hi);
+        // … or nothing left of any lane's line after the clip.
+        if (outside_slab | axis_parallel | misses_cylinder | empty).all() {
+            return !outside_slab & axis_parallel & axis_keep;
+        }
         // Reject only if both ends of the clipped piece are inside the hole.
         macro_rules! rho2 {
             ($t:expr) => {
