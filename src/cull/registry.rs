@@ -10,6 +10,31 @@ use glam::Vec3;
 use std::fmt;
 use std::str::FromStr;
 
+/// The one map from [`CullKind`] to its cull type: binds the cull of `$kind` to `$cull`
+/// and evaluates `$body`, for every cull with a kernel; `discriminant_f64` (no kernel, no
+/// batch form) evaluates `$f64` instead. [`CullKind::visit`] and
+/// [`CullKind::visit_kernel`] are this map with two different trait bounds.
+macro_rules! by_kind {
+    ($kind:expr, $cull:ident => $body:expr, f64: $f64:expr) => {
+        match $kind {
+            CullKind::None => by_kind!(@bind $cull = NoCull, $body),
+            CullKind::Sphere => by_kind!(@bind $cull = SphereCull, $body),
+            CullKind::Aabb => by_kind!(@bind $cull = AabbCull, $body),
+            CullKind::Cychosz => by_kind!(@bind $cull = CychoszCull, $body),
+            CullKind::ThickCylinder => by_kind!(@bind $cull = ThickCylinderCull, $body),
+            CullKind::Skala => by_kind!(@bind $cull = SkalaCull, $body),
+            CullKind::Ellipsoid => by_kind!(@bind $cull = EllipsoidCull, $body),
+            CullKind::Quadric => by_kind!(@bind $cull = QuadricCull, $body),
+            CullKind::Discriminant => by_kind!(@bind $cull = DiscriminantCull, $body),
+            CullKind::DiscriminantF64 => $f64,
+        }
+    };
+    (@bind $cull:ident = $value:expr, $body:expr) => {{
+        let $cull = $value;
+        $body
+    }};
+}
+
 /// Every cull by name: the registry.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum CullKind {
@@ -68,18 +93,7 @@ impl CullKind {
 
     /// Hands the concrete cull to `visitor`, so generic code is monomorphized per cull.
     pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
-        match self {
-            CullKind::None => visitor.visit(NoCull),
-            CullKind::Sphere => visitor.visit(SphereCull),
-            CullKind::Aabb => visitor.visit(AabbCull),
-            CullKind::Cychosz => visitor.visit(CychoszCull),
-            CullKind::ThickCylinder => visitor.visit(ThickCylinderCull),
-            CullKind::Skala => visitor.visit(SkalaCull),
-            CullKind::Ellipsoid => visitor.visit(EllipsoidCull),
-            CullKind::Quadric => visitor.visit(QuadricCull),
-            CullKind::Discriminant => visitor.visit(DiscriminantCull),
-            CullKind::DiscriminantF64 => visitor.visit(DiscriminantF64Cull),
-        }
+        by_kind!(self, cull => visitor.visit(cull), f64: visitor.visit(DiscriminantF64Cull))
     }
 
     /// One line through the registry: convenient, but dispatches per call.
@@ -142,18 +156,7 @@ impl CullKind {
     /// Hands the cull's one-source kernel to `visitor`, or `None` for a cull without a
     /// lane form (`discriminant_f64`): the kernels are exactly [`BATCHED`].
     pub(crate) fn visit_kernel<V: KernelVisitor>(self, visitor: V) -> Option<V::Output> {
-        Some(match self {
-            CullKind::None => visitor.visit(NoCull),
-            CullKind::Sphere => visitor.visit(SphereCull),
-            CullKind::Aabb => visitor.visit(AabbCull),
-            CullKind::Cychosz => visitor.visit(CychoszCull),
-            CullKind::ThickCylinder => visitor.visit(ThickCylinderCull),
-            CullKind::Skala => visitor.visit(SkalaCull),
-            CullKind::Ellipsoid => visitor.visit(EllipsoidCull),
-            CullKind::Quadric => visitor.visit(QuadricCull),
-            CullKind::Discriminant => visitor.visit(DiscriminantCull),
-            CullKind::DiscriminantF64 => return None,
-        })
+        Some(by_kind!(self, kernel => visitor.visit(kernel), f64: return None))
     }
 }
 
