@@ -1,10 +1,13 @@
-//! Batch culls against their scalar twins and the oracle, at every dispatch level this
+//! Batch culls against the scalar culls and the oracle, at every dispatch level this
 //! CPU has (scalar, AVX2, AVX-512 here; scalar and NEON on AArch64).
 //!
 //! The claim is **bit-identical verdicts** (and bit-identical lines from the lane transform
-//! of world rays, `Lines::fill_from_rays_batch`, against `Torus::line_to_local`): the batch cull evaluates the scalar cull's
-//! expressions in the same order with IEEE-exact lane operations and no fused
-//! multiply-add, so every line's keep bit must equal `Cull::keeps` on the same f32 line.
+//! of world rays, `Lines::fill_from_rays_batch`, against `Torus::line_to_local`): each
+//! cull is one kernel, generic over the lane width, and `Cull::keeps` is that kernel at
+//! width 1; the lanes evaluate the same expressions in the same order with IEEE-exact
+//! operations and no fused multiply-add, and its early exits ("no lane is still
+//! undecided") take no lane's answer from another, so every line's keep bit must equal
+//! `Cull::keeps` on the same f32 line.
 //! Equality is asserted on every line, and so is the consequence the renderer cares
 //! about: no batch cull rejects a line the oracle calls a hit.
 //!

@@ -317,3 +317,21 @@ fn lane_bits<M: pulp::bytemuck::NoUninit>(mask: &M, lanes: usize) -> u64 {
         }
     }
 }
+
+// ---- Added for the one-source culls (issue 18): each cull's kernel in `crate::cull` is
+// generic over the lane width, and at width 1 (`pulp::Scalar`) it is the scalar cull.
+
+impl<S: Simd> M32s<S> {
+    /// Whether any lane is true. A kernel's "no lane is still undecided" exit
+    /// (`if !keep.any() { return keep }`) is, at width 1, the scalar cull's early exit.
+    #[inline(always)]
+    pub(crate) fn any(self) -> bool {
+        self.bits() != 0
+    }
+
+    /// Whether every lane is true (at width 1: the lane itself).
+    #[inline(always)]
+    pub(crate) fn all(self) -> bool {
+        !(!self).any()
+    }
+}

@@ -8,9 +8,10 @@
 //! * [`Lines`]: torus-frame lines as structure of arrays ([`Lines::from_rays`] builds
 //!   them from world rays with [`crate::Torus::line_to_local`], the scalar path's own
 //!   transform).
-//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. Each batch cull
-//!   mirrors its scalar twin in [`crate::cull`] expression for expression, so the verdicts
-//!   are bit-identical (`tests/batch.rs` checks it at every dispatch level).
+//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. Each cull is written
+//!   once in [`crate::cull`], generic over the lane width; the scalar cull is the same
+//!   kernel at width 1, so the verdicts are bit-identical (`tests/batch.rs` checks it at
+//!   every dispatch level).
 //! * [`Dispatch`] and [`Isa`]: the instruction set, detected at run time (AVX-512, AVX2,
 //!   NEON, or the scalar fallback) and recorded in `meta.isa`; `TORUS_CULL_ISA` forces a
 //!   lower one.
@@ -37,16 +38,17 @@
 
 mod cull;
 mod exact;
-mod frame;
 mod isa;
-mod lanes;
+pub(crate) mod lanes;
 mod lines;
 mod mask;
 mod solve;
-mod vec3s;
+mod to_local;
+pub(crate) mod vec3s;
 mod wavefront;
 
-pub use cull::{BATCHED, NoBatchForm, cull_batch};
+pub use crate::cull::BATCHED;
+pub use cull::{NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;

@@ -1,32 +1,36 @@
 //! `aabb`: the torus's own box, what a BVH leaf already knows.
 
-use super::{Cull, CullBounds};
-use glam::Vec3;
+use super::CullBounds;
+use super::kernel::{CullKernel, scalar_cull};
+use crate::batch::lanes::{F32s, M32s};
+use crate::batch::vec3s::Vec3s;
+use pulp::Simd;
 
-/// Rejects lines that miss the box [−(R+r_η), R+r_η] × [−r_η, r_η] × [−(R+r_η), R+r_η].
-///
-/// The slab method over all t. A zero direction component gives ±∞ slab distances, and
-/// an origin exactly on that slab's plane gives 0·∞ = NaN. glam's component-wise
-/// `min`/`max` (`a < b ? a : b`) can pass that NaN on, and the verdict for such a line
-/// is then whatever the comparisons make of it. That is still conservative: the line lies
-/// in the plane of a padded face, η = 2⁻¹²·(R + r) beyond the torus's own box, so it cannot
-/// hit the torus.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct AabbCull;
+scalar_cull! {
+    /// Rejects lines that miss the box [−(R+r_η), R+r_η] × [−r_η, r_η] × [−(R+r_η), R+r_η].
+    ///
+    /// The slab method over all t: keep iff the intervals t ∈ [(−h − o)/d, (h − o)/d] of the
+    /// three axes overlap. A zero direction component gives ±∞ slab distances, and an origin
+    /// exactly on that slab's plane gives 0·∞ = NaN. glam's component-wise `min`/`max`
+    /// (`a < b ? a : b`, kept on lanes) can pass that NaN on, and the verdict for such a
+    /// line is then whatever the comparisons make of it. That is still conservative: the line
+    /// lies in the plane of a padded face, η = 2⁻¹²·(R + r) beyond the torus's own box, so it
+    /// cannot hit the torus.
+    pub struct AabbCull = "aabb";
+}
 
-impl Cull for AabbCull {
-    fn name(&self) -> &'static str {
-        "aabb"
-    }
-
+impl CullKernel for AabbCull {
     #[inline(always)]
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let half = Vec3::new(b.outer_safe, b.minor_safe, b.outer_safe);
-        let inv = dir.recip();
-        let t0 = (-half - origin) * inv;
-        let t1 = (half - origin) * inv;
-        let near = t0.min(t1);
-        let far = t0.max(t1);
-        near.max_element() <= far.min_element()
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+        let outer = F32s::splat(s, b.outer_safe);
+        let half = Vec3s::new(outer, F32s::splat(s, b.minor_safe), outer);
+        let neg_half = Vec3s::new(-half.x, -half.y, -half.z);
+        let one = F32s::splat(s, 1.0);
+        let inv = Vec3s::new(one / d.x, one / d.y, one / d.z);
+        let t0 = (neg_half - o).mul_elem(inv);
+        let t1 = (half - o).mul_elem(inv);
+        let near = t0.min_cmp(t1);
+        let far = t0.max_cmp(t1);
+        near.max_element().le(far.min_element())
     }
 }

@@ -1,76 +1,82 @@
 //! `discriminant` and `discriminant_f64`: the ray–torus quartic's real-root
 //! classification, exact and root-free.
 
-use super::{Cull, CullBounds, moderate};
+use super::kernel::{Cull, CullKernel, scalar_cull};
+use super::{CullBounds, moderate};
+use crate::batch::lanes::{F32s, F64s, M32s, M64s};
+use crate::batch::vec3s::Vec3s;
 use glam::Vec3;
-use std::ops::{Add, Mul, Sub};
+use pulp::{Scalar, Simd};
+use std::ops::{Add, BitAnd, BitOr, Mul, Not, Sub};
 
-/// Reject a line when its quartic has no real root, read from the discriminant; f32.
-///
-/// **Bound.** With unit d, the foot point f (f·d = 0) and lengths in units of R
-/// (r′ = r/R), the torus quartic along the line is exactly
-/// F(t) = t⁴ + 2P t² + 8Q t + S, with k = |f|² + 1 − r′², P = k − 2 + 2d_y²,
-/// Q = f_y d_y, S = k² − 4(f_x² + f_z²). A depressed quartic y⁴ + p y² + q y + s has no
-/// real root iff its discriminant is > 0 and (p > 0 or s > p²/4) (E. L. Rees, Amer.
-/// Math. Monthly 29, 1922; D. Lazard, J. Symbolic Comput. 5, 1988), here:
-/// **reject ⇔ Δ′ > 0 ∧ (P > 0 ∨ S > P²)**, with
-/// Δ′ = Δ/256 = S(S − P²)² − 8Q²(P³ − 9PS + 54Q²). Only Q² appears, so d_y enters as
-/// d_y²/|d|²: one division (as in Cychosz), no root, no branch (it vectorizes). Lines
-/// outside the padded bounding sphere are rejected too, which also keeps the degree-12
-/// terms of Δ′ far from overflow for distant lines.
-///
-/// **Why it is sound.** F > 0 exactly outside the tube (F = (D² − r²)·G with D the
-/// distance to the core circle and G > 0 on a ring torus), and its leading coefficient is
-/// positive, so no real root means the line never enters the torus. The one no-root case
-/// not rejected (two complex-conjugate double roots, Δ = 0) is kept: harmless.
-///
-/// **Floating point.** At a tangent line Δ has a simple zero, so its relative error is
-/// unbounded there: no margin is put on Δ. The tube is padded instead (r′ = r_η/R,
-/// r_η = r + η), so a line that hits the torus has to move by more than η before its
-/// T_η quartic loses its real roots: rounding that acts like a smaller move cannot make
-/// it look rootless. The kept misses are the lines within η of the surface (the padding
-/// band), and nothing else. Two evaluation details keep f32 rounding that small:
-/// * f must be orthogonal to d to the precision of the torus, not of the origin: the
-///   foot point is projected twice (the second time from a point near the torus), as a
-///   far f32 foot point slides along the line by ≈ ε|o| and changes Q;
-/// * S is evaluated as (ρ² − 1)² + b(2(ρ² + 1) + b), b = f_y² − r′², ρ² = f_x² + f_z²:
-///   k² − 4ρ² without its cancellation (both ≈ 4 on a hitting line, S ≈ r′²).
-///
-/// That this suffices is measured, not proven: 0 rejected hits on the adversarial and
-/// conservativeness families (ν 1.01–1000, R 1e-3–1e3, tangents to ±1e-7·r, near-double
-/// roots, origins 250·(R + r) away), where every cull, even `sphere`, still passes with
-/// η four times smaller, and fails at sixteen times smaller.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct DiscriminantCull;
+scalar_cull! {
+    /// Reject a line when its quartic has no real root, read from the discriminant; f32.
+    ///
+    /// **Bound.** With unit d, the foot point f (f·d = 0) and lengths in units of R
+    /// (r′ = r/R), the torus quartic along the line is exactly
+    /// F(t) = t⁴ + 2P t² + 8Q t + S, with k = |f|² + 1 − r′², P = k − 2 + 2d_y²,
+    /// Q = f_y d_y, S = k² − 4(f_x² + f_z²). A depressed quartic y⁴ + p y² + q y + s has no
+    /// real root iff its discriminant is > 0 and (p > 0 or s > p²/4) (E. L. Rees, Amer.
+    /// Math. Monthly 29, 1922; D. Lazard, J. Symbolic Comput. 5, 1988), here:
+    /// **reject ⇔ Δ′ > 0 ∧ (P > 0 ∨ S > P²)**, with
+    /// Δ′ = Δ/256 = S(S − P²)² − 8Q²(P³ − 9PS + 54Q²). Only Q² appears, so d_y enters as
+    /// d_y²/|d|²: one division (as in Cychosz), no root, no branch (it vectorizes). Lines
+    /// outside the padded bounding sphere are rejected too, which also keeps the degree-12
+    /// terms of Δ′ far from overflow for distant lines.
+    ///
+    /// **Why it is sound.** F > 0 exactly outside the tube (F = (D² − r²)·G with D the
+    /// distance to the core circle and G > 0 on a ring torus), and its leading coefficient is
+    /// positive, so no real root means the line never enters the torus. The one no-root case
+    /// not rejected (two complex-conjugate double roots, Δ = 0) is kept: harmless.
+    ///
+    /// **Floating point.** At a tangent line Δ has a simple zero, so its relative error is
+    /// unbounded there: no margin is put on Δ. The tube is padded instead (r′ = r_η/R,
+    /// r_η = r + η), so a line that hits the torus has to move by more than η before its
+    /// T_η quartic loses its real roots: rounding that acts like a smaller move cannot make
+    /// it look rootless. The kept misses are the lines within η of the surface (the padding
+    /// band), and nothing else. Two evaluation details keep f32 rounding that small:
+    /// * f must be orthogonal to d to the precision of the torus, not of the origin: the
+    ///   foot point is projected twice (the second time from a point near the torus), as a
+    ///   far f32 foot point slides along the line by ≈ ε|o| and changes Q;
+    /// * S is evaluated as (ρ² − 1)² + b(2(ρ² + 1) + b), b = f_y² − r′², ρ² = f_x² + f_z²:
+    ///   k² − 4ρ² without its cancellation (both ≈ 4 on a hitting line, S ≈ r′²).
+    ///
+    /// That this suffices is measured, not proven: 0 rejected hits on the adversarial and
+    /// conservativeness families (ν 1.01–1000, R 1e-3–1e3, tangents to ±1e-7·r, near-double
+    /// roots, origins 250·(R + r) away), where every cull, even `sphere`, still passes with
+    /// η four times smaller, and fails at sixteen times smaller.
+    pub struct DiscriminantCull = "discriminant";
+}
 
-impl Cull for DiscriminantCull {
-    fn name(&self) -> &'static str {
-        "discriminant"
-    }
-
+impl CullKernel for DiscriminantCull {
     #[inline(always)]
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+        macro_rules! c {
+            ($x:expr) => {
+                F32s::splat(s, $x)
+            };
+        }
         // The foot point from the moment m = o × d, f = d × m/|d|², is orthogonal to d
         // to the rounding of f itself; o − d(o·d)/|d|² slides along the line by ≈ ε|o|,
         // which changes Q = f_y d_y (a far, steep line through a small hole was once
         // rejected although it hit). It is also a shorter dependency chain.
         // With |d|² in [2⁻⁴⁰, 2⁴⁰], |m|² cannot overflow for origins within 10¹³.
-        let d = moderate(dir);
-        let m = origin.cross(d);
-        let inv_len_sq = 1.0 / d.length_squared();
+        let d = moderate(d);
+        let m = o.cross(d);
+        let inv_len_sq = c!(1.0) / d.length_squared();
         let f_sq = m.length_squared() * inv_len_sq;
         let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
-        let inside_sphere = f_sq <= b.outer_safe_sq;
-        let fy_sq = f_y * f_y * b.inv_major_sq;
-        let rho_sq = f_sq * b.inv_major_sq - fy_sq;
+        let inside_sphere = f_sq.le(c!(b.outer_safe_sq));
+        let fy_sq = f_y * f_y * c!(b.inv_major_sq);
+        let rho_sq = f_sq * c!(b.inv_major_sq) - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
-        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq)
+        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, c!(b.minor_rel_sq))
     }
 }
 
 /// [`DiscriminantCull`] evaluated in f64 from the f32 line: same bound and padding, about
 /// 2⁻²⁹ times the rounding of the f32 arithmetic (the f32 line itself, from the
-/// world → torus transform, still needs the padding).
+/// world → torus transform, still needs the padding). Scalar only: it has no batch form.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct DiscriminantF64Cull;
 
@@ -90,30 +96,75 @@ impl Cull for DiscriminantF64Cull {
         let fy_sq = f_y * f_y * b.inv_major_sq_f64;
         let rho_sq = f_sq * b.inv_major_sq_f64 - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
-        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq_f64)
+        let one = |x: f64| F64s::splat(Scalar::new(), x);
+        let rootless = no_real_root(
+            one(rho_sq),
+            one(fy_sq),
+            one(unit_y_sq),
+            one(b.minor_rel_sq_f64),
+        );
+        inside_sphere & !rootless.m
+    }
+}
+
+/// The float lanes [`no_real_root`] runs on: f32 for the cull (every width), f64 for
+/// `discriminant_f64` (width 1).
+trait Real: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> {
+    /// Its lane mask.
+    type Mask: Not<Output = Self::Mask> + BitAnd<Output = Self::Mask> + BitOr<Output = Self::Mask>;
+    /// `x` in every lane (exact: the constants are small integers).
+    fn constant(self, x: f32) -> Self;
+    /// `self > o`, per lane.
+    fn greater(self, o: Self) -> Self::Mask;
+}
+
+impl<S: Simd> Real for F32s<S> {
+    type Mask = M32s<S>;
+    #[inline(always)]
+    fn constant(self, x: f32) -> Self {
+        F32s::splat(self.s, x)
+    }
+    #[inline(always)]
+    fn greater(self, o: Self) -> M32s<S> {
+        self.gt(o)
+    }
+}
+
+impl<S: Simd> Real for F64s<S> {
+    type Mask = M64s<S>;
+    #[inline(always)]
+    fn constant(self, x: f32) -> Self {
+        F64s::splat(self.s, f64::from(x))
+    }
+    #[inline(always)]
+    fn greater(self, o: Self) -> M64s<S> {
+        self.gt(o)
     }
 }
 
 /// Whether F(t) = t⁴ + 2P t² + 8Q t + S has no real root, at R = 1, from ρ² = f_x² + f_z²,
 /// f_y², d̂_y² and r′². About 20 multiplies and 12 adds, no branch.
 #[inline(always)]
-fn no_real_root<T>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> bool
-where
-    T: Copy + From<f32> + PartialOrd + Add<Output = T> + Sub<Output = T> + Mul<Output = T>,
-{
-    let c = |x: f32| T::from(x);
-    let rho_sq_m1 = rho_sq - c(1.0);
+fn no_real_root<T: Real>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> T::Mask {
+    // A macro, not a closure: a closure that LLVM leaves outlined would run without the
+    // SIMD target features.
+    macro_rules! c {
+        ($x:expr) => {
+            rho_sq.constant($x)
+        };
+    }
+    let rho_sq_m1 = rho_sq - c!(1.0);
     let b = fy_sq - minor_sq;
     // P = k − 2 + 2d̂_y², with k − 2 = (ρ² − 1) + b.
-    let p = rho_sq_m1 + b + c(2.0) * unit_y_sq;
+    let p = rho_sq_m1 + b + c!(2.0) * unit_y_sq;
     // S = k² − 4ρ², rearranged so that no two large terms cancel.
-    let s = rho_sq_m1 * rho_sq_m1 + b * (c(2.0) * (rho_sq + c(1.0)) + b);
+    let s = rho_sq_m1 * rho_sq_m1 + b * (c!(2.0) * (rho_sq + c!(1.0)) + b);
     let q_sq = fy_sq * unit_y_sq;
     let p_sq = p * p;
     let s_minus_p_sq = s - p_sq;
     let delta = s * s_minus_p_sq * s_minus_p_sq
-        - c(8.0) * q_sq * (p_sq * p - c(9.0) * p * s + c(54.0) * q_sq);
-    (delta > c(0.0)) & ((p > c(0.0)) | (s_minus_p_sq > c(0.0)))
+        - c!(8.0) * q_sq * (p_sq * p - c!(9.0) * p * s + c!(54.0) * q_sq);
+    delta.greater(c!(0.0)) & (p.greater(c!(0.0)) | s_minus_p_sq.greater(c!(0.0)))
 }
 
 #[cfg(test)]

@@ -1,85 +1,93 @@
 //! `ellipsoid`: Cychosz's test with the sphere replaced by the outer ellipsoid
 //! ρ² + (ν + 1)·y² ≤ (R + r)², which touches the torus.
 
-use super::{Cull, CullBounds, foot_point, moderate};
-use glam::Vec3;
+use super::kernel::{CullKernel, scalar_cull};
+use super::{CullBounds, foot_point, moderate};
+use crate::batch::lanes::{F32s, M32s};
+use crate::batch::vec3s::Vec3s;
+use pulp::Simd;
 
-/// Reject lines that miss E ∩ {|y| ≤ r}, E the ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².
-///
-/// **Bound.** Scaling y by s = √(ν + 1) turns E into the sphere of radius R + r, so this
-/// is Cychosz's sphere chord and slab test on the y-scaled line, with the slab scaled to
-/// |y′| ≤ s·r.
-///
-/// **Why it is sound.** On the tube surface ρ = R + r cos θ, y = r sin θ the left side
-/// of E minus (R + r)² is −Rr(1 − cos θ)² ≤ 0, and ρ² + (ν + 1)·y² is convex on each
-/// cross-section disk, so the solid torus lies in E, touching it on the outer equator
-/// (θ = 0); the slab touches it on the circles ρ = R, y = ±r. E lies in the sphere
-/// R + r, so in exact arithmetic this rejects every line `cychosz` rejects, and more:
-/// 0.56 → 0.91 of the isotropic misses at ν = 1.1 (Cychosz 1991, Graphics Gems II; the
-/// ellipsoid is this crate's addition).
-///
-/// **Floating point.** The identity holds for any R > 0, r > 0, so it is applied to the
-/// padded torus T_η (tube r_η = r + η): ν_η = R/r_η, s = √(ν_η + 1) rounded down (which
-/// only widens the ellipsoid), radius R + r_η, slab s·r_η. Every point within η of the
-/// torus lies in T_η ⊂ E_η, so rounding that moves the line by less than η is absorbed.
-/// The foot point of the y-scaled line is taken from the y-scaled origin: for a line
-/// that passes near the torus the origin is its foot point minus t·d, so the projection
-/// cancels ≈ ε·|t d| per component, in unscaled units the same ≈ ε|o| as Cychosz's (not
-/// s times it). Cost: Cychosz's plus the scaling, measured within about 10 % of it.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct EllipsoidCull;
+scalar_cull! {
+    /// Reject lines that miss E ∩ {|y| ≤ r}, E the ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².
+    ///
+    /// **Bound.** Scaling y by s = √(ν + 1) turns E into the sphere of radius R + r, so this
+    /// is Cychosz's sphere chord and slab test on the y-scaled line, with the slab scaled to
+    /// |y′| ≤ s·r.
+    ///
+    /// **Why it is sound.** On the tube surface ρ = R + r cos θ, y = r sin θ the left side
+    /// of E minus (R + r)² is −Rr(1 − cos θ)² ≤ 0, and ρ² + (ν + 1)·y² is convex on each
+    /// cross-section disk, so the solid torus lies in E, touching it on the outer equator
+    /// (θ = 0); the slab touches it on the circles ρ = R, y = ±r. E lies in the sphere
+    /// R + r, so in exact arithmetic this rejects every line `cychosz` rejects, and more:
+    /// 0.56 → 0.91 of the isotropic misses at ν = 1.1 (Cychosz 1991, Graphics Gems II; the
+    /// ellipsoid is this crate's addition).
+    ///
+    /// **Floating point.** The identity holds for any R > 0, r > 0, so it is applied to the
+    /// padded torus T_η (tube r_η = r + η): ν_η = R/r_η, s = √(ν_η + 1) rounded down (which
+    /// only widens the ellipsoid), radius R + r_η, slab s·r_η. Every point within η of the
+    /// torus lies in T_η ⊂ E_η, so rounding that moves the line by less than η is absorbed.
+    /// The foot point of the y-scaled line is taken from the y-scaled origin: for a line
+    /// that passes near the torus the origin is its foot point minus t·d, so the projection
+    /// cancels ≈ ε·|t d| per component, in unscaled units the same ≈ ε|o| as Cychosz's (not
+    /// s times it). Cost: Cychosz's plus the scaling, measured within about 10 % of it.
+    pub struct EllipsoidCull = "ellipsoid";
+}
 
-impl Cull for EllipsoidCull {
-    fn name(&self) -> &'static str {
-        "ellipsoid"
-    }
-
+impl CullKernel for EllipsoidCull {
     #[inline(always)]
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        ellipsoid_slab(b, origin, dir).keep
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+        ellipsoid_slab(s, b, o, d).keep
     }
 }
 
 /// The y-scaled line and its ellipsoid chord, shared with `quadric`, which refines the
 /// survivors (so `quadric` rejects everything `ellipsoid` does, bit for bit).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct EllipsoidChord {
+pub(crate) struct EllipsoidChord<S: Simd> {
     /// Foot point of the y-scaled line: its point closest to the centre.
-    pub foot: Vec3,
-    /// Direction of the y-scaled line (from the rescaled direction, |d| ∈ [1, 2√3)·s).
-    pub dir: Vec3,
+    pub foot: Vec3s<S>,
+    /// Direction of the y-scaled line (from the moderated direction).
+    pub dir: Vec3s<S>,
     /// 1/|dir|².
-    pub inv_len_sq: f32,
+    pub inv_len_sq: F32s<S>,
     /// (R + r_η)² − |foot|²: the squared half chord, negative when E is missed.
-    pub half_chord_sq: f32,
+    pub half_chord_sq: F32s<S>,
     /// The verdict: the line meets E ∩ slab.
-    pub keep: bool,
+    pub keep: M32s<S>,
 }
 
 /// The y-scaled line's sphere chord and slab test, without a square root or a branch.
 #[inline(always)]
-pub(crate) fn ellipsoid_slab(b: &CullBounds, origin: Vec3, dir: Vec3) -> EllipsoidChord {
+pub(crate) fn ellipsoid_slab<S: Simd>(
+    s: S,
+    b: &CullBounds,
+    origin: Vec3s<S>,
+    dir: Vec3s<S>,
+) -> EllipsoidChord<S> {
+    let zero = F32s::splat(s, 0.0);
     // |d′|² ≤ (ν + 1)|d|², and `quadric` takes fourth powers of d′.
     let d = moderate(dir);
-    let s = b.ellipsoid_y_scale;
-    let dir = Vec3::new(d.x, s * d.y, d.z);
-    let (foot, inv_len_sq) = foot_point(Vec3::new(origin.x, s * origin.y, origin.z), dir);
-    let half_chord_sq = b.outer_safe_sq - foot.length_squared();
+    let scale = F32s::splat(s, b.ellipsoid_y_scale);
+    let dir = Vec3s::new(d.x, scale * d.y, d.z);
+    let (foot, inv_len_sq) = foot_point(Vec3s::new(origin.x, scale * origin.y, origin.z), dir);
+    let half_chord_sq = F32s::splat(s, b.outer_safe_sq) - foot.length_squared();
     let unit_y_sq = dir.y * dir.y * inv_len_sq;
-    let above = foot.y.abs() - b.ellipsoid_slab;
-    let beyond_slab = (above > 0.0) & (above * above > unit_y_sq * half_chord_sq);
+    let above = foot.y.abs() - F32s::splat(s, b.ellipsoid_slab);
+    let beyond_slab = above.gt(zero) & (above * above).gt(unit_y_sq * half_chord_sq);
     EllipsoidChord {
         foot,
         dir,
         inv_len_sq,
         half_chord_sq,
-        keep: (half_chord_sq >= 0.0) & !beyond_slab,
+        keep: half_chord_sq.ge(zero) & !beyond_slab,
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::Cull;
+    use glam::Vec3;
 
     fn keeps(big: f32, small: f32, o: [f32; 3], d: [f32; 3]) -> bool {
         EllipsoidCull.keeps(&CullBounds::new(big, small), Vec3::from(o), Vec3::from(d))

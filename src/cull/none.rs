@@ -1,19 +1,19 @@
 //! `none`: the baseline that keeps every line, so the quartic always runs.
 
-use super::{Cull, CullBounds};
-use glam::Vec3;
+use super::CullBounds;
+use super::kernel::{CullKernel, scalar_cull};
+use crate::batch::lanes::M32s;
+use crate::batch::vec3s::Vec3s;
+use pulp::Simd;
 
-/// Keeps every line.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct NoCull;
+scalar_cull! {
+    /// Keeps every line.
+    pub struct NoCull = "none";
+}
 
-impl Cull for NoCull {
-    fn name(&self) -> &'static str {
-        "none"
-    }
-
+impl CullKernel for NoCull {
     #[inline(always)]
-    fn keeps(&self, _bounds: &CullBounds, _origin: Vec3, _dir: Vec3) -> bool {
-        true
+    fn keeps_lanes<S: Simd>(self, s: S, _: &CullBounds, _: Vec3s<S>, _: Vec3s<S>) -> M32s<S> {
+        M32s::splat(s, true)
     }
 }

@@ -1,23 +1,23 @@
 //! `sphere`: the bounding sphere |x| ≤ R + r.
 
-use super::{Cull, CullBounds, foot_point};
-use glam::Vec3;
+use super::kernel::{CullKernel, scalar_cull};
+use super::{CullBounds, foot_point};
+use crate::batch::lanes::{F32s, M32s};
+use crate::batch::vec3s::Vec3s;
+use pulp::Simd;
 
-/// Rejects lines whose distance from the centre, |foot point|, exceeds R + r_η.
-///
-/// The distance is taken at the foot point p = o − d (o·d)/|d|², not from
-/// |o|² − (o·d)²/|d|², which cancels catastrophically for far origins.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct SphereCull;
+scalar_cull! {
+    /// Rejects lines whose distance from the centre, |foot point|, exceeds R + r_η.
+    ///
+    /// The distance is taken at the foot point p = o − d (o·d)/|d|², not from
+    /// |o|² − (o·d)²/|d|², which cancels catastrophically for far origins.
+    pub struct SphereCull = "sphere";
+}
 
-impl Cull for SphereCull {
-    fn name(&self) -> &'static str {
-        "sphere"
-    }
-
+impl CullKernel for SphereCull {
     #[inline(always)]
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (foot, _) = foot_point(origin, dir);
-        foot.length_squared() <= b.outer_safe_sq
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+        let (foot, _) = foot_point(o, d);
+        foot.length_squared().le(F32s::splat(s, b.outer_safe_sq))
     }
 }

@@ -1,58 +1,82 @@
 //! `thick_cylinder`: the shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's `Test_Thick_Cylinder`).
 
-use super::{Cull, CullBounds, foot_point};
-use glam::Vec3;
+use super::kernel::{CullKernel, scalar_cull};
+use super::{AXIS_PARALLEL_H2, CullBounds, foot_point};
+use crate::batch::lanes::{F32s, M32s};
+use crate::batch::vec3s::Vec3s;
+use pulp::Simd;
 
-/// Clip the line to the slab |y| ≤ r_η and to the outer cylinder ρ ≤ R + r_η; reject if
-/// nothing is left, or if what is left lies wholly inside the inner cylinder ρ < R − r_η.
-///
-/// ρ² along the line is a convex quadratic in t, so "both clip ends inside the inner
-/// cylinder" means the whole clipped piece is inside it. Works from the foot point so the
-/// quadratic is well conditioned for far origins.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct ThickCylinderCull;
+scalar_cull! {
+    /// Clip the line to the slab |y| ≤ r_η and to the outer cylinder ρ ≤ R + r_η; reject if
+    /// nothing is left, or if what is left lies wholly inside the inner cylinder ρ < R − r_η.
+    ///
+    /// ρ² along the line is a convex quadratic in t, so "both clip ends inside the inner
+    /// cylinder" means the whole clipped piece is inside it. Works from the foot point so the
+    /// quadratic is well conditioned for far origins. The four cases (outside the slab,
+    /// parallel to the axis, missing the cylinder, nothing left after the clip) are masks,
+    /// selected, with an exit wherever no lane is still undecided (at width 1, the scalar
+    /// early exits); the clip uses the float type's `min`/`max`, which ignore a NaN operand.
+    pub struct ThickCylinderCull = "thick_cylinder";
+}
 
-impl Cull for ThickCylinderCull {
-    fn name(&self) -> &'static str {
-        "thick_cylinder"
-    }
-
+impl CullKernel for ThickCylinderCull {
     #[inline(always)]
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (p, inv_len_sq) = foot_point(origin, dir);
-        let n = dir * inv_len_sq.sqrt();
-        // Slab |y| ≤ r_η as an interval of t (t measured from the foot point, unit speed).
-        let (mut lo, mut hi) = if n.y == 0.0 {
-            if p.y.abs() > b.minor_safe {
-                return false;
-            }
-            (f32::NEG_INFINITY, f32::INFINITY)
-        } else {
-            let inv = 1.0 / n.y;
-            let t0 = (-b.minor_safe - p.y) * inv;
-            let t1 = (b.minor_safe - p.y) * inv;
-            (t0.min(t1), t0.max(t1))
-        };
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+        // Macros, not closures: a closure that LLVM leaves outlined would run without
+        // the SIMD target features and call every intrinsic out of line.
+        macro_rules! c {
+            ($x:expr) => {
+                F32s::splat(s, $x)
+            };
+        }
+        let (p, inv_len_sq) = foot_point(o, d);
+        let n = d * inv_len_sq.sqrt();
+        let ms = c!(b.minor_safe);
+        // Slab |y| ≤ r_η as an interval of t (t measured from the foot point, unit
+        // speed); a horizontal line is in it or not at all.
+        let horizontal = n.y.eq(c!(0.0));
+        let outside_slab = horizontal & p.y.abs().gt(ms);
+        // The scalar code's early exits, as "no lane is still undecided" (at width 1, the
+        // exit itself): every lane outside the slab, …
+        if outside_slab.all() {
+            return !outside_slab;
+        }
+        let inv = c!(1.0) / n.y;
+        let t0 = (-ms - p.y) * inv;
+        let t1 = (ms - p.y) * inv;
+        let lo = horizontal.select(c!(f32::NEG_INFINITY), t0.min_num(t1));
+        let hi = horizontal.select(c!(f32::INFINITY), t0.max_num(t1));
         // Outer cylinder: ρ²(t) = h² t² + 2 (p_x n_x + p_z n_z) t + (p_x² + p_z²).
         let h2 = n.x * n.x + n.z * n.z;
         let half_b = p.x * n.x + p.z * n.z;
         let rho2_foot = p.x * p.x + p.z * p.z;
-        if h2 < super::AXIS_PARALLEL_H2 {
-            // Parallel to the axis: ρ is constant on the line.
-            return rho2_foot <= b.outer_safe_sq && rho2_foot >= b.inner_safe_sq;
-        }
-        let disc = half_b * half_b - h2 * (rho2_foot - b.outer_safe_sq);
-        if disc < 0.0 {
-            return false;
+        let (outer_sq, inner_sq) = (c!(b.outer_safe_sq), c!(b.inner_safe_sq));
+        // Parallel to the axis: ρ is constant on the line.
+        let axis_parallel = h2.lt(c!(AXIS_PARALLEL_H2));
+        let axis_keep = rho2_foot.le(outer_sq) & rho2_foot.ge(inner_sq);
+        let disc = half_b * half_b - h2 * (rho2_foot - outer_sq);
+        let misses_cylinder = disc.lt(c!(0.0));
+        // … or every lane settled without the cylinder's root: outside the slab, parallel
+        // to the axis, or missing the cylinder.
+        if (outside_slab | axis_parallel | misses_cylinder).all() {
+            return !outside_slab & axis_parallel & axis_keep;
         }
         let root = disc.sqrt();
-        lo = lo.max((-half_b - root) / h2);
-        hi = hi.min((-half_b + root) / h2);
-        if lo > hi {
-            return false;
+        let lo = lo.max_num((-half_b - root) / h2);
+        let hi = hi.min_num((-half_b + root) / h2);
+        let empty = lo.gt(hi);
+        // … or nothing left of any lane's line after the clip.
+        if (outside_slab | axis_parallel | misses_cylinder | empty).all() {
+            return !outside_slab & axis_parallel & axis_keep;
         }
         // Reject only if both ends of the clipped piece are inside the hole.
-        let rho2 = |t: f32| (h2 * t + 2.0 * half_b) * t + rho2_foot;
-        !(rho2(lo) < b.inner_safe_sq && rho2(hi) < b.inner_safe_sq)
+        macro_rules! rho2 {
+            ($t:expr) => {
+                (h2 * $t + c!(2.0) * half_b) * $t + rho2_foot
+            };
+        }
+        let in_hole = rho2!(lo).lt(inner_sq) & rho2!(hi).lt(inner_sq);
+        let general = !misses_cylinder & !empty & !in_hole;
+        !outside_slab & axis_parallel.select_mask(axis_keep, general)
     }
 }

@@ -5,8 +5,11 @@
 //! Each misprint and its correction are written up in the repository's `docs/math.md`
 //! (errata) and in the docs of [`crate::cull::CychoszCull`] and [`crate::cull::SkalaCull`].
 
+use crate::batch::lanes::F32s;
+use crate::batch::vec3s::Vec3s;
 use crate::cull::{Cull, CullBounds, CullVisitor, SectionFormulas, foot_point, skala_keeps};
 use glam::Vec3;
+use pulp::{Scalar, Simd};
 
 /// The paper-as-printed culls by stable name, as [`crate::cull::CullKind`] names the real ones.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -57,7 +60,9 @@ impl Cull for CychoszPrintedCull {
     }
 
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        let (foot, inv_len_sq) = foot_point(origin, dir);
+        let s = Scalar::new();
+        let (p, inv_len_sq) = foot_point(Vec3s::splat(s, origin), Vec3s::splat(s, dir));
+        let (foot, inv_len_sq) = (Vec3::new(p.x.v, p.y.v, p.z.v), inv_len_sq.v);
         let unit = dir * inv_len_sq.sqrt();
         let half_chord_sq = b.outer_safe_sq - foot.length_squared();
         if half_chord_sq < 0.0 {
@@ -80,13 +85,14 @@ impl SectionFormulas for PrintedBand {
     fn minor(b: &CullBounds) -> f32 {
         b.minor_radius
     }
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32 {
-        let inner = b.major_radius - b.minor_radius;
+    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
+        let inner = F32s::splat(a_h.s, b.major_radius - b.minor_radius);
         inner * inner * h_sq - a_h * a_h
     }
-    fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
-        let off = a_h - b.minor_radius * h;
-        b.minor_radius * b.minor_radius * h * h - off * off
+    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
+        let minor = F32s::splat(a_h.s, b.minor_radius);
+        let off = a_h - minor * h;
+        minor * minor * h * h - off * off
     }
 }
 
@@ -111,14 +117,18 @@ impl SectionFormulas for PrintedHole {
     fn minor(b: &CullBounds) -> f32 {
         b.minor_radius
     }
-    fn hole_edge_sq_h2(b: &CullBounds, a_h: f32, h_sq: f32) -> f32 {
-        let inner = b.major_radius - b.minor_radius;
-        let sin_phi_h = a_h / b.major_radius;
+    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
+        let inner = F32s::splat(a_h.s, b.major_radius - b.minor_radius);
+        let sin_phi_h = a_h / F32s::splat(a_h.s, b.major_radius);
         inner * inner * (h_sq - sin_phi_h * sin_phi_h)
     }
-    fn band_height_sq_h2(b: &CullBounds, a_h: f32, h: f32) -> f32 {
-        let off = a_h - b.major_radius * h;
-        b.minor_radius * b.minor_radius * h * h - off * off
+    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
+        let (major, minor) = (
+            F32s::splat(a_h.s, b.major_radius),
+            F32s::splat(a_h.s, b.minor_radius),
+        );
+        let off = a_h - major * h;
+        minor * minor * h * h - off * off
     }
 }
 

@@ -9,6 +9,7 @@
 
 use super::lanes::F32s;
 use super::lines::{BLOCK, Lines};
+use super::mask::KeepMask;
 use super::vec3s::Vec3s;
 use crate::{Ray, Torus};
 use glam::{Mat3, Vec3};
@@ -24,24 +25,20 @@ impl Lines {
         rays: &[Ray],
     ) {
         self.fill_world(rays);
-        let mut far = vec![0u64; self.blocks()];
+        // The lines whose origin is too far for the f32 rotation, a bit each.
+        let mut far = KeepMask::new();
+        far.resize(self.len());
         dispatch.run(ToLocal {
             lines: self,
             center: torus.center(),
             rotation: torus.to_local_rotation(),
             near_sq: torus.near_origin_sq(),
-            far: &mut far,
+            far: &mut far.words,
         });
-        for (w, &word) in far.iter().enumerate() {
-            let mut bits = word;
-            while bits != 0 {
-                let i = w * BLOCK + bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                if i < self.len() {
-                    let line = torus.line_to_local(&rays[i]);
-                    self.set(i, line.origin, line.dir);
-                }
-            }
+        far.clear_tail();
+        for i in far.kept() {
+            let line = torus.line_to_local(&rays[i]);
+            self.set(i, line.origin, line.dir);
         }
     }
 }

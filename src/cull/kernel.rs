@@ -1,0 +1,83 @@
+//! The cull trait ([`Cull`], one line at a time), its visitor ([`CullVisitor`]), and the one
+//! kernel behind both the scalar and the lane form of each cull ([`CullKernel`]).
+//!
+//! **One source.** Each cull is written once, as a [`CullKernel`]: a function generic over
+//! `S: pulp::Simd` on the lane wrappers. pulp's [`pulp::Scalar`] implements `Simd` with
+//! `f32s = f32` and `m32s = bool`, so the kernel instantiated at `Scalar` *is* the scalar
+//! cull ([`keeps_scalar`], what every [`Cull::keeps`] calls), and instantiated at AVX2,
+//! AVX-512 or NEON it is the batch cull of [`crate::batch::cull_batch`]. The two agree bit
+//! for bit by construction: the same operations in the same order, no fused multiply-add
+//! (see `src/batch/lanes.rs`); `tests/batch.rs` checks it at every dispatch level.
+
+use super::CullBounds;
+use crate::batch::lanes::M32s;
+use crate::batch::vec3s::Vec3s;
+use glam::Vec3;
+use pulp::{Scalar, Simd};
+
+/// A bounding test for one torus in its own frame.
+///
+/// `keeps` is a **line** test: `origin + t·dir` for all real t, `dir` finite and non-zero
+/// of any length. `false` means the line provably misses the torus.
+pub trait Cull {
+    /// The stable name used in results, the CLI and plots.
+    fn name(&self) -> &'static str;
+
+    /// `true` to keep the line (run the quartic), `false` to reject it.
+    fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool;
+}
+
+/// Generic code that runs with a concrete cull type; see [`super::CullKind::visit`].
+pub trait CullVisitor {
+    /// What the visit returns.
+    type Output;
+    /// Called once with the concrete cull.
+    fn visit<C: Cull>(self, cull: C) -> Self::Output;
+}
+
+/// A cull written once for every lane width: the verdict for each lane's line, true keeps
+/// it. Instantiated at [`pulp::Scalar`] it is the scalar cull ([`keeps_scalar`]).
+///
+/// Where a scalar cull would leave early, the kernel evaluates every case and selects (a
+/// lane cannot leave alone); an early exit is kept only as "no lane is still undecided",
+/// which at width 1 is the scalar early exit.
+pub(crate) trait CullKernel: Copy {
+    /// The keep mask of the lines `o + t·d`, one per lane.
+    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S>;
+}
+
+/// The kernel at width 1: the scalar cull.
+#[inline(always)]
+pub(crate) fn keeps_scalar<K: CullKernel>(
+    kernel: K,
+    b: &CullBounds,
+    origin: Vec3,
+    dir: Vec3,
+) -> bool {
+    let s = Scalar::new();
+    kernel
+        .keeps_lanes(s, b, Vec3s::splat(s, origin), Vec3s::splat(s, dir))
+        .m
+}
+
+/// Declares a cull, `pub struct $cull = "$name";` with its docs, and its [`Cull`] impl: the
+/// stable name, and [`Cull::keeps`] as the cull's [`CullKernel`] at [`pulp::Scalar`].
+macro_rules! scalar_cull {
+    ($(#[$doc:meta])* pub struct $cull:ident = $name:literal;) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, Default)]
+        pub struct $cull;
+
+        impl $crate::cull::Cull for $cull {
+            fn name(&self) -> &'static str {
+                $name
+            }
+
+            #[inline(always)]
+            fn keeps(&self, b: &$crate::CullBounds, origin: glam::Vec3, dir: glam::Vec3) -> bool {
+                $crate::cull::kernel::keeps_scalar(*self, b, origin, dir)
+            }
+        }
+    };
+}
+pub(crate) use scalar_cull;
