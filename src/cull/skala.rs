@@ -36,10 +36,11 @@ scalar_cull! {
     ///
     /// All radii carry the safety margin of [`CullBounds`]. Rejects a superset of `cychosz`.
     ///
-    /// **One branch-free form.** Every case is evaluated on every line (three square roots,
-    /// no division) and the case selects the answer: on lanes no line can leave early, and at
-    /// width 1 this form measured no slower than the old early-exit scalar code (see
-    /// DESIGN.md §15).
+    /// **One source for scalar and lanes.** The case masks select the answer, and each
+    /// case runs only if some lane is in it (`any`): at width 1 that is the scalar code's
+    /// early exit, on lanes the tail that every open lane needs. Measured one ray at a
+    /// time, this form costs about 17 % more than the old hand-written scalar twin
+    /// (8.5 → 10.0 ns per line, paired, quick workload); on AVX-512 it is 9 % cheaper.
     pub struct SkalaCull = "skala";
 }
 
