@@ -197,24 +197,44 @@ mod tests {
         }
     }
 
-    /// Quartics with known roots: (t² + a²)(t² + b²) shifted to zero mean has no real
-    /// root; (t − 1)(t + 1)(t² + 1) has two.
+    /// [`no_real_root`] itself on quartics t⁴ + 2P t² + 8Q t + S with known roots, driven
+    /// through its inputs.
+    ///
+    /// With d̂_y² = u, a₁ = ρ² − 1 and b = f_y² − r′², the cull forms P = a₁ + b + 2u,
+    /// Q² = f_y² u and S = a₁² + b(2(ρ² + 1) + b) = c² + 4b with c = a₁ + b. So a target
+    /// (P, Q, S) is c = P − 2u, b = (S − c²)/4, a₁ = c − b, f_y² = Q²/u (the inputs are
+    /// algebraic here: ρ² or r′² may be negative). Every value is a short dyadic fraction,
+    /// so the f32 and f64 evaluations are exact and Δ = 0 stays 0.
     #[test]
     fn classification_on_known_quartics() {
-        // t⁴ + 2P t² + 8Q t + S from roots: no cubic term. (t² + 1)(t² + 4):
-        // 2P = 5, Q = 0, S = 4. No real root.
-        let classify = |p: f64, q: f64, s: f64| {
-            let delta =
-                s * (s - p * p).powi(2) - 8.0 * q * q * (p.powi(3) - 9.0 * p * s + 54.0 * q * q);
-            (delta > 0.0) & ((p > 0.0) | (s > p * p))
+        let rootless = |p: f64, q: f64, s: f64| {
+            let u = 0.25;
+            let c = p - 2.0 * u;
+            let b = (s - c * c) / 4.0;
+            let rho_sq = c - b + 1.0;
+            let fy_sq = q * q / u;
+            let minor_sq = fy_sq - b;
+            let f64s = |x: f64| F64s::splat(Scalar::new(), x);
+            let f32s = |x: f64| F32s::splat(Scalar::new(), x as f32);
+            let wide = no_real_root(f64s(rho_sq), f64s(fy_sq), f64s(u), f64s(minor_sq)).m;
+            let narrow = no_real_root(f32s(rho_sq), f32s(fy_sq), f32s(u), f32s(minor_sq)).m;
+            assert_eq!(wide, narrow, "P = {p}, Q = {q}, S = {s}");
+            wide
         };
-        assert!(classify(2.5, 0.0, 4.0));
+        // (t² + 1)(t² + 4) = t⁴ + 5t² + 4: no real root.
+        assert!(rootless(2.5, 0.0, 4.0));
+        // (t² + 2t + 2)(t² − 2t + 5) = t⁴ + 3t² + 6t + 10: no real root, Q ≠ 0.
+        assert!(rootless(1.5, 0.75, 10.0));
         // (t² − 1)(t² + 1) = t⁴ − 1: two real roots.
-        assert!(!classify(0.0, 0.0, -1.0));
+        assert!(!rootless(0.0, 0.0, -1.0));
+        // (t − 1)(t − 2)(t² + 3t + 3.25) = t⁴ − 3.75t² − 3.75t + 6.5: two, Q ≠ 0.
+        assert!(!rootless(-1.875, -0.46875, 6.5));
         // (t² − 1)(t² − 4) = t⁴ − 5t² + 4: four real roots, Δ > 0, P < 0, S < P².
-        assert!(!classify(-2.5, 0.0, 4.0));
+        assert!(!rootless(-2.5, 0.0, 4.0));
         // (t² + 1)² = t⁴ + 2t² + 1: a complex double pair, Δ = 0: kept.
-        assert!(!classify(1.0, 0.0, 1.0));
+        assert!(!rootless(1.0, 0.0, 1.0));
+        // (t² − 1)² = t⁴ − 2t² + 1: a real double pair, Δ = 0: kept.
+        assert!(!rootless(-1.0, 0.0, 1.0));
     }
 
     /// The verdict does not depend on how the direction is scaled, from 1e-19 (|d|² just
