@@ -42,6 +42,7 @@ mod isa;
 mod lanes;
 mod lines;
 mod mask;
+pub(crate) mod real;
 mod solve;
 mod vec3s;
 mod wavefront;
