@@ -20,7 +20,7 @@
 
 use super::lanes::{F32s, F64s, M32s, M64s};
 use pulp::Simd;
-use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Not, Sub};
 
 /// A lane mask of a [`Real`]: each lane true or false (at width 1, a `bool`).
 pub(crate) trait RealMask:
@@ -37,12 +37,7 @@ pub(crate) trait RealMask:
 /// Constants are made with [`Real::splat`] from any value of the type (which carries the
 /// SIMD token), so a step needs no token argument: `x.splat(2.0)`.
 pub(crate) trait Real:
-    Copy
-    + Add<Output = Self>
-    + Sub<Output = Self>
-    + Mul<Output = Self>
-    + Div<Output = Self>
-    + Neg<Output = Self>
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
 {
     /// The lane mask of comparisons.
     type Mask: RealMask;
@@ -51,6 +46,10 @@ pub(crate) trait Real:
     const LANES: usize;
     /// Every lane `x` (rounded to the lane type: exact for f64), same SIMD token as `self`.
     fn splat(self, x: f64) -> Self;
+    /// `−x` (exact: flips the sign bit). Not the `Neg` operator on purpose: pulp's scalar
+    /// "register" negates natively here, where the lane wrappers' `-` goes through integer
+    /// bit operations that cost the scalar solver several percent.
+    fn negate(self) -> Self;
     /// √x, correctly rounded.
     fn sqrt(self) -> Self;
     /// |x|.
@@ -106,15 +105,24 @@ pub(crate) fn sc_mask(b: bool) -> M64s<pulp::Scalar> {
 }
 
 macro_rules! real {
-    ($name:ident, $mask:ident, $elem:ty, $vec:ident, $lanes:ident) => {
+    ($name:ident, $mask:ident, $elem:ty, $m:ident, $lanes:ident, $neg:ident) => {
         impl<S: Simd> RealMask for $mask<S> {
             #[inline(always)]
             fn any(self) -> bool {
-                self.bits() != 0
+                if S::$lanes == 1 {
+                    // The one lane's `bool`, by value (`bits` reads the mask's bytes).
+                    pulp::bytemuck::cast::<S::$m, u8>(self.m) != 0
+                } else {
+                    self.bits() != 0
+                }
             }
             #[inline(always)]
             fn all(self) -> bool {
-                self.bits() == u64::MAX >> (64 - S::$lanes)
+                if S::$lanes == 1 {
+                    self.any()
+                } else {
+                    self.bits() == u64::MAX >> (64 - S::$lanes)
+                }
             }
         }
 
@@ -126,12 +134,29 @@ macro_rules! real {
                 $name::splat(self.s, x as $elem)
             }
             #[inline(always)]
+            fn negate(self) -> Self {
+                $name {
+                    s: self.s,
+                    v: self.s.$neg(self.v),
+                }
+            }
+            #[inline(always)]
             fn sqrt(self) -> Self {
                 $name::sqrt(self)
             }
             #[inline(always)]
             fn abs(self) -> Self {
-                $name::abs(self)
+                if S::$lanes == 1 {
+                    // At width 1, the float type's own operations (not pulp's bit
+                    // manipulations through integer registers): the scalar solver's code.
+                    let a: $elem = pulp::bytemuck::cast(self.v);
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.abs()),
+                    }
+                } else {
+                    $name::abs(self)
+                }
             }
             #[inline(always)]
             fn min(self, o: Self) -> Self {
@@ -163,7 +188,16 @@ macro_rules! real {
             }
             #[inline(always)]
             fn copysign(self, sign: Self) -> Self {
-                $name::copysign(self, sign)
+                if S::$lanes == 1 {
+                    let (a, b): ($elem, $elem) =
+                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(sign.v));
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.copysign(b)),
+                    }
+                } else {
+                    $name::copysign(self, sign)
+                }
             }
             #[inline(always)]
             fn cbrt(self) -> Self {
@@ -191,14 +225,18 @@ macro_rules! real {
             }
             #[inline(always)]
             fn select(mask: $mask<S>, a: Self, b: Self) -> Self {
-                mask.select(a, b)
+                if S::$lanes == 1 {
+                    if mask.any() { a } else { b }
+                } else {
+                    mask.select(a, b)
+                }
             }
         }
     };
 }
 
-real!(F64s, M64s, f64, f64s, F64_LANES);
-real!(F32s, M32s, f32, f32s, F32_LANES);
+real!(F64s, M64s, f64, m64s, F64_LANES, neg_f64s);
+real!(F32s, M32s, f32, m32s, F32_LANES, neg_f32s);
 
 /// Picks the cube root of a lane type (the only step whose seed depends on the width).
 trait CbrtLanes: Sized {
@@ -266,6 +304,7 @@ mod tests {
                     )
                 };
                 same(x + y, a + b);
+                same(x.negate(), -a);
                 same(x - y, a - b);
                 same(x * y, a * b);
                 same(x / y, a / b);

@@ -73,14 +73,14 @@ pub(crate) fn cubic<R: Real>(p: R, q: R, r: R) -> Cubic<R> {
     }
     let a = k!(2.0) * p;
     let b = p * p - k!(4.0) * r;
-    let c = -q * q;
+    let c = q.negate() * q;
     // z = w − a/3 gives w³ + P w + Q. Thirds by multiplication: a division is on the
     // critical path, and the last bit of these is below what the formulas resolve.
     // In p, q, r directly: P' = −(p²/9 + 4r/3), Q' = p(4r/3 − p²/27) − q²/2 (a shorter
     // chain than through a, b and c).
     let a3 = a * k!(1.0 / 3.0);
     let (p2, r43) = (p * p, r * k!(4.0 / 3.0));
-    let third_p = -(p2 * k!(1.0 / 9.0) + r43);
+    let third_p = (p2 * k!(1.0 / 9.0) + r43).negate();
     let half_q = p * (r43 - p2 * k!(1.0 / 27.0)) - k!(0.5) * (q * q);
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
@@ -167,7 +167,7 @@ pub(crate) struct Root<R: Real> {
 
 /// The greatest real root of `h` for the depressed quartic `x⁴ + p x² + q x + r` (finite
 /// inputs).
-#[inline]
+#[inline(always)]
 pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root<Sc> {
     let cubic: Cubic<Sc> = cubic(sc(p), sc(q), sc(r));
     let [a, a3, disc, scale] = [cubic.a, cubic.a3, cubic.disc, cubic.scale].map(|x| x.v);
@@ -248,11 +248,14 @@ pub(crate) fn cardano<R: Real>(third_p: R, half_q: R, disc: R) -> (R, R, R) {
     let cube = half_q.abs() + disc.sqrt();
     // u = ±∛cube and v = −P'/u = ±(−P'/cube)·∛cube²: the division runs while the cube
     // root does.
-    let ratio = -third_p / cube;
+    let ratio = third_p.negate() / cube;
     let big = cube.cbrt();
     let v = ratio * big * big;
     let negative = half_q.gt(zero);
-    let (u, v) = (R::select(negative, -big, big), R::select(negative, -v, v));
+    let (u, v) = (
+        R::select(negative, big.negate(), big),
+        R::select(negative, v.negate(), v),
+    );
     let nonzero = big.ne(zero);
     (
         R::select(nonzero, u, zero),
@@ -266,12 +269,12 @@ pub(crate) fn cardano<R: Real>(third_p: R, half_q: R, disc: R) -> (R, R, R) {
 #[inline(always)]
 pub(crate) fn trigonometric<R: Real>(third_p: R, half_q: R) -> R {
     let one = third_p.splat(1.0);
-    let k = (-third_p).max(third_p.splat(0.0)).sqrt();
+    let k = third_p.negate().max(third_p.splat(0.0)).sqrt();
     // −Q'/k³ = (Q'/P')·√(−1/P'): both divisions and the root overlap the root k. P' = 0
     // makes it NaN or infinite, which `max` and `min` clamp (`clamp` would keep NaN);
     // then k·… is 0.
-    let cos3 = ((half_q / third_p) * (-one / third_p).sqrt())
-        .max(-one)
+    let cos3 = ((half_q / third_p) * (one.negate() / third_p).sqrt())
+        .max(one.negate())
         .min(one);
     // 2k·cos(θ/3) = k·(1 + u).
     k + k * trisect_u(cos3)
