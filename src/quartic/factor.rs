@@ -141,7 +141,6 @@ pub(crate) fn split_at<R: Real>(p: R, q: R, r: R, root: &Root<R>) -> Split<R> {
 /// Roots of the factor `x² + b x + c` with `b² = z` (passed exactly, so the discriminant
 /// does not pay for rounding `m²`).
 #[inline]
-#[allow(clippy::too_many_arguments)]
 fn quadratic_factor(
     b: f64,
     c: f64,
