@@ -36,14 +36,14 @@
 //! and its mask-register support, not by a measurement of both on this code.
 
 mod cull;
-mod exact;
 mod frame;
+mod intersect;
 mod isa;
 mod lanes;
 mod lines;
 mod mask;
+mod quartic;
 pub(crate) mod real;
-mod solve;
 mod vec3s;
 mod wavefront;
 
@@ -51,5 +51,5 @@ pub use cull::{BATCHED, NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
-pub use solve::{Quartics, SolveStats, nearest_roots};
+pub use quartic::{Quartics, SolveStats, nearest_roots};
 pub use wavefront::{Wavefront, WavefrontStats};

@@ -62,7 +62,7 @@ pub(crate) trait Real:
     fn copysign(self, sign: Self) -> Self;
     /// ∛x for x ≥ 0, without libm on the hot path: the solver's own cube root at width 1
     /// ([`crate::quartic`]'s), a bit-trick seed and Halley steps on wider f64 lanes
-    /// (accurate on [`crate::batch::solve`]'s `CBRT_RANGE`, which the lane solver checks).
+    /// (accurate on `crate::batch::quartic`'s `CBRT_RANGE`, which the lane solver checks).
     fn cbrt(self) -> Self;
     /// `self < o`.
     fn lt(self, o: Self) -> Self::Mask;
@@ -258,7 +258,7 @@ impl<S: Simd> CbrtLanes for F64s<S> {
                 v: pulp::bytemuck::cast(crate::quartic::cbrt(y)),
             }
         } else {
-            super::solve::cbrt(self)
+            super::quartic::cbrt(self)
         }
     }
 }
