@@ -6,7 +6,7 @@
 //! One source for the scalar solver and the lanes ([`Real`]): the polynomial seed, the
 //! Halley step of the cube root and the whole trisection are generic; only the cube
 //! root's seed (bits of one `f64` here, Kahan's bit trick on wider lanes in
-//! `crate::batch::solve::cube_root`) depends on the width.
+//! `crate::batch::quartic::cube_root`) depends on the width.
 
 use crate::batch::real::{Real, sc};
 

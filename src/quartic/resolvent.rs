@@ -23,7 +23,7 @@
 //!
 //! **One source.** The steps ([`Cubic`] with its small-root fixed point and guarded Newton
 //! polish, [`cardano`], [`trigonometric`]) are generic over [`Real`], and the lane
-//! solver (`crate::batch::solve::resolvent`) calls the same functions on its registers.
+//! solver (`crate::batch::quartic::resolvent`) calls the same functions on its registers.
 //! What differs is the driver: this one branches (Vieta's `z`, a Newton polish only where
 //! the closed form loses digits, the careful near-double case), the lanes select.
 
