@@ -11,6 +11,7 @@
 use super::lanes::{F64s, M64s};
 use super::lines::BLOCK;
 use super::quartic::nearest::nearest_root;
+use crate::intersect::CHORD_SLACK;
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
@@ -291,7 +292,7 @@ fn intersect_lane<S: Simd>(
         ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
     // `intersect_local`: the chord of the bounding sphere and the range.
     let outer = c!(frame.outer);
-    let chord_sq = outer * outer * c!(1.0 + 1e-12) - p.dot(p);
+    let chord_sq = outer * outer * c!(1.0 + CHORD_SLACK) - p.dot(p);
     let inv_major = inv_r;
     let len = c!(1.0) / inv_len;
     let lo = (t_min * len + s_) * inv_major;
