@@ -58,6 +58,7 @@ use torus_cull::harness::paired;
 use torus_cull::harness::results::{
     BATCH_MODE, BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
 };
+use torus_cull::harness::solver_suite::SolverCase;
 use torus_cull::harness::workload::spec::{BvhSpec, Workload};
 use torus_cull::harness::workload::{Case, generate};
 use torus_cull::{
@@ -111,20 +112,26 @@ const BATCH_TIMED: [CullKind; 6] = [
     CullKind::Discriminant,
 ];
 
+/// One case's batch at one ν, for batch mode.
+struct BatchCase<'a> {
+    case: Case,
+    nu: f64,
+    torus: &'a Torus,
+    rays: &'a [Ray],
+    lines: &'a Lines,
+}
+
 /// Times one cull on one batch in batch mode: `batch_cull_ns` (the SIMD cull over the
 /// structure-of-arrays lines, into a keep mask) and `batch_total_ns` (the wavefront on
 /// world rays: lines, cull, compaction, exact intersection on lanes, hits).
-#[allow(clippy::too_many_arguments)]
-fn time_batch_cull(
-    c: &mut Criterion,
-    dispatch: &Dispatch,
-    cull: CullKind,
-    case: Case,
-    nu: f64,
-    torus: &Torus,
-    rays: &[Ray],
-    lines: &Lines,
-) {
+fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &BatchCase) {
+    let BatchCase {
+        case,
+        nu,
+        torus,
+        rays,
+        lines,
+    } = *on;
     let bounds = CullBounds::of(torus);
     let id = BenchmarkId::new(cull.name(), nu);
     let mut keep = KeepMask::new();
@@ -180,163 +187,206 @@ impl Registered {
     }
 }
 
-fn bench() -> Result<ExitCode, String> {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let mode = Mode::from_args(&args);
-    let workload_path = match std::env::var_os("TORUS_CULL_WORKLOAD") {
-        Some(p) if p.is_empty() => {
-            return Err("TORUS_CULL_WORKLOAD is empty (allowed: a workload file)".into());
-        }
-        Some(p) => PathBuf::from(p),
-        None => PathBuf::from("workloads/default.json"),
-    };
-    let workload =
-        Workload::load(&workload_path).map_err(|e| format!("TORUS_CULL_WORKLOAD: {e}"))?;
-    let config = BenchConfig::from_env(&workload)?;
-    let dispatch = Dispatch::from_env().map_err(|e| e.to_string())?;
-    let out = match std::env::var_os("TORUS_CULL_RESULTS") {
-        Some(p) if p.is_empty() => {
-            return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
-        }
-        Some(p) => PathBuf::from(p),
-        None => {
-            let out = torus_cull::harness::results::default_path(
-                Path::new("results"),
-                &config.file_suffix(&workload),
-            );
-            if mode == Mode::Benchmark {
-                torus_cull::harness::output::create_default_dir(&out)
-                    .map_err(|e| format!("{}: {e}", out.display()))?;
+/// What a run is asked to do, from its arguments and the `TORUS_CULL_*` variables.
+struct Setup {
+    args: Vec<String>,
+    mode: Mode,
+    /// The workload file, which the results file must not overwrite.
+    workload_path: PathBuf,
+    workload: Workload,
+    config: BenchConfig,
+    dispatch: Dispatch,
+    /// The results file of a complete run.
+    out: PathBuf,
+}
+
+impl Setup {
+    /// Reads the arguments and the environment; a bad value is an error naming the
+    /// variable and what it allows.
+    fn from_env() -> Result<Setup, String> {
+        let args: Vec<String> = std::env::args().skip(1).collect();
+        let mode = Mode::from_args(&args);
+        let workload_path = match std::env::var_os("TORUS_CULL_WORKLOAD") {
+            Some(p) if p.is_empty() => {
+                return Err("TORUS_CULL_WORKLOAD is empty (allowed: a workload file)".into());
             }
-            out
-        }
-    };
-    if mode == Mode::Benchmark {
-        // Before the measurements, not after them: a directory, a missing parent or the
-        // workload file itself is refused here.
-        torus_cull::harness::output::check_writable(&out)
-            .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", out.display()))?;
-        torus_cull::harness::output::check_not_input(
-            ("TORUS_CULL_RESULTS", &out),
-            &[("TORUS_CULL_WORKLOAD", &workload_path)],
-        )?;
+            Some(p) => PathBuf::from(p),
+            None => PathBuf::from("workloads/default.json"),
+        };
+        let workload =
+            Workload::load(&workload_path).map_err(|e| format!("TORUS_CULL_WORKLOAD: {e}"))?;
+        let config = BenchConfig::from_env(&workload)?;
+        let dispatch = Dispatch::from_env().map_err(|e| e.to_string())?;
+        let out = match std::env::var_os("TORUS_CULL_RESULTS") {
+            Some(p) if p.is_empty() => {
+                return Err("TORUS_CULL_RESULTS is empty (allowed: a file path)".into());
+            }
+            Some(p) => PathBuf::from(p),
+            None => {
+                let out = torus_cull::harness::results::default_path(
+                    Path::new("results"),
+                    &config.file_suffix(&workload),
+                );
+                if mode == Mode::Benchmark {
+                    torus_cull::harness::output::create_default_dir(&out)
+                        .map_err(|e| format!("{}: {e}", out.display()))?;
+                }
+                out
+            }
+        };
+        Ok(Setup {
+            args,
+            mode,
+            workload_path,
+            workload,
+            config,
+            dispatch,
+            out,
+        })
     }
-    let started = SystemTime::now();
-    let timed_nus = config.timed_nus(&workload);
-    println!(
-        "torus-cull bench: size {}, workload {}, timed nu {:?}, batch {} rays, batch mode on {}",
-        config.name,
-        workload.name,
-        timed_nus,
-        config.batch,
-        dispatch.isa()
-    );
-    let mut c = Criterion::default()
+
+    /// The BVH scenes to time, if the workload has them and the preset times them.
+    fn bvh_spec(&self) -> Option<BvhSpec> {
+        match (&self.workload.bvh, self.config.bvh) {
+            (Some(spec), true) => Some(self.config.bvh_spec(spec)),
+            _ => None,
+        }
+    }
+}
+
+/// Criterion, configured by the preset and then by criterion's own arguments.
+fn criterion(config: &BenchConfig) -> Criterion {
+    Criterion::default()
         .warm_up_time(config.warm_up)
         .measurement_time(config.measurement)
         .sample_size(config.samples)
         .nresamples(10_000)
         .without_plots()
-        .configure_from_args();
-    let bvh_spec = match (&workload.bvh, config.bvh) {
-        (Some(spec), true) => Some(config.bvh_spec(spec)),
-        _ => None,
-    };
-    if mode == Mode::List {
-        // Names only: none of the data, none of the setup, nothing written.
-        list(&mut c, &workload, &timed_nus, bvh_spec.as_ref());
-        return Ok(ExitCode::SUCCESS);
-    }
+        .configure_from_args()
+}
 
-    let clock = std::time::Instant::now();
-    let stage = |name: &str| eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
-    let mut registered = Vec::new();
+/// Prints how far the run is, seconds since `clock`.
+fn stage(clock: std::time::Instant, name: &str) {
+    eprintln!("[{:>6.1} s] {name}", clock.elapsed().as_secs_f64());
+}
+
+/// Times every workload case at every timed ν (the hits' exact intersection, each cull
+/// both ways, each batch cull both ways), registering each benchmark; the labelled
+/// batches, for the timing records and the paired ratios.
+fn time_culls(
+    c: &mut Criterion,
+    setup: &Setup,
+    timed_nus: &[f64],
+    registered: &mut Vec<Registered>,
+) -> Result<Vec<LabeledBatch>, String> {
+    let (workload, config) = (&setup.workload, &setup.config);
     let mut batches = Vec::new();
     for &case in &workload.cases {
-        for &nu in &timed_nus {
+        for &nu in timed_nus {
             let batch = generate(case, nu, config.batch, workload.seed, workload.pose)
                 .map_err(|e| e.to_string())?;
             let labeled = LabeledBatch::label(batch);
-            let lines: Vec<LocalLine> = labeled
-                .batch
-                .rays
-                .iter()
-                .map(|r| labeled.batch.torus.line_to_local(r))
-                .collect();
-            let torus = labeled.batch.torus;
-            let hit_rays: Vec<Ray> = labeled
-                .batch
-                .rays
-                .iter()
-                .zip(&labeled.labels)
-                .filter(|(_, l)| l.class == OracleClass::Hit)
-                .map(|(r, _)| *r)
-                .collect();
-            if !hit_rays.is_empty() {
-                let group = format!("solve_hits-{case}");
-                c.benchmark_group(&group).bench_with_input(
-                    BenchmarkId::new("none", nu),
-                    &hit_rays,
-                    |b, rays| {
-                        b.iter(|| {
-                            for ray in rays {
-                                black_box(intersect(&torus, ray));
-                            }
-                        })
-                    },
-                );
-                registered.push(Registered::new(group, "none", nu, hit_rays.len()));
-            }
-            for cull in CullKind::TIMED {
-                cull.visit(TimeCull {
-                    c: &mut c,
-                    case,
-                    nu,
-                    torus: &labeled.batch.torus,
-                    rays: &labeled.batch.rays,
-                    lines: &lines,
-                });
-                for group in ["cull_ns", "total_ns"] {
-                    let n = labeled.batch.rays.len();
-                    registered.push(Registered::new(
-                        format!("{group}-{case}"),
-                        cull.name(),
-                        nu,
-                        n,
-                    ));
-                }
-            }
-            let soa = Lines::from_local(&lines);
-            for cull in BATCH_TIMED {
-                time_batch_cull(
-                    &mut c,
-                    &dispatch,
-                    cull,
-                    case,
-                    nu,
-                    &labeled.batch.torus,
-                    &labeled.batch.rays,
-                    &soa,
-                );
-                for group in ["batch_cull_ns", "batch_total_ns"] {
-                    let n = labeled.batch.rays.len();
-                    registered.push(Registered::new(
-                        format!("{group}-{case}"),
-                        cull.name(),
-                        nu,
-                        n,
-                    ));
-                }
-            }
+            time_case(c, &setup.dispatch, case, nu, &labeled, registered);
             batches.push(labeled);
         }
     }
-    stage("cull timings done");
+    Ok(batches)
+}
+
+/// [`time_culls`] for one case and ν.
+fn time_case(
+    c: &mut Criterion,
+    dispatch: &Dispatch,
+    case: Case,
+    nu: f64,
+    labeled: &LabeledBatch,
+    registered: &mut Vec<Registered>,
+) {
+    let lines: Vec<LocalLine> = labeled
+        .batch
+        .rays
+        .iter()
+        .map(|r| labeled.batch.torus.line_to_local(r))
+        .collect();
+    let torus = labeled.batch.torus;
+    let hit_rays: Vec<Ray> = labeled
+        .batch
+        .rays
+        .iter()
+        .zip(&labeled.labels)
+        .filter(|(_, l)| l.class == OracleClass::Hit)
+        .map(|(r, _)| *r)
+        .collect();
+    if !hit_rays.is_empty() {
+        let group = format!("solve_hits-{case}");
+        c.benchmark_group(&group).bench_with_input(
+            BenchmarkId::new("none", nu),
+            &hit_rays,
+            |b, rays| {
+                b.iter(|| {
+                    for ray in rays {
+                        black_box(intersect(&torus, ray));
+                    }
+                })
+            },
+        );
+        registered.push(Registered::new(group, "none", nu, hit_rays.len()));
+    }
+    let n = labeled.batch.rays.len();
+    for cull in CullKind::TIMED {
+        cull.visit(TimeCull {
+            c,
+            case,
+            nu,
+            torus: &labeled.batch.torus,
+            rays: &labeled.batch.rays,
+            lines: &lines,
+        });
+        for group in ["cull_ns", "total_ns"] {
+            registered.push(Registered::new(
+                format!("{group}-{case}"),
+                cull.name(),
+                nu,
+                n,
+            ));
+        }
+    }
+    let soa = Lines::from_local(&lines);
+    for cull in BATCH_TIMED {
+        time_batch_cull(
+            c,
+            dispatch,
+            cull,
+            &BatchCase {
+                case,
+                nu,
+                torus: &labeled.batch.torus,
+                rays: &labeled.batch.rays,
+                lines: &soa,
+            },
+        );
+        for group in ["batch_cull_ns", "batch_total_ns"] {
+            registered.push(Registered::new(
+                format!("{group}-{case}"),
+                cull.name(),
+                nu,
+                n,
+            ));
+        }
+    }
+}
+
+/// The solver families' quartics, timed and registered.
+fn time_solvers(
+    c: &mut Criterion,
+    setup: &Setup,
+    registered: &mut Vec<Registered>,
+) -> Vec<(&'static str, Vec<SolverCase>)> {
     let solver_sets: Vec<_> = solver::FAMILIES
         .iter()
-        .map(|&f| (f, solver::family_sets(f, &workload, &config)))
+        .map(|&f| (f, solver::family_sets(f, &setup.workload, &setup.config)))
         .collect();
-    solver::bench(&mut c, &solver_sets, &dispatch);
+    solver::bench(c, &solver_sets, &setup.dispatch);
     for (family, sets) in &solver_sets {
         for name in solver::solver_names() {
             registered.push(Registered::new(
@@ -347,25 +397,14 @@ fn bench() -> Result<ExitCode, String> {
             ));
         }
     }
-    stage("solver timings done");
-    let bvh_pending = match &bvh_spec {
-        Some(spec) => bvh::bench(&mut c, spec, workload.seed),
-        None => Vec::new(),
-    };
-    registered.extend(bvh_pending.iter().map(|p| {
-        let (group, cull, nu, timed) = p.benchmark();
-        Registered::new(group, cull, nu, timed)
-    }));
-    c.final_summary();
-    stage("bvh done");
-    if mode != Mode::Benchmark {
-        println!("{mode:?} mode: nothing was timed, no results written");
-        return Ok(ExitCode::SUCCESS);
-    }
+    solver_sets
+}
 
-    // What this run measured; a benchmark a filter left out has no fresh estimate.
+/// What this run measured: the estimate of every registered benchmark that ran (a
+/// benchmark a filter left out has no fresh estimate).
+fn fresh_estimates(registered: &[Registered], started: SystemTime) -> Vec<EstimateRecord> {
     let home = criterion_home();
-    let estimates: Vec<EstimateRecord> = registered
+    registered
         .iter()
         .filter_map(|r| {
             let e = read_estimate(&home, &r.group, &r.function, &r.parameter, started)?;
@@ -377,66 +416,44 @@ fn bench() -> Result<ExitCode, String> {
                 ns_per_element_ci: [per.lower, per.upper],
             })
         })
-        .collect();
-    if estimates.is_empty() {
-        println!("no benchmark ran (all filtered out): no results written");
-        return Ok(ExitCode::SUCCESS);
-    }
-    let complete = estimates.len() == registered.len();
-    let mut results = Results::new(&workload, "bench");
-    results.meta.preset = Some(config.name.to_string());
-    results.meta.partial = !complete;
-    results.meta.isa = Some(dispatch.isa().name().to_string());
-    results.timing = timing_records(&home, &batches, config.batch, started);
-    if complete {
-        // The paired ratios take a minute: only a complete run pays for them.
-        results.ratio = paired_ratios(&batches, &config, &dispatch);
-        stage("paired ratios done");
-    }
-    results.solver = solver::records(&home, &solver_sets, started, &dispatch);
-    results.bvh = bvh::records(&home, bvh_pending, started);
-    results.estimates = estimates;
-    let mut false_rejects = Vec::new();
-    let path = if complete {
-        // The sweep runs only for a complete set, so that a file never mixes a full
-        // sweep with part of the timings (or old timings with a new sweep).
-        let sweep = config.sweep_workload(&workload);
-        let (records, rejected_hits) =
-            measure::rejection_sweep(&sweep, &CullKind::TIMED.map(Into::into), 2, &|_| {})
-                .map_err(|e| e.to_string())?;
-        results.rejection = records;
-        false_rejects = rejected_hits;
-        stage("rejection sweep done");
-        out
-    } else {
-        partial_path(&out)
-    };
-    results.meta.sizes = Some(Sizes {
-        rejection_rays: complete.then_some(config.sweep_workload(&workload).rays as u64),
+        .collect()
+}
+
+/// The sizes a results file records.
+fn sizes(setup: &Setup, complete: bool, timed_nus: &[f64], bvh_spec: Option<&BvhSpec>) -> Sizes {
+    let config = &setup.config;
+    Sizes {
+        rejection_rays: complete.then_some(config.sweep_workload(&setup.workload).rays as u64),
         timing_rays: Some(config.batch as u64),
-        timed_nu: timed_nus.clone(),
+        timed_nu: timed_nus.to_vec(),
         warm_up_s: Some(config.warm_up.as_secs_f64()),
         measurement_s: Some(config.measurement.as_secs_f64()),
         samples: Some(config.samples as u64),
-        bvh: bvh_spec.as_ref().map(|s| BvhSizes {
+        bvh: bvh_spec.map(|s| BvhSizes {
             scenes: s.scenes.iter().map(|k| k.name().to_string()).collect(),
             nu: s.nu.clone(),
             tori: s.tori as u64,
             image: s.image as u64,
             random_rays: s.random_rays as u64,
         }),
-        bench_args: args.into_iter().filter(|a| a != "--bench").collect(),
-    });
-    results.save(&path).map_err(|e| e.to_string())?;
-    print!("{}", torus_cull::harness::report::timing_tables(&results));
-    print!("{}", torus_cull::harness::report::cull_ns_tables(&results));
-    print!(
-        "{}",
-        torus_cull::harness::report::scalar_vs_batch_tables(&results)
-    );
-    print!("{}", torus_cull::harness::report::ratio_tables(&results));
+        bench_args: setup
+            .args
+            .iter()
+            .filter(|a| *a != "--bench")
+            .cloned()
+            .collect(),
+    }
+}
+
+/// Prints the tables of a saved results file and writes its plots beside it.
+fn report(results: &Results, path: &Path, complete: bool, registered: usize) {
+    use torus_cull::harness::report;
+    print!("{}", report::timing_tables(results));
+    print!("{}", report::cull_ns_tables(results));
+    print!("{}", report::scalar_vs_batch_tables(results));
+    print!("{}", report::ratio_tables(results));
     print!("{}", solver::table(&results.solver));
-    print!("{}", torus_cull::harness::report::bvh_tables(&results));
+    print!("{}", report::bvh_tables(results));
     if complete {
         println!("wrote {}", path.display());
     } else {
@@ -444,17 +461,109 @@ fn bench() -> Result<ExitCode, String> {
             "wrote {} (partial: {} of {} benchmarks ran; it holds only what was measured)",
             path.display(),
             results.estimates.len(),
-            registered.len()
+            registered
         );
     }
     let dir = path.parent().unwrap_or(Path::new("."));
     let stem = path
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    match torus_cull::harness::plot::plot_results(&results, dir, &stem) {
+    match torus_cull::harness::plot::plot_results(results, dir, &stem) {
         Ok(w) => println!("wrote {} plots to {}/{stem}-*.svg", w.len(), dir.display()),
         Err(e) => eprintln!("plots failed: {e}"),
     }
+}
+
+fn bench() -> Result<ExitCode, String> {
+    let setup = Setup::from_env()?;
+    let (mode, config, dispatch) = (setup.mode, &setup.config, &setup.dispatch);
+    if mode == Mode::Benchmark {
+        // Before the measurements, not after them: a directory, a missing parent or the
+        // workload file itself is refused here.
+        torus_cull::harness::output::check_writable(&setup.out)
+            .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", setup.out.display()))?;
+        torus_cull::harness::output::check_not_input(
+            ("TORUS_CULL_RESULTS", &setup.out),
+            &[("TORUS_CULL_WORKLOAD", &setup.workload_path)],
+        )?;
+    }
+    let started = SystemTime::now();
+    let timed_nus = config.timed_nus(&setup.workload);
+    println!(
+        "torus-cull bench: size {}, workload {}, timed nu {:?}, batch {} rays, batch mode on {}",
+        config.name,
+        setup.workload.name,
+        timed_nus,
+        config.batch,
+        dispatch.isa()
+    );
+    let mut c = criterion(config);
+    let bvh_spec = setup.bvh_spec();
+    if mode == Mode::List {
+        // Names only: none of the data, none of the setup, nothing written.
+        list(&mut c, &setup.workload, &timed_nus, bvh_spec.as_ref());
+        return Ok(ExitCode::SUCCESS);
+    }
+
+    let clock = std::time::Instant::now();
+    let mut registered = Vec::new();
+    let batches = time_culls(&mut c, &setup, &timed_nus, &mut registered)?;
+    stage(clock, "cull timings done");
+    let solver_sets = time_solvers(&mut c, &setup, &mut registered);
+    stage(clock, "solver timings done");
+    let bvh_pending = match &bvh_spec {
+        Some(spec) => bvh::bench(&mut c, spec, setup.workload.seed),
+        None => Vec::new(),
+    };
+    registered.extend(bvh_pending.iter().map(|p| {
+        let (group, cull, nu, timed) = p.benchmark();
+        Registered::new(group, cull, nu, timed)
+    }));
+    c.final_summary();
+    stage(clock, "bvh done");
+    if mode != Mode::Benchmark {
+        println!("{mode:?} mode: nothing was timed, no results written");
+        return Ok(ExitCode::SUCCESS);
+    }
+
+    let estimates = fresh_estimates(&registered, started);
+    if estimates.is_empty() {
+        println!("no benchmark ran (all filtered out): no results written");
+        return Ok(ExitCode::SUCCESS);
+    }
+    let complete = estimates.len() == registered.len();
+    let home = criterion_home();
+    let mut results = Results::new(&setup.workload, "bench");
+    results.meta.preset = Some(config.name.to_string());
+    results.meta.partial = !complete;
+    results.meta.isa = Some(dispatch.isa().name().to_string());
+    results.timing = timing_records(&home, &batches, config.batch, started);
+    if complete {
+        // The paired ratios take a minute: only a complete run pays for them.
+        results.ratio = paired_ratios(&batches, config, dispatch);
+        stage(clock, "paired ratios done");
+    }
+    results.solver = solver::records(&home, &solver_sets, started, dispatch);
+    results.bvh = bvh::records(&home, bvh_pending, started);
+    results.estimates = estimates;
+    let mut false_rejects = Vec::new();
+    let path = if complete {
+        // The sweep runs only for a complete set, so that a file never mixes a full
+        // sweep with part of the timings (or old timings with a new sweep).
+        let sweep = config.sweep_workload(&setup.workload);
+        let (records, rejected_hits) =
+            measure::rejection_sweep(&sweep, &CullKind::TIMED.map(Into::into), 2, &|_| {})
+                .map_err(|e| e.to_string())?;
+        results.rejection = records;
+        false_rejects = rejected_hits;
+        stage(clock, "rejection sweep done");
+        setup.out.clone()
+    } else {
+        partial_path(&setup.out)
+    };
+    results.meta.sizes = Some(sizes(&setup, complete, &timed_nus, bvh_spec.as_ref()));
+    results.save(&path).map_err(|e| e.to_string())?;
+    report(&results, &path, complete, registered.len());
     if !false_rejects.is_empty() {
         eprintln!(
             "error: {} false rejects in the rejection sweep: {:?}",

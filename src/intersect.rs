@@ -17,6 +17,11 @@ use crate::quartic::{RealRoots, nearest_root_depressed, solve_depressed_monic};
 use crate::{Ray, Torus};
 use glam::{DVec3, Vec3};
 
+/// The relative slack of the bounding-sphere chord test (here and in the lane twin,
+/// `crate::batch::intersect`): it keeps lines within rounding of the sphere (the torus's
+/// outer equator) to the solver, which decides tangencies on the quartic itself.
+pub(crate) const CHORD_SLACK: f64 = 1e-12;
+
 /// The nearest hit of a ray.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hit {
@@ -116,10 +121,8 @@ pub fn intersect_local(
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
     let red = reduce(major, minor, o, d);
-    // The relative slack keeps lines within rounding of the sphere (the torus's outer
-    // equator) to the solver, which decides tangencies on the quartic itself.
     let outer = 1.0 + minor / major;
-    let chord_sq = outer * outer * (1.0 + 1e-12) - red.p.length_squared();
+    let chord_sq = outer * outer * (1.0 + CHORD_SLACK) - red.p.length_squared();
     if chord_sq < 0.0 {
         return None;
     }

@@ -105,7 +105,7 @@ fn every_cull_matches_brute_force_through_the_bvh() {
 /// root, and no torus the oracle says is hit may be closer or missed.
 #[test]
 fn every_cull_through_the_bvh_agrees_with_the_oracle() {
-    use torus_cull::harness::oracle::{OracleClass, classify, reference_roots};
+    use torus_cull::harness::oracle::{OracleClass, Query, classify, reference_roots};
     let mut definite = 0;
     for kind in SceneKind::ALL {
         for nu in [1.1, 1.5, 4.0, 16.0] {
@@ -125,19 +125,10 @@ fn every_cull_through_the_bvh_agrees_with_the_oracle() {
                             let first = if class == OracleClass::Miss {
                                 f64::INFINITY
                             } else {
-                                reference_roots(
-                                    t.center().as_dvec3(),
-                                    t.axis().as_dvec3(),
-                                    f64::from(t.major_radius()),
-                                    f64::from(t.minor_radius()),
-                                    ray.origin().as_dvec3(),
-                                    ray.dir().as_dvec3(),
-                                    f64::from(ray.t_min()),
-                                    f64::from(ray.t_max()),
-                                )
-                                .first()
-                                .copied()
-                                .unwrap_or(f64::INFINITY)
+                                reference_roots(&Query::ray(t, ray))
+                                    .first()
+                                    .copied()
+                                    .unwrap_or(f64::INFINITY)
                             };
                             (class, first)
                         })

@@ -23,7 +23,7 @@
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::harness::oracle::{OracleClass, classify, reference_roots};
+use torus_cull::harness::oracle::{OracleClass, Query, classify, reference_roots};
 use torus_cull::harness::workload::adversarial::{
     SpecialCircle, hole_edge_line, random_azimuth, random_pose_torus, tangent_line,
 };
@@ -130,18 +130,8 @@ impl Tally {
         }
         let Some(hit) = found else { return };
         self.hits += 1;
-        let reference = |t_min: f64, t_max: f64| {
-            reference_roots(
-                torus.center().as_dvec3(),
-                torus.axis().as_dvec3(),
-                setup.major,
-                setup.minor,
-                ray.origin().as_dvec3(),
-                ray.dir().as_dvec3(),
-                t_min,
-                t_max,
-            )
-        };
+        let reference =
+            |t_min: f64, t_max: f64| reference_roots(&Query::ray(torus, ray).over(t_min, t_max));
         let roots = reference(f64::from(ray.t_min()), f64::from(ray.t_max()));
         let Some(&t_ref) = roots.first() else {
             self.failures.push(format!(

@@ -6,7 +6,9 @@
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
-use torus_cull::harness::oracle::{OracleClass, classify, margin_by_sampling, reference_roots};
+use torus_cull::harness::oracle::{
+    OracleClass, Query, classify, margin_by_sampling, reference_roots,
+};
 use torus_cull::harness::workload::Case;
 use torus_cull::intersect;
 
@@ -41,16 +43,7 @@ fn intersect_finds_a_hit_exactly_when_the_oracle_says_hit() {
                 }
                 let Some(hit) = found else { continue };
                 hits += 1;
-                let roots = reference_roots(
-                    torus.center().as_dvec3(),
-                    torus.axis().as_dvec3(),
-                    torus.major_radius() as f64,
-                    torus.minor_radius() as f64,
-                    ray.origin().as_dvec3(),
-                    ray.dir().as_dvec3(),
-                    ray.t_min() as f64,
-                    ray.t_max() as f64,
-                );
+                let roots = reference_roots(&Query::ray(torus, &ray));
                 let size = torus.outer_radius() as f64 / ray.dir().as_dvec3().length();
                 let err = (hit.t as f64 - roots[0]).abs() / roots[0].abs().max(size);
                 worst = worst.max(err);
@@ -83,16 +76,7 @@ fn oracle_methods_agree_outside_the_band() {
         }
         for (torus, ray) in pairs(&batches) {
             let label = classify(torus, ray);
-            let sampled = margin_by_sampling(
-                torus.center().as_dvec3(),
-                torus.axis().as_dvec3(),
-                torus.major_radius() as f64,
-                torus.minor_radius() as f64,
-                ray.origin().as_dvec3(),
-                ray.dir().as_dvec3(),
-                ray.t_min() as f64,
-                ray.t_max() as f64,
-            );
+            let sampled = margin_by_sampling(&Query::ray(torus, ray));
             let band = torus_cull::harness::oracle::AMBIGUITY_REL * torus.outer_radius() as f64;
             if label.margin.abs() > band {
                 assert_eq!(

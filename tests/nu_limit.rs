@@ -9,7 +9,7 @@
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::harness::oracle::{OracleClass, classify, reference_roots};
+use torus_cull::harness::oracle::{OracleClass, Query, classify, reference_roots};
 use torus_cull::{MAX_NU, Ray, Torus, TorusError, intersect};
 
 #[test]
@@ -129,16 +129,7 @@ fn at_the_limit_intersect_agrees_with_the_oracle_including_the_reproducer_family
                 }
                 let Some(hit) = found else { continue };
                 hits += 1;
-                let roots = reference_roots(
-                    torus.center().as_dvec3(),
-                    torus.axis().as_dvec3(),
-                    big,
-                    small,
-                    ray.origin().as_dvec3(),
-                    ray.dir().as_dvec3(),
-                    ray.t_min() as f64,
-                    ray.t_max() as f64,
-                );
+                let roots = reference_roots(&Query::ray(&torus, ray));
                 let size = outer / ray.dir().as_dvec3().length();
                 let err = (hit.t as f64 - roots[0]).abs() / roots[0].abs().max(size);
                 if err > 1e-6 {

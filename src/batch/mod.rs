@@ -37,12 +37,13 @@
 //! and its mask-register support, not by a measurement of both on this code.
 
 mod cull;
-mod exact;
+mod intersect;
 mod isa;
 pub(crate) mod lanes;
 mod lines;
 mod mask;
-mod solve;
+mod quartic;
+pub(crate) mod real;
 mod to_local;
 pub(crate) mod vec3s;
 mod wavefront;
@@ -52,5 +53,5 @@ pub use cull::{NoBatchForm, cull_batch};
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
-pub use solve::{Quartics, SolveStats, nearest_roots};
+pub use quartic::{Quartics, SolveStats, nearest_roots};
 pub use wavefront::{Wavefront, WavefrontStats};

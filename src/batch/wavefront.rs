@@ -5,13 +5,13 @@
 //! every stage runs over many rays at once, so a cull costs what its arithmetic costs
 //! (no mispredicted keep/reject branch per ray) and the survivors' exact intersection
 //! (f64 reduction, solve, normal) is amortized over SIMD lanes too. Both kernels follow
-//! the scalar code step for step ([`super::cull_batch`], and [`super::exact`] for
+//! the scalar code step for step ([`super::cull_batch`], and [`super::intersect`] for
 //! [`crate::intersect()`]), and the rays whose quartic needs the scalar solver's careful
 //! paths (tangents) get the scalar [`crate::intersect()`] itself; so a wavefront hit is
 //! the [`crate::intersect_culled`] hit up to the last bits of the solver.
 
 use super::cull::{NoBatchForm, cull_batch};
-use super::exact::{Answers, RaysF64, intersect_lanes};
+use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::isa::Dispatch;
 use super::lines::{BLOCK, Lines};
 use super::mask::KeepMask;

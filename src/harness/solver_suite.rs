@@ -3,7 +3,7 @@
 //! accuracy per solver) and `tests/batch_solve.rs` (the lane solver) use the same cases
 //! and the same count.
 
-use crate::harness::oracle::{OracleClass, classify_line, reference_roots};
+use crate::harness::oracle::{OracleClass, Query, classify_line, reference_roots};
 use crate::harness::workload::adversarial::{LineFamily, family_rays};
 use crate::harness::workload::{Case, GenerateError, Pose, generate};
 use crate::intersect::quartic_coefficients_local;
@@ -55,16 +55,7 @@ impl SolverCase {
             foot_offset,
             inv_len: 1.0 / len,
             len,
-            reference: reference_roots(
-                torus.center().as_dvec3(),
-                torus.axis().as_dvec3(),
-                major,
-                minor,
-                ray.origin().as_dvec3(),
-                ray.dir().as_dvec3(),
-                0.0,
-                f64::INFINITY,
-            ),
+            reference: reference_roots(&Query::ray(torus, ray).over(0.0, f64::INFINITY)),
         })
     }
 

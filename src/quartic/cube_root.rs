@@ -2,17 +2,39 @@
 //! trisection `cos(arccos(x)/3)`. Each is the root of a cubic, so a polynomial seed good
 //! to 2·10⁻⁶ and one Halley step (which cubes the relative error) replaces libm's `cbrt`,
 //! `acos` and `cos` (11–17 ns each here) on the critical path.
+//!
+//! One source for the scalar solver and the lanes ([`Real`]): the polynomial seed, the
+//! Halley step of the cube root and the whole trisection are generic; only the cube
+//! root's seed (bits of one `f64` here, Kahan's bit trick on wider lanes in
+//! `crate::batch::quartic::cube_root`) depends on the width.
+
+use crate::batch::real::{Real, sc};
 
 /// The degree-5 polynomial `c` (highest coefficient first) at `x`, by Estrin's scheme: half
 /// the dependency chain of Horner's.
 #[inline(always)]
-fn poly5(c: &[f64; 6], x: f64) -> f64 {
+fn poly5<R: Real>(c: &[f64; 6], x: R) -> R {
+    // Macros, not closures, here and in every generic step: a closure that LLVM leaves
+    // outlined would run without the SIMD target features.
+    macro_rules! k {
+        ($i:expr) => {
+            x.splat(c[$i])
+        };
+    }
     let x2 = x * x;
     let x4 = x2 * x2;
-    let low = c[4] * x + c[5];
-    let mid = c[2] * x + c[3];
-    let high = c[0] * x + c[1];
+    let low = k!(4) * x + k!(5);
+    let mid = k!(2) * x + k!(3);
+    let high = k!(0) * x + k!(1);
     (low + x2 * mid) + x4 * high
+}
+
+/// One Halley step for `t ≈ ∛y`: `t·(t³ + 2y)/(2t³ + y)`, which cubes the relative error.
+#[inline(always)]
+pub(crate) fn cbrt_halley<R: Real>(t: R, y: R) -> R {
+    let two = t.splat(2.0);
+    let t3 = t * t * t;
+    t * ((t3 + two * y) / (two * t3 + y))
 }
 
 /// ∛y for y ≥ 0.
@@ -21,7 +43,7 @@ fn poly5(c: &[f64; 6], x: f64) -> f64 {
 /// (Chebyshev, error 1.7·10⁻⁶) times `2^k·2^(j/3)`, then one Halley step
 /// `t ← t·(t³ + 2y)/(2t³ + y)`, which cubes the relative error (to below rounding).
 #[inline]
-pub(super) fn cbrt(y: f64) -> f64 {
+pub(crate) fn cbrt(y: f64) -> f64 {
     // Written so that NaN also takes the cold call.
     if !(1e-300..=1e300).contains(&y) {
         return cbrt_outside(y);
@@ -43,9 +65,8 @@ pub(super) fn cbrt(y: f64) -> f64 {
     let (k_plus, j) = (u64::from(biased / 3), (biased % 3) as usize);
     let mu = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
     let scale = f64::from_bits((k_plus + 1023 - 341) << 52) * CBRT_2J[j];
-    let t = poly5(&FIT, mu) * scale;
-    let t3 = t * t * t;
-    t * ((t3 + 2.0 * y) / (2.0 * t3 + y))
+    let t = poly5(&FIT, sc(mu)) * sc(scale);
+    cbrt_halley(t, sc(y)).v
 }
 
 /// libm's cube root, for the arguments outside the fast path's range (0, subnormal, huge).
@@ -60,8 +81,8 @@ fn cbrt_outside(y: f64) -> f64 {
 /// That root is `u = s·g(s)` with `s = √(2(1 + x)/3) ∈ [0, 2/√3]` and `g` smooth (`g(0) = 1`);
 /// a degree-5 fit of `g` (error 1.7·10⁻⁶, relative) and one Halley step, which cubes the
 /// relative error even next to the double root `u = 0` at `x = −1`.
-#[inline]
-pub(super) fn trisect_u(x: f64) -> f64 {
+#[inline(always)]
+pub(crate) fn trisect_u<R: Real>(x: R) -> R {
     /// g(1/√3 + d) on [−1/√3, 1/√3].
     const FIT: [f64; 6] = [
         -0.0023725581002014035,
@@ -72,15 +93,20 @@ pub(super) fn trisect_u(x: f64) -> f64 {
         0.9216062482255146,
     ];
     const HALF_RANGE: f64 = 0.5773502691896257;
-    let rhs = 2.0 * (1.0 + x);
-    let s = (rhs * (1.0 / 3.0)).sqrt();
-    let u = s * poly5(&FIT, s - HALF_RANGE);
-    let f = u * u * (3.0 + u) - rhs;
-    let df = (3.0 * u + 6.0) * u;
-    let d2f = 6.0 * u + 6.0;
-    let u = u - 2.0 * f * df / (2.0 * df * df - f * d2f);
+    macro_rules! k {
+        ($c:expr) => {
+            x.splat($c)
+        };
+    }
+    let rhs = k!(2.0) * (k!(1.0) + x);
+    let s = (rhs * k!(1.0 / 3.0)).sqrt();
+    let u = s * poly5(&FIT, s - k!(HALF_RANGE));
+    let f = u * u * (k!(3.0) + u) - rhs;
+    let df = (k!(3.0) * u + k!(6.0)) * u;
+    let d2f = k!(6.0) * u + k!(6.0);
+    let u = u - k!(2.0) * f * df / (k!(2.0) * df * df - f * d2f);
     // rhs = 0 (x = −1) has the double root u = 0, where Halley's step is 0/0.
-    if rhs > 0.0 { u } else { 0.0 }
+    R::select(rhs.gt(k!(0.0)), u, k!(0.0))
 }
 
 #[cfg(test)]
@@ -114,7 +140,7 @@ mod tests {
             1.0 - 1e-12,
         ]);
         for x in xs {
-            let (got, want) = (0.5 * (1.0 + trisect_u(x)), (x.acos() / 3.0).cos());
+            let (got, want) = (0.5 * (1.0 + trisect_u(sc(x)).v), (x.acos() / 3.0).cos());
             assert!(
                 (got - want).abs() <= 2.0 * f64::EPSILON,
                 "x = {x}: {got} vs {want}"

@@ -16,7 +16,7 @@
 //! point, such as any line in the plane of the top circle that touches it) is decided by the
 //! sign of `p² − 4r`, which a fused multiply-add makes exact too.
 
-use super::{RealRoots, factor::NEAR_DOUBLE, nearest::in_range};
+use super::{RealRoots, factor::NEAR_DOUBLE, nearest::in_range_f64};
 
 /// The roots `y₁, y₂` of `y² + p y + r`, `Some(None)` when they are complex (no real
 /// `x`), or `None` for non-finite input (left to the general solver, which rejects it).
@@ -50,7 +50,7 @@ pub(super) fn nearest_root(p: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
         return Some(f64::INFINITY);
     };
     // Each y ≥ 0 gives ±√y (y = 0: the double root 0).
-    let pick = |x: f64, real: bool| in_range(x, real, lo, hi);
+    let pick = |x: f64, real: bool| in_range_f64(x, real, lo, hi);
     let (x1, x2) = (y1.max(0.0).sqrt(), y2.max(0.0).sqrt());
     let (real1, real2) = (y1 >= 0.0, y2 >= 0.0);
     let best = pick(-x1, real1)

@@ -9,7 +9,9 @@
 //! double root, or a complex pair that rounding made real: that is decided on the quartic
 //! itself (the sign of its value at the nearby extremum), never on the factor.
 
-use super::{EPS, RealRoots, eval, eval2, resolvent};
+use super::resolvent::{self, Root};
+use super::{EPS, RealRoots, eval, eval2};
+use crate::batch::real::{Real, sc};
 
 /// Below this `|disc| / (m² + 4|n|)` a factor's two roots are decided on the quartic, for a
 /// quartic given in depressed form (a depression by the caller adds its own rounding:
@@ -51,7 +53,7 @@ pub(super) fn real_roots(
 /// The real roots (unsorted, not yet polished) of both factors of a [`split`]; `orig`,
 /// `shift` and `near` as for [`real_roots`].
 #[inline]
-pub(super) fn roots_of_split(f: &Split, orig: &[f64; 5], shift: f64, near: f64) -> RealRoots {
+pub(super) fn roots_of_split(f: &Split<f64>, orig: &[f64; 5], shift: f64, near: f64) -> RealRoots {
     let mut out = RealRoots::default();
     quadratic_factor(f.m, f.n1, f.z, orig, shift, near, &mut out);
     quadratic_factor(-f.m, f.n2, f.z, orig, shift, near, &mut out);
@@ -60,65 +62,85 @@ pub(super) fn roots_of_split(f: &Split, orig: &[f64; 5], shift: f64, near: f64) 
 
 /// The two factors `x² + m x + n₁` and `x² − m x + n₂`, with `z = m²`.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Split {
-    pub z: f64,
-    pub m: f64,
-    pub n1: f64,
-    pub n2: f64,
+pub(crate) struct Split<R> {
+    pub z: R,
+    pub m: R,
+    pub n1: R,
+    pub n2: R,
 }
 
 /// Ferrari's split of `x⁴ + p x² + q x + r` (see the module docs).
 #[inline]
-pub(super) fn split(p: f64, q: f64, r: f64) -> Split {
+pub(super) fn split(p: f64, q: f64, r: f64) -> Split<f64> {
     let root = resolvent::greatest_root(p, q, r);
+    let f = split_at(sc(p), sc(q), sc(r), &root);
+    Split {
+        z: f.z.v,
+        m: f.m.v,
+        n1: f.n1.v,
+        n2: f.n2.v,
+    }
+}
+
+/// Ferrari's split of `x⁴ + p x² + q x + r` at the resolvent's greatest root `root`: the
+/// step the scalar [`split`] and the lane solver share.
+#[inline(always)]
+pub(crate) fn split_at<R: Real>(p: R, q: R, r: R, root: &Root<R>) -> Split<R> {
+    macro_rules! k {
+        ($c:expr) => {
+            p.splat($c)
+        };
+    }
     let (z, dh, m) = (root.z, root.dh, root.m);
     let s = p + root.z_early;
-    let w2 = s * s - 4.0 * r;
+    let w2 = s * s - k!(4.0) * r;
 
     // n₂ − n₁ is both q/m and sign(q)·√((p + z)² − 4r). The first inherits half the
     // relative error of z, ε·Σ|terms of h|/(z·h'(z)), large at a double root of the
     // resolvent; the second cancels when (p + z)² ≈ 4r, with relative error
     // ε·((p + z)² + 4|r|)/(2w²) plus what the error of z adds to p + z. Take whichever is
     // better determined (compared without dividing: both denominators are > 0 when used).
-    let b_abs = p * p + 4.0 * r.abs();
+    let b_abs = p * p + k!(4.0) * r.abs();
     let z_early = root.z_early;
-    let h_mag = ((z_early + 2.0 * p.abs()) * z_early + b_abs) * z_early + q * q;
+    let h_mag = ((z_early + k!(2.0) * p.abs()) * z_early + b_abs) * z_early + q * q;
     let zdh = z * dh;
     // rel(q/m) = ½·ε·h_mag/zdh ≤ rel(√w²) = ½·err_w/w2, with err_w = ε·(s² + 4|r|) plus
     // 2|s|·(ε|p| + ε·h_mag/dh), multiplied out so that no division is needed.
-    let err_w_zdh =
-        EPS * ((s * s + 4.0 * r.abs() + 2.0 * s.abs() * p.abs()) * zdh + 2.0 * s.abs() * h_mag * z);
+    let eps = k!(EPS);
+    let err_w_zdh = eps
+        * ((s * s + k!(4.0) * r.abs() + k!(2.0) * s.abs() * p.abs()) * zdh
+            + k!(2.0) * s.abs() * h_mag * z);
+    let zero = k!(0.0);
     let use_q_over_m =
-        root.q_over_m_exact | (zdh > 0.0 && (w2 <= 0.0 || EPS * h_mag * w2 <= err_w_zdh));
+        root.q_over_m_exact | (zdh.gt(zero) & (w2.le(zero) | (eps * h_mag * w2).le(err_w_zdh)));
     // Both candidates are computed and one is selected: which one wins is a coin toss from
     // ray to ray, and a mispredicted branch costs more than a division and a root.
     let by_q = root.q_over_m;
-    let by_w = w2.max(0.0).sqrt().copysign(q);
-    let d = if use_q_over_m { by_q } else { by_w };
+    let by_w = w2.max(zero).sqrt().copysign(q);
+    let d = R::select(use_q_over_m, by_q, by_w);
 
     // n₁ n₂ = r: compute the larger-magnitude constant directly and the other as r over it,
     // which avoids the cancellation in (p + z ∓ d)/2 (again selected, not branched).
-    let (n1_direct, n2_direct) = (0.5 * (s - d), 0.5 * (s + d));
-    let n2_bigger = n2_direct.abs() >= n1_direct.abs();
-    // Both quotients start before the comparison is known (a division is long).
-    let (r_over_n2, r_over_n1) = (r / n2_direct, r / n1_direct);
-    let big = if n2_bigger { n2_direct } else { n1_direct };
-    let other = if big == 0.0 {
-        0.0
-    } else if n2_bigger {
-        r_over_n2
+    let (n1_direct, n2_direct) = (k!(0.5) * (s - d), k!(0.5) * (s + d));
+    let n2_bigger = n2_direct.abs().ge(n1_direct.abs());
+    let big = R::select(n2_bigger, n2_direct, n1_direct);
+    let r_over_big = if R::LANES == 1 {
+        // Both quotients start before the comparison is known (a division is long, and
+        // one lane is latency-bound); the same bits as `r / big`.
+        R::select(n2_bigger, r / n2_direct, r / n1_direct)
     } else {
-        r_over_n1
+        // Lanes are bound by the divider's throughput: one division.
+        r / big
     };
-    let n1 = if n2_bigger { other } else { n1_direct };
-    let n2 = if n2_bigger { n2_direct } else { other };
+    let other = R::select(big.eq(zero), zero, r_over_big);
+    let n1 = R::select(n2_bigger, other, n1_direct);
+    let n2 = R::select(n2_bigger, n2_direct, other);
     Split { z, m, n1, n2 }
 }
 
 /// Roots of the factor `x² + b x + c` with `b² = z` (passed exactly, so the discriminant
 /// does not pay for rounding `m²`).
 #[inline]
-#[allow(clippy::too_many_arguments)]
 fn quadratic_factor(
     b: f64,
     c: f64,

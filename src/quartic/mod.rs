@@ -30,11 +30,11 @@
 //! `kurbo::common::solve_quartic` (Orellana & De Michele, ACM TOMS 46(2), 2020, Alg. 1010).
 
 mod all_roots;
-mod cube_root;
+pub(crate) mod cube_root;
 mod even;
-mod factor;
-mod nearest;
-mod resolvent;
+pub(crate) mod factor;
+pub(crate) mod nearest;
+pub(crate) mod resolvent;
 mod roots;
 #[cfg(test)]
 mod tests;
@@ -43,10 +43,7 @@ pub use all_roots::{solve_depressed_monic, solve_quartic};
 pub use nearest::nearest_root_depressed;
 pub use roots::RealRoots;
 
-/// The thresholds below which the solver takes its careful (cold) paths; the batch solver
-/// hands exactly those lanes back to [`nearest_root_depressed`].
-pub(crate) use factor::NEAR_DOUBLE;
-pub(crate) use resolvent::DISC_NEAR;
+pub(crate) use cube_root::cbrt;
 
 const EPS: f64 = f64::EPSILON;
 

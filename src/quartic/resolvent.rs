@@ -20,60 +20,165 @@
 //! **No libm.** The cube root and the trisection `cos(arccos(x)/3)` are roots of cubics:
 //! each is a polynomial seed good to 2·10⁻⁶ and one Halley step (cubic convergence), which
 //! is far shorter than libm's `cbrt`, `acos` and `cos` on the critical path.
+//!
+//! **One source.** The steps ([`Cubic`] with its small-root fixed point and guarded Newton
+//! polish, [`cardano`], [`trigonometric`]) are generic over [`Real`], and the lane
+//! solver (`crate::batch::quartic::resolvent`) calls the same functions on its registers.
+//! What differs is the driver: this one branches (Vieta's `z`, a Newton polish only where
+//! the closed form loses digits, the careful near-double case), the lanes select.
+
+use super::cube_root::trisect_u;
+use crate::batch::real::{Real, RealMask, Sc, sc, sc_mask};
 
 /// Below this `|Δ| / scale` the sign of the cubic's discriminant is not trusted: a
 /// near-double pair of roots may be real or complex by rounding. Then the pair is classified
 /// by the value of `h` at its local minimum instead.
-use super::cube_root::{cbrt, trisect_u};
-
 pub(crate) const DISC_NEAR: f64 = 1e-9;
 
 /// Below this `|Δ| / scale` the closed form is Newton-polished.
 const POLISH_BELOW: f64 = 1e-4;
 
-/// The resolvent's greatest root `z = m² ≥ 0`, with what Ferrari's split needs of it.
+/// A greatest root `z` with `z·(z + |a|) ≤ SMALL_ROOT·b` is out of the closed form's
+/// reach (it has cancelled in `w − a/3`) and is taken from the fixed point
+/// `z = q²/((z + a)z + b)` instead ([`small_root`]).
+pub(crate) const SMALL_ROOT: f64 = 1e-3;
+
+/// The resolvent `h(z) = z³ + a z² + b z + c` (`a = 2p`, `b = p² − 4r`, `c = −q²`) of
+/// `x⁴ + p x² + q x + r`, with its depressed form `w³ + 3P′w + 2Q′` (`z = w − a/3`), the
+/// cubic's discriminant `Δ = Q′² + P′³` and the size `scale` its rounding is measured by.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct Root {
-    pub z: f64,
-    /// `h'(z)` (at `z_early`: it only sizes errors).
-    pub dh: f64,
-    /// `m = √z`.
-    pub m: f64,
-    /// `q/m` (garbage when `m = 0`).
-    pub q_over_m: f64,
-    /// `q/m` is good to a few ulps, whatever `h'(z)` says (Vieta's `z`, below).
-    pub q_over_m_exact: bool,
-    /// `z` to within a few `ε·|p|`, earlier on the dependency chain than `z` itself: for
-    /// `p + z`, whose rounding is that large anyway.
-    pub z_early: f64,
+pub(crate) struct Cubic<R> {
+    pub a: R,
+    pub b: R,
+    pub c: R,
+    /// `a/3`.
+    pub a3: R,
+    /// `P′`.
+    pub third_p: R,
+    /// `Q′`.
+    pub half_q: R,
+    /// `Δ = Q′² + P′³`.
+    pub disc: R,
+    /// `Q′² + |P′³|`.
+    pub scale: R,
 }
 
-/// The greatest real root of `h` for the depressed quartic `x⁴ + p x² + q x + r` (finite
-/// inputs).
-#[inline]
-pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
-    let a = 2.0 * p;
-    let b = p * p - 4.0 * r;
-    let c = -q * q;
+/// The resolvent cubic of `x⁴ + p x² + q x + r`.
+#[inline(always)]
+pub(crate) fn cubic<R: Real>(p: R, q: R, r: R) -> Cubic<R> {
+    macro_rules! k {
+        ($c:expr) => {
+            p.splat($c)
+        };
+    }
+    let a = k!(2.0) * p;
+    let b = p * p - k!(4.0) * r;
+    let c = q.negate() * q;
     // z = w − a/3 gives w³ + P w + Q. Thirds by multiplication: a division is on the
     // critical path, and the last bit of these is below what the formulas resolve.
     // In p, q, r directly: P' = −(p²/9 + 4r/3), Q' = p(4r/3 − p²/27) − q²/2 (a shorter
     // chain than through a, b and c).
-    let a3 = a * (1.0 / 3.0);
-    let (p2, r43) = (p * p, r * (4.0 / 3.0));
-    let third_p = -(p2 * (1.0 / 9.0) + r43);
-    let half_q = p * (r43 - p2 * (1.0 / 27.0)) - 0.5 * (q * q);
+    let a3 = a * k!(1.0 / 3.0);
+    let (p2, r43) = (p * p, r * k!(4.0 / 3.0));
+    let third_p = (p2 * k!(1.0 / 9.0) + r43).negate();
+    let half_q = p * (r43 - p2 * k!(1.0 / 27.0)) - k!(0.5) * (q * q);
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
+    Cubic {
+        a,
+        b,
+        c,
+        a3,
+        third_p,
+        half_q,
+        disc,
+        scale,
+    }
+}
 
-    let h = |z: f64| ((z + a) * z + b) * z + c;
-    let dh = |z: f64| (3.0 * z + 2.0 * a) * z + b;
-    let near = disc.abs() <= DISC_NEAR * scale;
+impl<R: Real> Cubic<R> {
+    /// `h(z)`, Horner.
+    #[inline(always)]
+    pub(crate) fn h(&self, z: R) -> R {
+        ((z + self.a) * z + self.b) * z + self.c
+    }
+
+    /// `h′(z)`, Horner.
+    #[inline(always)]
+    pub(crate) fn dh(&self, z: R) -> R {
+        (z.splat(3.0) * z + z.splat(2.0) * self.a) * z + self.b
+    }
+
+    /// Where `Δ` is within rounding of 0 ([`DISC_NEAR`]): a near-double pair of roots.
+    #[inline(always)]
+    pub(crate) fn near_double(&self) -> R::Mask {
+        self.disc.abs().le(self.disc.splat(DISC_NEAR) * self.scale)
+    }
+
+    /// Where the greatest root `z` (from a closed form) is too small for it: see
+    /// [`SMALL_ROOT`].
+    #[inline(always)]
+    pub(crate) fn is_small_root(&self, z: R) -> R::Mask {
+        self.b.gt(z.splat(0.0)) & (z * (z + self.a.abs())).le(z.splat(SMALL_ROOT) * self.b)
+    }
+
+    /// The small greatest root to full relative precision: near 0,
+    /// `h = z·((z + a)z + b) − q²`, so two steps of the fixed point
+    /// `z = q²/((z + a)z + b)` from `q²/b` (it contracts by about `z·|a|/b` per step).
+    #[inline(always)]
+    pub(crate) fn small_root(&self, q: R) -> R {
+        let z = q * q / self.b;
+        q * q / ((z + self.a) * z + self.b)
+    }
+
+    /// Two guarded Newton steps on `h` from `z`, each kept only where it lowers `|h|` (so
+    /// a double root cannot be thrown away; NaN, at `h′ = 0`, keeps `z`).
+    #[inline(always)]
+    pub(crate) fn polish(&self, mut z: R) -> R {
+        let zero = z.splat(0.0);
+        let mut hz = self.h(z);
+        for _ in 0..2 {
+            let zn = (z - hz / self.dh(z)).max(zero);
+            let hn = self.h(zn);
+            let better = hn.abs().lt(hz.abs());
+            z = R::select(better, zn, z);
+            hz = R::select(better, hn, hz);
+        }
+        z
+    }
+}
+
+/// The resolvent's greatest root `z = m² ≥ 0`, with what Ferrari's split needs of it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Root<R: Real> {
+    pub z: R,
+    /// `h'(z)` (at `z_early`: it only sizes errors).
+    pub dh: R,
+    /// `m = √z`.
+    pub m: R,
+    /// `q/m` (garbage when `m = 0`).
+    pub q_over_m: R,
+    /// `q/m` is good to a few ulps, whatever `h'(z)` says (Vieta's `z`, below).
+    pub q_over_m_exact: R::Mask,
+    /// `z` to within a few `ε·|p|`, earlier on the dependency chain than `z` itself: for
+    /// `p + z`, whose rounding is that large anyway.
+    pub z_early: R,
+}
+
+/// The greatest real root of `h` for the depressed quartic `x⁴ + p x² + q x + r` (finite
+/// inputs).
+#[inline(always)]
+pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root<Sc> {
+    let cubic: Cubic<Sc> = cubic(sc(p), sc(q), sc(r));
+    let [a, a3, disc, scale] = [cubic.a, cubic.a3, cubic.disc, cubic.scale].map(|x| x.v);
+    let (third_p, half_q) = (cubic.third_p, cubic.half_q);
+    let near = cubic.near_double().any();
     let (mut z, mut m, mut q_over_m, mut z_early);
     let mut small_root = false;
     let mut vieta = false;
     if !near && disc > 0.0 {
-        let (u, v) = cardano(third_p, half_q, disc);
+        let (u, v, _) = cardano(third_p, half_q, cubic.disc);
+        let (u, v) = (u.v, v.v);
         z = (u + v - a3).max(0.0);
         // The other roots are a complex pair z₂, z̄₂ with 4|z₂|² = (z + a)² + 3(u − v)²
         // (both squares free of cancellation), and z·|z₂|² = q². When z is small next to
@@ -94,20 +199,17 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
         z = if vieta { 4.0 * q * q / pair } else { z };
     } else {
         let w = if near {
-            near_double(a, b, c, a3, third_p, half_q)
+            near_double(&cubic)
         } else {
-            trigonometric(third_p, half_q)
+            trigonometric(third_p, half_q).v
         };
         z = (w - a3).max(0.0);
         // A root far below ε·|a| is out of the closed form's reach, and Newton from there
-        // only gains a factor ε per step. Near 0, h = z·((z + a)z + b) − q², so the fixed
-        // point z = q²/((z + a)z + b) gives it to full relative precision at once (it
-        // contracts by about z·|a|/b per step). Rare: the greatest of three real roots is
-        // seldom tiny.
-        small_root = b > 0.0 && z * (z + a.abs()) <= 1e-3 * b;
+        // only gains a factor ε per step: the fixed point gives it at once. Rare: the
+        // greatest of three real roots is seldom tiny.
+        small_root = cubic.is_small_root(sc(z)).any();
         if small_root {
-            z = q * q / b;
-            z = q * q / ((z + a) * z + b);
+            z = cubic.small_root(sc(q)).v;
         }
         m = z.sqrt();
         // q/m = (q/z)·m: the division overlaps the root instead of waiting for it.
@@ -120,59 +222,60 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root {
     // point above. Elsewhere the closed form is good to a few ulps and the steps would
     // only lengthen the hot path; so is Vieta's z even at a small discriminant (its pair
     // is dominated by (z + a)², which has no cancellation: a tangent at the foot point).
-    // A step is kept only if it lowers |h|, so a double root cannot be thrown away.
     if !vieta && (small_root || disc.abs() <= POLISH_BELOW * scale) {
-        let mut hz = h(z);
-        for _ in 0..2 {
-            let zn = (z - hz / dh(z)).max(0.0);
-            let hn = h(zn);
-            // Written so that NaN (h' = 0) keeps z.
-            if hn.abs() < hz.abs() {
-                z = zn;
-                hz = hn;
-            }
-        }
+        z = cubic.polish(sc(z)).v;
         m = z.sqrt();
         q_over_m = q / m;
         z_early = z;
     }
     Root {
-        z,
-        dh: dh(z_early),
-        m,
-        q_over_m,
-        q_over_m_exact: vieta,
-        z_early,
+        z: sc(z),
+        dh: cubic.dh(sc(z_early)),
+        m: sc(m),
+        q_over_m: sc(q_over_m),
+        q_over_m_exact: sc_mask(vieta),
+        z_early: sc(z_early),
     }
 }
 
 /// Cardano's `(u, v)` for `w³ + 3P' w + 2Q'` (`third_p = P'`, `half_q = Q'`, `disc > 0`):
 /// the one real root is `w = u + v` with `v = −P'/u`, the cube root taken of the
-/// larger-magnitude term to avoid cancellation.
-#[inline]
-fn cardano(third_p: f64, half_q: f64, disc: f64) -> (f64, f64) {
+/// larger-magnitude term to avoid cancellation. Also returns that term, `|Q′| + √Δ`,
+/// whose range the lane solver checks for its cube root.
+#[inline(always)]
+pub(crate) fn cardano<R: Real>(third_p: R, half_q: R, disc: R) -> (R, R, R) {
+    let zero = disc.splat(0.0);
     let cube = half_q.abs() + disc.sqrt();
     // u = ±∛cube and v = −P'/u = ±(−P'/cube)·∛cube²: the division runs while the cube
     // root does.
-    let ratio = -third_p / cube;
-    let big = cbrt(cube);
+    let ratio = third_p.negate() / cube;
+    let big = cube.cbrt();
     let v = ratio * big * big;
-    let (u, v) = if half_q > 0.0 { (-big, -v) } else { (big, v) };
-    if big != 0.0 { (u, v) } else { (0.0, 0.0) }
+    let negative = half_q.gt(zero);
+    let (u, v) = (
+        R::select(negative, big.negate(), big),
+        R::select(negative, v.negate(), v),
+    );
+    let nonzero = big.ne(zero);
+    (
+        R::select(nonzero, u, zero),
+        R::select(nonzero, v, zero),
+        cube,
+    )
 }
 
 /// The greatest of three real roots (`disc ≤ 0`, so `third_p ≤ 0`): `2k cos(θ/3)` with
 /// `k = √(−P')` and `cos θ = −Q'/k³`.
-#[inline]
-fn trigonometric(third_p: f64, half_q: f64) -> f64 {
-    let k = (-third_p).max(0.0).sqrt();
+#[inline(always)]
+pub(crate) fn trigonometric<R: Real>(third_p: R, half_q: R) -> R {
+    let one = third_p.splat(1.0);
+    let k = third_p.negate().max(third_p.splat(0.0)).sqrt();
     // −Q'/k³ = (Q'/P')·√(−1/P'): both divisions and the root overlap the root k. P' = 0
     // makes it NaN or infinite, which `max` and `min` clamp (`clamp` would keep NaN);
     // then k·… is 0.
-    #[allow(clippy::manual_clamp)]
-    let cos3 = ((half_q / third_p) * (-1.0 / third_p).sqrt())
-        .max(-1.0)
-        .min(1.0);
+    let cos3 = ((half_q / third_p) * (one.negate() / third_p).sqrt())
+        .max(one.negate())
+        .min(one);
     // 2k·cos(θ/3) = k·(1 + u).
     k + k * trisect_u(cos3)
 }
@@ -181,12 +284,17 @@ fn trigonometric(third_p: f64, half_q: f64) -> f64 {
 /// real decides the greatest root; `h` at its local minimum `z₊` tells: `h(z₊) ≤ 0` means
 /// a real root at or right of `z₊`, otherwise the only real root is left of the pair.
 #[cold]
-fn near_double(a: f64, b: f64, c: f64, a3: f64, third_p: f64, half_q: f64) -> f64 {
+fn near_double(cubic: &Cubic<Sc>) -> f64 {
+    let [a, b, a3] = [cubic.a, cubic.b, cubic.a3].map(|x| x.v);
+    let (third_p, half_q) = (cubic.third_p, cubic.half_q);
+    let one_root = || {
+        let (u, v, _) = cardano(third_p, half_q, sc(0.0));
+        u.v + v.v
+    };
     let crit = a * a - 3.0 * b;
     if crit <= 0.0 {
         // h is monotone: one real root (a triple one when crit = 0).
-        let (u, v) = cardano(third_p, half_q, 0.0);
-        return u + v;
+        return one_root();
     }
     let sq = crit.sqrt();
     // Larger root of h' = 3z² + 2az + b, without cancellation.
@@ -195,12 +303,10 @@ fn near_double(a: f64, b: f64, c: f64, a3: f64, third_p: f64, half_q: f64) -> f6
     } else {
         (sq - a) / 3.0
     };
-    let h_min = ((z_min + a) * z_min + b) * z_min + c;
-    if h_min <= 0.0 {
-        trigonometric(third_p, half_q).max(z_min + a3)
+    if cubic.h(sc(z_min)).v <= 0.0 {
+        trigonometric(third_p, half_q).v.max(z_min + a3)
     } else {
-        let (u, v) = cardano(third_p, half_q, 0.0);
-        u + v
+        one_root()
     }
 }
 
@@ -221,6 +327,7 @@ mod tests {
             -0.00023409507477270552,
         );
         let Root { z, dh, .. } = greatest_root(p, q, r);
+        let (z, dh) = (z.v, dh.v);
         let want = q * q / (p * p - 4.0 * r);
         assert!(((z - want) / want).abs() < 1e-6, "{z:e} vs {want:e}");
         assert!(dh > 0.0);
@@ -235,10 +342,10 @@ mod tests {
     #[test]
     fn greatest_of_three_real_roots() {
         // x⁴ − 5x² + 4 = (x² − 1)(x² − 4): pairings give z ∈ {0, 1, 9}.
-        let z = greatest_root(-5.0, 0.0, 4.0).z;
+        let z = greatest_root(-5.0, 0.0, 4.0).z.v;
         assert!((z - 9.0).abs() < 1e-12, "{z}");
         // (x² − 1)²: z ∈ {0, 0, 4}.
-        let z = greatest_root(-2.0, 0.0, 1.0).z;
+        let z = greatest_root(-2.0, 0.0, 1.0).z.v;
         assert!((z - 4.0).abs() < 1e-12, "{z}");
     }
 
@@ -253,7 +360,7 @@ mod tests {
             let q =
                 rng.random_range(-4.0..4.0) * s * s * s * 10f64.powf(rng.random_range(-14.0..0.0));
             let r = rng.random_range(-4.0..4.0) * s * s * s * s;
-            let z = greatest_root(p, q, r).z;
+            let z = greatest_root(p, q, r).z.v;
             assert!(z >= 0.0);
             let zs = s * s;
             let mag = ((z + 2.0 * p.abs()) * z + p * p + 4.0 * r.abs()) * z + q * q;

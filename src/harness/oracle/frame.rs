@@ -1,7 +1,7 @@
 //! The line in the torus's frame, by unit arc length from its foot point, and the
 //! critical points of its distance to the core circle.
 
-use super::check_inputs;
+use super::Query;
 use super::interval::{bisect, cubic_real_roots};
 use glam::DVec3;
 
@@ -11,7 +11,7 @@ use glam::DVec3;
 /// With `uh`, `ph` the parts of `u`, `p` perpendicular to the axis, the distance from the
 /// axis is `ρ(s)² = A (s − s_m)² + m2`, with `A = |uh|²`, `s_m = −(ph·uh)/A` and
 /// `m2 = |ph × uh|²/A` (the closest approach to the axis, exact via the cross product).
-pub(super) struct Frame {
+pub(super) struct LineFrame {
     pub(super) major: f64,
     pub(super) minor: f64,
     pub(super) axis: DVec3,
@@ -32,16 +32,18 @@ pub(super) struct Frame {
     pub(super) m2: f64,
 }
 
-impl Frame {
-    pub(super) fn new(
-        center: DVec3,
-        axis: DVec3,
-        major: f64,
-        minor: f64,
-        o: DVec3,
-        d: DVec3,
-    ) -> Frame {
-        check_inputs(center, axis, major, minor, o, d, 0.0, 0.0);
+impl LineFrame {
+    pub(super) fn new(query: &Query) -> LineFrame {
+        query.check_line();
+        let Query {
+            center,
+            axis,
+            major,
+            minor,
+            o,
+            d,
+            ..
+        } = *query;
         let axis = axis.normalize();
         let len = d.length();
         let u = d / len;
@@ -58,7 +60,7 @@ impl Frame {
         } else {
             (0.0, ph.length_squared())
         };
-        Frame {
+        LineFrame {
             major,
             minor,
             axis,

@@ -17,7 +17,7 @@
 //! far origins well conditioned), the minimum of D over an interval is at an end or at a critical point of D. Two sets
 //! of candidates are evaluated with D itself:
 //! - every critical point of D, found exactly by splitting `½ dD²/ds` into at most three
-//!   monotone pieces (see `Frame::half_slope`) and bisecting each sign change to the last
+//!   monotone pieces (see `LineFrame::half_slope`) and bisecting each sign change to the last
 //!   bit: this makes the minimum exact, not just close;
 //! - every real root of the cubic F′, where F is the torus quartic (own cubic solver,
 //!   by monotone pieces and bisection). Since F = (D² − r²)·G with G > 0, F < 0 exactly
@@ -41,7 +41,7 @@ pub use roots::reference_roots;
 pub use sampling::margin_by_sampling;
 
 use crate::{Ray, Torus};
-use frame::Frame;
+use frame::LineFrame;
 use glam::DVec3;
 
 /// Relative half-width ε of the ambiguity band: a label is [`OracleClass::Ambiguous`] iff
@@ -87,106 +87,126 @@ impl OracleLabel {
     }
 }
 
+/// One question to the oracle: the line `o + t d`, `t ∈ [t_min, t_max]` (either end may
+/// be infinite; `t` in units of `d`, which need not be unit length), against the torus
+/// with centre `center`, axis `axis` (normalized by the oracle), R = `major`, r = `minor`;
+/// all in f64, world frame.
+///
+/// Every method panics if `d` or `axis` is zero or not finite, if `o` or `center` is not
+/// finite, if the radii are not `major > minor > 0`, or if `t_min > t_max` or either is NaN.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Query {
+    /// The torus's centre.
+    pub center: DVec3,
+    /// The torus's axis (any length).
+    pub axis: DVec3,
+    /// R.
+    pub major: f64,
+    /// r.
+    pub minor: f64,
+    /// The line's origin.
+    pub o: DVec3,
+    /// The line's direction.
+    pub d: DVec3,
+    /// The range's start.
+    pub t_min: f64,
+    /// The range's end.
+    pub t_max: f64,
+}
+
+impl Query {
+    /// The ray over its range, on the torus as the oracle defines it (f32 fields converted
+    /// exactly, the axis normalized in f64).
+    pub fn ray(torus: &Torus, ray: &Ray) -> Query {
+        Query {
+            center: torus.center().as_dvec3(),
+            axis: torus.axis().as_dvec3().normalize(),
+            major: f64::from(torus.major_radius()),
+            minor: f64::from(torus.minor_radius()),
+            o: ray.origin().as_dvec3(),
+            d: ray.dir().as_dvec3(),
+            t_min: f64::from(ray.t_min()),
+            t_max: f64::from(ray.t_max()),
+        }
+    }
+
+    /// The ray's whole line, `t ∈ (−∞, +∞)`.
+    pub fn line(torus: &Torus, ray: &Ray) -> Query {
+        Query {
+            t_min: f64::NEG_INFINITY,
+            t_max: f64::INFINITY,
+            ..Query::ray(torus, ray)
+        }
+    }
+
+    /// The same line over `[t_min, t_max]`.
+    pub fn over(self, t_min: f64, t_max: f64) -> Query {
+        Query {
+            t_min,
+            t_max,
+            ..self
+        }
+    }
+
+    /// The oracle's class and margin: [`classify`] for any [`Query`].
+    pub fn classify(&self) -> OracleLabel {
+        let frame = LineFrame::new(self);
+        let (lo, hi) = frame.s_range(self.t_min, self.t_max);
+        let mut best = f64::INFINITY;
+        for s in frame
+            .d_candidates(lo, hi)
+            .into_iter()
+            .chain(frame.f_prime_roots())
+        {
+            if s >= lo && s <= hi {
+                best = best.min(frame.dist(s));
+            }
+        }
+        for s in [lo, hi] {
+            if s.is_finite() {
+                best = best.min(frame.dist(s));
+            }
+        }
+        OracleLabel::from_margin(best - self.minor, self.major, self.minor)
+    }
+
+    /// The torus and the line are valid (the range is checked where it is used).
+    pub(super) fn check_line(&self) {
+        let Query {
+            center,
+            axis,
+            major,
+            minor,
+            o,
+            d,
+            ..
+        } = *self;
+        assert!(center.is_finite() && o.is_finite(), "non-finite point");
+        assert!(
+            axis.is_finite() && axis.length_squared() > 0.0,
+            "bad axis {axis}"
+        );
+        assert!(d.is_finite() && d.length_squared() > 0.0, "bad dir {d}");
+        assert!(
+            minor > 0.0 && major > minor && major.is_finite(),
+            "need R > r > 0, got R = {major}, r = {minor}"
+        );
+    }
+
+    /// [`Query::check_line`] and the range.
+    pub(super) fn check(&self) {
+        self.check_line();
+        let (t_min, t_max) = (self.t_min, self.t_max);
+        assert!(t_min <= t_max, "bad range [{t_min}, {t_max}]");
+    }
+}
+
 /// Classify the ray over `t ∈ [t_min, t_max]` (ray mode; `t_max` may be +∞).
 pub fn classify(torus: &Torus, ray: &Ray) -> OracleLabel {
-    let (c, a, big, small) = torus_f64(torus);
-    classify_f64(
-        c,
-        a,
-        big,
-        small,
-        ray.origin().as_dvec3(),
-        ray.dir().as_dvec3(),
-        f64::from(ray.t_min()),
-        f64::from(ray.t_max()),
-    )
+    Query::ray(torus, ray).classify()
 }
 
 /// Classify the ray's whole line, `t ∈ (−∞, +∞)` (line mode: the range is ignored).
 pub fn classify_line(torus: &Torus, ray: &Ray) -> OracleLabel {
-    let (c, a, big, small) = torus_f64(torus);
-    classify_f64(
-        c,
-        a,
-        big,
-        small,
-        ray.origin().as_dvec3(),
-        ray.dir().as_dvec3(),
-        f64::NEG_INFINITY,
-        f64::INFINITY,
-    )
-}
-
-/// The f64 entry point behind [`classify`] and [`classify_line`]: the line `o + t d`,
-/// `t ∈ [t_min, t_max]` (either end may be infinite), against the torus with centre
-/// `center`, rotation `axis` (normalized here), R = `major`, r = `minor`.
-///
-/// `d` need not be unit length; `t` is in units of `d`.
-///
-/// # Panics
-/// If `d` or `axis` is zero or not finite, if `o` or `center` is not finite, if the radii
-/// are not `major > minor > 0`, or if `t_min > t_max` or either is NaN.
-#[allow(clippy::too_many_arguments)]
-pub fn classify_f64(
-    center: DVec3,
-    axis: DVec3,
-    major: f64,
-    minor: f64,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
-) -> OracleLabel {
-    let frame = Frame::new(center, axis, major, minor, o, d);
-    let (lo, hi) = frame.s_range(t_min, t_max);
-    let mut best = f64::INFINITY;
-    for s in frame
-        .d_candidates(lo, hi)
-        .into_iter()
-        .chain(frame.f_prime_roots())
-    {
-        if s >= lo && s <= hi {
-            best = best.min(frame.dist(s));
-        }
-    }
-    for s in [lo, hi] {
-        if s.is_finite() {
-            best = best.min(frame.dist(s));
-        }
-    }
-    OracleLabel::from_margin(best - minor, major, minor)
-}
-
-/// The torus as the oracle defines it: f32 fields converted exactly, axis normalized in f64.
-pub(super) fn torus_f64(torus: &Torus) -> (DVec3, DVec3, f64, f64) {
-    (
-        torus.center().as_dvec3(),
-        torus.axis().as_dvec3().normalize(),
-        f64::from(torus.major_radius()),
-        f64::from(torus.minor_radius()),
-    )
-}
-
-#[allow(clippy::too_many_arguments)]
-pub(super) fn check_inputs(
-    center: DVec3,
-    axis: DVec3,
-    major: f64,
-    minor: f64,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
-) {
-    assert!(center.is_finite() && o.is_finite(), "non-finite point");
-    assert!(
-        axis.is_finite() && axis.length_squared() > 0.0,
-        "bad axis {axis}"
-    );
-    assert!(d.is_finite() && d.length_squared() > 0.0, "bad dir {d}");
-    assert!(
-        minor > 0.0 && major > minor && major.is_finite(),
-        "need R > r > 0, got R = {major}, r = {minor}"
-    );
-    assert!(t_min <= t_max, "bad range [{t_min}, {t_max}]");
+    Query::line(torus, ray).classify()
 }

@@ -1,11 +1,11 @@
 //! The crossings of a line with the torus surface, to near f64 precision: the reference
 //! the solver bench and the intersection tests score roots against.
 
-use super::frame::Frame;
+use super::Query;
+use super::frame::LineFrame;
 use super::interval::bisect;
-use glam::DVec3;
 
-/// All `t ∈ [t_min, t_max]` where the line `o + t d` crosses the torus surface (D = r),
+/// All `t ∈ [t_min, t_max]` where the [`Query`]'s line `o + t d` crosses the torus surface (D = r),
 /// sorted, to near f64 precision. Pass infinite ends for the whole line.
 ///
 /// D is monotone between consecutive critical points of D, so each such segment holds at
@@ -20,19 +20,16 @@ use glam::DVec3;
 /// hit gives 2 or 4 roots and a line miss gives none.
 ///
 /// # Panics
-/// As [`classify_f64`](super::classify_f64).
-#[allow(clippy::too_many_arguments)]
-pub fn reference_roots(
-    center: DVec3,
-    axis: DVec3,
-    major: f64,
-    minor: f64,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
-) -> Vec<f64> {
-    let frame = Frame::new(center, axis, major, minor, o, d);
+/// As [`Query`].
+pub fn reference_roots(query: &Query) -> Vec<f64> {
+    let frame = LineFrame::new(query);
+    let Query {
+        major,
+        minor,
+        t_min,
+        t_max,
+        ..
+    } = *query;
     // Beyond |s + p·u| > R + r the point is farther than R + r from the centre, so D > r.
     let reach = (major + minor) * (1.0 + 1e-6) + frame.e.abs();
     let mut cuts = vec![-reach - frame.e];

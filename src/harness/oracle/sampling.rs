@@ -1,29 +1,28 @@
 //! The second, independent method for the margin: dense samples in world coordinates and
 //! golden-section refinement. Slow; the tests compare the oracle against it.
 
-use super::check_inputs;
-use glam::DVec3;
+use super::Query;
 
 /// The margin by the second, independent method: dense sampling of D in world coordinates
 /// over the part of the line that can hold the minimum, then golden-section refinement
 /// around every discrete local minimum. Same inputs and meaning as
-/// [`classify_f64`](super::classify_f64); slow, for tests only.
+/// [`Query::classify`]; slow, for tests only.
 ///
 /// The window: let x_n be the point of the range closest to the centre. D(x_n) ≤ |x_n| + R
 /// and D(x) ≥ |x| − R everywhere, so every minimizer has |x| ≤ |x_n| + 2R: sampling the
 /// chord of that sphere (clipped to the range) is enough, also for lines that miss the torus.
-#[allow(clippy::too_many_arguments)]
-pub fn margin_by_sampling(
-    center: DVec3,
-    axis: DVec3,
-    major: f64,
-    minor: f64,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
-) -> f64 {
-    check_inputs(center, axis, major, minor, o, d, t_min, t_max);
+pub fn margin_by_sampling(query: &Query) -> f64 {
+    query.check();
+    let Query {
+        center,
+        axis,
+        major,
+        minor,
+        o,
+        d,
+        t_min,
+        t_max,
+    } = *query;
     let a = axis.normalize();
     let dist = |t: f64| {
         let x = (o + t * d) - center;

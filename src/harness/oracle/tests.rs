@@ -54,14 +54,26 @@ impl Pose {
     fn dir(&self, l: DVec3) -> DVec3 {
         l.x * self.x + l.y * self.a + l.z * self.z
     }
+    fn query(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Query {
+        Query {
+            center: self.c,
+            axis: self.a,
+            major: self.big,
+            minor: self.small,
+            o,
+            d,
+            t_min,
+            t_max,
+        }
+    }
     fn label(&self, o: DVec3, d: DVec3, t0: f64, t1: f64) -> OracleLabel {
-        classify_f64(self.c, self.a, self.big, self.small, o, d, t0, t1)
+        self.query(o, d, t0, t1).classify()
     }
     fn sampled(&self, o: DVec3, d: DVec3, t0: f64, t1: f64) -> f64 {
-        margin_by_sampling(self.c, self.a, self.big, self.small, o, d, t0, t1)
+        margin_by_sampling(&self.query(o, d, t0, t1))
     }
     fn roots(&self, o: DVec3, d: DVec3, t0: f64, t1: f64) -> Vec<f64> {
-        reference_roots(self.c, self.a, self.big, self.small, o, d, t0, t1)
+        reference_roots(&self.query(o, d, t0, t1))
     }
     /// g = D − r at o + t d, straight from the definition in world coordinates.
     fn g(&self, o: DVec3, d: DVec3, t: f64) -> f64 {
@@ -493,7 +505,7 @@ fn f_prime_candidates_give_the_same_class() {
             let pose = Pose::random(&mut rng, big, small);
             let (o, d, _, _, _) = random_line(&mut rng, &pose, i % 6);
             let l = pose.label(o, d, -INF, INF);
-            let frame = Frame::new(pose.c, pose.a, big, small, o, d);
+            let frame = LineFrame::new(&pose.query(o, d, -INF, INF));
             let by_f = frame
                 .f_prime_roots()
                 .into_iter()
@@ -518,18 +530,18 @@ fn f32_wrappers_agree_with_sampling_on_random_rays() {
             let target = center + (unit(&mut rng) * f64::from(nu + 1.0)).as_vec3();
             let origin = center + (unit(&mut rng) * f64::from(4.0 * nu)).as_vec3();
             let ray = Ray::new(origin, target - origin).unwrap();
-            let (c, a, big, small) = torus_f64(&torus);
-            let (o, d) = (origin.as_dvec3(), ray.dir().as_dvec3());
+            let query = Query::ray(&torus, &ray);
+            let (big, small) = (query.major, query.minor);
             let ray_m = classify(&torus, &ray).margin;
             let line_m = classify_line(&torus, &ray).margin;
             assert!(close(
                 ray_m,
-                margin_by_sampling(c, a, big, small, o, d, 0.0, INF),
+                margin_by_sampling(&query.over(0.0, INF)),
                 1e-9 * (big + small)
             ));
             assert!(close(
                 line_m,
-                margin_by_sampling(c, a, big, small, o, d, -INF, INF),
+                margin_by_sampling(&query.over(-INF, INF)),
                 1e-9 * (big + small)
             ));
             assert!(line_m <= ray_m);

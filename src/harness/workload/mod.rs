@@ -208,7 +208,7 @@ pub fn generate(
     let mut rng = Pcg64::seed_from_u64(stream_seed);
     let torus = Torus::new(glam::Vec3::ZERO, glam::Vec3::Y, 1.0, (1.0 / nu) as f32)
         .map_err(|_| GenerateError::BadNu(nu))?;
-    let frame = Frame::draw(&torus, pose, &mut rng);
+    let frame = PosedTorus::draw(&torus, pose, &mut rng);
     let mut batch = Batch {
         case,
         nu,
@@ -229,7 +229,7 @@ pub fn generate(
 }
 
 /// The torus at its pose, with the f64 torus-frame → world map used to place rays.
-pub(crate) struct Frame {
+pub(crate) struct PosedTorus {
     pub torus: Torus,
     pub major: f64,
     pub minor: f64,
@@ -237,8 +237,11 @@ pub(crate) struct Frame {
     to_world: DMat3,
 }
 
-impl Frame {
-    fn draw(canonical: &Torus, pose: Pose, rng: &mut Pcg64) -> Frame {
+/// The generators' name for [`PosedTorus`] (their files still say `Frame`).
+pub(crate) type Frame = PosedTorus;
+
+impl PosedTorus {
+    fn draw(canonical: &Torus, pose: Pose, rng: &mut Pcg64) -> PosedTorus {
         let (major, minor) = (
             canonical.major_radius() as f64,
             canonical.minor_radius() as f64,
@@ -257,7 +260,7 @@ impl Frame {
                     .expect("a valid canonical torus stays valid at any pose")
             }
         };
-        Frame {
+        PosedTorus {
             center: torus.center().as_dvec3(),
             to_world: torus.to_local_rotation_f64().transpose(),
             torus,

@@ -1,20 +1,25 @@
 //! The batch solver: the nearest root in [lo, hi] of many depressed monic quartics
 //! u⁴ + p u² + q u + r at once, on f64 lanes.
 //!
-//! Same method as the scalar [`crate::quartic::nearest_root_depressed`] (Ferrari with the
-//! resolvent solved for z = m², its greatest root, the better-conditioned split, stable
-//! quadratics, one guarded Newton step), written branch-free: both resolvent formulas
-//! are evaluated on every lane and selected. The rare lanes that need the scalar solver's
+//! Same method as the scalar [`crate::quartic::nearest_root_depressed`], and mostly the
+//! same source: the resolvent's steps, Ferrari's split and the nearest-root pick of the
+//! common ("clear") path are the scalar solver's own functions, generic over
+//! `crate::batch::real::Real` and instantiated here on f64 lanes. What this driver does
+//! differently is branch-free: both resolvent formulas are evaluated where any lane of a
+//! register needs them and selected. The rare lanes that need the scalar solver's
 //! careful paths (a near-double root of the resolvent, or a factor whose discriminant is
 //! within rounding of zero: tangent lines) are flagged and solved by the scalar solver
 //! afterwards, so the accuracy is the scalar solver's: 0 missed and 0 spurious roots
 //! against the oracle on the solver families (checked in `tests/batch_solve.rs`).
 //!
-//! The roots are not bit-identical to the scalar solver's: libm's `cbrt`, `acos` and
-//! `cos` have no SIMD form, and their replacements ([`cube_root`]) differ from them in
-//! the last bits before the Newton polish.
+//! The roots are not bit-identical to the scalar solver's, because the driver differs
+//! where a lane cannot branch: every lane's resolvent root gets the two Newton steps
+//! (the scalar solver polishes only where the closed form loses digits), a small Cardano
+//! root is polished rather than taken in Vieta's form, and the cube root starts from a
+//! lane seed (`cube_root.rs`).
 
 mod cube_root;
+pub(crate) use cube_root::cbrt;
 pub(crate) mod nearest;
 mod resolvent;
 

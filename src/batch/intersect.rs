@@ -3,14 +3,15 @@
 //! Every step is the scalar code's, in the same order (see `src/intersect.rs`): the world
 //! ray to the torus frame in f64, the foot point and the scale 1/R, the quartic's
 //! coefficients in their non-cancelling forms, the bounding-sphere chord and range tests,
-//! the nearest root (the batch solver, [`super::solve`]), and the normal. A lane whose
+//! the nearest root (the batch solver, [`super::quartic`]), and the normal. A lane whose
 //! quartic needs the scalar solver's careful paths is flagged, and the wavefront runs the
 //! scalar [`crate::intersect()`] on that ray instead, so tangent rays get exactly the
 //! scalar answer.
 
 use super::lanes::{F64s, M64s};
 use super::lines::BLOCK;
-use super::solve::nearest::nearest_root;
+use super::quartic::nearest::nearest_root;
+use crate::intersect::CHORD_SLACK;
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
@@ -92,7 +93,7 @@ pub(crate) fn intersect_lanes(
     out.hit.resize(n / BLOCK, 0);
     out.fallback.resize(n / BLOCK, 0);
     dispatch.run(Kernel {
-        frame: Frame::of(torus),
+        frame: TorusF64::of(torus),
         rays,
         out,
     });
@@ -100,7 +101,7 @@ pub(crate) fn intersect_lanes(
 
 /// The torus as the scalar exact path sees it, in f64.
 #[derive(Clone, Copy)]
-struct Frame {
+struct TorusF64 {
     center: DVec3,
     to_local: DMat3,
     to_world: DMat3,
@@ -113,14 +114,14 @@ struct Frame {
     outer: f64,
 }
 
-impl Frame {
-    fn of(torus: &Torus) -> Frame {
+impl TorusF64 {
+    fn of(torus: &Torus) -> TorusF64 {
         let to_local = torus.to_local_rotation_f64();
         let (major, minor) = (
             f64::from(torus.major_radius()),
             f64::from(torus.minor_radius()),
         );
-        Frame {
+        TorusF64 {
             center: torus.center().as_dvec3(),
             to_local,
             to_world: to_local.transpose(),
@@ -133,18 +134,19 @@ impl Frame {
     }
 }
 
-/// A 3-vector of f64 lanes.
+/// glam's `DVec3` over f64 lanes (as [`super::vec3s::Vec3s`] is its `Vec3` over f32
+/// lanes): the same formulas in the same order.
 #[derive(Clone, Copy)]
-struct V<S: Simd> {
+struct DVec3s<S: Simd> {
     x: F64s<S>,
     y: F64s<S>,
     z: F64s<S>,
 }
 
-impl<S: Simd> V<S> {
+impl<S: Simd> DVec3s<S> {
     #[inline(always)]
-    fn splat(s: S, v: DVec3) -> V<S> {
-        V {
+    fn splat(s: S, v: DVec3) -> DVec3s<S> {
+        DVec3s {
             x: F64s::splat(s, v.x),
             y: F64s::splat(s, v.y),
             z: F64s::splat(s, v.z),
@@ -152,28 +154,28 @@ impl<S: Simd> V<S> {
     }
     /// `DVec3::dot`: `(x·x′ + y·y′) + z·z′`.
     #[inline(always)]
-    fn dot(self, o: V<S>) -> F64s<S> {
+    fn dot(self, o: DVec3s<S>) -> F64s<S> {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
     #[inline(always)]
-    fn scale(self, k: F64s<S>) -> V<S> {
-        V {
+    fn scale(self, k: F64s<S>) -> DVec3s<S> {
+        DVec3s {
             x: self.x * k,
             y: self.y * k,
             z: self.z * k,
         }
     }
     #[inline(always)]
-    fn sub(self, o: V<S>) -> V<S> {
-        V {
+    fn sub(self, o: DVec3s<S>) -> DVec3s<S> {
+        DVec3s {
             x: self.x - o.x,
             y: self.y - o.y,
             z: self.z - o.z,
         }
     }
     #[inline(always)]
-    fn add(self, o: V<S>) -> V<S> {
-        V {
+    fn add(self, o: DVec3s<S>) -> DVec3s<S> {
+        DVec3s {
             x: self.x + o.x,
             y: self.y + o.y,
             z: self.z + o.z,
@@ -181,17 +183,17 @@ impl<S: Simd> V<S> {
     }
     /// `DMat3 * DVec3` as glam computes it: `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
     #[inline(always)]
-    fn rotated(self, m: &DMat3) -> V<S> {
+    fn rotated(self, m: &DMat3) -> DVec3s<S> {
         let s = self.x.s;
-        V::splat(s, m.x_axis)
+        DVec3s::splat(s, m.x_axis)
             .scale(self.x)
-            .add(V::splat(s, m.y_axis).scale(self.y))
-            .add(V::splat(s, m.z_axis).scale(self.z))
+            .add(DVec3s::splat(s, m.y_axis).scale(self.y))
+            .add(DVec3s::splat(s, m.z_axis).scale(self.z))
     }
 }
 
 struct Kernel<'a> {
-    frame: Frame,
+    frame: TorusF64,
     rays: &'a RaysF64,
     out: &'a mut Answers,
 }
@@ -214,12 +216,12 @@ impl WithSimd for Kernel<'_> {
                         F64s::load(s, &col[$j][at.clone()])
                     };
                 }
-                let origin = V {
+                let origin = DVec3s {
                     x: load!(0),
                     y: load!(1),
                     z: load!(2),
                 };
-                let dir = V {
+                let dir = DVec3s {
                     x: load!(3),
                     y: load!(4),
                     z: load!(5),
@@ -242,7 +244,7 @@ impl WithSimd for Kernel<'_> {
 /// One register of rays' answers.
 struct Lane<S: Simd> {
     t: F64s<S>,
-    normal: V<S>,
+    normal: DVec3s<S>,
     hit: M64s<S>,
     fallback: M64s<S>,
 }
@@ -251,9 +253,9 @@ struct Lane<S: Simd> {
 #[inline(always)]
 fn intersect_lane<S: Simd>(
     s: S,
-    frame: &Frame,
-    origin: V<S>,
-    dir: V<S>,
+    frame: &TorusF64,
+    origin: DVec3s<S>,
+    dir: DVec3s<S>,
     t_min: F64s<S>,
     t_max: F64s<S>,
 ) -> Lane<S> {
@@ -265,7 +267,7 @@ fn intersect_lane<S: Simd>(
         };
     }
     // `Torus::line_to_local_f64`.
-    let centre = V {
+    let centre = DVec3s {
         x: c!(frame.center.x),
         y: c!(frame.center.y),
         z: c!(frame.center.z),
@@ -290,7 +292,7 @@ fn intersect_lane<S: Simd>(
         ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
     // `intersect_local`: the chord of the bounding sphere and the range.
     let outer = c!(frame.outer);
-    let chord_sq = outer * outer * c!(1.0 + 1e-12) - p.dot(p);
+    let chord_sq = outer * outer * c!(1.0 + CHORD_SLACK) - p.dot(p);
     let inv_major = inv_r;
     let len = c!(1.0) / inv_len;
     let lo = (t_min * len + s_) * inv_major;
@@ -303,7 +305,7 @@ fn intersect_lane<S: Simd>(
     let t = (u * major - s_) * inv_len;
     let x = p.add(dh.scale(u));
     let w = x.dot(x) + k;
-    let grad = V {
+    let grad = DVec3s {
         x: w * x.x - c!(2.0) * x.x,
         y: w * x.y,
         z: w * x.z - c!(2.0) * x.z,

@@ -1,13 +1,12 @@
-//! The two cube roots Cardano's formula needs, over f64 lanes, without libm: the real
-//! cube root ∛y and the trisection cos(arccos(x)/3).
-//!
-//! The scalar solver calls libm's `cbrt`, `acos` and `cos`, which have no SIMD form in
-//! the standard library. Both are roots of cubics, so each is a cheap seed and a few
-//! Halley steps (cubic convergence: every step triples the correct digits). They need
-//! not match libm bit for bit: the resolvent root they feed is Newton-polished on the
-//! cubic itself afterwards, exactly as in the scalar solver.
+//! The lane seed of the cube root ∛y, the one step of the solver whose form depends on
+//! the width: the scalar solver's seed reads the exponent of one `f64` and looks up
+//! 2^(j/3), which lanes cannot do cheaply, so lanes start from Kahan's bit trick instead
+//! and take more of the same Halley steps ([`crate::quartic::cube_root::cbrt_halley`]).
+//! The trisection cos(arccos(x)/3) is the scalar solver's own
+//! ([`crate::quartic::cube_root::trisect_u`]).
 
 use crate::batch::lanes::F64s;
+use crate::quartic::cube_root::cbrt_halley;
 use pulp::Simd;
 
 /// The range of y where [`cbrt`] is accurate: t³, 2t³ + y and t times the Halley ratio
@@ -19,8 +18,10 @@ pub(crate) const CBRT_RANGE: (f64, f64) = (1e-290, 1e290);
 ///
 /// Seed: Kahan's bit trick (as in fdlibm's `cbrt`): the high 32 bits of y, divided by 3,
 /// plus the bias 715 094 163, over a zero low word, is ∛y within about 6 %. Then three
-/// Halley steps t ← t·((t³ + 2y)/(2t³ + y)): 6 % → 10⁻⁴ → 10⁻¹² → below rounding. The
-/// one-lane scalar fallback, whose f64 and u32 registers differ in size, calls libm.
+/// Halley steps t ← t·((t³ + 2y)/(2t³ + y)): 6 % → 10⁻⁴ → 10⁻¹² → below rounding. A
+/// register whose f64 and u32 lanes differ in number calls libm (the one-lane scalar
+/// register never comes here: [`crate::batch::real::Real::cbrt`] gives it the scalar
+/// solver's cube root).
 #[inline(always)]
 pub(crate) fn cbrt<S: Simd>(y: F64s<S>) -> F64s<S> {
     let s = y.s;
@@ -43,47 +44,18 @@ pub(crate) fn cbrt<S: Simd>(y: F64s<S>) -> F64s<S> {
         s,
         v: pulp::bytemuck::cast(seed),
     };
-    let two = F64s::splat(s, 2.0);
     for _ in 0..3 {
-        let t3 = t * t * t;
-        t = t * ((t3 + two * y) / (two * t3 + y));
+        t = cbrt_halley(t, y);
     }
     t
-}
-
-/// cos(arccos(x)/3) for x ∈ [−1, 1]: the largest root t ∈ [½, 1] of 4t³ − 3t = x.
-///
-/// With u = 2t − 1 ∈ [0, 1] the cubic is u²(3 + u) = 2(1 + x), whose left side is
-/// increasing and convex on u ≥ 0. Seed u₀ = min(√(2(1 + x)/3), 1), within 16 % (as
-/// √(3 + u) ∈ [√3, 2]); three Halley steps bring that below rounding. Near x = −1 the
-/// seed keeps its relative accuracy where the cubic has a double root, so no digits are
-/// lost to it (the scalar solver sends lanes that close to a double root of the
-/// resolvent to its careful path anyway).
-#[inline(always)]
-pub(crate) fn trisect_cos<S: Simd>(x: F64s<S>) -> F64s<S> {
-    let s = x.s;
-    macro_rules! c {
-        ($x:expr) => {
-            F64s::splat(s, $x)
-        };
-    }
-    let rhs = c!(2.0) * (c!(1.0) + x);
-    let mut u = (rhs / c!(3.0)).sqrt().min_num(c!(1.0));
-    for _ in 0..3 {
-        let f = u * u * (c!(3.0) + u) - rhs;
-        let df = c!(6.0) * u + c!(3.0) * u * u;
-        let d2f = c!(6.0) + c!(6.0) * u;
-        u = u - c!(2.0) * f * df / (c!(2.0) * df * df - f * d2f);
-    }
-    // rhs = 0 (x = −1) has the double root u = 0, where Halley's step is 0/0.
-    let u = rhs.gt(c!(0.0)).select(u, c!(0.0));
-    c!(0.5) * (c!(1.0) + u)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::batch::real::Real;
     use crate::batch::{Dispatch, Isa};
+    use crate::quartic::cube_root::trisect_u;
     use pulp::WithSimd;
 
     /// Runs one function over `xs`, a register at a time (padded with 1.0).
@@ -105,7 +77,7 @@ mod tests {
                 let x = F64s::load(s, &lanes);
                 let y = match self.1 {
                     Kind::Cbrt => cbrt(x),
-                    Kind::Trisect => trisect_cos(x),
+                    Kind::Trisect => x.splat(0.5) * (x.splat(1.0) + trisect_u(x)),
                 };
                 let v = y.v;
                 let got = pulp::bytemuck::cast_slice::<S::f64s, f64>(std::slice::from_ref(&v));
