@@ -57,6 +57,17 @@ struct Tally {
 
 impl Tally {
     fn check(&mut self, set: &Set, levels: &[Dispatch]) {
+        self.check_against(set, levels, CullKind::keeps);
+    }
+
+    /// [`Tally::check`] with the width-1 verdict taken from `reference` (the real one is
+    /// `CullKind::keeps`; a test swaps in a wrong one to show the comparison sees it).
+    fn check_against(
+        &mut self,
+        set: &Set,
+        levels: &[Dispatch],
+        reference: impl Fn(CullKind, &CullBounds, Vec3, Vec3) -> bool,
+    ) {
         let Set { torus, rays } = set;
         let bounds = CullBounds::of(torus);
         let lines = Lines::from_rays(torus, rays);
@@ -86,7 +97,7 @@ impl Tally {
             let scalar: Vec<bool> = (0..lines.len())
                 .map(|i| {
                     let l = lines.get(i);
-                    cull.keeps(&bounds, l.origin, l.dir)
+                    reference(cull, &bounds, l.origin, l.dir)
                 })
                 .collect();
             for dispatch in levels {
@@ -407,26 +418,46 @@ fn any_length_and_the_padding_never_shows() {
     );
 }
 
-/// The test can fail: a batch verdict that differs from the scalar one is caught.
+/// The test can fail: [`Tally::check`]'s comparison, fed a wrong width-1 verdict (skala's
+/// replaced by cychosz's, which keeps every hole line skala rejects), counts the
+/// disagreements on skala alone, at every level, and reports them.
 #[test]
 fn the_comparison_sees_a_wrong_verdict() {
+    let levels = levels();
     let torus = Torus::canonical(1.0, 0.25).unwrap();
-    let bounds = CullBounds::of(&torus);
-    // Straight down the hole: skala rejects, cychosz keeps. Comparing one cull's batch
-    // verdict with the other's scalar verdict must therefore disagree.
-    let ray = Ray::new(Vec3::new(0.1, 5.0, 0.0), Vec3::NEG_Y).unwrap();
-    let lines = Lines::from_rays(&torus, &[ray]);
-    let mut keep = KeepMask::new();
-    for dispatch in Isa::available()
-        .into_iter()
-        .map(|i| Dispatch::forced(i).unwrap())
-    {
-        cull_batch(&dispatch, CullKind::Skala, &bounds, &lines, &mut keep).unwrap();
-        let l = lines.get(0);
-        assert!(!keep.get(0));
-        assert_ne!(
-            keep.get(0),
-            CullKind::Cychosz.keeps(&bounds, l.origin, l.dir)
-        );
+    let rays: Vec<Ray> = (0..64)
+        .map(|i| {
+            // Straight down the hole (skala rejects, cychosz keeps), then through the tube.
+            let x = if i % 2 == 0 {
+                0.1 + 0.005 * i as f32
+            } else {
+                1.0
+            };
+            Ray::new(Vec3::new(x, 5.0, 0.0), Vec3::NEG_Y).unwrap()
+        })
+        .collect();
+    let set = Set { torus, rays };
+    let mut honest = Tally::default();
+    honest.check(&set, &levels);
+    assert_eq!(
+        honest.mismatches,
+        [0; BATCHED.len()],
+        "{:?}",
+        honest.examples
+    );
+    let mut fooled = Tally::default();
+    fooled.check_against(&set, &levels, |cull, b, o, d| {
+        let cull = if cull == CullKind::Skala {
+            CullKind::Cychosz
+        } else {
+            cull
+        };
+        cull.keeps(b, o, d)
+    });
+    let skala = BATCHED.iter().position(|&c| c == CullKind::Skala).unwrap();
+    for (k, &count) in fooled.mismatches.iter().enumerate() {
+        let want = if k == skala { 32 * levels.len() } else { 0 };
+        assert_eq!(count, want, "{}: {:?}", BATCHED[k], fooled.examples);
     }
+    assert!(fooled.examples.iter().any(|e| e.starts_with("skala at")));
 }
