@@ -14,7 +14,7 @@
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
 use crate::quartic::{RealRoots, nearest_root_depressed, solve_depressed_monic};
-use crate::{Ray, Torus};
+use crate::{DRay, LocalLine, Ray, Torus};
 use glam::{DVec3, Vec3};
 
 /// The relative slack of the bounding-sphere chord test (here and in the lane twin,
@@ -29,6 +29,80 @@ pub struct Hit {
     pub t: f32,
     /// Unit outward surface normal, world space.
     pub normal: Vec3,
+}
+
+/// The nearest hit of an f64 ray ([`crate::DRay`]): `t` and the normal in f64.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DHit {
+    /// Ray parameter, in units of the ray's direction.
+    pub t: f64,
+    /// Unit outward surface normal, world space.
+    pub normal: DVec3,
+}
+
+/// A ray the exact intersection and [`crate::intersect_culled`] take: [`Ray`] (f32, as a
+/// renderer shoots it; hits in f32) or [`DRay`] (f64 geometry; hits in f64). Sealed: the
+/// two are the whole list.
+pub trait TorusRay: sealed::Sealed {
+    /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`].
+    type Hit;
+    /// The line in the torus frame in f32, as the culls see it.
+    fn cull_line(&self, torus: &Torus) -> LocalLine;
+    /// Origin and direction in the torus frame, in f64.
+    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3);
+    /// `[t_min, t_max]` in f64.
+    fn range_f64(&self) -> (f64, f64);
+    /// The hit, from f64 `t` and world normal.
+    fn hit(t: f64, normal: DVec3) -> Self::Hit;
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for crate::Ray {}
+    impl Sealed for crate::DRay {}
+}
+
+impl TorusRay for Ray {
+    type Hit = Hit;
+    #[inline(always)]
+    fn cull_line(&self, torus: &Torus) -> LocalLine {
+        torus.line_to_local(self)
+    }
+    #[inline(always)]
+    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3) {
+        torus.line_to_local_f64(self)
+    }
+    #[inline(always)]
+    fn range_f64(&self) -> (f64, f64) {
+        (f64::from(self.t_min()), f64::from(self.t_max()))
+    }
+    #[inline(always)]
+    fn hit(t: f64, normal: DVec3) -> Hit {
+        Hit {
+            t: t as f32,
+            normal: normal.as_vec3(),
+        }
+    }
+}
+
+impl TorusRay for DRay {
+    type Hit = DHit;
+    #[inline]
+    fn cull_line(&self, torus: &Torus) -> LocalLine {
+        torus.dline_to_local(self)
+    }
+    #[inline(always)]
+    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3) {
+        torus.dline_to_local_f64(self)
+    }
+    #[inline(always)]
+    fn range_f64(&self) -> (f64, f64) {
+        (self.t_min(), self.t_max())
+    }
+    #[inline(always)]
+    fn hit(t: f64, normal: DVec3) -> DHit {
+        DHit { t, normal }
+    }
 }
 
 /// A line reduced to the scaled, foot-point frame described in the module docs.
@@ -147,27 +221,36 @@ pub fn intersect_local(
     Some((t, grad.normalize()))
 }
 
-/// The nearest hit with `t ∈ [t_min, t_max]`, or `None`.
+/// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,
+/// for a [`DRay`] a [`DHit`] in f64 (nothing rounded to f32 on the way).
 ///
 /// Always solves the quartic in f64 (see the module docs); the normal is the unit outward
 /// normal in world space.
+///
+/// ```
+/// use glam::DVec3;
+/// use torus_cull::{DRay, Torus, intersect};
+/// // Another project's near-tangent test ray: R = 2, r = 1, the line y = 0.999999 along z.
+/// let torus = Torus::canonical(2.0, 1.0)?;
+/// let ray = DRay::new(DVec3::new(0.0, 0.999999, -4.0), DVec3::Z)?;
+/// let hit = intersect(&torus, &ray).expect("grazes the top of the tube");
+/// assert!((hit.t - 1.99858578679).abs() < 1e-9);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[inline]
-pub fn intersect(torus: &Torus, ray: &Ray) -> Option<Hit> {
-    let (o, d) = torus.line_to_local_f64(ray);
+pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
+    let (o, d) = ray.local_f64(torus);
+    let (t_min, t_max) = ray.range_f64();
     let (t, n) = intersect_local(
         f64::from(torus.major_radius()),
         f64::from(torus.minor_radius()),
         o,
         d,
-        f64::from(ray.t_min()),
-        f64::from(ray.t_max()),
+        t_min,
+        t_max,
     )?;
     // The rotation is orthonormal: its transpose is its inverse.
-    let n_world = torus.to_local_rotation_f64().transpose() * n;
-    Some(Hit {
-        t: t as f32,
-        normal: n_world.as_vec3(),
-    })
+    Some(R::hit(t, torus.to_local_rotation_f64().transpose() * n))
 }
 
 #[cfg(test)]

@@ -79,10 +79,10 @@ pub use cull::{
     ThickCylinderCull,
 };
 pub use geometry::{
-    LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, RayError, Torus,
-    TorusError,
+    DRay, DRayError, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray,
+    RayError, Torus, TorusError,
 };
-pub use intersect::{Hit, intersect};
+pub use intersect::{DHit, Hit, TorusRay, intersect};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
@@ -100,13 +100,13 @@ pub use intersect::{Hit, intersect};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[inline(always)]
-pub fn intersect_culled<C: Cull>(
+pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
     cull: &C,
     torus: &Torus,
     bounds: &CullBounds,
-    ray: &Ray,
-) -> Option<Hit> {
-    let line = torus.line_to_local(ray);
+    ray: &R,
+) -> Option<R::Hit> {
+    let line = ray.cull_line(torus);
     if cull.keeps(bounds, line.origin, line.dir) {
         intersect(torus, ray)
     } else {

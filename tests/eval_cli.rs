@@ -125,6 +125,9 @@ fn good_input_round_trips() {
         input.to_str().unwrap(),
         "--out",
         output.to_str().unwrap(),
+        // The f32 path, checked here against f32 rays; the f64 default has its own test.
+        "--precision",
+        "f32",
     ]);
     assert!(
         out.status.success(),
@@ -274,4 +277,56 @@ fn far_origins_are_never_falsely_rejected() {
         }
     }
     assert!(hits > 1000, "only {hits} hits");
+}
+
+/// `eval` reads f64 by default: another project's near-tangent ray (R = 2, r = 1, the line
+/// y = 0.999999 along z from z = −4) gets its first root 2 − √(1 − 0.999999²) from z = −4,
+/// t = 1.99858578679…, to 1e-9; `--precision f32` rounds the ray first and answers for
+/// the rounded line, 9e-6 away.
+#[test]
+fn precision_f64_answers_for_the_ray_as_typed() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    std::fs::write(&input, "ox,oy,oz,dx,dy,dz\n0,0.999999,-4,0,0,1\n").unwrap();
+    let exact = 4.0 - (2.0 + (1.0f64 - 0.999999f64 * 0.999999).sqrt());
+    assert!((exact - 1.99858578679).abs() < 1e-11);
+    let t_hit = |precision: Option<&str>| {
+        let mut args = vec!["eval", "--major", "2", "--minor", "1"];
+        args.extend(["--rays", input.to_str().unwrap()]);
+        if let Some(p) = precision {
+            args.extend(["--precision", p]);
+        }
+        let out = run(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
+        assert_eq!(row[1], "hit");
+        row[3].parse::<f64>().unwrap()
+    };
+    for default_or_f64 in [None, Some("f64")] {
+        let t = t_hit(default_or_f64);
+        assert!(
+            (t - exact).abs() < 1e-9,
+            "{default_or_f64:?}: t = {t}, want {exact}"
+        );
+    }
+    let rounded = t_hit(Some("f32"));
+    assert!((rounded - exact).abs() > 1e-6, "f32 t = {rounded}");
+    let bad = run(&[
+        "eval",
+        "--major",
+        "2",
+        "--minor",
+        "1",
+        "--rays",
+        input.to_str().unwrap(),
+        "--precision",
+        "f16",
+    ]);
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("f64"));
 }

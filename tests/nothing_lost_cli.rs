@@ -416,25 +416,30 @@ fn eval_messages_name_the_value_typed_and_the_option() {
             "{err}"
         );
     }
-    // A tiny direction is not "zero", and the row says what was typed.
-    let tiny = dir.path().join("tiny.csv");
-    std::fs::write(&tiny, "ox,oy,oz,dx,dy,dz\n-5,0,0,1e-20,0,0\n").unwrap();
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        tiny.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(
-        err.contains(":2:") && err.contains("1e-20") && err.contains("too short"),
-        "{err}"
-    );
-    assert!(!err.contains("is zero"), "{err}");
+    // A tiny direction is not "zero", and the row says what was typed: 1e-20 is too short
+    // for an f32 ray (|d|² underflows), 1e-170 for an f64 one (the default precision).
+    for (precision, tiny_dx) in [("f32", "1e-20"), ("f64", "1e-170")] {
+        let tiny = dir.path().join("tiny.csv");
+        std::fs::write(&tiny, format!("ox,oy,oz,dx,dy,dz\n-5,0,0,{tiny_dx},0,0\n")).unwrap();
+        let o = torus_cull(&[
+            "eval",
+            "--major",
+            "2",
+            "--minor",
+            "1",
+            "--rays",
+            tiny.to_str().unwrap(),
+            "--precision",
+            precision,
+        ]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains(":2:") && err.contains(tiny_dx) && err.contains("too short"),
+            "{err}"
+        );
+        assert!(!err.contains("is zero"), "{err}");
+    }
     // A directory as --rays names the option and the path.
     let d = dir.path().to_str().unwrap();
     let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", d]);

@@ -7,6 +7,7 @@
 
 use glam::Vec3;
 use proptest::prelude::*;
+use torus_cull::harness::eval::{Precision, eval_csv};
 use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::{CullBounds, CullKind, Ray, Torus};
 
@@ -80,10 +81,12 @@ proptest! {
     #[test]
     fn eval_never_panics(rows in prop::collection::vec("[-0-9.,eEnaifNI ]{0,40}", 0..6)) {
         let input = format!("ox,oy,oz,dx,dy,dz\n{}\n", rows.join("\n"));
-        let mut out = Vec::new();
-        match torus_cull::harness::eval::eval_csv(2.0, 1.0, input.as_bytes(), "prop.csv", &mut out) {
-            Ok(n) => prop_assert!(n <= rows.len()),
-            Err(e) => prop_assert!(e.to_string().starts_with("prop.csv:")),
+        for precision in [Precision::F64, Precision::F32] {
+            let mut out = Vec::new();
+            match eval_csv(2.0, 1.0, precision, input.as_bytes(), "prop.csv", &mut out) {
+                Ok(n) => prop_assert!(n <= rows.len()),
+                Err(e) => prop_assert!(e.to_string().starts_with("prop.csv:")),
+            }
         }
     }
 }

@@ -9,6 +9,7 @@ use std::process::ExitCode;
 pub fn eval(
     major: f32,
     minor: f32,
+    precision: torus_cull::harness::eval::Precision,
     rays: &std::path::Path,
     out: Option<&std::path::Path>,
 ) -> CliResult {
@@ -35,6 +36,7 @@ pub fn eval(
             let rows = torus_cull::harness::eval::eval_csv(
                 major,
                 minor,
+                precision,
                 input,
                 &name,
                 BufWriter::new(Named(&mut file, format!("--out {}", path.display()))),
@@ -47,6 +49,7 @@ pub fn eval(
         None => torus_cull::harness::eval::eval_csv(
             major,
             minor,
+            precision,
             input,
             &name,
             BufWriter::new(Named(std::io::stdout().lock(), "stdout".into())),

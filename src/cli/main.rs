@@ -114,7 +114,20 @@ enum Command {
         /// Output CSV (default: stdout).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// `f64`: read the rays as f64 and intersect them in f64 (t_hit to f64 precision);
+        /// `f32`: round each ray to f32 first, as a renderer's ray is.
+        #[arg(long, value_enum, default_value_t = EvalPrecision::F64)]
+        precision: EvalPrecision,
     },
+}
+
+/// `eval --precision`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum EvalPrecision {
+    /// f64 rays end to end.
+    F64,
+    /// Rays rounded to f32 first.
+    F32,
 }
 
 fn main() -> ExitCode {
@@ -150,7 +163,14 @@ fn main() -> ExitCode {
             minor,
             rays,
             out,
-        } => eval::eval(major, minor, &rays, out.as_deref()),
+            precision,
+        } => {
+            let precision = match precision {
+                EvalPrecision::F64 => torus_cull::harness::eval::Precision::F64,
+                EvalPrecision::F32 => torus_cull::harness::eval::Precision::F32,
+            };
+            eval::eval(major, minor, precision, &rays, out.as_deref())
+        }
     };
     match result {
         Ok(code) => code,

@@ -3,7 +3,7 @@
 mod ray;
 mod torus;
 
-pub use ray::{Ray, RayError};
+pub use ray::{DRay, DRayError, Ray, RayError};
 pub use torus::{
     LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
 };

@@ -1,6 +1,6 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
-use super::ray::Ray;
+use super::ray::{DRay, Ray};
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 
@@ -351,6 +351,46 @@ impl Torus {
             self.to_local_f64 * o,
             self.to_local_f64 * ray.dir().as_dvec3(),
         )
+    }
+
+    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path).
+    #[inline]
+    pub fn dline_to_local_f64(&self, ray: &DRay) -> (DVec3, DVec3) {
+        let o = ray.origin() - self.center.as_dvec3();
+        (self.to_local_f64 * o, self.to_local_f64 * ray.dir())
+    }
+
+    /// An f64 ray's line in the torus frame, rounded to f32 for the culls.
+    ///
+    /// The line is formed in f64 with a unit direction (the culls' verdicts do not depend
+    /// on its length, and f32 holds a unit vector whatever the ray's scale); an origin
+    /// farther than [`NEAR_ORIGIN_REL`]·(R + r) moves to the foot point, as in
+    /// [`Torus::line_to_local`]. Rounding the origin (then within 64·(R + r)) and the
+    /// direction to f32 moves the line by at most about 2⁻¹⁷·(R + r) inside the bounding
+    /// sphere, below the culls' margin η = 2⁻¹²·(R + r). A foot point farther than
+    /// 4·(R + r) (a line that misses the torus by far, and whose foot f32 may not even
+    /// hold) is pulled in to 4·(R + r) along itself: still a line that misses.
+    pub fn dline_to_local(&self, ray: &DRay) -> LocalLine {
+        let (o, d) = self.dline_to_local_f64(ray);
+        let d = d / d.length();
+        let outer = f64::from(self.major_radius()) + f64::from(self.minor_radius());
+        let near = f64::from(NEAR_ORIGIN_REL) * outer;
+        let origin = if o.length_squared() <= near * near {
+            o
+        } else {
+            let foot = o - d * o.dot(d);
+            let far = 4.0 * outer;
+            let dist = foot.length();
+            if dist > far {
+                foot * (far / dist)
+            } else {
+                foot
+            }
+        };
+        LocalLine {
+            origin: origin.as_vec3(),
+            dir: d.as_vec3(),
+        }
     }
 
     /// The world-space axis-aligned bounding box of the torus, `(min, max)`.

@@ -7,13 +7,19 @@
 //! is the nearest t ≥ 0 from the timed exact intersection, in units of the given
 //! direction, empty when there is none; each cull column is `1` (keep) or `0` (reject).
 //!
+//! **Precision.** [`Precision::F64`] (the default of `torus-cull eval`) parses every value
+//! as f64 and runs the oracle and the exact intersection on the f64 ray ([`crate::DRay`]):
+//! what a transport or CAD user's data needs. The culls see the line rounded to f32, as
+//! they always do. [`Precision::F32`] rounds the row to an f32 [`Ray`] first, as a
+//! renderer's ray is; `t_hit` is then the f32 answer.
+//!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction) ends it with an error naming the input and the line number, and
 //! the command exits non-zero: no answer is ever silently wrong or skipped.
 
-use crate::harness::oracle::{OracleClass, classify};
-use crate::{CullBounds, CullKind, Ray, Torus, TorusError, intersect};
-use glam::Vec3;
+use crate::harness::oracle::{OracleClass, OracleLabel, Query, classify};
+use crate::{CullBounds, CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect};
+use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
 
@@ -23,6 +29,17 @@ pub const INPUT_HEADER: &str = "ox,oy,oz,dx,dy,dz";
 /// The output header.
 pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
     thick_cylinder,skala,ellipsoid,quadric,discriminant,discriminant_f64";
+
+/// How a row is read and intersected.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
+pub enum Precision {
+    /// f64 rays (the oracle and the exact intersection in f64, `t_hit` in f64).
+    #[default]
+    F64,
+    /// Each row rounded to an f32 ray first, as a renderer shoots it.
+    F32,
+}
 
 /// Why `eval` stopped.
 #[derive(Debug)]
@@ -68,6 +85,7 @@ impl From<std::io::Error> for EvalError {
 pub fn eval_csv(
     major_radius: f32,
     minor_radius: f32,
+    precision: Precision,
     input: impl BufRead,
     input_name: &str,
     mut output: impl Write,
@@ -107,19 +125,38 @@ pub fn eval_csv(
         if line.trim().is_empty() {
             continue;
         }
-        let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
-        let label = classify(&torus, &ray);
+        let (label, t_hit, line): (OracleLabel, Option<String>, LocalLine) = match precision {
+            Precision::F32 => {
+                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
+                let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
+                // The culls' own input: far origins go to the foot point, as in a renderer.
+                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
+            }
+            Precision::F64 => {
+                let ray = parse_dray(&line).map_err(|m| row_error(line_no, m))?;
+                let query = Query {
+                    center: DVec3::ZERO,
+                    axis: DVec3::Y,
+                    major: f64::from(torus.major_radius()),
+                    minor: f64::from(torus.minor_radius()),
+                    o: ray.origin(),
+                    d: ray.dir(),
+                    t_min: ray.t_min(),
+                    t_max: ray.t_max(),
+                };
+                let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
+                (query.classify(), t_hit, torus.dline_to_local(&ray))
+            }
+        };
         let oracle = match label.class {
             OracleClass::Hit => "hit",
             OracleClass::Miss => "miss",
             OracleClass::Ambiguous => "ambiguous",
         };
         write!(output, "{index},{oracle},{:e},", label.margin)?;
-        if let Some(hit) = intersect(&torus, &ray) {
-            write!(output, "{}", hit.t)?;
+        if let Some(t) = t_hit {
+            write!(output, "{t}")?;
         }
-        // The culls' own input: far origins go to the foot point, as in a renderer.
-        let line = torus.line_to_local(&ray);
         for cull in CullKind::TIMED {
             let keep = cull.keeps(&bounds, line.origin, line.dir);
             write!(output, ",{}", u8::from(keep))?;
@@ -131,33 +168,50 @@ pub fn eval_csv(
     Ok(index)
 }
 
-fn parse_ray(line: &str) -> Result<Ray, String> {
+/// The six numbers of a row in the float type `T` (each finite), and the fields as typed
+/// (for messages).
+fn parse_row<T: std::str::FromStr + Copy + Default>(
+    line: &str,
+    is_finite: fn(T) -> bool,
+) -> Result<([T; 6], Vec<&str>), String> {
     const NAMES: [&str; 6] = ["ox", "oy", "oz", "dx", "dy", "dz"];
-    let fields: Vec<&str> = line.split(',').collect();
+    let fields: Vec<&str> = line.split(',').map(str::trim).collect();
     if fields.len() != NAMES.len() {
         return Err(format!(
             "expected 6 columns ({INPUT_HEADER}), found {}",
             fields.len()
         ));
     }
-    let mut v = [0f32; 6];
+    let mut v = [T::default(); 6];
     for ((slot, field), name) in v.iter_mut().zip(&fields).zip(NAMES) {
         *slot = field
-            .trim()
-            .parse::<f32>()
-            .map_err(|_| format!("column {name}: '{}' is not a number", field.trim()))?;
-        if !slot.is_finite() {
-            return Err(format!("column {name}: {} is not finite", field.trim()));
+            .parse::<T>()
+            .map_err(|_| format!("column {name}: '{field}' is not a number"))?;
+        if !is_finite(*slot) {
+            return Err(format!("column {name}: {field} is not finite"));
         }
     }
-    Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5])).map_err(|e| {
-        format!(
-            "{e} (as typed: dx,dy,dz = {},{},{})",
-            fields[3].trim(),
-            fields[4].trim(),
-            fields[5].trim()
-        )
-    })
+    Ok((v, fields))
+}
+
+/// How a refused direction is reported: the error, and the direction as typed.
+fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
+    format!(
+        "{e} (as typed: dx,dy,dz = {},{},{})",
+        fields[3], fields[4], fields[5]
+    )
+}
+
+fn parse_ray(line: &str) -> Result<Ray, String> {
+    let (v, fields) = parse_row::<f32>(line, f32::is_finite)?;
+    Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]))
+        .map_err(|e| as_typed(e, &fields))
+}
+
+fn parse_dray(line: &str) -> Result<DRay, String> {
+    let (v, fields) = parse_row::<f64>(line, f64::is_finite)?;
+    DRay::new(DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]))
+        .map_err(|e| as_typed(e, &fields))
 }
 
 #[cfg(test)]
