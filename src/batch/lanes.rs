@@ -18,7 +18,7 @@ use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
 macro_rules! lanes {
     (
-        $(#[$doc:meta])* $name:ident, $mask:ident, $elem:ty, $vec:ident, $m:ident,
+        $(#[$doc:meta])* $name:ident, $mask:ident, $elem:ty, $vec:ident, $m:ident, $lanes:ident,
         $splat:ident, $add:ident, $sub:ident, $mul:ident, $div:ident, $sqrt:ident,
         $abs:ident, $lt:ident, $le:ident, $gt:ident, $ge:ident, $eq:ident,
         $select:ident, $and_m:ident, $or_m:ident, $not_m:ident, $and_f:ident,
@@ -103,13 +103,24 @@ macro_rules! lanes {
                 self.gt(o).select(self, o)
             }
             /// `min` of the float type: the smaller, ignoring a NaN operand.
+            ///
+            /// At width 1 the same choice is made as a branch on `o`'s NaN (never taken on
+            /// sane input) around [`Self::min_cmp`]: `(a < b ∨ b ≠ b) ? a : b`
+            /// is `b ≠ b ? a : (a < b ? a : b)`, bit for bit, signed zeros included.
             #[inline(always)]
             pub(crate) fn min_num(self, o: Self) -> Self {
+                if S::$lanes == 1 {
+                    return if o.is_nan().bits() != 0 { self } else { self.min_cmp(o) };
+                }
                 (self.lt(o) | o.is_nan()).select(self, o)
             }
-            /// `max` of the float type: the larger, ignoring a NaN operand.
+            /// `max` of the float type: the larger, ignoring a NaN operand (at width 1 a
+            /// branch around [`Self::max_cmp`], as in [`Self::min_num`]).
             #[inline(always)]
             pub(crate) fn max_num(self, o: Self) -> Self {
+                if S::$lanes == 1 {
+                    return if o.is_nan().bits() != 0 { self } else { self.max_cmp(o) };
+                }
                 (self.gt(o) | o.is_nan()).select(self, o)
             }
             /// `self.copysign(sign)`: the magnitude of `self` with the sign bit of `sign`.
@@ -198,7 +209,7 @@ macro_rules! lanes {
 
 lanes!(
     /// f32 lanes (16 with AVX-512, 8 with AVX2, 4 with NEON, 1 in the scalar fallback).
-    F32s, M32s, f32, f32s, m32s,
+    F32s, M32s, f32, f32s, m32s, F32_LANES,
     splat_f32s, add_f32s, sub_f32s, mul_f32s, div_f32s, sqrt_f32s, abs_f32s,
     less_than_f32s, less_than_or_equal_f32s, greater_than_f32s,
     greater_than_or_equal_f32s, equal_f32s, select_f32s, and_m32s, or_m32s, not_m32s,
@@ -207,7 +218,7 @@ lanes!(
 
 lanes!(
     /// f64 lanes (8 with AVX-512, 4 with AVX2, 2 with NEON, 1 in the scalar fallback).
-    F64s, M64s, f64, f64s, m64s,
+    F64s, M64s, f64, f64s, m64s, F64_LANES,
     splat_f64s, add_f64s, sub_f64s, mul_f64s, div_f64s, sqrt_f64s, abs_f64s,
     less_than_f64s, less_than_or_equal_f64s, greater_than_f64s,
     greater_than_or_equal_f64s, equal_f64s, select_f64s, and_m64s, or_m64s, not_m64s,

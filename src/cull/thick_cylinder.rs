@@ -44,8 +44,17 @@ impl CullKernel for ThickCylinderCull {
         let inv = c!(1.0) / n.y;
         let t0 = (-ms - p.y) * inv;
         let t1 = (ms - p.y) * inv;
-        let lo = horizontal.select(c!(f32::NEG_INFINITY), t0.min_num(t1));
-        let hi = horizontal.select(c!(f32::INFINITY), t0.max_num(t1));
+        // Selected only where the lanes disagree: at width 1 the scalar code's branch.
+        let (lo, hi) = if horizontal.all() {
+            (c!(f32::NEG_INFINITY), c!(f32::INFINITY))
+        } else if !horizontal.any() {
+            (t0.min_num(t1), t0.max_num(t1))
+        } else {
+            (
+                horizontal.select(c!(f32::NEG_INFINITY), t0.min_num(t1)),
+                horizontal.select(c!(f32::INFINITY), t0.max_num(t1)),
+            )
+        };
         // Outer cylinder: ρ²(t) = h² t² + 2 (p_x n_x + p_z n_z) t + (p_x² + p_z²).
         let h2 = n.x * n.x + n.z * n.z;
         let half_b = p.x * n.x + p.z * n.z;
@@ -54,6 +63,10 @@ impl CullKernel for ThickCylinderCull {
         // Parallel to the axis: ρ is constant on the line.
         let axis_parallel = h2.lt(c!(AXIS_PARALLEL_H2));
         let axis_keep = rho2_foot.le(outer_sq) & rho2_foot.ge(inner_sq);
+        // … or every lane outside the slab or parallel to the axis, …
+        if (outside_slab | axis_parallel).all() {
+            return !outside_slab & axis_parallel & axis_keep;
+        }
         let disc = half_b * half_b - h2 * (rho2_foot - outer_sq);
         let misses_cylinder = disc.lt(c!(0.0));
         // … or every lane settled without the cylinder's root: outside the slab, parallel
