@@ -1,5 +1,5 @@
 //! Shared bench plumbing: size presets, reading criterion's estimates, the solver duel.
-#![allow(dead_code)]
+#![allow(dead_code, reason = "shared by the bench targets, each using a part")]
 
 pub mod bvh;
 pub mod solver;

@@ -1,5 +1,6 @@
-//! Lane arithmetic: pulp's registers wrapped in operators, so that each batch cull reads
-//! like its scalar twin in `src/cull/`, operation for operation.
+//! Lane arithmetic: pulp's registers wrapped in operators, so that each cull kernel in
+//! `src/cull/` reads like scalar code and runs at every width, `pulp::Scalar` (width 1,
+//! the scalar cull) included.
 //!
 //! **Why the wrappers only ever do what the scalar code does.** IEEE 754 makes `+ − × ÷`
 //! and `√` correctly rounded, lane by lane, whatever the vector width. Rust never fuses a
@@ -26,7 +27,6 @@ macro_rules! lanes {
     ) => {
         $(#[$doc])*
         #[derive(Debug, Clone, Copy)]
-        #[allow(dead_code)] // The wrappers are generic; not every operation is needed at both widths.
         pub(crate) struct $name<S: Simd> {
             pub(crate) s: S,
             pub(crate) v: S::$vec,
@@ -34,13 +34,11 @@ macro_rules! lanes {
 
         /// A lane mask: each lane true or false.
         #[derive(Debug, Clone, Copy)]
-        #[allow(dead_code)]
         pub(crate) struct $mask<S: Simd> {
             pub(crate) s: S,
             pub(crate) m: S::$m,
         }
 
-        #[allow(dead_code)]
         impl<S: Simd> $name<S> {
             /// Every lane `x`.
             #[inline(always)]
@@ -83,6 +81,7 @@ macro_rules! lanes {
                 $mask { s: self.s, m: self.s.$eq(self.v, o.v) }
             }
             /// Lanes that are finite (neither infinite nor NaN).
+            #[allow(dead_code, reason = "generated for f32 and f64 lanes; only one width uses it")]
             #[inline(always)]
             pub(crate) fn is_finite(self) -> $mask<S> {
                 self.abs().le(Self::splat(self.s, <$elem>::MAX))
@@ -132,7 +131,6 @@ macro_rules! lanes {
             }
         }
 
-        #[allow(dead_code)]
         impl<S: Simd> $mask<S> {
             /// `if self { a } else { b }`, per lane.
             #[inline(always)]
@@ -140,6 +138,7 @@ macro_rules! lanes {
                 $name { s: self.s, v: self.s.$select(self.m, a.v, b.v) }
             }
             /// `if self { a } else { b }` for masks.
+            #[allow(dead_code, reason = "generated for f32 and f64 lanes; only one width uses it")]
             #[inline(always)]
             pub(crate) fn select_mask(self, a: $mask<S>, b: $mask<S>) -> $mask<S> {
                 (self & a) | (!self & b)
@@ -276,7 +275,6 @@ impl<S: Simd> M32s<S> {
     }
 }
 
-#[allow(dead_code)]
 impl<S: Simd> F64s<S> {
     /// The lanes of `slice` (exactly `S::F64_LANES` values).
     #[inline(always)]
@@ -288,7 +286,6 @@ impl<S: Simd> F64s<S> {
     }
 }
 
-#[allow(dead_code)]
 impl<S: Simd> F64s<S> {
     /// Writes the lanes to `slice` (exactly `S::F64_LANES` values).
     #[inline(always)]
@@ -298,7 +295,6 @@ impl<S: Simd> F64s<S> {
     }
 }
 
-#[allow(dead_code)]
 impl<S: Simd> M64s<S> {
     /// Bit i of the result is lane i.
     #[inline(always)]
@@ -326,23 +322,5 @@ fn lane_bits<M: pulp::bytemuck::NoUninit>(mask: &M, lanes: usize) -> u64 {
             }
             out
         }
-    }
-}
-
-// ---- Added for the one-source culls (issue 18): each cull's kernel in `crate::cull` is
-// generic over the lane width, and at width 1 (`pulp::Scalar`) it is the scalar cull.
-
-impl<S: Simd> M32s<S> {
-    /// Whether any lane is true. A kernel's "no lane is still undecided" exit
-    /// (`if !keep.any() { return keep }`) is, at width 1, the scalar cull's early exit.
-    #[inline(always)]
-    pub(crate) fn any(self) -> bool {
-        self.bits() != 0
-    }
-
-    /// Whether every lane is true (at width 1: the lane itself).
-    #[inline(always)]
-    pub(crate) fn all(self) -> bool {
-        !(!self).any()
     }
 }

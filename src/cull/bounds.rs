@@ -3,6 +3,7 @@
 //! over lanes: at [`pulp::Scalar`] they are the scalar steps.
 
 use crate::batch::lanes::F32s;
+use crate::batch::real::RealMask;
 use crate::batch::vec3s::Vec3s;
 use pulp::Simd;
 

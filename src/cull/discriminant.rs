@@ -3,11 +3,11 @@
 
 use super::kernel::{Cull, CullKernel, scalar_cull};
 use super::{CullBounds, moderate};
-use crate::batch::lanes::{F32s, F64s, M32s, M64s};
+use crate::batch::lanes::{F32s, F64s, M32s};
+use crate::batch::real::Real;
 use crate::batch::vec3s::Vec3s;
 use glam::Vec3;
 use pulp::{Scalar, Simd};
-use std::ops::{Add, BitAnd, BitOr, Mul, Not, Sub};
 
 scalar_cull! {
     /// Reject a line when its quartic has no real root, read from the discriminant; f32.
@@ -107,41 +107,6 @@ impl Cull for DiscriminantF64Cull {
     }
 }
 
-/// The float lanes [`no_real_root`] runs on: f32 for the cull (every width), f64 for
-/// `discriminant_f64` (width 1).
-trait Real: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> {
-    /// Its lane mask.
-    type Mask: Not<Output = Self::Mask> + BitAnd<Output = Self::Mask> + BitOr<Output = Self::Mask>;
-    /// `x` in every lane (exact: the constants are small integers).
-    fn constant(self, x: f32) -> Self;
-    /// `self > o`, per lane.
-    fn greater(self, o: Self) -> Self::Mask;
-}
-
-impl<S: Simd> Real for F32s<S> {
-    type Mask = M32s<S>;
-    #[inline(always)]
-    fn constant(self, x: f32) -> Self {
-        F32s::splat(self.s, x)
-    }
-    #[inline(always)]
-    fn greater(self, o: Self) -> M32s<S> {
-        self.gt(o)
-    }
-}
-
-impl<S: Simd> Real for F64s<S> {
-    type Mask = M64s<S>;
-    #[inline(always)]
-    fn constant(self, x: f32) -> Self {
-        F64s::splat(self.s, f64::from(x))
-    }
-    #[inline(always)]
-    fn greater(self, o: Self) -> M64s<S> {
-        self.gt(o)
-    }
-}
-
 /// Whether F(t) = t⁴ + 2P t² + 8Q t + S has no real root, at R = 1, from ρ² = f_x² + f_z²,
 /// f_y², d̂_y² and r′². About 20 multiplies and 12 adds, no branch.
 #[inline(always)]
@@ -150,7 +115,7 @@ fn no_real_root<T: Real>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> T::M
     // SIMD target features.
     macro_rules! c {
         ($x:expr) => {
-            rho_sq.constant($x)
+            rho_sq.splat($x)
         };
     }
     let rho_sq_m1 = rho_sq - c!(1.0);
@@ -164,7 +129,7 @@ fn no_real_root<T: Real>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> T::M
     let s_minus_p_sq = s - p_sq;
     let delta = s * s_minus_p_sq * s_minus_p_sq
         - c!(8.0) * q_sq * (p_sq * p - c!(9.0) * p * s + c!(54.0) * q_sq);
-    delta.greater(c!(0.0)) & (p.greater(c!(0.0)) | s_minus_p_sq.greater(c!(0.0)))
+    delta.gt(c!(0.0)) & (p.gt(c!(0.0)) | s_minus_p_sq.gt(c!(0.0)))
 }
 
 #[cfg(test)]

@@ -5,6 +5,7 @@ use super::CullBounds;
 use super::ellipsoid::{EllipsoidChord, ellipsoid_slab};
 use super::kernel::{CullKernel, scalar_cull};
 use crate::batch::lanes::{F32s, M32s};
+use crate::batch::real::RealMask;
 use crate::batch::vec3s::Vec3s;
 use pulp::Simd;
 

@@ -3,6 +3,7 @@
 use super::kernel::{CullKernel, scalar_cull};
 use super::{AXIS_PARALLEL_H2, CullBounds, foot_point};
 use crate::batch::lanes::{F32s, M32s};
+use crate::batch::real::RealMask;
 use crate::batch::vec3s::Vec3s;
 use pulp::Simd;
 

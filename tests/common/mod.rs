@@ -1,5 +1,5 @@
 //! Line families shared by the integration tests.
-#![allow(dead_code)]
+#![allow(dead_code, reason = "shared by several test crates, each using a part")]
 
 use torus_cull::harness::workload::{Batch, Case, Pose, generate};
 use torus_cull::{Ray, Torus};
