@@ -238,6 +238,7 @@ pub fn intersect_local(
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[inline]
+#[must_use]
 pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();

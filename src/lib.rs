@@ -100,6 +100,7 @@ pub use intersect::{DHit, Hit, TorusRay, intersect};
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[inline(always)]
+#[must_use]
 pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
     cull: &C,
     torus: &Torus,

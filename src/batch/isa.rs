@@ -57,6 +57,7 @@ impl fmt::Display for Isa {
 
 /// A level name that is not one of [`Isa::ALL`], or a level this CPU lacks.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum IsaError {
     /// Not a level name.
     Unknown(String),

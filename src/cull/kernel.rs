@@ -24,6 +24,7 @@ pub trait Cull {
     fn name(&self) -> &'static str;
 
     /// `true` to keep the line (run the quartic), `false` to reject it.
+    #[must_use]
     fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool;
 }
 

@@ -18,6 +18,7 @@ pub struct Ray {
 
 /// Why a ray was refused.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum RayError {
     /// The origin has a NaN or infinite component.
     NonFiniteOrigin(Vec3),

@@ -53,6 +53,7 @@ pub struct Torus {
 
 /// Why a torus was refused.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum TorusError {
     /// A radius is NaN, infinite, zero or negative.
     BadRadius {
