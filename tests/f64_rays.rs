@@ -40,16 +40,7 @@ struct Tally {
 impl Tally {
     /// Checks one f64 ray on `torus` against the oracle: the hit and its t, and every cull.
     fn check(&mut self, torus: &Torus, ray: &DRay) {
-        let query = Query {
-            center: torus.center().as_dvec3(),
-            axis: torus.axis().as_dvec3().normalize(),
-            major: f64::from(torus.major_radius()),
-            minor: f64::from(torus.minor_radius()),
-            o: ray.origin(),
-            d: ray.dir(),
-            t_min: ray.t_min(),
-            t_max: ray.t_max(),
-        };
+        let query = Query::dray(torus, ray);
         let label = query.classify();
         // f64 resolves a line no better than a few ulps of its origin's distance D: at
         // D = 10⁸·(R + r) that is about 10⁻⁷·(R + r), and a line passing closer than that

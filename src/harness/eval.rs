@@ -134,16 +134,7 @@ pub fn eval_csv(
             }
             Precision::F64 => {
                 let ray = parse_dray(&line).map_err(|m| row_error(line_no, m))?;
-                let query = Query {
-                    center: DVec3::ZERO,
-                    axis: DVec3::Y,
-                    major: f64::from(torus.major_radius()),
-                    minor: f64::from(torus.minor_radius()),
-                    o: ray.origin(),
-                    d: ray.dir(),
-                    t_min: ray.t_min(),
-                    t_max: ray.t_max(),
-                };
+                let query = Query::dray(&torus, &ray);
                 let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
                 (query.classify(), t_hit, torus.dline_to_local(&ray))
             }

@@ -40,7 +40,7 @@ mod tests;
 pub use roots::reference_roots;
 pub use sampling::margin_by_sampling;
 
-use crate::{Ray, Torus};
+use crate::{DRay, Ray, Torus};
 use frame::LineFrame;
 use glam::DVec3;
 
@@ -118,15 +118,20 @@ impl Query {
     /// The ray over its range, on the torus as the oracle defines it (f32 fields converted
     /// exactly, the axis normalized in f64).
     pub fn ray(torus: &Torus, ray: &Ray) -> Query {
+        Query::dray(torus, &DRay::from(*ray))
+    }
+
+    /// An f64 ray over its range, on the torus as the oracle defines it.
+    pub fn dray(torus: &Torus, ray: &DRay) -> Query {
         Query {
             center: torus.center().as_dvec3(),
             axis: torus.axis().as_dvec3().normalize(),
             major: f64::from(torus.major_radius()),
             minor: f64::from(torus.minor_radius()),
-            o: ray.origin().as_dvec3(),
-            d: ray.dir().as_dvec3(),
-            t_min: f64::from(ray.t_min()),
-            t_max: f64::from(ray.t_max()),
+            o: ray.origin(),
+            d: ray.dir(),
+            t_min: ray.t_min(),
+            t_max: ray.t_max(),
         }
     }
 
