@@ -61,7 +61,23 @@ impl KeepMask {
     /// The indices of the kept lines, ascending: a word at a time, one `trailing_zeros`
     /// per survivor, no branch per rejected line.
     pub fn kept(&self) -> impl Iterator<Item = usize> + '_ {
-        self.words.iter().enumerate().flat_map(|(w, &word)| {
+        set_bits(&self.words, self.len)
+    }
+
+    /// The verdicts as booleans (for tests and reports).
+    pub fn to_vec(&self) -> Vec<bool> {
+        (0..self.len).map(|i| self.get(i)).collect()
+    }
+}
+
+/// The indices below `len` of the set bits of `words` (bit i of word w is index
+/// w·64 + i), ascending: the one set-bit walk of batch mode (kept lines, hit lanes,
+/// lanes handed to the scalar solver).
+pub(crate) fn set_bits(words: &[u64], len: usize) -> impl Iterator<Item = usize> + '_ {
+    words
+        .iter()
+        .enumerate()
+        .flat_map(|(w, &word)| {
             let mut bits = word;
             std::iter::from_fn(move || {
                 (bits != 0).then(|| {
@@ -71,12 +87,7 @@ impl KeepMask {
                 })
             })
         })
-    }
-
-    /// The verdicts as booleans (for tests and reports).
-    pub fn to_vec(&self) -> Vec<bool> {
-        (0..self.len).map(|i| self.get(i)).collect()
-    }
+        .take_while(move |&i| i < len)
 }
 
 #[cfg(test)]

@@ -13,8 +13,8 @@
 use super::cull::{NoBatchForm, cull_batch};
 use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::isa::Dispatch;
-use super::lines::{BLOCK, Lines};
-use super::mask::KeepMask;
+use super::lines::Lines;
+use super::mask::{KeepMask, set_bits};
 use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
 use glam::Vec3;
 
@@ -79,35 +79,22 @@ impl Wavefront {
             ..WavefrontStats::default()
         };
         let a = &self.answers;
-        let words = self.survivors.len().div_ceil(BLOCK);
-        for (w, (&hit, &cold)) in a.hit.iter().zip(&a.fallback).take(words).enumerate() {
-            // Padding lanes lie past `len` and are never read.
-            let valid = if (w + 1) * BLOCK <= self.survivors.len() {
-                u64::MAX
-            } else {
-                (1u64 << (self.survivors.len() % BLOCK)) - 1
-            };
-            let mut bits = hit & valid;
-            while bits != 0 {
-                let j = w * BLOCK + bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                hits[self.survivors.index[j]] = Some(Hit {
-                    t: a.t[j] as f32,
-                    normal: Vec3::new(
-                        a.normal[0][j] as f32,
-                        a.normal[1][j] as f32,
-                        a.normal[2][j] as f32,
-                    ),
-                });
-            }
-            let mut bits = cold & valid;
-            while bits != 0 {
-                let j = w * BLOCK + bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                let i = self.survivors.index[j];
-                hits[i] = intersect(torus, &rays[i]);
-                stats.scalar_fallbacks += 1;
-            }
+        // Padding lanes lie past `len` and are never read.
+        let len = self.survivors.len();
+        for j in set_bits(&a.hit, len) {
+            hits[self.survivors.index[j]] = Some(Hit {
+                t: a.t[j] as f32,
+                normal: Vec3::new(
+                    a.normal[0][j] as f32,
+                    a.normal[1][j] as f32,
+                    a.normal[2][j] as f32,
+                ),
+            });
+        }
+        for j in set_bits(&a.fallback, len) {
+            let i = self.survivors.index[j];
+            hits[i] = intersect(torus, &rays[i]);
+            stats.scalar_fallbacks += 1;
         }
         stats.hits = hits.iter().filter(|h| h.is_some()).count();
         Ok(stats)

@@ -26,6 +26,7 @@ mod resolvent;
 use super::isa::Dispatch;
 use super::lanes::F64s;
 use super::lines::BLOCK;
+use super::mask::set_bits;
 use crate::quartic::nearest_root_depressed;
 use pulp::{Simd, WithSimd};
 
@@ -121,17 +122,10 @@ pub fn nearest_roots(
             .iter()
             .map(|&u| (!u.is_nan()).then_some(u)),
     );
-    for (w, &word) in fallback.iter().enumerate() {
-        let mut bits = word;
-        while bits != 0 {
-            let i = w * BLOCK + bits.trailing_zeros() as usize;
-            bits &= bits - 1;
-            if i < quartics.len() {
-                let (p, q, r, lo, hi) = quartics.get(i);
-                roots[i] = nearest_root_depressed(p, q, r, lo, hi);
-                stats.scalar_fallbacks += 1;
-            }
-        }
+    for i in set_bits(&fallback, quartics.len()) {
+        let (p, q, r, lo, hi) = quartics.get(i);
+        roots[i] = nearest_root_depressed(p, q, r, lo, hi);
+        stats.scalar_fallbacks += 1;
     }
     stats
 }
