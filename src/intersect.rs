@@ -52,8 +52,9 @@ pub trait TorusRay: sealed::Sealed {
     fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3);
     /// `[t_min, t_max]` in f64.
     fn range_f64(&self) -> (f64, f64);
-    /// The hit, from f64 `t` and world normal.
-    fn hit(t: f64, normal: DVec3) -> Self::Hit;
+    /// The hit, from f64 `t` and world normal; `None` when `t` does not fit the ray's
+    /// float type (a hit farther along than f32, or f64, can count).
+    fn hit(t: f64, normal: DVec3) -> Option<Self::Hit>;
 }
 
 mod sealed {
@@ -77,11 +78,12 @@ impl TorusRay for Ray {
         (f64::from(self.t_min()), f64::from(self.t_max()))
     }
     #[inline(always)]
-    fn hit(t: f64, normal: DVec3) -> Hit {
-        Hit {
-            t: t as f32,
+    fn hit(t: f64, normal: DVec3) -> Option<Hit> {
+        let t = t as f32;
+        t.is_finite().then(|| Hit {
+            t,
             normal: normal.as_vec3(),
-        }
+        })
     }
 }
 
@@ -100,8 +102,8 @@ impl TorusRay for DRay {
         (self.t_min(), self.t_max())
     }
     #[inline(always)]
-    fn hit(t: f64, normal: DVec3) -> DHit {
-        DHit { t, normal }
+    fn hit(t: f64, normal: DVec3) -> Option<DHit> {
+        t.is_finite().then_some(DHit { t, normal })
     }
 }
 
@@ -222,7 +224,9 @@ pub fn intersect_local(
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,
-/// for a [`DRay`] a [`DHit`] in f64 (nothing rounded to f32 on the way).
+/// for a [`DRay`] a [`DHit`] in f64 (nothing rounded to f32 on the way). A hit whose `t`
+/// overflows the ray's float type (an origin near f32's, or f64's, largest value, aimed
+/// back at the torus) is not reported: no finite `t` of that type reaches it.
 ///
 /// Always solves the quartic in f64 (see the module docs); the normal is the unit outward
 /// normal in world space.
@@ -251,7 +255,7 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
         t_max,
     )?;
     // The rotation is orthonormal: its transpose is its inverse.
-    Some(R::hit(t, torus.to_local_rotation_f64().transpose() * n))
+    R::hit(t, torus.to_local_rotation_f64().transpose() * n)
 }
 
 #[cfg(test)]

@@ -79,8 +79,8 @@ pub use cull::{
     ThickCylinderCull,
 };
 pub use geometry::{
-    DRay, DRayError, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray,
-    RayError, Torus, TorusError,
+    DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
+    NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
 };
 pub use intersect::{DHit, Hit, TorusRay, intersect};
 

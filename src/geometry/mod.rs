@@ -5,5 +5,6 @@ mod torus;
 
 pub use ray::{DRay, DRayError, Ray, RayError};
 pub use torus::{
-    LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus, TorusError,
+    FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus,
+    TorusError,
 };

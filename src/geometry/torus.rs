@@ -115,6 +115,12 @@ pub const MAX_OUTER_RADIUS: f32 = 1e15;
 /// rounding up to 256·(R + r); 64 leaves a factor 4 of room.
 pub const NEAR_ORIGIN_REL: f32 = 64.0;
 
+/// Origins farther than this many (R + r) from the centre (2⁴⁰) are beyond where f64 places
+/// a line to within the culls' margin: the culls then keep the ray (see
+/// [`Torus::line_to_local`]), and the exact intersection answers with an error of about
+/// 2⁻⁵³ of the distance.
+pub const FAR_LIMIT_REL: f64 = 1_099_511_627_776.0;
+
 impl fmt::Display for TorusError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -337,10 +343,33 @@ impl Torus {
     #[inline(never)]
     fn far_line_to_local(&self, ray: &Ray) -> LocalLine {
         let (o, d) = self.line_to_local_f64(ray);
+        if !self.placeable(o) {
+            return self.unplaceable(d);
+        }
         let foot = o - d * (o.dot(d) / d.length_squared());
         LocalLine {
             origin: foot.as_vec3(),
             dir: d.as_vec3(),
+        }
+    }
+
+    /// Whether f64 places the line through `o` (torus frame) to within the culls' margin:
+    /// the foot point's rounding, about 2⁻⁵³·|o|, must stay below η = 2⁻¹²·(R + r), so
+    /// |o| ≤ 2⁴⁰·(R + r).
+    fn placeable(&self, o: DVec3) -> bool {
+        let limit =
+            FAR_LIMIT_REL * (f64::from(self.major_radius()) + f64::from(self.minor_radius()));
+        o.length_squared() <= limit * limit
+    }
+
+    /// The line the culls get for a ray f64 cannot place: one with the ray's direction
+    /// through the tube's core circle at (R, 0, 0), which every conservative cull keeps
+    /// (it runs inside the tube), so the exact intersection decides.
+    #[cold]
+    fn unplaceable(&self, d: DVec3) -> LocalLine {
+        LocalLine {
+            origin: Vec3::new(self.major_radius(), 0.0, 0.0),
+            dir: (d / d.length()).as_vec3(),
         }
     }
 
@@ -373,6 +402,9 @@ impl Torus {
     /// hold) is pulled in to 4·(R + r) along itself: still a line that misses.
     pub fn dline_to_local(&self, ray: &DRay) -> LocalLine {
         let (o, d) = self.dline_to_local_f64(ray);
+        if !self.placeable(o) {
+            return self.unplaceable(d);
+        }
         let d = d / d.length();
         let outer = f64::from(self.major_radius()) + f64::from(self.minor_radius());
         let near = f64::from(NEAR_ORIGIN_REL) * outer;

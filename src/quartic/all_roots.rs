@@ -32,9 +32,16 @@ pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
 
 /// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
 /// Newton-polished on that quartic. A double root is reported twice.
+///
+/// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
+/// x/s, s a power of two.
 pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
     if !(p.is_finite() && q.is_finite() && r.is_finite()) {
         return RealRoots::default();
+    }
+    if let Some(s) = super::out_of_range_scale(p, q, r) {
+        let (p, q, r) = super::scaled(p, q, r, s);
+        return solve_depressed_monic(p, q, r).map_increasing(|y| y * s);
     }
     let c = [1.0, 0.0, p, q, r];
     let even = if q == 0.0 {

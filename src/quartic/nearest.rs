@@ -28,8 +28,25 @@ use crate::batch::real::{Real, RealMask, sc, sc_mask};
 /// assert_eq!(nearest_root_depressed(-5.0, 0.0, 4.0, 1.5, 10.0), Some(2.0));
 /// assert_eq!(nearest_root_depressed(-5.0, 0.0, 4.0, 2.5, 10.0), None);
 /// ```
+///
+/// Coefficients of any size are taken: beyond 2^±100 the quartic is solved for x/s, s a
+/// power of two (see `out_of_range_scale`).
 #[inline]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
+    if let Some(s) = super::out_of_range_scale(p, q, r) {
+        let (p, q, r) = super::scaled(p, q, r, s);
+        // lo/s or hi/s may round (to a subnormal or 0): the root is checked against the
+        // caller's own range.
+        return nearest_root_in_range(p, q, r, lo / s, hi / s)
+            .map(|y| y * s)
+            .filter(|&x| x >= lo && x <= hi);
+    }
+    nearest_root_in_range(p, q, r, lo, hi)
+}
+
+/// [`nearest_root_depressed`] for coefficients within 2^±100.
+#[inline(always)]
+fn nearest_root_in_range(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
     if surely_no_real_root(p, q, r) {
         return None;
     }

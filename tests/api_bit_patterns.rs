@@ -1,0 +1,188 @@
+//! The renderer API on arbitrary bit patterns (NaN, ±∞, subnormals, ±0, huge): the
+//! constructors refuse what they cannot serve, and on everything they accept the exact
+//! intersection and every cull run without a panic, answer finitely inside the ray's
+//! range, and no cull changes the answer (a rejected ray has no hit). The depressed quartic
+//! solvers take any f64 coefficients (the general `solve_quartic` does not yet: see the
+//! ignored test at the end).
+
+// Uses the oracle-free API only, but shares the harness feature gate of the suite.
+#![cfg(feature = "harness")]
+
+use glam::{DVec3, Vec3};
+use proptest::prelude::*;
+use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
+use torus_cull::{CullBounds, CullKind, DRay, Ray, Torus, intersect, intersect_culled};
+
+/// Floats by bit pattern: every class of f32 equally likely to come up as any other.
+fn any_f32() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        any::<u32>().prop_map(f32::from_bits),
+        any::<f32>(),
+        (-4.0f32..4.0),
+        Just(0.0f32),
+        Just(-0.0f32),
+        Just(f32::MIN_POSITIVE / 2.0),
+        Just(f32::MAX),
+        Just(f32::INFINITY),
+        Just(f32::NAN),
+    ]
+}
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        any::<u64>().prop_map(f64::from_bits),
+        any::<f64>(),
+        (-4.0f64..4.0),
+        Just(0.0f64),
+        Just(-0.0f64),
+        Just(f64::MIN_POSITIVE / 2.0),
+        Just(f64::MAX),
+        Just(f64::INFINITY),
+        Just(f64::NAN),
+    ]
+}
+
+fn vec3() -> impl Strategy<Value = Vec3> {
+    prop::array::uniform3(any_f32()).prop_map(Vec3::from)
+}
+
+fn dvec3() -> impl Strategy<Value = DVec3> {
+    prop::array::uniform3(any_f64()).prop_map(DVec3::from)
+}
+
+/// A torus the constructor accepts, often a plain one so that rays meet it.
+fn torus() -> impl Strategy<Value = Torus> {
+    prop_oneof![
+        (vec3(), vec3(), any_f32(), any_f32()),
+        (vec3(), vec3(), 0.5f32..4.0, 0.01f32..0.45),
+        (Just(Vec3::ZERO), Just(Vec3::Y), Just(2.0f32), Just(1.0f32)),
+    ]
+    .prop_filter_map("refused", |(c, a, big, small)| {
+        Torus::new(c, a, big, small).ok()
+    })
+}
+
+/// Checks one accepted ray of either precision against every cull.
+fn check<R: torus_cull::TorusRay>(
+    torus: &Torus,
+    ray: &R,
+    t_of: impl Fn(&R::Hit) -> (f64, DVec3),
+    range: (f64, f64),
+) -> Result<(), TestCaseError>
+where
+    R::Hit: PartialEq + std::fmt::Debug,
+{
+    let bounds = CullBounds::of(torus);
+    let found = intersect(torus, ray);
+    if let Some(hit) = &found {
+        let (t, n) = t_of(hit);
+        prop_assert!(
+            t.is_finite() && t >= range.0 && t <= range.1,
+            "t = {t} outside {range:?}"
+        );
+        prop_assert!(
+            n.is_finite() && (n.length() - 1.0).abs() < 1e-3,
+            "normal {n}"
+        );
+    }
+    for cull in CullKind::TIMED {
+        let culled = intersect_culled(&cull, torus, &bounds, ray);
+        prop_assert!(
+            culled == found,
+            "{cull} changed the answer: {culled:?} vs {found:?} on {torus:?}"
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 20_000, ..ProptestConfig::default() })]
+
+    #[test]
+    fn f32_rays_of_any_bits(torus in torus(), o in vec3(), d in vec3(), aim in any::<bool>()) {
+        // Half the rays are aimed at the torus's centre from `o`, so that many meet it.
+        let d = if aim { torus.center() - o } else { d };
+        if let Ok(ray) = Ray::new(o, d) {
+            check(&torus, &ray, |h| (f64::from(h.t), h.normal.as_dvec3()), (0.0, f64::INFINITY))?;
+        }
+    }
+
+    #[test]
+    fn f64_rays_of_any_bits(torus in torus(), o in dvec3(), d in dvec3(), aim in any::<bool>()) {
+        let d = if aim { torus.center().as_dvec3() - o } else { d };
+        if let Ok(ray) = DRay::new(o, d) {
+            check(&torus, &ray, |h| (h.t, h.normal), (0.0, f64::INFINITY))?;
+        }
+    }
+
+    #[test]
+    fn depressed_quartic_solvers_take_any_coefficients(
+        c in prop::array::uniform3(any_f64()),
+        lo in any_f64(),
+        hi in any_f64(),
+    ) {
+        let all = solve_depressed_monic(c[0], c[1], c[2]);
+        prop_assert!(all.as_slice().iter().all(|r| r.is_finite()), "{all:?}");
+        prop_assert!(all.as_slice().windows(2).all(|w| w[0] <= w[1]), "{all:?}");
+        if let Some(u) = nearest_root_depressed(c[0], c[1], c[2], lo, hi) {
+            prop_assert!(u.is_finite() && u >= lo && u <= hi, "{u} outside [{lo}, {hi}]");
+        }
+    }
+}
+
+/// Known failure, kept as its reproducer: `solve_quartic` makes the quartic monic first,
+/// and when the coefficients' ratios overflow f64 (c[0] = −1.1e-308 with c[4] = f64::MAX)
+/// it returns ±∞ "roots". The depressed solvers rescale such quartics; the general one
+/// does not yet.
+#[test]
+#[ignore = "known failure: solve_quartic overflows on extreme coefficient ratios"]
+fn solve_quartic_takes_any_coefficients() {
+    let roots = solve_quartic([-1.1251701976475783e-308, 0.0, -5e-324, 0.0, f64::MAX]);
+    assert!(roots.as_slice().iter().all(|r| r.is_finite()), "{roots:?}");
+}
+
+/// The cases the properties above first found. An f32 origin at f32::MAX aimed back at the
+/// torus: its f64 foot point erred by about 10²² (sphere rejected the hit), and its hit
+/// lies past f32's largest t (it was reported at t = ∞). An f64 origin at f64::MAX: the
+/// same t overflow in f64. A depressed quartic with q = f64::MAX: ±∞ "roots".
+#[test]
+fn the_first_found_cases_stay_fixed() {
+    let torus = Torus::canonical(2.0, 1.0).unwrap();
+    let bounds = CullBounds::of(&torus);
+    let far = Ray::new(
+        Vec3::new(0.0, 0.0, f32::MAX),
+        Vec3::new(0.0, 0.0, -2.760_388_6e16),
+    )
+    .unwrap();
+    let found = intersect(&torus, &far);
+    let hit = found.expect("the line hits the tube at z = 3 and t ≈ 1.2e22");
+    assert!((f64::from(hit.t) - 1.2327335e22).abs() < 1e16, "{hit:?}");
+    for cull in CullKind::TIMED {
+        assert_eq!(
+            intersect_culled(&cull, &torus, &bounds, &far),
+            found,
+            "{cull}"
+        );
+    }
+    let beyond = Ray::new(
+        Vec3::new(f32::MAX, 0.0, 0.0),
+        Vec3::new(-0.836_716, 0.0, 0.0),
+    )
+    .unwrap();
+    assert_eq!(
+        intersect(&torus, &beyond),
+        None,
+        "t past f32::MAX is not a finite hit"
+    );
+    let beyond = DRay::new(DVec3::new(0.0, 0.0, f64::MAX), DVec3::new(0.0, 0.0, -0.52)).unwrap();
+    assert_eq!(
+        intersect(&torus, &beyond),
+        None,
+        "t past f64::MAX is not a finite hit"
+    );
+    let roots = solve_depressed_monic(0.0, f64::MAX, 0.364_952_612_642_686_25);
+    assert!(
+        !roots.is_empty() && roots.as_slice().iter().all(|r| r.is_finite()),
+        "{roots:?}"
+    );
+}
