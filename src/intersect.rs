@@ -13,7 +13,9 @@
 //! (the point is `o + t·d = p + (o·d̂ + t|d|)·d̂`).
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
-use crate::quartic::{RealRoots, nearest_root_depressed, solve_depressed_monic};
+use crate::quartic::{
+    RealRoots, nearest_root_depressed, nearest_root_in_range, solve_depressed_monic,
+};
 use crate::{DRay, LocalLine, Ray, Torus};
 use glam::{DVec3, Vec3};
 
@@ -196,6 +198,21 @@ pub fn intersect_local(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
+    intersect_reduced::<true>(major, minor, o, d, t_min, t_max)
+}
+
+/// [`intersect_local`]; `CHECKED = false` skips the solver's coefficient range check,
+/// for a [`Torus`] (validated: 1 < ν ≤ 1000, so past the chord test the coefficients are
+/// O(1)), where the check cost 4–6 % of a solve in the paired solver bench.
+#[inline(always)]
+fn intersect_reduced<const CHECKED: bool>(
+    major: f64,
+    minor: f64,
+    o: DVec3,
+    d: DVec3,
+    t_min: f64,
+    t_max: f64,
+) -> Option<(f64, DVec3)> {
     let red = reduce(major, minor, o, d);
     let outer = 1.0 + minor / major;
     let chord_sq = outer * outer * (1.0 + CHORD_SLACK) - red.p.length_squared();
@@ -212,7 +229,11 @@ pub fn intersect_local(
         return None;
     }
     let [c2, c1, c0] = red.c;
-    let u = nearest_root_depressed(c2, c1, c0, lo, hi)?;
+    let u = if CHECKED {
+        nearest_root_depressed(c2, c1, c0, lo, hi)
+    } else {
+        nearest_root_in_range(c2, c1, c0, lo, hi)
+    }?;
     let t = (u * major - red.s) * red.inv_len;
 
     // ∇F ∝ (|x|² + k)·x − 2(x, 0, z), positive multiple of the tube's outward normal on the
@@ -246,7 +267,7 @@ pub fn intersect_local(
 pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();
-    let (t, n) = intersect_local(
+    let (t, n) = intersect_reduced::<false>(
         f64::from(torus.major_radius()),
         f64::from(torus.minor_radius()),
         o,

@@ -41,6 +41,7 @@ mod tests;
 
 pub use all_roots::{solve_depressed_monic, solve_quartic};
 pub use nearest::nearest_root_depressed;
+pub(crate) use nearest::nearest_root_in_range;
 
 pub use roots::RealRoots;
 
