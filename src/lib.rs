@@ -65,6 +65,7 @@
 pub use glam;
 
 pub mod batch;
+pub mod certified;
 pub mod cull;
 mod geometry;
 pub mod intersect;
@@ -73,6 +74,7 @@ pub mod quartic;
 #[cfg(feature = "harness")]
 pub mod harness;
 
+pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};
 pub use cull::{
     AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
     DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
