@@ -73,7 +73,7 @@ mod isa;
 pub(crate) mod lanes;
 mod lines;
 mod mask;
-mod quartic;
+pub(crate) mod quartic;
 pub(crate) mod real;
 mod to_local;
 pub(crate) mod vec3s;

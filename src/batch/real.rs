@@ -81,6 +81,13 @@ pub(crate) trait Real:
     }
     /// `if mask { a } else { b }`, per lane.
     fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
+    /// Lanes that are finite (not ±∞, not NaN).
+    fn is_finite(self) -> Self::Mask;
+    /// Lanes that are NaN.
+    #[inline(always)]
+    fn is_nan(self) -> Self::Mask {
+        self.ne(self)
+    }
 }
 
 /// The scalar instantiation: one f64 in pulp's scalar "register".
@@ -222,6 +229,10 @@ macro_rules! real {
             #[inline(always)]
             fn eq(self, o: Self) -> $mask<S> {
                 $name::eq(self, o)
+            }
+            #[inline(always)]
+            fn is_finite(self) -> $mask<S> {
+                $name::is_finite(self)
             }
             #[inline(always)]
             fn select(mask: $mask<S>, a: Self, b: Self) -> Self {

@@ -1,14 +1,12 @@
-//! Ferrari's split and the nearest root in range, over f64 lanes: the scalar
+//! Ferrari's split and the nearest root in range, over lanes (f64, or f32 for the certified path): the scalar
 //! [`crate::quartic::nearest_root_depressed`]'s common ("clear") path, with its own
 //! functions (one source, generic over [`Real`]).
 
 use super::resolvent::greatest_root;
-use crate::batch::lanes::{F64s, M64s};
 use crate::batch::real::Real;
 use crate::quartic::factor::split_at;
 use crate::quartic::nearest::{clear_factors, nearest_of_clear};
 use crate::quartic::resolvent::Root;
-use pulp::Simd;
 
 /// The nearest root of x⁴ + p x² + q x + r in [lo, hi] (NaN for none), and the lanes the
 /// scalar solver must decide instead.
@@ -22,13 +20,7 @@ use pulp::Simd;
 /// discriminant is within 10⁻⁷ of zero relative to its size: a tangent or near-tangent
 /// line, decided by the scalar solver on the quartic itself.
 #[inline(always)]
-pub(crate) fn nearest_root<S: Simd>(
-    p: F64s<S>,
-    q: F64s<S>,
-    r: F64s<S>,
-    lo: F64s<S>,
-    hi: F64s<S>,
-) -> (F64s<S>, M64s<S>) {
+pub(crate) fn nearest_root<R: Real>(p: R, q: R, r: R, lo: R, hi: R) -> (R, R::Mask) {
     let (z, dh, resolvent_fallback) = greatest_root(p, q, r);
     let m = z.sqrt();
     // The lane resolvent has no Vieta form: q/m is taken as it comes.
@@ -43,9 +35,7 @@ pub(crate) fn nearest_root<S: Simd>(
     let split = split_at(p, q, r, &root);
     let (disc1, disc2, clear) = clear_factors(&split);
     let best = nearest_of_clear(&split, disc1, disc2, lo, hi);
-    let root = best
-        .eq(p.splat(f64::INFINITY))
-        .select(p.splat(f64::NAN), best);
+    let root = R::select(best.eq(p.splat(f64::INFINITY)), p.splat(f64::NAN), best);
     let bad_input = !(p.is_finite() & q.is_finite() & r.is_finite());
     (root, resolvent_fallback | !clear | bad_input)
 }

@@ -1,12 +1,10 @@
-//! The greatest root of Ferrari's resolvent in z = m², over f64 lanes: the scalar
+//! The greatest root of Ferrari's resolvent in z = m², over lanes (f64, or f32 for the certified path): the scalar
 //! [`crate::quartic`] resolvent's steps (one source, generic over [`Real`]), selected
 //! instead of branched on, with its cold case handed back.
 
 use super::cube_root::CBRT_RANGE;
-use crate::batch::lanes::{F64s, M64s};
 use crate::batch::real::{Real, RealMask};
 use crate::quartic::resolvent::{cardano, cubic, trigonometric};
-use pulp::Simd;
 
 /// `(z, h′(z), fallback)`: z ≥ 0 the greatest root of
 /// h(z) = z³ + 2p z² + (p² − 4r) z − q² for x⁴ + p x² + q x + r, and the lanes the
@@ -25,11 +23,7 @@ use pulp::Simd;
 /// a lane's worth of work for everyone), a Cardano argument outside the lane cube
 /// root's range, and anything not finite.
 #[inline(always)]
-pub(super) fn greatest_root<S: Simd>(
-    p: F64s<S>,
-    q: F64s<S>,
-    r: F64s<S>,
-) -> (F64s<S>, F64s<S>, M64s<S>) {
+pub(crate) fn greatest_root<R: Real>(p: R, q: R, r: R) -> (R, R, R::Mask) {
     let zero = p.splat(0.0);
     let cubic = cubic(p, q, r);
     // NaN (overflow) is left to the scalar solver too.
@@ -51,13 +45,13 @@ pub(super) fn greatest_root<S: Simd>(
     } else {
         zero
     };
-    let w = one_real.select(cardano, trig);
+    let w = R::select(one_real, cardano, trig);
     let mut z = (w - cubic.a3).max(zero);
     let tiny = cubic.is_small_root(z);
     if tiny.any() {
         // Rare (a line nearly through the foot point's quartic minimum): only a register
         // with such a lane pays the two divisions.
-        z = tiny.select(cubic.small_root(q), z);
+        z = R::select(tiny, cubic.small_root(q), z);
     }
     let z = cubic.polish(z);
     let dz = cubic.dh(z);
