@@ -189,3 +189,64 @@ fn scales_far_origins_and_secondary_rays_never_miss() {
     }
     assert!(bad.is_empty(), "{bad:#?}");
 }
+
+/// The f32 wavefront gives the scalar f32 path's answers, bit for bit, at every dispatch
+/// level (one source: `decide` at width 1 is the scalar path), and its escalations.
+#[test]
+fn wavefront_f32_is_the_scalar_f32_path() {
+    use torus_cull::batch::{Dispatch, Isa, Wavefront};
+    use torus_cull::{CullBounds, CullKind, intersect_f32};
+    let mut wavefront = Wavefront::new();
+    let mut hits = Vec::new();
+    for nu in [1.2, 4.0, 32.0, 1000.0] {
+        for case in [Case::Grazing, Case::Uniform, Case::Camera, Case::Hole] {
+            if nu < case.min_nu() {
+                continue;
+            }
+            let batch = generate(case, nu, 3001, 3, Pose::Random).unwrap();
+            let bounds = CullBounds::of(&batch.torus);
+            let scalar: Vec<_> = batch
+                .rays
+                .iter()
+                .map(|r| intersect_f32(&batch.torus, r))
+                .collect();
+            let escalated = scalar.iter().filter(|a| a.escalated).count();
+            for dispatch in Isa::available()
+                .into_iter()
+                .map(|isa| Dispatch::forced(isa).unwrap())
+            {
+                for cull in [CullKind::None, CullKind::Cychosz, CullKind::Discriminant] {
+                    let stats = wavefront
+                        .intersect_f32(
+                            &dispatch,
+                            cull,
+                            &batch.torus,
+                            &bounds,
+                            &batch.rays,
+                            &mut hits,
+                        )
+                        .unwrap();
+                    for (i, (lane, one)) in hits.iter().zip(&scalar).enumerate() {
+                        assert_eq!(
+                            lane.is_some(),
+                            one.hit.is_some(),
+                            "{} nu {nu} {dispatch:?} {cull}: ray {i}",
+                            case.name()
+                        );
+                        if let (Some(a), Some(b), false) = (lane, one.hit, one.escalated) {
+                            assert_eq!(a.t.to_bits(), b.t.to_bits(), "ray {i}");
+                        }
+                    }
+                    if cull == CullKind::None {
+                        assert_eq!(
+                            stats.escalated,
+                            escalated,
+                            "{} nu {nu} {dispatch:?}",
+                            case.name()
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

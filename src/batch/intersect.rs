@@ -22,7 +22,7 @@ use pulp::{Simd, WithSimd};
 pub(crate) struct RaysF64 {
     len: usize,
     /// origin x, y, z, direction x, y, z, t_min, t_max.
-    columns: [Vec<f64>; 8],
+    pub(crate) columns: [Vec<f64>; 8],
     /// The ray's index in the caller's slice.
     pub(crate) index: Vec<usize>,
 }
@@ -63,7 +63,7 @@ impl RaysF64 {
         self.len
     }
 
-    fn padded(&self) -> usize {
+    pub(crate) fn padded(&self) -> usize {
         self.columns[0].len()
     }
 }
@@ -101,21 +101,21 @@ pub(crate) fn intersect_lanes(
 
 /// The torus as the scalar exact path sees it, in f64.
 #[derive(Clone, Copy)]
-struct TorusF64 {
-    center: DVec3,
-    to_local: DMat3,
-    to_world: DMat3,
-    major: f64,
+pub(crate) struct TorusF64 {
+    pub(crate) center: DVec3,
+    pub(crate) to_local: DMat3,
+    pub(crate) to_world: DMat3,
+    pub(crate) major: f64,
     /// The per-torus constants of `reduce` and the chord test, computed once in f64
     /// exactly as the scalar code computes them per ray: 1/R, r/R, 1 − (r/R)², 1 + r/R.
-    inv_major: f64,
-    minor_rel: f64,
+    pub(crate) inv_major: f64,
+    pub(crate) minor_rel: f64,
     k: f64,
     outer: f64,
 }
 
 impl TorusF64 {
-    fn of(torus: &Torus) -> TorusF64 {
+    pub(crate) fn of(torus: &Torus) -> TorusF64 {
         let to_local = torus.to_local_rotation_f64();
         let (major, minor) = (
             f64::from(torus.major_radius()),
@@ -137,15 +137,15 @@ impl TorusF64 {
 /// glam's `DVec3` over f64 lanes (as [`super::vec3s::Vec3s`] is its `Vec3` over f32
 /// lanes): the same formulas in the same order.
 #[derive(Clone, Copy)]
-struct DVec3s<S: Simd> {
-    x: F64s<S>,
-    y: F64s<S>,
-    z: F64s<S>,
+pub(crate) struct DVec3s<S: Simd> {
+    pub(crate) x: F64s<S>,
+    pub(crate) y: F64s<S>,
+    pub(crate) z: F64s<S>,
 }
 
 impl<S: Simd> DVec3s<S> {
     #[inline(always)]
-    fn splat(s: S, v: DVec3) -> DVec3s<S> {
+    pub(crate) fn splat(s: S, v: DVec3) -> DVec3s<S> {
         DVec3s {
             x: F64s::splat(s, v.x),
             y: F64s::splat(s, v.y),
@@ -154,11 +154,11 @@ impl<S: Simd> DVec3s<S> {
     }
     /// `DVec3::dot`: `(x·x′ + y·y′) + z·z′`.
     #[inline(always)]
-    fn dot(self, o: DVec3s<S>) -> F64s<S> {
+    pub(crate) fn dot(self, o: DVec3s<S>) -> F64s<S> {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
     #[inline(always)]
-    fn scale(self, k: F64s<S>) -> DVec3s<S> {
+    pub(crate) fn scale(self, k: F64s<S>) -> DVec3s<S> {
         DVec3s {
             x: self.x * k,
             y: self.y * k,
@@ -166,7 +166,7 @@ impl<S: Simd> DVec3s<S> {
         }
     }
     #[inline(always)]
-    fn sub(self, o: DVec3s<S>) -> DVec3s<S> {
+    pub(crate) fn sub(self, o: DVec3s<S>) -> DVec3s<S> {
         DVec3s {
             x: self.x - o.x,
             y: self.y - o.y,
@@ -174,7 +174,7 @@ impl<S: Simd> DVec3s<S> {
         }
     }
     #[inline(always)]
-    fn add(self, o: DVec3s<S>) -> DVec3s<S> {
+    pub(crate) fn add(self, o: DVec3s<S>) -> DVec3s<S> {
         DVec3s {
             x: self.x + o.x,
             y: self.y + o.y,
@@ -183,7 +183,7 @@ impl<S: Simd> DVec3s<S> {
     }
     /// `DMat3 * DVec3` as glam computes it: `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
     #[inline(always)]
-    fn rotated(self, m: &DMat3) -> DVec3s<S> {
+    pub(crate) fn rotated(self, m: &DMat3) -> DVec3s<S> {
         let s = self.x.s;
         DVec3s::splat(s, m.x_axis)
             .scale(self.x)

@@ -67,6 +67,7 @@
 //! closest alternative; pulp was taken for its longer record (the SIMD layer of `faer`)
 //! and its mask-register support, not by a measurement of both on this code.
 
+mod certified;
 mod cull;
 mod intersect;
 mod isa;

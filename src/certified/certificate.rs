@@ -22,7 +22,7 @@
 //! A lane that proves neither a hit nor a miss is escalated to the f64 solver.
 
 use crate::batch::quartic::nearest::nearest_root;
-use crate::batch::real::Real;
+use crate::batch::real::{Real, RealMask};
 
 /// 2⁻²⁴: the unit roundoff of f32.
 pub(crate) const U32: f64 = 1.0 / 16_777_216.0;
@@ -143,7 +143,8 @@ fn point_bound<R: Real>(line: &ScaledLine<R>, b: &Bounds<R>, u: R) -> PointBound
     let slope = four * a * bb - eight * c;
     // Rounding (at most 10 roundings in a monomial), plus the line's error through F's
     // Hessian (‖H‖ ≤ 12|p|² + 12) and d̂'s rounding through ‖∇F‖ ≤ 4|p|³ + 12|p|.
-    let p_len = p_sq.sqrt();
+    // |p| ≤ |q| + |u| (d̂ a unit vector to rounding; the term is tiny beside the others).
+    let p_len = reach * u.splat(1.0 + 4.0 * U32);
     let twelve = u.splat(12.0);
     let slope_err = u.splat(10.0 * U32) * (four * a.abs() * bb.abs() + eight * c.abs())
         + (twelve * p_sq + twelve) * eps_p
@@ -219,32 +220,40 @@ fn convex_piece_positive<R: Real>(
         & convex_positive(after, beta, &at_after, at_b)
 }
 
-/// Proved: F > 0 on [a, b] (true for an empty interval, a > b).
+/// Lane by lane, `x` where `m`, else `y`.
 #[inline(always)]
-fn positive<R: Real>(
-    line: &ScaledLine<R>,
-    b: &Bounds<R>,
-    (c2, c1): (R, R),
-    lo: R,
-    hi: R,
-) -> R::Mask {
-    let zero = lo.splat(0.0);
-    // F″ = 12u² + 2c2 ≥ 0 wherever u² ≥ w², with c2 taken at its lowest.
-    let w = ((b.c2_err - c2) * lo.splat((1.0 + 8.0 * U32) / 6.0))
-        .max(zero)
-        .sqrt();
-    let minus_w = w.negate();
-    let at_lo = point_bound(line, b, lo);
-    let at_hi = point_bound(line, b, hi);
-    let at_minus_w = point_bound(line, b, minus_w);
-    let at_w = point_bound(line, b, w);
-    let pick = |m: R::Mask, x: &PointBound<R>, y: &PointBound<R>| PointBound {
+fn pick<R: Real>(m: R::Mask, x: &PointBound<R>, y: &PointBound<R>) -> PointBound<R> {
+    PointBound {
         f_lo: R::select(m, x.f_lo, y.f_lo),
         slope_lo: R::select(m, x.slope_lo, y.slope_lo),
         slope_hi: R::select(m, x.slope_hi, y.slope_hi),
         sdf_lo: R::select(m, x.sdf_lo, y.sdf_lo),
         sdf_hi: R::select(m, x.sdf_hi, y.sdf_hi),
-    };
+    }
+}
+
+/// w ≥ 0 such that F″ = 12u² + 2c2 ≥ 0 wherever u² ≥ w² (c2 taken at its lowest).
+#[inline(always)]
+fn inflection<R: Real>(f: &Quartic<R>) -> R {
+    ((f.bounds.c2_err - f.c2) * f.c2.splat((1.0 + 8.0 * U32) / 6.0))
+        .max(f.c2.splat(0.0))
+        .sqrt()
+}
+
+/// Proved: F > 0 on [a, b] (true for an empty interval, a > b).
+#[inline(always)]
+fn positive<R: Real>(
+    line: &ScaledLine<R>,
+    f: &Quartic<R>,
+    (lo, at_lo): (R, &PointBound<R>),
+    (hi, at_hi): (R, &PointBound<R>),
+) -> R::Mask {
+    let (b, c2, c1) = (&f.bounds, f.c2, f.c1);
+    let zero = lo.splat(0.0);
+    let w = inflection(f);
+    let minus_w = w.negate();
+    let at_minus_w = point_bound(line, b, minus_w);
+    let at_w = point_bound(line, b, w);
     // Left convex piece [lo, min(hi, −w)].
     let left_end_is_hi = hi.le(minus_w);
     let left_end = R::select(left_end_is_hi, hi, minus_w);
@@ -254,8 +263,8 @@ fn positive<R: Real>(
         b,
         (c2, c1),
         lo,
-        (lo, &at_lo),
-        (left_end, &pick(left_end_is_hi, &at_hi, &at_minus_w)),
+        (lo, at_lo),
+        (left_end, &pick(left_end_is_hi, at_hi, &at_minus_w)),
     );
     // Right convex piece [max(lo, w), hi].
     let right_start_is_lo = lo.ge(w);
@@ -266,8 +275,8 @@ fn positive<R: Real>(
         b,
         (c2, c1),
         hi,
-        (right_start, &pick(right_start_is_lo, &at_lo, &at_w)),
-        (hi, &at_hi),
+        (right_start, &pick(right_start_is_lo, at_lo, &at_w)),
+        (hi, at_hi),
     );
     // Middle piece [max(lo, −w), min(hi, w)]: F″ ≤ 12w² + 2·c2_hi = 4·c2_err there, so F
     // is at least its chord's lower end minus 4·c2_err·(β − α)²/8.
@@ -284,9 +293,22 @@ fn positive<R: Real>(
     (!left_exists | left_ok) & (!right_exists | right_ok) & (!mid_exists | mid_ok)
 }
 
-/// Solve in f32 and prove the answer (module docs). Lanes with non-finite input escalate.
+/// The quartic along a scaled line, and the range clipped to the bounding sphere's chord.
+#[derive(Clone, Copy)]
+struct Quartic<R: Real> {
+    c2: R,
+    c1: R,
+    c0: R,
+    bounds: Bounds<R>,
+    /// An upper bound of the true chord's u²: negative for a line that misses the sphere.
+    chord_sq: R,
+    /// The range clipped to the chord.
+    lo: R,
+    hi: R,
+}
+
 #[inline(always)]
-pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
+fn quartic<R: Real>(line: &ScaledLine<R>) -> Quartic<R> {
     let (q, d, rr) = (line.q, line.d, line.rr);
     let one = rr.splat(1.0);
     let eps = rr.splat(U32);
@@ -307,44 +329,119 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
         * (two * rho_plus * rho_plus + two * (q.y * q.y + rr * rr) + rr.splat(4.0))
         + rr.splat(8.0) * line_at_foot
         + rr.splat(8.0) * eps;
-    let b = Bounds {
-        q_len,
-        k: one - rr * rr,
-        c2_err,
-    };
     // The chord: every true root has u² ≤ (1 + rr)² − |q_true|², which this bounds above.
     let outer = one + rr;
     let chord_sq = outer * outer * rr.splat(1.0 + 16.0 * U32)
         - q_len_sq * rr.splat(1.0 - 16.0 * U32)
         + rr.splat(4.0) * line_at_foot;
-    let zero = rr.splat(0.0);
-    let chord = chord_sq.max(zero).sqrt();
-    let lo = line.lo.max(chord.negate());
-    let hi = line.hi.min(chord);
+    let chord = chord_sq.max(rr.splat(0.0)).sqrt();
+    Quartic {
+        c2,
+        c1,
+        c0,
+        bounds: Bounds {
+            q_len,
+            k: one - rr * rr,
+            c2_err,
+        },
+        chord_sq,
+        lo: line.lo.max(chord.negate()),
+        hi: line.hi.min(chord),
+    }
+}
 
+/// The f32 solve alone, with no proof: the nearest root in range (NaN for none). What the
+/// certificate costs is timed against this (`batch_f32_uncertified_ns`); its answers are
+/// not to be trusted near tangents.
+#[inline(always)]
+pub(crate) fn solve_uncertified<R: Real>(line: &ScaledLine<R>) -> R {
+    let f = quartic(line);
+    nearest_root(f.c2, f.c1, f.c0, f.lo, f.hi).0
+}
+
+/// What the quick stage computed, for [`decide`]'s full proof.
+struct Stage<R: Real> {
+    f: Quartic<R>,
+    root: R,
+    found: R::Mask,
+    finite: R::Mask,
+    left: R,
+    at_left: PointBound<R>,
+    at_lo: PointBound<R>,
+    sign_change: R::Mask,
+}
+
+/// The common case, cheaply (three point evaluations): a hit whose range start and
+/// bracket lie on one convex piece of F, where the tangents at both ends prove F > 0
+/// before the bracket (a ray entering the tube without passing near it first); a miss of
+/// the bounding sphere, or a range outside its chord. Everything else is left undecided
+/// for [`decide`]'s full proof.
+#[inline(always)]
+fn quick<R: Real>(line: &ScaledLine<R>) -> (Decision<R>, Stage<R>) {
+    let f = quartic(line);
+    let (lo, hi, b) = (f.lo, f.hi, f.bounds);
+    let zero = lo.splat(0.0);
     // The solver's "careful" lanes (near-double resolvent roots, near-tangent factors) are
-    // not escalated on its word: soundness rests on the proof below alone, which fails
-    // wherever the f32 root is wrong, and often succeeds where the flag was only cautious.
-    let (root, _careful) = nearest_root(c2, c1, c0, lo, hi);
+    // not escalated on its word: soundness rests on the proof alone, which fails wherever
+    // the f32 root is wrong, and often succeeds where the flag was only cautious.
+    let (root, _careful) = nearest_root(f.c2, f.c1, f.c0, lo, hi);
     let found = !root.is_nan();
-    let finite = rr.is_finite() & q_len_sq.is_finite() & c2.is_finite() & c0.is_finite();
+    let finite = line.rr.is_finite() & f.chord_sq.is_finite() & f.c2.is_finite() & f.c0.is_finite();
 
     // Hit: sdf > 0 at the bracket's start, < 0 at its end, F > 0 before it.
-    let bracket = rr.splat(BRACKET);
+    let bracket = lo.splat(BRACKET);
     let left = (root - bracket).max(lo);
     let right = (root + bracket).min(line.hi);
     let at_left = point_bound(line, &b, left);
     let at_right = point_bound(line, &b, right);
     let sign_change = at_left.sdf_lo.gt(zero) & at_right.sdf_hi.lt(zero);
-    let hit_range_hi = R::select(found, left, hi);
-    // One "F > 0" proof serves both verdicts: up to the bracket for a hit, over the whole
-    // range for a miss.
-    let clear = positive(line, &b, (c2, c1), lo, hit_range_hi);
-    let hit = finite & found & sign_change & clear;
-    let no_chord = chord_sq.lt(zero);
+    let w = inflection(&f);
+    let one_piece = left.le(w.negate()) | lo.ge(w);
+    let at_lo = point_bound(line, &b, lo);
+    let hit =
+        finite & found & sign_change & one_piece & convex_positive(lo, left, &at_lo, &at_left);
+    let no_chord = f.chord_sq.lt(zero);
     let empty = hi.lt(lo);
-    let miss = finite & (no_chord | empty | (!found & clear));
-    Decision { u: root, hit, miss }
+    let miss = finite & (no_chord | empty);
+    (
+        Decision { u: root, hit, miss },
+        Stage {
+            f,
+            root,
+            found,
+            finite,
+            left,
+            at_left,
+            at_lo,
+            sign_change,
+        },
+    )
+}
+
+/// Solve in f32 and prove the answer (module docs). Lanes with non-finite input escalate.
+///
+/// The quick stage first; where a lane is left undecided, the full proof of "F > 0" over
+/// the convex, concave and convex pieces: up to the bracket for a hit, over the whole range
+/// for a miss.
+#[inline(always)]
+pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
+    let (quick, stage) = quick(line);
+    if (quick.hit | quick.miss).all() {
+        return quick;
+    }
+    let f = &stage.f;
+    let hit_range_hi = R::select(stage.found, stage.left, f.hi);
+    let at_hi = pick(
+        stage.found,
+        &stage.at_left,
+        &point_bound(line, &f.bounds, f.hi),
+    );
+    let clear = positive(line, f, (f.lo, &stage.at_lo), (hit_range_hi, &at_hi));
+    Decision {
+        u: stage.root,
+        hit: quick.hit | (stage.finite & stage.found & stage.sign_change & clear),
+        miss: quick.miss | (stage.finite & !stage.found & clear),
+    }
 }
 
 /// The unit outward normal at `p(u)` in the scaled frame: ∇F ∝ (|p|² + k)·p − 2(px, 0, pz).
