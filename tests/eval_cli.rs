@@ -330,3 +330,54 @@ fn precision_f64_answers_for_the_ray_as_typed() {
     assert_eq!(bad.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("f64"));
 }
+
+#[test]
+fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    // A clear hit (proved in f32), a clear miss, and the near-tangent ray of another
+    // project's tests (within f32's resolution of the tube: escalated to f64).
+    std::fs::write(
+        &input,
+        "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n",
+    )
+    .unwrap();
+    let path = input.to_str().unwrap();
+    let out = run(&[
+        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "f32",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(
+        &rows[0][..5],
+        ["index", "oracle", "margin", "t_hit", "escalated"]
+    );
+    assert_eq!((rows[1][1], rows[1][3], rows[1][4]), ("miss", "", "0"));
+    assert_eq!((rows[2][1], rows[2][4]), ("hit", "0"));
+    assert!(
+        (rows[2][3].parse::<f32>().unwrap() - 9.0).abs() < 1e-4,
+        "{text}"
+    );
+    assert_eq!((rows[3][1], rows[3][4]), ("hit", "1"));
+    // --exact f32 takes f32 rays: an explicit --precision f64 is refused.
+    let out = run(&[
+        "eval",
+        "--major",
+        "2",
+        "--minor",
+        "1",
+        "--rays",
+        path,
+        "--exact",
+        "f32",
+        "--precision",
+        "f64",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--exact f32 takes f32 rays"));
+}

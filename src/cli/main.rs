@@ -115,10 +115,25 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
         /// `f64`: read the rays as f64 and intersect them in f64 (t_hit to f64 precision);
-        /// `f32`: round each ray to f32 first, as a renderer's ray is.
-        #[arg(long, value_enum, default_value_t = EvalPrecision::F64)]
-        precision: EvalPrecision,
+        /// `f32`: round each ray to f32 first, as a renderer's ray is. Default: f64, or
+        /// f32 with `--exact f32`.
+        #[arg(long, value_enum)]
+        precision: Option<EvalPrecision>,
+        /// The exact intersection behind t_hit: `f64` (the default) or `f32`, the
+        /// certified f32 path, which adds the column `escalated` (1: f32 could not prove
+        /// the answer, the f64 solver gave it) and takes f32 rays.
+        #[arg(long, value_enum, default_value_t = EvalExact::F64)]
+        exact: EvalExact,
     },
+}
+
+/// `eval --exact`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum EvalExact {
+    /// The f64 solver.
+    F64,
+    /// The certified f32 path, escalating to f64.
+    F32,
 }
 
 /// `eval --precision`.
@@ -164,12 +179,18 @@ fn main() -> ExitCode {
             rays,
             out,
             precision,
+            exact,
         } => {
-            let precision = match precision {
-                EvalPrecision::F64 => torus_cull::harness::eval::Precision::F64,
-                EvalPrecision::F32 => torus_cull::harness::eval::Precision::F32,
+            use torus_cull::harness::eval::Precision;
+            let precision = match (precision, exact) {
+                (None | Some(EvalPrecision::F64), EvalExact::F64) => Ok(Precision::F64),
+                (Some(EvalPrecision::F32), EvalExact::F64) => Ok(Precision::F32),
+                (None | Some(EvalPrecision::F32), EvalExact::F32) => Ok(Precision::CertifiedF32),
+                (Some(EvalPrecision::F64), EvalExact::F32) => Err(
+                    "--exact f32 takes f32 rays: drop --precision f64, or use --exact f64".into(),
+                ),
             };
-            eval::eval(major, minor, precision, &rays, out.as_deref())
+            precision.and_then(|p| eval::eval(major, minor, p, &rays, out.as_deref()))
         }
     };
     match result {

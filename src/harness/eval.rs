@@ -11,14 +11,19 @@
 //! as f64 and runs the oracle and the exact intersection on the f64 ray ([`crate::DRay`]):
 //! what a transport or CAD user's data needs. The culls see the line rounded to f32, as
 //! they always do. [`Precision::F32`] rounds the row to an f32 [`Ray`] first, as a
-//! renderer's ray is; `t_hit` is then the f32 answer.
+//! renderer's ray is; `t_hit` is then the f32 answer. [`Precision::CertifiedF32`]
+//! (`eval --exact f32`) rounds the row to an f32 ray too and takes `t_hit` from the
+//! certified f32 path ([`crate::intersect_f32`]), with a column `escalated` after `t_hit`:
+//! 1 where f32 could not prove the answer and the f64 solver gave it.
 //!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction) ends it with an error naming the input and the line number, and
 //! the command exits non-zero: no answer is ever silently wrong or skipped.
 
 use crate::harness::oracle::{OracleClass, OracleLabel, Query, classify};
-use crate::{CullBounds, CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect};
+use crate::{
+    CullBounds, CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect, intersect_f32,
+};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
@@ -39,6 +44,9 @@ pub enum Precision {
     F64,
     /// Each row rounded to an f32 ray first, as a renderer shoots it.
     F32,
+    /// Each row rounded to an f32 ray, intersected by the certified f32 path; the output
+    /// has the column `escalated` after `t_hit`.
+    CertifiedF32,
 }
 
 /// Why `eval` stopped.
@@ -117,7 +125,15 @@ pub fn eval_csv(
             ));
         }
     }
-    writeln!(output, "{OUTPUT_HEADER}")?;
+    if precision == Precision::CertifiedF32 {
+        writeln!(
+            output,
+            "{}",
+            OUTPUT_HEADER.replace(",t_hit,", ",t_hit,escalated,")
+        )?;
+    } else {
+        writeln!(output, "{OUTPUT_HEADER}")?;
+    }
     let mut index = 0usize;
     for (i, line) in lines.enumerate() {
         let line_no = i + 2;
@@ -125,11 +141,19 @@ pub fn eval_csv(
         if line.trim().is_empty() {
             continue;
         }
+        let mut escalated = None;
         let (label, t_hit, line): (OracleLabel, Option<String>, LocalLine) = match precision {
             Precision::F32 => {
                 let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
                 let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
                 // The culls' own input: far origins go to the foot point, as in a renderer.
+                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
+            }
+            Precision::CertifiedF32 => {
+                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
+                let answer = intersect_f32(&torus, &ray);
+                escalated = Some(answer.escalated);
+                let t_hit = answer.hit.map(|hit| hit.t.to_string());
                 (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
             }
             Precision::F64 => {
@@ -147,6 +171,9 @@ pub fn eval_csv(
         write!(output, "{index},{oracle},{:e},", label.margin)?;
         if let Some(t) = t_hit {
             write!(output, "{t}")?;
+        }
+        if let Some(escalated) = escalated {
+            write!(output, ",{}", u8::from(escalated))?;
         }
         for cull in CullKind::TIMED {
             let keep = cull.keeps(&bounds, line.origin, line.dir);
