@@ -2,6 +2,9 @@
 //! every accepted t within 2e-4·(R + r) + 4 ulp(t) of the first root, on the workload
 //! generators and the adversarial families at ν from 1.01 to 1000.
 
+// Every check here runs against the harness's oracle.
+#![cfg(feature = "harness")]
+
 use rand::SeedableRng;
 use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
 use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};

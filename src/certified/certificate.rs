@@ -203,11 +203,17 @@ fn convex_piece_positive<R: Real>(
     line: &ScaledLine<R>,
     b: &Bounds<R>,
     (c2, c1): (R, R),
-    from: R,
+    (from, needed): (R, R::Mask),
     (alpha, at_a): (R, &PointBound<R>),
     (beta, at_b): (R, &PointBound<R>),
 ) -> R::Mask {
     let zero = alpha.splat(0.0);
+    // The tangents at the piece's ends alone prove most pieces (F falling towards a hit,
+    // or rising away from the range start): the split below only where a lane needs it.
+    let simple = convex_positive(alpha, beta, at_a, at_b);
+    if !(needed & !simple).any() {
+        return simple;
+    }
     let m = lowest(c2, c1, from, alpha, beta);
     let at_m = point_bound(line, b, m);
     let clear = at_m.sdf_lo.max(zero);
@@ -215,9 +221,10 @@ fn convex_piece_positive<R: Real>(
     let after = (m + clear).min(beta);
     let at_before = point_bound(line, b, before);
     let at_after = point_bound(line, b, after);
-    at_m.sdf_lo.gt(zero)
-        & convex_positive(alpha, before, at_a, &at_before)
-        & convex_positive(after, beta, &at_after, at_b)
+    simple
+        | (at_m.sdf_lo.gt(zero)
+            & convex_positive(alpha, before, at_a, &at_before)
+            & convex_positive(after, beta, &at_after, at_b))
 }
 
 /// Lane by lane, `x` where `m`, else `y`.
@@ -240,11 +247,13 @@ fn inflection<R: Real>(f: &Quartic<R>) -> R {
         .sqrt()
 }
 
-/// Proved: F > 0 on [a, b] (true for an empty interval, a > b).
+/// Proved: F > 0 on [a, b] (true for an empty interval, a > b). Lanes outside `active`
+/// (already decided) get an answer too, but no work is done for them alone.
 #[inline(always)]
 fn positive<R: Real>(
     line: &ScaledLine<R>,
     f: &Quartic<R>,
+    active: R::Mask,
     (lo, at_lo): (R, &PointBound<R>),
     (hi, at_hi): (R, &PointBound<R>),
 ) -> R::Mask {
@@ -262,7 +271,7 @@ fn positive<R: Real>(
         line,
         b,
         (c2, c1),
-        lo,
+        (lo, active & left_exists),
         (lo, at_lo),
         (left_end, &pick(left_end_is_hi, at_hi, &at_minus_w)),
     );
@@ -274,7 +283,7 @@ fn positive<R: Real>(
         line,
         b,
         (c2, c1),
-        hi,
+        (hi, active & right_exists),
         (right_start, &pick(right_start_is_lo, at_lo, &at_w)),
         (hi, at_hi),
     );
@@ -436,7 +445,14 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
         &stage.at_left,
         &point_bound(line, &f.bounds, f.hi),
     );
-    let clear = positive(line, f, (f.lo, &stage.at_lo), (hit_range_hi, &at_hi));
+    let undecided = !(quick.hit | quick.miss);
+    let clear = positive(
+        line,
+        f,
+        undecided,
+        (f.lo, &stage.at_lo),
+        (hit_range_hi, &at_hi),
+    );
     Decision {
         u: stage.root,
         hit: quick.hit | (stage.finite & stage.found & stage.sign_change & clear),

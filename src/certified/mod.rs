@@ -5,11 +5,11 @@
 //! forms that shaders use lose hits near tangents and silhouettes. Here the f32 solve is
 //! the f64 solver's method (depressed quartic at the foot point, Ferrari's split on the
 //! resolvent's greatest root) run in f32, and each answer comes with a proof built from
-//! error bounds ([`certificate`]): a hit is a proved sign change of the signed distance
+//! error bounds (the module `certificate`): a hit is a proved sign change of the signed distance
 //! within 1.9·10⁻⁴·R of the reported root, with F > 0 proved before it; a miss is F > 0
 //! proved over the whole range. A ray with neither proof — near-tangent, near-double
 //! roots, an origin inside the tube, a non-finite value — escalates to
-//! [`crate::intersect`]. The bound and why it holds: docs/math.md, "The certified f32
+//! [`crate::intersect()`]. The bound and why it holds: docs/math.md, "The certified f32
 //! path".
 //!
 //! ```
@@ -100,7 +100,7 @@ pub fn intersect_f32_certified(torus: &Torus, ray: &Ray) -> F32Verdict {
     F32Verdict::Hit { t, normal }
 }
 
-/// The nearest hit through the f32 path: certified in f32, escalated to [`intersect`]
+/// The nearest hit through the f32 path: certified in f32, escalated to [`intersect()`]
 /// otherwise. Never misses a hit the f64 path finds.
 #[must_use]
 pub fn intersect_f32(torus: &Torus, ray: &Ray) -> F32Hit {
