@@ -24,6 +24,7 @@ pub mod measure;
 pub mod oracle;
 pub mod output;
 pub mod paired;
+pub mod peer_f32;
 pub mod plot;
 pub mod render;
 pub mod report;
