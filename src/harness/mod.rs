@@ -20,6 +20,7 @@
 pub mod compare;
 pub mod errata;
 pub mod eval;
+pub mod f32_check;
 pub mod measure;
 pub mod oracle;
 pub mod output;
