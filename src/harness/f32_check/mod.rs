@@ -266,13 +266,15 @@ pub struct Timings {
     pub f32_path: f64,
     /// The peer.
     pub peer: f64,
+    /// The f64 exact intersection ([`crate::intersect()`]), for scale.
+    pub f64_intersect: f64,
     /// Rounds each was timed.
     pub rounds: u32,
 }
 
-/// Time the f32 path and the peer on the same rays, in `rounds` interleaved rounds
-/// (alternating which goes first); each one's minimum per ray. Indicative only: on a
-/// loaded machine use the paired timings of `torus-cull time` for claims.
+/// Time the f32 path, the peer and the f64 intersection on the same rays, in `rounds`
+/// interleaved rounds (the order rotating from round to round); each one's minimum per
+/// ray. Indicative only: on a loaded machine use paired timings for claims.
 pub fn time(rays: &[Labeled], rounds: u32) -> Timings {
     use std::hint::black_box;
     use std::time::Instant;
@@ -285,21 +287,23 @@ pub fn time(rays: &[Labeled], rounds: u32) -> Timings {
         black_box(n);
         start.elapsed().as_secs_f64() * 1e9 / rays.len().max(1) as f64
     };
-    let ours = |t: &Torus, r: &Ray| intersect_f32(t, r).hit.is_some();
-    let theirs = |t: &Torus, r: &Ray| intersect_peer_f32(t, r).is_some();
-    let (mut best_ours, mut best_peer) = (f64::INFINITY, f64::INFINITY);
-    for round in 0..rounds {
-        if round % 2 == 0 {
-            best_ours = best_ours.min(run(&ours));
-            best_peer = best_peer.min(run(&theirs));
-        } else {
-            best_peer = best_peer.min(run(&theirs));
-            best_ours = best_ours.min(run(&ours));
+    type Contender<'a> = &'a dyn Fn(&Torus, &Ray) -> bool;
+    let contenders: [Contender; 3] = [
+        &|t, r| intersect_f32(t, r).hit.is_some(),
+        &|t, r| intersect_peer_f32(t, r).is_some(),
+        &|t, r| crate::intersect(t, r).is_some(),
+    ];
+    let mut best = [f64::INFINITY; 3];
+    for round in 0..rounds as usize {
+        for k in 0..3 {
+            let i = (round + k) % 3;
+            best[i] = best[i].min(run(contenders[i]));
         }
     }
     Timings {
-        f32_path: best_ours,
-        peer: best_peer,
+        f32_path: best[0],
+        peer: best[1],
+        f64_intersect: best[2],
         rounds,
     }
 }
@@ -500,8 +504,9 @@ pub fn table(records: &[FamilyRecord]) -> String {
         "p99",
         "max",
         "ns/ray",
+        "f64 ns/ray",
     ];
-    let mut rows: Vec<[String; 15]> = Vec::new();
+    let mut rows: Vec<[String; 16]> = Vec::new();
     for r in records {
         let nu = match r.nu {
             Some(nu) => format!("{nu}"),
@@ -537,6 +542,10 @@ pub fn table(records: &[FamilyRecord]) -> String {
                 p99,
                 max,
                 ns.map_or_else(|| "-".into(), |v| format!("{v:.1}")),
+                lead(
+                    r.ns_per_ray
+                        .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect)),
+                ),
             ]);
         }
     }
