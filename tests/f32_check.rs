@@ -140,15 +140,12 @@ fn the_families_hold_definite_hits_and_misses() {
     }
 }
 
-/// Issue 19: escalation ≤ 1 % on uniform and camera rays at every ν and on secondary
-/// rays. Ignored until the certificate lands (today every ray escalates).
-#[test]
-#[ignore = "issue 19: the certificate escalates every ray until it lands"]
-fn escalation_is_at_most_one_percent_on_uniform_camera_and_secondary_rays() {
-    let over: Vec<String> = records()
+/// The escalation rate of the certified verdict on `families` above `limit`, listed.
+fn escalating(families: &[&str], limit: f64) -> Vec<String> {
+    records()
         .iter()
-        .filter(|r| matches!(r.family.as_str(), "uniform" | "camera" | "secondary"))
-        .filter(|r| r.certified.escalation_rate > 0.01)
+        .filter(|r| families.contains(&r.family.as_str()))
+        .filter(|r| r.certified.escalation_rate > limit)
         .map(|r| {
             format!(
                 "{} nu {:?}: {:.2} %",
@@ -157,7 +154,24 @@ fn escalation_is_at_most_one_percent_on_uniform_camera_and_secondary_rays() {
                 100.0 * r.certified.escalation_rate
             )
         })
-        .collect();
+        .collect()
+}
+
+/// Issue 19: escalation ≤ 1 % on uniform and camera rays at every ν, and on secondary
+/// rays with a scene-scale ε (t_min = 1e-4·(R + r)).
+#[test]
+fn escalation_is_at_most_one_percent_on_uniform_camera_and_secondary_rays() {
+    let over = escalating(&["uniform", "camera", "secondary_scene_eps"], 0.01);
+    assert!(over.is_empty(), "{}", over.join("\n"));
+}
+
+/// The same for secondary rays with a tube-scale ε (t_min = 1e-4·r): for thin tubes the
+/// ray starts within ~1e-7·R of the surface, where F > 0 on [t_min, root) is not proved
+/// in f32. Measured at commit c86a11b: 40 % (uniform hemisphere) and 93 % (grazing).
+#[test]
+#[ignore = "issue 19: secondary rays with t_min = 1e-4·r escalate ~40 % (grazing ~93 %)"]
+fn escalation_is_at_most_one_percent_on_secondary_rays_with_a_tube_scale_epsilon() {
+    let over = escalating(&["secondary", "secondary_grazing"], 0.01);
     assert!(over.is_empty(), "{}", over.join("\n"));
 }
 
