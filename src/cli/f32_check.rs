@@ -15,7 +15,7 @@ const MAX_RAYS: usize = 1_000_000;
 /// `torus-cull f32-check`'s arguments.
 #[derive(clap::Args)]
 pub struct F32CheckArgs {
-    /// Rays per family (about 56 families).
+    /// Rays per family.
     #[arg(long, default_value_t = 20_000)]
     rays: usize,
     /// The seed every family draws its rays from.

@@ -1,7 +1,8 @@
 //! The `torus-cull` command line.
 //!
 //! Exit codes: 0 fine; 1 the measurement found a problem (a false reject in `run`, a
-//! regression or records missing from the new file in `compare`); 2 the input or
+//! regression or records missing from the new file in `compare`, a missed, spurious or
+//! misplaced hit of the f32 path in `f32-check`); 2 the input or
 //! environment is bad (the message says which file and field). A closed stdout (`| head`)
 //! is not an error: output stops, the files are still written, and the exit code is the
 //! command's own.
