@@ -1,7 +1,8 @@
 //! The `torus-cull` command line.
 //!
 //! Exit codes: 0 fine; 1 the measurement found a problem (a false reject in `run`, a
-//! regression or records missing from the new file in `compare`); 2 the input or
+//! regression or records missing from the new file in `compare`, a missed, spurious or
+//! misplaced hit of the f32 path in `f32-check`); 2 the input or
 //! environment is bad (the message says which file and field). A closed stdout (`| head`)
 //! is not an error: output stops, the files are still written, and the exit code is the
 //! command's own.
@@ -12,6 +13,7 @@ use std::process::ExitCode;
 
 mod compare;
 mod eval;
+mod f32_check;
 mod plot;
 mod render;
 mod run;
@@ -100,6 +102,10 @@ enum Command {
         #[arg(long)]
         out_dir: Option<PathBuf>,
     },
+    /// Count the certified f32 intersection and the plain f32 closed form of shaders (the
+    /// peer) against the oracle, per ray family: missed and spurious hits, escalations, t
+    /// error. Exits 1 if ours missed a hit or gave a spurious or inaccurate one.
+    F32Check(f32_check::F32CheckArgs),
     /// Check every cull and the oracle on your own rays (CSV in the torus frame).
     Eval {
         /// Major radius R.
@@ -157,6 +163,7 @@ fn main() -> ExitCode {
             culls,
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
+        Command::F32Check(args) => f32_check::run(args),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
         Command::Render {
             scene,

@@ -20,10 +20,12 @@
 pub mod compare;
 pub mod errata;
 pub mod eval;
+pub mod f32_check;
 pub mod measure;
 pub mod oracle;
 pub mod output;
 pub mod paired;
+pub mod peer_f32;
 pub mod plot;
 pub mod render;
 pub mod report;

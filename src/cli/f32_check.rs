@@ -1,0 +1,112 @@
+//! `torus-cull f32-check`: the certified f32 intersection, the whole f32 path and the
+//! plain f32 closed form of shaders, counted against the oracle family by family.
+
+use super::CliResult;
+use crate::{out, outln};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torus_cull::harness::f32_check::{self, CheckFile, families};
+use torus_cull::harness::{output, results};
+
+/// The most rays per family.
+const MAX_RAYS: usize = 1_000_000;
+
+/// `torus-cull f32-check`'s arguments.
+#[derive(clap::Args)]
+pub struct F32CheckArgs {
+    /// Rays per family.
+    #[arg(long, default_value_t = 20_000)]
+    rays: usize,
+    /// The seed every family draws its rays from.
+    #[arg(long, default_value_t = 20261121)]
+    seed: u64,
+    /// Results JSON (default: results/<short commit>[-dirty]-f32-check.json). Its
+    /// directory must exist.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Worker threads for the oracle's labels (default: available cores); the timings
+    /// run on one.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Timing rounds per family (0: no timings).
+    #[arg(long, default_value_t = 5)]
+    rounds: u32,
+}
+
+/// Runs `f32-check`. Exit 1 when ours (the certified verdict or the whole f32 path)
+/// missed a hit, answered a miss with a `t` or put a `t` outside the tolerance: the
+/// peer's speckles are what it measures, not a failure.
+pub fn run(args: F32CheckArgs) -> CliResult {
+    if !(1..=MAX_RAYS).contains(&args.rays) {
+        return Err(format!(
+            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
+            args.rays
+        )
+        .into());
+    }
+    let threads = args
+        .threads
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1);
+    let path = match args.out {
+        Some(path) => path,
+        None => {
+            let path = results::default_path(Path::new("results"), "-f32-check");
+            output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
+    // Before the work, not after it.
+    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+
+    let families = families::all();
+    let bar = ProgressBar::new(families.len() as u64).with_style(
+        ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} families ({eta})")
+            .expect("valid template")
+            .progress_chars("=> "),
+    );
+    let message = format!(
+        "f32-check: {} families x {} rays",
+        families.len(),
+        args.rays
+    );
+    bar.set_message(message.clone());
+    let heartbeat = crate::Heartbeat::new(message, "families");
+    heartbeat.update(0, families.len() as u64);
+    let records = f32_check::check(
+        &families,
+        args.rays,
+        args.seed,
+        threads,
+        args.rounds,
+        &|done, all| {
+            bar.set_position(done as u64);
+            heartbeat.update(done as u64, all as u64);
+        },
+    )?;
+    bar.finish_and_clear();
+
+    out!("{}", f32_check::table(&records))?;
+    let failed: Vec<String> = records
+        .iter()
+        .filter(|r| r.ours_failed())
+        .map(|r| r.family.clone())
+        .collect();
+    let file = CheckFile::new(records, args.rays, args.seed, threads);
+    let mut text = serde_json::to_string_pretty(&file)?;
+    text.push('\n');
+    output::write_file(&path, text.as_bytes())
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    outln!("wrote {}", path.display())?;
+    if !failed.is_empty() {
+        eprintln!(
+            "error: the f32 path missed a hit, reported a spurious one or a t outside the \
+             tolerance in: {}",
+            failed.join(", ")
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
