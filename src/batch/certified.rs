@@ -19,6 +19,8 @@ use crate::Torus;
 use crate::batch::real::Real;
 use crate::certified::certificate::{ScaledLine, V3, decide, normal_at, solve_uncertified};
 use crate::certified::line::{FAR_SCALED, LINE_ABS, LINE_REL};
+use crate::intersect::foot_line;
+use crate::intersect::reduce::FootLine;
 use glam::Mat3;
 use pulp::{Simd, WithSimd};
 
@@ -152,14 +154,15 @@ fn foot_points<S: Simd>(
             y: load!(4),
             z: load!(5),
         };
-        let centre = DVec3s::splat(s, frame.center);
-        let o = origin.sub(centre).rotated(&frame.to_local);
+        let o = (origin - DVec3s::splat(s, frame.center)).rotated(&frame.to_local);
         let d = dir.rotated(&frame.to_local);
-        let inv_len = c!(1.0) / d.dot(d).sqrt();
-        let dh = d.scale(inv_len);
-        let s_ = o.dot(dh);
         let inv_major = c!(frame.inv_major);
-        let q = o.sub(dh.scale(s_)).scale(inv_major);
+        let FootLine {
+            dh,
+            p: q,
+            s: s_,
+            inv_len,
+        } = foot_line(o, d, inv_major);
         let len = c!(1.0) / inv_len;
         let (min, max) = (c!(-4.0), c!(4.0));
         let lo = ((load!(6) * len + s_) * inv_major).max(min).min(max);

@@ -11,7 +11,9 @@
 use super::lanes::{F64s, M64s};
 use super::lines::BLOCK;
 use super::quartic::nearest::nearest_root;
-use crate::intersect::CHORD_SLACK;
+pub(crate) use super::vec3s::DVec3s;
+use crate::intersect::reduce::FootLine;
+use crate::intersect::{CHORD_SLACK, coefficients, foot_line};
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
@@ -134,64 +136,6 @@ impl TorusF64 {
     }
 }
 
-/// glam's `DVec3` over f64 lanes (as [`super::vec3s::Vec3s`] is its `Vec3` over f32
-/// lanes): the same formulas in the same order.
-#[derive(Clone, Copy)]
-pub(crate) struct DVec3s<S: Simd> {
-    pub(crate) x: F64s<S>,
-    pub(crate) y: F64s<S>,
-    pub(crate) z: F64s<S>,
-}
-
-impl<S: Simd> DVec3s<S> {
-    #[inline(always)]
-    pub(crate) fn splat(s: S, v: DVec3) -> DVec3s<S> {
-        DVec3s {
-            x: F64s::splat(s, v.x),
-            y: F64s::splat(s, v.y),
-            z: F64s::splat(s, v.z),
-        }
-    }
-    /// `DVec3::dot`: `(x·x′ + y·y′) + z·z′`.
-    #[inline(always)]
-    pub(crate) fn dot(self, o: DVec3s<S>) -> F64s<S> {
-        self.x * o.x + self.y * o.y + self.z * o.z
-    }
-    #[inline(always)]
-    pub(crate) fn scale(self, k: F64s<S>) -> DVec3s<S> {
-        DVec3s {
-            x: self.x * k,
-            y: self.y * k,
-            z: self.z * k,
-        }
-    }
-    #[inline(always)]
-    pub(crate) fn sub(self, o: DVec3s<S>) -> DVec3s<S> {
-        DVec3s {
-            x: self.x - o.x,
-            y: self.y - o.y,
-            z: self.z - o.z,
-        }
-    }
-    #[inline(always)]
-    pub(crate) fn add(self, o: DVec3s<S>) -> DVec3s<S> {
-        DVec3s {
-            x: self.x + o.x,
-            y: self.y + o.y,
-            z: self.z + o.z,
-        }
-    }
-    /// `DMat3 * DVec3` as glam computes it: `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
-    #[inline(always)]
-    pub(crate) fn rotated(self, m: &DMat3) -> DVec3s<S> {
-        let s = self.x.s;
-        DVec3s::splat(s, m.x_axis)
-            .scale(self.x)
-            .add(DVec3s::splat(s, m.y_axis).scale(self.y))
-            .add(DVec3s::splat(s, m.z_axis).scale(self.z))
-    }
-}
-
 struct Kernel<'a> {
     frame: TorusF64,
     rays: &'a RaysF64,
@@ -266,30 +210,19 @@ fn intersect_lane<S: Simd>(
             F64s::splat(s, $x)
         };
     }
-    // `Torus::line_to_local_f64`.
-    let centre = DVec3s {
-        x: c!(frame.center.x),
-        y: c!(frame.center.y),
-        z: c!(frame.center.z),
-    };
-    let o = origin.sub(centre).rotated(&frame.to_local);
+    // `Torus::line_to_local_f64`, then `reduce` (its shared steps).
+    let o = (origin - DVec3s::splat(s, frame.center)).rotated(&frame.to_local);
     let d = dir.rotated(&frame.to_local);
-    // `reduce`.
     let major = c!(frame.major);
-    let inv_len = c!(1.0) / d.dot(d).sqrt();
-    let dh = d.scale(inv_len);
-    let s_ = o.dot(dh);
     let inv_r = c!(frame.inv_major);
-    let p = o.sub(dh.scale(s_)).scale(inv_r);
-    let rr = c!(frame.minor_rel);
+    let FootLine {
+        dh,
+        p,
+        s: s_,
+        inv_len,
+    } = foot_line(o, d, inv_r);
     let k = c!(frame.k);
-    let rho = (p.x * p.x + p.z * p.z).sqrt();
-    let tube = (p.y - rr) * (p.y + rr);
-    let c2 = c!(2.0) * (rho - c!(1.0)) * (rho + c!(1.0)) + c!(2.0) * tube + c!(4.0) * dh.y * dh.y;
-    let delta = p.dot(dh);
-    let c1 = c!(8.0) * (p.y - delta * dh.y) * dh.y;
-    let c0 =
-        ((rho - c!(1.0)) * (rho - c!(1.0)) + tube) * ((rho + c!(1.0)) * (rho + c!(1.0)) + tube);
+    let [c2, c1, c0] = coefficients(p, dh, c!(frame.minor_rel));
     // `intersect_local`: the chord of the bounding sphere and the range.
     let outer = c!(frame.outer);
     let chord_sq = outer * outer * c!(1.0 + CHORD_SLACK) - p.dot(p);
@@ -303,16 +236,14 @@ fn intersect_lane<S: Simd>(
     // The nearest root, then `t`, the normal, and the normal in the world (`intersect`).
     let (u, cold) = nearest_root(c2, c1, c0, lo, hi);
     let t = (u * major - s_) * inv_len;
-    let x = p.add(dh.scale(u));
+    let x = p + dh * u;
     let w = x.dot(x) + k;
     let grad = DVec3s {
         x: w * x.x - c!(2.0) * x.x,
         y: w * x.y,
         z: w * x.z - c!(2.0) * x.z,
     };
-    let normal = grad
-        .scale(c!(1.0) / grad.dot(grad).sqrt())
-        .rotated(&frame.to_world);
+    let normal = (grad * (c!(1.0) / grad.dot(grad).sqrt())).rotated(&frame.to_world);
     let found = !u.is_nan();
     Lane {
         t,

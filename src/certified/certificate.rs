@@ -23,6 +23,8 @@
 
 use crate::batch::quartic::nearest::nearest_root;
 use crate::batch::real::{Real, RealMask};
+pub(crate) use crate::batch::vec3s::V3;
+use crate::intersect::coefficients;
 
 /// 2⁻²⁴: the unit roundoff of f32.
 pub(crate) const U32: f64 = 1.0 / 16_777_216.0;
@@ -32,21 +34,6 @@ pub(crate) const U32: f64 = 1.0 / 16_777_216.0;
 /// accuracy the path promises). Wider proves more near-tangent hits (their signed
 /// distance changes slowly); the reported root is the solver's, typically within 10⁻⁶.
 pub(crate) const BRACKET: f64 = 1.9e-4;
-
-/// A 3-vector of [`Real`]s.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct V3<R> {
-    pub(crate) x: R,
-    pub(crate) y: R,
-    pub(crate) z: R,
-}
-
-impl<R: Real> V3<R> {
-    #[inline(always)]
-    pub(crate) fn dot(self, o: V3<R>) -> R {
-        self.x * o.x + self.y * o.y + self.z * o.z
-    }
-}
 
 /// A line in the scaled foot-point frame, with its search range, as [`decide`] takes it.
 #[derive(Debug, Clone, Copy)]
@@ -321,15 +308,11 @@ fn quartic<R: Real>(line: &ScaledLine<R>) -> Quartic<R> {
     let (q, d, rr) = (line.q, line.d, line.rr);
     let one = rr.splat(1.0);
     let eps = rr.splat(U32);
-    // The quartic, in the forms of the f64 path (`crate::intersect`'s `reduce`) that do not
-    // cancel near the surface.
+    // The quartic, in the f64 path's forms that do not cancel near the surface (the same
+    // function).
+    let [c2, c1, c0] = coefficients(q, d, rr);
     let rho = (q.x * q.x + q.z * q.z).sqrt();
-    let tube = (q.y - rr) * (q.y + rr);
     let two = rr.splat(2.0);
-    let c2 = two * (rho - one) * (rho + one) + two * tube + rr.splat(4.0) * d.y * d.y;
-    let delta = q.dot(d);
-    let c1 = rr.splat(8.0) * (q.y - delta * d.y) * d.y;
-    let c0 = ((rho - one) * (rho - one) + tube) * ((rho + one) * (rho + one) + tube);
     let q_len_sq = q.dot(q);
     let q_len = q_len_sq.sqrt();
     let line_at_foot = line.line_rel * q_len + line.line_abs;

@@ -7,7 +7,8 @@
 //! bounds do not grow with the distance of the origin.
 
 use super::certificate::{ScaledLine, U32, V3};
-use crate::batch::real::Real;
+use crate::batch::real::{Real, sc};
+use crate::intersect::foot_line;
 use crate::{Ray, Torus};
 use glam::DVec3;
 
@@ -48,11 +49,12 @@ pub(crate) fn scale(
     if far_sq.is_nan() || far_sq > FAR_SCALED * FAR_SCALED {
         return None;
     }
-    let inv_len = 1.0 / d.length();
-    let dh = d * inv_len;
-    let s = o.dot(dh);
     let inv_major = 1.0 / major;
-    let q = (o - s * dh) * inv_major;
+    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
+    let line = foot_line(v(o), v(d), sc(inv_major));
+    let (inv_len, s) = (line.inv_len.v, line.s.v);
+    let q = DVec3::new(line.p.x.v, line.p.y.v, line.p.z.v);
+    let dh = DVec3::new(line.dh.x.v, line.dh.y.v, line.dh.z.v);
     let len = 1.0 / inv_len;
     // Every root has |u| < 2: a range end beyond ±4 is as good as infinite, and keeps f32
     // finite.

@@ -13,10 +13,15 @@
 //! (the point is `o + t·d = p + (o·d̂ + t|d|)·d̂`).
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
+use crate::batch::real::{Sc, sc};
+use crate::batch::vec3s::V3;
 use crate::quartic::{
     RealRoots, nearest_root_depressed, nearest_root_in_range, solve_depressed_monic,
 };
 use crate::{DRay, LocalLine, Ray, Torus};
+pub(crate) use reduce::{coefficients, foot_line};
+
+pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
 
 /// The relative slack of the bounding-sphere chord test (here and in the lane twin,
@@ -127,37 +132,19 @@ struct Reduced {
 
 #[inline(always)]
 fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> Reduced {
-    let inv_len = 1.0 / d.length();
-    let dh = d * inv_len;
-    let s = o.dot(dh);
+    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
+    let back = |x: V3<Sc>| DVec3::new(x.x.v, x.y.v, x.z.v);
     let inv_r = 1.0 / major;
-    let p = (o - s * dh) * inv_r;
+    let line = foot_line(v(o), v(d), sc(inv_r));
     let rr = minor * inv_r;
-    let k = 1.0 - rr * rr;
-    // The coefficients in the forms that do not cancel. With ρ, y the foot point's distance
-    // from the axis and height (scaled) and d̂ a unit vector, K = ρ² + y² + 1 − (r/R)² and:
-    // - c0 = K² − 4ρ² = ((ρ − 1)² + y² − (r/R)²)·((ρ + 1)² + y² − (r/R)²): the direct form
-    //   cancels when the foot point is near the surface (4e-7 relative at ν = 600 near the
-    //   inner equator), the factored one has an error ∝ (r/R)² instead of 1;
-    // - c2 = 2K − 4(d̂x² + d̂z²) = 2(ρ − 1)(ρ + 1) + 2(y − r/R)(y + r/R) + 4d̂y²: the direct
-    //   form cancels for lines along the top and bottom circles (K ≈ 2, d̂y ≈ 0), where the
-    //   contact is of fourth order and every ulp of c2 shows in the root.
-    let rho = (p.x * p.x + p.z * p.z).sqrt();
-    let tube = (p.y - rr) * (p.y + rr);
-    let c2 = 2.0 * (rho - 1.0) * (rho + 1.0) + 2.0 * tube + 4.0 * dh.y * dh.y;
-    // - c1 = −8(px d̂x + pz d̂z) = 8(py − δ d̂y)·d̂y, as p ⊥ d̂ up to the rounding δ = p·d̂:
-    //   exactly 0 for a horizontal line, where the direct form leaves ε (a fourth-order
-    //   contact along the top circle turns that into 4e-11 of t).
-    let delta = p.dot(dh);
-    let c1 = 8.0 * (p.y - delta * dh.y) * dh.y;
-    let c0 = ((rho - 1.0) * (rho - 1.0) + tube) * ((rho + 1.0) * (rho + 1.0) + tube);
+    let [c2, c1, c0] = coefficients(line.p, line.dh, sc(rr));
     Reduced {
-        dh,
-        p,
-        s,
-        inv_len,
-        k,
-        c: [c2, c1, c0],
+        dh: back(line.dh),
+        p: back(line.p),
+        s: line.s.v,
+        inv_len: line.inv_len.v,
+        k: 1.0 - rr * rr,
+        c: [c2.v, c1.v, c0.v],
     }
 }
 

@@ -1,0 +1,61 @@
+//! The reduction every exact path shares, written once over [`Real`]: a line to the
+//! scaled foot-point frame, and the depressed quartic's coefficients there.
+//!
+//! The scalar f64 path ([`super::intersect`]), the f64 lanes (`crate::batch`'s
+//! intersection) and the certified f32 path (scalar and lanes) all call these two
+//! functions; glam's operation order is kept (`dot` = (x·x′ + y·y′) + z·z′), so the
+//! scalar f64 instantiation rounds exactly as glam's `DVec3` code did.
+
+use crate::batch::real::Real;
+use crate::batch::vec3s::V3;
+
+/// A line `o + t·d` in the foot-point frame scaled by `1/R` (module docs of
+/// [`super`]): the point at `u` is `p + u·d̂`, and `t = (u·R − s)/|d|`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FootLine<R> {
+    /// Unit direction d̂.
+    pub(crate) dh: V3<R>,
+    /// Foot point divided by R.
+    pub(crate) p: V3<R>,
+    /// `o·d̂` (unscaled).
+    pub(crate) s: R,
+    /// `1/|d|`.
+    pub(crate) inv_len: R,
+}
+
+/// The foot point of the centre on the line `o + t·d`, scaled by `inv_major` = 1/R.
+#[inline(always)]
+pub(crate) fn foot_line<R: Real>(o: V3<R>, d: V3<R>, inv_major: R) -> FootLine<R> {
+    let inv_len = inv_major.splat(1.0) / d.dot(d).sqrt();
+    let dh = d * inv_len;
+    let s = o.dot(dh);
+    let p = (o - dh * s) * inv_major;
+    FootLine { dh, p, s, inv_len }
+}
+
+/// `[c2, c1, c0]` of the depressed monic quartic `u⁴ + c2 u² + c1 u + c0` along
+/// `p + u·d̂` (scaled frame, `rr` = r/R), in the forms that do not cancel.
+///
+/// With ρ, y the foot point's distance from the axis and height and d̂ a unit vector,
+/// K = ρ² + y² + 1 − rr² and:
+/// - c0 = K² − 4ρ² = ((ρ − 1)² + y² − rr²)·((ρ + 1)² + y² − rr²): the direct form
+///   cancels when the foot point is near the surface (4e-7 relative at ν = 600 near the
+///   inner equator), the factored one has an error ∝ rr² instead of 1;
+/// - c2 = 2K − 4(d̂x² + d̂z²) = 2(ρ − 1)(ρ + 1) + 2(y − rr)(y + rr) + 4d̂y²: the direct
+///   form cancels for lines along the top and bottom circles (K ≈ 2, d̂y ≈ 0), where the
+///   contact is of fourth order and every ulp of c2 shows in the root;
+/// - c1 = −8(px d̂x + pz d̂z) = 8(py − δ d̂y)·d̂y, as p ⊥ d̂ up to the rounding δ = p·d̂:
+///   exactly 0 for a horizontal line, where the direct form leaves ε (a fourth-order
+///   contact along the top circle turns that into 4e-11 of t).
+#[inline(always)]
+pub(crate) fn coefficients<R: Real>(p: V3<R>, dh: V3<R>, rr: R) -> [R; 3] {
+    let one = rr.splat(1.0);
+    let two = rr.splat(2.0);
+    let rho = (p.x * p.x + p.z * p.z).sqrt();
+    let tube = (p.y - rr) * (p.y + rr);
+    let c2 = two * (rho - one) * (rho + one) + two * tube + rr.splat(4.0) * dh.y * dh.y;
+    let delta = p.dot(dh);
+    let c1 = rr.splat(8.0) * (p.y - delta * dh.y) * dh.y;
+    let c0 = ((rho - one) * (rho - one) + tube) * ((rho + one) * (rho + one) + tube);
+    [c2, c1, c0]
+}
