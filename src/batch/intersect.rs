@@ -13,7 +13,7 @@ use super::lines::BLOCK;
 use super::quartic::nearest::nearest_root;
 pub(crate) use super::vec3s::DVec3s;
 use crate::intersect::reduce::FootLine;
-use crate::intersect::{CHORD_SLACK, coefficients, foot_line};
+use crate::intersect::{CHORD_SLACK, coefficients, foot_line, normal};
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
@@ -236,14 +236,7 @@ fn intersect_lane<S: Simd>(
     // The nearest root, then `t`, the normal, and the normal in the world (`intersect`).
     let (u, cold) = nearest_root(c2, c1, c0, lo, hi);
     let t = (u * major - s_) * inv_len;
-    let x = p + dh * u;
-    let w = x.dot(x) + k;
-    let grad = DVec3s {
-        x: w * x.x - c!(2.0) * x.x,
-        y: w * x.y,
-        z: w * x.z - c!(2.0) * x.z,
-    };
-    let normal = (grad * (c!(1.0) / grad.dot(grad).sqrt())).rotated(&frame.to_world);
+    let normal = normal(p, dh, u, k).rotated(&frame.to_world);
     let found = !u.is_nan();
     Lane {
         t,

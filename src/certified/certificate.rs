@@ -443,27 +443,9 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
     }
 }
 
-/// The unit outward normal at `p(u)` in the scaled frame: ∇F ∝ (|p|² + k)·p − 2(px, 0, pz).
+/// The unit outward normal at `p(u)` in the scaled frame (the f64 path's function).
 #[inline(always)]
 pub(crate) fn normal_at<R: Real>(line: &ScaledLine<R>, u: R) -> V3<R> {
-    let (q, d) = (line.q, line.d);
-    let p = V3 {
-        x: q.x + u * d.x,
-        y: q.y + u * d.y,
-        z: q.z + u * d.z,
-    };
-    let one = u.splat(1.0);
-    let w = p.dot(p) + one - line.rr * line.rr;
-    let two = u.splat(2.0);
-    let g = V3 {
-        x: w * p.x - two * p.x,
-        y: w * p.y,
-        z: w * p.z - two * p.z,
-    };
-    let inv = one / g.dot(g).sqrt();
-    V3 {
-        x: g.x * inv,
-        y: g.y * inv,
-        z: g.z * inv,
-    }
+    let k = u.splat(1.0) - line.rr * line.rr;
+    crate::intersect::normal(line.q, line.d, u, k)
 }

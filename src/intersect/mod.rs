@@ -19,7 +19,7 @@ use crate::quartic::{
     RealRoots, nearest_root_depressed, nearest_root_in_range, solve_depressed_monic,
 };
 use crate::{DRay, LocalLine, Ray, Torus};
-pub(crate) use reduce::{coefficients, foot_line};
+pub(crate) use reduce::{coefficients, foot_line, normal};
 
 pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
@@ -223,12 +223,9 @@ fn intersect_reduced<const CHECKED: bool>(
     }?;
     let t = (u * major - red.s) * red.inv_len;
 
-    // ∇F ∝ (|x|² + k)·x − 2(x, 0, z), positive multiple of the tube's outward normal on the
-    // surface (the second factor of F is > 0 for a ring torus).
-    let x = red.p + u * red.dh;
-    let w = x.length_squared() + red.k;
-    let grad = DVec3::new(w * x.x - 2.0 * x.x, w * x.y, w * x.z - 2.0 * x.z);
-    Some((t, grad.normalize()))
+    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
+    let n = normal(v(red.p), v(red.dh), sc(u), sc(red.k));
+    Some((t, DVec3::new(n.x.v, n.y.v, n.z.v)))
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,

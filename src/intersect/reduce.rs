@@ -59,3 +59,16 @@ pub(crate) fn coefficients<R: Real>(p: V3<R>, dh: V3<R>, rr: R) -> [R; 3] {
     let c0 = ((rho - one) * (rho - one) + tube) * ((rho + one) * (rho + one) + tube);
     [c2, c1, c0]
 }
+
+/// The unit outward normal at `p + u·d̂` (scaled frame, `k` = 1 − rr²): ∇F ∝
+/// (|x|² + k)·x − 2(x, 0, z), a positive multiple of the tube's outward normal on the
+/// surface (the second factor of F is > 0 for a ring torus); normalized as glam does,
+/// times 1/|∇F|.
+#[inline(always)]
+pub(crate) fn normal<R: Real>(p: V3<R>, dh: V3<R>, u: R, k: R) -> V3<R> {
+    let x = p + dh * u;
+    let w = x.length_squared() + k;
+    let two = u.splat(2.0);
+    let grad = V3::new(w * x.x - two * x.x, w * x.y, w * x.z - two * x.z);
+    grad * (u.splat(1.0) / grad.dot(grad).sqrt())
+}
