@@ -56,7 +56,8 @@ use torus_cull::harness::measure::{self, LabeledBatch};
 use torus_cull::harness::oracle::OracleClass;
 use torus_cull::harness::paired;
 use torus_cull::harness::results::{
-    BATCH_MODE, BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
+    BATCH_MODE, BvhSizes, CPU_DEVICE, EstimateRecord, F64_PRECISION, RatioRecord, Results,
+    SCALAR_MODE, Sizes, TimingRecord,
 };
 use torus_cull::harness::solver_suite::SolverCase;
 use torus_cull::harness::workload::spec::{BvhSpec, Workload};
@@ -710,6 +711,9 @@ fn timing_records(
                 ideal_total_ns_at_hit_cost: solve_hit.map(|s| cull_ns.median + hit_fraction * s),
                 source: "criterion".into(),
                 mode: SCALAR_MODE.into(),
+                precision: F64_PRECISION.into(),
+                device: CPU_DEVICE.into(),
+                escalation_rate: None,
             });
         }
         // Batch mode: the same rays through the wavefront; `none` is the batch baseline
@@ -736,6 +740,9 @@ fn timing_records(
                 ideal_total_ns_at_hit_cost: None,
                 source: "criterion".into(),
                 mode: BATCH_MODE.into(),
+                precision: F64_PRECISION.into(),
+                device: CPU_DEVICE.into(),
+                escalation_rate: None,
             });
         }
     }

@@ -1,6 +1,6 @@
 //! Plain-text tables of a results file, as `run` and `cargo bench` print them.
 
-use crate::harness::results::{Results, TimingRecord};
+use crate::harness::results::{CPU_DEVICE, Results, TimingRecord};
 use std::fmt::Write;
 
 /// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
@@ -86,12 +86,12 @@ pub fn miss_capture_tables(results: &Results) -> String {
     )
 }
 
-/// The scalar-mode timing records (one ray at a time).
+/// The scalar-mode timing records (one ray at a time, f64).
 fn scalar_timings(results: &Results) -> Vec<TimingRecord> {
     results
         .timing
         .iter()
-        .filter(|r| !r.is_batch())
+        .filter(|r| !r.is_batch() && !r.is_f32())
         .cloned()
         .collect()
 }
@@ -166,15 +166,22 @@ pub fn ratio_tables(results: &Results) -> String {
 /// cell is `cull_ns scalar → batch | total_ns scalar → batch`, ns per ray. Empty when the
 /// file has no batch records.
 pub fn scalar_vs_batch_tables(results: &Results) -> String {
+    let f64_cpu = |r: &TimingRecord| !r.is_f32() && r.device == CPU_DEVICE;
     let pairs: Vec<(&TimingRecord, &TimingRecord)> = results
         .timing
         .iter()
-        .filter(|b| b.is_batch())
+        .filter(|b| b.is_batch() && f64_cpu(b))
         .filter_map(|b| {
             results
                 .timing
                 .iter()
-                .find(|s| !s.is_batch() && s.case == b.case && s.nu == b.nu && s.cull == b.cull)
+                .find(|s| {
+                    !s.is_batch()
+                        && f64_cpu(s)
+                        && s.case == b.case
+                        && s.nu == b.nu
+                        && s.cull == b.cull
+                })
                 .map(|s| (s, b))
         })
         .collect();

@@ -4,7 +4,7 @@ use super::contender::{Metric, Workset, time_pass};
 use super::engine::Interleaver;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use crate::batch::{Dispatch, Isa};
-use crate::harness::results::RatioRecord;
+use crate::harness::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use crate::harness::workload::spec::Workload;
 use crate::harness::workload::{Case, GenerateError, generate};
 use crate::{CullKind, Ray, Torus};
@@ -272,6 +272,9 @@ pub fn time_units(
                         rays: t.set.len() as u64,
                         ns_per_ray: e.ns_per_ray,
                         reference_ns_per_ray: e.reference_ns_per_ray,
+                        precision: F64_PRECISION.to_string(),
+                        device: CPU_DEVICE.to_string(),
+                        escalation_rate: None,
                     });
                 }
             }
