@@ -10,7 +10,10 @@
 //! `skala`, `ellipsoid`, `quadric`, `discriminant`):
 //! * `batch_cull_ns`: the SIMD cull over structure-of-arrays lines, into a keep mask;
 //! * `batch_total_ns`: the wavefront of [`torus_cull::batch::Wavefront`] on the world
-//!   rays (lines, cull, compaction, exact intersection on f64 lanes, hits).
+//!   rays (lines, cull, compaction, exact intersection on f64 lanes, hits);
+//! * `batch_f32_total_ns`: the same wavefront through the certified f32 path
+//!   ([`torus_cull::batch::Wavefront::intersect_f32`]: f32 lanes, unproved rays to the f64
+//!   solver), written as `"precision": "f32"` batch records with their `escalation_rate`.
 //!
 //! The instruction set is picked at run time and recorded in `meta.isa`;
 //! `TORUS_CULL_ISA=avx2` (or `scalar`) forces a lower one.
@@ -33,7 +36,8 @@
 //!
 //! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
 //! the same cases and ν (each cull against cychosz and none, the scalar and the batch
-//! metrics, in shuffled rounds on the same rays; see [`torus_cull::harness::paired`]).
+//! metrics, the f32 wavefront also against the cull's own f64 wavefront, in shuffled
+//! rounds on the same rays; see [`torus_cull::harness::paired`]).
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -56,7 +60,8 @@ use torus_cull::harness::measure::{self, LabeledBatch};
 use torus_cull::harness::oracle::OracleClass;
 use torus_cull::harness::paired;
 use torus_cull::harness::results::{
-    BATCH_MODE, BvhSizes, EstimateRecord, RatioRecord, Results, SCALAR_MODE, Sizes, TimingRecord,
+    BATCH_MODE, BvhSizes, CPU_DEVICE, EstimateRecord, F32_PRECISION, F64_PRECISION, RatioRecord,
+    Results, SCALAR_MODE, Sizes, TimingRecord,
 };
 use torus_cull::harness::solver_suite::SolverCase;
 use torus_cull::harness::workload::spec::{BvhSpec, Workload};
@@ -112,6 +117,9 @@ const BATCH_TIMED: [CullKind; 6] = [
     CullKind::Discriminant,
 ];
 
+/// The criterion groups of batch mode, each `<group>-<case>`, per cull of [`BATCH_TIMED`].
+const BATCH_GROUPS: [&str; 3] = ["batch_cull_ns", "batch_total_ns", "batch_f32_total_ns"];
+
 /// One case's batch at one ν, for batch mode.
 struct BatchCase<'a> {
     case: Case,
@@ -122,8 +130,9 @@ struct BatchCase<'a> {
 }
 
 /// Times one cull on one batch in batch mode: `batch_cull_ns` (the SIMD cull over the
-/// structure-of-arrays lines, into a keep mask) and `batch_total_ns` (the wavefront on
-/// world rays: lines, cull, compaction, exact intersection on lanes, hits).
+/// structure-of-arrays lines, into a keep mask), `batch_total_ns` (the wavefront on
+/// world rays: lines, cull, compaction, exact intersection on lanes, hits) and
+/// `batch_f32_total_ns` (the same through the certified f32 path).
 fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &BatchCase) {
     let BatchCase {
         case,
@@ -146,11 +155,22 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
     let mut wavefront = Wavefront::new();
     let mut hits = Vec::new();
     c.benchmark_group(format!("batch_total_ns-{case}"))
-        .bench_with_input(id, rays, |b, rays| {
+        .bench_with_input(id.clone(), rays, |b, rays| {
             b.iter(|| {
                 black_box(
                     wavefront
                         .intersect(dispatch, cull, torus, &bounds, black_box(rays), &mut hits)
+                        .expect("a batched cull"),
+                );
+                black_box(&hits);
+            })
+        });
+    c.benchmark_group(format!("batch_f32_total_ns-{case}"))
+        .bench_with_input(id, rays, |b, rays| {
+            b.iter(|| {
+                black_box(
+                    wavefront
+                        .intersect_f32(dispatch, cull, torus, &bounds, black_box(rays), &mut hits)
                         .expect("a batched cull"),
                 );
                 black_box(&hits);
@@ -365,7 +385,7 @@ fn time_case(
                 lines: &soa,
             },
         );
-        for group in ["batch_cull_ns", "batch_total_ns"] {
+        for group in BATCH_GROUPS {
             registered.push(Registered::new(
                 format!("{group}-{case}"),
                 cull.name(),
@@ -537,7 +557,7 @@ fn bench() -> Result<ExitCode, String> {
     results.meta.preset = Some(config.name.to_string());
     results.meta.partial = !complete;
     results.meta.isa = Some(dispatch.isa().name().to_string());
-    results.timing = timing_records(&home, &batches, config.batch, started);
+    results.timing = timing_records(&home, &batches, config.batch, started, dispatch);
     if complete {
         // The paired ratios take a minute: only a complete run pays for them.
         results.ratio = paired_ratios(&batches, config, dispatch);
@@ -601,12 +621,9 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
                 name(format!("total_ns-{case}"), cull.name(), nu.to_string());
             }
             for cull in BATCH_TIMED {
-                name(format!("batch_cull_ns-{case}"), cull.name(), nu.to_string());
-                name(
-                    format!("batch_total_ns-{case}"),
-                    cull.name(),
-                    nu.to_string(),
-                );
+                for group in BATCH_GROUPS {
+                    name(format!("{group}-{case}"), cull.name(), nu.to_string());
+                }
             }
         }
     }
@@ -667,12 +684,14 @@ fn criterion_home() -> PathBuf {
 }
 
 /// Timing records from this run's estimates; benchmarks filtered out of the run are
-/// left out, never filled from an older run.
+/// left out, never filled from an older run. The f32 records' escalation rates come from
+/// one untimed pass of the certified f32 wavefront on the same batch.
 fn timing_records(
     home: &Path,
     batches: &[LabeledBatch],
     batch_len: usize,
     since: SystemTime,
+    dispatch: &Dispatch,
 ) -> Vec<TimingRecord> {
     let per_ray = |e: Estimate| e.scaled(1.0 / batch_len as f64);
     let mut out = Vec::new();
@@ -692,51 +711,73 @@ fn timing_records(
                     .map(|e| e.median / hits as f64)
             })
             .flatten();
+        let record =
+            |cull: CullKind, cull_ns: Estimate, total: Estimate, solve: f64| TimingRecord {
+                case: case.name().to_string(),
+                nu,
+                cull: cull.name().to_string(),
+                cull_ns: cull_ns.median,
+                total_ns: total.median,
+                total_ns_ci: [total.lower, total.upper],
+                speedup_vs_none: solve / total.median,
+                ideal_total_ns: cull_ns.median + hit_fraction * solve,
+                solve_hit_ns: None,
+                ideal_total_ns_at_hit_cost: None,
+                source: "criterion".into(),
+                mode: SCALAR_MODE.into(),
+                precision: F64_PRECISION.into(),
+                device: CPU_DEVICE.into(),
+                escalation_rate: None,
+            };
         for cull in CullKind::TIMED {
             let (Some(cull_ns), Some(total)) = (read("cull_ns", cull), read("total_ns", cull))
             else {
                 continue;
             };
             out.push(TimingRecord {
-                case: case.name().to_string(),
-                nu,
-                cull: cull.name().to_string(),
-                cull_ns: cull_ns.median,
-                total_ns: total.median,
-                total_ns_ci: [total.lower, total.upper],
-                speedup_vs_none: solve.median / total.median,
-                ideal_total_ns: cull_ns.median + hit_fraction * solve.median,
                 solve_hit_ns: solve_hit,
                 ideal_total_ns_at_hit_cost: solve_hit.map(|s| cull_ns.median + hit_fraction * s),
-                source: "criterion".into(),
-                mode: SCALAR_MODE.into(),
+                ..record(cull, cull_ns, total, solve.median)
             });
         }
         // Batch mode: the same rays through the wavefront; `none` is the batch baseline
-        // (every ray to the lane solver), so speedups are within the mode.
-        let Some(batch_solve) = read("batch_total_ns", CullKind::None) else {
-            continue;
-        };
-        for cull in BATCH_TIMED {
-            let (Some(cull_ns), Some(total)) =
-                (read("batch_cull_ns", cull), read("batch_total_ns", cull))
-            else {
+        // (every ray to the lane solver), so speedups are within the mode, and within the
+        // precision for the f32 wavefront (its `cull_ns` is the same SIMD cull).
+        let bounds = CullBounds::of(&labeled.batch.torus);
+        let mut wavefront = Wavefront::new();
+        let mut hits = Vec::new();
+        for (group, precision) in [
+            ("batch_total_ns", F64_PRECISION),
+            ("batch_f32_total_ns", F32_PRECISION),
+        ] {
+            let Some(batch_solve) = read(group, CullKind::None) else {
                 continue;
             };
-            out.push(TimingRecord {
-                case: case.name().to_string(),
-                nu,
-                cull: cull.name().to_string(),
-                cull_ns: cull_ns.median,
-                total_ns: total.median,
-                total_ns_ci: [total.lower, total.upper],
-                speedup_vs_none: batch_solve.median / total.median,
-                ideal_total_ns: cull_ns.median + hit_fraction * batch_solve.median,
-                solve_hit_ns: None,
-                ideal_total_ns_at_hit_cost: None,
-                source: "criterion".into(),
-                mode: BATCH_MODE.into(),
-            });
+            for cull in BATCH_TIMED {
+                let (Some(cull_ns), Some(total)) = (read("batch_cull_ns", cull), read(group, cull))
+                else {
+                    continue;
+                };
+                let escalation_rate = (precision == F32_PRECISION).then(|| {
+                    let stats = wavefront
+                        .intersect_f32(
+                            dispatch,
+                            cull,
+                            &labeled.batch.torus,
+                            &bounds,
+                            &labeled.batch.rays,
+                            &mut hits,
+                        )
+                        .expect("a batched cull");
+                    stats.escalated as f64 / stats.rays.max(1) as f64
+                });
+                out.push(TimingRecord {
+                    mode: BATCH_MODE.into(),
+                    precision: precision.into(),
+                    escalation_rate,
+                    ..record(cull, cull_ns, total, batch_solve.median)
+                });
+            }
         }
     }
     out

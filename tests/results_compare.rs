@@ -7,8 +7,8 @@ use std::path::Path;
 use std::process::Command;
 use torus_cull::harness::compare::compare;
 use torus_cull::harness::results::{
-    BvhRecord, Meta, RejectionRecord, Results, ResultsError, SCHEMA_VERSION, TimingRecord,
-    write_atomic,
+    BvhRecord, Meta, RatioRecord, RejectionRecord, Results, ResultsError, SCHEMA_VERSION,
+    TimingRecord, write_atomic,
 };
 
 fn sample() -> Results {
@@ -74,6 +74,9 @@ fn sample() -> Results {
             ideal_total_ns_at_hit_cost: None,
             source: "criterion".into(),
             mode: "scalar".into(),
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
         }],
         bvh: vec![BvhRecord {
             scene: "facing_grid".into(),
@@ -122,6 +125,126 @@ fn schema_round_trips_and_keeps_field_names() {
     ] {
         assert!(text.contains(field), "missing {field}");
     }
+}
+
+/// `precision`, `device` and `escalation_rate` (issue 19): written on every timing and
+/// ratio record (`escalation_rate` only on f32 ones) and read back; a record without them
+/// reads as f64 on the CPU with no escalation rate, so files from before them load.
+#[test]
+fn precision_device_and_escalation_round_trip_and_default_when_absent() {
+    let mut r = sample();
+    let f64_timing = r.timing[0].clone();
+    r.timing.push(TimingRecord {
+        mode: "batch".into(),
+        precision: "f32".into(),
+        escalation_rate: Some(2.5e-4),
+        ..f64_timing.clone()
+    });
+    let ratio = RatioRecord {
+        case: "uniform".into(),
+        nu: 4.0,
+        cull: "skala".into(),
+        reference: "cychosz".into(),
+        metric: "batch_total_ns".into(),
+        ratio: 0.85,
+        ratio_ci: [0.84, 0.86],
+        rounds: 100,
+        rounds_measured: 400,
+        rays: 1024,
+        ns_per_ray: 20.0,
+        reference_ns_per_ray: 23.5,
+        precision: "f64".into(),
+        device: "cpu".into(),
+        escalation_rate: None,
+    };
+    r.ratio = vec![
+        ratio.clone(),
+        RatioRecord {
+            reference: "f64".into(),
+            metric: "batch_f32_total_ns".into(),
+            precision: "f32".into(),
+            escalation_rate: Some(2.5e-4),
+            ..ratio.clone()
+        },
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("r.json");
+    r.save(&path).unwrap();
+    assert_eq!(Results::load(&path).unwrap(), r);
+    let value: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    for section in ["timing", "ratio"] {
+        let records = value[section].as_array().unwrap();
+        assert_eq!(records[0]["precision"], "f64", "{section}");
+        assert_eq!(records[0]["device"], "cpu", "{section}");
+        assert!(records[0].get("escalation_rate").is_none(), "{section}");
+        assert_eq!(records[1]["precision"], "f32", "{section}");
+        assert_eq!(records[1]["escalation_rate"], 2.5e-4, "{section}");
+    }
+
+    // Without the fields (as files written before them): f64, cpu, no rate.
+    let mut old = value.clone();
+    for section in ["timing", "ratio"] {
+        for record in old[section].as_array_mut().unwrap() {
+            let record = record.as_object_mut().unwrap();
+            for field in ["precision", "device", "escalation_rate"] {
+                record.remove(field);
+            }
+        }
+    }
+    let old_path = dir.path().join("old.json");
+    std::fs::write(&old_path, serde_json::to_string_pretty(&old).unwrap()).unwrap();
+    let loaded = Results::load(&old_path).unwrap();
+    let batch_f64 = TimingRecord {
+        mode: "batch".into(),
+        ..f64_timing.clone()
+    };
+    assert_eq!(loaded.timing, vec![f64_timing, batch_f64]);
+    assert_eq!(
+        loaded.ratio[1],
+        RatioRecord {
+            reference: "f64".into(),
+            metric: "batch_f32_total_ns".into(),
+            ..ratio.clone()
+        }
+    );
+    assert!(
+        loaded
+            .ratio
+            .iter()
+            .all(|x| x.precision == "f64" && x.device == "cpu" && x.escalation_rate.is_none())
+    );
+}
+
+/// The committed `time` and bench files, written before `precision` existed, load as f64
+/// CPU records and still compare with each other (issue 19 keeps the schema backward
+/// compatible).
+#[test]
+fn committed_results_from_before_precision_load_and_compare() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("results");
+    for name in ["230696a-time.json", "1ac18eb-time.json", "1ac18eb.json"] {
+        let r = Results::load(&root.join(name)).unwrap();
+        assert!(!r.ratio.is_empty(), "{name}");
+        assert!(
+            r.ratio
+                .iter()
+                .all(|x| x.precision == "f64" && x.device == "cpu" && x.escalation_rate.is_none()),
+            "{name}"
+        );
+        assert!(
+            r.timing
+                .iter()
+                .all(|x| x.precision == "f64" && x.device == "cpu" && x.escalation_rate.is_none()),
+            "{name}"
+        );
+    }
+    let (code, out) = cli_compare(
+        &root.join("230696a-time.json"),
+        &root.join("1ac18eb-time.json"),
+    );
+    assert!(code == 0 || code == 1, "{out}");
+    assert!(out.contains("skala/cychosz total_ns"), "{out}");
+    assert!(!out.contains("[f32]"), "{out}");
 }
 
 #[test]

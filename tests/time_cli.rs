@@ -260,6 +260,12 @@ fn mode_both_adds_batch_ratios_at_the_chosen_isa() {
     for metric in ["total_ns", "cull_ns", "batch_total_ns", "batch_cull_ns"] {
         assert_eq!(count(metric, "skala"), 8, "{metric}");
     }
+    // The f32 wavefront, certified and not: against both references and against skala's
+    // own f64 wavefront (reference `f64`).
+    for metric in ["batch_f32_total_ns", "batch_f32_uncertified_ns"] {
+        assert_eq!(count(metric, "skala"), 12, "{metric}");
+        assert_eq!(count(metric, "discriminant_f64"), 0, "{metric}");
+    }
     // discriminant_f64 has no batch form: scalar ratios only.
     assert_eq!(count("total_ns", "discriminant_f64"), 8);
     assert_eq!(count("batch_total_ns", "discriminant_f64"), 0);
@@ -273,4 +279,118 @@ fn mode_both_adds_batch_ratios_at_the_chosen_isa() {
         "{err}"
     );
     assert!(!b.exists());
+}
+
+/// Issue 19: `--mode both` times the certified f32 wavefront and the uncertified one
+/// beside the f64 wavefront; its records say `"precision": "f32"` and carry the
+/// escalation rate, the headline f32 / f64 ratio shows in the console, and `compare`
+/// never pairs an f32 record with an f64 one.
+#[test]
+fn mode_both_times_the_f32_wavefront_with_escalation_rates() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let a = dir.path().join("a.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        &workload,
+        "--seconds",
+        "1",
+        "--culls",
+        "none,discriminant",
+        "--mode",
+        "both",
+        "--out",
+        a.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    for title in [
+        "uniform: batch f32 total (certified f32 wavefront) / the same cull's f64 wavefront, \
+         paired ratio [95% CI]",
+        "uniform: batch f32 total, uncertified (no proof) / cychosz",
+        "uniform: certified f32 wavefront, rays escalated to f64 / rays",
+    ] {
+        assert!(stdout.contains(title), "missing '{title}' in: {stdout}");
+    }
+
+    let r = Results::load(&a).unwrap();
+    let f32: Vec<_> = r.ratio.iter().filter(|x| x.precision == "f32").collect();
+    // Per case × ν (2 × 2), both f32 metrics: none against cychosz and f64, discriminant
+    // against cychosz, none and f64.
+    assert_eq!(f32.len(), 4 * 2 * (2 + 3));
+    for x in &f32 {
+        assert!(x.metric.starts_with("batch_f32_"), "{x:?}");
+        assert_eq!(x.device, "cpu");
+        let e = x.escalation_rate.expect("every f32 record has its rate");
+        assert!((0.0..=1.0).contains(&e), "{x:?}");
+        assert!(x.ratio.is_finite() && x.ratio > 0.0, "{x:?}");
+    }
+    for x in r.ratio.iter().filter(|x| x.precision != "f32") {
+        assert_eq!(x.precision, "f64", "{x:?}");
+        assert!(
+            !x.metric.contains("f32") && x.escalation_rate.is_none(),
+            "{x:?}"
+        );
+    }
+    // The headline: each cull's f32 wavefront against its own f64 wavefront, whose time
+    // is the f64 record's in the same rounds.
+    for case in ["hole", "uniform"] {
+        for nu in [2.0, 8.0] {
+            let find = |metric: &str, reference: &str| {
+                r.ratio
+                    .iter()
+                    .find(|x| {
+                        (x.case.as_str(), x.nu, x.cull.as_str(), x.metric.as_str())
+                            == (case, nu, "discriminant", metric)
+                            && x.reference == reference
+                    })
+                    .unwrap_or_else(|| panic!("{case} {nu} {metric}/{reference}"))
+            };
+            let headline = find("batch_f32_total_ns", "f64");
+            assert_eq!(
+                headline.reference_ns_per_ray,
+                find("batch_total_ns", "none").ns_per_ray
+            );
+        }
+    }
+    // Hole rays are all misses that discriminant rejects: nothing reaches the f32 solve.
+    assert!(
+        r.ratio
+            .iter()
+            .filter(|x| x.case == "hole" && x.cull == "discriminant" && x.precision == "f32")
+            .all(|x| x.escalation_rate.unwrap() < 0.01)
+    );
+
+    // compare: the f32 records pair with themselves under their own keys ...
+    let o = torus_cull(&["compare", a.to_str().unwrap(), a.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{stdout}");
+    assert!(
+        stdout.contains("uniform 8 discriminant/f64 batch_f32_total_ns [f32]"),
+        "{stdout}"
+    );
+    // ... and never with an f64 record: relabelled f64, the same records match nothing.
+    let mut as_f64 = r.clone();
+    as_f64.ratio.retain(|x| x.precision == "f32");
+    for x in &mut as_f64.ratio {
+        x.precision = "f64".into();
+        x.escalation_rate = None;
+    }
+    let mut only_f32 = r.clone();
+    only_f32.ratio.retain(|x| x.precision == "f32");
+    let (b, c) = (dir.path().join("b.json"), dir.path().join("c.json"));
+    as_f64.save(&b).unwrap();
+    only_f32.save(&c).unwrap();
+    let o = torus_cull(&[
+        "compare",
+        b.to_str().unwrap(),
+        c.to_str().unwrap(),
+        "--allow-missing",
+    ]);
+    let text =
+        String::from_utf8_lossy(&o.stdout).into_owned() + &String::from_utf8_lossy(&o.stderr);
+    // No record in common: a vacuous comparison, refused.
+    assert_eq!(o.status.code(), Some(2), "{text}");
+    assert!(text.contains("share no record"), "{text}");
 }

@@ -44,9 +44,11 @@ pub struct TimeArgs {
     #[arg(long)]
     out: Option<PathBuf>,
     /// `scalar`: one ray at a time (`total_ns`, `cull_ns`); `both`: also the batch mode
-    /// (`batch_total_ns`, `batch_cull_ns`: SIMD cull and wavefront) in the same rounds,
-    /// for the culls with a batch form, at the instruction set `TORUS_CULL_ISA` names
-    /// (default: the best this CPU has).
+    /// (`batch_total_ns`, `batch_cull_ns`: SIMD cull and wavefront; `batch_f32_total_ns`
+    /// and `batch_f32_uncertified_ns`: the certified f32 wavefront and the same without
+    /// its proof, also against the cull's f64 wavefront, with escalation rates) in the
+    /// same rounds, for the culls with a batch form, at the instruction set
+    /// `TORUS_CULL_ISA` names (default: the best this CPU has).
     #[arg(long, value_enum, default_value_t = Mode::Scalar)]
     mode: Mode,
 }

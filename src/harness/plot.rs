@@ -1,7 +1,10 @@
 //! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
 //! against ν.
 
-use crate::harness::results::{BvhRecord, RatioRecord, RejectionRecord, Results, TimingRecord};
+use crate::harness::results::{
+    BvhRecord, CPU_DEVICE, F64_PRECISION, F64_REFERENCE, RatioRecord, RejectionRecord, Results,
+    TimingRecord,
+};
 use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -311,16 +314,22 @@ pub fn plot_results(
         let Some(first) = results.ratio.iter().find(|r| r.group() == group) else {
             continue;
         };
-        let what = if first.metric == "cull_ns" {
-            "cull alone"
+        let what = match first.metric.as_str() {
+            "cull_ns" | "batch_cull_ns" => "cull alone",
+            "batch_f32_total_ns" => "certified f32 wavefront",
+            "batch_f32_uncertified_ns" => "uncertified f32 wavefront",
+            _ => "cull + exact intersection",
+        };
+        let reference = if first.reference == F64_REFERENCE {
+            "the same cull's f64 wavefront"
         } else {
-            "cull + exact intersection"
+            first.reference.as_str()
         };
         chart(
             format!("ratio-{group}"),
             format!(
-                "{}: {what} / {}, paired ratio [95% CI]",
-                first.case, first.reference
+                "{}: {what} / {reference}, paired ratio [95% CI]",
+                first.case
             ),
             &format!("t(cull) / t({}), below 1 faster", first.reference),
             ratios,
@@ -377,11 +386,17 @@ impl Record for RejectionRecord {
 
 impl Record for TimingRecord {
     fn group(&self) -> String {
+        let mut group = self.case.clone();
         if self.is_batch() {
-            format!("{}-batch", self.case)
-        } else {
-            self.case.clone()
+            group += "-batch";
         }
+        if self.precision != F64_PRECISION {
+            group += &format!("-{}", self.precision);
+        }
+        if self.device != CPU_DEVICE {
+            group += &format!("-{}", self.device);
+        }
+        group
     }
     fn cull(&self) -> &str {
         &self.cull

@@ -1,6 +1,6 @@
 //! Plain-text tables of a results file, as `run` and `cargo bench` print them.
 
-use crate::harness::results::{Results, TimingRecord};
+use crate::harness::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord, Results, TimingRecord};
 use std::fmt::Write;
 
 /// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
@@ -86,12 +86,12 @@ pub fn miss_capture_tables(results: &Results) -> String {
     )
 }
 
-/// The scalar-mode timing records (one ray at a time).
+/// The scalar-mode timing records (one ray at a time, f64).
 fn scalar_timings(results: &Results) -> Vec<TimingRecord> {
     results
         .timing
         .iter()
-        .filter(|r| !r.is_batch())
+        .filter(|r| !r.is_batch() && !r.is_f32())
         .cloned()
         .collect()
 }
@@ -133,9 +133,11 @@ pub fn bvh_tables(results: &Results) -> String {
 
 /// Paired ratios per case, metric and reference (rows ν, columns culls): the median
 /// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval. Below 1 the cull
-/// is faster than the reference.
+/// is faster than the reference. The f32 wavefront's ratios against the same cull's f64
+/// wavefront (reference `f64`) are the f32 / f64 speed ratio; after them, the f32
+/// path's escalation rates.
 pub fn ratio_tables(results: &Results) -> String {
-    let keyed: Vec<(String, &crate::harness::results::RatioRecord)> = results
+    let keyed: Vec<(String, &RatioRecord)> = results
         .ratio
         .iter()
         .map(|r| {
@@ -144,12 +146,24 @@ pub fn ratio_tables(results: &Results) -> String {
                 "cull_ns" => "cull alone",
                 "batch_total_ns" => "batch total (wavefront: SIMD cull + lane intersection)",
                 "batch_cull_ns" => "batch cull alone (SIMD)",
+                "batch_f32_total_ns" => "batch f32 total (certified f32 wavefront)",
+                "batch_f32_uncertified_ns" => "batch f32 total, uncertified (no proof)",
                 other => other,
             };
-            (format!("{}: {what} / {}", r.case, r.reference), r)
+            let device = if r.device == CPU_DEVICE {
+                String::new()
+            } else {
+                format!(" on {}", r.device)
+            };
+            let reference = if r.reference == F64_REFERENCE {
+                "the same cull's f64 wavefront"
+            } else {
+                r.reference.as_str()
+            };
+            (format!("{}: {what}{device} / {reference}", r.case), r)
         })
         .collect();
-    table(
+    let mut out = table(
         &keyed,
         |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
         |(_, r)| {
@@ -159,22 +173,45 @@ pub fn ratio_tables(results: &Results) -> String {
             )
         },
         |title| format!("{title}, paired ratio [95% CI]"),
-    )
+    );
+    // One escalation rate per cull and (case, ν): the certified records all carry it.
+    let escalation: Vec<&RatioRecord> = results
+        .ratio
+        .iter()
+        .filter(|r| r.metric == "batch_f32_total_ns" && r.reference == F64_REFERENCE)
+        .collect();
+    out += &table(
+        &escalation,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| {
+            r.escalation_rate
+                .map_or("-".into(), |e| format!("{:.3}%", 100.0 * e))
+        },
+        |case| format!("{case}: certified f32 wavefront, rays escalated to f64 / rays"),
+    );
+    out
 }
 
 /// Scalar against batch mode per case (rows ν, columns the culls timed both ways): each
 /// cell is `cull_ns scalar → batch | total_ns scalar → batch`, ns per ray. Empty when the
 /// file has no batch records.
 pub fn scalar_vs_batch_tables(results: &Results) -> String {
+    let f64_cpu = |r: &TimingRecord| !r.is_f32() && r.device == CPU_DEVICE;
     let pairs: Vec<(&TimingRecord, &TimingRecord)> = results
         .timing
         .iter()
-        .filter(|b| b.is_batch())
+        .filter(|b| b.is_batch() && f64_cpu(b))
         .filter_map(|b| {
             results
                 .timing
                 .iter()
-                .find(|s| !s.is_batch() && s.case == b.case && s.nu == b.nu && s.cull == b.cull)
+                .find(|s| {
+                    !s.is_batch()
+                        && f64_cpu(s)
+                        && s.case == b.case
+                        && s.nu == b.nu
+                        && s.cull == b.cull
+                })
                 .map(|s| (s, b))
         })
         .collect();

@@ -221,6 +221,18 @@ pub struct TimingRecord {
     /// without it is scalar, so older files still load.
     #[serde(default = "scalar_mode")]
     pub mode: String,
+    /// The exact intersection's precision: `f64`, or `f32` for the certified f32
+    /// wavefront ([`crate::batch::Wavefront::intersect_f32`]); a record without it is
+    /// f64, so older files still load.
+    #[serde(default = "f64_precision")]
+    pub precision: String,
+    /// Where it ran: `cpu` (the only device so far); a record without it ran on the CPU.
+    #[serde(default = "cpu_device")]
+    pub device: String,
+    /// On an f32 record: the rays the f32 path could not prove and gave to the f64
+    /// solver, over the batch's rays (one untimed pass); absent on f64 records.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub escalation_rate: Option<f64>,
 }
 
 impl TimingRecord {
@@ -229,13 +241,29 @@ impl TimingRecord {
         self.mode == BATCH_MODE
     }
 
-    /// The cull name, with ` (batch)` appended for a batch record: what tables and
-    /// comparisons key on, so the two modes never pair with each other.
+    /// Whether this record times the f32 path.
+    pub fn is_f32(&self) -> bool {
+        self.precision == F32_PRECISION
+    }
+
+    /// The cull name, with ` (batch)` appended for a batch record (` (batch f32)` for
+    /// the f32 wavefront, and the device when it is not the CPU): what tables and
+    /// comparisons key on, so modes, precisions and devices never pair with each other.
     pub fn label(&self) -> String {
+        let mut tags: Vec<&str> = Vec::new();
         if self.is_batch() {
-            format!("{} (batch)", self.cull)
-        } else {
+            tags.push("batch");
+        }
+        if self.precision != F64_PRECISION {
+            tags.push(&self.precision);
+        }
+        if self.device != CPU_DEVICE {
+            tags.push(&self.device);
+        }
+        if tags.is_empty() {
             self.cull.clone()
+        } else {
+            format!("{} ({})", self.cull, tags.join(" "))
         }
     }
 }
@@ -249,6 +277,26 @@ fn scalar_mode() -> String {
     SCALAR_MODE.into()
 }
 
+/// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the f64 paths (what a
+/// record without the field means).
+pub const F64_PRECISION: &str = "f64";
+/// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the certified f32 path.
+pub const F32_PRECISION: &str = "f32";
+/// [`TimingRecord::device`] and [`RatioRecord::device`] of CPU timings (what a record
+/// without the field means).
+pub const CPU_DEVICE: &str = "cpu";
+/// [`RatioRecord::reference`] of the headline f32 ratio: the same cull's f64 wavefront
+/// (metric `batch_total_ns`) in the same rounds, so the ratio is t(f32) / t(f64).
+pub const F64_REFERENCE: &str = "f64";
+
+fn f64_precision() -> String {
+    F64_PRECISION.into()
+}
+
+fn cpu_device() -> String {
+    CPU_DEVICE.into()
+}
+
 /// One cull timed against a reference in the same interleaved rounds (see
 /// [`crate::harness::paired`]): the median of the per-round ratios `t(cull) / t(reference)`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -259,9 +307,14 @@ pub struct RatioRecord {
     pub nu: f64,
     /// Cull name.
     pub cull: String,
-    /// The cull it is timed against (`cychosz` or `none`).
+    /// The cull it is timed against (`cychosz` or `none`, under the same metric), or
+    /// [`F64_REFERENCE`] (`f64`): the same cull's f64 wavefront (`batch_total_ns`), for
+    /// the f32 metrics.
     pub reference: String,
-    /// `total_ns` (cull + exact intersection when kept) or `cull_ns` (the cull alone).
+    /// `total_ns` (cull + exact intersection when kept), `cull_ns` (the cull alone), their
+    /// batch forms `batch_total_ns` and `batch_cull_ns`, or the f32 wavefront's
+    /// `batch_f32_total_ns` (certified) and `batch_f32_uncertified_ns` (no proof: what
+    /// the proof costs); see [`crate::harness::paired::Metric`].
     pub metric: String,
     /// Median per-round t(cull) / t(reference): below 1 the cull is faster.
     pub ratio: f64,
@@ -278,6 +331,25 @@ pub struct RatioRecord {
     pub ns_per_ray: f64,
     /// The reference's median ns per ray over the same rounds.
     pub reference_ns_per_ray: f64,
+    /// The cull's exact intersection: `f64`, or `f32` for the f32 wavefront metrics; a
+    /// record without it is f64, so older files still load.
+    #[serde(default = "f64_precision")]
+    pub precision: String,
+    /// Where it ran: `cpu`; a record without it ran on the CPU.
+    #[serde(default = "cpu_device")]
+    pub device: String,
+    /// On every f32 record: the rays of this cull's f32 pass that were not proved and
+    /// went to the f64 solver, over the batch's rays (escalated / rays, from one untimed
+    /// pass on the same (case, ν) batch); absent on f64 records.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub escalation_rate: Option<f64>,
+}
+
+impl RatioRecord {
+    /// Whether this record times the f32 path.
+    pub fn is_f32(&self) -> bool {
+        self.precision == F32_PRECISION
+    }
 }
 
 /// One cull inside an obvhs BVH over one many-torus scene.
@@ -523,12 +595,21 @@ mod tests {
         assert_eq!(r.mode, SCALAR_MODE);
         assert!(!r.is_batch());
         assert_eq!(r.label(), "skala");
+        assert_eq!((r.precision.as_str(), r.device.as_str()), ("f64", "cpu"));
+        assert!(!r.is_f32() && r.escalation_rate.is_none());
         let batch = TimingRecord {
             mode: BATCH_MODE.into(),
             ..r.clone()
         };
         assert!(batch.is_batch());
         assert_eq!(batch.label(), "skala (batch)");
+        let f32 = TimingRecord {
+            precision: F32_PRECISION.into(),
+            escalation_rate: Some(0.0),
+            ..batch.clone()
+        };
+        assert!(f32.is_f32());
+        assert_eq!(f32.label(), "skala (batch f32)");
         let text = serde_json::to_string(&batch).unwrap();
         assert!(text.contains(r#""mode":"batch""#), "{text}");
         let meta = r#"{"commit":null,"dirty":false,"created":"x","rustc":"r","cpu":"c",

@@ -24,7 +24,7 @@
 //! shared machine whatever the code does.
 
 use crate::harness::compare::{Report, Row, pair_up};
-use crate::harness::results::{RatioRecord, Results};
+use crate::harness::results::{CPU_DEVICE, F64_PRECISION, RatioRecord, Results};
 
 /// Adds one `ratio` row per record present in both files to `report`, and, when both
 /// files have ratios, demotes the criterion `timing` rows' regressions to notes.
@@ -48,11 +48,25 @@ pub fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &mut Rep
     }
 }
 
+/// `case ν cull/reference metric`, then ` [f32]` (and the device, when not the CPU) for
+/// records of another precision or device: f32 and f64 records never pair, while the
+/// keys of f64 CPU records stay what they were before those fields existed.
 fn ratio_key(r: &RatioRecord) -> String {
-    format!(
+    let mut key = format!(
         "{} {} {}/{} {}",
         r.case, r.nu, r.cull, r.reference, r.metric
-    )
+    );
+    let mut tags: Vec<&str> = Vec::new();
+    if r.precision != F64_PRECISION {
+        tags.push(&r.precision);
+    }
+    if r.device != CPU_DEVICE {
+        tags.push(&r.device);
+    }
+    if !tags.is_empty() {
+        key += &format!(" [{}]", tags.join(" "));
+    }
+    key
 }
 
 fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> Row {
@@ -139,6 +153,9 @@ mod tests {
             rays: 1024,
             ns_per_ray: 100.0 * ratio,
             reference_ns_per_ray: 100.0,
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
         }
     }
 
@@ -156,6 +173,9 @@ mod tests {
             ideal_total_ns_at_hit_cost: None,
             source: "criterion".into(),
             mode: "scalar".into(),
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
         }
     }
 
@@ -297,6 +317,59 @@ mod tests {
             row("skala/cychosz").flags[0].contains("cychosz itself got faster"),
             "{:?}",
             row("skala/cychosz")
+        );
+    }
+
+    /// An f32 record never pairs with the f64 record of the same cull, reference and
+    /// metric: one file's f32 ratios against another's f64 ones would be a 2× "change"
+    /// that is no change of code.
+    #[test]
+    fn f32_and_f64_ratios_never_pair() {
+        let f32 = |r: RatioRecord| RatioRecord {
+            metric: "batch_total_ns".into(),
+            precision: "f32".into(),
+            escalation_rate: Some(0.001),
+            ..r
+        };
+        let f64 = |r: RatioRecord| RatioRecord {
+            metric: "batch_total_ns".into(),
+            ..r
+        };
+        let old = results(vec![f64(record("skala", 0.80, [0.79, 0.81]))], Vec::new());
+        let new = results(
+            vec![
+                f32(record("skala", 0.40, [0.39, 0.41])),
+                f64(record("aabb", 0.80, [0.79, 0.81])),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        assert!(
+            !report.rows.iter().any(|r| r.section == "ratio"),
+            "{:#?}",
+            report.rows
+        );
+        assert_eq!(
+            report.only_old,
+            ["ratio uniform 2 skala/cychosz batch_total_ns"]
+        );
+        assert!(
+            report
+                .only_new
+                .iter()
+                .any(|k| k.ends_with("skala/cychosz batch_total_ns [f32]")),
+            "{:?}",
+            report.only_new
+        );
+        // f32 against f32 pairs, under its own key.
+        let report = compare(&new, &new, 0.10);
+        assert!(
+            report
+                .rows
+                .iter()
+                .any(|r| r.key == "uniform 2 skala/cychosz batch_total_ns [f32]"),
+            "{:#?}",
+            report.rows
         );
     }
 

@@ -27,29 +27,64 @@ pub enum Metric {
     /// [`Metric::CullNs`] in batch mode: [`crate::batch::cull_batch`] on
     /// structure-of-arrays lines.
     BatchCullNs,
+    /// [`Metric::BatchTotalNs`] through the certified f32 path
+    /// ([`crate::batch::Wavefront::intersect_f32`]): the kept rays solved and proved on
+    /// f32 lanes, the unproved ones escalated to the f64 solver.
+    BatchF32TotalNs,
+    /// The f32 wavefront without the proof
+    /// ([`crate::batch::Wavefront::intersect_f32_uncertified`]): not a usable answer, only
+    /// the yardstick of what the proof costs.
+    BatchF32UncertifiedNs,
 }
 
 impl Metric {
     /// The scalar (one ray at a time) metrics, in table order.
     pub const ALL: [Metric; 2] = [Metric::TotalNs, Metric::CullNs];
 
-    /// The batch-mode metrics, in table order.
-    pub const BATCH: [Metric; 2] = [Metric::BatchTotalNs, Metric::BatchCullNs];
+    /// The batch-mode metrics, in table order: the f64 wavefront and SIMD cull, then the
+    /// f32 wavefront, certified and not.
+    pub const BATCH: [Metric; 4] = [
+        Metric::BatchTotalNs,
+        Metric::BatchCullNs,
+        Metric::BatchF32TotalNs,
+        Metric::BatchF32UncertifiedNs,
+    ];
 
-    /// The stable name used in results: `total_ns`, `cull_ns`, `batch_total_ns` or
-    /// `batch_cull_ns`.
+    /// The stable name used in results: `total_ns`, `cull_ns`, `batch_total_ns`,
+    /// `batch_cull_ns`, `batch_f32_total_ns` or `batch_f32_uncertified_ns`.
     pub fn name(self) -> &'static str {
         match self {
             Metric::TotalNs => "total_ns",
             Metric::CullNs => "cull_ns",
             Metric::BatchTotalNs => "batch_total_ns",
             Metric::BatchCullNs => "batch_cull_ns",
+            Metric::BatchF32TotalNs => "batch_f32_total_ns",
+            Metric::BatchF32UncertifiedNs => "batch_f32_uncertified_ns",
         }
     }
 
     /// Whether this times the batch mode.
     pub fn is_batch(self) -> bool {
-        matches!(self, Metric::BatchTotalNs | Metric::BatchCullNs)
+        !matches!(self, Metric::TotalNs | Metric::CullNs)
+    }
+
+    /// Whether this times the f32 wavefront (certified or not).
+    pub fn is_f32(self) -> bool {
+        matches!(
+            self,
+            Metric::BatchF32TotalNs | Metric::BatchF32UncertifiedNs
+        )
+    }
+
+    /// The exact intersection's precision, as results record it: `f32` for the f32
+    /// wavefront, `f64` otherwise (the cull-alone metrics run no intersection, and are
+    /// recorded as `f64`, what a record without the field means).
+    pub fn precision(self) -> &'static str {
+        if self.is_f32() {
+            crate::harness::results::F32_PRECISION
+        } else {
+            crate::harness::results::F64_PRECISION
+        }
     }
 
     /// Whether `cull` can be timed under this metric (batch metrics need a batch form).
@@ -140,27 +175,64 @@ fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usiz
         .expect("a batch metric needs Workset::with_batch");
     let mut scratch = batch.scratch.borrow_mut();
     let (wavefront, hits, keep) = &mut *scratch;
+    let d = &batch.dispatch;
     let start = Instant::now();
     for _ in 0..reps {
-        if metric == Metric::BatchTotalNs {
-            let rays = black_box(set.rays);
-            wavefront
-                .intersect(&batch.dispatch, cull, set.torus, &set.bounds, rays, hits)
-                .expect("a cull with a batch form");
-            black_box(&hits);
-        } else {
-            cull_batch(
-                &batch.dispatch,
-                cull,
-                &set.bounds,
-                black_box(&batch.soa),
-                keep,
-            )
-            .expect("a cull with a batch form");
-            black_box(&keep);
+        // Opaque per pass, so no work is hoisted out of the repetitions.
+        let rays = || black_box(set.rays);
+        match metric {
+            Metric::BatchTotalNs => {
+                wavefront
+                    .intersect(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .expect("a cull with a batch form");
+                black_box(&hits);
+            }
+            Metric::BatchF32TotalNs => {
+                wavefront
+                    .intersect_f32(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .expect("a cull with a batch form");
+                black_box(&hits);
+            }
+            Metric::BatchF32UncertifiedNs => {
+                wavefront
+                    .intersect_f32_uncertified(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .expect("a cull with a batch form");
+                black_box(&hits);
+            }
+            Metric::BatchCullNs => {
+                cull_batch(d, cull, &set.bounds, black_box(&batch.soa), keep)
+                    .expect("a cull with a batch form");
+                black_box(&keep);
+            }
+            Metric::TotalNs | Metric::CullNs => unreachable!("scalar metrics are timed by Pass"),
         }
     }
     start.elapsed()
+}
+
+/// The f32 metrics' escalation rate for `cull` on the batch: rays the f32 pass of
+/// `metric` did not prove (answered by the f64 solver) over the batch's rays, from one
+/// untimed pass; `None` for the f64 metrics.
+///
+/// Panics as [`time_pass`] does.
+pub fn escalation_rate(cull: CullKind, metric: Metric, set: &Workset<'_>) -> Option<f64> {
+    if !metric.is_f32() {
+        return None;
+    }
+    let batch = set
+        .batch
+        .as_ref()
+        .expect("a batch metric needs Workset::with_batch");
+    let mut scratch = batch.scratch.borrow_mut();
+    let (wavefront, hits, _) = &mut *scratch;
+    let (d, torus, bounds) = (&batch.dispatch, set.torus, &set.bounds);
+    let stats = if metric == Metric::BatchF32TotalNs {
+        wavefront.intersect_f32(d, cull, torus, bounds, set.rays, hits)
+    } else {
+        wavefront.intersect_f32_uncertified(d, cull, torus, bounds, set.rays, hits)
+    }
+    .expect("a cull with a batch form");
+    Some(stats.escalated as f64 / stats.rays.max(1) as f64)
 }
 
 struct Pass<'s, 'a> {
@@ -198,7 +270,10 @@ impl CullVisitor for Pass<'_, '_> {
                     }
                 }
             }
-            Metric::BatchTotalNs | Metric::BatchCullNs => {
+            Metric::BatchTotalNs
+            | Metric::BatchCullNs
+            | Metric::BatchF32TotalNs
+            | Metric::BatchF32UncertifiedNs => {
                 unreachable!("batch metrics are timed by time_batch_pass")
             }
         }

@@ -1,10 +1,10 @@
 //! The driver: paired ratio records for every (case, ν) of a workload, or for one batch.
 
-use super::contender::{Metric, Workset, time_pass};
+use super::contender::{Metric, Workset, escalation_rate, time_pass};
 use super::engine::Interleaver;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use crate::batch::{Dispatch, Isa};
-use crate::harness::results::RatioRecord;
+use crate::harness::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord};
 use crate::harness::workload::spec::Workload;
 use crate::harness::workload::{Case, GenerateError, generate};
 use crate::{CullKind, Ray, Torus};
@@ -37,7 +37,8 @@ pub struct PairedOptions {
     pub visit: Duration,
     /// At least this many measured rounds per (case, ν), whatever the budget.
     pub min_rounds: usize,
-    /// Also time the batch metrics (`batch_total_ns`, `batch_cull_ns`, for the culls
+    /// Also time the batch metrics (`batch_total_ns`, `batch_cull_ns`, and the f32
+    /// wavefront's `batch_f32_total_ns` and `batch_f32_uncertified_ns`, for the culls
     /// with a batch form) at this instruction set, in the same rounds as the scalar ones.
     pub batch_isa: Option<Isa>,
 }
@@ -127,7 +128,10 @@ struct Timed<'a> {
 impl Timed<'_> {
     fn reps(&self, metric: Metric) -> usize {
         match metric {
-            Metric::TotalNs | Metric::BatchTotalNs => 1,
+            Metric::TotalNs
+            | Metric::BatchTotalNs
+            | Metric::BatchF32TotalNs
+            | Metric::BatchF32UncertifiedNs => 1,
             Metric::CullNs => self.cull_reps,
             Metric::BatchCullNs => self.batch_cull_reps,
         }
@@ -139,9 +143,11 @@ impl Timed<'_> {
     }
 }
 
-/// Ratio records of `culls` against each of [`REFERENCES`] for both metrics, on each of
-/// `units`. The references are timed whether listed or not; a cull is not timed against
-/// itself. The units are visited in turn, in a shuffled order, until the budget is
+/// Ratio records of `culls` against each of [`REFERENCES`] for every metric, on each of
+/// `units`; with a batch level, the f32 wavefront metrics also against the same cull's
+/// f64 wavefront (reference [`F64_REFERENCE`]), with each f32 record's escalation rate
+/// from one untimed pass. The references are timed whether listed or not; a cull is not
+/// timed against itself. The units are visited in turn, in a shuffled order, until the budget is
 /// spent, so that each one's rounds spread over the whole run. `progress` is told
 /// (visits done, visits in all).
 pub fn time_units(
@@ -246,15 +252,24 @@ pub fn time_units(
                 .iter()
                 .filter(|&&k| culls.contains(&k) && metric.covers(k))
             {
-                for reference in REFERENCES
-                    .into_iter()
-                    .filter(|&r| r != cull && metric.covers(r))
-                {
+                let escalation = escalation_rate(cull, metric, &t.set);
+                // The references under the same metric, then, for the f32 metrics, the
+                // same cull's f64 wavefront: the headline f32 / f64 ratio.
+                let against: Vec<(String, usize)> =
+                    REFERENCES
+                        .into_iter()
+                        .filter(|&r| r != cull && metric.covers(r))
+                        .map(|r| (r.name().to_string(), index(r, metric)))
+                        .chain(metric.is_f32().then(|| {
+                            (F64_REFERENCE.to_string(), index(cull, Metric::BatchTotalNs))
+                        }))
+                        .collect();
+                for (reference, reference_index) in against {
                     let bootstrap_seed =
                         seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
                     let e = ratio_estimate(
                         &pick(index(cull, metric)),
-                        &pick(index(reference, metric)),
+                        &pick(reference_index),
                         work,
                         bootstrap_seed,
                     )
@@ -263,7 +278,7 @@ pub fn time_units(
                         case: case.name().to_string(),
                         nu,
                         cull: cull.name().to_string(),
-                        reference: reference.name().to_string(),
+                        reference,
                         metric: metric.name().to_string(),
                         ratio: e.ratio,
                         ratio_ci: e.ratio_ci,
@@ -272,6 +287,9 @@ pub fn time_units(
                         rays: t.set.len() as u64,
                         ns_per_ray: e.ns_per_ray,
                         reference_ns_per_ray: e.reference_ns_per_ray,
+                        precision: metric.precision().to_string(),
+                        device: CPU_DEVICE.to_string(),
+                        escalation_rate: escalation,
                     });
                 }
             }
@@ -395,6 +413,34 @@ mod tests {
         for metric in ["batch_total_ns", "batch_cull_ns"] {
             assert_eq!(count(metric, "skala"), 2);
             assert_eq!(count(metric, "discriminant_f64"), 0);
+        }
+        // The f32 wavefront, certified and not: against both references and against
+        // skala's own f64 wavefront; every f32 record has its escalation rate.
+        for metric in ["batch_f32_total_ns", "batch_f32_uncertified_ns"] {
+            assert_eq!(count(metric, "skala"), 3);
+            assert_eq!(count(metric, "discriminant_f64"), 0);
+            let vs_f64 = r
+                .iter()
+                .find(|x| x.metric == metric && x.cull == "skala" && x.reference == "f64")
+                .unwrap();
+            // Its reference is skala's own f64 wavefront, in the same rounds.
+            let f64_total = r
+                .iter()
+                .find(|x| x.metric == "batch_total_ns" && x.cull == "skala")
+                .unwrap();
+            assert_eq!(
+                vs_f64.reference_ns_per_ray, f64_total.ns_per_ray,
+                "{vs_f64:?}"
+            );
+        }
+        for x in &r {
+            let f32 = x.metric.starts_with("batch_f32_");
+            assert_eq!(x.precision, if f32 { "f32" } else { "f64" }, "{x:?}");
+            assert_eq!(x.device, "cpu");
+            match x.escalation_rate {
+                Some(e) => assert!(f32 && (0.0..=1.0).contains(&e), "{x:?}"),
+                None => assert!(!f32, "{x:?}"),
+            }
         }
         // On hole lines the batch skala skips the lane solver for almost every ray.
         let skala = r
