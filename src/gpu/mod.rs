@@ -1,0 +1,494 @@
+//! The certified f32 intersection as a WGSL compute kernel, on any Vulkan, Metal or DX12
+//! adapter through wgpu (Mesa's software Vulkan, lavapipe, included). Feature `gpu`.
+//!
+//! One dispatch runs, per ray: the world → torus-frame transform (f32), the line
+//! re-parameterised at its foot point and scaled by 1/R, a cull ([`GpuCull`]), the f64
+//! solver's method in f32 (depressed quartic, the resolvent's greatest root, Ferrari's
+//! split), and the certificate of [`crate::certified`]: a hit is a proved sign change of
+//! the signed distance within 9·10⁻⁵·R of the reported root, with F > 0 proved before it;
+//! a miss is F > 0 proved over the whole range (or a cull's rejection). Everything else
+//! comes back [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] hands
+//! those rays to the f64 solver ([`crate::intersect()`]) on the host.
+//!
+//! **The GPU's error bounds.** WGSL may or may not contract `a·b + c` into an fma,
+//! division is good to 2.5 ulp, `sqrt` is not correctly rounded on every device and
+//! subnormals may flush; so every rounding term of the certificate (in u = 2⁻²⁴) is taken
+//! four times larger than on the CPU, and the line's own error is the one of an f32
+//! transform: the foot point stands within about 20u·|o − c| of the true line, and the
+//! unit direction within about 20u, which the kernel doubles (`line_abs`, `line_rel` in
+//! `kernel.wgsl`). That error grows with the origin's distance: origins beyond a few
+//! tens of R from the centre get their hits escalated (misses far from the torus are
+//! still proved), and a reported `t` must also be within 1.9·10⁻⁴·(R + r) of the true
+//! first root once the foot point's and the division's errors are added, or the ray
+//! escalates. The CPU path ([`crate::intersect_f32_certified`]) forms the line in f64 and
+//! escalates less.
+//!
+//! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
+//! when the adapter is the CPU (lavapipe reports device type `Cpu`).
+//!
+//! ```no_run
+//! use torus_cull::gpu::{GpuCull, GpuIntersector};
+//! use torus_cull::{Ray, Torus};
+//! use glam::Vec3;
+//! let gpu = GpuIntersector::new()?;
+//! println!("{} ({:?})", gpu.adapter_name(), gpu.device_type());
+//! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+//! let rays = [Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y)?];
+//! let verdicts = gpu.intersect(&torus, GpuCull::Cychosz, &rays)?;
+//! let finished = gpu.intersect_finished(&torus, GpuCull::Cychosz, &rays)?;
+//! assert!(finished[0].hit.is_some());
+//! # let _ = verdicts;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use crate::certified::{F32Hit, F32Verdict};
+use crate::intersect::Hit;
+use crate::{Ray, Torus, intersect};
+use glam::Vec3;
+use std::fmt;
+use std::sync::mpsc;
+
+/// The kernel's source (WGSL).
+pub const KERNEL_WGSL: &str = include_str!("kernel.wgsl");
+
+/// The Debian package that gives a machine without a GPU a software Vulkan adapter.
+pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
+
+/// The cull the kernel runs before the intersection (a rejected ray is a miss).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum GpuCull {
+    /// No cull: every ray goes to the certified intersection.
+    None,
+    /// Cychosz's bounding sphere R + r plus the slab |y| ≤ r ([`crate::CychoszCull`]),
+    /// with the culls' margin 2⁻¹²·(R + r) plus the kernel's line error.
+    Cychosz,
+}
+
+impl GpuCull {
+    /// Both, in a fixed order.
+    pub const ALL: [GpuCull; 2] = [GpuCull::None, GpuCull::Cychosz];
+
+    /// The stable name (as [`crate::CullKind`]'s).
+    pub fn name(self) -> &'static str {
+        match self {
+            GpuCull::None => "none",
+            GpuCull::Cychosz => "cychosz",
+        }
+    }
+
+    fn code(self) -> u32 {
+        match self {
+            GpuCull::None => 0,
+            GpuCull::Cychosz => 1,
+        }
+    }
+}
+
+impl fmt::Display for GpuCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Why the GPU path could not run.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum GpuError {
+    /// No adapter (no Vulkan, Metal or DX12 device, and no software Vulkan).
+    NoAdapter(String),
+    /// The adapter refused a device.
+    RequestDevice(String),
+    /// Reading the results back failed.
+    Readback(String),
+}
+
+impl fmt::Display for GpuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GpuError::NoAdapter(why) => write!(
+                f,
+                "no GPU adapter ({why}); on a machine without a GPU install the Debian \
+                 package {SOFTWARE_VULKAN_PACKAGE} (Mesa's software Vulkan, lavapipe)"
+            ),
+            GpuError::RequestDevice(why) => write!(f, "the GPU adapter refused a device: {why}"),
+            GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for GpuError {}
+
+/// Rays per dispatch: 32 bytes in and 32 out each, 32 MiB per buffer (within WebGPU's
+/// downlevel limit of 128 MiB per storage binding and 65 535 workgroups of 64).
+const CHUNK: usize = 1 << 20;
+
+/// Threads per workgroup (`@workgroup_size` in the kernel).
+const WORKGROUP: usize = 64;
+
+/// Bytes per ray, in and out: two `vec4<f32>` each.
+const RAY_BYTES: u64 = 32;
+
+/// Size of the uniform block (`Params` in the kernel): five 16-byte rows.
+const PARAMS_BYTES: u64 = 80;
+
+/// Origins farther than this many R from the centre are not sent as they are: the
+/// kernel could not certify a hit from there, and its f32 sums could overflow.
+const FAR_REL: f64 = 1_048_576.0;
+
+/// A wgpu device with the kernel compiled, ready for batches of rays.
+pub struct GpuIntersector {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    info: wgpu::AdapterInfo,
+}
+
+impl fmt::Debug for GpuIntersector {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("GpuIntersector")
+            .field("adapter", &self.info.name)
+            .field("device_type", &self.info.device_type)
+            .field("backend", &self.info.backend)
+            .finish_non_exhaustive()
+    }
+}
+
+impl GpuIntersector {
+    /// The first adapter wgpu offers (high-performance preferred; the backends from the
+    /// environment, `WGPU_BACKEND`), a device on it and the kernel compiled.
+    pub fn new() -> Result<GpuIntersector, GpuError> {
+        pollster::block_on(Self::new_async())
+    }
+
+    async fn new_async() -> Result<GpuIntersector, GpuError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let info = adapter.get_info();
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("torus-cull"),
+                required_limits: wgpu::Limits::downlevel_defaults(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| GpuError::RequestDevice(e.to_string()))?;
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("torus-cull kernel"),
+            source: wgpu::ShaderSource::Wgsl(KERNEL_WGSL.into()),
+        });
+        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("torus-cull bindings"),
+            entries: &[
+                entry(0, wgpu::BufferBindingType::Uniform),
+                entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
+                entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("torus-cull layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("torus-cull pipeline"),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some("main"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        Ok(GpuIntersector {
+            device,
+            queue,
+            pipeline,
+            layout,
+            info,
+        })
+    }
+
+    /// The adapter's name (lavapipe: `llvmpipe (LLVM …)`).
+    pub fn adapter_name(&self) -> &str {
+        &self.info.name
+    }
+
+    /// The adapter's device type (lavapipe: `Cpu`).
+    pub fn device_type(&self) -> wgpu::DeviceType {
+        self.info.device_type
+    }
+
+    /// The adapter's backend (Vulkan, Metal, DX12, …).
+    pub fn backend(&self) -> wgpu::Backend {
+        self.info.backend
+    }
+
+    /// The adapter runs on the CPU (a software rasteriser such as lavapipe): its timings
+    /// say nothing about a GPU.
+    pub fn is_software(&self) -> bool {
+        self.info.device_type == wgpu::DeviceType::Cpu
+    }
+
+    /// The certified f32 verdict of every ray on `torus` behind `cull`, from the kernel:
+    /// a proved hit (t and the world normal), a proved miss, or
+    /// [`F32Verdict::Escalate`].
+    pub fn intersect(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<F32Verdict>, GpuError> {
+        let mut out = Vec::with_capacity(rays.len());
+        if rays.is_empty() {
+            return Ok(out);
+        }
+        let chunk = rays.len().min(CHUNK);
+        let size = chunk as u64 * RAY_BYTES;
+        let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
+        let buffer = |label, size, usage| {
+            self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let params = buffer(
+            "torus-cull params",
+            PARAMS_BYTES,
+            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        );
+        let input = buffer("torus-cull rays", size, usage);
+        let output = buffer(
+            "torus-cull results",
+            size,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        );
+        let staging = buffer(
+            "torus-cull staging",
+            size,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("torus-cull bind group"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: params.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        });
+        let frame = Frame::of(torus);
+        let mut packed: Vec<f32> = Vec::with_capacity(chunk * 8);
+        for batch in rays.chunks(CHUNK) {
+            packed.clear();
+            let mut far = Vec::new();
+            for (i, ray) in batch.iter().enumerate() {
+                let (words, sendable) = frame.pack(ray);
+                packed.extend_from_slice(&words);
+                if !sendable {
+                    far.push(i);
+                }
+            }
+            self.queue
+                .write_buffer(&params, 0, &frame.params(batch.len() as u32, cull));
+            self.queue.write_buffer(&input, 0, &as_bytes(&packed));
+            let bytes = batch.len() as u64 * RAY_BYTES;
+            let mut encoder = self
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                    label: Some("torus-cull dispatch"),
+                });
+            {
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("torus-cull pass"),
+                    timestamp_writes: None,
+                });
+                pass.set_pipeline(&self.pipeline);
+                pass.set_bind_group(0, &bind_group, &[]);
+                pass.dispatch_workgroups(batch.len().div_ceil(WORKGROUP) as u32, 1, 1);
+            }
+            encoder.copy_buffer_to_buffer(&output, 0, &staging, 0, bytes);
+            self.queue.submit([encoder.finish()]);
+            let slice = staging.slice(..bytes);
+            let (tx, rx) = mpsc::channel();
+            slice.map_async(wgpu::MapMode::Read, move |r| {
+                let _ = tx.send(r);
+            });
+            self.device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .map_err(|e| GpuError::Readback(e.to_string()))?;
+            rx.recv()
+                .map_err(|e| GpuError::Readback(e.to_string()))?
+                .map_err(|e| GpuError::Readback(e.to_string()))?;
+            {
+                let view = slice
+                    .get_mapped_range()
+                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+                let start = out.len();
+                for record in view.chunks_exact(RAY_BYTES as usize) {
+                    let w: [f32; 8] = std::array::from_fn(|k| {
+                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+                    });
+                    out.push(verdict(w));
+                }
+                for i in far {
+                    out[start + i] = F32Verdict::Escalate;
+                }
+            }
+            staging.unmap();
+        }
+        Ok(out)
+    }
+
+    /// [`GpuIntersector::intersect`], finished on the host: every escalated ray is
+    /// answered by the f64 solver ([`crate::intersect()`]), so the hits and misses are
+    /// the f64 path's.
+    pub fn intersect_finished(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<F32Hit>, GpuError> {
+        let verdicts = self.intersect(torus, cull, rays)?;
+        Ok(verdicts
+            .into_iter()
+            .zip(rays)
+            .map(|(v, ray)| finish(v, torus, ray))
+            .collect())
+    }
+}
+
+/// One ray's answer: the GPU's verdict, or the f64 solver's where it escalated.
+fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
+    match verdict {
+        F32Verdict::Hit { t, normal } => F32Hit {
+            hit: Some(Hit { t, normal }),
+            escalated: false,
+        },
+        F32Verdict::Miss => F32Hit {
+            hit: None,
+            escalated: false,
+        },
+        F32Verdict::Escalate => F32Hit {
+            hit: intersect(torus, ray),
+            escalated: true,
+        },
+    }
+}
+
+/// A result record `(t, n.xyz, code, 0, 0, 0)` as a verdict; an unknown code escalates.
+fn verdict(w: [f32; 8]) -> F32Verdict {
+    let normal = Vec3::new(w[1], w[2], w[3]);
+    if w[4] == 0.0 {
+        F32Verdict::Miss
+    } else if w[4] == 1.0 && w[0].is_finite() && normal.is_finite() {
+        F32Verdict::Hit { t: w[0], normal }
+    } else {
+        F32Verdict::Escalate
+    }
+}
+
+/// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
+struct Frame {
+    rows: [Vec3; 3],
+    center: Vec3,
+    major: f32,
+    minor: f32,
+    center_f64: glam::DVec3,
+    major_f64: f64,
+    outer_f64: f64,
+}
+
+impl Frame {
+    fn of(torus: &Torus) -> Frame {
+        let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
+        Frame {
+            rows: [m.x_axis, m.y_axis, m.z_axis],
+            center: torus.center(),
+            major: torus.major_radius(),
+            minor: torus.minor_radius(),
+            center_f64: torus.center().as_dvec3(),
+            major_f64: f64::from(torus.major_radius()),
+            outer_f64: f64::from(torus.major_radius()) + f64::from(torus.minor_radius()),
+        }
+    }
+
+    /// The uniform block: rows of M with R, r, r/R; the centre with 1/R; the count and
+    /// the cull.
+    fn params(&self, count: u32, cull: GpuCull) -> Vec<u8> {
+        let rr = (f64::from(self.minor) / self.major_f64) as f32;
+        let inv_major = (1.0 / self.major_f64) as f32;
+        let floats: [f32; 16] = [
+            self.rows[0].x,
+            self.rows[0].y,
+            self.rows[0].z,
+            self.major,
+            self.rows[1].x,
+            self.rows[1].y,
+            self.rows[1].z,
+            self.minor,
+            self.rows[2].x,
+            self.rows[2].y,
+            self.rows[2].z,
+            rr,
+            self.center.x,
+            self.center.y,
+            self.center.z,
+            inv_major,
+        ];
+        let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
+        for f in floats {
+            bytes.extend_from_slice(&f.to_le_bytes());
+        }
+        for u in [count, cull.code(), 0, 0] {
+            bytes.extend_from_slice(&u.to_le_bytes());
+        }
+        bytes
+    }
+
+    /// A ray as the kernel reads it, `(o, t_min', d, t_max')`, with its range clipped to
+    /// `|t| ≤ T`, T = (|o − c| + 4(R + r))/|d| rounded up (no point beyond is within the
+    /// bounding sphere, so no root is lost, and the kernel's sums stay finite); and
+    /// whether the kernel can be trusted with it (origins within [`FAR_REL`]·R).
+    fn pack(&self, ray: &Ray) -> ([f32; 8], bool) {
+        let (o, d) = (ray.origin(), ray.dir());
+        let rel = o.as_dvec3() - self.center_f64;
+        let reach = (rel.length() + 4.0 * self.outer_f64) / d.as_dvec3().length();
+        let limit = (reach * (1.0 + 1e-6)).min(f64::from(f32::MAX)) as f32;
+        let t_min = ray.t_min().clamp(-limit, limit);
+        let t_max = ray.t_max().clamp(-limit, limit);
+        let sendable = rel.length() <= FAR_REL * self.major_f64;
+        ([o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max], sendable)
+    }
+}
+
+fn as_bytes(words: &[f32]) -> Vec<u8> {
+    words.iter().flat_map(|w| w.to_le_bytes()).collect()
+}
