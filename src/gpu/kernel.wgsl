@@ -30,7 +30,6 @@ struct Params {
 
 const U: f32 = 5.9604645e-8; // 2^-24, the unit roundoff of f32
 const G: f32 = 4.0; // the GPU's factor on every spec term in U
-const BRACKET: f32 = 9e-5; // half the bracket around a candidate root, units of R
 const SAFETY_REL: f32 = 0.000244140625; // 2^-12, the culls' margin (src/cull/bounds.rs)
 const BIG: f32 = 1e30; // "finite" below this (a check NaN fails too)
 const F64_EPS: f32 = 2.220446e-16; // the f64 solver's EPS, as its f32 lanes splat it
@@ -275,7 +274,9 @@ fn point_bound(l: Line, u: f32) -> PointBound {
     let e = rho - 1.0;
     let h = sqrt(e * e + p.y * p.y);
     let sdf = h - l.rr;
-    let sdf_err = eps_p + G * 8.0 * U * (rho + 1.0 + h + l.rr);
+    // As the CPU's (3U·(ρ + h) + U·(1 + 2rr) of rounding, bounded by 4U·(ρ + h) +
+    // 2U·(1 + rr)), times G: that also covers a sqrt good to 4.5 ulp only.
+    let sdf_err = eps_p + G * 4.0 * U * (rho + h) + G * 2.0 * U * (1.0 + l.rr);
     var b: PointBound;
     b.sdf_lo = sdf - sdf_err;
     b.sdf_hi = sdf + sdf_err;
@@ -306,15 +307,54 @@ fn convex_positive(alpha: f32, beta: f32, at_a: PointBound, at_b: PointBound) ->
     return both && (sa >= 0.0 || sb <= 0.0 || lhs > rhs);
 }
 
-// F > 0 on [lo, hi], proved (true for an empty interval).
-fn positive(l: Line, c2: f32, lo: f32, hi: f32) -> bool {
+// F's lowest point on a convex piece [alpha, beta], approximately (any point is sound, a
+// better one proves more): Newton on F′ = 4u³ + 2c2·u + c1 from the piece's outer end.
+fn lowest(c2: f32, c1: f32, start_at: f32, alpha: f32, beta: f32) -> f32 {
+    var u = start_at;
+    for (var i = 0; i < 5; i++) {
+        let slope = (4.0 * u * u + 2.0 * c2) * u + c1;
+        let curvature = 12.0 * u * u + 2.0 * c2;
+        let next = u - slope / select(1.0, curvature, curvature > 0.0);
+        u = select(u, next, curvature > 0.0 && finite(next));
+    }
+    return clamp(u, alpha, beta);
+}
+
+// F > 0 on the convex piece [alpha, beta], split at F's lowest point m: sdf(m) > s > 0
+// keeps the line outside the tube on [m − s, m + s] (sdf is 1-Lipschitz, d̂ a unit
+// vector up to the line's error, which sdf_lo includes); the tangents prove each side.
+fn convex_piece_positive(
+    l: Line,
+    c2: f32,
+    c1: f32,
+    start_at: f32,
+    alpha: f32,
+    at_a: PointBound,
+    beta: f32,
+    at_b: PointBound,
+) -> bool {
+    let m = lowest(c2, c1, start_at, alpha, beta);
+    let at_m = point_bound(l, m);
+    if (!(at_m.sdf_lo > 0.0)) {
+        return false;
+    }
+    // |d̂| may exceed 1 by 16.5U: the clearance shrinks by as much (and more).
+    let clear = at_m.sdf_lo * (1.0 - 64.0 * U);
+    let before = max(m - clear, alpha);
+    let after = min(m + clear, beta);
+    return convex_positive(alpha, before, at_a, point_bound(l, before))
+        && convex_positive(after, beta, point_bound(l, after), at_b);
+}
+
+// F > 0 on [lo, hi], proved (true for an empty interval): F″ = 12u² + 2c2 makes F convex
+// left of −w and right of w, concave (at most) between.
+fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
     if (hi < lo) {
         return true;
     }
     let w = sqrt(max((l.c2_err - c2) * ((1.0 + G * 8.0 * U) / 6.0), 0.0));
     let at_lo = point_bound(l, lo);
     let at_hi = point_bound(l, hi);
-    var ok = true;
     // Left convex piece [lo, min(hi, −w)].
     if (lo <= -w) {
         let end = min(hi, -w);
@@ -322,7 +362,9 @@ fn positive(l: Line, c2: f32, lo: f32, hi: f32) -> bool {
         if (hi > -w) {
             at_end = point_bound(l, -w);
         }
-        ok = ok && convex_positive(lo, end, at_lo, at_end);
+        if (!convex_piece_positive(l, c2, c1, lo, lo, at_lo, end, at_end)) {
+            return false;
+        }
     }
     // Right convex piece [max(lo, w), hi].
     if (w <= hi) {
@@ -331,7 +373,9 @@ fn positive(l: Line, c2: f32, lo: f32, hi: f32) -> bool {
         if (lo < w) {
             at_start = point_bound(l, w);
         }
-        ok = ok && convex_positive(start, hi, at_start, at_hi);
+        if (!convex_piece_positive(l, c2, c1, hi, start, at_start, hi, at_hi)) {
+            return false;
+        }
     }
     // Middle piece [max(lo, −w), min(hi, w)]: F″ ≤ 4·c2_err there.
     let alpha = max(lo, -w);
@@ -347,20 +391,27 @@ fn positive(l: Line, c2: f32, lo: f32, hi: f32) -> bool {
         }
         let span = beta - alpha;
         let sag = 0.5 * (1.0 + G * 8.0 * U) * l.c2_err * span * span;
-        ok = ok && f_alpha > 0.0 && f_beta > 0.0 && min(f_alpha, f_beta) > sag;
+        if (!(f_alpha > 0.0 && f_beta > 0.0 && min(f_alpha, f_beta) > sag)) {
+            return false;
+        }
     }
-    return ok;
+    return true;
 }
 
 struct Verdict {
     hit: vec4<f32>,
     code: f32,
+    // Which step escalated (1 non-finite line, 2 non-finite quartic or careful solver,
+    // 3 miss not proved, 4 empty bracket, 5 no sign change, 6 a root before the
+    // bracket not ruled out, 7 t error too large); 0 otherwise.
+    why: f32,
 };
 
-fn escalate() -> Verdict {
+fn escalate(why: u32) -> Verdict {
     var v: Verdict;
     v.hit = vec4<f32>(0.0);
     v.code = CODE_ESCALATE;
+    v.why = f32(why);
     return v;
 }
 
@@ -368,6 +419,7 @@ fn miss() -> Verdict {
     var v: Verdict;
     v.hit = vec4<f32>(0.0);
     v.code = CODE_MISS;
+    v.why = 0.0;
     return v;
 }
 
@@ -394,18 +446,28 @@ fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let q = foot * inv_major;
     let v_rel = length(v) * inv_major; // |o − c|/R
 
-    // The line's error (module docs of src/gpu/mod.rs): the foot point of the f32
-    // transform stands within ~20u·|o − c| of the true line, d̂ within ~20u of the true
-    // unit direction, and q's offset along the line is within ~25u·|q|; doubled.
-    let line_abs = 48.0 * U * v_rel + 64.0 * U;
-    let line_rel = 64.0 * U;
+    // The line's error: how far the computed point q + u·d̂ (before its own rounding) can
+    // stand from the true line's point at u, to first order in U (each step's worst case,
+    // fma contracted or not, sqrt to 4.5 ulp, division to 2.5 ulp):
+    // - o_l = M (o − c): o − c rounds by U·|v|, M's entries by U (√3·U·|v|), the dot
+    //   products by 3U·|v| per component (3√3·U·|v|): 7.9U·|v| in all; d_l likewise,
+    //   6.9U in angle;
+    // - d̂ = d_l·(1/|d_l|): the angle gains U, the length is 1 within 16.5U, so
+    //   |d̂ − d̂_true| ≤ 24.4U;
+    // - the foot point o_l − s·d̂: o_l's 7.9U·|v| across the line, plus |s| ≤ |v| times
+    //   d̂'s 7.9U of angle, plus U·|v| of rounding: 16.9U·|v| across; the re-projection
+    //   leaves q within 12U·|q| along the line of the true foot point, and 1/R adds 2U·|q|.
+    // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice.
+    let line_abs = 32.0 * U * v_rel + 32.0 * U;
+    let line_rel = 48.0 * U;
 
     let q_len_sq = dot(q, q);
     let q_len = sqrt(q_len_sq);
     let line_at_foot = line_rel * q_len + line_abs + G * 3.1 * U * q_len;
 
     // The range in u: lo = (t_min·|d| + s)/R, clamped to ±4 (every root has |u| < 2),
-    // with its error: s within ~30u·|o − c| of the true one, |d| within ~18u, roundings.
+    // with its error: s = o_l·d̂ within 35.3U·|o − c| of the true one (o_l's 7.9U·|v|,
+    // d̂'s 24.4U times |v|, 3U of rounding; taken 64U), |d| within 18U, the roundings.
     let tmin_d = ldexp(t_min, ex) * len;
     let tmax_d = ldexp(t_max, ex) * len;
     let lo_raw = (tmin_d + s) * inv_major;
@@ -421,7 +483,7 @@ fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let all_finite = finite(v_rel) && finite(q_len_sq) && finite(lo_raw) && finite(hi_raw)
         && finite(s) && len > 0.0 && finite(len);
     if (!all_finite) {
-        return escalate();
+        return escalate(1u);
     }
 
     // The cull, on the scaled line with its error folded into the margin.
@@ -475,40 +537,45 @@ fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let lo_narrow = max(lo_in, -chord);
     let hi_narrow = min(hi_in, chord);
 
+    // The solver's "careful" flag is not escalated on its word (as on the CPU): soundness
+    // rests on the proof below alone, which fails wherever the f32 root is wrong.
     let nr = nearest_root(c2, c1, c0, lo, hi);
     let found = nr.root < BIG;
-    let finite_coeffs = finite(c2) && finite(c1) && finite(c0);
-    if (!finite_coeffs || nr.careful) {
-        return escalate();
+    if (!(finite(c2) && finite(c1) && finite(c0))) {
+        return escalate(2u);
     }
     if (!found) {
-        if (positive(l, c2, lo, hi)) {
+        if (positive(l, c2, c1, lo, hi)) {
             return miss();
         }
-        return escalate();
+        return escalate(3u);
+    }
+    // t = (u·R − s)/|d| (|d| = len·2^ex). Its error, in length units, is the bracket's
+    // half-width plus what the kernel adds: s's error (s_err·R), and the relative error of
+    // u·R − s, of |d| (18U) and of the division (5U), taken 48U. The bracket is what
+    // remains of the promised 2·10⁻⁴·(R + r) (less 0.5 %): on the CPU, whose back map is
+    // f64, it is 1.9·10⁻⁴·R; here it shrinks as the origin moves away.
+    let u_star = nr.root;
+    let along = u_star * major - s;
+    let t = ldexp(along / len, -ex);
+    let t_extra = s_err * major + 48.0 * U * (abs(along) + abs(u_star * major) + abs(s));
+    let bracket = min(1.9e-4, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * U));
+    if (!(bracket > 1e-6) || !finite(t)) {
+        return escalate(7u);
     }
     // A hit: sdf > 0 at the bracket's start, < 0 at its end, F > 0 before it.
-    let u_star = nr.root;
-    let left = max(u_star - BRACKET, lo_narrow);
-    let right = min(u_star + BRACKET, hi_narrow);
+    let left = max(u_star - bracket, lo_narrow);
+    let right = min(u_star + bracket, hi_narrow);
     if (!(left <= right)) {
-        return escalate();
+        return escalate(4u);
     }
     let at_left = point_bound(l, left);
     let at_right = point_bound(l, right);
     if (!(at_left.sdf_lo > 0.0 && at_right.sdf_hi < 0.0)) {
-        return escalate();
+        return escalate(5u);
     }
-    if (!positive(l, c2, lo, left)) {
-        return escalate();
-    }
-    // t = (u·R − s)/|d|, and its error in length units: the bracket, s's error, the
-    // relative error of the division and of |d|; past 2e-4·(R + r) the host answers.
-    let along = u_star * major - s;
-    let t = ldexp(along / len, -ex);
-    let t_err = BRACKET * major + s_err * major + 48.0 * U * (abs(along) + abs(u_star * major) + abs(s));
-    if (!(t_err <= 1.9e-4 * (major + minor)) || !finite(t)) {
-        return escalate();
+    if (!positive(l, c2, c1, lo, left)) {
+        return escalate(6u);
     }
     // The normal: ∇F ∝ (|p|² + 1 − rr²)·p − 2(px, 0, pz), back to the world.
     let p = q + u_star * dh;
@@ -519,6 +586,7 @@ fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     var out: Verdict;
     out.hit = vec4<f32>(t, n_world / select(1.0, n_len, n_len > 0.0));
     out.code = CODE_HIT;
+    out.why = 0.0;
     return out;
 }
 
@@ -532,5 +600,5 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let b = rays[2u * i + 1u];
     let v = trace(a.xyz, a.w, b.xyz, b.w);
     results[2u * i] = v.hit;
-    results[2u * i + 1u] = vec4<f32>(v.code, 0.0, 0.0, 0.0);
+    results[2u * i + 1u] = vec4<f32>(v.code, v.why, 0.0, 0.0);
 }

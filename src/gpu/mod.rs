@@ -99,6 +99,8 @@ pub enum GpuError {
     NoAdapter(String),
     /// The adapter refused a device.
     RequestDevice(String),
+    /// The kernel did not compile or validate on this adapter.
+    Kernel(String),
     /// Reading the results back failed.
     Readback(String),
 }
@@ -112,6 +114,7 @@ impl fmt::Display for GpuError {
                  package {SOFTWARE_VULKAN_PACKAGE} (Mesa's software Vulkan, lavapipe)"
             ),
             GpuError::RequestDevice(why) => write!(f, "the GPU adapter refused a device: {why}"),
+            GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
             GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
         }
     }
@@ -181,6 +184,9 @@ impl GpuIntersector {
             })
             .await
             .map_err(|e| GpuError::RequestDevice(e.to_string()))?;
+        // A kernel that does not compile or validate on this adapter is an error to return,
+        // not a panic in wgpu's default handler.
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("torus-cull kernel"),
             source: wgpu::ShaderSource::Wgsl(KERNEL_WGSL.into()),
@@ -216,6 +222,9 @@ impl GpuIntersector {
             compilation_options: Default::default(),
             cache: None,
         });
+        if let Some(e) = scope.pop().await {
+            return Err(GpuError::Kernel(e.to_string()));
+        }
         Ok(GpuIntersector {
             device,
             queue,
@@ -255,6 +264,21 @@ impl GpuIntersector {
         cull: GpuCull,
         rays: &[Ray],
     ) -> Result<Vec<F32Verdict>, GpuError> {
+        Ok(self
+            .explain(torus, cull, rays)?
+            .into_iter()
+            .map(|(v, _)| v)
+            .collect())
+    }
+
+    /// [`GpuIntersector::intersect`] with, for each escalated ray, the step of the
+    /// certificate that did not go through (a diagnostic: the kernel writes it anyway).
+    pub fn explain(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<(F32Verdict, Option<Escalation>)>, GpuError> {
         let mut out = Vec::with_capacity(rays.len());
         if rays.is_empty() {
             return Ok(out);
@@ -359,7 +383,7 @@ impl GpuIntersector {
                     out.push(verdict(w));
                 }
                 for i in far {
-                    out[start + i] = F32Verdict::Escalate;
+                    out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
                 }
             }
             staging.unmap();
@@ -403,15 +427,70 @@ fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
     }
 }
 
-/// A result record `(t, n.xyz, code, 0, 0, 0)` as a verdict; an unknown code escalates.
-fn verdict(w: [f32; 8]) -> F32Verdict {
+/// A result record `(t, n.xyz, code, why, 0, 0)` as a verdict and, for an escalated ray,
+/// why; an unknown code escalates.
+fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
     let normal = Vec3::new(w[1], w[2], w[3]);
     if w[4] == 0.0 {
-        F32Verdict::Miss
+        (F32Verdict::Miss, None)
     } else if w[4] == 1.0 && w[0].is_finite() && normal.is_finite() {
-        F32Verdict::Hit { t: w[0], normal }
+        (F32Verdict::Hit { t: w[0], normal }, None)
     } else {
-        F32Verdict::Escalate
+        let why = match w[5] as u32 {
+            1 => Escalation::NonFiniteLine,
+            2 => Escalation::SolverUnsure,
+            3 => Escalation::MissNotProved,
+            4 => Escalation::EmptyBracket,
+            5 => Escalation::NoSignChange,
+            6 => Escalation::EarlierRootNotRuledOut,
+            7 => Escalation::TErrorTooLarge,
+            _ => Escalation::Unknown,
+        };
+        (F32Verdict::Escalate, Some(why))
+    }
+}
+
+/// Why the kernel escalated a ray: the step of the certificate that did not go through.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum Escalation {
+    /// The origin is more than 2²⁰·R from the centre: not sent to the kernel.
+    FarOrigin,
+    /// The line or its range is not finite in f32.
+    NonFiniteLine,
+    /// The quartic is not finite, or the solver flagged it (near-double resolvent root,
+    /// near-tangent factor, cube root out of range).
+    SolverUnsure,
+    /// No root found, but F > 0 over the range was not proved.
+    MissNotProved,
+    /// The bracket around the root is empty (the root at the range's ends, within their
+    /// error).
+    EmptyBracket,
+    /// The signed distance's sign change across the bracket was not proved (a tangent, an
+    /// origin inside the tube, or a line error as large as the bracket).
+    NoSignChange,
+    /// A root before the bracket was not ruled out (F > 0 not proved there).
+    EarlierRootNotRuledOut,
+    /// The reported t would not be within 1.9·10⁻⁴·(R + r) of the root.
+    TErrorTooLarge,
+    /// A code the host does not know.
+    Unknown,
+}
+
+impl Escalation {
+    /// The stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Escalation::FarOrigin => "far_origin",
+            Escalation::NonFiniteLine => "non_finite_line",
+            Escalation::SolverUnsure => "solver_unsure",
+            Escalation::MissNotProved => "miss_not_proved",
+            Escalation::EmptyBracket => "empty_bracket",
+            Escalation::NoSignChange => "no_sign_change",
+            Escalation::EarlierRootNotRuledOut => "earlier_root",
+            Escalation::TErrorTooLarge => "t_error",
+            Escalation::Unknown => "unknown",
+        }
     }
 }
 
