@@ -1,30 +1,31 @@
 // The certified f32 ray–torus intersection as a compute kernel (src/gpu/mod.rs runs it).
 //
-// Per ray: world → torus frame (f32), the line re-parameterised at its foot point and
-// scaled by 1/R, the cull, Ferrari's split of the depressed quartic in f32 (the f64
+// Per ray: the world → torus-frame rotation (f32; the host has subtracted the centre, one
+// rounding as in f32, and moved a far origin along its line to the foot point in f64), the
+// line re-parameterised at its foot point and scaled by 1/R, the cull, Ferrari's split of the depressed quartic in f32 (the f64
 // solver's method, as src/batch/quartic runs it on f32 lanes), then the certificate of
 // src/certified/certificate.rs with the GPU's error bounds: every spec term in u = 2⁻²⁴
 // is multiplied by 4 (WGSL may or may not contract a·b + c into an fma, division is good
 // to 2.5 ulp, sqrt is not correctly rounded everywhere), and the line's own error is the
-// one of an f32 world → local transform, which grows with the origin's distance |o − c|.
+// one of an f32 rotation, which grows with the origin's distance |o − c|.
 // What is not proved comes back ESCALATE, and the host asks the f64 solver.
 //
-// Output per ray, two vec4: (t, normal.xyz) and (code, 0, 0, 0) with code 0 miss,
-// 1 hit, 2 escalate.
+// Output per ray, two vec4: (t, normal.xyz) and (code, why, 0, 0) with code 0 miss,
+// 1 hit, 2 escalate, and why the step that escalated (see `Verdict`).
 
 struct Params {
     // Rows of the world → torus rotation (torus.to_local_rotation()); w: R, r, r/R.
     rot_x: vec4<f32>,
     rot_y: vec4<f32>,
     rot_z: vec4<f32>,
-    // The centre; w: 1/R.
-    center: vec4<f32>,
+    // x: 1/R (yzw unused).
+    scale: vec4<f32>,
     // x: rays in this dispatch, y: cull (0 none, 1 cychosz).
     config: vec4<u32>,
 };
 
 @group(0) @binding(0) var<uniform> params: Params;
-// Two per ray: (origin.xyz, t_min) and (dir.xyz, t_max), both ends finite.
+// Two per ray: (origin − centre, t_min) and (dir, t_max), both ends finite.
 @group(0) @binding(1) var<storage, read> rays: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read_write> results: array<vec4<f32>>;
 
@@ -288,7 +289,8 @@ fn point_bound(l: Line, u: f32) -> PointBound {
     let bb = dot(p, l.d);
     let c = p.x * l.d.x + p.z * l.d.z;
     let slope = 4.0 * a * bb - 8.0 * c;
-    let p_len = sqrt(p_sq);
+    // |p| ≤ (|q| + |u|)·(1 + 17U) (|d̂| = 1 within 16.5U), as on the CPU.
+    let p_len = (l.q_len + abs(u)) * (1.0 + 32.0 * U);
     let slope_err = G * 10.0 * U * (4.0 * abs(a) * abs(bb) + 8.0 * abs(c))
         + (12.0 * p_sq + 12.0) * eps_p
         + (4.0 * p_sq * p_len + 12.0 * p_len) * (G * 2.0 * U);
@@ -423,14 +425,14 @@ fn miss() -> Verdict {
     return v;
 }
 
-fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
+fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let major = params.rot_x.w;
     let minor = params.rot_y.w;
     let rr = params.rot_z.w;
-    let inv_major = params.center.w;
+    let inv_major = params.scale.x;
     let rot = mat3x3<f32>(params.rot_x.xyz, params.rot_y.xyz, params.rot_z.xyz); // columns = rows of M
-    // World → torus frame: o_l = M (o − c), d_l = M d (M's rows are rot_x, rot_y, rot_z).
-    let v = o - params.center.xyz;
+    // World → torus frame: o_l = M v with v = o − c, d_l = M d (M's rows are rot_x,
+    // rot_y, rot_z; v * rot is the row vector times the matrix, that is M v).
     let ol = v * rot;
     // The direction scaled by a power of two (exact) so that its squares cannot underflow.
     let dmax = max(abs(dir.x), max(abs(dir.y), abs(dir.z)));
@@ -457,7 +459,9 @@ fn trace(o: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     // - the foot point o_l − s·d̂: o_l's 7.9U·|v| across the line, plus |s| ≤ |v| times
     //   d̂'s 7.9U of angle, plus U·|v| of rounding: 16.9U·|v| across; the re-projection
     //   leaves q within 12U·|q| along the line of the true foot point, and 1/R adds 2U·|q|.
-    // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice.
+    // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice. (A foot
+    // point the host formed in f64 is within 10⁻⁹·R of the line before its rounding to
+    // f32, which the constant 32U ≈ 1.9·10⁻⁶ covers.)
     let line_abs = 32.0 * U * v_rel + 32.0 * U;
     let line_rel = 48.0 * U;
 

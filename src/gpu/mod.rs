@@ -1,27 +1,34 @@
 //! The certified f32 intersection as a WGSL compute kernel, on any Vulkan, Metal or DX12
 //! adapter through wgpu (Mesa's software Vulkan, lavapipe, included). Feature `gpu`.
 //!
-//! One dispatch runs, per ray: the world → torus-frame transform (f32), the line
+//! One dispatch runs, per ray: the world → torus-frame rotation (f32), the line
 //! re-parameterised at its foot point and scaled by 1/R, a cull ([`GpuCull`]), the f64
 //! solver's method in f32 (depressed quartic, the resolvent's greatest root, Ferrari's
 //! split), and the certificate of [`crate::certified`]: a hit is a proved sign change of
-//! the signed distance within 9·10⁻⁵·R of the reported root, with F > 0 proved before it;
-//! a miss is F > 0 proved over the whole range (or a cull's rejection). Everything else
-//! comes back [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] hands
-//! those rays to the f64 solver ([`crate::intersect()`]) on the host.
+//! the signed distance within a bracket around the reported root, with F > 0 proved
+//! before it (convex pieces split at F's lowest point); a miss is F > 0 proved over the
+//! whole range (or a cull's rejection). Everything else comes back
+//! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] hands those rays
+//! to the f64 solver ([`crate::intersect()`]) on the host. A proved hit's `t` is within
+//! 2·10⁻⁴·(R + r) of the first root in range (along the unit direction; plus half an ulp
+//! of `t` for a rebased origin, below), as on the CPU.
+//!
+//! **What the host does.** It subtracts the torus centre in f64 and rounds once (the value
+//! an f32 subtraction on the device would give), and moves an origin farther than
+//! 2·(R + r) along its line to the foot point, in f64 (as [`crate::Torus::line_to_local`]
+//! does for the culls), adding the shift back to the kernel's `t`: the kernel's line
+//! error grows with the origin's distance, and this keeps far cameras as certifiable as
+//! near ones. Origins beyond 2²⁰·R escalate without the kernel.
 //!
 //! **The GPU's error bounds.** WGSL may or may not contract `a·b + c` into an fma,
 //! division is good to 2.5 ulp, `sqrt` is not correctly rounded on every device and
 //! subnormals may flush; so every rounding term of the certificate (in u = 2⁻²⁴) is taken
 //! four times larger than on the CPU, and the line's own error is the one of an f32
-//! transform: the foot point stands within about 20u·|o − c| of the true line, and the
-//! unit direction within about 20u, which the kernel doubles (`line_abs`, `line_rel` in
-//! `kernel.wgsl`). That error grows with the origin's distance: origins beyond a few
-//! tens of R from the centre get their hits escalated (misses far from the torus are
-//! still proved), and a reported `t` must also be within 1.9·10⁻⁴·(R + r) of the true
-//! first root once the foot point's and the division's errors are added, or the ray
-//! escalates. The CPU path ([`crate::intersect_f32_certified`]) forms the line in f64 and
-//! escalates less.
+//! rotation and foot point (within 16.9u·|o − c|/R + 16u·|q| + 24.4u·|u| of the true
+//! line, to first order: derived step by step in `kernel.wgsl`, and taken about twice).
+//! On the CPU the line is formed in f64 and rounded once. The bracket is what remains of
+//! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
+//! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -135,9 +142,14 @@ const RAY_BYTES: u64 = 32;
 /// Size of the uniform block (`Params` in the kernel): five 16-byte rows.
 const PARAMS_BYTES: u64 = 80;
 
-/// Origins farther than this many R from the centre are not sent as they are: the
-/// kernel could not certify a hit from there, and its f32 sums could overflow.
+/// Origins farther than this many R from the centre (2²⁰) escalate without the kernel:
+/// beyond, the f64 foot point's own error (about 10⁻¹⁵ of the distance) is no longer
+/// negligible beside the kernel's line error bound.
 const FAR_REL: f64 = 1_048_576.0;
+
+/// Origins farther than this many (R + r) from the centre are moved to their line's foot
+/// point on the host, in f64, before the kernel sees them (see [`Frame::pack`]).
+const REBASE_REL: f64 = 2.0;
 
 /// A wgpu device with the kernel compiled, ready for batches of rays.
 pub struct GpuIntersector {
@@ -330,13 +342,16 @@ impl GpuIntersector {
         });
         let frame = Frame::of(torus);
         let mut packed: Vec<f32> = Vec::with_capacity(chunk * 8);
+        let mut shifts: Vec<f64> = Vec::with_capacity(chunk);
         for batch in rays.chunks(CHUNK) {
             packed.clear();
+            shifts.clear();
             let mut far = Vec::new();
             for (i, ray) in batch.iter().enumerate() {
-                let (words, sendable) = frame.pack(ray);
-                packed.extend_from_slice(&words);
-                if !sendable {
+                let ray = frame.pack(ray);
+                packed.extend_from_slice(&ray.words);
+                shifts.push(ray.t0);
+                if !ray.sendable {
                     far.push(i);
                 }
             }
@@ -376,11 +391,11 @@ impl GpuIntersector {
                     .get_mapped_range()
                     .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
                 let start = out.len();
-                for record in view.chunks_exact(RAY_BYTES as usize) {
+                for (record, &t0) in view.chunks_exact(RAY_BYTES as usize).zip(&shifts) {
                     let w: [f32; 8] = std::array::from_fn(|k| {
                         f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
                     });
-                    out.push(verdict(w));
+                    out.push(shifted(verdict(w), t0));
                 }
                 for i in far {
                     out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
@@ -450,6 +465,24 @@ fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
     }
 }
 
+/// A verdict for a ray whose origin the host moved `t0` along it: the ray's own t.
+fn shifted(
+    (verdict, why): (F32Verdict, Option<Escalation>),
+    t0: f64,
+) -> (F32Verdict, Option<Escalation>) {
+    match verdict {
+        F32Verdict::Hit { t, normal } if t0 != 0.0 => {
+            let t = (f64::from(t) + t0) as f32;
+            if t.is_finite() {
+                (F32Verdict::Hit { t, normal }, None)
+            } else {
+                (F32Verdict::Escalate, Some(Escalation::TErrorTooLarge))
+            }
+        }
+        _ => (verdict, why),
+    }
+}
+
 /// Why the kernel escalated a ray: the step of the certificate that did not go through.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[non_exhaustive]
@@ -497,30 +530,38 @@ impl Escalation {
 /// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
 struct Frame {
     rows: [Vec3; 3],
-    center: Vec3,
     major: f32,
     minor: f32,
-    center_f64: glam::DVec3,
+    center: glam::DVec3,
     major_f64: f64,
-    outer_f64: f64,
+    outer: f64,
+}
+
+/// A ray as the kernel reads it, and what the host adds back.
+struct Packed {
+    /// `(o − c, t_min − t0, d, t_max − t0)`, the range clipped (see [`Frame::pack`]).
+    words: [f32; 8],
+    /// How far along the ray the uploaded origin is: the kernel's t plus this is the ray's.
+    t0: f64,
+    /// Within [`FAR_REL`]·R of the centre: the kernel may answer.
+    sendable: bool,
 }
 
 impl Frame {
     fn of(torus: &Torus) -> Frame {
         let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
+        let major_f64 = f64::from(torus.major_radius());
         Frame {
             rows: [m.x_axis, m.y_axis, m.z_axis],
-            center: torus.center(),
             major: torus.major_radius(),
             minor: torus.minor_radius(),
-            center_f64: torus.center().as_dvec3(),
-            major_f64: f64::from(torus.major_radius()),
-            outer_f64: f64::from(torus.major_radius()) + f64::from(torus.minor_radius()),
+            center: torus.center().as_dvec3(),
+            major_f64,
+            outer: major_f64 + f64::from(torus.minor_radius()),
         }
     }
 
-    /// The uniform block: rows of M with R, r, r/R; the centre with 1/R; the count and
-    /// the cull.
+    /// The uniform block: rows of M with R, r, r/R; 1/R; the count and the cull.
     fn params(&self, count: u32, cull: GpuCull) -> Vec<u8> {
         let rr = (f64::from(self.minor) / self.major_f64) as f32;
         let inv_major = (1.0 / self.major_f64) as f32;
@@ -537,10 +578,10 @@ impl Frame {
             self.rows[2].y,
             self.rows[2].z,
             rr,
-            self.center.x,
-            self.center.y,
-            self.center.z,
             inv_major,
+            0.0,
+            0.0,
+            0.0,
         ];
         let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
         for f in floats {
@@ -552,19 +593,37 @@ impl Frame {
         bytes
     }
 
-    /// A ray as the kernel reads it, `(o, t_min', d, t_max')`, with its range clipped to
-    /// `|t| ≤ T`, T = (|o − c| + 4(R + r))/|d| rounded up (no point beyond is within the
-    /// bounding sphere, so no root is lost, and the kernel's sums stay finite); and
-    /// whether the kernel can be trusted with it (origins within [`FAR_REL`]·R).
-    fn pack(&self, ray: &Ray) -> ([f32; 8], bool) {
-        let (o, d) = (ray.origin(), ray.dir());
-        let rel = o.as_dvec3() - self.center_f64;
-        let reach = (rel.length() + 4.0 * self.outer_f64) / d.as_dvec3().length();
-        let limit = (reach * (1.0 + 1e-6)).min(f64::from(f32::MAX)) as f32;
-        let t_min = ray.t_min().clamp(-limit, limit);
-        let t_max = ray.t_max().clamp(-limit, limit);
+    /// A ray as the kernel reads it.
+    ///
+    /// The origin goes relative to the centre, `o − c` formed in f64 and rounded once
+    /// (the same value as an f32 subtraction on the device). An origin farther than
+    /// [`REBASE_REL`]·(R + r) first moves along its line to the foot point, `t0 = −(o −
+    /// c)·d/|d|²` (f64, as [`Torus::line_to_local`] does for the culls): the kernel's line
+    /// error grows with the origin's distance, and from there it is that of a near ray.
+    /// The range becomes `[t_min − t0, t_max − t0]`, clipped to `|t| ≤ T`, T = (|foot| +
+    /// 4(R + r))/|d| rounded up: no point beyond is within the bounding sphere, so no
+    /// root is lost, and the kernel's sums stay finite.
+    fn pack(&self, ray: &Ray) -> Packed {
+        let d = ray.dir().as_dvec3();
+        let rel = ray.origin().as_dvec3() - self.center;
         let sendable = rel.length() <= FAR_REL * self.major_f64;
-        ([o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max], sendable)
+        let len_sq = d.length_squared();
+        let t0 = if rel.length() > REBASE_REL * self.outer {
+            -rel.dot(d) / len_sq
+        } else {
+            0.0
+        };
+        let start = rel + d * t0;
+        let reach = (start.length() + 4.0 * self.outer) / len_sq.sqrt();
+        let limit = (reach * (1.0 + 1e-6)).min(f64::from(f32::MAX));
+        let t_min = (f64::from(ray.t_min()) - t0).clamp(-limit, limit) as f32;
+        let t_max = (f64::from(ray.t_max()) - t0).clamp(-limit, limit) as f32;
+        let (o, d) = (start.as_vec3(), ray.dir());
+        Packed {
+            words: [o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max],
+            t0,
+            sendable,
+        }
     }
 }
 
