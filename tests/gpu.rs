@@ -19,6 +19,7 @@ use common::{family, pairs, pushed_back};
 use glam::DVec3;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
+use std::io::Write;
 use std::sync::OnceLock;
 use torus_cull::gpu::{GpuCull, GpuError, GpuIntersector};
 use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
@@ -38,7 +39,9 @@ fn gpu() -> Option<&'static GpuIntersector> {
             } else {
                 "hardware adapter"
             };
-            println!(
+            // Written to stderr directly: libtest captures println! of a passing test.
+            let _ = writeln!(
+                std::io::stderr(),
                 "GPU adapter: {} ({:?}, {:?}; {kind})",
                 gpu.adapter_name(),
                 gpu.device_type(),
@@ -47,7 +50,8 @@ fn gpu() -> Option<&'static GpuIntersector> {
             Some(gpu)
         }
         Err(GpuError::NoAdapter(why)) => {
-            eprintln!(
+            let _ = writeln!(
+                std::io::stderr(),
                 "SKIPPED: no GPU adapter; install the Debian package mesa-vulkan-drivers \
                  (Mesa's software Vulkan) to run the GPU tests [{why}]"
             );
