@@ -291,9 +291,12 @@ fn point_bound(l: Line, u: f32) -> PointBound {
     let slope = 4.0 * a * bb - 8.0 * c;
     // |p| ≤ (|q| + |u|)·(1 + 17U) (|d̂| = 1 within 16.5U), as on the CPU.
     let p_len = (l.q_len + abs(u)) * (1.0 + 32.0 * U);
+    // Rounding (at most 10 roundings in a monomial), the line's error through F's Hessian
+    // (‖H‖ ≤ 12|p|² + 12), and d̂'s error through ‖∇F‖ ≤ 4|p|³ + 12|p|: on the CPU d̂'s
+    // rounding (2U), here the f32 transform's 24.4U (line_rel) plus that.
     let slope_err = G * 10.0 * U * (4.0 * abs(a) * abs(bb) + 8.0 * abs(c))
         + (12.0 * p_sq + 12.0) * eps_p
-        + (4.0 * p_sq * p_len + 12.0 * p_len) * (G * 2.0 * U);
+        + (4.0 * p_sq * p_len + 12.0 * p_len) * (l.line_rel + G * 2.0 * U);
     b.slope_lo = slope - slope_err;
     b.slope_hi = slope + slope_err;
     return b;
