@@ -53,7 +53,7 @@ use crate::intersect::Hit;
 use crate::{Ray, Torus, intersect};
 use glam::Vec3;
 use std::fmt;
-use std::sync::mpsc;
+use std::sync::{Mutex, mpsc};
 
 /// The kernel's source (WGSL).
 pub const KERNEL_WGSL: &str = include_str!("kernel.wgsl");
@@ -158,6 +158,20 @@ pub struct GpuIntersector {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
     info: wgpu::AdapterInfo,
+    /// The buffers of the last batch, kept for the next one (creating them per call cost
+    /// milliseconds on lavapipe); one batch runs at a time.
+    buffers: Mutex<Option<Buffers>>,
+}
+
+/// The uniform block, the rays, the results and their staging copy, for up to `rays`
+/// rays a dispatch.
+struct Buffers {
+    rays: usize,
+    params: wgpu::Buffer,
+    input: wgpu::Buffer,
+    output: wgpu::Buffer,
+    staging: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
 }
 
 impl fmt::Debug for GpuIntersector {
@@ -243,7 +257,67 @@ impl GpuIntersector {
             pipeline,
             layout,
             info,
+            buffers: Mutex::new(None),
         })
+    }
+
+    /// Buffers for `rays` rays a dispatch.
+    fn buffers(&self, rays: usize) -> Buffers {
+        let size = rays as u64 * RAY_BYTES;
+        let buffer = |label, size, usage| {
+            self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let params = buffer(
+            "torus-cull params",
+            PARAMS_BYTES,
+            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        );
+        let input = buffer(
+            "torus-cull rays",
+            size,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        );
+        let output = buffer(
+            "torus-cull results",
+            size,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        );
+        let staging = buffer(
+            "torus-cull staging",
+            size,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("torus-cull bind group"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: params.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        });
+        Buffers {
+            rays,
+            params,
+            input,
+            output,
+            staging,
+            bind_group,
+        }
     }
 
     /// The adapter's name (lavapipe: `llvmpipe (LLVM …)`).
@@ -296,114 +370,99 @@ impl GpuIntersector {
             return Ok(out);
         }
         let chunk = rays.len().min(CHUNK);
-        let size = chunk as u64 * RAY_BYTES;
-        let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
-        let buffer = |label, size, usage| {
-            self.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
-        let params = buffer(
-            "torus-cull params",
-            PARAMS_BYTES,
-            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        );
-        let input = buffer("torus-cull rays", size, usage);
-        let output = buffer(
-            "torus-cull results",
-            size,
-            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        );
-        let staging = buffer(
-            "torus-cull staging",
-            size,
-            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        );
-        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("torus-cull bind group"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: params.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: input.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: output.as_entire_binding(),
-                },
-            ],
-        });
+        let mut cache = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
+        if cache.as_ref().is_none_or(|b| b.rays < chunk) {
+            *cache = Some(self.buffers(chunk));
+        }
+        let buffers = cache.as_ref().expect("just made");
         let frame = Frame::of(torus);
-        let mut packed: Vec<f32> = Vec::with_capacity(chunk * 8);
-        let mut shifts: Vec<f64> = Vec::with_capacity(chunk);
         for batch in rays.chunks(CHUNK) {
-            packed.clear();
-            shifts.clear();
-            let mut far = Vec::new();
-            for (i, ray) in batch.iter().enumerate() {
-                let ray = frame.pack(ray);
-                packed.extend_from_slice(&ray.words);
-                shifts.push(ray.t0);
-                if !ray.sendable {
-                    far.push(i);
-                }
+            if let Err(e) = self.dispatch(buffers, &frame, cull, batch, &mut out) {
+                // The staging buffer may be left mapped: the next call makes new ones.
+                *cache = None;
+                return Err(e);
             }
-            self.queue
-                .write_buffer(&params, 0, &frame.params(batch.len() as u32, cull));
-            self.queue.write_buffer(&input, 0, &as_bytes(&packed));
-            let bytes = batch.len() as u64 * RAY_BYTES;
-            let mut encoder = self
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("torus-cull dispatch"),
-                });
-            {
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                    label: Some("torus-cull pass"),
-                    timestamp_writes: None,
-                });
-                pass.set_pipeline(&self.pipeline);
-                pass.set_bind_group(0, &bind_group, &[]);
-                pass.dispatch_workgroups(batch.len().div_ceil(WORKGROUP) as u32, 1, 1);
-            }
-            encoder.copy_buffer_to_buffer(&output, 0, &staging, 0, bytes);
-            self.queue.submit([encoder.finish()]);
-            let slice = staging.slice(..bytes);
-            let (tx, rx) = mpsc::channel();
-            slice.map_async(wgpu::MapMode::Read, move |r| {
-                let _ = tx.send(r);
-            });
-            self.device
-                .poll(wgpu::PollType::wait_indefinitely())
-                .map_err(|e| GpuError::Readback(e.to_string()))?;
-            rx.recv()
-                .map_err(|e| GpuError::Readback(e.to_string()))?
-                .map_err(|e| GpuError::Readback(e.to_string()))?;
-            {
-                let view = slice
-                    .get_mapped_range()
-                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-                let start = out.len();
-                for (record, &t0) in view.chunks_exact(RAY_BYTES as usize).zip(&shifts) {
-                    let w: [f32; 8] = std::array::from_fn(|k| {
-                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
-                    });
-                    out.push(shifted(verdict(w), t0));
-                }
-                for i in far {
-                    out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
-                }
-            }
-            staging.unmap();
         }
         Ok(out)
+    }
+
+    /// One dispatch of up to [`CHUNK`] rays: pack, upload, run, read back, append to
+    /// `out`.
+    fn dispatch(
+        &self,
+        buffers: &Buffers,
+        frame: &Frame,
+        cull: GpuCull,
+        batch: &[Ray],
+        out: &mut Vec<(F32Verdict, Option<Escalation>)>,
+    ) -> Result<(), GpuError> {
+        let Buffers {
+            params,
+            input,
+            output,
+            staging,
+            bind_group,
+            ..
+        } = buffers;
+        let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
+        let mut shifts: Vec<f64> = Vec::with_capacity(batch.len());
+        let mut far = Vec::new();
+        for (i, ray) in batch.iter().enumerate() {
+            let ray = frame.pack(ray);
+            packed.extend_from_slice(&ray.words);
+            shifts.push(ray.t0);
+            if !ray.sendable {
+                far.push(i);
+            }
+        }
+        self.queue
+            .write_buffer(params, 0, &frame.params(batch.len() as u32, cull));
+        self.queue.write_buffer(input, 0, &as_bytes(&packed));
+        let bytes = batch.len() as u64 * RAY_BYTES;
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("torus-cull dispatch"),
+            });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("torus-cull pass"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, bind_group, &[]);
+            pass.dispatch_workgroups(batch.len().div_ceil(WORKGROUP) as u32, 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
+        self.queue.submit([encoder.finish()]);
+        let slice = staging.slice(..bytes);
+        let (tx, rx) = mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| GpuError::Readback(e.to_string()))?
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        {
+            let view = slice
+                .get_mapped_range()
+                .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+            let start = out.len();
+            for (record, &t0) in view.chunks_exact(RAY_BYTES as usize).zip(&shifts) {
+                let w: [f32; 8] = std::array::from_fn(|k| {
+                    f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+                });
+                out.push(shifted(verdict(w), t0));
+            }
+            for i in far {
+                out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
+            }
+        }
+        staging.unmap();
+        Ok(())
     }
 
     /// [`GpuIntersector::intersect`], finished on the host: every escalated ray is
