@@ -27,7 +27,7 @@ use torus_cull::harness::workload::Case;
 use torus_cull::harness::workload::adversarial::{
     SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
 };
-use torus_cull::{F32Verdict, Ray, Torus, intersect};
+use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
 
 /// The adapter, opened once for every test; `None` (after one loud line) without one.
 fn gpu() -> Option<&'static GpuIntersector> {
@@ -68,6 +68,7 @@ struct Tally {
     rays: usize,
     band: usize,
     escalated: usize,
+    cpu_escalated: usize,
     hits: usize,
     misses: usize,
     worst: f64,
@@ -99,6 +100,19 @@ impl Tally {
             let query = Query::ray(torus, ray);
             let label = query.classify();
             let f64_hit = intersect(torus, ray);
+            // The CPU's certified f32 path on the same ray: both are proofs, so they never
+            // disagree on a proved answer.
+            let cpu = intersect_f32_certified(torus, ray);
+            if cpu == F32Verdict::Escalate {
+                self.cpu_escalated += 1;
+            }
+            match (verdict, cpu) {
+                (F32Verdict::Hit { .. }, F32Verdict::Miss)
+                | (F32Verdict::Miss, F32Verdict::Hit { .. }) => self.fail(format!(
+                    "{cull}: GPU {verdict:?}, CPU certified {cpu:?}: {ray:?} on {torus:?}"
+                )),
+                _ => {}
+            }
             if label.class == OracleClass::Ambiguous {
                 self.band += 1;
                 if verdict == F32Verdict::Escalate {
@@ -157,11 +171,13 @@ impl Tally {
     fn report(&self, name: &str, cull: GpuCull) {
         println!(
             "{name:<24} {cull:<8} {:>7} rays: {:>6} proved hits, {:>6} proved misses, \
-             escalated {:>5.1} % ({} in the oracle's band), worst t error {:.1e}·(R + r)",
+             escalated {:>5.1} % (CPU f32 path {:>5.1} %; {} in the oracle's band), worst t \
+             error {:.1e}·(R + r)",
             self.rays,
             self.hits,
             self.misses,
             100.0 * self.escalated as f64 / self.rays.max(1) as f64,
+            100.0 * self.cpu_escalated as f64 / self.rays.max(1) as f64,
             self.band,
             self.worst,
         );
@@ -308,5 +324,131 @@ fn an_empty_batch_and_a_clear_hit() {
     assert_eq!(
         gpu.intersect(&torus, GpuCull::Cychosz, &[hole]).unwrap()[0],
         F32Verdict::Miss
+    );
+}
+
+fn torus_cull(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(args)
+        .output()
+        .expect("run torus-cull")
+}
+
+/// `eval --exact gpu` answers every row as `--exact f32` does (both certified, escalated
+/// rays finished in f64): the same hits and misses, t within the two bounds.
+#[test]
+fn eval_exact_gpu_agrees_with_the_cpu_path() {
+    let Some(_) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    let mut csv = String::from("ox,oy,oz,dx,dy,dz\n");
+    for batch in family(Case::Uniform, 4.0, 300, 0x0E7A)
+        .iter()
+        .chain(&family(Case::Camera, 4.0, 300, 0x0E7B))
+    {
+        // eval's torus is the canonical one: the rays in its frame, then pushed back.
+        let m = batch.torus.to_local_rotation();
+        for ray in &batch.rays {
+            let o = batch.torus.point_to_local(ray.origin());
+            let d = m * ray.dir();
+            csv.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                o.x, o.y, o.z, d.x, d.y, d.z
+            ));
+        }
+    }
+    std::fs::write(&input, csv).unwrap();
+    let rows = |exact: &str| {
+        let out_path = dir.path().join(format!("{exact}.csv"));
+        let out = torus_cull(&[
+            "eval",
+            "--major",
+            "1",
+            "--minor",
+            "0.25",
+            "--rays",
+            input.to_str().unwrap(),
+            "--exact",
+            exact,
+            "--out",
+            out_path.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "eval --exact {exact}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(&out_path).unwrap();
+        assert!(
+            text.starts_with("index,oracle,margin,t_hit,escalated,"),
+            "{exact}"
+        );
+        text.lines()
+            .skip(1)
+            .map(|l| {
+                let f: Vec<&str> = l.split(',').collect();
+                (f[3].parse::<f64>().ok(), f[4] == "1")
+            })
+            .collect::<Vec<_>>()
+    };
+    let (gpu_rows, cpu_rows) = (rows("gpu"), rows("f32"));
+    assert_eq!(gpu_rows.len(), 600);
+    assert_eq!(gpu_rows.len(), cpu_rows.len());
+    let escalated = gpu_rows.iter().filter(|r| r.1).count();
+    for (i, ((g, _), (c, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
+        assert_eq!(g.is_some(), c.is_some(), "row {i}: gpu {g:?}, f32 {c:?}");
+        if let (Some(g), Some(c)) = (g, c) {
+            assert!(
+                (g - c).abs() <= 4e-4 * 1.25 + 1e-5 * c.abs(),
+                "row {i}: {g} vs {c}"
+            );
+        }
+    }
+    println!("eval --exact gpu: {escalated} of 600 rows escalated");
+}
+
+/// `time --device gpu` writes Mrays/s per cull as estimates, with the adapter in
+/// meta.device (and says so when the adapter is the CPU).
+#[test]
+fn time_device_gpu_names_the_adapter() {
+    let Some(gpu) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("time.json");
+    let out = torus_cull(&[
+        "time",
+        "--device",
+        "gpu",
+        "--workload",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/workloads/quick.json"),
+        "--nu",
+        "2",
+        "--seconds",
+        "0.5",
+        "--out",
+        out_path.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("Mrays/s"), "{stdout}");
+    assert!(stdout.contains(gpu.adapter_name()), "{stdout}");
+    let results = torus_cull::harness::results::Results::load(&out_path).unwrap();
+    let device = results.meta.device.expect("meta.device");
+    assert!(device.contains(gpu.adapter_name()), "{device}");
+    assert_eq!(
+        device.contains("no GPU timing claimed"),
+        gpu.is_software(),
+        "{device}"
+    );
+    // Five cases at one ν, two culls.
+    assert_eq!(results.estimates.len(), 10);
+    assert!(
+        results
+            .estimates
+            .iter()
+            .all(|e| e.benchmark.starts_with("gpu_ns-") && e.ns_per_element > 0.0)
     );
 }
