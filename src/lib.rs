@@ -74,6 +74,9 @@ pub mod quartic;
 #[cfg(feature = "harness")]
 pub mod harness;
 
+#[cfg(feature = "gpu")]
+pub mod gpu;
+
 pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};
 pub use cull::{
     AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,

@@ -32,6 +32,7 @@ fn sample() -> Results {
             cores: None,
             threads: None,
             os: None,
+            device: None,
         },
         rejection: vec![
             RejectionRecord {

@@ -127,7 +127,8 @@ enum Command {
         precision: Option<EvalPrecision>,
         /// The exact intersection behind t_hit: `f64` (the default) or `f32`, the
         /// certified f32 path, which adds the column `escalated` (1: f32 could not prove
-        /// the answer, the f64 solver gave it) and takes f32 rays.
+        /// the answer, the f64 solver gave it) and takes f32 rays; `gpu`, the same on the
+        /// GPU kernel (a binary built with `--features gpu`).
         #[arg(long, value_enum, default_value_t = EvalExact::F64)]
         exact: EvalExact,
     },
@@ -140,6 +141,9 @@ enum EvalExact {
     F64,
     /// The certified f32 path, escalating to f64.
     F32,
+    /// The certified f32 path on the GPU kernel (a binary built with `--features gpu`),
+    /// escalating to f64 on the host.
+    Gpu,
 }
 
 /// `eval --precision`.
@@ -195,6 +199,10 @@ fn main() -> ExitCode {
                 (None | Some(EvalPrecision::F32), EvalExact::F32) => Ok(Precision::CertifiedF32),
                 (Some(EvalPrecision::F64), EvalExact::F32) => Err(
                     "--exact f32 takes f32 rays: drop --precision f64, or use --exact f64".into(),
+                ),
+                (None | Some(EvalPrecision::F32), EvalExact::Gpu) => Ok(Precision::CertifiedGpu),
+                (Some(EvalPrecision::F64), EvalExact::Gpu) => Err(
+                    "--exact gpu takes f32 rays: drop --precision f64, or use --exact f64".into(),
                 ),
             };
             precision.and_then(|p| eval::eval(major, minor, p, &rays, out.as_deref()))

@@ -51,6 +51,23 @@ pub struct TimeArgs {
     /// `TORUS_CULL_ISA` names (default: the best this CPU has).
     #[arg(long, value_enum, default_value_t = Mode::Scalar)]
     mode: Mode,
+    /// `cpu`: the paired ratios above. `gpu` (a binary built with `--features gpu`): the
+    /// WGSL kernel's Mrays/s (cull and certified f32 intersection, upload and readback
+    /// included) per case × ν for the culls none and cychosz, `--batch` rays a dispatch
+    /// (default: the workload's rays), written as `estimates` with the adapter in
+    /// `meta.device`. A software adapter (device type Cpu, e.g. Mesa's lavapipe) is timed
+    /// too, but the output says so and claims no GPU speed.
+    #[arg(long, value_enum, default_value_t = Device::Cpu)]
+    device: Device,
+}
+
+/// Where `torus-cull time` measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum Device {
+    /// The culls on this CPU, as paired ratios.
+    Cpu,
+    /// The WGSL kernel on the first GPU adapter wgpu finds.
+    Gpu,
 }
 
 /// Which modes `torus-cull time` measures.
@@ -108,6 +125,14 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         ("--out", &path),
         &[("--workload", &args.workload)],
     )?;
+
+    if args.device == Device::Gpu {
+        if args.mode == Mode::Both {
+            return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
+        }
+        let batch = args.batch.unwrap_or(workload.rays);
+        return gpu::run(&workload, &nus, &culls, args.seconds, batch, &path);
+    }
 
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
     // only `--mode both` uses it.
@@ -231,4 +256,161 @@ fn time_suffix(workload: &str) -> String {
 fn check_writable(path: &Path) -> Result<(), String> {
     torus_cull::harness::output::check_writable(path)
         .map_err(|e| format!("--out {}: {e}", path.display()))
+}
+
+/// `torus-cull time --device gpu`.
+#[cfg(feature = "gpu")]
+mod gpu {
+    use crate::outln;
+    use std::path::Path;
+    use std::process::ExitCode;
+    use std::time::Instant;
+    use torus_cull::CullKind;
+    use torus_cull::F32Verdict;
+    use torus_cull::gpu::{GpuCull, GpuIntersector};
+    use torus_cull::harness::results::{self, EstimateRecord, Results};
+    use torus_cull::harness::workload::generate;
+    use torus_cull::harness::workload::spec::Workload;
+
+    /// Dispatches timed per (case, ν, cull) at least, whatever the time share.
+    const MIN_SAMPLES: usize = 3;
+
+    /// Times the kernel on every case × ν of `workload` (see `TimeArgs::device`).
+    pub(super) fn run(
+        workload: &Workload,
+        nus: &[f64],
+        culls: &[CullKind],
+        seconds: f64,
+        batch: usize,
+        path: &Path,
+    ) -> Result<ExitCode, Box<dyn std::error::Error>> {
+        let culls = gpu_culls(culls)?;
+        let gpu = GpuIntersector::new()?;
+        let mut device = format!(
+            "{} ({:?}, {:?})",
+            gpu.adapter_name(),
+            gpu.device_type(),
+            gpu.backend()
+        );
+        if gpu.is_software() {
+            device.push_str("; software adapter: no GPU timing claimed");
+        }
+        outln!("adapter: {device}")?;
+        if gpu.is_software() {
+            outln!(
+                "the adapter is a CPU rasteriser (device type Cpu): these figures time \
+                 this CPU through Vulkan, not a GPU"
+            )?;
+        }
+        let units = workload.cases.len() * nus.len() * culls.len();
+        let share = seconds / units as f64;
+        outln!(
+            "{:<12} {:>8} {:<8} {:>10} {:>12} {:>10}",
+            "case",
+            "nu",
+            "cull",
+            "rays",
+            "Mrays/s",
+            "escalated"
+        )?;
+        let mut records = Vec::new();
+        for &case in &workload.cases {
+            for &nu in nus {
+                let b = generate(case, nu, batch, workload.seed, workload.pose)?;
+                let rays = b.rays.len();
+                for &cull in &culls {
+                    // The first dispatch warms up (and counts the escalations).
+                    let verdicts = gpu.intersect(&b.torus, cull, &b.rays)?;
+                    let escalated = verdicts
+                        .iter()
+                        .filter(|v| **v == F32Verdict::Escalate)
+                        .count();
+                    let mut samples = Vec::new();
+                    let start = Instant::now();
+                    while samples.len() < MIN_SAMPLES || start.elapsed().as_secs_f64() < share {
+                        let t = Instant::now();
+                        let out = gpu.intersect(&b.torus, cull, &b.rays)?;
+                        let ns = t.elapsed().as_nanos() as f64;
+                        std::hint::black_box(out);
+                        samples.push(ns / rays.max(1) as f64);
+                    }
+                    samples.sort_by(f64::total_cmp);
+                    let median = samples[samples.len() / 2];
+                    let (lo, hi) = (samples[0], samples[samples.len() - 1]);
+                    outln!(
+                        "{:<12} {:>8} {:<8} {:>10} {:>12.2} {:>9.2}%",
+                        case.name(),
+                        nu,
+                        cull.name(),
+                        rays,
+                        1e3 / median,
+                        100.0 * escalated as f64 / rays.max(1) as f64
+                    )?;
+                    records.push(EstimateRecord {
+                        benchmark: format!("gpu_ns-{}/{}/{nu}", case.name(), cull.name()),
+                        elements: rays as u64,
+                        ns_per_element: median,
+                        // The fastest and slowest dispatch.
+                        ns_per_element_ci: [lo, hi],
+                    });
+                }
+            }
+        }
+        let mut results = Results::new(workload, "time");
+        results.estimates = records;
+        results.meta.device = Some(device);
+        results.meta.threads = Some(1);
+        results.meta.sizes = Some(results::Sizes {
+            rejection_rays: None,
+            timing_rays: Some(batch as u64),
+            timed_nu: nus.to_vec(),
+            warm_up_s: None,
+            measurement_s: None,
+            samples: None,
+            bvh: None,
+            bench_args: Vec::new(),
+        });
+        results.save(path)?;
+        outln!("wrote {}", path.display())?;
+        Ok(ExitCode::SUCCESS)
+    }
+
+    /// The GPU kernel's culls among `culls` (default: both).
+    fn gpu_culls(culls: &[CullKind]) -> Result<Vec<GpuCull>, String> {
+        if culls.len() == CullKind::TIMED.len() {
+            return Ok(GpuCull::ALL.to_vec());
+        }
+        culls
+            .iter()
+            .map(|c| match c {
+                CullKind::None => Ok(GpuCull::None),
+                CullKind::Cychosz => Ok(GpuCull::Cychosz),
+                other => Err(format!(
+                    "--culls: the GPU kernel runs none and cychosz, not {other}"
+                )),
+            })
+            .collect()
+    }
+}
+
+/// `torus-cull time --device gpu` in a binary built without the feature.
+#[cfg(not(feature = "gpu"))]
+mod gpu {
+    use std::path::Path;
+    use std::process::ExitCode;
+    use torus_cull::CullKind;
+    use torus_cull::harness::workload::spec::Workload;
+
+    pub(super) fn run(
+        _workload: &Workload,
+        _nus: &[f64],
+        _culls: &[CullKind],
+        _seconds: f64,
+        _batch: usize,
+        _path: &Path,
+    ) -> Result<ExitCode, Box<dyn std::error::Error>> {
+        Err("--device gpu needs a binary built with the feature gpu: \
+             cargo run --release --features gpu -- time --device gpu"
+            .into())
+    }
 }

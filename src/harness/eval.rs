@@ -47,6 +47,10 @@ pub enum Precision {
     /// Each row rounded to an f32 ray, intersected by the certified f32 path; the output
     /// has the column `escalated` after `t_hit`.
     CertifiedF32,
+    /// As [`Precision::CertifiedF32`], on the GPU kernel (`crate::gpu`, feature `gpu`):
+    /// every row is read first and the rays go to the adapter in one batch; escalated
+    /// rays are answered by the f64 solver.
+    CertifiedGpu,
 }
 
 /// Why `eval` stopped.
@@ -65,6 +69,9 @@ pub enum EvalError {
     },
     /// Reading or writing failed.
     Io(std::io::Error),
+    /// The GPU kernel could not run (`--exact gpu`): no adapter, or a binary built
+    /// without the feature `gpu`.
+    Gpu(String),
 }
 
 impl fmt::Display for EvalError {
@@ -77,6 +84,7 @@ impl fmt::Display for EvalError {
                 message,
             } => write!(f, "{input}:{line}: {message}"),
             EvalError::Io(e) => write!(f, "i/o error: {e}"),
+            EvalError::Gpu(e) => write!(f, "--exact gpu: {e}"),
         }
     }
 }
@@ -125,7 +133,32 @@ pub fn eval_csv(
             ));
         }
     }
-    if precision == Precision::CertifiedF32 {
+    // The GPU answers every row at once: read them all first (a malformed row still stops
+    // the run with its line number, before the adapter is opened).
+    let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
+        let lines: Vec<std::io::Result<String>> = lines.collect();
+        let mut rays = Vec::new();
+        for (i, line) in lines.iter().enumerate() {
+            let line = match line {
+                Ok(line) => line,
+                Err(_) => break,
+            };
+            if !line.trim().is_empty() {
+                rays.push(parse_ray(line).map_err(|m| row_error(i + 2, m))?);
+            }
+        }
+        let answers = gpu_answers(&torus, &rays)?;
+        (
+            Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
+            answers.into_iter(),
+        )
+    } else {
+        (
+            Box::new(lines) as Box<dyn Iterator<Item = std::io::Result<String>>>,
+            Vec::new().into_iter(),
+        )
+    };
+    if matches!(precision, Precision::CertifiedF32 | Precision::CertifiedGpu) {
         writeln!(
             output,
             "{}",
@@ -152,6 +185,13 @@ pub fn eval_csv(
             Precision::CertifiedF32 => {
                 let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
                 let answer = intersect_f32(&torus, &ray);
+                escalated = Some(answer.escalated);
+                let t_hit = answer.hit.map(|hit| hit.t.to_string());
+                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
+            }
+            Precision::CertifiedGpu => {
+                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
+                let answer = gpu_answers.next().expect("one GPU answer per row");
                 escalated = Some(answer.escalated);
                 let t_hit = answer.hit.map(|hit| hit.t.to_string());
                 (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
@@ -184,6 +224,25 @@ pub fn eval_csv(
     }
     output.flush()?;
     Ok(index)
+}
+
+/// The certified f32 answers of the GPU kernel (no cull: `eval` reports the culls itself),
+/// escalated rays finished in f64.
+#[cfg(feature = "gpu")]
+fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<crate::F32Hit>, EvalError> {
+    use crate::gpu::{GpuCull, GpuIntersector};
+    let gpu = GpuIntersector::new().map_err(|e| EvalError::Gpu(e.to_string()))?;
+    gpu.intersect_finished(torus, GpuCull::None, rays)
+        .map_err(|e| EvalError::Gpu(e.to_string()))
+}
+
+/// Without the feature `gpu` there is no kernel to ask.
+#[cfg(not(feature = "gpu"))]
+fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<crate::F32Hit>, EvalError> {
+    Err(EvalError::Gpu(
+        "this binary was built without the feature gpu (cargo build --release --features gpu)"
+            .to_string(),
+    ))
 }
 
 /// The six numbers of a row in the float type `T` (each finite), and the fields as typed

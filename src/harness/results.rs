@@ -91,6 +91,11 @@ pub struct Meta {
     /// (e.g. `linux x86_64 6.8.0-49-generic`); null in older files.
     #[serde(default)]
     pub os: Option<String>,
+    /// The GPU adapter a `time --device gpu` file was measured on: its name, device type
+    /// and backend, and "software adapter: no GPU timing claimed" for a CPU rasteriser
+    /// (lavapipe); absent from CPU timings and older files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub device: Option<String>,
 }
 
 /// The sizes behind a results file's figures: two files compare only if these agree.
@@ -491,6 +496,7 @@ impl Results {
                     .map(|n| n.get() as u64),
                 threads: None,
                 os: Some(os_description()),
+                device: None,
             },
             rejection: Vec::new(),
             timing: Vec::new(),

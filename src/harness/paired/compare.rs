@@ -200,6 +200,7 @@ mod tests {
                 cores: None,
                 threads: None,
                 os: None,
+                device: None,
             },
             rejection: Vec::new(),
             timing,

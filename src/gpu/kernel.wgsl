@@ -1,0 +1,611 @@
+// The certified f32 ray–torus intersection as a compute kernel (src/gpu/mod.rs runs it).
+//
+// Per ray: the world → torus-frame rotation (f32; the host has subtracted the centre, one
+// rounding as in f32, and moved a far origin along its line to the foot point in f64), the
+// line re-parameterised at its foot point and scaled by 1/R, the cull, Ferrari's split of the depressed quartic in f32 (the f64
+// solver's method, as src/batch/quartic runs it on f32 lanes), then the certificate of
+// src/certified/certificate.rs with the GPU's error bounds: every spec term in u = 2⁻²⁴
+// is multiplied by 4 (WGSL may or may not contract a·b + c into an fma, division is good
+// to 2.5 ulp, sqrt is not correctly rounded everywhere), and the line's own error is the
+// one of an f32 rotation, which grows with the origin's distance |o − c|.
+// What is not proved comes back ESCALATE, and the host asks the f64 solver.
+//
+// Output per ray, two vec4: (t, normal.xyz) and (code, why, 0, 0) with code 0 miss,
+// 1 hit, 2 escalate, and why the step that escalated (see `Verdict`).
+
+struct Params {
+    // Rows of the world → torus rotation (torus.to_local_rotation()); w: R, r, r/R.
+    rot_x: vec4<f32>,
+    rot_y: vec4<f32>,
+    rot_z: vec4<f32>,
+    // x: 1/R (yzw unused).
+    scale: vec4<f32>,
+    // x: rays in this dispatch, y: cull (0 none, 1 cychosz).
+    config: vec4<u32>,
+};
+
+@group(0) @binding(0) var<uniform> params: Params;
+// Two per ray: (origin − centre, t_min) and (dir, t_max), both ends finite.
+@group(0) @binding(1) var<storage, read> rays: array<vec4<f32>>;
+@group(0) @binding(2) var<storage, read_write> results: array<vec4<f32>>;
+
+const U: f32 = 5.9604645e-8; // 2^-24, the unit roundoff of f32
+const G: f32 = 4.0; // the GPU's factor on every spec term in U
+const SAFETY_REL: f32 = 0.000244140625; // 2^-12, the culls' margin (src/cull/bounds.rs)
+const BIG: f32 = 1e30; // "finite" below this (a check NaN fails too)
+const F64_EPS: f32 = 2.220446e-16; // the f64 solver's EPS, as its f32 lanes splat it
+
+const CODE_MISS: f32 = 0.0;
+const CODE_HIT: f32 = 1.0;
+const CODE_ESCALATE: f32 = 2.0;
+
+fn finite(x: f32) -> bool {
+    return abs(x) < BIG;
+}
+
+// ---------------------------------------------------------------------------------------
+// The solver: src/quartic/{resolvent,factor,nearest,cube_root}.rs as the f32 lanes run it
+// (src/batch/quartic/{resolvent,nearest}.rs).
+
+// Horner-free degree-5 polynomial, Estrin's scheme (cube_root.rs, poly5).
+fn poly5(c0: f32, c1: f32, c2: f32, c3: f32, c4: f32, c5: f32, x: f32) -> f32 {
+    let x2 = x * x;
+    let x4 = x2 * x2;
+    let low = c4 * x + c5;
+    let mid = c2 * x + c3;
+    let high = c0 * x + c1;
+    return (low + x2 * mid) + x4 * high;
+}
+
+fn cbrt_halley(t: f32, y: f32) -> f32 {
+    let t3 = t * t * t;
+    return t * ((t3 + 2.0 * y) / (2.0 * t3 + y));
+}
+
+// ∛y for y in [1e-30, 1e30]: Kahan's bit trick for f32 (within ~6 %), two Halley steps.
+fn cbrt(y: f32) -> f32 {
+    let bits = bitcast<u32>(y);
+    var t = bitcast<f32>(bits / 3u + 709921077u);
+    t = cbrt_halley(t, y);
+    t = cbrt_halley(t, y);
+    return t;
+}
+
+// u = 2 cos(arccos(x)/3) − 1 (cube_root.rs, trisect_u).
+fn trisect_u(x: f32) -> f32 {
+    let rhs = 2.0 * (1.0 + x);
+    let s = sqrt(max(rhs * (1.0 / 3.0), 0.0));
+    var u = s * poly5(
+        -0.0023725581002014035,
+        0.005384607441641353,
+        -0.011844823329350508,
+        0.03242038506892554,
+        -0.11181286004396555,
+        0.9216062482255146,
+        s - 0.5773502691896257,
+    );
+    let f = u * u * (3.0 + u) - rhs;
+    let df = (3.0 * u + 6.0) * u;
+    let d2f = 6.0 * u + 6.0;
+    let den = 2.0 * df * df - f * d2f;
+    let ok = rhs > 0.0 && den != 0.0;
+    let step = 2.0 * f * df / select(1.0, den, ok);
+    return select(0.0, u - step, ok);
+}
+
+struct Cubic {
+    a: f32,
+    b: f32,
+    c: f32,
+    a3: f32,
+    third_p: f32,
+    half_q: f32,
+    disc: f32,
+    scale: f32,
+};
+
+fn cubic_of(p: f32, q: f32, r: f32) -> Cubic {
+    var k: Cubic;
+    k.a = 2.0 * p;
+    k.b = p * p - 4.0 * r;
+    k.c = -q * q;
+    k.a3 = k.a * (1.0 / 3.0);
+    let p2 = p * p;
+    let r43 = r * (4.0 / 3.0);
+    k.third_p = -(p2 * (1.0 / 9.0) + r43);
+    k.half_q = p * (r43 - p2 * (1.0 / 27.0)) - 0.5 * (q * q);
+    let tp3 = k.third_p * k.third_p * k.third_p;
+    k.disc = k.half_q * k.half_q + tp3;
+    k.scale = k.half_q * k.half_q + abs(tp3);
+    return k;
+}
+
+fn cubic_h(k: Cubic, z: f32) -> f32 {
+    return ((z + k.a) * z + k.b) * z + k.c;
+}
+
+fn cubic_dh(k: Cubic, z: f32) -> f32 {
+    return (3.0 * z + 2.0 * k.a) * z + k.b;
+}
+
+struct Resolvent {
+    z: f32,
+    dh: f32,
+    fallback: bool,
+};
+
+// The greatest root z = m² ≥ 0 of the resolvent (batch/quartic/resolvent.rs).
+fn greatest_root(p: f32, q: f32, r: f32) -> Resolvent {
+    let k = cubic_of(p, q, r);
+    let near_double = !(abs(k.disc) > 1e-9 * k.scale);
+    let one_real = k.disc > 0.0;
+    // Cardano (one real root).
+    let cube = abs(k.half_q) + sqrt(max(k.disc, 0.0));
+    let cube_ok = cube == 0.0 || (cube >= 1e-30 && cube <= 1e30);
+    let big = select(0.0, cbrt(cube), cube > 0.0 && cube_ok);
+    let ratio = -k.third_p / select(1.0, cube, cube > 0.0);
+    var cu = big;
+    var cv = ratio * big * big;
+    if (k.half_q > 0.0) {
+        cu = -cu;
+        cv = -cv;
+    }
+    let cardano = select(0.0, cu + cv, big != 0.0);
+    // Trigonometric (three real roots): 2k cos(θ/3) = k(1 + u).
+    let tp = select(-1.0, k.third_p, k.third_p < 0.0);
+    let kk = sqrt(max(-k.third_p, 0.0));
+    let cos3 = clamp((k.half_q / tp) * sqrt(-1.0 / tp), -1.0, 1.0);
+    let trig = select(0.0, kk + kk * trisect_u(cos3), k.third_p < 0.0);
+    let w = select(trig, cardano, one_real);
+    var z = max(w - k.a3, 0.0);
+    // A small greatest root from the fixed point z = q²/((z + a)z + b).
+    let tiny = k.b > 0.0 && z * (z + abs(k.a)) <= 1e-3 * k.b;
+    if (tiny) {
+        let z0 = q * q / k.b;
+        let den = (z0 + k.a) * z0 + k.b;
+        z = select(z, q * q / den, den > 0.0);
+    }
+    // Two guarded Newton steps.
+    var hz = cubic_h(k, z);
+    for (var i = 0; i < 2; i++) {
+        let d = cubic_dh(k, z);
+        let zn = max(z - hz / select(1.0, d, d != 0.0), 0.0);
+        let hn = cubic_h(k, zn);
+        let better = d != 0.0 && abs(hn) < abs(hz);
+        z = select(z, zn, better);
+        hz = select(hz, hn, better);
+    }
+    var res: Resolvent;
+    res.z = z;
+    res.dh = cubic_dh(k, z);
+    res.fallback = near_double || (one_real && !cube_ok) || !finite(z) || !finite(res.dh);
+    return res;
+}
+
+fn copysign(x: f32, s: f32) -> f32 {
+    return select(abs(x), -abs(x), s < 0.0);
+}
+
+// x if a real root in [lo, hi], else +BIG (no root).
+fn in_range(x: f32, real: bool, lo: f32, hi: f32) -> f32 {
+    return select(BIG, x, real && x >= lo && x <= hi);
+}
+
+struct Nearest {
+    // The nearest root in [lo, hi], or BIG for none.
+    root: f32,
+    // The solver could not settle this quartic (near-double factor, resolvent fallback).
+    careful: bool,
+};
+
+// The nearest root of x⁴ + p x² + q x + r in [lo, hi] (batch/quartic/nearest.rs with
+// quartic/factor.rs's split_at and quartic/nearest.rs's clear_factors, nearest_of_clear).
+fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
+    let res = greatest_root(p, q, r);
+    let z = res.z;
+    let dh = res.dh;
+    let m = sqrt(z);
+    let q_over_m = q / select(1.0, m, m > 0.0);
+    // split_at
+    let s = p + z;
+    let w2 = s * s - 4.0 * r;
+    let b_abs = p * p + 4.0 * abs(r);
+    let h_mag = ((z + 2.0 * abs(p)) * z + b_abs) * z + q * q;
+    let zdh = z * dh;
+    let err_w_zdh = F64_EPS * ((s * s + 4.0 * abs(r) + 2.0 * abs(s) * abs(p)) * zdh
+        + 2.0 * abs(s) * h_mag * z);
+    let use_q_over_m = m > 0.0 && zdh > 0.0 && (w2 <= 0.0 || F64_EPS * h_mag * w2 <= err_w_zdh);
+    let d = select(copysign(sqrt(max(w2, 0.0)), q), q_over_m, use_q_over_m);
+    let n1d = 0.5 * (s - d);
+    let n2d = 0.5 * (s + d);
+    let n2_bigger = abs(n2d) >= abs(n1d);
+    let bigger = select(n1d, n2d, n2_bigger);
+    let other = select(r / select(1.0, bigger, bigger != 0.0), 0.0, bigger == 0.0);
+    let n1 = select(n1d, other, n2_bigger);
+    let n2 = select(other, n2d, n2_bigger);
+    // clear_factors
+    let disc1 = z - 4.0 * n1;
+    let disc2 = z - 4.0 * n2;
+    let clear = abs(disc1) > 1e-7 * (z + 4.0 * abs(n1)) && abs(disc2) > 1e-7 * (z + 4.0 * abs(n2));
+    // nearest_of_clear
+    let s1 = sqrt(max(disc1, 0.0));
+    let s2 = sqrt(max(disc2, 0.0));
+    let ok1 = disc1 > 0.0;
+    let ok2 = disc2 > 0.0;
+    let half_m = 0.5 * m;
+    let first = min(in_range(-half_m - 0.5 * s1, ok1, lo, hi), in_range(-half_m + 0.5 * s1, ok1, lo, hi));
+    let second = min(in_range(half_m - 0.5 * s2, ok2, lo, hi), in_range(half_m + 0.5 * s2, ok2, lo, hi));
+    var out: Nearest;
+    out.root = min(first, second);
+    let bad_input = !(finite(p) && finite(q) && finite(r));
+    out.careful = res.fallback || !clear || bad_input;
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// The certificate (src/certified/certificate.rs; /work/f32-spec.md §3–5), GPU constants.
+
+struct Line {
+    q: vec3<f32>,
+    d: vec3<f32>,
+    rr: f32,
+    // ε_p(u) = line_rel·(|q| + |u|) + line_abs: the computed point's distance from the
+    // true line's point at u, before the point's own rounding.
+    line_rel: f32,
+    line_abs: f32,
+    q_len: f32,
+    k: f32, // 1 − rr²
+    c2_err: f32,
+};
+
+struct PointBound {
+    f_lo: f32,
+    slope_lo: f32,
+    slope_hi: f32,
+    sdf_lo: f32,
+    sdf_hi: f32,
+};
+
+fn point_bound(l: Line, u: f32) -> PointBound {
+    // Mul then add (an fma, if the compiler contracts, is only more accurate).
+    let p = l.q + u * l.d;
+    let eps_p = l.line_rel * (l.q_len + abs(u)) + l.line_abs + G * 3.1 * U * (l.q_len + abs(u));
+    let rho_sq = p.x * p.x + p.z * p.z;
+    let rho = sqrt(rho_sq);
+    let e = rho - 1.0;
+    let h = sqrt(e * e + p.y * p.y);
+    let sdf = h - l.rr;
+    // As the CPU's (3U·(ρ + h) + U·(1 + 2rr) of rounding, bounded by 4U·(ρ + h) +
+    // 2U·(1 + rr)), times G: that also covers a sqrt good to 4.5 ulp only.
+    let sdf_err = eps_p + G * 4.0 * U * (rho + h) + G * 2.0 * U * (1.0 + l.rr);
+    var b: PointBound;
+    b.sdf_lo = sdf - sdf_err;
+    b.sdf_hi = sdf + sdf_err;
+    let g_plus_lo = l.k + 2.0 * max(rho - sdf_err, 0.0);
+    let f_lo = b.sdf_lo * (2.0 * l.rr + b.sdf_lo) * g_plus_lo * (1.0 - G * 8.0 * U);
+    b.f_lo = select(-1.0, f_lo, b.sdf_lo > 0.0 && finite(f_lo));
+    let p_sq = rho_sq + p.y * p.y;
+    let a = p_sq + l.k;
+    let bb = dot(p, l.d);
+    let c = p.x * l.d.x + p.z * l.d.z;
+    let slope = 4.0 * a * bb - 8.0 * c;
+    // |p| ≤ (|q| + |u|)·(1 + 17U) (|d̂| = 1 within 16.5U), as on the CPU.
+    let p_len = (l.q_len + abs(u)) * (1.0 + 32.0 * U);
+    // Rounding (at most 10 roundings in a monomial), the line's error through F's Hessian
+    // (‖H‖ ≤ 12|p|² + 12), and d̂'s error through ‖∇F‖ ≤ 4|p|³ + 12|p|: on the CPU d̂'s
+    // rounding (2U), here the f32 transform's 24.4U (line_rel) plus that.
+    let slope_err = G * 10.0 * U * (4.0 * abs(a) * abs(bb) + 8.0 * abs(c))
+        + (12.0 * p_sq + 12.0) * eps_p
+        + (4.0 * p_sq * p_len + 12.0 * p_len) * (l.line_rel + G * 2.0 * U);
+    b.slope_lo = slope - slope_err;
+    b.slope_hi = slope + slope_err;
+    return b;
+}
+
+// F > 0 on the convex piece [alpha, beta].
+fn convex_positive(alpha: f32, beta: f32, at_a: PointBound, at_b: PointBound) -> bool {
+    let both = at_a.f_lo > 0.0 && at_b.f_lo > 0.0;
+    let sa = at_a.slope_lo;
+    let sb = at_b.slope_hi;
+    let lhs = at_a.f_lo * sb + at_b.f_lo * (-sa);
+    let rhs = (-sa) * sb * (beta - alpha) * (1.0 + G * 8.0 * U);
+    return both && (sa >= 0.0 || sb <= 0.0 || lhs > rhs);
+}
+
+// F's lowest point on a convex piece [alpha, beta], approximately (any point is sound, a
+// better one proves more): Newton on F′ = 4u³ + 2c2·u + c1 from the piece's outer end.
+fn lowest(c2: f32, c1: f32, start_at: f32, alpha: f32, beta: f32) -> f32 {
+    var u = start_at;
+    for (var i = 0; i < 5; i++) {
+        let slope = (4.0 * u * u + 2.0 * c2) * u + c1;
+        let curvature = 12.0 * u * u + 2.0 * c2;
+        let next = u - slope / select(1.0, curvature, curvature > 0.0);
+        u = select(u, next, curvature > 0.0 && finite(next));
+    }
+    return clamp(u, alpha, beta);
+}
+
+// F > 0 on the convex piece [alpha, beta], split at F's lowest point m: sdf(m) > s > 0
+// keeps the line outside the tube on [m − s, m + s] (sdf is 1-Lipschitz, d̂ a unit
+// vector up to the line's error, which sdf_lo includes); the tangents prove each side.
+fn convex_piece_positive(
+    l: Line,
+    c2: f32,
+    c1: f32,
+    start_at: f32,
+    alpha: f32,
+    at_a: PointBound,
+    beta: f32,
+    at_b: PointBound,
+) -> bool {
+    let m = lowest(c2, c1, start_at, alpha, beta);
+    let at_m = point_bound(l, m);
+    if (!(at_m.sdf_lo > 0.0)) {
+        return false;
+    }
+    // |d̂| may exceed 1 by 16.5U: the clearance shrinks by as much (and more).
+    let clear = at_m.sdf_lo * (1.0 - 64.0 * U);
+    let before = max(m - clear, alpha);
+    let after = min(m + clear, beta);
+    return convex_positive(alpha, before, at_a, point_bound(l, before))
+        && convex_positive(after, beta, point_bound(l, after), at_b);
+}
+
+// F > 0 on [lo, hi], proved (true for an empty interval): F″ = 12u² + 2c2 makes F convex
+// left of −w and right of w, concave (at most) between.
+fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
+    if (hi < lo) {
+        return true;
+    }
+    let w = sqrt(max((l.c2_err - c2) * ((1.0 + G * 8.0 * U) / 6.0), 0.0));
+    let at_lo = point_bound(l, lo);
+    let at_hi = point_bound(l, hi);
+    // Left convex piece [lo, min(hi, −w)].
+    if (lo <= -w) {
+        let end = min(hi, -w);
+        var at_end = at_hi;
+        if (hi > -w) {
+            at_end = point_bound(l, -w);
+        }
+        if (!convex_piece_positive(l, c2, c1, lo, lo, at_lo, end, at_end)) {
+            return false;
+        }
+    }
+    // Right convex piece [max(lo, w), hi].
+    if (w <= hi) {
+        let start = max(lo, w);
+        var at_start = at_lo;
+        if (lo < w) {
+            at_start = point_bound(l, w);
+        }
+        if (!convex_piece_positive(l, c2, c1, hi, start, at_start, hi, at_hi)) {
+            return false;
+        }
+    }
+    // Middle piece [max(lo, −w), min(hi, w)]: F″ ≤ 4·c2_err there.
+    let alpha = max(lo, -w);
+    let beta = min(hi, w);
+    if (alpha <= beta) {
+        var f_alpha = at_lo.f_lo;
+        if (lo < -w) {
+            f_alpha = point_bound(l, -w).f_lo;
+        }
+        var f_beta = at_hi.f_lo;
+        if (hi > w) {
+            f_beta = point_bound(l, w).f_lo;
+        }
+        let span = beta - alpha;
+        let sag = 0.5 * (1.0 + G * 8.0 * U) * l.c2_err * span * span;
+        if (!(f_alpha > 0.0 && f_beta > 0.0 && min(f_alpha, f_beta) > sag)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+struct Verdict {
+    hit: vec4<f32>,
+    code: f32,
+    // Which step escalated (1 non-finite line, 2 non-finite quartic or careful solver,
+    // 3 miss not proved, 4 empty bracket, 5 no sign change, 6 a root before the
+    // bracket not ruled out, 7 t error too large); 0 otherwise.
+    why: f32,
+};
+
+fn escalate(why: u32) -> Verdict {
+    var v: Verdict;
+    v.hit = vec4<f32>(0.0);
+    v.code = CODE_ESCALATE;
+    v.why = f32(why);
+    return v;
+}
+
+fn miss() -> Verdict {
+    var v: Verdict;
+    v.hit = vec4<f32>(0.0);
+    v.code = CODE_MISS;
+    v.why = 0.0;
+    return v;
+}
+
+fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
+    let major = params.rot_x.w;
+    let minor = params.rot_y.w;
+    let rr = params.rot_z.w;
+    let inv_major = params.scale.x;
+    let rot = mat3x3<f32>(params.rot_x.xyz, params.rot_y.xyz, params.rot_z.xyz); // columns = rows of M
+    // World → torus frame: o_l = M v with v = o − c, d_l = M d (M's rows are rot_x,
+    // rot_y, rot_z; v * rot is the row vector times the matrix, that is M v).
+    let ol = v * rot;
+    // The direction scaled by a power of two (exact) so that its squares cannot underflow.
+    let dmax = max(abs(dir.x), max(abs(dir.y), abs(dir.z)));
+    let ex = frexp(dmax).exp;
+    let ds = ldexp(dir, vec3<i32>(-ex));
+    let dl = ds * rot;
+    let len = sqrt(dot(dl, dl)); // |d| = len·2^ex
+    let dh = dl * (1.0 / len);
+    let s = dot(ol, dh);
+    var foot = fma(vec3<f32>(-s), dh, ol);
+    let s2 = dot(foot, dh);
+    foot = fma(vec3<f32>(-s2), dh, foot);
+    let q = foot * inv_major;
+    let v_rel = length(v) * inv_major; // |o − c|/R
+
+    // The line's error: how far the computed point q + u·d̂ (before its own rounding) can
+    // stand from the true line's point at u, to first order in U (each step's worst case,
+    // fma contracted or not, sqrt to 4.5 ulp, division to 2.5 ulp):
+    // - o_l = M (o − c): o − c rounds by U·|v|, M's entries by U (√3·U·|v|), the dot
+    //   products by 3U·|v| per component (3√3·U·|v|): 7.9U·|v| in all; d_l likewise,
+    //   6.9U in angle;
+    // - d̂ = d_l·(1/|d_l|): the angle gains U, the length is 1 within 16.5U, so
+    //   |d̂ − d̂_true| ≤ 24.4U;
+    // - the foot point o_l − s·d̂: o_l's 7.9U·|v| across the line, plus |s| ≤ |v| times
+    //   d̂'s 7.9U of angle, plus U·|v| of rounding: 16.9U·|v| across; the re-projection
+    //   leaves q within 12U·|q| along the line of the true foot point, and 1/R adds 2U·|q|.
+    // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice. (A foot
+    // point the host formed in f64 is within 10⁻⁹·R of the line before its rounding to
+    // f32, which the constant 32U ≈ 1.9·10⁻⁶ covers.)
+    let line_abs = 32.0 * U * v_rel + 32.0 * U;
+    let line_rel = 48.0 * U;
+
+    let q_len_sq = dot(q, q);
+    let q_len = sqrt(q_len_sq);
+    let line_at_foot = line_rel * q_len + line_abs + G * 3.1 * U * q_len;
+
+    // The range in u: lo = (t_min·|d| + s)/R, clamped to ±4 (every root has |u| < 2),
+    // with its error: s = o_l·d̂ within 35.3U·|o − c| of the true one (o_l's 7.9U·|v|,
+    // d̂'s 24.4U times |v|, 3U of rounding; taken 64U), |d| within 18U, the roundings.
+    let tmin_d = ldexp(t_min, ex) * len;
+    let tmax_d = ldexp(t_max, ex) * len;
+    let lo_raw = (tmin_d + s) * inv_major;
+    let hi_raw = (tmax_d + s) * inv_major;
+    let s_err = 64.0 * U * v_rel;
+    let lo_err = s_err + 40.0 * U * (abs(tmin_d) * inv_major + abs(s) * inv_major);
+    let hi_err = s_err + 40.0 * U * (abs(tmax_d) * inv_major + abs(s) * inv_major);
+    let lo_out = clamp(lo_raw - lo_err, -4.0, 4.0);
+    let lo_in = clamp(lo_raw + lo_err, -4.0, 4.0);
+    let hi_out = clamp(hi_raw + hi_err, -4.0, 4.0);
+    let hi_in = clamp(hi_raw - hi_err, -4.0, 4.0);
+
+    let all_finite = finite(v_rel) && finite(q_len_sq) && finite(lo_raw) && finite(hi_raw)
+        && finite(s) && len > 0.0 && finite(len);
+    if (!all_finite) {
+        return escalate(1u);
+    }
+
+    // The cull, on the scaled line with its error folded into the margin.
+    if (params.config.y == 1u) {
+        // cychosz: bounding sphere R + r plus slab |y| ≤ r (src/cull/cychosz.rs).
+        let eta = SAFETY_REL * (1.0 + rr) + line_rel * (q_len + 2.0) + line_abs;
+        let outer = 1.0 + rr + eta;
+        let half_chord_sq = outer * outer - q_len_sq;
+        let unit_y_sq = dh.y * dh.y;
+        let above = abs(q.y) - (rr + eta);
+        let beyond_slab = above > 0.0 && above * above > unit_y_sq * half_chord_sq;
+        if (half_chord_sq < 0.0 || beyond_slab) {
+            return miss();
+        }
+    }
+
+    // The quartic (forms that do not cancel, as in src/intersect.rs's reduce).
+    let rho = sqrt(q.x * q.x + q.z * q.z);
+    let tube = (q.y - rr) * (q.y + rr);
+    let c2 = 2.0 * (rho - 1.0) * (rho + 1.0) + 2.0 * tube + 4.0 * dh.y * dh.y;
+    let delta = dot(q, dh);
+    let c1 = 8.0 * (q.y - delta * dh.y) * dh.y;
+    let c0 = ((rho - 1.0) * (rho - 1.0) + tube) * ((rho + 1.0) * (rho + 1.0) + tube);
+    let rho_plus = rho + 1.0;
+    var l: Line;
+    l.q = q;
+    l.d = dh;
+    l.rr = rr;
+    l.line_rel = line_rel;
+    l.line_abs = line_abs;
+    l.q_len = q_len;
+    l.k = 1.0 - rr * rr;
+    l.c2_err = G * 16.0 * U * (2.0 * rho_plus * rho_plus + 2.0 * (q.y * q.y + rr * rr) + 4.0)
+        + 8.0 * line_at_foot + G * 8.0 * U;
+
+    // The chord: every true root has u² ≤ (1 + rr)² − |q_true|².
+    let outer = 1.0 + rr;
+    let chord_sq = outer * outer * (1.0 + G * 16.0 * U) - q_len_sq * (1.0 - G * 16.0 * U)
+        + 4.0 * line_at_foot * (1.0 + q_len);
+    if (chord_sq < 0.0) {
+        return miss();
+    }
+    let chord = sqrt(chord_sq);
+    // The widest the true range can be (for "no root here" proofs) and the narrowest (where
+    // a reported root must lie).
+    let lo = max(lo_out, -chord);
+    let hi = min(hi_out, chord);
+    if (hi < lo) {
+        return miss();
+    }
+    let lo_narrow = max(lo_in, -chord);
+    let hi_narrow = min(hi_in, chord);
+
+    // The solver's "careful" flag is not escalated on its word (as on the CPU): soundness
+    // rests on the proof below alone, which fails wherever the f32 root is wrong.
+    let nr = nearest_root(c2, c1, c0, lo, hi);
+    let found = nr.root < BIG;
+    if (!(finite(c2) && finite(c1) && finite(c0))) {
+        return escalate(2u);
+    }
+    if (!found) {
+        if (positive(l, c2, c1, lo, hi)) {
+            return miss();
+        }
+        return escalate(3u);
+    }
+    // t = (u·R − s)/|d| (|d| = len·2^ex). Its error, in length units, is the bracket's
+    // half-width plus what the kernel adds: s's error (s_err·R), and the relative error of
+    // u·R − s, of |d| (18U) and of the division (5U), taken 48U. The bracket is what
+    // remains of the promised 2·10⁻⁴·(R + r) (less 0.5 %): on the CPU, whose back map is
+    // f64, it is 1.9·10⁻⁴·R; here it shrinks as the origin moves away.
+    let u_star = nr.root;
+    let along = u_star * major - s;
+    let t = ldexp(along / len, -ex);
+    let t_extra = s_err * major + 48.0 * U * (abs(along) + abs(u_star * major) + abs(s));
+    let bracket = min(1.9e-4, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * U));
+    if (!(bracket > 1e-6) || !finite(t)) {
+        return escalate(7u);
+    }
+    // A hit: sdf > 0 at the bracket's start, < 0 at its end, F > 0 before it.
+    let left = max(u_star - bracket, lo_narrow);
+    let right = min(u_star + bracket, hi_narrow);
+    if (!(left <= right)) {
+        return escalate(4u);
+    }
+    let at_left = point_bound(l, left);
+    let at_right = point_bound(l, right);
+    if (!(at_left.sdf_lo > 0.0 && at_right.sdf_hi < 0.0)) {
+        return escalate(5u);
+    }
+    if (!positive(l, c2, c1, lo, left)) {
+        return escalate(6u);
+    }
+    // The normal: ∇F ∝ (|p|² + 1 − rr²)·p − 2(px, 0, pz), back to the world.
+    let p = q + u_star * dh;
+    let wgt = dot(p, p) + l.k;
+    let g = vec3<f32>(wgt * p.x - 2.0 * p.x, wgt * p.y, wgt * p.z - 2.0 * p.z);
+    let n_world = rot * g; // Mᵀ g
+    let n_len = length(n_world);
+    var out: Verdict;
+    out.hit = vec4<f32>(t, n_world / select(1.0, n_len, n_len > 0.0));
+    out.code = CODE_HIT;
+    out.why = 0.0;
+    return out;
+}
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let i = gid.x;
+    if (i >= params.config.x) {
+        return;
+    }
+    let a = rays[2u * i];
+    let b = rays[2u * i + 1u];
+    let v = trace(a.xyz, a.w, b.xyz, b.w);
+    results[2u * i] = v.hit;
+    results[2u * i + 1u] = vec4<f32>(v.code, v.why, 0.0, 0.0);
+}

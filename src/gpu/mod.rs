@@ -1,0 +1,691 @@
+//! The certified f32 intersection as a WGSL compute kernel, on any Vulkan, Metal or DX12
+//! adapter through wgpu (Mesa's software Vulkan, lavapipe, included). Feature `gpu`.
+//!
+//! One dispatch runs, per ray: the world → torus-frame rotation (f32), the line
+//! re-parameterised at its foot point and scaled by 1/R, a cull ([`GpuCull`]), the f64
+//! solver's method in f32 (depressed quartic, the resolvent's greatest root, Ferrari's
+//! split), and the certificate of [`crate::certified`]: a hit is a proved sign change of
+//! the signed distance within a bracket around the reported root, with F > 0 proved
+//! before it (convex pieces split at F's lowest point); a miss is F > 0 proved over the
+//! whole range (or a cull's rejection). Everything else comes back
+//! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] hands those rays
+//! to the f64 solver ([`crate::intersect()`]) on the host. A proved hit's `t` is within
+//! 2·10⁻⁴·(R + r) of the first root in range (along the unit direction; plus half an ulp
+//! of `t` for a rebased origin, below), as on the CPU.
+//!
+//! **What the host does.** It subtracts the torus centre in f64 and rounds once (the value
+//! an f32 subtraction on the device would give), and moves an origin farther than
+//! 2·(R + r) along its line to the foot point, in f64 (as [`crate::Torus::line_to_local`]
+//! does for the culls), adding the shift back to the kernel's `t`: the kernel's line
+//! error grows with the origin's distance, and this keeps far cameras as certifiable as
+//! near ones. Origins beyond 2²⁰·R escalate without the kernel.
+//!
+//! **The GPU's error bounds.** WGSL may or may not contract `a·b + c` into an fma,
+//! division is good to 2.5 ulp, `sqrt` is not correctly rounded on every device and
+//! subnormals may flush; so every rounding term of the certificate (in u = 2⁻²⁴) is taken
+//! four times larger than on the CPU, and the line's own error is the one of an f32
+//! rotation and foot point (within 16.9u·|o − c|/R + 16u·|q| + 24.4u·|u| of the true
+//! line, to first order: derived step by step in `kernel.wgsl`, and taken about twice).
+//! On the CPU the line is formed in f64 and rounded once. The bracket is what remains of
+//! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
+//! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
+//!
+//! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
+//! when the adapter is the CPU (lavapipe reports device type `Cpu`).
+//!
+//! ```no_run
+//! use torus_cull::gpu::{GpuCull, GpuIntersector};
+//! use torus_cull::{Ray, Torus};
+//! use glam::Vec3;
+//! let gpu = GpuIntersector::new()?;
+//! println!("{} ({:?})", gpu.adapter_name(), gpu.device_type());
+//! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+//! let rays = [Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y)?];
+//! let verdicts = gpu.intersect(&torus, GpuCull::Cychosz, &rays)?;
+//! let finished = gpu.intersect_finished(&torus, GpuCull::Cychosz, &rays)?;
+//! assert!(finished[0].hit.is_some());
+//! # let _ = verdicts;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use crate::certified::{F32Hit, F32Verdict};
+use crate::intersect::Hit;
+use crate::{Ray, Torus, intersect};
+use glam::Vec3;
+use std::fmt;
+use std::sync::{Mutex, mpsc};
+
+/// The kernel's source (WGSL).
+pub const KERNEL_WGSL: &str = include_str!("kernel.wgsl");
+
+/// The Debian package that gives a machine without a GPU a software Vulkan adapter.
+pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
+
+/// The cull the kernel runs before the intersection (a rejected ray is a miss).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum GpuCull {
+    /// No cull: every ray goes to the certified intersection.
+    None,
+    /// Cychosz's bounding sphere R + r plus the slab |y| ≤ r ([`crate::CychoszCull`]),
+    /// with the culls' margin 2⁻¹²·(R + r) plus the kernel's line error.
+    Cychosz,
+}
+
+impl GpuCull {
+    /// Both, in a fixed order.
+    pub const ALL: [GpuCull; 2] = [GpuCull::None, GpuCull::Cychosz];
+
+    /// The stable name (as [`crate::CullKind`]'s).
+    pub fn name(self) -> &'static str {
+        match self {
+            GpuCull::None => "none",
+            GpuCull::Cychosz => "cychosz",
+        }
+    }
+
+    fn code(self) -> u32 {
+        match self {
+            GpuCull::None => 0,
+            GpuCull::Cychosz => 1,
+        }
+    }
+}
+
+impl fmt::Display for GpuCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// Why the GPU path could not run.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum GpuError {
+    /// No adapter (no Vulkan, Metal or DX12 device, and no software Vulkan).
+    NoAdapter(String),
+    /// The adapter refused a device.
+    RequestDevice(String),
+    /// The kernel did not compile or validate on this adapter.
+    Kernel(String),
+    /// Reading the results back failed.
+    Readback(String),
+}
+
+impl fmt::Display for GpuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GpuError::NoAdapter(why) => write!(
+                f,
+                "no GPU adapter ({why}); on a machine without a GPU install the Debian \
+                 package {SOFTWARE_VULKAN_PACKAGE} (Mesa's software Vulkan, lavapipe)"
+            ),
+            GpuError::RequestDevice(why) => write!(f, "the GPU adapter refused a device: {why}"),
+            GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
+            GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for GpuError {}
+
+/// Rays per dispatch: 32 bytes in and 32 out each, 32 MiB per buffer (within WebGPU's
+/// downlevel limit of 128 MiB per storage binding and 65 535 workgroups of 64).
+const CHUNK: usize = 1 << 20;
+
+/// Threads per workgroup (`@workgroup_size` in the kernel).
+const WORKGROUP: usize = 64;
+
+/// Bytes per ray, in and out: two `vec4<f32>` each.
+const RAY_BYTES: u64 = 32;
+
+/// Size of the uniform block (`Params` in the kernel): five 16-byte rows.
+const PARAMS_BYTES: u64 = 80;
+
+/// Origins farther than this many R from the centre (2²⁰) escalate without the kernel:
+/// beyond, the f64 foot point's own error (about 10⁻¹⁵ of the distance) is no longer
+/// negligible beside the kernel's line error bound.
+const FAR_REL: f64 = 1_048_576.0;
+
+/// Origins farther than this many (R + r) from the centre are moved to their line's foot
+/// point on the host, in f64, before the kernel sees them (see [`Frame::pack`]).
+const REBASE_REL: f64 = 2.0;
+
+/// A wgpu device with the kernel compiled, ready for batches of rays.
+pub struct GpuIntersector {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    info: wgpu::AdapterInfo,
+    /// The buffers of the last batch, kept for the next one (creating them per call cost
+    /// milliseconds on lavapipe); one batch runs at a time.
+    buffers: Mutex<Option<Buffers>>,
+}
+
+/// The uniform block, the rays, the results and their staging copy, for up to `rays`
+/// rays a dispatch.
+struct Buffers {
+    rays: usize,
+    params: wgpu::Buffer,
+    input: wgpu::Buffer,
+    output: wgpu::Buffer,
+    staging: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+impl fmt::Debug for GpuIntersector {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("GpuIntersector")
+            .field("adapter", &self.info.name)
+            .field("device_type", &self.info.device_type)
+            .field("backend", &self.info.backend)
+            .finish_non_exhaustive()
+    }
+}
+
+impl GpuIntersector {
+    /// The first adapter wgpu offers (high-performance preferred; the backends from the
+    /// environment, `WGPU_BACKEND`), a device on it and the kernel compiled.
+    pub fn new() -> Result<GpuIntersector, GpuError> {
+        pollster::block_on(Self::new_async())
+    }
+
+    async fn new_async() -> Result<GpuIntersector, GpuError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let info = adapter.get_info();
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("torus-cull"),
+                required_limits: wgpu::Limits::downlevel_defaults(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| GpuError::RequestDevice(e.to_string()))?;
+        // A kernel that does not compile or validate on this adapter is an error to return,
+        // not a panic in wgpu's default handler.
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("torus-cull kernel"),
+            source: wgpu::ShaderSource::Wgsl(KERNEL_WGSL.into()),
+        });
+        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("torus-cull bindings"),
+            entries: &[
+                entry(0, wgpu::BufferBindingType::Uniform),
+                entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
+                entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
+            ],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("torus-cull layout"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("torus-cull pipeline"),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some("main"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        if let Some(e) = scope.pop().await {
+            return Err(GpuError::Kernel(e.to_string()));
+        }
+        Ok(GpuIntersector {
+            device,
+            queue,
+            pipeline,
+            layout,
+            info,
+            buffers: Mutex::new(None),
+        })
+    }
+
+    /// Buffers for `rays` rays a dispatch.
+    fn buffers(&self, rays: usize) -> Buffers {
+        let size = rays as u64 * RAY_BYTES;
+        let buffer = |label, size, usage| {
+            self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let params = buffer(
+            "torus-cull params",
+            PARAMS_BYTES,
+            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        );
+        let input = buffer(
+            "torus-cull rays",
+            size,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+        );
+        let output = buffer(
+            "torus-cull results",
+            size,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+        );
+        let staging = buffer(
+            "torus-cull staging",
+            size,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        );
+        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("torus-cull bind group"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: params.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: input.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: output.as_entire_binding(),
+                },
+            ],
+        });
+        Buffers {
+            rays,
+            params,
+            input,
+            output,
+            staging,
+            bind_group,
+        }
+    }
+
+    /// The adapter's name (lavapipe: `llvmpipe (LLVM …)`).
+    pub fn adapter_name(&self) -> &str {
+        &self.info.name
+    }
+
+    /// The adapter's device type (lavapipe: `Cpu`).
+    pub fn device_type(&self) -> wgpu::DeviceType {
+        self.info.device_type
+    }
+
+    /// The adapter's backend (Vulkan, Metal, DX12, …).
+    pub fn backend(&self) -> wgpu::Backend {
+        self.info.backend
+    }
+
+    /// The adapter runs on the CPU (a software rasteriser such as lavapipe): its timings
+    /// say nothing about a GPU.
+    pub fn is_software(&self) -> bool {
+        self.info.device_type == wgpu::DeviceType::Cpu
+    }
+
+    /// The certified f32 verdict of every ray on `torus` behind `cull`, from the kernel:
+    /// a proved hit (t and the world normal), a proved miss, or
+    /// [`F32Verdict::Escalate`].
+    pub fn intersect(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<F32Verdict>, GpuError> {
+        Ok(self
+            .explain(torus, cull, rays)?
+            .into_iter()
+            .map(|(v, _)| v)
+            .collect())
+    }
+
+    /// [`GpuIntersector::intersect`] with, for each escalated ray, the step of the
+    /// certificate that did not go through (a diagnostic: the kernel writes it anyway).
+    pub fn explain(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<(F32Verdict, Option<Escalation>)>, GpuError> {
+        let mut out = Vec::with_capacity(rays.len());
+        if rays.is_empty() {
+            return Ok(out);
+        }
+        let chunk = rays.len().min(CHUNK);
+        let mut cache = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
+        if cache.as_ref().is_none_or(|b| b.rays < chunk) {
+            *cache = Some(self.buffers(chunk));
+        }
+        let buffers = cache.as_ref().expect("just made");
+        let frame = Frame::of(torus);
+        for batch in rays.chunks(CHUNK) {
+            if let Err(e) = self.dispatch(buffers, &frame, cull, batch, &mut out) {
+                // The staging buffer may be left mapped: the next call makes new ones.
+                *cache = None;
+                return Err(e);
+            }
+        }
+        Ok(out)
+    }
+
+    /// One dispatch of up to [`CHUNK`] rays: pack, upload, run, read back, append to
+    /// `out`.
+    fn dispatch(
+        &self,
+        buffers: &Buffers,
+        frame: &Frame,
+        cull: GpuCull,
+        batch: &[Ray],
+        out: &mut Vec<(F32Verdict, Option<Escalation>)>,
+    ) -> Result<(), GpuError> {
+        let Buffers {
+            params,
+            input,
+            output,
+            staging,
+            bind_group,
+            ..
+        } = buffers;
+        let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
+        let mut shifts: Vec<f64> = Vec::with_capacity(batch.len());
+        let mut far = Vec::new();
+        for (i, ray) in batch.iter().enumerate() {
+            let ray = frame.pack(ray);
+            packed.extend_from_slice(&ray.words);
+            shifts.push(ray.t0);
+            if !ray.sendable {
+                far.push(i);
+            }
+        }
+        self.queue
+            .write_buffer(params, 0, &frame.params(batch.len() as u32, cull));
+        self.queue.write_buffer(input, 0, &as_bytes(&packed));
+        let bytes = batch.len() as u64 * RAY_BYTES;
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("torus-cull dispatch"),
+            });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("torus-cull pass"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, bind_group, &[]);
+            pass.dispatch_workgroups(batch.len().div_ceil(WORKGROUP) as u32, 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
+        self.queue.submit([encoder.finish()]);
+        let slice = staging.slice(..bytes);
+        let (tx, rx) = mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| GpuError::Readback(e.to_string()))?
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        {
+            let view = slice
+                .get_mapped_range()
+                .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+            let start = out.len();
+            for (record, &t0) in view.chunks_exact(RAY_BYTES as usize).zip(&shifts) {
+                let w: [f32; 8] = std::array::from_fn(|k| {
+                    f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+                });
+                out.push(shifted(verdict(w), t0));
+            }
+            for i in far {
+                out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
+            }
+        }
+        staging.unmap();
+        Ok(())
+    }
+
+    /// [`GpuIntersector::intersect`], finished on the host: every escalated ray is
+    /// answered by the f64 solver ([`crate::intersect()`]), so the hits and misses are
+    /// the f64 path's.
+    pub fn intersect_finished(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<F32Hit>, GpuError> {
+        let verdicts = self.intersect(torus, cull, rays)?;
+        Ok(verdicts
+            .into_iter()
+            .zip(rays)
+            .map(|(v, ray)| finish(v, torus, ray))
+            .collect())
+    }
+}
+
+/// One ray's answer: the GPU's verdict, or the f64 solver's where it escalated.
+fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
+    match verdict {
+        F32Verdict::Hit { t, normal } => F32Hit {
+            hit: Some(Hit { t, normal }),
+            escalated: false,
+        },
+        F32Verdict::Miss => F32Hit {
+            hit: None,
+            escalated: false,
+        },
+        F32Verdict::Escalate => F32Hit {
+            hit: intersect(torus, ray),
+            escalated: true,
+        },
+    }
+}
+
+/// A result record `(t, n.xyz, code, why, 0, 0)` as a verdict and, for an escalated ray,
+/// why; an unknown code escalates.
+fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
+    let normal = Vec3::new(w[1], w[2], w[3]);
+    if w[4] == 0.0 {
+        (F32Verdict::Miss, None)
+    } else if w[4] == 1.0 && w[0].is_finite() && normal.is_finite() {
+        (F32Verdict::Hit { t: w[0], normal }, None)
+    } else {
+        let why = match w[5] as u32 {
+            1 => Escalation::NonFiniteLine,
+            2 => Escalation::SolverUnsure,
+            3 => Escalation::MissNotProved,
+            4 => Escalation::EmptyBracket,
+            5 => Escalation::NoSignChange,
+            6 => Escalation::EarlierRootNotRuledOut,
+            7 => Escalation::TErrorTooLarge,
+            _ => Escalation::Unknown,
+        };
+        (F32Verdict::Escalate, Some(why))
+    }
+}
+
+/// A verdict for a ray whose origin the host moved `t0` along it: the ray's own t.
+fn shifted(
+    (verdict, why): (F32Verdict, Option<Escalation>),
+    t0: f64,
+) -> (F32Verdict, Option<Escalation>) {
+    match verdict {
+        F32Verdict::Hit { t, normal } if t0 != 0.0 => {
+            let t = (f64::from(t) + t0) as f32;
+            if t.is_finite() {
+                (F32Verdict::Hit { t, normal }, None)
+            } else {
+                (F32Verdict::Escalate, Some(Escalation::TErrorTooLarge))
+            }
+        }
+        _ => (verdict, why),
+    }
+}
+
+/// Why the kernel escalated a ray: the step of the certificate that did not go through.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
+pub enum Escalation {
+    /// The origin is more than 2²⁰·R from the centre: not sent to the kernel.
+    FarOrigin,
+    /// The line or its range is not finite in f32.
+    NonFiniteLine,
+    /// The quartic is not finite, or the solver flagged it (near-double resolvent root,
+    /// near-tangent factor, cube root out of range).
+    SolverUnsure,
+    /// No root found, but F > 0 over the range was not proved.
+    MissNotProved,
+    /// The bracket around the root is empty (the root at the range's ends, within their
+    /// error).
+    EmptyBracket,
+    /// The signed distance's sign change across the bracket was not proved (a tangent, an
+    /// origin inside the tube, or a line error as large as the bracket).
+    NoSignChange,
+    /// A root before the bracket was not ruled out (F > 0 not proved there).
+    EarlierRootNotRuledOut,
+    /// The reported t would not be within 1.9·10⁻⁴·(R + r) of the root.
+    TErrorTooLarge,
+    /// A code the host does not know.
+    Unknown,
+}
+
+impl Escalation {
+    /// The stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Escalation::FarOrigin => "far_origin",
+            Escalation::NonFiniteLine => "non_finite_line",
+            Escalation::SolverUnsure => "solver_unsure",
+            Escalation::MissNotProved => "miss_not_proved",
+            Escalation::EmptyBracket => "empty_bracket",
+            Escalation::NoSignChange => "no_sign_change",
+            Escalation::EarlierRootNotRuledOut => "earlier_root",
+            Escalation::TErrorTooLarge => "t_error",
+            Escalation::Unknown => "unknown",
+        }
+    }
+}
+
+/// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
+struct Frame {
+    rows: [Vec3; 3],
+    major: f32,
+    minor: f32,
+    center: glam::DVec3,
+    major_f64: f64,
+    outer: f64,
+}
+
+/// A ray as the kernel reads it, and what the host adds back.
+struct Packed {
+    /// `(o − c, t_min − t0, d, t_max − t0)`, the range clipped (see [`Frame::pack`]).
+    words: [f32; 8],
+    /// How far along the ray the uploaded origin is: the kernel's t plus this is the ray's.
+    t0: f64,
+    /// Within [`FAR_REL`]·R of the centre: the kernel may answer.
+    sendable: bool,
+}
+
+impl Frame {
+    fn of(torus: &Torus) -> Frame {
+        let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
+        let major_f64 = f64::from(torus.major_radius());
+        Frame {
+            rows: [m.x_axis, m.y_axis, m.z_axis],
+            major: torus.major_radius(),
+            minor: torus.minor_radius(),
+            center: torus.center().as_dvec3(),
+            major_f64,
+            outer: major_f64 + f64::from(torus.minor_radius()),
+        }
+    }
+
+    /// The uniform block: rows of M with R, r, r/R; 1/R; the count and the cull.
+    fn params(&self, count: u32, cull: GpuCull) -> Vec<u8> {
+        let rr = (f64::from(self.minor) / self.major_f64) as f32;
+        let inv_major = (1.0 / self.major_f64) as f32;
+        let floats: [f32; 16] = [
+            self.rows[0].x,
+            self.rows[0].y,
+            self.rows[0].z,
+            self.major,
+            self.rows[1].x,
+            self.rows[1].y,
+            self.rows[1].z,
+            self.minor,
+            self.rows[2].x,
+            self.rows[2].y,
+            self.rows[2].z,
+            rr,
+            inv_major,
+            0.0,
+            0.0,
+            0.0,
+        ];
+        let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
+        for f in floats {
+            bytes.extend_from_slice(&f.to_le_bytes());
+        }
+        for u in [count, cull.code(), 0, 0] {
+            bytes.extend_from_slice(&u.to_le_bytes());
+        }
+        bytes
+    }
+
+    /// A ray as the kernel reads it.
+    ///
+    /// The origin goes relative to the centre, `o − c` formed in f64 and rounded once
+    /// (the same value as an f32 subtraction on the device). An origin farther than
+    /// [`REBASE_REL`]·(R + r) first moves along its line to the foot point, `t0 = −(o −
+    /// c)·d/|d|²` (f64, as [`Torus::line_to_local`] does for the culls): the kernel's line
+    /// error grows with the origin's distance, and from there it is that of a near ray.
+    /// The range becomes `[t_min − t0, t_max − t0]`, clipped to `|t| ≤ T`, T = (|foot| +
+    /// 4(R + r))/|d| rounded up: no point beyond is within the bounding sphere, so no
+    /// root is lost, and the kernel's sums stay finite.
+    fn pack(&self, ray: &Ray) -> Packed {
+        let d = ray.dir().as_dvec3();
+        let rel = ray.origin().as_dvec3() - self.center;
+        let sendable = rel.length() <= FAR_REL * self.major_f64;
+        let len_sq = d.length_squared();
+        let t0 = if rel.length() > REBASE_REL * self.outer {
+            -rel.dot(d) / len_sq
+        } else {
+            0.0
+        };
+        let start = rel + d * t0;
+        let reach = (start.length() + 4.0 * self.outer) / len_sq.sqrt();
+        let limit = (reach * (1.0 + 1e-6)).min(f64::from(f32::MAX));
+        let t_min = (f64::from(ray.t_min()) - t0).clamp(-limit, limit) as f32;
+        let t_max = (f64::from(ray.t_max()) - t0).clamp(-limit, limit) as f32;
+        let (o, d) = (start.as_vec3(), ray.dir());
+        Packed {
+            words: [o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max],
+            t0,
+            sendable,
+        }
+    }
+}
+
+fn as_bytes(words: &[f32]) -> Vec<u8> {
+    words.iter().flat_map(|w| w.to_le_bytes()).collect()
+}

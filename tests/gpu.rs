@@ -1,0 +1,454 @@
+//! The WGSL kernel (`torus_cull::gpu`) against the f64 oracle, on whatever adapter wgpu
+//! finds (CI: Mesa's software Vulkan, lavapipe, from the Debian package
+//! `mesa-vulkan-drivers`). Without an adapter every test here prints one loud SKIPPED
+//! line and passes; the rest of `cargo test` does not depend on a GPU.
+//!
+//! Per family, for both GPU culls: no definite hit answered miss, no definite miss
+//! answered hit, every proved hit's t within 2·10⁻⁴·(R + r) + 4 ulp(t) (along the
+//! direction) of the oracle's first root; after `intersect_finished` (escalated rays
+//! answered in f64) the hits and misses equal the f64 path's. Families: the five
+//! workload generators at ν from 1.01 to 1000, the same lines seen from 10 to 10⁵·(R + r)
+//! away, and lines hugging the hole's edge and tangent to the four special circles at
+//! ±10⁻⁶·r, at random poses and scales. The escalation rate of each is printed.
+
+#![cfg(all(feature = "gpu", feature = "harness"))]
+
+mod common;
+
+use common::{family, pairs, pushed_back};
+use glam::DVec3;
+use rand::SeedableRng;
+use rand_pcg::Pcg64;
+use std::io::Write;
+use std::sync::OnceLock;
+use torus_cull::gpu::{GpuCull, GpuError, GpuIntersector};
+use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
+use torus_cull::harness::workload::Case;
+use torus_cull::harness::workload::adversarial::{
+    SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
+};
+use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
+
+/// The adapter, opened once for every test; `None` (after one loud line) without one.
+fn gpu() -> Option<&'static GpuIntersector> {
+    static GPU: OnceLock<Option<GpuIntersector>> = OnceLock::new();
+    GPU.get_or_init(|| match GpuIntersector::new() {
+        Ok(gpu) => {
+            let kind = if gpu.is_software() {
+                "software adapter: no GPU timing claimed"
+            } else {
+                "hardware adapter"
+            };
+            // Written to stderr directly: libtest captures println! of a passing test.
+            let _ = writeln!(
+                std::io::stderr(),
+                "GPU adapter: {} ({:?}, {:?}; {kind})",
+                gpu.adapter_name(),
+                gpu.device_type(),
+                gpu.backend()
+            );
+            Some(gpu)
+        }
+        Err(GpuError::NoAdapter(why)) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED: no GPU adapter; install the Debian package mesa-vulkan-drivers \
+                 (Mesa's software Vulkan) to run the GPU tests [{why}]"
+            );
+            None
+        }
+        Err(e) => panic!("GPU adapter found but unusable: {e}"),
+    })
+    .as_ref()
+}
+
+/// What one family found, for one cull.
+#[derive(Default)]
+struct Tally {
+    rays: usize,
+    band: usize,
+    escalated: usize,
+    cpu_escalated: usize,
+    hits: usize,
+    misses: usize,
+    worst: f64,
+    why: std::collections::BTreeMap<&'static str, usize>,
+    failures: Vec<String>,
+}
+
+impl Tally {
+    fn fail(&mut self, text: String) {
+        if self.failures.len() < 10 {
+            self.failures.push(text);
+        }
+    }
+
+    /// Runs `rays` on `torus` through the kernel with `cull` and checks every answer.
+    fn check(&mut self, gpu: &GpuIntersector, cull: GpuCull, torus: &Torus, rays: &[Ray]) {
+        let explained = gpu.explain(torus, cull, rays).expect("dispatch");
+        let mut verdicts = Vec::with_capacity(rays.len());
+        for (verdict, why) in explained {
+            if let Some(why) = why {
+                *self.why.entry(why.name()).or_default() += 1;
+            }
+            verdicts.push(verdict);
+        }
+        let finished = gpu.intersect_finished(torus, cull, rays).expect("dispatch");
+        assert_eq!(verdicts.len(), rays.len());
+        for ((ray, verdict), done) in rays.iter().zip(verdicts).zip(finished) {
+            self.rays += 1;
+            let query = Query::ray(torus, ray);
+            let label = query.classify();
+            let f64_hit = intersect(torus, ray);
+            // The CPU's certified f32 path on the same ray: both are proofs, so they never
+            // disagree on a proved answer.
+            let cpu = intersect_f32_certified(torus, ray);
+            if cpu == F32Verdict::Escalate {
+                self.cpu_escalated += 1;
+            }
+            match (verdict, cpu) {
+                (F32Verdict::Hit { .. }, F32Verdict::Miss)
+                | (F32Verdict::Miss, F32Verdict::Hit { .. }) => self.fail(format!(
+                    "{cull}: GPU {verdict:?}, CPU certified {cpu:?}: {ray:?} on {torus:?}"
+                )),
+                _ => {}
+            }
+            if label.class == OracleClass::Ambiguous {
+                self.band += 1;
+                if verdict == F32Verdict::Escalate {
+                    self.escalated += 1;
+                }
+                continue;
+            }
+            let definite_hit = label.class == OracleClass::Hit;
+            if done.hit.is_some() != f64_hit.is_some() {
+                self.fail(format!(
+                    "{cull}: finished {:?} (escalated {}), f64 {f64_hit:?}, oracle {label:?}: \
+                     {ray:?} on {torus:?}",
+                    done.hit, done.escalated
+                ));
+            }
+            match verdict {
+                F32Verdict::Escalate => self.escalated += 1,
+                F32Verdict::Miss => {
+                    self.misses += 1;
+                    if definite_hit {
+                        self.fail(format!(
+                            "{cull}: miss for a definite hit {label:?}: {ray:?} on {torus:?}"
+                        ));
+                    }
+                }
+                F32Verdict::Hit { t, normal } => {
+                    self.hits += 1;
+                    if !definite_hit {
+                        self.fail(format!(
+                            "{cull}: hit t = {t} for a definite miss {label:?}: {ray:?} on {torus:?}"
+                        ));
+                        continue;
+                    }
+                    let reference = reference_roots(&query)[0];
+                    let len = f64::from(ray.dir().length());
+                    let ulp = f64::from(t.abs().max(f32::MIN_POSITIVE)) * f64::from(f32::EPSILON);
+                    let err = (f64::from(t) - reference).abs() * len;
+                    let allowed = 2e-4 * f64::from(torus.outer_radius()) + 4.0 * ulp * len;
+                    self.worst = self.worst.max(err / f64::from(torus.outer_radius()));
+                    if err > allowed || err.is_nan() {
+                        self.fail(format!(
+                            "{cull}: t = {t} vs oracle {reference} (off by {:e}·(R + r)): \
+                             {ray:?} on {torus:?}",
+                            err / f64::from(torus.outer_radius())
+                        ));
+                    }
+                    if (normal.length() - 1.0).abs() >= 1e-3 || !normal.is_finite() {
+                        self.fail(format!("{cull}: normal {normal} not unit: {ray:?}"));
+                    }
+                }
+                _ => self.fail(format!("{cull}: unknown verdict {verdict:?}")),
+            }
+        }
+    }
+
+    fn report(&self, name: &str, cull: GpuCull) {
+        println!(
+            "{name:<24} {cull:<8} {:>7} rays: {:>6} proved hits, {:>6} proved misses, \
+             escalated {:>5.1} % (CPU f32 path {:>5.1} %; {} in the oracle's band), worst t \
+             error {:.1e}·(R + r)",
+            self.rays,
+            self.hits,
+            self.misses,
+            100.0 * self.escalated as f64 / self.rays.max(1) as f64,
+            100.0 * self.cpu_escalated as f64 / self.rays.max(1) as f64,
+            self.band,
+            self.worst,
+        );
+        let why: Vec<String> = self.why.iter().map(|(k, n)| format!("{k} {n}")).collect();
+        println!("    escalated because: {}", why.join(", "));
+        assert!(
+            self.failures.is_empty(),
+            "{name} ({cull}):\n{}",
+            self.failures.join("\n")
+        );
+    }
+}
+
+/// ν of the generator families (the hole needs ν ≥ 1.01).
+const NUS: [f64; 6] = [1.01, 1.5, 3.0, 10.0, 100.0, 1000.0];
+
+#[test]
+fn generators_near_and_far() {
+    let Some(gpu) = gpu() else { return };
+    for cull in GpuCull::ALL {
+        for back in [0.0f32, 10.0, 1e3, 1e5] {
+            let mut all = Tally::default();
+            let mut rates = Vec::new();
+            for case in Case::ALL {
+                let mut tally = Tally::default();
+                for nu in NUS {
+                    if nu < case.min_nu() {
+                        continue;
+                    }
+                    let batches = family(case, nu, 2000, 0x6E0 ^ nu.to_bits());
+                    for batch in &batches {
+                        let torus = batch.torus;
+                        let rays: Vec<Ray> = pairs(std::slice::from_ref(batch))
+                            .map(|(_, ray)| {
+                                if back == 0.0 {
+                                    *ray
+                                } else {
+                                    pushed_back(ray, back * torus.outer_radius())
+                                }
+                            })
+                            .collect();
+                        tally.check(gpu, cull, &torus, &rays);
+                    }
+                }
+                tally.report(&format!("{case} back {back:e}·(R+r)"), cull);
+                rates.push((case, tally.escalated as f64 / tally.rays.max(1) as f64));
+                all.rays += tally.rays;
+                all.escalated += tally.escalated;
+                all.hits += tally.hits;
+            }
+            println!(
+                "generators back {back:e}·(R+r), {cull}: {} rays, {} proved hits, escalated {:.1} %",
+                all.rays,
+                all.hits,
+                100.0 * all.escalated as f64 / all.rays.max(1) as f64
+            );
+            if back == 0.0 {
+                // Near origins: the kernel must prove most of the ordinary rays, or it
+                // saves nothing (hole and grazing rays are near misses and near tangents by
+                // design, and escalate far more: see the printed rates).
+                for (case, rate) in &rates {
+                    if matches!(case, Case::OuterBand | Case::Uniform | Case::Camera) {
+                        assert!(
+                            *rate < 0.35,
+                            "{cull}: {case} escalated {:.1} %",
+                            100.0 * rate
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A torus-frame line (point, unit direction, f64) as a world ray starting 3·(R + r)
+/// back along it.
+fn world_ray(torus: &Torus, point: DVec3, dir: DVec3) -> Option<Ray> {
+    let back = 3.0 * f64::from(torus.outer_radius());
+    let m = torus.to_local_rotation_f64().transpose();
+    let origin = torus.center().as_dvec3() + m * (point - dir * back);
+    Ray::new(origin.as_vec3(), (m * dir).as_vec3()).ok()
+}
+
+#[test]
+fn adversarial_lines() {
+    let Some(gpu) = gpu() else { return };
+    let mut rng = Pcg64::seed_from_u64(0x0006_B0AD);
+    for cull in GpuCull::ALL {
+        let mut hole = Tally::default();
+        let mut tangent: Vec<Tally> = SpecialCircle::ALL
+            .iter()
+            .map(|_| Tally::default())
+            .collect();
+        for nu in [1.01, 1.1, 2.0, 8.0, 100.0, 1000.0] {
+            for major in [1e-3f32, 1.0, 1e3] {
+                let torus = random_pose_torus(&mut rng, major, major / nu as f32);
+                let (big, small) = (
+                    f64::from(torus.major_radius()),
+                    f64::from(torus.minor_radius()),
+                );
+                let rays: Vec<Ray> = (0..400)
+                    .filter_map(|_| {
+                        let (p, d) = hole_edge_line(&mut rng, big, small);
+                        world_ray(&torus, p, d)
+                    })
+                    .collect();
+                hole.check(gpu, cull, &torus, &rays);
+                for (circle, tally) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
+                    let rays: Vec<Ray> = (0..200)
+                        .filter_map(|i| {
+                            let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
+                            let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
+                            world_ray(&torus, p, d)
+                        })
+                        .collect();
+                    tally.check(gpu, cull, &torus, &rays);
+                }
+            }
+        }
+        hole.report("hole_edge_line", cull);
+        for (circle, tally) in SpecialCircle::ALL.into_iter().zip(&tangent) {
+            tally.report(&format!("tangent ±1e-6 r {}", circle.name()), cull);
+        }
+    }
+}
+
+#[test]
+fn an_empty_batch_and_a_clear_hit() {
+    let Some(gpu) = gpu() else { return };
+    let torus = Torus::new(glam::Vec3::ZERO, glam::Vec3::Y, 4.0, 1.0).unwrap();
+    assert!(
+        gpu.intersect(&torus, GpuCull::None, &[])
+            .unwrap()
+            .is_empty()
+    );
+    let ray = Ray::new(glam::Vec3::new(4.0, 10.0, 0.0), glam::Vec3::NEG_Y).unwrap();
+    let verdict = gpu.intersect(&torus, GpuCull::Cychosz, &[ray]).unwrap()[0];
+    let F32Verdict::Hit { t, normal } = verdict else {
+        panic!("straight down onto the tube's top: {verdict:?}");
+    };
+    assert!((t - 9.0).abs() < 1e-3, "t = {t}");
+    assert!((normal - glam::Vec3::Y).length() < 1e-3, "normal {normal}");
+    let hole = Ray::new(glam::Vec3::new(0.5, 10.0, 0.0), glam::Vec3::NEG_Y).unwrap();
+    assert_eq!(
+        gpu.intersect(&torus, GpuCull::Cychosz, &[hole]).unwrap()[0],
+        F32Verdict::Miss
+    );
+}
+
+fn torus_cull(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(args)
+        .output()
+        .expect("run torus-cull")
+}
+
+/// `eval --exact gpu` answers every row as `--exact f32` does (both certified, escalated
+/// rays finished in f64): the same hits and misses, t within the two bounds.
+#[test]
+fn eval_exact_gpu_agrees_with_the_cpu_path() {
+    let Some(_) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    let mut csv = String::from("ox,oy,oz,dx,dy,dz\n");
+    for batch in family(Case::Uniform, 4.0, 300, 0x0E7A)
+        .iter()
+        .chain(&family(Case::Camera, 4.0, 300, 0x0E7B))
+    {
+        // eval's torus is the canonical one: the rays in its frame, then pushed back.
+        let m = batch.torus.to_local_rotation();
+        for ray in &batch.rays {
+            let o = batch.torus.point_to_local(ray.origin());
+            let d = m * ray.dir();
+            csv.push_str(&format!(
+                "{},{},{},{},{},{}\n",
+                o.x, o.y, o.z, d.x, d.y, d.z
+            ));
+        }
+    }
+    std::fs::write(&input, csv).unwrap();
+    let rows = |exact: &str| {
+        let out_path = dir.path().join(format!("{exact}.csv"));
+        let out = torus_cull(&[
+            "eval",
+            "--major",
+            "1",
+            "--minor",
+            "0.25",
+            "--rays",
+            input.to_str().unwrap(),
+            "--exact",
+            exact,
+            "--out",
+            out_path.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "eval --exact {exact}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(&out_path).unwrap();
+        assert!(
+            text.starts_with("index,oracle,margin,t_hit,escalated,"),
+            "{exact}"
+        );
+        text.lines()
+            .skip(1)
+            .map(|l| {
+                let f: Vec<&str> = l.split(',').collect();
+                (f[3].parse::<f64>().ok(), f[4] == "1")
+            })
+            .collect::<Vec<_>>()
+    };
+    let (gpu_rows, cpu_rows) = (rows("gpu"), rows("f32"));
+    assert_eq!(gpu_rows.len(), 600);
+    assert_eq!(gpu_rows.len(), cpu_rows.len());
+    let escalated = gpu_rows.iter().filter(|r| r.1).count();
+    for (i, ((g, _), (c, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
+        assert_eq!(g.is_some(), c.is_some(), "row {i}: gpu {g:?}, f32 {c:?}");
+        if let (Some(g), Some(c)) = (g, c) {
+            assert!(
+                (g - c).abs() <= 4e-4 * 1.25 + 1e-5 * c.abs(),
+                "row {i}: {g} vs {c}"
+            );
+        }
+    }
+    println!("eval --exact gpu: {escalated} of 600 rows escalated");
+}
+
+/// `time --device gpu` writes Mrays/s per cull as estimates, with the adapter in
+/// meta.device (and says so when the adapter is the CPU).
+#[test]
+fn time_device_gpu_names_the_adapter() {
+    let Some(gpu) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("time.json");
+    let out = torus_cull(&[
+        "time",
+        "--device",
+        "gpu",
+        "--workload",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/workloads/quick.json"),
+        "--nu",
+        "2",
+        "--seconds",
+        "0.5",
+        "--out",
+        out_path.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("Mrays/s"), "{stdout}");
+    assert!(stdout.contains(gpu.adapter_name()), "{stdout}");
+    let results = torus_cull::harness::results::Results::load(&out_path).unwrap();
+    let device = results.meta.device.expect("meta.device");
+    assert!(device.contains(gpu.adapter_name()), "{device}");
+    assert_eq!(
+        device.contains("no GPU timing claimed"),
+        gpu.is_software(),
+        "{device}"
+    );
+    // Five cases at one ν, two culls.
+    assert_eq!(results.estimates.len(), 10);
+    assert!(
+        results
+            .estimates
+            .iter()
+            .all(|e| e.benchmark.starts_with("gpu_ns-") && e.ns_per_element > 0.0)
+    );
+}
