@@ -87,7 +87,7 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
 };
-pub use intersect::{DHit, Hit, TorusRay, intersect};
+pub use intersect::{DHit, Hit, TorusRay, intersect, occluded};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.

@@ -11,7 +11,10 @@
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
-use torus_cull::{CullBounds, CullKind, DRay, Ray, Torus, intersect, intersect_culled};
+use torus_cull::{
+    CullBounds, CullKind, DRay, F32Verdict, Ray, Torus, intersect, intersect_culled, intersect_f32,
+    intersect_f32_certified,
+};
 
 /// Floats by bit pattern: every class of f32 equally likely to come up as any other.
 fn any_f32() -> impl Strategy<Value = f32> {
@@ -112,6 +115,45 @@ proptest! {
         let d = if aim { torus.center().as_dvec3() - o } else { d };
         if let Ok(ray) = DRay::new(o, d) {
             check(&torus, &ray, |h| (h.t, h.normal), (0.0, f64::INFINITY))?;
+        }
+    }
+
+    /// The certified f32 path on any ray the constructor accepts: no panic; a proved hit
+    /// lies in range with a unit normal, and agrees with the f64 path (a proof is a proof);
+    /// what f32 cannot prove comes back escalated with the f64 answer.
+    #[test]
+    fn certified_f32_path_on_rays_of_any_bits(
+        torus in torus(), o in vec3(), d in vec3(), aim in any::<bool>(),
+    ) {
+        let d = if aim { torus.center() - o } else { d };
+        if let Ok(ray) = Ray::new(o, d) {
+            match intersect_f32_certified(&torus, &ray) {
+                F32Verdict::Hit { t, normal } => {
+                    prop_assert!(t.is_finite() && t >= ray.t_min() && t <= ray.t_max(), "t = {t}");
+                    prop_assert!((normal.length() - 1.0).abs() < 1e-3, "{normal}");
+                    prop_assert!(intersect(&torus, &ray).is_some(), "f32 proved a hit f64 misses");
+                }
+                F32Verdict::Miss => {
+                    prop_assert!(intersect(&torus, &ray).is_none(), "f32 proved a miss f64 hits");
+                }
+                _ => {
+                    let finished = intersect_f32(&torus, &ray);
+                    prop_assert!(finished.escalated);
+                    prop_assert_eq!(finished.hit, intersect(&torus, &ray));
+                }
+            }
+        }
+    }
+
+    /// Every cull's raw `keeps` on any bit patterns of origin and direction (not through a
+    /// validated ray: a renderer may pass a raw `Vec3`): no panic, no integer wrap (the
+    /// exponent arithmetic of the culls' rescaling is clamped; run this file in a debug
+    /// build to check the wrap too).
+    #[test]
+    fn raw_cull_keeps_takes_any_bits(torus in torus(), o in vec3(), d in vec3()) {
+        let bounds = CullBounds::of(&torus);
+        for cull in CullKind::TIMED {
+            let _ = cull.keeps(&bounds, o, d);
         }
     }
 

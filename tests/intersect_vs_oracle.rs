@@ -151,3 +151,56 @@ fn degenerate_far_lines_never_hit() {
     );
     assert!(checked > 50_000);
 }
+
+/// An origin inside the tube: the hit is where the ray leaves the solid (the first root at
+/// or after t_min, the oracle's too), with the outward normal there, along the ray; and
+/// `occluded` says the same as `intersect` on every ray.
+#[test]
+fn an_origin_inside_the_tube_hits_where_the_ray_leaves() {
+    use glam::Vec3;
+    use rand::{RngExt, SeedableRng};
+    use torus_cull::harness::oracle::{Query, reference_roots};
+    use torus_cull::{Ray, Torus, intersect, occluded};
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(23);
+    for nu in [1.5f32, 4.0, 100.0] {
+        let torus = Torus::canonical(1.0, 1.0 / nu).unwrap();
+        let r = 1.0 / nu;
+        for _ in 0..2000 {
+            // A point well inside the tube, any direction.
+            let (phi, theta) = (
+                rng.random_range(0.0..6.283f32),
+                rng.random_range(0.0..6.283f32),
+            );
+            let depth = r * rng.random_range(0.0..0.9f32);
+            let o = Vec3::new(phi.cos(), 0.0, phi.sin())
+                + Vec3::new(
+                    theta.cos() * phi.cos(),
+                    theta.sin(),
+                    theta.cos() * phi.sin(),
+                ) * depth;
+            let d = Vec3::new(
+                rng.random_range(-1.0..1.0f32),
+                rng.random_range(-1.0..1.0f32),
+                rng.random_range(-1.0..1.0f32),
+            );
+            let Ok(ray) = Ray::new(o, d) else { continue };
+            let hit = intersect(&torus, &ray).expect("a ray from inside always leaves the tube");
+            let first = reference_roots(&Query::ray(&torus, &ray))[0];
+            assert!(
+                (f64::from(hit.t) - first).abs() < 1e-4 * f64::from(1.0 + r),
+                "{} vs {first}",
+                hit.t
+            );
+            assert!(
+                hit.normal.dot(ray.dir()) > 0.0,
+                "the normal points along the leaving ray"
+            );
+            assert!(occluded(&torus, &ray));
+            let short = ray.with_t_max(hit.t * 0.5);
+            assert_eq!(
+                occluded(&torus, &short),
+                intersect(&torus, &short).is_some()
+            );
+        }
+    }
+}

@@ -242,14 +242,19 @@ impl<S: Simd> F32s<S> {
     }
 
     /// `self` times the power of two 2^(127 − e), e the biased exponent of `exp_of`:
-    /// the integer half of [`crate::cull`]'s `rescaled` (exact).
+    /// the integer half of [`crate::cull`]'s `rescaled` (exact). An infinite or NaN
+    /// `exp_of` (e = 255) is taken as e = 254 (factor 2⁻¹²⁷ → 1: `self` unchanged), so the
+    /// exponent arithmetic never wraps whatever the input.
     #[inline(always)]
     pub(crate) fn times_inverse_exponent(self, exp_of: Self) -> Self {
         let s = self.s;
         let bits = s.transmute_u32s_f32s(exp_of.v);
-        let exponent = s.and_u32s(
-            s.wrapping_dyn_shr_u32s(bits, s.splat_u32s(23)),
-            s.splat_u32s(0xff),
+        let exponent = s.min_u32s(
+            s.and_u32s(
+                s.wrapping_dyn_shr_u32s(bits, s.splat_u32s(23)),
+                s.splat_u32s(0xff),
+            ),
+            s.splat_u32s(254),
         );
         let scale_bits =
             s.wrapping_dyn_shl_u32s(s.sub_u32s(s.splat_u32s(254), exponent), s.splat_u32s(23));

@@ -236,6 +236,12 @@ fn intersect_reduced<const CHECKED: bool>(
 /// Always solves the quartic in f64 (see the module docs); the normal is the unit outward
 /// normal in world space.
 ///
+/// **An origin inside the tube** (a ray that starts in the solid, or a secondary ray whose
+/// origin rounded to the inside): the nearest root at or after `t_min` is where the ray
+/// *leaves* the solid, and that is the hit, with the outward normal there (pointing along
+/// the ray). A renderer that wants to skip the surface its ray starts on sets `t_min` to a
+/// small ε. `tests/intersect_vs_oracle.rs` checks it.
+///
 /// ```
 /// use glam::DVec3;
 /// use torus_cull::{DRay, Torus, intersect};
@@ -261,6 +267,35 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     )?;
     // The rotation is orthonormal: its transpose is its inverse.
     R::hit(t, torus.to_local_rotation_f64().transpose() * n)
+}
+
+/// Whether the ray meets the torus at some `t ∈ [t_min, t_max]`: a shadow ray's question.
+/// The same solve as [`intersect()`] (so never a different answer), with the hit's normal
+/// and world transform left out.
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::{Ray, Torus, occluded};
+/// let torus = Torus::canonical(4.0, 1.0)?;
+/// let to_light = Ray::with_range(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y, 0.0, 20.0)?;
+/// assert!(occluded(&torus, &to_light));
+/// assert!(!occluded(&torus, &to_light.with_t_max(8.5))); // the light is above the tube
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[inline]
+#[must_use]
+pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
+    let (o, d) = ray.local_f64(torus);
+    let (t_min, t_max) = ray.range_f64();
+    intersect_reduced::<false>(
+        f64::from(torus.major_radius()),
+        f64::from(torus.minor_radius()),
+        o,
+        d,
+        t_min,
+        t_max,
+    )
+    .is_some_and(|(t, n)| R::hit(t, n).is_some())
 }
 
 #[cfg(test)]
