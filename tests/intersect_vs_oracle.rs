@@ -168,8 +168,8 @@ fn an_origin_inside_the_tube_hits_where_the_ray_leaves() {
         for _ in 0..2000 {
             // A point well inside the tube, any direction.
             let (phi, theta) = (
-                rng.random_range(0.0..6.283f32),
-                rng.random_range(0.0..6.283f32),
+                rng.random_range(0.0..std::f32::consts::TAU),
+                rng.random_range(0.0..std::f32::consts::TAU),
             );
             let depth = r * rng.random_range(0.0..0.9f32);
             let o = Vec3::new(phi.cos(), 0.0, phi.sin())
