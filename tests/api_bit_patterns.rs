@@ -146,9 +146,13 @@ proptest! {
     }
 
     /// Every cull's raw `keeps` on any bit patterns of origin and direction (not through a
-    /// validated ray: a renderer may pass a raw `Vec3`): no panic, no integer wrap (the
-    /// exponent arithmetic of the culls' rescaling is clamped; run this file in a debug
-    /// build to check the wrap too).
+    /// validated ray: a renderer may pass a raw `Vec3`): no panic, in release or debug
+    /// (`RUST_MIN_STACK=268435456 cargo test --test api_bit_patterns raw_cull`: the
+    /// unoptimized lane code needs a large stack). pulp's integer lanes wrap rather than
+    /// panic, so the rescaling's exponent is clamped in the code (an infinite component
+    /// used to make the factor 2^(254 − 255 wrapped) = −∞); a non-finite line is then
+    /// rejected by the culls that look at the direction (it has no hit: `Ray::new`
+    /// refuses it).
     #[test]
     fn raw_cull_keeps_takes_any_bits(torus in torus(), o in vec3(), d in vec3()) {
         let bounds = CullBounds::of(&torus);
