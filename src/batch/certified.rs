@@ -129,7 +129,6 @@ fn foot_points<S: Simd>(
     out: &mut F32Answers,
 ) -> u64 {
     let lanes = S::F64_LANES;
-    let col = &rays.columns;
     let mut wide = [[0.0f64; BLOCK]; 8];
     let mut far = 0u64;
     macro_rules! c {
@@ -139,21 +138,7 @@ fn foot_points<S: Simd>(
     }
     for k in (0..live).step_by(lanes) {
         let at = base + k..base + k + lanes;
-        macro_rules! load {
-            ($j:expr) => {
-                F64s::load(s, &col[$j][at.clone()])
-            };
-        }
-        let origin = DVec3s {
-            x: load!(0),
-            y: load!(1),
-            z: load!(2),
-        };
-        let dir = DVec3s {
-            x: load!(3),
-            y: load!(4),
-            z: load!(5),
-        };
+        let (origin, dir, t_min, t_max) = rays.lanes(s, at.start);
         let o = (origin - DVec3s::splat(s, frame.center)).rotated(&frame.to_local);
         let d = dir.rotated(&frame.to_local);
         let inv_major = c!(frame.inv_major);
@@ -165,8 +150,8 @@ fn foot_points<S: Simd>(
         } = foot_line(o, d, inv_major);
         let len = c!(1.0) / inv_len;
         let (min, max) = (c!(-4.0), c!(4.0));
-        let lo = ((load!(6) * len + s_) * inv_major).max(min).min(max);
-        let hi = ((load!(7) * len + s_) * inv_major).max(min).min(max);
+        let lo = ((t_min * len + s_) * inv_major).max(min).min(max);
+        let hi = ((t_max * len + s_) * inv_major).max(min).min(max);
         let reach = o.dot(o) * inv_major * inv_major;
         far |= (!reach.le(c!(FAR_SCALED * FAR_SCALED))).bits() << k;
         for (j, v) in [q.x, q.y, q.z, dh.x, dh.y, dh.z, lo, hi]

@@ -12,6 +12,7 @@ use super::lanes::{F64s, M64s};
 use super::lines::BLOCK;
 use super::quartic::nearest::nearest_root;
 pub(crate) use super::vec3s::DVec3s;
+use super::vec3s::V3;
 use crate::intersect::reduce::FootLine;
 use crate::intersect::{CHORD_SLACK, coefficients, foot_line, normal};
 use crate::{Ray, Torus};
@@ -63,6 +64,21 @@ impl RaysF64 {
 
     pub(crate) fn len(&self) -> usize {
         self.len
+    }
+
+    /// Rays `at..at + F64_LANES` as lanes: origin, direction, t_min, t_max.
+    #[inline(always)]
+    pub(crate) fn lanes<S: Simd>(
+        &self,
+        s: S,
+        at: usize,
+    ) -> (DVec3s<S>, DVec3s<S>, F64s<S>, F64s<S>) {
+        let at = at..at + S::F64_LANES;
+        let [ox, oy, oz, dx, dy, dz, lo, hi] = self
+            .columns
+            .each_ref()
+            .map(|c| F64s::load(s, &c[at.clone()]));
+        (V3::new(ox, oy, oz), V3::new(dx, dy, dz), lo, hi)
     }
 
     pub(crate) fn padded(&self) -> usize {
@@ -149,28 +165,13 @@ impl WithSimd for Kernel<'_> {
     fn with_simd<S: Simd>(self, s: S) {
         let lanes = S::F64_LANES;
         let Kernel { frame, rays, out } = self;
-        let col = &rays.columns;
         for block in 0..rays.padded() / BLOCK {
             let (mut hit_bits, mut cold_bits) = (0u64, 0u64);
             // The last block stops at the register holding the last ray.
             for k in (0..BLOCK.min(rays.len() - block * BLOCK)).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
-                macro_rules! load {
-                    ($j:expr) => {
-                        F64s::load(s, &col[$j][at.clone()])
-                    };
-                }
-                let origin = DVec3s {
-                    x: load!(0),
-                    y: load!(1),
-                    z: load!(2),
-                };
-                let dir = DVec3s {
-                    x: load!(3),
-                    y: load!(4),
-                    z: load!(5),
-                };
-                let lane = intersect_lane(s, &frame, origin, dir, load!(6), load!(7));
+                let (origin, dir, t_min, t_max) = rays.lanes(s, at.start);
+                let lane = intersect_lane(s, &frame, origin, dir, t_min, t_max);
                 lane.t.store(&mut out.t[at.clone()]);
                 let [nx, ny, nz] = &mut out.normal;
                 lane.normal.x.store(&mut nx[at.clone()]);

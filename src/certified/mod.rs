@@ -104,7 +104,13 @@ pub fn intersect_f32_certified(torus: &Torus, ray: &Ray) -> F32Verdict {
 /// otherwise. Never misses a hit the f64 path finds.
 #[must_use]
 pub fn intersect_f32(torus: &Torus, ray: &Ray) -> F32Hit {
-    match intersect_f32_certified(torus, ray) {
+    finish(intersect_f32_certified(torus, ray), torus, ray)
+}
+
+/// One ray's answer from a verdict: the proved one, or the f64 solver's where f32 (on the
+/// CPU or the GPU) escalated.
+pub(crate) fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
+    match verdict {
         F32Verdict::Hit { t, normal } => F32Hit {
             hit: Some(Hit { t, normal }),
             escalated: false,

@@ -49,8 +49,7 @@
 //! ```
 
 use crate::certified::{F32Hit, F32Verdict};
-use crate::intersect::Hit;
-use crate::{Ray, Torus, intersect};
+use crate::{Ray, Torus};
 use glam::Vec3;
 use std::fmt;
 use std::sync::{Mutex, mpsc};
@@ -478,26 +477,8 @@ impl GpuIntersector {
         Ok(verdicts
             .into_iter()
             .zip(rays)
-            .map(|(v, ray)| finish(v, torus, ray))
+            .map(|(v, ray)| crate::certified::finish(v, torus, ray))
             .collect())
-    }
-}
-
-/// One ray's answer: the GPU's verdict, or the f64 solver's where it escalated.
-fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
-    match verdict {
-        F32Verdict::Hit { t, normal } => F32Hit {
-            hit: Some(Hit { t, normal }),
-            escalated: false,
-        },
-        F32Verdict::Miss => F32Hit {
-            hit: None,
-            escalated: false,
-        },
-        F32Verdict::Escalate => F32Hit {
-            hit: intersect(torus, ray),
-            escalated: true,
-        },
     }
 }
 
