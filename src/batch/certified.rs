@@ -102,12 +102,16 @@ impl WithSimd for Kernel<'_> {
             proof,
             out,
         } = self;
+        // Block scratch, reused from block to block (no clearing: a block writes every
+        // lane it reads, but for the last register's tail past the last ray, whose
+        // answers are never read).
+        let mut columns: Columns = [[0.0; BLOCK]; 8];
+        let mut wide = [[0.0f64; BLOCK]; 8];
         for block in 0..rays.padded() / BLOCK {
             let base = block * BLOCK;
             // The last block stops at the register holding the last ray.
             let live = BLOCK.min(rays.len() - base);
-            let mut columns: Columns = [[0.0; BLOCK]; 8];
-            let far = foot_points(s, &frame, rays, base, live, &mut columns, out);
+            let far = foot_points(s, &frame, rays, (base, live), &mut wide, &mut columns, out);
             let (hit, miss) = f32_stage(s, &frame, &to_world, &columns, base, live, proof, out);
             out.hit[block] = hit & !far;
             out.miss[block] = miss & !far;
@@ -123,13 +127,12 @@ fn foot_points<S: Simd>(
     s: S,
     frame: &TorusF64,
     rays: &RaysF64,
-    base: usize,
-    live: usize,
+    (base, live): (usize, usize),
+    wide: &mut [[f64; BLOCK]; 8],
     columns: &mut Columns,
     out: &mut F32Answers,
 ) -> u64 {
     let lanes = S::F64_LANES;
-    let mut wide = [[0.0f64; BLOCK]; 8];
     let mut far = 0u64;
     macro_rules! c {
         ($x:expr) => {
@@ -163,7 +166,7 @@ fn foot_points<S: Simd>(
         s_.store(&mut out.s[at.clone()]);
         inv_len.store(&mut out.inv_len[at]);
     }
-    for (narrow, wide) in columns.iter_mut().zip(&wide) {
+    for (narrow, wide) in columns.iter_mut().zip(wide.iter()) {
         for (n, w) in narrow.iter_mut().zip(wide) {
             *n = *w as f32;
         }
