@@ -239,14 +239,13 @@ fn inflection<R: Real>(f: &Quartic<R>) -> R {
 #[inline(always)]
 fn positive<R: Real>(
     line: &ScaledLine<R>,
-    f: &Quartic<R>,
+    (f, w): (&Quartic<R>, R),
     active: R::Mask,
     (lo, at_lo): (R, &PointBound<R>),
     (hi, at_hi): (R, &PointBound<R>),
 ) -> R::Mask {
     let (b, c2, c1) = (&f.bounds, f.c2, f.c1);
     let zero = lo.splat(0.0);
-    let w = inflection(f);
     let minus_w = w.negate();
     let at_minus_w = point_bound(line, b, minus_w);
     let at_w = point_bound(line, b, w);
@@ -361,6 +360,8 @@ struct Stage<R: Real> {
     at_left: PointBound<R>,
     at_lo: PointBound<R>,
     sign_change: R::Mask,
+    /// [`inflection`]'s w, for the full proof's pieces.
+    w: R,
 }
 
 /// The common case, cheaply (three point evaluations): a hit whose range start and
@@ -406,6 +407,7 @@ fn quick<R: Real>(line: &ScaledLine<R>) -> (Decision<R>, Stage<R>) {
             at_left,
             at_lo,
             sign_change,
+            w,
         },
     )
 }
@@ -431,7 +433,7 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
     let undecided = !(quick.hit | quick.miss);
     let clear = positive(
         line,
-        f,
+        (f, stage.w),
         undecided,
         (f.lo, &stage.at_lo),
         (hit_range_hi, &at_hi),
