@@ -14,7 +14,7 @@ use super::certified::{F32Answers, Proof, certify_lanes};
 use super::cull::{NoBatchForm, cull_batch};
 use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::isa::Dispatch;
-use super::lines::{BLOCK, Lines};
+use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
 use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
 use glam::Vec3;
@@ -173,13 +173,11 @@ impl Wavefront {
             });
         }
         // Escalated: neither proved. The bits past `len` are padding, never read.
-        for (block, (&hit, &miss)) in a.hit.iter().zip(&a.miss).enumerate() {
-            let open = !(hit | miss);
-            for j in set_bits(&[open], len.saturating_sub(block * BLOCK).min(BLOCK)) {
-                let i = self.survivors.index[block * BLOCK + j];
-                hits[i] = intersect(torus, &rays[i]);
-                stats.escalated += 1;
-            }
+        let open: Vec<u64> = a.hit.iter().zip(&a.miss).map(|(h, m)| !(h | m)).collect();
+        for j in set_bits(&open, len) {
+            let i = self.survivors.index[j];
+            hits[i] = intersect(torus, &rays[i]);
+            stats.escalated += 1;
         }
         stats.hits = hits.iter().filter(|h| h.is_some()).count();
         Ok(stats)
