@@ -12,15 +12,14 @@
 //! A lane that proves neither hit nor miss is flagged, and the wavefront gives that ray to
 //! the f64 [`crate::intersect()`].
 
-use super::intersect::{DVec3s, RaysF64, TorusF64};
+use super::intersect::{RaysF64, TorusF64};
 use super::lanes::{F32s, F64s};
 use super::lines::BLOCK;
 use crate::Torus;
-use crate::batch::real::Real;
+use crate::batch::real::sc;
 use crate::certified::certificate::{ScaledLine, V3, decide, normal_at, solve_uncertified};
-use crate::certified::line::{FAR_SCALED, LINE_ABS, LINE_REL};
-use crate::intersect::foot_line;
-use crate::intersect::reduce::FootLine;
+use crate::certified::line::{LINE_ABS, LINE_REL, scale};
+use crate::intersect::reduce::t_at;
 use glam::Mat3;
 use pulp::{Simd, WithSimd};
 
@@ -41,7 +40,8 @@ impl F32Answers {
     /// The ray parameter of lane `j`'s root.
     #[inline]
     pub(crate) fn t(&self, major: f64, j: usize) -> f64 {
-        (f64::from(self.u[j]) * major - self.s[j]) * self.inv_len[j]
+        let u = f64::from(self.u[j]);
+        t_at(sc(u), sc(major), sc(self.s[j]), sc(self.inv_len[j])).v
     }
 }
 
@@ -134,37 +134,21 @@ fn foot_points<S: Simd>(
 ) -> u64 {
     let lanes = S::F64_LANES;
     let mut far = 0u64;
-    macro_rules! c {
-        ($x:expr) => {
-            F64s::splat(s, $x)
-        };
-    }
     for k in (0..live).step_by(lanes) {
         let at = base + k..base + k + lanes;
         let (origin, dir, t_min, t_max) = rays.lanes(s, at.start);
-        let o = (origin - DVec3s::splat(s, frame.center)).rotated(&frame.to_local);
-        let d = dir.rotated(&frame.to_local);
-        let inv_major = c!(frame.inv_major);
-        let FootLine {
-            dh,
-            p: q,
-            s: s_,
-            inv_len,
-        } = foot_line(o, d, inv_major);
-        let len = c!(1.0) / inv_len;
-        let (min, max) = (c!(-4.0), c!(4.0));
-        let lo = ((t_min * len + s_) * inv_major).max(min).min(max);
-        let hi = ((t_max * len + s_) * inv_major).max(min).min(max);
-        let reach = o.dot(o) * inv_major * inv_major;
-        far |= (!reach.le(c!(FAR_SCALED * FAR_SCALED))).bits() << k;
-        for (j, v) in [q.x, q.y, q.z, dh.x, dh.y, dh.z, lo, hi]
+        let (o, d) = frame.line_to_local(origin, dir);
+        let line = scale(o, d, F64s::splat(s, frame.tube.inv_major), t_min, t_max);
+        far |= line.far.bits() << k;
+        let (q, dh) = (line.q, line.dh);
+        for (j, v) in [q.x, q.y, q.z, dh.x, dh.y, dh.z, line.lo, line.hi]
             .into_iter()
             .enumerate()
         {
             v.store(&mut wide[j][k..k + lanes]);
         }
-        s_.store(&mut out.s[at.clone()]);
-        inv_len.store(&mut out.inv_len[at]);
+        line.s.store(&mut out.s[at.clone()]);
+        line.inv_len.store(&mut out.inv_len[at]);
     }
     for (narrow, wide) in columns.iter_mut().zip(wide.iter()) {
         for (n, w) in narrow.iter_mut().zip(wide) {
@@ -233,7 +217,7 @@ fn load_line<S: Simd>(s: S, frame: &TorusF64, columns: &Columns, k: usize) -> Sc
             y: load!(4),
             z: load!(5),
         },
-        rr: F32s::splat(s, frame.minor_rel as f32),
+        rr: F32s::splat(s, frame.tube.minor_rel as f32),
         lo: load!(6),
         hi: load!(7),
         line_rel: F32s::splat(s, LINE_REL as f32),

@@ -1,9 +1,9 @@
 //! The exact intersection over f64 lanes: [`crate::intersect()`] for many rays at once.
 //!
-//! Every step is the scalar code's, in the same order (see `src/intersect.rs`): the world
-//! ray to the torus frame in f64, the foot point and the scale 1/R, the quartic's
-//! coefficients in their non-cancelling forms, the bounding-sphere chord and range tests,
-//! the nearest root (the batch solver, [`super::quartic`]), and the normal. A lane whose
+//! One driver for both: `crate::intersect::nearest_hit` (the foot point and the scale 1/R,
+//! the range and the bounding sphere's chord, the quartic's coefficients in their
+//! non-cancelling forms, the nearest root, `t` and the normal), here on f64 lanes with the
+//! lane solver ([`super::quartic`]) after the world-to-torus transform. A lane whose
 //! quartic needs the scalar solver's careful paths is flagged, and the wavefront runs the
 //! scalar [`crate::intersect()`] on that ray instead, so tangent rays get exactly the
 //! scalar answer.
@@ -13,8 +13,7 @@ use super::lines::BLOCK;
 use super::quartic::nearest::nearest_root;
 pub(crate) use super::vec3s::DVec3s;
 use super::vec3s::V3;
-use crate::intersect::reduce::FootLine;
-use crate::intersect::{CHORD_SLACK, coefficients, foot_line, normal};
+use crate::intersect::nearest_hit::{NearestRoot, Tube, nearest_hit};
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
@@ -123,32 +122,36 @@ pub(crate) struct TorusF64 {
     pub(crate) center: DVec3,
     pub(crate) to_local: DMat3,
     pub(crate) to_world: DMat3,
-    pub(crate) major: f64,
-    /// The per-torus constants of `reduce` and the chord test, computed once in f64
-    /// exactly as the scalar code computes them per ray: 1/R, r/R, 1 − (r/R)², 1 + r/R.
-    pub(crate) inv_major: f64,
-    pub(crate) minor_rel: f64,
-    k: f64,
-    outer: f64,
+    /// The per-torus constants the scalar path computes per ray, computed once.
+    pub(crate) tube: Tube,
 }
 
 impl TorusF64 {
     pub(crate) fn of(torus: &Torus) -> TorusF64 {
         let to_local = torus.to_local_rotation_f64();
-        let (major, minor) = (
-            f64::from(torus.major_radius()),
-            f64::from(torus.minor_radius()),
-        );
         TorusF64 {
             center: torus.center().as_dvec3(),
             to_local,
             to_world: to_local.transpose(),
-            major,
-            inv_major: 1.0 / major,
-            minor_rel: minor * (1.0 / major),
-            k: 1.0 - (minor * (1.0 / major)) * (minor * (1.0 / major)),
-            outer: 1.0 + minor / major,
+            tube: Tube::new(
+                f64::from(torus.major_radius()),
+                f64::from(torus.minor_radius()),
+            ),
         }
+    }
+
+    /// `Torus::line_to_local_f64` over lanes: origins and directions in the torus frame.
+    #[inline(always)]
+    pub(crate) fn line_to_local<S: Simd>(
+        &self,
+        origin: DVec3s<S>,
+        dir: DVec3s<S>,
+    ) -> (DVec3s<S>, DVec3s<S>) {
+        let s = origin.x.s;
+        (
+            (origin - DVec3s::splat(s, self.center)).rotated(&self.to_local),
+            dir.rotated(&self.to_local),
+        )
     }
 }
 
@@ -171,12 +174,17 @@ impl WithSimd for Kernel<'_> {
             for k in (0..BLOCK.min(rays.len() - block * BLOCK)).step_by(lanes) {
                 let at = block * BLOCK + k..block * BLOCK + k + lanes;
                 let (origin, dir, t_min, t_max) = rays.lanes(s, at.start);
-                let lane = intersect_lane(s, &frame, origin, dir, t_min, t_max);
+                let (o, d) = frame.line_to_local(origin, dir);
+                // No lane with a hit or a fallback: the stale answers are never read.
+                let Some(lane) = nearest_hit::<_, Lanes>(&frame.tube, o, d, t_min, t_max) else {
+                    continue;
+                };
                 lane.t.store(&mut out.t[at.clone()]);
+                let normal = lane.normal.rotated(&frame.to_world);
                 let [nx, ny, nz] = &mut out.normal;
-                lane.normal.x.store(&mut nx[at.clone()]);
-                lane.normal.y.store(&mut ny[at.clone()]);
-                lane.normal.z.store(&mut nz[at.clone()]);
+                normal.x.store(&mut nx[at.clone()]);
+                normal.y.store(&mut ny[at.clone()]);
+                normal.z.store(&mut nz[at.clone()]);
                 hit_bits |= lane.hit.bits() << k;
                 cold_bits |= lane.fallback.bits() << k;
             }
@@ -186,63 +194,18 @@ impl WithSimd for Kernel<'_> {
     }
 }
 
-/// One register of rays' answers.
-struct Lane<S: Simd> {
-    t: F64s<S>,
-    normal: DVec3s<S>,
-    hit: M64s<S>,
-    fallback: M64s<S>,
-}
+/// The lane solver: the careful one's common path, flagging the rest.
+struct Lanes;
 
-/// [`crate::intersect()`], lane for lane (with the batch solver).
-#[inline(always)]
-fn intersect_lane<S: Simd>(
-    s: S,
-    frame: &TorusF64,
-    origin: DVec3s<S>,
-    dir: DVec3s<S>,
-    t_min: F64s<S>,
-    t_max: F64s<S>,
-) -> Lane<S> {
-    // Macros, not closures: a closure that LLVM leaves outlined would run without the
-    // SIMD target features and call every intrinsic out of line.
-    macro_rules! c {
-        ($x:expr) => {
-            F64s::splat(s, $x)
-        };
-    }
-    // `Torus::line_to_local_f64`, then `reduce` (its shared steps).
-    let o = (origin - DVec3s::splat(s, frame.center)).rotated(&frame.to_local);
-    let d = dir.rotated(&frame.to_local);
-    let major = c!(frame.major);
-    let inv_r = c!(frame.inv_major);
-    let FootLine {
-        dh,
-        p,
-        s: s_,
-        inv_len,
-    } = foot_line(o, d, inv_r);
-    let k = c!(frame.k);
-    let [c2, c1, c0] = coefficients(p, dh, c!(frame.minor_rel));
-    // `intersect_local`: the chord of the bounding sphere and the range.
-    let outer = c!(frame.outer);
-    let chord_sq = outer * outer * c!(1.0 + CHORD_SLACK) - p.dot(p);
-    let inv_major = inv_r;
-    let len = c!(1.0) / inv_len;
-    let lo = (t_min * len + s_) * inv_major;
-    let hi = (t_max * len + s_) * inv_major;
-    let out_of_reach =
-        (lo.gt(c!(0.0)) & (lo * lo).gt(chord_sq)) | (hi.lt(c!(0.0)) & (hi * hi).gt(chord_sq));
-    let reaches = !chord_sq.lt(c!(0.0)) & !out_of_reach;
-    // The nearest root, then `t`, the normal, and the normal in the world (`intersect`).
-    let (u, cold) = nearest_root(c2, c1, c0, lo, hi);
-    let t = (u * major - s_) * inv_len;
-    let normal = normal(p, dh, u, k).rotated(&frame.to_world);
-    let found = !u.is_nan();
-    Lane {
-        t,
-        normal,
-        hit: reaches & found & !cold,
-        fallback: reaches & cold,
+impl<S: Simd> NearestRoot<F64s<S>> for Lanes {
+    #[inline(always)]
+    fn nearest(
+        c2: F64s<S>,
+        c1: F64s<S>,
+        c0: F64s<S>,
+        lo: F64s<S>,
+        hi: F64s<S>,
+    ) -> (F64s<S>, M64s<S>) {
+        nearest_root(c2, c1, c0, lo, hi)
     }
 }

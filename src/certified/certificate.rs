@@ -24,7 +24,7 @@
 use crate::batch::quartic::nearest::nearest_root;
 use crate::batch::real::{Real, RealMask};
 pub(crate) use crate::batch::vec3s::V3;
-use crate::intersect::coefficients;
+use crate::intersect::reduce::coefficients;
 
 /// 2⁻²⁴: the unit roundoff of f32.
 pub(crate) const U32: f64 = 1.0 / 16_777_216.0;
@@ -449,5 +449,5 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
 #[inline(always)]
 pub(crate) fn normal_at<R: Real>(line: &ScaledLine<R>, u: R) -> V3<R> {
     let k = u.splat(1.0) - line.rr * line.rr;
-    crate::intersect::normal(line.q, line.d, u, k)
+    crate::intersect::reduce::normal(line.q, line.d, u, k)
 }

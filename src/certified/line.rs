@@ -7,8 +7,8 @@
 //! bounds do not grow with the distance of the origin.
 
 use super::certificate::{ScaledLine, U32, V3};
-use crate::batch::real::{Real, sc};
-use crate::intersect::foot_line;
+use crate::batch::real::{Real, Sc, sc};
+use crate::intersect::reduce::{foot_line, t_at};
 use crate::{Ray, Torus};
 use glam::DVec3;
 
@@ -27,47 +27,48 @@ impl BackMap {
     /// The ray parameter of the point at `u`: `t = (u·R − o·d̂)/|d|`.
     #[inline(always)]
     pub(crate) fn t(&self, u: f64) -> f64 {
-        (u * self.major - self.s) * self.inv_len
+        t_at(sc(u), sc(self.major), sc(self.s), sc(self.inv_len)).v
     }
 }
 
-/// The scaled line of a torus-frame line `o + t·d`, `t ∈ [t_min, t_max]`, as f32 values
-/// (`[q, d̂, (rr, lo, hi)]`), and its back map.
+/// A scaled line in f64 (one ray at width 1, a register on lanes), before its one
+/// rounding to f32.
+pub(crate) struct WideLine<R: Real> {
+    /// Foot point over R.
+    pub(crate) q: V3<R>,
+    /// Unit direction.
+    pub(crate) dh: V3<R>,
+    /// The ray's range in `u`, clamped to ±4.
+    pub(crate) lo: R,
+    pub(crate) hi: R,
+    /// `o·d̂` and `1/|d|`: the back map `t = (u·R − s)/|d|`.
+    pub(crate) s: R,
+    pub(crate) inv_len: R,
+    /// Origins too far for the bounds (see [`FAR_SCALED`]), or not finite: they escalate.
+    pub(crate) far: R::Mask,
+}
+
+/// The scaled line of torus-frame lines `o + t·d`, `t ∈ [t_min, t_max]`, in f64.
 #[inline(always)]
-pub(crate) fn scale(
-    major: f64,
-    minor: f64,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
-) -> Option<([[f32; 3]; 3], BackMap)> {
+pub(crate) fn scale<R: Real>(o: V3<R>, d: V3<R>, inv_major: R, t_min: R, t_max: R) -> WideLine<R> {
     // f64 forms q = (o − (o·d̂)d̂)/R with an error of about 2⁻⁵¹·|o|/R: past
-    // `FAR_SCALED` that outgrows `LINE_ABS`, and the caller escalates.
-    let far_sq = o.length_squared() * (1.0 / major) * (1.0 / major);
-    // NaN (a non-finite input) fails the test too.
-    if far_sq.is_nan() || far_sq > FAR_SCALED * FAR_SCALED {
-        return None;
-    }
-    let inv_major = 1.0 / major;
-    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
-    let line = foot_line(v(o), v(d), sc(inv_major));
-    let (inv_len, s) = (line.inv_len.v, line.s.v);
-    let q = DVec3::new(line.p.x.v, line.p.y.v, line.p.z.v);
-    let dh = DVec3::new(line.dh.x.v, line.dh.y.v, line.dh.z.v);
-    let len = 1.0 / inv_len;
+    // `FAR_SCALED` that outgrows `LINE_ABS`. NaN (a non-finite input) fails the test too.
+    let far_sq = o.dot(o) * inv_major * inv_major;
+    let far = !far_sq.le(inv_major.splat(FAR_SCALED * FAR_SCALED));
+    let line = foot_line(o, d, inv_major);
+    let (lo, hi) = line.u_range(t_min, t_max, inv_major);
     // Every root has |u| < 2: a range end beyond ±4 is as good as infinite, and keeps f32
     // finite.
-    let lo = ((t_min * len + s) * inv_major).clamp(-4.0, 4.0);
-    let hi = ((t_max * len + s) * inv_major).clamp(-4.0, 4.0);
-    Some((
-        [
-            q.as_vec3().to_array(),
-            dh.as_vec3().to_array(),
-            [(minor * inv_major) as f32, lo as f32, hi as f32],
-        ],
-        BackMap { major, s, inv_len },
-    ))
+    let (min, max) = (inv_major.splat(-4.0), inv_major.splat(4.0));
+    WideLine {
+        q: line.p,
+        dh: line.dh,
+        lo: lo.max(min).min(max),
+        hi: hi.max(min).min(max),
+        s: line.s,
+        inv_len: line.inv_len,
+        far,
+    }
 }
 
 /// The farthest origin, in units of R, whose foot point f64 forms within [`LINE_ABS`].
@@ -103,16 +104,39 @@ pub(crate) fn lanes<R: Real>(like: R, q: [R; 3], d: [R; 3], rr_lo_hi: [R; 3]) ->
     }
 }
 
-/// [`scale`] for a ray and torus.
+/// The scaled line of a ray as f32 values (`[q, d̂, (rr, lo, hi)]`), and its back map;
+/// `None` when it must escalate.
 #[inline(always)]
 pub(crate) fn of_ray(torus: &Torus, ray: &Ray) -> Option<([[f32; 3]; 3], BackMap)> {
     let (o, d) = torus.line_to_local_f64(ray);
-    scale(
+    let (major, minor) = (
         f64::from(torus.major_radius()),
         f64::from(torus.minor_radius()),
-        o,
-        d,
-        f64::from(ray.t_min()),
-        f64::from(ray.t_max()),
-    )
+    );
+    let inv_major = 1.0 / major;
+    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
+    let wide = scale(
+        v(o),
+        v(d),
+        sc(inv_major),
+        sc(f64::from(ray.t_min())),
+        sc(f64::from(ray.t_max())),
+    );
+    if wide.far.m {
+        return None;
+    }
+    let f = |x: Sc| x.v as f32;
+    let (q, dh) = (wide.q, wide.dh);
+    Some((
+        [
+            [f(q.x), f(q.y), f(q.z)],
+            [f(dh.x), f(dh.y), f(dh.z)],
+            [(minor * inv_major) as f32, f(wide.lo), f(wide.hi)],
+        ],
+        BackMap {
+            major,
+            s: wide.s.v,
+            inv_len: wide.inv_len.v,
+        },
+    ))
 }

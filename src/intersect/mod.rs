@@ -15,19 +15,14 @@
 
 use crate::batch::real::{Sc, sc};
 use crate::batch::vec3s::V3;
-use crate::quartic::{
-    RealRoots, nearest_root_depressed, nearest_root_in_range, solve_depressed_monic,
-};
+use crate::quartic::{RealRoots, solve_depressed_monic};
 use crate::{DRay, LocalLine, Ray, Torus};
-pub(crate) use reduce::{coefficients, foot_line, normal};
+use nearest_hit::{Careful, Tube, nearest_hit};
+use reduce::{FootLine, coefficients, foot_line};
 
+pub(crate) mod nearest_hit;
 pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
-
-/// The relative slack of the bounding-sphere chord test (here and in the lane twin,
-/// `crate::batch::intersect`): it keeps lines within rounding of the sphere (the torus's
-/// outer equator) to the solver, which decides tangencies on the quartic itself.
-pub(crate) const CHORD_SLACK: f64 = 1e-12;
 
 /// The nearest hit of a ray.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,38 +109,24 @@ impl TorusRay for DRay {
     }
 }
 
-/// A line reduced to the scaled, foot-point frame described in the module docs.
-struct Reduced {
-    /// Unit direction d̂.
-    dh: DVec3,
-    /// Foot point divided by R.
-    p: DVec3,
-    /// `o·d̂` (unscaled).
-    s: f64,
-    /// `1/|d|`.
-    inv_len: f64,
-    /// `1 − (r/R)²`.
-    k: f64,
-    /// `[c2, c1, c0]` of the depressed monic quartic in u.
-    c: [f64; 3],
+/// `x` as the scalar instantiation's 3-vector.
+#[inline(always)]
+fn v(x: DVec3) -> V3<Sc> {
+    V3::new(sc(x.x), sc(x.y), sc(x.z))
 }
 
+/// The scalar instantiation's 3-vector as glam's.
 #[inline(always)]
-fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> Reduced {
-    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
-    let back = |x: V3<Sc>| DVec3::new(x.x.v, x.y.v, x.z.v);
-    let inv_r = 1.0 / major;
-    let line = foot_line(v(o), v(d), sc(inv_r));
-    let rr = minor * inv_r;
-    let [c2, c1, c0] = coefficients(line.p, line.dh, sc(rr));
-    Reduced {
-        dh: back(line.dh),
-        p: back(line.p),
-        s: line.s.v,
-        inv_len: line.inv_len.v,
-        k: 1.0 - rr * rr,
-        c: [c2.v, c1.v, c0.v],
-    }
+fn back(x: V3<Sc>) -> DVec3 {
+    DVec3::new(x.x.v, x.y.v, x.z.v)
+}
+
+/// The foot-point line of `o + t·d` (scaled by 1/R) and its quartic's `[c2, c1, c0]`.
+#[inline(always)]
+fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> (FootLine<Sc>, [Sc; 3]) {
+    let inv_major = 1.0 / major;
+    let line = foot_line(v(o), v(d), sc(inv_major));
+    (line, coefficients(line.p, line.dh, sc(minor * inv_major)))
 }
 
 /// The depressed monic quartic `[1, 0, c2, c1, c0]` actually solved for a torus-frame line
@@ -155,18 +136,16 @@ fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> Reduced {
 /// `o − (o·d̂)d̂`, **in units of R**: `t = (u·R − o·d̂)/|d|`. Feed it to
 /// [`crate::quartic::solve_quartic`] (or `solve_depressed_monic(c[2], c[3], c[4])`).
 pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> [f64; 5] {
-    let red = reduce(major, minor, o, d);
-    [1.0, 0.0, red.c[0], red.c[1], red.c[2]]
+    let (_, [c2, c1, c0]) = reduce(major, minor, o, d);
+    [1.0, 0.0, c2.v, c1.v, c0.v]
 }
 
 /// Every real `t` (units of `d`, sorted, double roots twice) where the whole line
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
-    let red = reduce(major, minor, o, d);
-    let [c2, c1, c0] = red.c;
-    let (s, inv_len) = (red.s, red.inv_len);
+    let (line, [c2, c1, c0]) = reduce(major, minor, o, d);
     // t is increasing in u (R > 0, |d| > 0), so the order is kept.
-    solve_depressed_monic(c2, c1, c0).map_increasing(|u| (u * major - s) * inv_len)
+    solve_depressed_monic(c2.v, c1.v, c0.v).map_increasing(|u| line.t_at(sc(u), sc(major)).v)
 }
 
 /// The nearest intersection with `t ∈ [t_min, t_max]` of the torus-frame line `o + t·d`
@@ -175,7 +154,7 @@ pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots
 ///
 /// Every root lies on the chord of the bounding sphere, `u² ≤ (1 + r/R)² − |p/R|²`, so a
 /// line that misses the sphere, or whose chord lies outside the range, returns before
-/// the quartic; otherwise [`nearest_root_depressed`] solves for the nearest root in range.
+/// the quartic; otherwise [`crate::quartic::nearest_root_depressed`] solves for the nearest root in range.
 #[inline]
 pub fn intersect_local(
     major: f64,
@@ -200,32 +179,14 @@ fn intersect_reduced<const CHECKED: bool>(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
-    let red = reduce(major, minor, o, d);
-    let outer = 1.0 + minor / major;
-    let chord_sq = outer * outer * (1.0 + CHORD_SLACK) - red.p.length_squared();
-    if chord_sq < 0.0 {
-        return None;
-    }
-    let inv_major = 1.0 / major;
-    let len = 1.0 / red.inv_len;
-    let lo = (t_min * len + red.s) * inv_major;
-    let hi = (t_max * len + red.s) * inv_major;
-    // The chord lies wholly before `lo` or after `hi`: no root in range.
-    let out_of_reach = (lo > 0.0 && lo * lo > chord_sq) || (hi < 0.0 && hi * hi > chord_sq);
-    if out_of_reach {
-        return None;
-    }
-    let [c2, c1, c0] = red.c;
-    let u = if CHECKED {
-        nearest_root_depressed(c2, c1, c0, lo, hi)
-    } else {
-        nearest_root_in_range(c2, c1, c0, lo, hi)
-    }?;
-    let t = (u * major - red.s) * red.inv_len;
-
-    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
-    let n = normal(v(red.p), v(red.dh), sc(u), sc(red.k));
-    Some((t, DVec3::new(n.x.v, n.y.v, n.z.v)))
+    let found = nearest_hit::<Sc, Careful<CHECKED>>(
+        &Tube::new(major, minor),
+        v(o),
+        v(d),
+        sc(t_min),
+        sc(t_max),
+    )?;
+    found.hit.m.then(|| (found.t.v, back(found.normal)))
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,

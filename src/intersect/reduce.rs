@@ -23,6 +23,51 @@ pub(crate) struct FootLine<R> {
     pub(crate) inv_len: R,
 }
 
+impl<R: Real> FootLine<R> {
+    /// The ray's range `[t_min, t_max]` in `u`: `u = (t·|d| + s)/R`.
+    #[inline(always)]
+    pub(crate) fn u_range(&self, t_min: R, t_max: R, inv_major: R) -> (R, R) {
+        let len = self.s.splat(1.0) / self.inv_len;
+        (
+            (t_min * len + self.s) * inv_major,
+            (t_max * len + self.s) * inv_major,
+        )
+    }
+
+    /// The ray parameter of the point at `u`.
+    #[inline(always)]
+    pub(crate) fn t_at(&self, u: R, major: R) -> R {
+        t_at(u, major, self.s, self.inv_len)
+    }
+
+    /// The squared half-chord of the bounding sphere (radius `outer` = 1 + r/R here) on
+    /// this line, `outer² − |p|²`: every root lies on the chord, `u² ≤` this, so a line
+    /// with it `< 0` misses. The slack [`CHORD_SLACK`] leaves tangencies within rounding
+    /// of the outer equator to the solver, which decides them on the quartic itself.
+    #[inline(always)]
+    pub(crate) fn chord_sq(&self, outer: R) -> R {
+        outer * outer * outer.splat(1.0 + CHORD_SLACK) - self.p.dot(self.p)
+    }
+}
+
+/// Lanes whose chord (`chord_sq`, see [`FootLine::chord_sq`]) is not wholly before `lo`
+/// or after `hi`.
+#[inline(always)]
+pub(crate) fn chord_in_range<R: Real>(chord_sq: R, lo: R, hi: R) -> R::Mask {
+    let zero = lo.splat(0.0);
+    !((lo.gt(zero) & (lo * lo).gt(chord_sq)) | (hi.lt(zero) & (hi * hi).gt(chord_sq)))
+}
+
+/// The relative slack of the bounding-sphere chord test ([`FootLine::chord_sq`]).
+pub(crate) const CHORD_SLACK: f64 = 1e-12;
+
+/// `t = (u·R − s)/|d|`: the ray parameter of the point at `u` on a [`FootLine`] with
+/// `s` = o·d̂ and `inv_len` = 1/|d| (for callers that kept only those two).
+#[inline(always)]
+pub(crate) fn t_at<R: Real>(u: R, major: R, s: R, inv_len: R) -> R {
+    (u * major - s) * inv_len
+}
+
 /// The foot point of the centre on the line `o + t·d`, scaled by `inv_major` = 1/R.
 #[inline(always)]
 pub(crate) fn foot_line<R: Real>(o: V3<R>, d: V3<R>, inv_major: R) -> FootLine<R> {
