@@ -12,7 +12,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 use torus_cull::{
-    CullBounds, CullKind, DRay, F32Verdict, Ray, Torus, intersect, intersect_culled, intersect_f32,
+    CullKind, DRay, F32Verdict, Ray, Torus, intersect, intersect_culled, intersect_f32,
     intersect_f32_certified,
 };
 
@@ -75,7 +75,6 @@ fn check<R: torus_cull::TorusRay>(
 where
     R::Hit: PartialEq + std::fmt::Debug,
 {
-    let bounds = CullBounds::of(torus);
     let found = intersect(torus, ray);
     if let Some(hit) = &found {
         let (t, n) = t_of(hit);
@@ -89,7 +88,7 @@ where
         );
     }
     for cull in CullKind::TIMED {
-        let culled = intersect_culled(&cull, torus, &bounds, ray);
+        let culled = intersect_culled(&cull, torus, ray);
         prop_assert!(
             culled == found,
             "{cull} changed the answer: {culled:?} vs {found:?} on {torus:?}"
@@ -155,9 +154,9 @@ proptest! {
     /// refuses it).
     #[test]
     fn raw_cull_keeps_takes_any_bits(torus in torus(), o in vec3(), d in vec3()) {
-        let bounds = CullBounds::of(&torus);
+        let bounds = torus.bounds();
         for cull in CullKind::TIMED {
-            let _ = cull.keeps(&bounds, o, d);
+            let _ = cull.keeps(bounds, o, d);
         }
     }
 
@@ -194,7 +193,6 @@ fn solve_quartic_takes_any_coefficients() {
 #[test]
 fn the_first_found_cases_stay_fixed() {
     let torus = Torus::canonical(2.0, 1.0).unwrap();
-    let bounds = CullBounds::of(&torus);
     let far = Ray::new(
         Vec3::new(0.0, 0.0, f32::MAX),
         Vec3::new(0.0, 0.0, -2.760_388_6e16),
@@ -204,11 +202,7 @@ fn the_first_found_cases_stay_fixed() {
     let hit = found.expect("the line hits the tube at z = 3 and t ≈ 1.2e22");
     assert!((f64::from(hit.t) - 1.2327335e22).abs() < 1e16, "{hit:?}");
     for cull in CullKind::TIMED {
-        assert_eq!(
-            intersect_culled(&cull, &torus, &bounds, &far),
-            found,
-            "{cull}"
-        );
+        assert_eq!(intersect_culled(&cull, &torus, &far), found, "{cull}");
     }
     let beyond = Ray::new(
         Vec3::new(f32::MAX, 0.0, 0.0),
