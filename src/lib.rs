@@ -8,8 +8,13 @@
 //! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect()`]
 //! (or both at once: [`intersect_culled`]).
 //!
-//! * [`Torus`] and [`Ray`]: validated shapes; [`Torus::line_to_local`] moves a ray into
-//!   the torus frame (centre at the origin, axis +y) where every cull works.
+//! * [`Torus`] and [`Ray`]: validated shapes (or [`DRay`], an f64 ray with f64 hits); the
+//!   torus computes its cull constants once ([`Torus::bounds`]), and
+//!   [`Torus::line_to_local`] moves a ray into the torus frame (centre at the origin,
+//!   axis +y) where every cull works.
+//! * [`RayCast`]: the nearest hit, its `t` alone, or a shadow ray's bool, from a
+//!   [`Torus`] or from a torus behind a cull ([`Torus::with_cull`]); the free functions
+//!   [`intersect()`], [`intersect_culled`] and [`occluded()`] are what it calls.
 //! * [`cull`]: one file per cull behind the one-method [`Cull`] trait, all conservative
 //!   (a rejected line provably misses), from Cychosz's sphere + slab ([`CychoszCull`]) and
 //!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
@@ -87,7 +92,7 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
 };
-pub use intersect::{DHit, Hit, TorusRay, intersect, occluded};
+pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.

@@ -12,7 +12,7 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 use torus_cull::{
-    CullKind, DRay, F32Verdict, Ray, Torus, intersect, intersect_culled, intersect_f32,
+    CullKind, DRay, F32Verdict, Ray, RayCast, Torus, intersect, intersect_culled, intersect_f32,
     intersect_f32_certified,
 };
 
@@ -65,7 +65,8 @@ fn torus() -> impl Strategy<Value = Torus> {
     })
 }
 
-/// Checks one accepted ray of either precision against every cull.
+/// Checks one accepted ray of either precision against every cull, through the free
+/// functions and the `RayCast` queries (which must be the same answers).
 fn check<R: torus_cull::TorusRay>(
     torus: &Torus,
     ray: &R,
@@ -74,6 +75,7 @@ fn check<R: torus_cull::TorusRay>(
 ) -> Result<(), TestCaseError>
 where
     R::Hit: PartialEq + std::fmt::Debug,
+    R::Float: PartialEq + std::fmt::Debug,
 {
     let found = intersect(torus, ray);
     if let Some(hit) = &found {
@@ -87,12 +89,20 @@ where
             "normal {n}"
         );
     }
+    let found_t = found.as_ref().map(|h| R::hit_t(h));
+    prop_assert!(torus.cast_ray_and_get_normal(ray) == found);
+    prop_assert!(torus.cast_ray(ray) == found_t);
+    prop_assert_eq!(torus.intersects_ray(ray), found.is_some());
     for cull in CullKind::TIMED {
         let culled = intersect_culled(&cull, torus, ray);
         prop_assert!(
             culled == found,
             "{cull} changed the answer: {culled:?} vs {found:?} on {torus:?}"
         );
+        let with = torus.with_cull(cull);
+        prop_assert!(with.cast_ray_and_get_normal(ray) == found, "{cull}");
+        prop_assert!(with.cast_ray(ray) == found_t, "{cull}");
+        prop_assert_eq!(with.intersects_ray(ray), found.is_some(), "{}", cull);
     }
     Ok(())
 }

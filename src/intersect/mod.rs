@@ -21,8 +21,10 @@ use crate::quartic::{
 use crate::{DRay, LocalLine, Ray, Torus};
 pub(crate) use reduce::{coefficients, foot_line, normal};
 
+mod ray_cast;
 pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
+pub use ray_cast::{Culled, RayCast};
 
 /// The relative slack of the bounding-sphere chord test (here and in the lane twin,
 /// `crate::batch::intersect`): it keeps lines within rounding of the sphere (the torus's
@@ -53,6 +55,8 @@ pub struct DHit {
 pub trait TorusRay: sealed::Sealed {
     /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`].
     type Hit;
+    /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`].
+    type Float;
     /// The line in the torus frame in f32, as the culls see it.
     fn cull_line(&self, torus: &Torus) -> LocalLine;
     /// Origin and direction in the torus frame, in f64.
@@ -62,6 +66,8 @@ pub trait TorusRay: sealed::Sealed {
     /// The hit, from f64 `t` and world normal; `None` when `t` does not fit the ray's
     /// float type (a hit farther along than f32, or f64, can count).
     fn hit(t: f64, normal: DVec3) -> Option<Self::Hit>;
+    /// A hit's `t` ([`RayCast::cast_ray`]'s answer).
+    fn hit_t(hit: &Self::Hit) -> Self::Float;
 }
 
 mod sealed {
@@ -72,6 +78,11 @@ mod sealed {
 
 impl TorusRay for Ray {
     type Hit = Hit;
+    type Float = f32;
+    #[inline(always)]
+    fn hit_t(hit: &Hit) -> f32 {
+        hit.t
+    }
     #[inline(always)]
     fn cull_line(&self, torus: &Torus) -> LocalLine {
         torus.line_to_local(self)
@@ -96,6 +107,11 @@ impl TorusRay for Ray {
 
 impl TorusRay for DRay {
     type Hit = DHit;
+    type Float = f64;
+    #[inline(always)]
+    fn hit_t(hit: &DHit) -> f64 {
+        hit.t
+    }
     #[inline]
     fn cull_line(&self, torus: &Torus) -> LocalLine {
         torus.dline_to_local(self)
