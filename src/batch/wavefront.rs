@@ -31,6 +31,7 @@ pub struct Wavefront {
 
 /// What one wavefront did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct WavefrontStats {
     /// Rays in.
     pub rays: usize,

@@ -25,6 +25,11 @@ pub(crate) const AXIS_PARALLEL_H2: f32 = 1e-12;
 /// [`crate::Torus::bounds`]): bounds exist only for a torus the constructor accepted, so a
 /// cull can be handed neither another torus's constants nor those of a torus without a
 /// hole (R ≤ r, where the padded hole test would reject lines that hit).
+///
+/// ```compile_fail
+/// // Not constructible outside the crate: R < r has no bounds, only a `TorusError`.
+/// let bounds = torus_cull::CullBounds::new(1.0, 2.0);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CullBounds {
     /// R.

@@ -33,6 +33,7 @@ pub(crate) const CHORD_SLACK: f64 = 1e-12;
 
 /// The nearest hit of a ray.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Hit {
     /// Ray parameter, in units of the ray's direction.
     pub t: f32,
@@ -42,6 +43,7 @@ pub struct Hit {
 
 /// The nearest hit of an f64 ray ([`crate::DRay`]): `t` and the normal in f64.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct DHit {
     /// Ray parameter, in units of the ray's direction.
     pub t: f64,
@@ -170,6 +172,7 @@ fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> Reduced {
 /// Its variable `u` is the signed distance along `d̂ = d/|d|` from the foot point
 /// `o − (o·d̂)d̂`, **in units of R**: `t = (u·R − o·d̂)/|d|`. Feed it to
 /// [`crate::quartic::solve_quartic`] (or `solve_depressed_monic(c[2], c[3], c[4])`).
+#[must_use]
 pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> [f64; 5] {
     let red = reduce(major, minor, o, d);
     [1.0, 0.0, red.c[0], red.c[1], red.c[2]]
@@ -177,6 +180,7 @@ pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) ->
 
 /// Every real `t` (units of `d`, sorted, double roots twice) where the whole line
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
+#[must_use]
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
     let red = reduce(major, minor, o, d);
     let [c2, c1, c0] = red.c;
@@ -193,6 +197,7 @@ pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots
 /// line that misses the sphere, or whose chord lies outside the range, returns before
 /// the quartic; otherwise [`nearest_root_depressed`] solves for the nearest root in range.
 #[inline]
+#[must_use]
 pub fn intersect_local(
     major: f64,
     minor: f64,

@@ -9,6 +9,7 @@ use super::{RealRoots, eval, eval2, even, factor};
 /// root is then Newton-polished on the original coefficients (the depression loses
 /// absolute accuracy when the shift is large).
 /// Returns no roots if `c[0] = 0` or a coefficient is not finite.
+#[must_use]
 pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
     let [c4, c3, c2, c1, c0] = c;
     if c4 == 0.0 || !c.iter().all(|v| v.is_finite()) {
@@ -35,6 +36,7 @@ pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
 ///
 /// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
 /// x/s, s a power of two.
+#[must_use]
 pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
     if !(p.is_finite() && q.is_finite() && r.is_finite()) {
         return RealRoots::default();
