@@ -66,9 +66,7 @@ use torus_cull::harness::results::{
 use torus_cull::harness::solver_suite::SolverCase;
 use torus_cull::harness::workload::spec::{BvhSpec, Workload};
 use torus_cull::harness::workload::{Case, generate};
-use torus_cull::{
-    Cull, CullBounds, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled,
-};
+use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
 
 /// Times one cull on one batch, both ways.
 struct TimeCull<'a> {
@@ -83,14 +81,14 @@ struct TimeCull<'a> {
 impl CullVisitor for TimeCull<'_> {
     type Output = ();
     fn visit<C: Cull>(self, cull: C) {
-        let bounds = CullBounds::of(self.torus);
+        let bounds = self.torus.bounds();
         let id = BenchmarkId::new(cull.name(), self.nu);
         self.c
             .benchmark_group(format!("cull_ns-{}", self.case))
             .bench_with_input(id.clone(), self.lines, |b, lines| {
                 b.iter(|| {
                     for line in lines {
-                        black_box(cull.keeps(&bounds, line.origin, line.dir));
+                        black_box(cull.keeps(bounds, line.origin, line.dir));
                     }
                 })
             });
@@ -99,7 +97,7 @@ impl CullVisitor for TimeCull<'_> {
             .bench_with_input(id, self.rays, |b, rays| {
                 b.iter(|| {
                     for ray in rays {
-                        black_box(intersect_culled(&cull, self.torus, &bounds, ray));
+                        black_box(intersect_culled(&cull, self.torus, ray));
                     }
                 })
             });
@@ -141,13 +139,13 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
         rays,
         lines,
     } = *on;
-    let bounds = CullBounds::of(torus);
+    let bounds = torus.bounds();
     let id = BenchmarkId::new(cull.name(), nu);
     let mut keep = KeepMask::new();
     c.benchmark_group(format!("batch_cull_ns-{case}"))
         .bench_with_input(id.clone(), lines, |b, lines| {
             b.iter(|| {
-                cull_batch(dispatch, cull, &bounds, black_box(lines), &mut keep)
+                cull_batch(dispatch, cull, bounds, black_box(lines), &mut keep)
                     .expect("a batched cull");
                 black_box(&keep);
             })
@@ -159,7 +157,7 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
             b.iter(|| {
                 black_box(
                     wavefront
-                        .intersect(dispatch, cull, torus, &bounds, black_box(rays), &mut hits)
+                        .intersect(dispatch, cull, torus, black_box(rays), &mut hits)
                         .expect("a batched cull"),
                 );
                 black_box(&hits);
@@ -170,7 +168,7 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
             b.iter(|| {
                 black_box(
                     wavefront
-                        .intersect_f32(dispatch, cull, torus, &bounds, black_box(rays), &mut hits)
+                        .intersect_f32(dispatch, cull, torus, black_box(rays), &mut hits)
                         .expect("a batched cull"),
                 );
                 black_box(&hits);
@@ -743,7 +741,6 @@ fn timing_records(
         // Batch mode: the same rays through the wavefront; `none` is the batch baseline
         // (every ray to the lane solver), so speedups are within the mode, and within the
         // precision for the f32 wavefront (its `cull_ns` is the same SIMD cull).
-        let bounds = CullBounds::of(&labeled.batch.torus);
         let mut wavefront = Wavefront::new();
         let mut hits = Vec::new();
         for (group, precision) in [
@@ -764,7 +761,6 @@ fn timing_records(
                             dispatch,
                             cull,
                             &labeled.batch.torus,
-                            &bounds,
                             &labeled.batch.rays,
                             &mut hits,
                         )

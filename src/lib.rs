@@ -8,8 +8,13 @@
 //! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect()`]
 //! (or both at once: [`intersect_culled`]).
 //!
-//! * [`Torus`] and [`Ray`]: validated shapes; [`Torus::line_to_local`] moves a ray into
-//!   the torus frame (centre at the origin, axis +y) where every cull works.
+//! * [`Torus`] and [`Ray`]: validated shapes (or [`DRay`], an f64 ray with f64 hits); the
+//!   torus computes its cull constants once ([`Torus::bounds`]), and
+//!   [`Torus::line_to_local`] moves a ray into the torus frame (centre at the origin,
+//!   axis +y) where every cull works.
+//! * [`RayCast`]: the nearest hit, its `t` alone, or a shadow ray's bool, from a
+//!   [`Torus`] or from a torus behind a cull ([`Torus::with_cull`]); the free functions
+//!   [`intersect()`], [`intersect_culled`] and [`occluded()`] are what it calls.
 //! * [`cull`]: one file per cull behind the one-method [`Cull`] trait, all conservative
 //!   (a rejected line provably misses), from Cychosz's sphere + slab ([`CychoszCull`]) and
 //!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
@@ -32,21 +37,21 @@
 //! `docs/math.md`.
 //!
 //! ```
-//! use torus_cull::{Cull, CullBounds, Ray, SkalaCull, Torus, intersect};
+//! use torus_cull::{Cull, Ray, SkalaCull, Torus, intersect};
 //! use glam::Vec3;
 //!
-//! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
-//! let bounds = CullBounds::of(&torus);
+//! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?; // and its cull bounds, once
+//! let bounds = torus.bounds();
 //!
 //! // A ray that falls straight through the hole: skala proves the miss, no quartic.
 //! let ray = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.0, -1.0, 0.0))?;
 //! let line = torus.line_to_local(&ray);
-//! assert!(!SkalaCull.keeps(&bounds, line.origin, line.dir));
+//! assert!(!SkalaCull.keeps(bounds, line.origin, line.dir));
 //!
 //! // A ray aimed at the tube: kept, and the exact intersection finds it.
 //! let ray = Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::new(0.0, -1.0, 0.0))?;
 //! let line = torus.line_to_local(&ray);
-//! assert!(SkalaCull.keeps(&bounds, line.origin, line.dir));
+//! assert!(SkalaCull.keeps(bounds, line.origin, line.dir));
 //! let hit = intersect(&torus, &ray).expect("hits the top of the tube");
 //! assert!((hit.t - 9.0).abs() < 1e-4);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
@@ -87,21 +92,20 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
 };
-pub use intersect::{DHit, Hit, TorusRay, intersect, occluded};
+pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
 ///
 /// ```
-/// use torus_cull::{CullBounds, CychoszCull, NoCull, Ray, SkalaCull, Torus, intersect_culled};
+/// use torus_cull::{CychoszCull, NoCull, Ray, SkalaCull, Torus, intersect_culled};
 /// use glam::Vec3;
-/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
-/// let bounds = CullBounds::of(&torus);
+/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?; // its cull bounds, once
 /// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.1, -1.0, 0.0))?;
 /// // Every conservative cull gives the same answer; skala just gets there without the quartic.
-/// assert_eq!(intersect_culled(&SkalaCull, &torus, &bounds, &hole), None);
-/// assert_eq!(intersect_culled(&CychoszCull, &torus, &bounds, &hole), None);
-/// assert_eq!(intersect_culled(&NoCull, &torus, &bounds, &hole), None);
+/// assert_eq!(intersect_culled(&SkalaCull, &torus, &hole), None);
+/// assert_eq!(intersect_culled(&CychoszCull, &torus, &hole), None);
+/// assert_eq!(intersect_culled(&NoCull, &torus, &hole), None);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[inline(always)]
@@ -109,11 +113,10 @@ pub use intersect::{DHit, Hit, TorusRay, intersect, occluded};
 pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
     cull: &C,
     torus: &Torus,
-    bounds: &CullBounds,
     ray: &R,
 ) -> Option<R::Hit> {
     let line = ray.cull_line(torus);
-    if cull.keeps(bounds, line.origin, line.dir) {
+    if cull.keeps(torus.bounds(), line.origin, line.dir) {
         intersect(torus, ray)
     } else {
         None

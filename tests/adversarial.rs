@@ -22,7 +22,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::{CullBounds, CullKind, Ray, Torus};
+use torus_cull::{CullKind, Ray, Torus};
 
 const NUS: [f64; 8] = [1.01, 1.1, 2.0, 4.0, 8.0, 32.0, 100.0, 1000.0];
 const SCALES: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -165,7 +165,6 @@ impl Tally {
 /// read back so that offsets are measured from the surface the culls and oracle see.
 struct Posed {
     torus: Torus,
-    bounds: CullBounds,
     big: f64,
     small: f64,
     eta: f64,
@@ -180,16 +179,14 @@ impl Posed {
         let center = DVec3::new(coordinate(extent), coordinate(extent), coordinate(extent));
         let axis = DVec3::new(coordinate(1.0), coordinate(1.0), coordinate(1.0));
         let torus = Torus::new(center.as_vec3(), axis.as_vec3(), big as f32, small as f32).unwrap();
-        let bounds = CullBounds::of(&torus);
         let small = f64::from(torus.minor_radius());
         Posed {
             big: f64::from(torus.major_radius()),
             small,
-            eta: f64::from(bounds.minor_safe) - small,
+            eta: f64::from(torus.bounds().minor_safe()) - small,
             to_world: torus.to_local_rotation_f64().transpose(),
             center: torus.center().as_dvec3(),
             torus,
-            bounds,
         }
     }
 
@@ -221,7 +218,7 @@ fn tally(nu: f64, scale: f64) -> Tally {
                 for _ in 0..PER_CELL {
                     let (p, d) = family(big, small, offset, &mut rng);
                     let ray = posed.ray(p - d * (back * (big + small)), d);
-                    check(&mut t, name, &posed.torus, &posed.bounds, eta, &ray);
+                    check(&mut t, name, &posed.torus, eta, &ray);
                 }
             }
         }
@@ -229,10 +226,10 @@ fn tally(nu: f64, scale: f64) -> Tally {
     t
 }
 
-fn check(t: &mut Tally, family: &str, torus: &Torus, bounds: &CullBounds, eta: f64, ray: &Ray) {
+fn check(t: &mut Tally, family: &str, torus: &Torus, eta: f64, ray: &Ray) {
     let label = classify_line(torus, ray);
     let line = torus.line_to_local(ray);
-    let keeps = CullKind::TIMED.map(|c| c.keeps(bounds, line.origin, line.dir));
+    let keeps = CullKind::TIMED.map(|c| c.keeps(torus.bounds(), line.origin, line.dir));
     let keep = |c: CullKind| keeps[at(c)];
     t.lines += 1;
     let hit = label.class == OracleClass::Hit;
@@ -351,14 +348,7 @@ fn far_steep_lines_at_a_nearly_closed_hole() {
                 let offset = [-1e-6, 1e-6, -1e-4, 1e-4][i % 4] * posed.small;
                 let (p, d) = hole_wall(posed.big, posed.small, offset, &mut rng);
                 let ray = posed.ray(p - d * (250.0 * (posed.big + posed.small)), d);
-                check(
-                    &mut t,
-                    "hole_wall",
-                    &posed.torus,
-                    &posed.bounds,
-                    posed.eta,
-                    &ray,
-                );
+                check(&mut t, "hole_wall", &posed.torus, posed.eta, &ray);
             }
         }
         println!(
@@ -393,8 +383,8 @@ fn pinned_far_steep_hole_line() {
     .unwrap();
     assert_eq!(classify_line(&torus, &ray).class, OracleClass::Hit);
     let line = torus.line_to_local(&ray);
-    let bounds = CullBounds::of(&torus);
+    let bounds = torus.bounds();
     for cull in CullKind::TIMED {
-        assert!(cull.keeps(&bounds, line.origin, line.dir), "{cull}");
+        assert!(cull.keeps(bounds, line.origin, line.dir), "{cull}");
     }
 }

@@ -69,7 +69,7 @@ impl Tally {
         reference: impl Fn(CullKind, &CullBounds, Vec3, Vec3) -> bool,
     ) {
         let Set { torus, rays } = set;
-        let bounds = CullBounds::of(torus);
+        let bounds = torus.bounds();
         let lines = Lines::from_rays(torus, rays);
         let labels: Vec<OracleClass> = rays.iter().map(|r| classify_line(torus, r).class).collect();
         self.lines += rays.len();
@@ -97,11 +97,11 @@ impl Tally {
             let scalar: Vec<bool> = (0..lines.len())
                 .map(|i| {
                     let l = lines.get(i);
-                    reference(cull, &bounds, l.origin, l.dir)
+                    reference(cull, bounds, l.origin, l.dir)
                 })
                 .collect();
             for dispatch in levels {
-                cull_batch(dispatch, cull, &bounds, &lines, &mut keep).unwrap();
+                cull_batch(dispatch, cull, bounds, &lines, &mut keep).unwrap();
                 assert_eq!(keep.len(), rays.len());
                 for (i, (&want, label)) in scalar.iter().zip(&labels).enumerate() {
                     let got = keep.get(i);
@@ -244,7 +244,7 @@ fn adversarial_sets(nu: f64) -> Vec<Set> {
             f64::from(torus.major_radius()),
             f64::from(torus.minor_radius()),
         );
-        let eta = f64::from(CullBounds::of(&torus).minor_safe) - small;
+        let eta = f64::from(torus.bounds().minor_safe()) - small;
         let offsets = [1e-6 * small, -1e-6 * small, 1e-4 * small, -1e-4 * small]
             .into_iter()
             .chain([eta * (1.0 + 1e-3), eta * (1.0 - 1e-3)]);
@@ -373,7 +373,7 @@ fn batch_verdicts_equal_scalar_verdicts_at_every_dispatch_level() {
 #[test]
 fn any_length_and_the_padding_never_shows() {
     let torus = Torus::canonical(1.0, 0.25).unwrap();
-    let bounds = CullBounds::of(&torus);
+    let bounds = torus.bounds();
     let batch = torus_cull::harness::workload::generate(
         Case::Uniform,
         4.0,
@@ -389,14 +389,14 @@ fn any_length_and_the_padding_never_shows() {
         for n in [0, 1, 15, 16, 17, 63, 64, 65, 127, 300] {
             let lines = Lines::from_rays(&torus, &batch.rays[..n]);
             let mut keep = KeepMask::new();
-            cull_batch(&dispatch, CullKind::None, &bounds, &lines, &mut keep).unwrap();
+            cull_batch(&dispatch, CullKind::None, bounds, &lines, &mut keep).unwrap();
             assert_eq!(keep.count_kept(), n, "{} n={n}", dispatch.isa());
-            cull_batch(&dispatch, CullKind::Skala, &bounds, &lines, &mut keep).unwrap();
+            cull_batch(&dispatch, CullKind::Skala, bounds, &lines, &mut keep).unwrap();
             let want: Vec<bool> = batch.rays[..n]
                 .iter()
                 .map(|r| {
                     let l = torus.line_to_local(r);
-                    CullKind::Skala.keeps(&bounds, l.origin, l.dir)
+                    CullKind::Skala.keeps(bounds, l.origin, l.dir)
                 })
                 .collect();
             assert_eq!(keep.to_vec(), want, "{} n={n}", dispatch.isa());
@@ -406,7 +406,7 @@ fn any_length_and_the_padding_never_shows() {
     let err = cull_batch(
         &Dispatch::best(),
         CullKind::DiscriminantF64,
-        &bounds,
+        bounds,
         &Lines::new(),
         &mut KeepMask::new(),
     )

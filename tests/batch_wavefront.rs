@@ -15,17 +15,17 @@ use common::{family, pushed_back};
 use torus_cull::batch::{BATCHED, Dispatch, Isa, Wavefront};
 use torus_cull::harness::oracle::{OracleClass, classify};
 use torus_cull::harness::workload::Case;
-use torus_cull::{CullBounds, CullKind, CullVisitor, Hit, Ray, Torus, intersect_culled};
+use torus_cull::{CullKind, CullVisitor, Hit, Ray, Torus, intersect_culled};
 
 /// The scalar path for one cull, ray by ray.
-struct Scalar<'a>(&'a Torus, &'a CullBounds, &'a [Ray]);
+struct Scalar<'a>(&'a Torus, &'a [Ray]);
 
 impl CullVisitor for Scalar<'_> {
     type Output = Vec<Option<Hit>>;
     fn visit<C: torus_cull::Cull>(self, cull: C) -> Vec<Option<Hit>> {
-        self.2
+        self.1
             .iter()
-            .map(|r| intersect_culled(&cull, self.0, self.1, r))
+            .map(|r| intersect_culled(&cull, self.0, r))
             .collect()
     }
 }
@@ -46,17 +46,16 @@ struct Tally {
 }
 
 fn check(t: &mut Tally, torus: &Torus, rays: &[Ray], levels: &[Dispatch]) {
-    let bounds = CullBounds::of(torus);
     let labels: Vec<OracleClass> = rays.iter().map(|r| classify(torus, r).class).collect();
     t.rays += rays.len();
     t.oracle_hits += labels.iter().filter(|&&c| c == OracleClass::Hit).count();
     let mut wavefront = Wavefront::new();
     let mut hits = Vec::new();
     for cull in BATCHED {
-        let want = cull.visit(Scalar(torus, &bounds, rays));
+        let want = cull.visit(Scalar(torus, rays));
         for d in levels {
             let stats = wavefront
-                .intersect(d, cull, torus, &bounds, rays, &mut hits)
+                .intersect(d, cull, torus, rays, &mut hits)
                 .unwrap();
             assert_eq!(stats.rays, rays.len());
             assert_eq!(stats.hits, hits.iter().filter(|h| h.is_some()).count());
@@ -165,30 +164,15 @@ fn wavefront_hits_are_the_scalar_hits_and_miss_no_oracle_hit() {
 #[test]
 fn stats_count_the_stages() {
     let torus = Torus::canonical(1.0, 0.25).unwrap();
-    let bounds = CullBounds::of(&torus);
     let batch = family(Case::Uniform, 4.0, 1_000, 3).remove(0);
     let d = Dispatch::best();
     let mut w = Wavefront::new();
     let mut hits = Vec::new();
     let none = w
-        .intersect(
-            &d,
-            CullKind::None,
-            &batch.torus,
-            &bounds,
-            &batch.rays,
-            &mut hits,
-        )
+        .intersect(&d, CullKind::None, &batch.torus, &batch.rays, &mut hits)
         .unwrap();
     let skala = w
-        .intersect(
-            &d,
-            CullKind::Skala,
-            &batch.torus,
-            &bounds,
-            &batch.rays,
-            &mut hits,
-        )
+        .intersect(&d, CullKind::Skala, &batch.torus, &batch.rays, &mut hits)
         .unwrap();
     assert_eq!(none.kept, none.rays);
     assert!(skala.kept < none.kept && skala.scalar_fallbacks <= skala.kept);
@@ -198,7 +182,6 @@ fn stats_count_the_stages() {
             &d,
             CullKind::DiscriminantF64,
             &torus,
-            &bounds,
             &batch.rays,
             &mut hits
         )

@@ -243,12 +243,12 @@ fn discriminant_solves_only_at_leaves_whose_line_hits() {
             for cull in [CullKind::Discriminant, CullKind::DiscriminantF64] {
                 let (mut visits, mut line_hits, mut solves, mut culled_hits) = (0, 0, 0, 0);
                 for ray in &rays {
-                    let got = scene.trace_with(ray, |torus, bounds, ray, t_max| {
+                    let got = scene.trace_with(ray, |torus, ray, t_max| {
                         visits += 1;
                         let hit = classify_line(torus, ray).class == OracleClass::Hit;
                         line_hits += usize::from(hit);
                         let line = torus.line_to_local(ray);
-                        if !cull.keeps(bounds, line.origin, line.dir) {
+                        if !cull.keeps(torus.bounds(), line.origin, line.dir) {
                             culled_hits += usize::from(hit);
                             return f32::INFINITY;
                         }

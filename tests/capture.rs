@@ -9,7 +9,6 @@
 // Every check here runs against the harness's oracle or CLI.
 #![cfg(feature = "harness")]
 
-use torus_cull::CullBounds;
 use torus_cull::CullKind;
 use torus_cull::harness::measure::{LabeledBatch, count};
 use torus_cull::harness::oracle::OracleClass;
@@ -85,8 +84,7 @@ fn discriminant_keeps_no_miss_beyond_the_padding_band() {
         for nu in [1.1, 2.0, 4.0, 8.0, 32.0] {
             let batch = labeled(case, nu, 40_000);
             let torus = &batch.batch.torus;
-            let bounds = CullBounds::of(torus);
-            let eta = f64::from(bounds.minor_safe - bounds.minor_radius);
+            let eta = f64::from(torus.bounds().minor_safe() - torus.minor_radius());
             for cull in [CullKind::Discriminant, CullKind::DiscriminantF64] {
                 let keeps = torus_cull::harness::measure::verdicts(cull, &batch.batch);
                 let worst = batch

@@ -198,7 +198,7 @@ fn scales_far_origins_and_secondary_rays_never_miss() {
 #[test]
 fn wavefront_f32_is_the_scalar_f32_path() {
     use torus_cull::batch::{Dispatch, Isa, Wavefront};
-    use torus_cull::{CullBounds, CullKind, intersect_f32};
+    use torus_cull::{CullKind, intersect_f32};
     let mut wavefront = Wavefront::new();
     let mut hits = Vec::new();
     for nu in [1.2, 4.0, 32.0, 1000.0] {
@@ -207,7 +207,6 @@ fn wavefront_f32_is_the_scalar_f32_path() {
                 continue;
             }
             let batch = generate(case, nu, 3001, 3, Pose::Random).unwrap();
-            let bounds = CullBounds::of(&batch.torus);
             let scalar: Vec<_> = batch
                 .rays
                 .iter()
@@ -220,14 +219,7 @@ fn wavefront_f32_is_the_scalar_f32_path() {
             {
                 for cull in [CullKind::None, CullKind::Cychosz, CullKind::Discriminant] {
                     let stats = wavefront
-                        .intersect_f32(
-                            &dispatch,
-                            cull,
-                            &batch.torus,
-                            &bounds,
-                            &batch.rays,
-                            &mut hits,
-                        )
+                        .intersect_f32(&dispatch, cull, &batch.torus, &batch.rays, &mut hits)
                         .unwrap();
                     for (i, (lane, one)) in hits.iter().zip(&scalar).enumerate() {
                         assert_eq!(

@@ -15,7 +15,7 @@ mod common;
 use common::{NUS, family, pairs, pushed_back};
 use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::harness::workload::Case;
-use torus_cull::{CullBounds, CullKind, Ray, Torus};
+use torus_cull::{CullKind, Ray, Torus};
 
 /// The position of `cull` in [`CullKind::TIMED`].
 fn at(cull: CullKind) -> usize {
@@ -41,8 +41,8 @@ impl Tally {
     fn check(&mut self, torus: &Torus, ray: &Ray) {
         let label = classify_line(torus, ray);
         let line = torus.line_to_local(ray);
-        let bounds = CullBounds::of(torus);
-        let keeps = CullKind::TIMED.map(|c| c.keeps(&bounds, line.origin, line.dir));
+        let bounds = torus.bounds();
+        let keeps = CullKind::TIMED.map(|c| c.keeps(bounds, line.origin, line.dir));
         self.lines += 1;
         match label.class {
             OracleClass::Hit => self.hits += 1,
@@ -82,7 +82,7 @@ impl Tally {
         }
         if keep(CullKind::Ellipsoid) && !keep(CullKind::Cychosz) {
             self.ellipsoid_keeps_cychosz_rejects += 1;
-            let eta = f64::from(bounds.minor_safe - bounds.minor_radius);
+            let eta = f64::from(bounds.minor_safe() - torus.minor_radius());
             if !(label.margin >= 0.5 * eta && label.margin <= 2.0 * eta) {
                 not_superset(
                     &mut self.ellipsoid_not_superset,
@@ -178,10 +178,10 @@ fn degenerate_lines_are_never_falsely_rejected() {
         let mut check = |o: glam::Vec3, d: glam::Vec3| {
             let ray = Ray::new(o, d).unwrap();
             let label = classify_line(&torus, &ray);
-            let bounds = CullBounds::of(&torus);
+            let bounds = torus.bounds();
             for cull in CullKind::TIMED {
                 assert!(
-                    cull.keeps(&bounds, o, d) || label.class != OracleClass::Hit,
+                    cull.keeps(bounds, o, d) || label.class != OracleClass::Hit,
                     "{cull} rejects a hit at nu={nu}: o={o} d={d} margin={:e}",
                     label.margin
                 );

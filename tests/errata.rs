@@ -13,7 +13,7 @@ use torus_cull::harness::errata::PrintedCull;
 use torus_cull::harness::measure::CountedCull;
 use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::harness::workload::Case;
-use torus_cull::{Cull, CullBounds, CullKind, CullVisitor, Ray, Torus};
+use torus_cull::{Cull, CullKind, CullVisitor, Ray, Torus};
 
 fn keeps(cull: impl Into<CountedCull>, torus: &Torus, ray: &Ray) -> bool {
     struct One<'a>(&'a Torus, &'a Ray);
@@ -21,7 +21,7 @@ fn keeps(cull: impl Into<CountedCull>, torus: &Torus, ray: &Ray) -> bool {
         type Output = bool;
         fn visit<C: Cull>(self, cull: C) -> bool {
             let line = self.0.line_to_local(self.1);
-            cull.keeps(&CullBounds::of(self.0), line.origin, line.dir)
+            cull.keeps(self.0.bounds(), line.origin, line.dir)
         }
     }
     cull.into().visit(One(torus, ray))

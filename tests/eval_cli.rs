@@ -6,7 +6,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 use torus_cull::harness::oracle::{OracleClass, classify};
-use torus_cull::{CullBounds, CullKind, Ray, Torus, intersect};
+use torus_cull::{CullKind, Ray, Torus, intersect};
 
 fn run(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -142,7 +142,7 @@ fn good_input_round_trips() {
          ellipsoid,quadric,discriminant,discriminant_f64"
     );
     let torus = Torus::canonical(2.0, 1.0).unwrap();
-    let bounds = CullBounds::of(&torus);
+    let bounds = torus.bounds();
     let mut n = 0;
     for (i, (line, r)) in lines.zip(&rows).enumerate() {
         let f: Vec<&str> = line.split(',').collect();
@@ -167,7 +167,7 @@ fn good_input_round_trips() {
         }
         let local = torus.line_to_local(&ray);
         for (j, cull) in CullKind::TIMED.iter().enumerate() {
-            let keep = cull.keeps(&bounds, local.origin, local.dir);
+            let keep = cull.keeps(bounds, local.origin, local.dir);
             assert_eq!(f[4 + j], if keep { "1" } else { "0" }, "{cull} on {line}");
         }
         n += 1;

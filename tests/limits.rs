@@ -13,8 +13,7 @@ use glam::Vec3;
 use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::harness::workload::Case;
 use torus_cull::{
-    CullBounds, CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus,
-    TorusError,
+    CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus, TorusError,
 };
 
 const NUS: [f64; 6] = [1.01, 1.1, 2.0, 10.0, 100.0, 1000.0];
@@ -53,9 +52,9 @@ impl Tally {
         }
         self.hits += 1;
         let line = torus.line_to_local(ray);
-        let bounds = CullBounds::of(torus);
+        let bounds = torus.bounds();
         for (i, cull) in CullKind::TIMED.iter().enumerate() {
-            if !cull.keeps(&bounds, line.origin, line.dir) {
+            if !cull.keeps(bounds, line.origin, line.dir) {
                 self.false_rejects[i] += 1;
                 if self.examples.len() < 5 {
                     self.examples

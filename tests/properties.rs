@@ -9,7 +9,7 @@ use glam::Vec3;
 use proptest::prelude::*;
 use torus_cull::harness::eval::{Precision, eval_csv};
 use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::{CullBounds, CullKind, Ray, Torus};
+use torus_cull::{CullKind, Ray, Torus};
 
 fn vec3(range: std::ops::Range<f32>) -> impl Strategy<Value = Vec3> {
     (range.clone(), range.clone(), range).prop_map(|(x, y, z)| Vec3::new(x, y, z))
@@ -60,14 +60,14 @@ proptest! {
         let ray = Ray::new(p - dir.normalize() * (back * outer), d).unwrap();
         let label = classify_line(&torus, &ray);
         let line = torus.line_to_local(&ray);
-        let bounds = CullBounds::of(&torus);
+        let bounds = torus.bounds();
         for cull in CullKind::TIMED {
             prop_assert!(
-                cull.keeps(&bounds, line.origin, line.dir) || label.class != OracleClass::Hit,
+                cull.keeps(bounds, line.origin, line.dir) || label.class != OracleClass::Hit,
                 "{} rejects a hit: {:?} {:?} margin {:e}", cull, torus, ray, label.margin
             );
         }
-        let keeps = |c: CullKind| c.keeps(&bounds, line.origin, line.dir);
+        let keeps = |c: CullKind| c.keeps(bounds, line.origin, line.dir);
         prop_assert!(
             keeps(CullKind::Cychosz) || !keeps(CullKind::Skala),
             "skala keeps what cychosz rejects: {:?}", ray

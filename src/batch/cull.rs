@@ -22,7 +22,9 @@ pub use crate::cull::NoBatchForm;
 /// Runs `cull` on every line of `lines` at the dispatch level `dispatch`, writing one
 /// keep bit per line into `keep` (resized to `lines.len()`).
 ///
-/// Bit `i` equals `cull.keeps(bounds, line i)` of the scalar cull, bit for bit.
+/// Bit `i` equals `cull.keeps(bounds, line i)` of the scalar cull, bit for bit. Like
+/// [`crate::Cull::keeps`] it works in the torus frame: `bounds` is
+/// [`crate::Torus::bounds`] of the torus whose frame `lines` are in.
 pub fn cull_batch(
     dispatch: &Dispatch,
     cull: CullKind,

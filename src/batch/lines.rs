@@ -132,6 +132,11 @@ impl Lines {
     }
 
     /// Line `i`.
+    ///
+    /// # Panics
+    ///
+    /// If `i ≥ self.len()`.
+    #[must_use]
     pub fn get(&self, i: usize) -> LocalLine {
         assert!(i < self.len, "line {i} of {}", self.len);
         LocalLine {

@@ -47,7 +47,12 @@ impl KeepMask {
     }
 
     /// Whether line `i` is kept.
+    ///
+    /// # Panics
+    ///
+    /// If `i ≥ self.len()`.
     #[inline]
+    #[must_use]
     pub fn get(&self, i: usize) -> bool {
         assert!(i < self.len, "line {i} of {}", self.len);
         self.words[i / BLOCK] >> (i % BLOCK) & 1 == 1

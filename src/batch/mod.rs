@@ -26,11 +26,10 @@
 //!
 //! ```
 //! use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
-//! use torus_cull::{CullBounds, CullKind, Ray, Torus, intersect_culled};
+//! use torus_cull::{CullKind, Ray, Torus, intersect_culled};
 //! use glam::Vec3;
 //!
 //! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
-//! let bounds = CullBounds::of(&torus);
 //! // A row of rays straight down: through the hole (|x| < 3), the tube, and outside.
 //! let rays = (0..64)
 //!     .map(|i| Ray::new(Vec3::new(i as f32 * 0.125 - 4.0, 10.0, 0.0), Vec3::NEG_Y))
@@ -39,17 +38,18 @@
 //!
 //! // The cull alone: one keep bit per ray, the scalar verdict bit for bit.
 //! let mut keep = KeepMask::new();
-//! cull_batch(&dispatch, CullKind::Skala, &bounds, &Lines::from_rays(&torus, &rays), &mut keep)?;
+//! let lines = Lines::from_rays(&torus, &rays); // in the torus frame, as the culls see them
+//! cull_batch(&dispatch, CullKind::Skala, torus.bounds(), &lines, &mut keep)?;
 //! assert!(!keep.get(32)); // x = 0: down the middle of the hole
 //! assert!(keep.get(0)); // x = −4: down through the tube
 //!
 //! // Cull, compact the survivors, intersect them on f64 lanes.
 //! let mut wavefront = Wavefront::new();
 //! let mut hits = Vec::new();
-//! let stats = wavefront.intersect(&dispatch, CullKind::Skala, &torus, &bounds, &rays, &mut hits)?;
+//! let stats = wavefront.intersect(&dispatch, CullKind::Skala, &torus, &rays, &mut hits)?;
 //! assert_eq!(stats.kept, keep.count_kept());
 //! for (ray, hit) in rays.iter().zip(&hits) {
-//!     let scalar = intersect_culled(&CullKind::Skala, &torus, &bounds, ray);
+//!     let scalar = intersect_culled(&CullKind::Skala, &torus, ray);
 //!     assert_eq!(hit.is_some(), scalar.is_some());
 //! }
 //! # Ok::<(), Box<dyn std::error::Error>>(())

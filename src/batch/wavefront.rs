@@ -16,7 +16,7 @@ use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::isa::Dispatch;
 use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
-use crate::{CullBounds, CullKind, Hit, Ray, Torus, intersect};
+use crate::{CullKind, Hit, Ray, Torus, intersect};
 use glam::Vec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
@@ -31,6 +31,7 @@ pub struct Wavefront {
 
 /// What one wavefront did.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct WavefrontStats {
     /// Rays in.
     pub rays: usize,
@@ -62,11 +63,10 @@ impl Wavefront {
         dispatch: &Dispatch,
         cull: CullKind,
         torus: &Torus,
-        bounds: &CullBounds,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
     ) -> Result<WavefrontStats, NoBatchForm> {
-        self.cull_and_compact(dispatch, cull, torus, bounds, rays, hits)?;
+        self.cull_and_compact(dispatch, cull, torus, rays, hits)?;
         intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
         let mut stats = WavefrontStats {
             rays: rays.len(),
@@ -105,11 +105,10 @@ impl Wavefront {
         dispatch: &Dispatch,
         cull: CullKind,
         torus: &Torus,
-        bounds: &CullBounds,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
     ) -> Result<WavefrontStats, NoBatchForm> {
-        self.f32_pass(dispatch, cull, torus, bounds, rays, hits, Proof::Certify)
+        self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Certify)
     }
 
     /// The f32 wavefront **without** the proof: every f32 answer taken as it comes (hits
@@ -120,36 +119,22 @@ impl Wavefront {
         dispatch: &Dispatch,
         cull: CullKind,
         torus: &Torus,
-        bounds: &CullBounds,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
     ) -> Result<WavefrontStats, NoBatchForm> {
-        self.f32_pass(
-            dispatch,
-            cull,
-            torus,
-            bounds,
-            rays,
-            hits,
-            Proof::Uncertified,
-        )
+        self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Uncertified)
     }
 
-    #[allow(
-        clippy::too_many_arguments,
-        reason = "intersect_f32's arguments and the proof"
-    )]
     fn f32_pass(
         &mut self,
         dispatch: &Dispatch,
         cull: CullKind,
         torus: &Torus,
-        bounds: &CullBounds,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
         proof: Proof,
     ) -> Result<WavefrontStats, NoBatchForm> {
-        self.cull_and_compact(dispatch, cull, torus, bounds, rays, hits)?;
+        self.cull_and_compact(dispatch, cull, torus, rays, hits)?;
         certify_lanes(
             dispatch,
             torus,
@@ -190,7 +175,6 @@ impl Wavefront {
         dispatch: &Dispatch,
         cull: CullKind,
         torus: &Torus,
-        bounds: &CullBounds,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
     ) -> Result<(), NoBatchForm> {
@@ -200,7 +184,7 @@ impl Wavefront {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {
             self.lines.fill_from_rays_batch(dispatch, torus, rays);
-            cull_batch(dispatch, cull, bounds, &self.lines, &mut self.keep)?;
+            cull_batch(dispatch, cull, torus.bounds(), &self.lines, &mut self.keep)?;
             let count = self.keep.count_kept();
             self.survivors.fill(rays, self.keep.kept(), count);
         }

@@ -59,6 +59,7 @@ pub enum F32Verdict {
 /// The nearest hit as the f32 path finishes it: the certified f32 answer, or the f64
 /// solver's where f32 could not prove one.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct F32Hit {
     /// The nearest hit, or `None`.
     pub hit: Option<Hit>,

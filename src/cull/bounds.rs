@@ -20,47 +20,58 @@ pub const SAFETY_REL: f32 = 1.0 / 4096.0;
 pub(crate) const AXIS_PARALLEL_H2: f32 = 1e-12;
 
 /// Per-torus constants for the culls, in f32, with the safety margin folded in.
+///
+/// Owned by its [`crate::Torus`] (computed once in [`crate::Torus::new`], read with
+/// [`crate::Torus::bounds`]): bounds exist only for a torus the constructor accepted, so a
+/// cull can be handed neither another torus's constants nor those of a torus without a
+/// hole (R ≤ r, where the padded hole test would reject lines that hit).
+///
+/// ```compile_fail
+/// // Not constructible outside the crate: R < r has no bounds, only a `TorusError`.
+/// let bounds = torus_cull::CullBounds::new(1.0, 2.0);
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CullBounds {
     /// R.
-    pub major_radius: f32,
+    pub(crate) major_radius: f32,
     /// r (unpadded, for the paper-as-printed variants).
-    pub minor_radius: f32,
+    pub(crate) minor_radius: f32,
     /// r_η = r + η: the padded tube radius used by every timed cull.
-    pub minor_safe: f32,
+    pub(crate) minor_safe: f32,
     /// r_η².
-    pub minor_safe_sq: f32,
+    pub(crate) minor_safe_sq: f32,
     /// (R + r_η)²: the padded bounding sphere.
-    pub outer_safe_sq: f32,
+    pub(crate) outer_safe_sq: f32,
     /// R + r_η.
-    pub outer_safe: f32,
+    pub(crate) outer_safe: f32,
     /// R − r_η: the padded hole radius (≥ 0 is not guaranteed for ν near 1).
-    pub inner_safe: f32,
+    pub(crate) inner_safe: f32,
     /// (R − r_η)², or 0 when the padded hole closes.
-    pub inner_safe_sq: f32,
+    pub(crate) inner_safe_sq: f32,
     /// s = √(ν_η + 1) with ν_η = R/r_η, rounded down: scaling y by s turns the padded
     /// outer ellipsoid ρ² + (ν_η + 1)·y² ≤ (R + r_η)² into the sphere of radius R + r_η.
     /// Rounding s down only widens the ellipsoid.
-    pub ellipsoid_y_scale: f32,
+    pub(crate) ellipsoid_y_scale: f32,
     /// s·r_η: the slab |y| ≤ r_η in the y-scaled coordinates.
-    pub ellipsoid_slab: f32,
+    pub(crate) ellipsoid_slab: f32,
     /// (ν_η − 1)/(ν_η + 1) = (R − r_η)/(R + r_η), rounded down, or 0 when the padded hole
     /// closes: the inner hyperboloid ρ² − (ν_η − 1)·y² ≥ (R − r_η)² in the y-scaled
     /// coordinates is ρ² − this·y′² ≥ (R − r_η)². Rounding down only widens it.
-    pub hyperboloid_y_coef: f32,
+    pub(crate) hyperboloid_y_coef: f32,
     /// 1/R²: the discriminant works at R = 1.
-    pub inv_major_sq: f32,
+    pub(crate) inv_major_sq: f32,
     /// (r_η/R)²: the padded tube radius at R = 1.
-    pub minor_rel_sq: f32,
+    pub(crate) minor_rel_sq: f32,
     /// 1/R² in f64, for `discriminant_f64`.
-    pub inv_major_sq_f64: f64,
+    pub(crate) inv_major_sq_f64: f64,
     /// (r_η/R)² in f64, from the f32 r_η and R, for `discriminant_f64`.
-    pub minor_rel_sq_f64: f64,
+    pub(crate) minor_rel_sq_f64: f64,
 }
 
 impl CullBounds {
-    /// Bounds for R = `major_radius`, r = `minor_radius` (a valid ring torus).
-    pub fn new(major_radius: f32, minor_radius: f32) -> CullBounds {
+    /// Bounds for R = `major_radius`, r = `minor_radius`: only [`crate::Torus::new`]'s
+    /// validated radii come here (and the unit tests').
+    pub(crate) fn new(major_radius: f32, minor_radius: f32) -> CullBounds {
         let eta = SAFETY_REL * (major_radius + minor_radius);
         let minor_safe = minor_radius + eta;
         let outer_safe = major_radius + minor_safe;
@@ -95,9 +106,12 @@ impl CullBounds {
         }
     }
 
-    /// Bounds for a [`crate::Torus`].
-    pub fn of(torus: &crate::Torus) -> CullBounds {
-        CullBounds::new(torus.major_radius(), torus.minor_radius())
+    /// r_η = r + η: the padded tube radius every timed cull tests against (η =
+    /// [`SAFETY_REL`]·(R + r), rounded in f32), for code that checks a cull's margin.
+    #[must_use]
+    #[inline]
+    pub fn minor_safe(&self) -> f32 {
+        self.minor_safe
     }
 }
 

@@ -19,6 +19,13 @@ use pulp::{Scalar, Simd};
 ///
 /// `keeps` is a **line** test: `origin + t·dir` for all real t, `dir` finite and non-zero
 /// of any length. `false` means the line provably misses the torus.
+///
+/// It is the low-level form, in the torus frame: the line from
+/// [`crate::Torus::line_to_local`] (or [`crate::Torus::dline_to_local`]) and the bounds
+/// from [`crate::Torus::bounds`] of the same torus. Bounds come only from a validated
+/// [`crate::Torus`], so a torus without a hole (R ≤ r) cannot reach a cull.
+/// [`crate::intersect_culled`] and [`crate::Torus::with_cull`] do both steps for a world
+/// ray.
 pub trait Cull {
     /// The stable name used in results, the CLI and plots.
     fn name(&self) -> &'static str;

@@ -97,6 +97,7 @@ impl CullKind {
     }
 
     /// One line through the registry: convenient, but dispatches per call.
+    #[must_use]
     pub fn keeps(self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
         struct One<'a>(&'a CullBounds, Vec3, Vec3);
         impl CullVisitor for One<'_> {
@@ -130,6 +131,7 @@ impl fmt::Display for CullKind {
 
 /// An unknown cull name.
 #[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct UnknownCull(pub String);
 
 impl fmt::Display for UnknownCull {
@@ -192,6 +194,7 @@ pub const BATCHED: [CullKind; 9] = {
 
 /// A cull without a batch form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct NoBatchForm(pub CullKind);
 
 impl fmt::Display for NoBatchForm {

@@ -1,6 +1,7 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::ray::{DRay, Ray};
+use crate::cull::CullBounds;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 
@@ -49,6 +50,9 @@ pub struct Torus {
     to_local_f64: DMat3,
     /// (NEAR_ORIGIN_REL·(R + r))²: origins beyond it take the f64 path to the culls.
     near_origin_sq: f32,
+    /// The culls' constants, derived once here from the validated radii: a cull can only
+    /// be given the bounds of the torus it tests.
+    bounds: CullBounds,
 }
 
 /// Why a torus was refused.
@@ -235,6 +239,7 @@ impl Torus {
             to_local: to_local_f64.as_mat3(),
             to_local_f64,
             near_origin_sq: near * near,
+            bounds: CullBounds::new(major_radius, minor_radius),
         })
     }
 
@@ -277,6 +282,15 @@ impl Torus {
     #[inline]
     pub fn outer_radius(&self) -> f32 {
         self.major_radius + self.minor_radius
+    }
+
+    /// The culls' per-torus constants (R, r and the padded radii of the safety margin),
+    /// computed once by [`Torus::new`]: what [`crate::Cull::keeps`] and
+    /// [`crate::batch::cull_batch`] take with a line already in this torus's frame.
+    #[inline]
+    #[must_use]
+    pub fn bounds(&self) -> &CullBounds {
+        &self.bounds
     }
 
     /// The rotation world→torus frame (axis → +y), f32.

@@ -21,9 +21,7 @@
 //! the command exits non-zero: no answer is ever silently wrong or skipped.
 
 use crate::harness::oracle::{OracleClass, OracleLabel, Query, classify};
-use crate::{
-    CullBounds, CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect, intersect_f32,
-};
+use crate::{CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect, intersect_f32};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
@@ -107,7 +105,6 @@ pub fn eval_csv(
     mut output: impl Write,
 ) -> Result<usize, EvalError> {
     let torus = Torus::canonical(major_radius, minor_radius).map_err(EvalError::Torus)?;
-    let bounds = CullBounds::of(&torus);
     let row_error = |line: usize, message: String| EvalError::Row {
         input: input_name.to_string(),
         line,
@@ -216,7 +213,7 @@ pub fn eval_csv(
             write!(output, ",{}", u8::from(escalated))?;
         }
         for cull in CullKind::TIMED {
-            let keep = cull.keeps(&bounds, line.origin, line.dir);
+            let keep = cull.keeps(torus.bounds(), line.origin, line.dir);
             write!(output, ",{}", u8::from(keep))?;
         }
         writeln!(output)?;

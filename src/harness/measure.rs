@@ -6,7 +6,7 @@ use crate::harness::errata::PrintedCull;
 use crate::harness::oracle::{OracleClass, OracleLabel, classify};
 use crate::harness::results::RejectionRecord;
 use crate::harness::workload::{Batch, Case, GenerateError, generate, spec::Workload};
-use crate::{Cull, CullBounds, CullKind, CullVisitor, Ray};
+use crate::{Cull, CullKind, CullVisitor, Ray};
 use std::fmt;
 use std::str::FromStr;
 
@@ -139,13 +139,12 @@ pub fn verdicts(cull: impl Into<CountedCull>, batch: &Batch) -> Vec<bool> {
         type Output = Vec<bool>;
         fn visit<C: Cull>(self, cull: C) -> Vec<bool> {
             let torus = &self.0.torus;
-            let bounds = CullBounds::of(torus);
             self.0
                 .rays
                 .iter()
                 .map(|r| {
                     let line = torus.line_to_local(r);
-                    cull.keeps(&bounds, line.origin, line.dir)
+                    cull.keeps(torus.bounds(), line.origin, line.dir)
                 })
                 .collect()
         }

@@ -59,9 +59,10 @@ pub fn render(scene: &Scene, size: usize) -> Rendered {
     let mut counts = CullMapCounts::default();
     for ray in &rays {
         let (mut entered, mut cychosz_kept, mut skala_kept) = (false, false, false);
-        let hit = scene.trace_with(ray, |torus, bounds, ray, t_max| {
+        let hit = scene.trace_with(ray, |torus, ray, t_max| {
             entered = true;
             let line = torus.line_to_local(ray);
+            let bounds = torus.bounds();
             cychosz_kept |= CychoszCull.keeps(bounds, line.origin, line.dir);
             skala_kept |= SkalaCull.keeps(bounds, line.origin, line.dir);
             intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)

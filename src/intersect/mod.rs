@@ -21,11 +21,14 @@ use nearest_hit::{Careful, Tube, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
 
 pub(crate) mod nearest_hit;
+mod ray_cast;
 pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
+pub use ray_cast::{Culled, RayCast};
 
 /// The nearest hit of a ray.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Hit {
     /// Ray parameter, in units of the ray's direction.
     pub t: f32,
@@ -35,6 +38,7 @@ pub struct Hit {
 
 /// The nearest hit of an f64 ray ([`crate::DRay`]): `t` and the normal in f64.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct DHit {
     /// Ray parameter, in units of the ray's direction.
     pub t: f64,
@@ -48,6 +52,8 @@ pub struct DHit {
 pub trait TorusRay: sealed::Sealed {
     /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`].
     type Hit;
+    /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`].
+    type Float;
     /// The line in the torus frame in f32, as the culls see it.
     fn cull_line(&self, torus: &Torus) -> LocalLine;
     /// Origin and direction in the torus frame, in f64.
@@ -57,6 +63,8 @@ pub trait TorusRay: sealed::Sealed {
     /// The hit, from f64 `t` and world normal; `None` when `t` does not fit the ray's
     /// float type (a hit farther along than f32, or f64, can count).
     fn hit(t: f64, normal: DVec3) -> Option<Self::Hit>;
+    /// A hit's `t` ([`RayCast::cast_ray`]'s answer).
+    fn hit_t(hit: &Self::Hit) -> Self::Float;
 }
 
 mod sealed {
@@ -67,6 +75,11 @@ mod sealed {
 
 impl TorusRay for Ray {
     type Hit = Hit;
+    type Float = f32;
+    #[inline(always)]
+    fn hit_t(hit: &Hit) -> f32 {
+        hit.t
+    }
     #[inline(always)]
     fn cull_line(&self, torus: &Torus) -> LocalLine {
         torus.line_to_local(self)
@@ -91,6 +104,11 @@ impl TorusRay for Ray {
 
 impl TorusRay for DRay {
     type Hit = DHit;
+    type Float = f64;
+    #[inline(always)]
+    fn hit_t(hit: &DHit) -> f64 {
+        hit.t
+    }
     #[inline]
     fn cull_line(&self, torus: &Torus) -> LocalLine {
         torus.dline_to_local(self)
@@ -135,6 +153,7 @@ fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> (FootLine<Sc>, [Sc; 3])
 /// Its variable `u` is the signed distance along `d̂ = d/|d|` from the foot point
 /// `o − (o·d̂)d̂`, **in units of R**: `t = (u·R − o·d̂)/|d|`. Feed it to
 /// [`crate::quartic::solve_quartic`] (or `solve_depressed_monic(c[2], c[3], c[4])`).
+#[must_use]
 pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> [f64; 5] {
     let (_, [c2, c1, c0]) = reduce(major, minor, o, d);
     [1.0, 0.0, c2.v, c1.v, c0.v]
@@ -142,6 +161,7 @@ pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) ->
 
 /// Every real `t` (units of `d`, sorted, double roots twice) where the whole line
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
+#[must_use]
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
     let (line, [c2, c1, c0]) = reduce(major, minor, o, d);
     // t is increasing in u (R > 0, |d| > 0), so the order is kept.
@@ -156,6 +176,7 @@ pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots
 /// line that misses the sphere, or whose chord lies outside the range, returns before
 /// the quartic; otherwise [`crate::quartic::nearest_root_depressed`] solves for the nearest root in range.
 #[inline]
+#[must_use]
 pub fn intersect_local(
     major: f64,
     minor: f64,

@@ -9,11 +9,32 @@ use super::{RealRoots, eval, eval2, even, factor};
 /// root is then Newton-polished on the original coefficients (the depression loses
 /// absolute accuracy when the shift is large).
 /// Returns no roots if `c[0] = 0` or a coefficient is not finite.
+///
+/// Coefficients of any finite size are taken: where the roots' scale lies beyond 2^±25
+/// or the coefficients beyond 2^±900, the quartic is solved for t/2^m with its
+/// coefficients scaled by powers of two, and a root too large for f64 is left out.
+#[must_use]
 pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
-    let [c4, c3, c2, c1, c0] = c;
-    if c4 == 0.0 || !c.iter().all(|v| v.is_finite()) {
+    if c[0] == 0.0 || !c.iter().all(|v| v.is_finite()) {
         return RealRoots::default();
     }
+    let Some((m, scaled)) = out_of_range_rescale(&c) else {
+        return solve_in_range(c);
+    };
+    let mut roots = RealRoots::default();
+    for &y in solve_in_range(scaled).as_slice() {
+        let x = times_pow2(y, m);
+        if x.is_finite() {
+            roots.push(x);
+        }
+    }
+    roots
+}
+
+/// [`solve_quartic`] for coefficients that neither overflow nor underflow when made monic
+/// and depressed.
+fn solve_in_range(c: [f64; 5]) -> RealRoots {
+    let [c4, c3, c2, c1, c0] = c;
     let inv = 1.0 / c4;
     let (b, cc, d) = (c2 * inv, c1 * inv, c0 * inv);
     let s = 0.25 * c3 * inv;
@@ -30,11 +51,54 @@ pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
     roots
 }
 
+/// For a quartic whose monic form would leave f64's comfortable range, `(m, a)`: the
+/// quartic in `y = t/2^m` with its coefficients scaled by a common power of two, so that
+/// `a[0] ≈ 1` and every `|a[k]| ≤ 2^2.5`; its roots times 2^m are the roots. `None` in
+/// the range the solver always served, which is left untouched, bit for bit: the roots'
+/// scale within 2^±25 (so the monic coefficients within 2^±100, as the depressed solvers
+/// ask; see `out_of_range_scale`) and the largest coefficient within 2^±900 (so that
+/// `1/c[0]` and the polishing stay finite).
+fn out_of_range_rescale(c: &[f64; 5]) -> Option<(i32, [f64; 5])> {
+    const ROOT_EXP: f64 = 25.0;
+    const COEFFICIENT_EXP: f64 = 900.0;
+    let exp = |x: f64| x.abs().log2();
+    let lead = exp(c[0]);
+    // Fujiwara's bound in exponents: every root has |t| ≤ 2·max_k |c[k]/c[0]|^(1/k), and
+    // the largest term is the scale at which the monic coefficients are O(1).
+    let root_exp = (1..5)
+        .filter(|&k| c[k] != 0.0)
+        .map(|k| (exp(c[k]) - lead) / k as f64)
+        .fold(f64::NEG_INFINITY, f64::max);
+    // t⁴ alone: every root is 0 at any scale.
+    let root_exp = if root_exp.is_finite() { root_exp } else { 0.0 };
+    let largest = c.iter().map(|&x| exp(x)).fold(f64::NEG_INFINITY, f64::max);
+    if root_exp.abs() <= ROOT_EXP && largest.abs() <= COEFFICIENT_EXP {
+        return None;
+    }
+    let m = root_exp.round() as i32;
+    // a[k] = c[k]·2^(m(4 − k))/2^n with n = round(lead) + 4m, so that a[0] = c[0]/2^round(lead).
+    let n = lead.round() as i32 + 4 * m;
+    let a = std::array::from_fn(|k| times_pow2(c[k], m * (4 - k as i32) - n));
+    Some((m, a))
+}
+
+/// `x·2^n` in steps of at most 2^±1000 toward the result: exact unless the result is
+/// subnormal or overflows, since every step lies between `x` and the result.
+fn times_pow2(mut x: f64, mut n: i32) -> f64 {
+    while n != 0 && x != 0.0 && x.is_finite() {
+        let step = n.clamp(-1000, 1000);
+        x *= f64::from_bits(((step + 1023) as u64) << 52);
+        n -= step;
+    }
+    x
+}
+
 /// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
 /// Newton-polished on that quartic. A double root is reported twice.
 ///
 /// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
 /// x/s, s a power of two.
+#[must_use]
 pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
     if !(p.is_finite() && q.is_finite() && r.is_finite()) {
         return RealRoots::default();

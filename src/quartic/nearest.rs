@@ -33,6 +33,7 @@ use crate::batch::real::{Real, RealMask, sc, sc_mask};
 /// power of two (see `out_of_range_scale`). That range check costs 4–6 % of a solve (paired
 /// solver bench); [`crate::intersect()`], whose coefficients are O(1), skips it.
 #[inline]
+#[must_use]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
     if let Some(s) = super::out_of_range_scale(p, q, r) {
         let (p, q, r) = super::scaled(p, q, r, s);

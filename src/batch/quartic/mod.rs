@@ -79,6 +79,11 @@ impl Quartics {
     }
 
     /// Quartic `i` as `(p, q, r, lo, hi)`.
+    ///
+    /// # Panics
+    ///
+    /// If `i ≥ self.len()`.
+    #[must_use]
     pub fn get(&self, i: usize) -> (f64, f64, f64, f64, f64) {
         assert!(i < self.len, "quartic {i} of {}", self.len);
         let c = &self.columns;
@@ -88,6 +93,7 @@ impl Quartics {
 
 /// How a batch solve went: how many lanes the scalar solver took over.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct SolveStats {
     /// Quartics solved.
     pub quartics: usize,

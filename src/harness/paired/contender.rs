@@ -5,9 +5,7 @@
 //! outside the timed region.
 
 use crate::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
-use crate::{
-    Cull, CullBounds, CullKind, CullVisitor, Hit, LocalLine, Ray, Torus, intersect_culled,
-};
+use crate::{Cull, CullKind, CullVisitor, Hit, LocalLine, Ray, Torus, intersect_culled};
 use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
@@ -103,7 +101,6 @@ impl fmt::Display for Metric {
 #[derive(Debug, Clone)]
 pub struct Workset<'a> {
     torus: &'a Torus,
-    bounds: CullBounds,
     rays: &'a [Ray],
     lines: Vec<LocalLine>,
     /// For the batch metrics: the lines as structure of arrays, the dispatch level, and
@@ -125,7 +122,6 @@ impl<'a> Workset<'a> {
         let lines: Vec<LocalLine> = rays.iter().map(|r| torus.line_to_local(r)).collect();
         Workset {
             torus,
-            bounds: CullBounds::of(torus),
             rays,
             lines,
             batch: None,
@@ -183,24 +179,24 @@ fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usiz
         match metric {
             Metric::BatchTotalNs => {
                 wavefront
-                    .intersect(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .intersect(d, cull, set.torus, rays(), hits)
                     .expect("a cull with a batch form");
                 black_box(&hits);
             }
             Metric::BatchF32TotalNs => {
                 wavefront
-                    .intersect_f32(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .intersect_f32(d, cull, set.torus, rays(), hits)
                     .expect("a cull with a batch form");
                 black_box(&hits);
             }
             Metric::BatchF32UncertifiedNs => {
                 wavefront
-                    .intersect_f32_uncertified(d, cull, set.torus, &set.bounds, rays(), hits)
+                    .intersect_f32_uncertified(d, cull, set.torus, rays(), hits)
                     .expect("a cull with a batch form");
                 black_box(&hits);
             }
             Metric::BatchCullNs => {
-                cull_batch(d, cull, &set.bounds, black_box(&batch.soa), keep)
+                cull_batch(d, cull, set.torus.bounds(), black_box(&batch.soa), keep)
                     .expect("a cull with a batch form");
                 black_box(&keep);
             }
@@ -225,11 +221,11 @@ pub fn escalation_rate(cull: CullKind, metric: Metric, set: &Workset<'_>) -> Opt
         .expect("a batch metric needs Workset::with_batch");
     let mut scratch = batch.scratch.borrow_mut();
     let (wavefront, hits, _) = &mut *scratch;
-    let (d, torus, bounds) = (&batch.dispatch, set.torus, &set.bounds);
+    let (d, torus) = (&batch.dispatch, set.torus);
     let stats = if metric == Metric::BatchF32TotalNs {
-        wavefront.intersect_f32(d, cull, torus, bounds, set.rays, hits)
+        wavefront.intersect_f32(d, cull, torus, set.rays, hits)
     } else {
-        wavefront.intersect_f32_uncertified(d, cull, torus, bounds, set.rays, hits)
+        wavefront.intersect_f32_uncertified(d, cull, torus, set.rays, hits)
     }
     .expect("a cull with a batch form");
     Some(stats.escalated as f64 / stats.rays.max(1) as f64)
@@ -247,19 +243,16 @@ impl CullVisitor for Pass<'_, '_> {
     #[inline(never)]
     fn visit<C: Cull>(self, cull: C) -> Duration {
         let Workset {
-            torus,
-            bounds,
-            rays,
-            lines,
-            ..
+            torus, rays, lines, ..
         } = self.set;
+        let bounds = torus.bounds();
         let start = Instant::now();
         match self.metric {
             Metric::TotalNs => {
                 for _ in 0..self.reps {
                     // Opaque per pass, so no work is hoisted out of the repetitions.
                     for ray in black_box(*rays) {
-                        black_box(intersect_culled(&cull, torus, bounds, ray));
+                        black_box(intersect_culled(&cull, torus, ray));
                     }
                 }
             }

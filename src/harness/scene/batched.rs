@@ -46,7 +46,7 @@ pub fn trace_leaves_batched(
     rays: &[Ray],
     stats: &mut LeafBatchStats,
 ) -> Result<Vec<SceneHit>, NoBatchForm> {
-    let (bvh, bounds) = scene.bvh_and_bounds();
+    let bvh = scene.bvh();
     // Pass 1: every (torus, ray) candidate, bucketed by torus.
     let mut candidates: Vec<Vec<u32>> = vec![Vec::new(); scene.tori.len()];
     for (i, ray) in rays.iter().enumerate() {
@@ -75,14 +75,7 @@ pub fn trace_leaves_batched(
         batch_rays.clear();
         batch_rays.extend(which.iter().map(|&i| rays[i as usize]));
         let torus = &scene.tori[torus_index];
-        let s = wavefront.intersect(
-            dispatch,
-            cull,
-            torus,
-            &bounds[torus_index],
-            &batch_rays,
-            &mut hits,
-        )?;
+        let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits)?;
         stats.leaf_candidates += which.len() as u64;
         stats.cull_rejects += (s.rays - s.kept) as u64;
         stats.intersections += s.kept as u64;

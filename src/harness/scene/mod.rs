@@ -10,7 +10,7 @@ pub mod batched;
 pub use batched::{LeafBatchStats, trace_leaves_batched};
 
 use crate::harness::workload::CameraView;
-use crate::{Cull, CullBounds, Ray, Torus, intersect};
+use crate::{Cull, Ray, Torus, intersect};
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
@@ -106,7 +106,7 @@ pub fn same_hit(a: SceneHit, b: SceneHit) -> bool {
     }
 }
 
-/// A scene: tori, their cull bounds, the BVH over their boxes, and the camera framing it.
+/// A scene: tori (each with its cull bounds), the BVH over their boxes, and the camera framing it.
 pub struct Scene {
     /// Layout.
     pub kind: SceneKind,
@@ -114,7 +114,6 @@ pub struct Scene {
     pub nu: f64,
     /// The tori.
     pub tori: Vec<Torus>,
-    bounds: Vec<CullBounds>,
     bvh: CwBvh,
     /// A pinhole view that frames the scene.
     pub camera: CameraView,
@@ -212,7 +211,6 @@ impl Scene {
             .map(|(c, a)| Torus::new(c.as_vec3(), a.as_vec3(), major as f32, minor as f32))
             .collect::<Result<_, _>>()
             .map_err(|e| SceneError(e.to_string()))?;
-        let bounds = tori.iter().map(CullBounds::of).collect();
         let aabbs: Vec<Aabb> = tori
             .iter()
             .map(|t| {
@@ -254,7 +252,6 @@ impl Scene {
             kind,
             nu,
             tori,
-            bounds,
             bvh,
             camera: CameraView {
                 eye,
@@ -302,10 +299,10 @@ impl Scene {
     /// The closest hit through the BVH, with `cull` at the leaves; adds to `stats`.
     #[inline]
     pub fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
-        self.trace_with(ray, |torus, bounds, ray, t_max| {
+        self.trace_with(ray, |torus, ray, t_max| {
             stats.leaf_visits += 1;
             let line = torus.line_to_local(ray);
-            if !cull.keeps(bounds, line.origin, line.dir) {
+            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
                 stats.cull_rejects += 1;
                 return f32::INFINITY;
             }
@@ -314,12 +311,12 @@ impl Scene {
         })
     }
 
-    /// Traverse the BVH, calling `leaf(torus, bounds, ray, current t_max)` at each leaf; it
+    /// Traverse the BVH, calling `leaf(torus, ray, current t_max)` at each leaf; it
     /// returns the torus's t or +∞.
     pub fn trace_with(
         &self,
         ray: &Ray,
-        mut leaf: impl FnMut(&Torus, &CullBounds, &Ray, f32) -> f32,
+        mut leaf: impl FnMut(&Torus, &Ray, f32) -> f32,
     ) -> SceneHit {
         // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into +0.0.
         let traversal_ray = obvhs::ray::Ray::new(
@@ -333,15 +330,14 @@ impl Scene {
         // Traversal ignores tmin: `intersect` honours the ray's own t_min.
         let found = self.bvh.ray_traverse(traversal_ray, &mut hit, |r, id| {
             let prim = indices[id] as usize;
-            leaf(&self.tori[prim], &self.bounds[prim], ray, r.tmax)
+            leaf(&self.tori[prim], ray, r.tmax)
         });
         found.then(|| (indices[hit.primitive_id as usize], hit.t))
     }
 
-    /// The BVH and each torus's cull bounds (indexed like [`Scene::tori`]), for the
-    /// batch traversal of [`crate::batch::trace_leaves_batched`].
-    pub(crate) fn bvh_and_bounds(&self) -> (&CwBvh, &[CullBounds]) {
-        (&self.bvh, &self.bounds)
+    /// The BVH, for the batch traversal of [`crate::batch::trace_leaves_batched`].
+    pub(crate) fn bvh(&self) -> &CwBvh {
+        &self.bvh
     }
 
     /// The closest hit over every torus with no cull: the ground truth for the BVH.
