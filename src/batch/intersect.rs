@@ -133,10 +133,7 @@ impl TorusF64 {
             center: torus.center().as_dvec3(),
             to_local,
             to_world: to_local.transpose(),
-            tube: Tube::new(
-                f64::from(torus.major_radius()),
-                f64::from(torus.minor_radius()),
-            ),
+            tube: *torus.tube(),
         }
     }
 

@@ -2,6 +2,7 @@
 
 use super::ray::{DRay, Ray};
 use crate::cull::CullBounds;
+use crate::intersect::nearest_hit::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 
@@ -53,6 +54,8 @@ pub struct Torus {
     /// The culls' constants, derived once here from the validated radii: a cull can only
     /// be given the bounds of the torus it tests.
     bounds: CullBounds,
+    /// The exact path's constants (1/R, r/R, …), likewise derived once.
+    tube: Tube,
 }
 
 /// Why a torus was refused.
@@ -240,6 +243,7 @@ impl Torus {
             to_local_f64,
             near_origin_sq: near * near,
             bounds: CullBounds::new(major_radius, minor_radius),
+            tube: Tube::new(f64::from(major_radius), f64::from(minor_radius)),
         })
     }
 
@@ -291,6 +295,12 @@ impl Torus {
     #[must_use]
     pub fn bounds(&self) -> &CullBounds {
         &self.bounds
+    }
+
+    /// The exact intersection's per-torus constants.
+    #[inline(always)]
+    pub(crate) fn tube(&self) -> &Tube {
+        &self.tube
     }
 
     /// The rotation world→torus frame (axis → +y), f32.

@@ -185,7 +185,7 @@ pub fn intersect_local(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
-    intersect_reduced::<true>(major, minor, o, d, t_min, t_max)
+    intersect_reduced::<true>(&Tube::new(major, minor), o, d, t_min, t_max)
 }
 
 /// [`intersect_local`]; `CHECKED = false` skips the solver's coefficient range check,
@@ -193,20 +193,13 @@ pub fn intersect_local(
 /// O(1)), where the check cost 4–6 % of a solve in the paired solver bench.
 #[inline(always)]
 fn intersect_reduced<const CHECKED: bool>(
-    major: f64,
-    minor: f64,
+    tube: &Tube,
     o: DVec3,
     d: DVec3,
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
-    let found = nearest_hit::<Sc, Careful<CHECKED>>(
-        &Tube::new(major, minor),
-        v(o),
-        v(d),
-        sc(t_min),
-        sc(t_max),
-    )?;
+    let found = nearest_hit::<Sc, Careful<CHECKED>>(tube, v(o), v(d), sc(t_min), sc(t_max))?;
     found.hit.m.then(|| (found.t.v, back(found.normal)))
 }
 
@@ -239,14 +232,7 @@ fn intersect_reduced<const CHECKED: bool>(
 pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();
-    let (t, n) = intersect_reduced::<false>(
-        f64::from(torus.major_radius()),
-        f64::from(torus.minor_radius()),
-        o,
-        d,
-        t_min,
-        t_max,
-    )?;
+    let (t, n) = intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)?;
     // The rotation is orthonormal: its transpose is its inverse.
     R::hit(t, torus.to_local_rotation_f64().transpose() * n)
 }
@@ -269,15 +255,8 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
 pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();
-    intersect_reduced::<false>(
-        f64::from(torus.major_radius()),
-        f64::from(torus.minor_radius()),
-        o,
-        d,
-        t_min,
-        t_max,
-    )
-    .is_some_and(|(t, n)| R::hit(t, n).is_some())
+    intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)
+        .is_some_and(|(t, n)| R::hit(t, n).is_some())
 }
 
 #[cfg(test)]

@@ -15,7 +15,7 @@ use crate::batch::vec3s::V3;
 use crate::quartic::{nearest_root_depressed, nearest_root_in_range};
 
 /// A torus's constants on the exact path, each computed once in f64.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Tube {
     /// R.
     pub(crate) major: f64,
