@@ -5,10 +5,11 @@ use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use torus_cull::harness::measure::{self, CountedCull};
+use torus_cull::harness::measure::{self, CountedCull, FalseReject};
 use torus_cull::harness::output;
 use torus_cull::harness::report;
-use torus_cull::harness::results::{self, Results};
+use torus_cull::harness::results::{self, RejectionRecord, Results};
+use torus_cull::harness::workload::GenerateError;
 use torus_cull::harness::workload::spec::Workload;
 
 /// Runs `run`.
@@ -21,39 +22,70 @@ pub fn run(
 ) -> CliResult {
     let workload_path = workload;
     let workload = Workload::load(workload_path)?;
-    let culls: Vec<CountedCull> = if culls.is_empty() {
-        torus_cull::CullKind::TIMED.map(CountedCull::Timed).to_vec()
-    } else {
-        culls
-            .iter()
-            .map(|c| {
-                c.trim()
-                    .parse::<CountedCull>()
-                    .map_err(|e| format!("--culls: {e}"))
-            })
-            .collect::<Result<_, _>>()?
-    };
+    let culls = parse_culls(culls)?;
     let threads = threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    // `run` has its own default name, so that it never overwrites `cargo bench`'s file.
-    let path = match out {
-        Some(path) => path,
-        None => {
-            let suffix = match workload.name.as_str() {
-                "default" => "-run".to_string(),
-                other => format!("-{other}-run"),
-            };
-            let path = results::default_path(Path::new("results"), &suffix);
-            output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
+    let path = out_path(out, &workload)?;
     // Before the sweep, not after it: an unwritable --out must not cost the whole run.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
     output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
-    let units = measure::units(&workload).len() as u64;
+    let (records, false_rejects) = sweep(&workload, &culls, threads)?;
+    let mut results = Results::new(&workload, "run");
+    results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
+    results.meta.threads = Some(threads as u64);
+    results.rejection = records;
+    out!("{}", report::miss_capture_tables(&results))?;
+    print_false_reject_total(&results, &culls)?;
+    results.save(&path)?;
+    outln!("wrote {}", path.display())?;
+    if !no_plots {
+        write_plots(&results, &path)?;
+    }
+    if !false_rejects.is_empty() {
+        report_false_rejects(&false_rejects, workload.seed);
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `--culls`: timed culls and paper-as-printed variants by name; default every timed cull.
+fn parse_culls(names: &[String]) -> Result<Vec<CountedCull>, String> {
+    if names.is_empty() {
+        return Ok(torus_cull::CullKind::TIMED.map(CountedCull::Timed).to_vec());
+    }
+    names
+        .iter()
+        .map(|c| {
+            c.trim()
+                .parse::<CountedCull>()
+                .map_err(|e| format!("--culls: {e}"))
+        })
+        .collect()
+}
+
+/// `--out`, or the default file under `results/` (its directory made if need be).
+fn out_path(out: Option<PathBuf>, workload: &Workload) -> Result<PathBuf, String> {
+    if let Some(path) = out {
+        return Ok(path);
+    }
+    // `run` has its own default name, so that it never overwrites `cargo bench`'s file.
+    let suffix = match workload.name.as_str() {
+        "default" => "-run".to_string(),
+        other => format!("-{other}-run"),
+    };
+    let path = results::default_path(Path::new("results"), &suffix);
+    output::create_default_dir(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    Ok(path)
+}
+
+/// The rejection sweep, with a progress bar (or, off a terminal, a heartbeat) in rays.
+fn sweep(
+    workload: &Workload,
+    culls: &[CountedCull],
+    threads: usize,
+) -> Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError> {
+    let units = measure::units(workload).len() as u64;
     let bar = ProgressBar::new(units * workload.rays as u64).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rays ({eta})")
             .expect("valid template")
@@ -64,18 +96,18 @@ pub fn run(
     let heartbeat = crate::Heartbeat::new(format!("run {message}"), "rays");
     let total = units * workload.rays as u64;
     heartbeat.update(0, total);
-    let (records, false_rejects) = measure::rejection_sweep(&workload, &culls, threads, &|n| {
+    let swept = measure::rejection_sweep(workload, culls, threads, &|n| {
         bar.inc(n);
         heartbeat.update(bar.position(), total);
     })?;
     bar.finish_and_clear();
-    let mut results = Results::new(&workload, "run");
-    results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
-    results.meta.threads = Some(threads as u64);
-    results.rejection = records;
-    out!("{}", report::miss_capture_tables(&results))?;
-    // The project's central claim, stated every time. Each ray is counted once, with the
-    // first cull's records: every cull sees the same rays.
+    Ok(swept)
+}
+
+/// The project's central claim, stated every time: the false rejects among the rays.
+fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io::Result<()> {
+    // Each ray is counted once, with the first cull's records: every cull sees the same
+    // rays.
     let of_one_cull = || {
         results
             .rejection
@@ -89,44 +121,46 @@ pub fn run(
         "{rejected_hits} false rejects in {rays} rays (each checked by {} culls; {ambiguous} \
          rays the oracle calls ambiguous are not counted)",
         culls.len()
+    )
+}
+
+/// The SVG charts, next to the results file `path` and named after it.
+fn write_plots(results: &Results, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let dir = path
+        .parent()
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+    let stem = path
+        .file_stem()
+        .map_or("results".into(), |s| s.to_string_lossy());
+    let written = torus_cull::harness::plot::plot_results(results, &dir, &stem)?;
+    outln!(
+        "wrote {} plots to {}/{stem}-*.svg",
+        written.len(),
+        dir.display()
     )?;
-    results.save(&path)?;
-    outln!("wrote {}", path.display())?;
-    if !no_plots {
-        let dir = path
-            .parent()
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-        let stem = path
-            .file_stem()
-            .map_or("results".into(), |s| s.to_string_lossy());
-        let written = torus_cull::harness::plot::plot_results(&results, &dir, &stem)?;
-        outln!(
-            "wrote {} plots to {}/{stem}-*.svg",
-            written.len(),
-            dir.display()
-        )?;
-    }
-    if !false_rejects.is_empty() {
-        for f in false_rejects.iter().take(20) {
-            eprintln!(
-                "FALSE REJECT: cull {} case {} nu {} ray #{} (workload seed {}, stream seed {:#x}): \
-                 origin {} dir {} margin {:e}",
-                f.cull,
-                f.case,
-                f.nu,
-                f.index,
-                workload.seed,
-                f.stream_seed,
-                f.ray.origin(),
-                f.ray.dir(),
-                f.margin
-            );
-        }
+    Ok(())
+}
+
+/// The first 20 false rejects on stderr, each with what it takes to replay it, and their
+/// count.
+fn report_false_rejects(false_rejects: &[FalseReject], workload_seed: u64) {
+    for f in false_rejects.iter().take(20) {
         eprintln!(
-            "error: {} false rejects: a cull rejected rays the oracle calls hits",
-            false_rejects.len()
+            "FALSE REJECT: cull {} case {} nu {} ray #{} (workload seed {}, stream seed {:#x}): \
+             origin {} dir {} margin {:e}",
+            f.cull,
+            f.case,
+            f.nu,
+            f.index,
+            workload_seed,
+            f.stream_seed,
+            f.ray.origin(),
+            f.ray.dir(),
+            f.margin
         );
-        return Ok(ExitCode::from(1));
     }
-    Ok(ExitCode::SUCCESS)
+    eprintln!(
+        "error: {} false rejects: a cull rejected rays the oracle calls hits",
+        false_rejects.len()
+    );
 }

@@ -8,8 +8,10 @@ use std::process::ExitCode;
 use torus_cull::CullKind;
 use torus_cull::batch::Dispatch;
 use torus_cull::harness::measure::CountedCull;
-use torus_cull::harness::paired::sweep::{DEFAULT_BATCH, PairedOptions, REFERENCES, time_workload};
-use torus_cull::harness::results::{self, Results};
+use torus_cull::harness::paired::sweep::{
+    DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
+};
+use torus_cull::harness::results::{self, RatioRecord, Results};
 use torus_cull::harness::workload::spec::Workload;
 
 /// The longest `--seconds` accepted: an hour.
@@ -84,42 +86,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let workload = Workload::load(&args.workload)?;
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
-    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= MAX_SECONDS) {
-        return Err(format!(
-            "--seconds {} is invalid (allowed: 0 < seconds <= {MAX_SECONDS})",
-            args.seconds
-        )
-        .into());
-    }
-    let batch = match args.batch {
-        None => DEFAULT_BATCH.min(workload.rays),
-        Some(b) if (MIN_BATCH..=workload.rays).contains(&b) => b,
-        Some(b) => {
-            return Err(format!(
-                "--batch {b} is invalid (allowed: {MIN_BATCH} ..= {}, the rays of workload {})",
-                workload.rays,
-                args.workload.display()
-            )
-            .into());
-        }
-    };
-    if batch < MIN_BATCH {
-        return Err(format!(
-            "workload {}: field `rays`: {} is too few to time (allowed: >= {MIN_BATCH})",
-            args.workload.display(),
-            workload.rays
-        )
-        .into());
-    }
-    let path = match args.out {
-        Some(path) => path,
-        None => {
-            let path = results::default_path(Path::new("results"), &time_suffix(&workload.name));
-            torus_cull::harness::output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
+    check_seconds(args.seconds)?;
+    let batch = pick_batch(args.batch, &workload, &args.workload)?;
+    let path = out_path(args.out, &workload)?;
     check_writable(&path)?;
     torus_cull::harness::output::check_not_input(
         ("--out", &path),
@@ -137,46 +106,122 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
     // only `--mode both` uses it.
     let dispatch = Dispatch::from_env()?;
-    let units = workload.cases.len() * nus.len();
     let mut options = PairedOptions::total(args.seconds, batch);
     if args.mode == Mode::Both {
         options.batch_isa = Some(dispatch.isa());
     }
+    let records = time_with_progress(&workload, &nus, &culls, &options)?;
+    let results = ratio_results(&workload, records, &nus, &options);
+    out!("{}", torus_cull::harness::report::ratio_tables(&results))?;
+    results.save(&path)?;
+    outln!("wrote {}", path.display())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `--seconds`: positive, finite and at most [`MAX_SECONDS`].
+fn check_seconds(seconds: f64) -> Result<(), String> {
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= MAX_SECONDS) {
+        return Err(format!(
+            "--seconds {seconds} is invalid (allowed: 0 < seconds <= {MAX_SECONDS})"
+        ));
+    }
+    Ok(())
+}
+
+/// `--batch`: at least [`MIN_BATCH`] and at most the workload's rays (`file` names it);
+/// default [`DEFAULT_BATCH`], or the workload's rays if fewer.
+fn pick_batch(asked: Option<usize>, workload: &Workload, file: &Path) -> Result<usize, String> {
+    let batch = match asked {
+        None => DEFAULT_BATCH.min(workload.rays),
+        Some(b) if (MIN_BATCH..=workload.rays).contains(&b) => b,
+        Some(b) => {
+            return Err(format!(
+                "--batch {b} is invalid (allowed: {MIN_BATCH} ..= {}, the rays of workload {})",
+                workload.rays,
+                file.display()
+            ));
+        }
+    };
+    // Only the default can fall short: the workload itself has too few rays.
+    if batch < MIN_BATCH {
+        return Err(format!(
+            "workload {}: field `rays`: {} is too few to time (allowed: >= {MIN_BATCH})",
+            file.display(),
+            workload.rays
+        ));
+    }
+    Ok(batch)
+}
+
+/// `--out`, or the default file under `results/` (its directory made if need be).
+fn out_path(out: Option<PathBuf>, workload: &Workload) -> Result<PathBuf, String> {
+    if let Some(path) = out {
+        return Ok(path);
+    }
+    let path = results::default_path(Path::new("results"), &time_suffix(&workload.name));
+    torus_cull::harness::output::create_default_dir(&path)
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    Ok(path)
+}
+
+/// The paired ratios of every case × ν of `nus`, with a progress bar (or, off a
+/// terminal, a heartbeat) in visits.
+fn time_with_progress(
+    workload: &Workload,
+    nus: &[f64],
+    culls: &[CullKind],
+    options: &PairedOptions,
+) -> Result<Vec<RatioRecord>, PairedError> {
+    let units = workload.cases.len() * nus.len();
     let bar = ProgressBar::new(0).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} visits ({eta})")
             .expect("valid template")
             .progress_chars("=> "),
     );
-    let message = format!("{}: {units} case x nu, {batch} rays each", workload.name);
+    let message = format!(
+        "{}: {units} case x nu, {} rays each",
+        workload.name, options.batch
+    );
     bar.set_message(message.clone());
     let heartbeat = crate::Heartbeat::new(format!("time {message}"), "visits");
-    let records = time_workload(&workload, &nus, &culls, &options, &mut |done, all| {
+    let records = time_workload(workload, nus, culls, options, &mut |done, all| {
         bar.set_length(all as u64);
         bar.set_position(done as u64);
         heartbeat.update(done as u64, all as u64);
     })?;
     bar.finish_and_clear();
+    Ok(records)
+}
 
-    let mut results = Results::new(&workload, "time");
+/// The results file of a CPU timing: `records` as its `ratio` section.
+fn ratio_results(
+    workload: &Workload,
+    records: Vec<RatioRecord>,
+    nus: &[f64],
+    options: &PairedOptions,
+) -> Results {
+    let mut results = Results::new(workload, "time");
     results.ratio = records;
-    // The timings run on one thread; the sizes say what was timed, so that compare can
-    // tell files of other batches apart.
+    // The paired timings run on one thread.
     results.meta.threads = Some(1);
-    results.meta.sizes = Some(results::Sizes {
+    results.meta.sizes = Some(timing_sizes(options.batch, nus));
+    results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
+    results
+}
+
+/// `meta.sizes` of a timing on one thread: what was timed, so that compare can tell files
+/// of other batches apart.
+fn timing_sizes(batch: usize, nus: &[f64]) -> results::Sizes {
+    results::Sizes {
         rejection_rays: None,
         timing_rays: Some(batch as u64),
-        timed_nu: nus.clone(),
+        timed_nu: nus.to_vec(),
         warm_up_s: None,
         measurement_s: None,
         samples: None,
         bvh: None,
         bench_args: Vec::new(),
-    });
-    results.meta.isa = options.batch_isa.map(|i| i.name().to_string());
-    out!("{}", torus_cull::harness::report::ratio_tables(&results))?;
-    results.save(&path)?;
-    outln!("wrote {}", path.display())?;
-    Ok(ExitCode::SUCCESS)
+    }
 }
 
 /// The culls to report: the timed ones by name (the paper-as-printed variants reject hits
@@ -265,12 +310,11 @@ mod gpu {
     use std::path::Path;
     use std::process::ExitCode;
     use std::time::Instant;
-    use torus_cull::CullKind;
-    use torus_cull::F32Verdict;
     use torus_cull::gpu::{GpuCull, GpuIntersector};
-    use torus_cull::harness::results::{self, EstimateRecord, Results};
+    use torus_cull::harness::results::{EstimateRecord, Results};
     use torus_cull::harness::workload::generate;
     use torus_cull::harness::workload::spec::Workload;
+    use torus_cull::{CullKind, F32Verdict, Ray, Torus};
 
     /// Dispatches timed per (case, ν, cull) at least, whatever the time share.
     const MIN_SAMPLES: usize = 3;
@@ -286,22 +330,7 @@ mod gpu {
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
         let culls = gpu_culls(culls)?;
         let gpu = GpuIntersector::new()?;
-        let mut device = format!(
-            "{} ({:?}, {:?})",
-            gpu.adapter_name(),
-            gpu.device_type(),
-            gpu.backend()
-        );
-        if gpu.is_software() {
-            device.push_str("; software adapter: no GPU timing claimed");
-        }
-        outln!("adapter: {device}")?;
-        if gpu.is_software() {
-            outln!(
-                "the adapter is a CPU rasteriser (device type Cpu): these figures time \
-                 this CPU through Vulkan, not a GPU"
-            )?;
-        }
+        let device = announce_adapter(&gpu)?;
         let units = workload.cases.len() * nus.len() * culls.len();
         let share = seconds / units as f64;
         outln!(
@@ -319,39 +348,21 @@ mod gpu {
                 let b = generate(case, nu, batch, workload.seed, workload.pose)?;
                 let rays = b.rays.len();
                 for &cull in &culls {
-                    // The first dispatch warms up (and counts the escalations).
-                    let verdicts = gpu.intersect(&b.torus, cull, &b.rays)?;
-                    let escalated = verdicts
-                        .iter()
-                        .filter(|v| **v == F32Verdict::Escalate)
-                        .count();
-                    let mut samples = Vec::new();
-                    let start = Instant::now();
-                    while samples.len() < MIN_SAMPLES || start.elapsed().as_secs_f64() < share {
-                        let t = Instant::now();
-                        let out = gpu.intersect(&b.torus, cull, &b.rays)?;
-                        let ns = t.elapsed().as_nanos() as f64;
-                        std::hint::black_box(out);
-                        samples.push(ns / rays.max(1) as f64);
-                    }
-                    samples.sort_by(f64::total_cmp);
-                    let median = samples[samples.len() / 2];
-                    let (lo, hi) = (samples[0], samples[samples.len() - 1]);
+                    let t = time_kernel(&gpu, &b.torus, cull, &b.rays, share)?;
                     outln!(
                         "{:<12} {:>8} {:<8} {:>10} {:>12.2} {:>9.2}%",
                         case.name(),
                         nu,
                         cull.name(),
                         rays,
-                        1e3 / median,
-                        100.0 * escalated as f64 / rays.max(1) as f64
+                        1e3 / t.median,
+                        100.0 * t.escalated as f64 / rays.max(1) as f64
                     )?;
                     records.push(EstimateRecord {
                         benchmark: format!("gpu_ns-{}/{}/{nu}", case.name(), cull.name()),
                         elements: rays as u64,
-                        ns_per_element: median,
-                        // The fastest and slowest dispatch.
-                        ns_per_element_ci: [lo, hi],
+                        ns_per_element: t.median,
+                        ns_per_element_ci: [t.fastest, t.slowest],
                     });
                 }
             }
@@ -360,19 +371,74 @@ mod gpu {
         results.estimates = records;
         results.meta.device = Some(device);
         results.meta.threads = Some(1);
-        results.meta.sizes = Some(results::Sizes {
-            rejection_rays: None,
-            timing_rays: Some(batch as u64),
-            timed_nu: nus.to_vec(),
-            warm_up_s: None,
-            measurement_s: None,
-            samples: None,
-            bvh: None,
-            bench_args: Vec::new(),
-        });
+        results.meta.sizes = Some(super::timing_sizes(batch, nus));
         results.save(path)?;
         outln!("wrote {}", path.display())?;
         Ok(ExitCode::SUCCESS)
+    }
+
+    /// The adapter, described and said on stdout; a software one is called out, so that
+    /// its figures are not taken for a GPU's.
+    fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
+        let mut device = format!(
+            "{} ({:?}, {:?})",
+            gpu.adapter_name(),
+            gpu.device_type(),
+            gpu.backend()
+        );
+        if gpu.is_software() {
+            device.push_str("; software adapter: no GPU timing claimed");
+        }
+        outln!("adapter: {device}")?;
+        if gpu.is_software() {
+            outln!(
+                "the adapter is a CPU rasteriser (device type Cpu): these figures time \
+                 this CPU through Vulkan, not a GPU"
+            )?;
+        }
+        Ok(device)
+    }
+
+    /// One cull's dispatches on one batch: ns per ray.
+    struct KernelTiming {
+        /// Rays the kernel escalated (from the warm-up dispatch).
+        escalated: usize,
+        median: f64,
+        fastest: f64,
+        slowest: f64,
+    }
+
+    /// Dispatches of `cull` on `rays` until `share` seconds have passed and at least
+    /// [`MIN_SAMPLES`] were timed.
+    fn time_kernel(
+        gpu: &GpuIntersector,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+        share: f64,
+    ) -> Result<KernelTiming, Box<dyn std::error::Error>> {
+        // The first dispatch warms up (and counts the escalations).
+        let verdicts = gpu.intersect(torus, cull, rays)?;
+        let escalated = verdicts
+            .iter()
+            .filter(|v| **v == F32Verdict::Escalate)
+            .count();
+        let mut samples = Vec::new();
+        let start = Instant::now();
+        while samples.len() < MIN_SAMPLES || start.elapsed().as_secs_f64() < share {
+            let t = Instant::now();
+            let out = gpu.intersect(torus, cull, rays)?;
+            let ns = t.elapsed().as_nanos() as f64;
+            std::hint::black_box(out);
+            samples.push(ns / rays.len().max(1) as f64);
+        }
+        samples.sort_by(f64::total_cmp);
+        Ok(KernelTiming {
+            escalated,
+            median: samples[samples.len() / 2],
+            fastest: samples[0],
+            slowest: samples[samples.len() - 1],
+        })
     }
 
     /// The GPU kernel's culls among `culls` (default: both).

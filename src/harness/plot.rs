@@ -7,6 +7,7 @@ use crate::harness::results::{
 };
 use plotters::prelude::*;
 use std::collections::BTreeMap;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 /// One named line of (x, y) points.
@@ -86,32 +87,11 @@ fn draw_chart(
     y_from_zero: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let lines: Vec<&Line> = lines.iter().filter(|l| !l.pts.is_empty()).collect();
-    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y, ci) in lines.iter().flat_map(|l| l.pts.iter()) {
-        x_min = x_min.min(x);
-        x_max = x_max.max(x);
-        let [lo, hi] = ci.unwrap_or([y, y]);
-        y_min = y_min.min(y).min(lo);
-        y_max = y_max.max(y).max(hi);
-    }
-    if x_min > x_max {
-        return Err("nothing to plot".into());
-    }
-    if y_from_zero {
-        y_min = y_min.min(0.0);
-    }
-    let pad = ((y_max - y_min) * 0.05).max(1e-9);
-    let (y_lo, y_hi) = (y_min - if y_from_zero { 0.0 } else { pad }, y_max + pad);
+    let ([x_min, x_max], y_range) = axis_ranges(&lines, y_from_zero).ok_or("nothing to plot")?;
     let root = SVGBackend::with_string(svg, (900, 480)).into_drawing_area();
     root.fill(&WHITE)?;
     // The legend gets its own strip, so it never hides a line.
     let (plot_area, legend_area) = root.split_horizontally(740);
-    let mut ticks: Vec<f64> = lines
-        .iter()
-        .flat_map(|l| l.pts.iter().map(|&(x, _, _)| x))
-        .collect();
-    ticks.sort_by(f64::total_cmp);
-    ticks.dedup();
     let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 17))
         .margin(12)
@@ -120,8 +100,8 @@ fn draw_chart(
         .build_cartesian_2d(
             (x_min * 0.95..x_max * 1.05)
                 .log_scale()
-                .with_key_points(ticks),
-            y_lo..y_hi,
+                .with_key_points(x_ticks(&lines)),
+            y_range,
         )?;
     chart
         .configure_mesh()
@@ -135,42 +115,98 @@ fn draw_chart(
         let colour = COLOURS[line.colour % COLOURS.len()];
         let xy = || line.pts.iter().map(|&(x, y, _)| (x, y));
         chart.draw_series(LineSeries::new(xy(), colour.stroke_width(2)))?;
-        // Error bars: the interval, with caps a few pixels wide (in data units on a log
-        // axis: a small factor of x).
-        for &(x, _, ci) in &line.pts {
-            if let Some([lo, hi]) = ci {
-                let (xl, xr) = (x / 1.012, x * 1.012);
-                chart.draw_series(std::iter::once(PathElement::new(
-                    vec![(x, lo), (x, hi)],
-                    colour.stroke_width(1),
-                )))?;
-                for y in [lo, hi] {
-                    chart.draw_series(std::iter::once(PathElement::new(
-                        vec![(xl, y), (xr, y)],
-                        colour.stroke_width(1),
-                    )))?;
-                }
-            }
-        }
+        draw_error_bars(&mut chart, line, colour)?;
         draw_markers(&mut chart, i, xy(), colour)?;
-        let y = 60 + 24 * i as i32;
-        legend_area.draw(&PathElement::new(
-            vec![(8, y), (32, y)],
-            colour.stroke_width(3),
-        ))?;
-        legend_marker(&legend_area, i, (20, y), colour)?;
-        let same_as = lines[..i]
-            .iter()
-            .find(|earlier| earlier.pts == line.pts)
-            .map(|earlier| format!(" (= {})", earlier.name))
-            .unwrap_or_default();
-        legend_area.draw(&Text::new(
-            format!("{}{same_as}", line.name),
-            (40, y - 8),
-            ("sans-serif", 13).into_font().color(&BLACK),
-        ))?;
+        draw_legend_entry(&legend_area, i, &lines, colour)?;
     }
     root.present()?;
+    Ok(())
+}
+
+/// The x range of `lines`' points and the y range of the chart: the points and their
+/// intervals, padded by 5 % (not below zero when `y_from_zero`, which also takes zero
+/// in); `None` without a point.
+fn axis_ranges(lines: &[&Line], y_from_zero: bool) -> Option<([f64; 2], Range<f64>)> {
+    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y, ci) in lines.iter().flat_map(|l| l.pts.iter()) {
+        x_min = x_min.min(x);
+        x_max = x_max.max(x);
+        let [lo, hi] = ci.unwrap_or([y, y]);
+        y_min = y_min.min(y).min(lo);
+        y_max = y_max.max(y).max(hi);
+    }
+    if x_min > x_max {
+        return None;
+    }
+    if y_from_zero {
+        y_min = y_min.min(0.0);
+    }
+    let pad = ((y_max - y_min) * 0.05).max(1e-9);
+    let y_lo = y_min - if y_from_zero { 0.0 } else { pad };
+    Some(([x_min, x_max], y_lo..y_max + pad))
+}
+
+/// Every ν of `lines`, once each, ascending: the x axis labels exactly the ν measured.
+fn x_ticks(lines: &[&Line]) -> Vec<f64> {
+    let mut ticks: Vec<f64> = lines
+        .iter()
+        .flat_map(|l| l.pts.iter().map(|&(x, _, _)| x))
+        .collect();
+    ticks.sort_by(f64::total_cmp);
+    ticks.dedup();
+    ticks
+}
+
+/// `line`'s intervals: a bar with caps a few pixels wide (in data units on a log axis: a
+/// small factor of x).
+fn draw_error_bars(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, impl CoordTranslate<From = (f64, f64)>>,
+    line: &Line,
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for &(x, _, ci) in &line.pts {
+        if let Some([lo, hi]) = ci {
+            let (xl, xr) = (x / 1.012, x * 1.012);
+            chart.draw_series(std::iter::once(PathElement::new(
+                vec![(x, lo), (x, hi)],
+                colour.stroke_width(1),
+            )))?;
+            for y in [lo, hi] {
+                chart.draw_series(std::iter::once(PathElement::new(
+                    vec![(xl, y), (xr, y)],
+                    colour.stroke_width(1),
+                )))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Line `i`'s legend entry: its stroke, its marker and its name, with the earlier line it
+/// coincides with, if any (the twin hides under it on the chart).
+fn draw_legend_entry(
+    area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    i: usize,
+    lines: &[&Line],
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let line = lines[i];
+    let y = 60 + 24 * i as i32;
+    area.draw(&PathElement::new(
+        vec![(8, y), (32, y)],
+        colour.stroke_width(3),
+    ))?;
+    legend_marker(area, i, (20, y), colour)?;
+    let same_as = lines[..i]
+        .iter()
+        .find(|earlier| earlier.pts == line.pts)
+        .map(|earlier| format!(" (= {})", earlier.name))
+        .unwrap_or_default();
+    area.draw(&Text::new(
+        format!("{}{same_as}", line.name),
+        (40, y - 8),
+        ("sans-serif", 13).into_font().color(&BLACK),
+    ))?;
     Ok(())
 }
 
@@ -228,36 +264,73 @@ pub fn plot_results(
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
-    let mut written = Vec::new();
-    let provenance = format!(
-        "{}, {}{}",
-        results.meta.workload,
-        results.meta.commit.as_deref().unwrap_or("no commit"),
-        if results.meta.dirty { "-dirty" } else { "" }
-    );
-    let mut chart = |name: String, title: String, y: &str, lines: Vec<Line>, zero: bool| {
-        if lines.iter().all(|l| l.pts.is_empty()) {
-            return Ok::<(), Box<dyn std::error::Error>>(());
-        }
-        let path = out_dir.join(format!("{stem}-{name}.svg"));
-        write_chart(&path, &format!("{title} ({provenance})"), y, &lines, zero)?;
-        written.push(path);
-        Ok(())
+    let mut charts = Charts {
+        out_dir,
+        stem,
+        provenance: format!(
+            "{}, {}{}",
+            results.meta.workload,
+            results.meta.commit.as_deref().unwrap_or("no commit"),
+            if results.meta.dirty { "-dirty" } else { "" }
+        ),
+        written: Vec::new(),
     };
-    for group in ordered(results.rejection.iter().map(Record::group)) {
+    rejection_charts(&results.rejection, &mut charts)?;
+    timing_charts(&results.timing, &mut charts)?;
+    bvh_charts(&results.bvh, &mut charts)?;
+    ratio_charts(&results.ratio, &mut charts)?;
+    Ok(charts.written)
+}
+
+/// Where a results file's charts go, and the ones written so far.
+struct Charts<'a> {
+    out_dir: &'a Path,
+    stem: &'a str,
+    /// Workload and commit, appended to every title.
+    provenance: String,
+    written: Vec<PathBuf>,
+}
+
+impl Charts<'_> {
+    /// Writes chart `<stem>-<name>.svg`, unless none of `lines` has a point.
+    fn chart(
+        &mut self,
+        name: String,
+        title: String,
+        y: &str,
+        lines: Vec<Line>,
+        zero: bool,
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        if lines.iter().all(|l| l.pts.is_empty()) {
+            return Ok(());
+        }
+        let path = self.out_dir.join(format!("{}-{name}.svg", self.stem));
+        let title = format!("{title} ({})", self.provenance);
+        write_chart(&path, &title, y, &lines, zero)?;
+        self.written.push(path);
+        Ok(())
+    }
+}
+
+/// `run`'s counts: miss capture and rejection rate per case.
+fn rejection_charts(
+    records: &[RejectionRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
         let of = |y: fn(&RejectionRecord) -> Option<f64>| {
-            lines(&results.rejection, &group, |r| y(r).map(|v| (v, None)))
+            lines(records, &group, |r| y(r).map(|v| (v, None)))
         };
         let capture = of(|r| r.miss_capture);
         let rate = of(|r| Some(r.rejection_rate));
-        chart(
+        charts.chart(
             format!("{group}-miss_capture"),
             format!("{group}: miss capture (rejected / misses)"),
             "miss capture",
             capture,
             true,
         )?;
-        chart(
+        charts.chart(
             format!("{group}-rejection_rate"),
             format!("{group}: rejection rate (rejected / rays)"),
             "rejection rate",
@@ -265,19 +338,25 @@ pub fn plot_results(
             true,
         )?;
     }
-    for group in ordered(results.timing.iter().map(Record::group)) {
-        let total = lines(&results.timing, &group, |r| {
-            Some((r.total_ns, Some(r.total_ns_ci)))
-        });
-        let speedup = lines(&results.timing, &group, |r| Some((r.speedup_vs_none, None)));
-        chart(
+    Ok(())
+}
+
+/// The benches' timings: ns per ray and speedup against no cull, per group.
+fn timing_charts(
+    records: &[TimingRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let total = lines(records, &group, |r| Some((r.total_ns, Some(r.total_ns_ci))));
+        let speedup = lines(records, &group, |r| Some((r.speedup_vs_none, None)));
+        charts.chart(
             format!("{group}-total_ns"),
             format!("{group}: cull + exact intersection, ns per ray [CI]"),
             "total ns per ray",
             total,
             true,
         )?;
-        chart(
+        charts.chart(
             format!("{group}-speedup"),
             format!("{group}: speedup vs none"),
             "total_ns(none) / total_ns(cull)",
@@ -285,20 +364,27 @@ pub fn plot_results(
             true,
         )?;
     }
-    for group in ordered(results.bvh.iter().map(Record::group)) {
-        let of = |y: fn(&BvhRecord) -> Option<f64>| {
-            lines(&results.bvh, &group, |r| y(r).map(|v| (v, None)))
-        };
+    Ok(())
+}
+
+/// The BVH scenes: throughput and quartic solves per ray, per scene and ray set.
+fn bvh_charts(
+    records: &[BvhRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let of =
+            |y: fn(&BvhRecord) -> Option<f64>| lines(records, &group, |r| y(r).map(|v| (v, None)));
         let mrays = of(|r| Some(r.mrays_per_s));
         let solves = of(|r| Some(r.quartic_solves_per_ray));
-        chart(
+        charts.chart(
             format!("bvh-{group}-mrays"),
             format!("BVH {group}: million rays per second"),
             "Mrays/s",
             mrays,
             true,
         )?;
-        chart(
+        charts.chart(
             format!("bvh-{group}-quartic_solves"),
             format!("BVH {group}: quartic solves per ray"),
             "quartic solves per ray",
@@ -306,37 +392,47 @@ pub fn plot_results(
             true,
         )?;
     }
-    // `torus-cull time`'s paired ratios: one chart per case × metric × reference.
-    for group in ordered(results.ratio.iter().map(Record::group)) {
-        let ratios = lines(&results.ratio, &group, |r| {
-            Some((r.ratio, Some(r.ratio_ci)))
-        });
-        let Some(first) = results.ratio.iter().find(|r| r.group() == group) else {
+    Ok(())
+}
+
+/// `torus-cull time`'s paired ratios: one chart per case × metric × reference.
+fn ratio_charts(
+    records: &[RatioRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let ratios = lines(records, &group, |r| Some((r.ratio, Some(r.ratio_ci))));
+        let Some(first) = records.iter().find(|r| r.group() == group) else {
             continue;
         };
-        let what = match first.metric.as_str() {
-            "cull_ns" | "batch_cull_ns" => "cull alone",
-            "batch_f32_total_ns" => "certified f32 wavefront",
-            "batch_f32_uncertified_ns" => "uncertified f32 wavefront",
-            _ => "cull + exact intersection",
-        };
-        let reference = if first.reference == F64_REFERENCE {
-            "the same cull's f64 wavefront"
-        } else {
-            first.reference.as_str()
-        };
-        chart(
+        charts.chart(
             format!("ratio-{group}"),
-            format!(
-                "{}: {what} / {reference}, paired ratio [95% CI]",
-                first.case
-            ),
+            ratio_title(first),
             &format!("t(cull) / t({}), below 1 faster", first.reference),
             ratios,
             false,
         )?;
     }
-    Ok(written)
+    Ok(())
+}
+
+/// The title of the ratio chart of `record`'s group: what was timed, against what.
+fn ratio_title(record: &RatioRecord) -> String {
+    let what = match record.metric.as_str() {
+        "cull_ns" | "batch_cull_ns" => "cull alone",
+        "batch_f32_total_ns" => "certified f32 wavefront",
+        "batch_f32_uncertified_ns" => "uncertified f32 wavefront",
+        _ => "cull + exact intersection",
+    };
+    let reference = if record.reference == F64_REFERENCE {
+        "the same cull's f64 wavefront"
+    } else {
+        record.reference.as_str()
+    };
+    format!(
+        "{}: {what} / {reference}, paired ratio [95% CI]",
+        record.case
+    )
 }
 
 /// One line per cull of the file (first-seen order, which fixes its colour): the (ν, y,

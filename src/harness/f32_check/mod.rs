@@ -484,79 +484,97 @@ fn opt_stats(s: Option<ErrorStats>) -> [String; 3] {
     }
 }
 
+/// The table's columns; `family` to `amb` are filled on each family's first line only.
+const TABLE_HEADER: [&str; 16] = [
+    "family",
+    "nu",
+    "rays",
+    "hit",
+    "miss",
+    "amb",
+    "who",
+    "esc%",
+    "missed",
+    "spurious",
+    "far",
+    "t err med",
+    "p99",
+    "max",
+    "ns/ray",
+    "f64 ns/ray",
+];
+
 /// The table: per family one line each for the certified verdict (`cert`), the whole f32
 /// path (`f32`) and the peer (`peer`): escalated %, missed, spurious, far, the t error
 /// (× (R + r)) and ns per ray.
 pub fn table(records: &[FamilyRecord]) -> String {
-    let header = [
-        "family",
-        "nu",
-        "rays",
-        "hit",
-        "miss",
-        "amb",
-        "who",
-        "esc%",
-        "missed",
-        "spurious",
-        "far",
-        "t err med",
-        "p99",
-        "max",
-        "ns/ray",
-        "f64 ns/ray",
+    let rows: Vec<[String; 16]> = records.iter().flat_map(family_rows).collect();
+    let mut out = aligned(&TABLE_HEADER.map(String::from), &rows);
+    out.push_str(&totals(records));
+    out
+}
+
+/// `r`'s three lines of the table: `cert`, `f32` and `peer`.
+fn family_rows(r: &FamilyRecord) -> Vec<[String; 16]> {
+    let nu = match r.nu {
+        Some(nu) => format!("{nu}"),
+        None => format!("{:.3}-{:.0}", r.nu_range[0], r.nu_range[1]),
+    };
+    let lines = [
+        ("cert", &r.certified, None),
+        ("f32", &r.f32_path, r.ns_per_ray.map(|t| t.f32_path)),
+        ("peer", &r.peer, r.ns_per_ray.map(|t| t.peer)),
     ];
-    let mut rows: Vec<[String; 16]> = Vec::new();
-    for r in records {
-        let nu = match r.nu {
-            Some(nu) => format!("{nu}"),
-            None => format!("{:.3}-{:.0}", r.nu_range[0], r.nu_range[1]),
+    let row = |i: usize, (who, t, ns): (&str, &Tally, Option<f64>)| {
+        let first = i == 0;
+        let lead = |s: String| if first { s } else { String::new() };
+        // The peer never escalates: it has no f64 to hand a ray to.
+        let esc = if who == "peer" {
+            "-".to_string()
+        } else {
+            format!("{:.2}", 100.0 * t.escalation_rate)
         };
-        let lines = [
-            ("cert", &r.certified, None),
-            ("f32", &r.f32_path, r.ns_per_ray.map(|t| t.f32_path)),
-            ("peer", &r.peer, r.ns_per_ray.map(|t| t.peer)),
-        ];
-        for (i, (who, t, ns)) in lines.into_iter().enumerate() {
-            let first = i == 0;
-            let lead = |s: String| if first { s } else { String::new() };
-            let esc = if who == "peer" {
-                "-".to_string()
-            } else {
-                format!("{:.2}", 100.0 * t.escalation_rate)
-            };
-            let [med, p99, max] = opt_stats(t.t_error);
-            rows.push([
-                lead(r.family.clone()),
-                lead(nu.clone()),
-                lead(r.rays.to_string()),
-                lead(r.hits.to_string()),
-                lead(r.misses.to_string()),
-                lead(r.ambiguous.to_string()),
-                who.to_string(),
-                esc,
-                t.missed.to_string(),
-                t.spurious.to_string(),
-                t.far.to_string(),
-                med,
-                p99,
-                max,
-                ns.map_or_else(|| "-".into(), |v| format!("{v:.1}")),
-                lead(
-                    r.ns_per_ray
-                        .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect)),
-                ),
-            ]);
-        }
-    }
-    let mut widths = header.map(str::len);
-    for row in &rows {
+        let [med, p99, max] = opt_stats(t.t_error);
+        [
+            lead(r.family.clone()),
+            lead(nu.clone()),
+            lead(r.rays.to_string()),
+            lead(r.hits.to_string()),
+            lead(r.misses.to_string()),
+            lead(r.ambiguous.to_string()),
+            who.to_string(),
+            esc,
+            t.missed.to_string(),
+            t.spurious.to_string(),
+            t.far.to_string(),
+            med,
+            p99,
+            max,
+            ns.map_or_else(|| "-".into(), |v| format!("{v:.1}")),
+            lead(
+                r.ns_per_ray
+                    .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect)),
+            ),
+        ]
+    };
+    lines
+        .into_iter()
+        .enumerate()
+        .map(|(i, l)| row(i, l))
+        .collect()
+}
+
+/// `header` and `rows` in columns as wide as their widest cell: family, nu and who to the
+/// left, numbers to the right; no trailing blanks.
+fn aligned(header: &[String; 16], rows: &[[String; 16]]) -> String {
+    let mut widths = header.each_ref().map(|h| h.len());
+    for row in rows {
         for (w, cell) in widths.iter_mut().zip(row) {
             *w = (*w).max(cell.chars().count());
         }
     }
     let mut out = String::new();
-    let line = |out: &mut String, cells: &[String]| {
+    for cells in std::iter::once(header).chain(rows) {
         for (i, (cell, w)) in cells.iter().zip(&widths).enumerate() {
             let sep = if i == 0 { "" } else { "  " };
             if i < 2 || i == 6 {
@@ -568,17 +586,16 @@ pub fn table(records: &[FamilyRecord]) -> String {
         let trimmed = out.trim_end().len();
         out.truncate(trimmed);
         out.push('\n');
-    };
-    line(&mut out, &header.map(String::from));
-    for row in &rows {
-        line(&mut out, row);
     }
-    // Totals over every family.
+    out
+}
+
+/// The totals over every family, after a blank line.
+fn totals(records: &[FamilyRecord]) -> String {
     let sum = |f: &dyn Fn(&FamilyRecord) -> u64| records.iter().map(f).sum::<u64>();
-    let _ = writeln!(
-        out,
+    format!(
         "\ntotal: {} rays ({} hit, {} miss, {} ambiguous); missed/spurious/far: cert {}/{}/{}, \
-         f32 {}/{}/{}, peer {}/{}/{}; escalated {}",
+         f32 {}/{}/{}, peer {}/{}/{}; escalated {}\n",
         sum(&|r| r.rays),
         sum(&|r| r.hits),
         sum(&|r| r.misses),
@@ -593,8 +610,7 @@ pub fn table(records: &[FamilyRecord]) -> String {
         sum(&|r| r.peer.spurious),
         sum(&|r| r.peer.far),
         sum(&|r| r.certified.escalated),
-    );
-    out
+    )
 }
 
 #[cfg(test)]

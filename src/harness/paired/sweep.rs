@@ -125,7 +125,26 @@ struct Timed<'a> {
     batch_cull_reps: usize,
 }
 
-impl Timed<'_> {
+impl<'a> Timed<'a> {
+    /// `unit`'s batch, in the batch forms too with a `dispatch`, and the repetitions of
+    /// its cull-alone passes.
+    fn new(unit: Unit<'a>, dispatch: Option<Dispatch>) -> Timed<'a> {
+        let set = match dispatch {
+            Some(d) => Workset::with_batch(unit.torus, unit.rays, d),
+            None => Workset::new(unit.torus, unit.rays),
+        };
+        Timed {
+            unit,
+            cull_reps: cull_pass_reps(&set, Metric::CullNs),
+            batch_cull_reps: if dispatch.is_some() {
+                cull_pass_reps(&set, Metric::BatchCullNs)
+            } else {
+                1
+            },
+            set,
+        }
+    }
+
     fn reps(&self, metric: Metric) -> usize {
         match metric {
             Metric::TotalNs
@@ -156,66 +175,111 @@ pub fn time_units(
     options: &PairedOptions,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<RatioRecord>, PairedError> {
-    let kinds: Vec<CullKind> = CullKind::TIMED
-        .into_iter()
-        .chain(culls.iter().copied())
-        .filter(|k| culls.contains(k) || REFERENCES.contains(k))
-        .fold(Vec::new(), |mut v, k| {
-            if !v.contains(&k) {
-                v.push(k);
-            }
-            v
-        });
     let dispatch = match options.batch_isa {
         Some(isa) => Some(Dispatch::forced(isa).map_err(PairedError::Isa)?),
         None => None,
     };
-    let metrics: Vec<Metric> = Metric::ALL
-        .into_iter()
-        .chain(dispatch.iter().flat_map(|_| Metric::BATCH))
-        .collect();
-    let contenders: Vec<(CullKind, Metric)> = metrics
-        .iter()
-        .flat_map(|&m| {
-            kinds
-                .iter()
-                .filter(move |&&k| m.covers(k))
-                .map(move |&k| (k, m))
-        })
-        .collect();
+    let lineup = Lineup::new(culls, dispatch.is_some());
     let timed: Vec<Timed<'_>> = units
         .iter()
-        .map(|&unit| {
-            let set = match dispatch {
-                Some(d) => Workset::with_batch(unit.torus, unit.rays, d),
-                None => Workset::new(unit.torus, unit.rays),
-            };
-            Timed {
-                unit,
-                cull_reps: cull_pass_reps(&set, Metric::CullNs),
-                batch_cull_reps: if dispatch.is_some() {
-                    cull_pass_reps(&set, Metric::BatchCullNs)
-                } else {
-                    1
-                },
-                set,
-            }
-        })
+        .map(|&unit| Timed::new(unit, dispatch))
         .collect();
-    let mut rounds: Vec<Interleaver> = units
-        .iter()
-        .map(|u| Interleaver::new(contenders.len(), u.seed))
-        .collect();
+    let rounds = measure_rounds(&timed, &lineup.contenders, options, progress);
+    let mut records = Vec::new();
+    for (t, r) in timed.iter().zip(&rounds) {
+        push_unit_records(&mut records, t, r, culls, &lineup)?;
+    }
+    Ok(records)
+}
 
+/// What every round times: the culls asked for with the references, the metrics, and
+/// each (cull, metric) pair a metric covers; a contender is its index in `contenders`.
+struct Lineup {
+    kinds: Vec<CullKind>,
+    metrics: Vec<Metric>,
+    contenders: Vec<(CullKind, Metric)>,
+}
+
+impl Lineup {
+    /// `culls` and the references, once each, in [`CullKind::TIMED`] order (then any
+    /// other cull in the order asked); the batch metrics too when `batch`.
+    fn new(culls: &[CullKind], batch: bool) -> Lineup {
+        let kinds: Vec<CullKind> = CullKind::TIMED
+            .into_iter()
+            .chain(culls.iter().copied())
+            .filter(|k| culls.contains(k) || REFERENCES.contains(k))
+            .fold(Vec::new(), |mut v, k| {
+                if !v.contains(&k) {
+                    v.push(k);
+                }
+                v
+            });
+        let metrics: Vec<Metric> = Metric::ALL
+            .into_iter()
+            .chain(batch.then_some(Metric::BATCH).into_iter().flatten())
+            .collect();
+        let contenders: Vec<(CullKind, Metric)> = metrics
+            .iter()
+            .flat_map(|&m| {
+                kinds
+                    .iter()
+                    .filter(move |&&k| m.covers(k))
+                    .map(move |&k| (k, m))
+            })
+            .collect();
+        Lineup {
+            kinds,
+            metrics,
+            contenders,
+        }
+    }
+
+    fn index(&self, kind: CullKind, metric: Metric) -> usize {
+        self.contenders
+            .iter()
+            .position(|&c| c == (kind, metric))
+            .expect("every cull and reference is a contender")
+    }
+
+    /// What `cull` is compared with under `metric` (name, contender index): the
+    /// references, then, for the f32 metrics, the same cull's f64 wavefront: the headline
+    /// f32 / f64 ratio.
+    fn references_of(&self, cull: CullKind, metric: Metric) -> Vec<(String, usize)> {
+        REFERENCES
+            .into_iter()
+            .filter(|&r| r != cull && metric.covers(r))
+            .map(|r| (r.name().to_string(), self.index(r, metric)))
+            .chain(metric.is_f32().then(|| {
+                (
+                    F64_REFERENCE.to_string(),
+                    self.index(cull, Metric::BatchTotalNs),
+                )
+            }))
+            .collect()
+    }
+}
+
+/// The rounds of every unit: a warm-up, then visits in a freshly shuffled unit order each
+/// pass until the budget is spent, then whatever rounds a unit still lacks of
+/// `options.min_rounds`. One [`Interleaver`] per unit, in `timed`'s order.
+fn measure_rounds(
+    timed: &[Timed<'_>],
+    contenders: &[(CullKind, Metric)],
+    options: &PairedOptions,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Vec<Interleaver> {
+    let mut rounds: Vec<Interleaver> = timed
+        .iter()
+        .map(|t| Interleaver::new(contenders.len(), t.unit.seed))
+        .collect();
     let n = timed.len().max(1) as u32;
     let passes = ((options.budget.as_secs_f64() / (options.visit.as_secs_f64() * n as f64)).round()
         as u32)
         .max(1);
     let visit = options.budget / (passes * n);
-    let mut order_rng = Pcg64::seed_from_u64(units.first().map_or(0, |u| u.seed));
+    let mut order_rng = Pcg64::seed_from_u64(timed.first().map_or(0, |t| t.unit.seed));
     let mut order: Vec<usize> = (0..timed.len()).collect();
-    let (timed_ref, contenders_ref) = (&timed, &contenders);
-    let time_one = |u: usize| move |i: usize| timed_ref[u].time(contenders_ref[i]);
+    let time_one = |u: usize| move |i: usize| timed[u].time(contenders[i]);
     for (u, r) in rounds.iter_mut().enumerate() {
         r.warm_up(&mut time_one(u), options.warm_up / n);
     }
@@ -234,68 +298,61 @@ pub fn time_units(
             r.visit(&mut time_one(u), 1, Duration::ZERO, short, usize::MAX);
         }
     }
+    rounds
+}
 
-    let mut records = Vec::new();
-    for (t, r) in timed.iter().zip(&rounds) {
-        let quiet = quiet_rounds(&r.ns, &undisturbed(&r.disturbed), QUIET_FRACTION);
-        let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
-        let Unit { case, nu, seed, .. } = t.unit;
-        let index = |k: CullKind, m: Metric| {
-            contenders
-                .iter()
-                .position(|&c| c == (k, m))
-                .expect("every cull and reference is a contender")
-        };
-        for &metric in &metrics {
-            let work = (t.set.len() * t.reps(metric)) as f64;
-            for &cull in kinds
-                .iter()
-                .filter(|&&k| culls.contains(&k) && metric.covers(k))
-            {
-                let escalation = escalation_rate(cull, metric, &t.set);
-                // The references under the same metric, then, for the f32 metrics, the
-                // same cull's f64 wavefront: the headline f32 / f64 ratio.
-                let against: Vec<(String, usize)> =
-                    REFERENCES
-                        .into_iter()
-                        .filter(|&r| r != cull && metric.covers(r))
-                        .map(|r| (r.name().to_string(), index(r, metric)))
-                        .chain(metric.is_f32().then(|| {
-                            (F64_REFERENCE.to_string(), index(cull, Metric::BatchTotalNs))
-                        }))
-                        .collect();
-                for (reference, reference_index) in against {
-                    let bootstrap_seed =
-                        seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
-                    let e = ratio_estimate(
-                        &pick(index(cull, metric)),
-                        &pick(reference_index),
-                        work,
-                        bootstrap_seed,
-                    )
-                    .ok_or(PairedError::NoRounds { case, nu, cull })?;
-                    records.push(RatioRecord {
-                        case: case.name().to_string(),
-                        nu,
-                        cull: cull.name().to_string(),
-                        reference,
-                        metric: metric.name().to_string(),
-                        ratio: e.ratio,
-                        ratio_ci: e.ratio_ci,
-                        rounds: e.rounds as u64,
-                        rounds_measured: r.rounds() as u64,
-                        rays: t.set.len() as u64,
-                        ns_per_ray: e.ns_per_ray,
-                        reference_ns_per_ray: e.reference_ns_per_ray,
-                        precision: metric.precision().to_string(),
-                        device: CPU_DEVICE.to_string(),
-                        escalation_rate: escalation,
-                    });
-                }
+/// Appends unit `t`'s records, from its rounds `r`, to `records`: for each metric, each
+/// of `culls` it covers against each of its references, on the quiet rounds only.
+fn push_unit_records(
+    records: &mut Vec<RatioRecord>,
+    t: &Timed<'_>,
+    r: &Interleaver,
+    culls: &[CullKind],
+    lineup: &Lineup,
+) -> Result<(), PairedError> {
+    let quiet = quiet_rounds(&r.ns, &undisturbed(&r.disturbed), QUIET_FRACTION);
+    let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
+    let Unit { case, nu, seed, .. } = t.unit;
+    for &metric in &lineup.metrics {
+        let work = (t.set.len() * t.reps(metric)) as f64;
+        for &cull in lineup
+            .kinds
+            .iter()
+            .filter(|&&k| culls.contains(&k) && metric.covers(k))
+        {
+            let escalation = escalation_rate(cull, metric, &t.set);
+            for (reference, reference_index) in lineup.references_of(cull, metric) {
+                // Seeded by the record's place in the whole run, so that no two
+                // bootstraps share a stream.
+                let bootstrap_seed = seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
+                let e = ratio_estimate(
+                    &pick(lineup.index(cull, metric)),
+                    &pick(reference_index),
+                    work,
+                    bootstrap_seed,
+                )
+                .ok_or(PairedError::NoRounds { case, nu, cull })?;
+                records.push(RatioRecord {
+                    case: case.name().to_string(),
+                    nu,
+                    cull: cull.name().to_string(),
+                    reference,
+                    metric: metric.name().to_string(),
+                    ratio: e.ratio,
+                    ratio_ci: e.ratio_ci,
+                    rounds: e.rounds as u64,
+                    rounds_measured: r.rounds() as u64,
+                    rays: t.set.len() as u64,
+                    ns_per_ray: e.ns_per_ray,
+                    reference_ns_per_ray: e.reference_ns_per_ray,
+                    precision: metric.precision().to_string(),
+                    device: CPU_DEVICE.to_string(),
+                    escalation_rate: escalation,
+                });
             }
         }
     }
-    Ok(records)
+    Ok(())
 }
 
 /// The rounds the operating system left alone, if there are enough of them (a quarter,

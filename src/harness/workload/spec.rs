@@ -126,136 +126,161 @@ impl Workload {
 
     /// Parse and validate the bytes of a workload file named `path`.
     pub fn parse(bytes: &[u8], path: &Path) -> Result<Workload, WorkloadError> {
-        let err = |field: Option<&str>, message: String| WorkloadError {
+        let raw: RawWorkload = serde_json::from_slice(bytes).map_err(|e| WorkloadError {
             file: path.to_path_buf(),
-            field: field.map(str::to_string),
+            field: None,
+            message: format!(
+                "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh)"
+            ),
+        })?;
+        validate(raw, hex(&Sha256::digest(bytes))).map_err(|(field, message)| WorkloadError {
+            file: path.to_path_buf(),
+            field: Some(field),
             message,
-        };
-        let raw: RawWorkload = serde_json::from_slice(bytes).map_err(|e| {
-            err(
-                None,
-                format!(
-                    "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh)"
-                ),
-            )
-        })?;
-        if raw.name.trim().is_empty() {
-            return Err(err(Some("name"), "must not be empty".into()));
-        }
-        // The name goes into default file names under results/: it must stay a file name.
-        if raw.name.contains(['/', '\\', '\0']) || raw.name == "." || raw.name.contains("..") {
-            return Err(err(
-                Some("name"),
-                format!(
-                    "'{}' is invalid: it is part of output file names under results/ \
-                     (allowed: no '/', '\\', NUL or '..')",
-                    raw.name.escape_debug()
-                ),
-            ));
-        }
-        if raw.cases.is_empty() {
-            return Err(err(
-                Some("cases"),
-                format!("must list at least one of {}", case_names()),
-            ));
-        }
-        let mut cases = Vec::new();
-        for name in &raw.cases {
-            let case: Case = name.parse().map_err(|e: String| err(Some("cases"), e))?;
-            if cases.contains(&case) {
-                return Err(err(Some("cases"), format!("'{name}' is listed twice")));
-            }
-            cases.push(case);
-        }
-        if raw.nu.is_empty() {
-            return Err(err(
-                Some("nu"),
-                "must list at least one value (allowed: finite, > 1)".into(),
-            ));
-        }
-        for (i, &nu) in raw.nu.iter().enumerate() {
-            if !(nu.is_finite() && nu > 1.0) {
-                let why = if cases.contains(&Case::Hole) {
-                    "case hole needs a hole, so nu = R/r must be > 1"
-                } else {
-                    "nu = R/r must be finite and > 1 (ring tori only)"
-                };
-                return Err(err(
-                    Some(&format!("nu[{i}]")),
-                    format!("{nu} is invalid: {why}"),
-                ));
-            }
-            if nu > MAX_NU {
-                return Err(err(
-                    Some(&format!("nu[{i}]")),
-                    format!(
-                        "{nu} is invalid (allowed: 1 < nu <= {MAX_NU}, the largest nu the \
-                         intersection and the culls are tested at)"
-                    ),
-                ));
-            }
-            if let Some(case) = cases.iter().find(|c| nu < c.min_nu()) {
-                return Err(err(
-                    Some(&format!("nu[{i}]")),
-                    format!(
-                        "{nu} is too close to 1 for case {case}: its generator could not find \
-                         enough rays (allowed with case {case}: nu >= {})",
-                        case.min_nu()
-                    ),
-                ));
-            }
-        }
-        let mut nu = raw.nu.clone();
-        nu.sort_by(f64::total_cmp);
-        if nu.windows(2).any(|w| w[0] == w[1]) {
-            return Err(err(Some("nu"), "lists a value twice".into()));
-        }
-        if !(1..=MAX_RAYS).contains(&raw.rays) {
-            return Err(err(
-                Some("rays"),
-                format!("{} is invalid (allowed: 1 ..= {MAX_RAYS})", raw.rays),
-            ));
-        }
-        let seed = raw.seed.as_u64().ok_or_else(|| {
-            err(
-                Some("seed"),
-                format!(
-                    "{} is invalid (allowed: an integer 0 ..= {})",
-                    raw.seed,
-                    u64::MAX
-                ),
-            )
-        })?;
-        let pose = match raw.pose.as_deref() {
-            None | Some("random") => Pose::Random,
-            Some("canonical") => Pose::Canonical,
-            Some(other) => {
-                return Err(err(
-                    Some("pose"),
-                    format!("'{other}' is invalid (allowed: random, canonical)"),
-                ));
-            }
-        };
-        let bvh = match raw.bvh {
-            None => None,
-            Some(value) => {
-                Some(parse_bvh(value).map_err(|(field, message)| err(Some(&field), message))?)
-            }
-        };
-        Ok(Workload {
-            name: raw.name,
-            seed,
-            cases,
-            nu,
-            rays: raw.rays as usize,
-            pose,
-            bvh,
-            sha256: hex(&Sha256::digest(bytes)),
         })
     }
 }
 
-fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, (String, String)> {
+/// What is wrong with a well-formed file: (the field at fault, what is wrong and what is
+/// allowed).
+type FieldError = (String, String);
+
+/// The workload `raw` describes, checked one field at a time in a fixed order (name,
+/// cases, nu, rays, seed, pose, bvh): of a file's several faults, the same one is named.
+fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
+    check_name(&raw.name)?;
+    let cases = parse_cases(&raw.cases)?;
+    let nu = parse_nu(&raw.nu, &cases)?;
+    let rays = check_rays(raw.rays)?;
+    let seed = parse_seed(&raw.seed)?;
+    let pose = parse_pose(raw.pose.as_deref())?;
+    let bvh = raw.bvh.map(parse_bvh).transpose()?;
+    Ok(Workload {
+        name: raw.name,
+        seed,
+        cases,
+        nu,
+        rays,
+        pose,
+        bvh,
+        sha256,
+    })
+}
+
+fn check_name(name: &str) -> Result<(), FieldError> {
+    let field = || "name".to_string();
+    if name.trim().is_empty() {
+        return Err((field(), "must not be empty".into()));
+    }
+    // The name goes into default file names under results/: it must stay a file name.
+    if name.contains(['/', '\\', '\0']) || name == "." || name.contains("..") {
+        return Err((
+            field(),
+            format!(
+                "'{}' is invalid: it is part of output file names under results/ \
+                 (allowed: no '/', '\\', NUL or '..')",
+                name.escape_debug()
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn parse_cases(names: &[String]) -> Result<Vec<Case>, FieldError> {
+    let field = || "cases".to_string();
+    if names.is_empty() {
+        return Err((
+            field(),
+            format!("must list at least one of {}", case_names()),
+        ));
+    }
+    let mut cases = Vec::new();
+    for name in names {
+        let case: Case = name.parse().map_err(|e: String| (field(), e))?;
+        if cases.contains(&case) {
+            return Err((field(), format!("'{name}' is listed twice")));
+        }
+        cases.push(case);
+    }
+    Ok(cases)
+}
+
+/// The ν sweep, ascending; each value must suit every one of `cases`.
+fn parse_nu(values: &[f64], cases: &[Case]) -> Result<Vec<f64>, FieldError> {
+    if values.is_empty() {
+        return Err((
+            "nu".into(),
+            "must list at least one value (allowed: finite, > 1)".into(),
+        ));
+    }
+    for (i, &nu) in values.iter().enumerate() {
+        check_nu(nu, cases).map_err(|message| (format!("nu[{i}]"), message))?;
+    }
+    let mut nu = values.to_vec();
+    nu.sort_by(f64::total_cmp);
+    if nu.windows(2).any(|w| w[0] == w[1]) {
+        return Err(("nu".into(), "lists a value twice".into()));
+    }
+    Ok(nu)
+}
+
+/// Why one ν is unusable with `cases`, if it is.
+fn check_nu(nu: f64, cases: &[Case]) -> Result<(), String> {
+    if !(nu.is_finite() && nu > 1.0) {
+        let why = if cases.contains(&Case::Hole) {
+            "case hole needs a hole, so nu = R/r must be > 1"
+        } else {
+            "nu = R/r must be finite and > 1 (ring tori only)"
+        };
+        return Err(format!("{nu} is invalid: {why}"));
+    }
+    if nu > MAX_NU {
+        return Err(format!(
+            "{nu} is invalid (allowed: 1 < nu <= {MAX_NU}, the largest nu the \
+             intersection and the culls are tested at)"
+        ));
+    }
+    if let Some(case) = cases.iter().find(|c| nu < c.min_nu()) {
+        return Err(format!(
+            "{nu} is too close to 1 for case {case}: its generator could not find \
+             enough rays (allowed with case {case}: nu >= {})",
+            case.min_nu()
+        ));
+    }
+    Ok(())
+}
+
+fn check_rays(rays: i64) -> Result<usize, FieldError> {
+    if !(1..=MAX_RAYS).contains(&rays) {
+        return Err((
+            "rays".into(),
+            format!("{rays} is invalid (allowed: 1 ..= {MAX_RAYS})"),
+        ));
+    }
+    Ok(rays as usize)
+}
+
+fn parse_seed(seed: &serde_json::Number) -> Result<u64, FieldError> {
+    seed.as_u64().ok_or_else(|| {
+        (
+            "seed".into(),
+            format!("{seed} is invalid (allowed: an integer 0 ..= {})", u64::MAX),
+        )
+    })
+}
+
+fn parse_pose(pose: Option<&str>) -> Result<Pose, FieldError> {
+    match pose {
+        None | Some("random") => Ok(Pose::Random),
+        Some("canonical") => Ok(Pose::Canonical),
+        Some(other) => Err((
+            "pose".into(),
+            format!("'{other}' is invalid (allowed: random, canonical)"),
+        )),
+    }
+}
+
+fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
     let raw: RawBvh = serde_json::from_value(value).map_err(|e| {
         (
             "bvh".to_string(),
