@@ -160,7 +160,7 @@ fn foot_points<S: Simd>(
 
 /// Stage 2 on f32 lanes: solve and prove (or only solve), the normal; the block's hit and
 /// miss bits.
-#[allow(
+#[expect(
     clippy::too_many_arguments,
     reason = "one stage's inputs and outputs, inlined"
 )]

@@ -111,40 +111,9 @@ pub fn eval_csv(
         message,
     };
     let mut lines = input.lines();
-    match lines.next() {
-        Some(header) => {
-            let header = header?;
-            // Spreadsheets often save CSV with a UTF-8 byte-order mark: it is not data.
-            let bare = header.strip_prefix('\u{feff}').unwrap_or(&header);
-            if bare.trim().replace(' ', "") != INPUT_HEADER {
-                return Err(row_error(
-                    1,
-                    format!("header is '{header}', expected '{INPUT_HEADER}'"),
-                ));
-            }
-        }
-        None => {
-            return Err(row_error(
-                1,
-                format!("empty input, expected the header '{INPUT_HEADER}'"),
-            ));
-        }
-    }
-    // The GPU answers every row at once: read them all first (a malformed row still stops
-    // the run with its line number, before the adapter is opened).
+    check_header(lines.next().transpose()?, &row_error)?;
     let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
-        let lines: Vec<std::io::Result<String>> = lines.collect();
-        let mut rays = Vec::new();
-        for (i, line) in lines.iter().enumerate() {
-            let line = match line {
-                Ok(line) => line,
-                Err(_) => break,
-            };
-            if !line.trim().is_empty() {
-                rays.push(parse_ray(line).map_err(|m| row_error(i + 2, m))?);
-            }
-        }
-        let answers = gpu_answers(&torus, &rays)?;
+        let (lines, answers) = read_for_gpu(&torus, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
             answers.into_iter(),
@@ -171,56 +140,126 @@ pub fn eval_csv(
         if line.trim().is_empty() {
             continue;
         }
-        let mut escalated = None;
-        let (label, t_hit, line): (OracleLabel, Option<String>, LocalLine) = match precision {
-            Precision::F32 => {
-                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
-                let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
-                // The culls' own input: far origins go to the foot point, as in a renderer.
-                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
-            }
-            Precision::CertifiedF32 => {
-                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
-                let answer = intersect_f32(&torus, &ray);
-                escalated = Some(answer.escalated);
-                let t_hit = answer.hit.map(|hit| hit.t.to_string());
-                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
-            }
-            Precision::CertifiedGpu => {
-                let ray = parse_ray(&line).map_err(|m| row_error(line_no, m))?;
-                let answer = gpu_answers.next().expect("one GPU answer per row");
-                escalated = Some(answer.escalated);
-                let t_hit = answer.hit.map(|hit| hit.t.to_string());
-                (classify(&torus, &ray), t_hit, torus.line_to_local(&ray))
-            }
-            Precision::F64 => {
-                let ray = parse_dray(&line).map_err(|m| row_error(line_no, m))?;
-                let query = Query::dray(&torus, &ray);
-                let t_hit = intersect(&torus, &ray).map(|hit| hit.t.to_string());
-                (query.classify(), t_hit, torus.dline_to_local(&ray))
-            }
-        };
-        let oracle = match label.class {
-            OracleClass::Hit => "hit",
-            OracleClass::Miss => "miss",
-            OracleClass::Ambiguous => "ambiguous",
-        };
-        write!(output, "{index},{oracle},{:e},", label.margin)?;
-        if let Some(t) = t_hit {
-            write!(output, "{t}")?;
-        }
-        if let Some(escalated) = escalated {
-            write!(output, ",{}", u8::from(escalated))?;
-        }
-        for cull in CullKind::TIMED {
-            let keep = cull.keeps(torus.bounds(), line.origin, line.dir);
-            write!(output, ",{}", u8::from(keep))?;
-        }
-        writeln!(output)?;
+        let row = evaluate(&torus, precision, &line, &mut gpu_answers)
+            .map_err(|m| row_error(line_no, m))?;
+        write_row(&mut output, &torus, index, &row)?;
         index += 1;
     }
     output.flush()?;
     Ok(index)
+}
+
+/// The header row, without a spreadsheet's byte-order mark, must be [`INPUT_HEADER`].
+fn check_header(
+    header: Option<String>,
+    row_error: &impl Fn(usize, String) -> EvalError,
+) -> Result<(), EvalError> {
+    let Some(header) = header else {
+        return Err(row_error(
+            1,
+            format!("empty input, expected the header '{INPUT_HEADER}'"),
+        ));
+    };
+    // Spreadsheets often save CSV with a UTF-8 byte-order mark: it is not data.
+    let bare = header.strip_prefix('\u{feff}').unwrap_or(&header);
+    if bare.trim().replace(' ', "") != INPUT_HEADER {
+        return Err(row_error(
+            1,
+            format!("header is '{header}', expected '{INPUT_HEADER}'"),
+        ));
+    }
+    Ok(())
+}
+
+/// The GPU answers every row at once: all rows are read first (a malformed row still
+/// stops the run with its line number, before the adapter is opened).
+fn read_for_gpu(
+    torus: &Torus,
+    lines: impl Iterator<Item = std::io::Result<String>>,
+    row_error: &impl Fn(usize, String) -> EvalError,
+) -> Result<(Vec<std::io::Result<String>>, Vec<crate::F32Hit>), EvalError> {
+    let lines: Vec<std::io::Result<String>> = lines.collect();
+    let mut rays = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        let Ok(line) = line else { break };
+        if !line.trim().is_empty() {
+            rays.push(parse_ray(line).map_err(|m| row_error(i + 2, m))?);
+        }
+    }
+    let answers = gpu_answers(torus, &rays)?;
+    Ok((lines, answers))
+}
+
+/// One row's answers: the oracle's label, the exact `t`, whether f32 escalated, and the
+/// line the culls see.
+struct Row {
+    label: OracleLabel,
+    t_hit: Option<String>,
+    escalated: Option<bool>,
+    line: LocalLine,
+}
+
+/// Parses one row in the given precision and answers it.
+fn evaluate(
+    torus: &Torus,
+    precision: Precision,
+    line: &str,
+    gpu_answers: &mut impl Iterator<Item = crate::F32Hit>,
+) -> Result<Row, String> {
+    if precision == Precision::F64 {
+        let ray = parse_dray(line)?;
+        return Ok(Row {
+            label: Query::dray(torus, &ray).classify(),
+            t_hit: intersect(torus, &ray).map(|hit| hit.t.to_string()),
+            escalated: None,
+            line: torus.dline_to_local(&ray),
+        });
+    }
+    let ray = parse_ray(line)?;
+    let (t, escalated) = match precision {
+        Precision::CertifiedF32 => {
+            let answer = intersect_f32(torus, &ray);
+            (answer.hit.map(|hit| hit.t), Some(answer.escalated))
+        }
+        Precision::CertifiedGpu => {
+            let answer = gpu_answers.next().expect("one GPU answer per row");
+            (answer.hit.map(|hit| hit.t), Some(answer.escalated))
+        }
+        _ => (intersect(torus, &ray).map(|hit| hit.t), None),
+    };
+    Ok(Row {
+        label: classify(torus, &ray),
+        t_hit: t.map(|t| t.to_string()),
+        escalated,
+        // The culls' own input: far origins go to the foot point, as in a renderer.
+        line: torus.line_to_local(&ray),
+    })
+}
+
+/// `index,oracle,margin,t_hit[,escalated],<one 0/1 per cull>`.
+fn write_row(
+    output: &mut impl Write,
+    torus: &Torus,
+    index: usize,
+    row: &Row,
+) -> std::io::Result<()> {
+    let oracle = match row.label.class {
+        OracleClass::Hit => "hit",
+        OracleClass::Miss => "miss",
+        OracleClass::Ambiguous => "ambiguous",
+    };
+    write!(output, "{index},{oracle},{:e},", row.label.margin)?;
+    if let Some(t) = &row.t_hit {
+        write!(output, "{t}")?;
+    }
+    if let Some(escalated) = row.escalated {
+        write!(output, ",{}", u8::from(escalated))?;
+    }
+    for cull in CullKind::TIMED {
+        let keep = cull.keeps(torus.bounds(), row.line.origin, row.line.dir);
+        write!(output, ",{}", u8::from(keep))?;
+    }
+    writeln!(output)
 }
 
 /// The certified f32 answers of the GPU kernel (no cull: `eval` reports the culls itself),
