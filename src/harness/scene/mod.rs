@@ -153,59 +153,11 @@ impl Scene {
             ) ^ (kind as u64 + 1).wrapping_mul(0xA24B_AED4_963E_E407),
         );
         let (major, minor) = (1.0f64, 1.0 / nu);
-        let outer = major + minor;
-        let mut placed: Vec<(DVec3, DVec3)> = Vec::with_capacity(count);
-        let eye;
-        match kind {
-            SceneKind::RingField => {
-                let side = 2.0 * outer * (count as f64).cbrt() * 1.5;
-                for _ in 0..count {
-                    let c = DVec3::new(
-                        rng.random_range(-0.5..0.5),
-                        rng.random_range(-0.5..0.5),
-                        rng.random_range(-0.5..0.5),
-                    ) * side;
-                    placed.push((c, crate::harness::workload::unit_vector(&mut rng)));
-                }
-                let view = crate::harness::workload::unit_vector(&mut rng);
-                eye = view * side * 1.8;
-            }
-            SceneKind::Chain => {
-                // Consecutive links R apart, rings in perpendicular planes that both hold
-                // the row direction: each passes through the other's hole.
-                let row_gap = 2.0 * outer * 1.25;
-                let per_row = ((count as f64 * row_gap / major).sqrt().ceil() as usize).max(1);
-                let rows = count.div_ceil(per_row);
-                for i in 0..count {
-                    let (row, k) = (i / per_row, i % per_row);
-                    let c = DVec3::new(
-                        (k as f64 - per_row as f64 / 2.0) * major,
-                        0.0,
-                        (row as f64 - rows as f64 / 2.0) * row_gap,
-                    );
-                    let axis = if k % 2 == 0 { DVec3::Y } else { DVec3::Z };
-                    placed.push((c, axis));
-                }
-                let extent = (per_row as f64 * major).max(rows as f64 * row_gap);
-                // From above and slightly off-vertical, so face-on links dominate.
-                eye = DVec3::new(0.05, 1.0, 0.08).normalize() * extent * 1.2;
-            }
-            SceneKind::FacingGrid => {
-                let side = (count as f64).sqrt().ceil() as usize;
-                let spacing = 2.0 * outer * 1.05;
-                let extent = side as f64 * spacing;
-                eye = DVec3::new(0.0, 0.0, extent * 1.3);
-                for i in 0..count {
-                    let (row, col) = (i / side, i % side);
-                    let c = DVec3::new(
-                        (col as f64 - (side as f64 - 1.0) / 2.0) * spacing,
-                        (row as f64 - (side as f64 - 1.0) / 2.0) * spacing,
-                        0.0,
-                    );
-                    placed.push((c, (eye - c).normalize()));
-                }
-            }
-        }
+        let (placed, eye) = match kind {
+            SceneKind::RingField => ring_field(count, major + minor, &mut rng),
+            SceneKind::Chain => chain(count, major, major + minor),
+            SceneKind::FacingGrid => facing_grid(count, major + minor),
+        };
         let tori: Vec<Torus> = placed
             .iter()
             .map(|(c, a)| Torus::new(c.as_vec3(), a.as_vec3(), major as f32, minor as f32))
@@ -228,38 +180,12 @@ impl Scene {
         });
         let centre = ((lo + hi) * 0.5).as_dvec3();
         let radius = ((hi - lo) * 0.5).as_dvec3().length();
-        let forward = (centre - eye).normalize();
-        let (e1, _) = forward.any_orthonormal_pair();
-        let right = e1;
-        let up = right.cross(forward);
-        // Frame the box's projected corners, not its bounding sphere: a flat grid would
-        // otherwise fill half the picture.
-        let (lo, hi) = (lo.as_dvec3(), hi.as_dvec3());
-        let tan_half_fov = (0..8)
-            .map(|i| {
-                let corner = DVec3::new(
-                    if i & 1 == 0 { lo.x } else { hi.x },
-                    if i & 2 == 0 { lo.y } else { hi.y },
-                    if i & 4 == 0 { lo.z } else { hi.z },
-                );
-                let v = corner - eye;
-                let z = v.dot(forward).max(1e-9);
-                (v.dot(right) / z).abs().max((v.dot(up) / z).abs())
-            })
-            .fold(0.0, f64::max)
-            * 1.03;
         Ok(Scene {
             kind,
             nu,
             tori,
             bvh,
-            camera: CameraView {
-                eye,
-                forward,
-                right,
-                up,
-                tan_half_fov,
-            },
+            camera: CameraView::framing(eye, centre, (lo.as_dvec3(), hi.as_dvec3())),
             bounding_sphere: (centre, radius),
         })
     }
@@ -351,5 +277,98 @@ impl Scene {
             }
         }
         best
+    }
+}
+
+/// Tori at random positions and axes in a cube sized for `count` of them, and an eye
+/// outside it in a random direction.
+fn ring_field(count: usize, outer: f64, rng: &mut Pcg64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = 2.0 * outer * (count as f64).cbrt() * 1.5;
+    let placed = (0..count)
+        .map(|_| {
+            let c = DVec3::new(
+                rng.random_range(-0.5..0.5),
+                rng.random_range(-0.5..0.5),
+                rng.random_range(-0.5..0.5),
+            ) * side;
+            (c, crate::harness::workload::unit_vector(rng))
+        })
+        .collect();
+    let view = crate::harness::workload::unit_vector(rng);
+    (placed, view * side * 1.8)
+}
+
+/// Chain links in rows: consecutive links R apart, rings in perpendicular planes that both
+/// hold the row direction, so each passes through the other's hole.
+fn chain(count: usize, major: f64, outer: f64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let row_gap = 2.0 * outer * 1.25;
+    let per_row = ((count as f64 * row_gap / major).sqrt().ceil() as usize).max(1);
+    let rows = count.div_ceil(per_row);
+    let placed = (0..count)
+        .map(|i| {
+            let (row, k) = (i / per_row, i % per_row);
+            let c = DVec3::new(
+                (k as f64 - per_row as f64 / 2.0) * major,
+                0.0,
+                (row as f64 - rows as f64 / 2.0) * row_gap,
+            );
+            (c, if k % 2 == 0 { DVec3::Y } else { DVec3::Z })
+        })
+        .collect();
+    let extent = (per_row as f64 * major).max(rows as f64 * row_gap);
+    // From above and slightly off-vertical, so face-on links dominate.
+    (
+        placed,
+        DVec3::new(0.05, 1.0, 0.08).normalize() * extent * 1.2,
+    )
+}
+
+/// A square grid of tori in the plane z = 0, each facing the eye on the z axis.
+fn facing_grid(count: usize, outer: f64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = (count as f64).sqrt().ceil() as usize;
+    let spacing = 2.0 * outer * 1.05;
+    let eye = DVec3::new(0.0, 0.0, side as f64 * spacing * 1.3);
+    let placed = (0..count)
+        .map(|i| {
+            let (row, col) = (i / side, i % side);
+            let c = DVec3::new(
+                (col as f64 - (side as f64 - 1.0) / 2.0) * spacing,
+                (row as f64 - (side as f64 - 1.0) / 2.0) * spacing,
+                0.0,
+            );
+            (c, (eye - c).normalize())
+        })
+        .collect();
+    (placed, eye)
+}
+
+impl CameraView {
+    /// A pinhole at `eye` looking at `centre`, its field of view just wide enough for the
+    /// box `lo..hi`'s projected corners (not its bounding sphere: a flat grid would
+    /// otherwise fill half the picture).
+    fn framing(eye: DVec3, centre: DVec3, (lo, hi): (DVec3, DVec3)) -> CameraView {
+        let forward = (centre - eye).normalize();
+        let (right, _) = forward.any_orthonormal_pair();
+        let up = right.cross(forward);
+        let tan_half_fov = (0..8)
+            .map(|i| {
+                let corner = DVec3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let v = corner - eye;
+                let z = v.dot(forward).max(1e-9);
+                (v.dot(right) / z).abs().max((v.dot(up) / z).abs())
+            })
+            .fold(0.0, f64::max)
+            * 1.03;
+        CameraView {
+            eye,
+            forward,
+            right,
+            up,
+            tan_half_fov,
+        }
     }
 }
