@@ -171,15 +171,8 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     let band = a_h_sq.ge(c!(b.major_radius) * c!(b.major_radius) * h_sq);
     let in_band = undecided & band;
     let (kept, undecided) = if in_band.any() {
-        let reach_sq = unit_y_sq * half_chord_sq;
-        let crosses_mid_plane = (p.y * p.y).le(reach_sq);
-        let band_keep = if (in_band & !crosses_mid_plane).any() {
-            let lowest = p.y.abs() - reach_sq.sqrt();
-            let h = h_sq.sqrt();
-            crosses_mid_plane | (lowest * lowest * h_sq).le(F::band_height_sq_h2(b, a_h, h))
-        } else {
-            yes
-        };
+        let band_keep =
+            outer_band_keeps::<S, F>(b, p, unit_y_sq * half_chord_sq, (a_h, h_sq), in_band);
         let undecided = undecided & !band;
         let kept = kept | (in_band & band_keep);
         if !undecided.any() {
@@ -198,23 +191,56 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     // line is kept, before any root is taken.
     let in_hole = undecided & a_h_sq.lt(c!(b.inner_safe_sq) * h_sq);
     let hole_keep = if in_hole.any() {
-        let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
-        let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
-        let out_of_reach = edge.lt(moment * moment);
-        if (in_hole & !out_of_reach).any() {
-            let h = h_sq.sqrt();
-            let len = len_sq.sqrt();
-            let rhs = moment.abs() + c!(F::minor(b)) * h * (len - d.y.abs());
-            out_of_reach | edge.lt(rhs * rhs)
-        } else {
-            yes
-        }
+        hole_keeps::<S, F>(b, p, d, (a_h, h_sq, len_sq), in_hole)
     } else {
         yes
     };
 
     // Case b (R − r ≤ a < R) keeps what sphere + slab keep.
     kept | (undecided & (!in_hole | hole_keep))
+}
+
+/// The outer band's verdict on the lanes `in_band`: the slab shrinks to |Y| ≤ h_c, tested
+/// as lowest² + (a − R)² ≤ r², times h² so that no division is needed; `reach_sq` is the
+/// chord's squared height reach, so a chord that crosses y = 0 (p_y² ≤ reach²) has
+/// lowest = 0: keep, no root.
+#[inline(always)]
+fn outer_band_keeps<S: Simd, F: SectionFormulas>(
+    b: &CullBounds,
+    p: Vec3s<S>,
+    reach_sq: F32s<S>,
+    (a_h, h_sq): (F32s<S>, F32s<S>),
+    in_band: M32s<S>,
+) -> M32s<S> {
+    let crosses_mid_plane = (p.y * p.y).le(reach_sq);
+    if !(in_band & !crosses_mid_plane).any() {
+        return M32s::splat(p.x.s, true);
+    }
+    let lowest = p.y.abs() - reach_sq.sqrt();
+    let h = h_sq.sqrt();
+    crosses_mid_plane | (lowest * lowest * h_sq).le(F::band_height_sq_h2(b, a_h, h))
+}
+
+/// The hole's verdict on the lanes `in_hole`: keep unless the line falls through between
+/// k and k′ (the in-plane moment M against the edge, see the caller).
+#[inline(always)]
+fn hole_keeps<S: Simd, F: SectionFormulas>(
+    b: &CullBounds,
+    p: Vec3s<S>,
+    d: Vec3s<S>,
+    (a_h, h_sq, len_sq): (F32s<S>, F32s<S>, F32s<S>),
+    in_hole: M32s<S>,
+) -> M32s<S> {
+    let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
+    let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
+    let out_of_reach = edge.lt(moment * moment);
+    if !(in_hole & !out_of_reach).any() {
+        return M32s::splat(p.x.s, true);
+    }
+    let h = h_sq.sqrt();
+    let len = len_sq.sqrt();
+    let rhs = moment.abs() + F32s::splat(len.s, F::minor(b)) * h * (len - d.y.abs());
+    out_of_reach | edge.lt(rhs * rhs)
 }
 
 #[cfg(test)]
