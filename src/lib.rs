@@ -115,12 +115,19 @@ pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
     torus: &Torus,
     ray: &R,
 ) -> Option<R::Hit> {
-    let line = ray.cull_line(torus);
-    if cull.keeps(torus.bounds(), line.origin, line.dir) {
+    if kept_by(cull, torus, ray) {
         intersect(torus, ray)
     } else {
         None
     }
+}
+
+/// The cull step of [`intersect_culled`] (and of [`Culled`]'s queries): the ray's line in
+/// the torus frame, as the culls see it, against the torus's own bounds.
+#[inline(always)]
+fn kept_by<C: Cull + ?Sized, R: TorusRay>(cull: &C, torus: &Torus, ray: &R) -> bool {
+    let line = ray.cull_line(torus);
+    cull.keeps(torus.bounds(), line.origin, line.dir)
 }
 
 /// The README's examples, compiled and run by `cargo test --doc`.

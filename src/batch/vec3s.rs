@@ -5,7 +5,7 @@
 //! certified f32 path uses it at width 1 and on lanes alike.
 
 use super::lanes::{F32s, F64s};
-use super::real::Real;
+use super::real::{Real, Sc, sc};
 use pulp::Simd;
 use std::ops::{Add, Mul, Sub};
 
@@ -113,6 +113,20 @@ impl<S: Simd> Vec3s<S> {
             y: self.y.max_cmp(o.y),
             z: self.z.max_cmp(o.z),
         }
+    }
+}
+
+impl V3<Sc> {
+    /// glam's `DVec3` as the scalar instantiation.
+    #[inline(always)]
+    pub(crate) fn from_dvec3(x: glam::DVec3) -> Self {
+        V3::new(sc(x.x), sc(x.y), sc(x.z))
+    }
+
+    /// The scalar instantiation as glam's `DVec3`.
+    #[inline(always)]
+    pub(crate) fn to_dvec3(self) -> glam::DVec3 {
+        glam::DVec3::new(self.x.v, self.y.v, self.z.v)
     }
 }
 

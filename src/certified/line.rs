@@ -10,7 +10,6 @@ use super::certificate::{ScaledLine, U32, V3};
 use crate::batch::real::{Real, Sc, sc};
 use crate::intersect::reduce::{foot_line, t_at};
 use crate::{Ray, Torus};
-use glam::DVec3;
 
 /// The f64 side of a [`ScaledLine`]: what maps `u` back to the ray's `t`.
 #[derive(Debug, Clone, Copy)]
@@ -109,16 +108,11 @@ pub(crate) fn lanes<R: Real>(like: R, q: [R; 3], d: [R; 3], rr_lo_hi: [R; 3]) ->
 #[inline(always)]
 pub(crate) fn of_ray(torus: &Torus, ray: &Ray) -> Option<([[f32; 3]; 3], BackMap)> {
     let (o, d) = torus.line_to_local_f64(ray);
-    let (major, minor) = (
-        f64::from(torus.major_radius()),
-        f64::from(torus.minor_radius()),
-    );
-    let inv_major = 1.0 / major;
-    let v = |x: DVec3| V3::new(sc(x.x), sc(x.y), sc(x.z));
+    let tube = torus.tube();
     let wide = scale(
-        v(o),
-        v(d),
-        sc(inv_major),
+        V3::from_dvec3(o),
+        V3::from_dvec3(d),
+        sc(tube.inv_major),
         sc(f64::from(ray.t_min())),
         sc(f64::from(ray.t_max())),
     );
@@ -131,10 +125,10 @@ pub(crate) fn of_ray(torus: &Torus, ray: &Ray) -> Option<([[f32; 3]; 3], BackMap
         [
             [f(q.x), f(q.y), f(q.z)],
             [f(dh.x), f(dh.y), f(dh.z)],
-            [(minor * inv_major) as f32, f(wide.lo), f(wide.hi)],
+            [tube.minor_rel as f32, f(wide.lo), f(wide.hi)],
         ],
         BackMap {
-            major,
+            major: tube.major,
             s: wide.s.v,
             inv_len: wide.inv_len.v,
         },

@@ -127,24 +127,11 @@ impl TorusRay for DRay {
     }
 }
 
-/// `x` as the scalar instantiation's 3-vector.
-#[inline(always)]
-fn v(x: DVec3) -> V3<Sc> {
-    V3::new(sc(x.x), sc(x.y), sc(x.z))
-}
-
-/// The scalar instantiation's 3-vector as glam's.
-#[inline(always)]
-fn back(x: V3<Sc>) -> DVec3 {
-    DVec3::new(x.x.v, x.y.v, x.z.v)
-}
-
 /// The foot-point line of `o + t·d` (scaled by 1/R) and its quartic's `[c2, c1, c0]`.
 #[inline(always)]
-fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> (FootLine<Sc>, [Sc; 3]) {
-    let inv_major = 1.0 / major;
-    let line = foot_line(v(o), v(d), sc(inv_major));
-    (line, coefficients(line.p, line.dh, sc(minor * inv_major)))
+fn reduce(tube: &Tube, o: DVec3, d: DVec3) -> (FootLine<Sc>, [Sc; 3]) {
+    let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), sc(tube.inv_major));
+    (line, coefficients(line.p, line.dh, sc(tube.minor_rel)))
 }
 
 /// The depressed monic quartic `[1, 0, c2, c1, c0]` actually solved for a torus-frame line
@@ -155,7 +142,7 @@ fn reduce(major: f64, minor: f64, o: DVec3, d: DVec3) -> (FootLine<Sc>, [Sc; 3])
 /// [`crate::quartic::solve_quartic`] (or `solve_depressed_monic(c[2], c[3], c[4])`).
 #[must_use]
 pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> [f64; 5] {
-    let (_, [c2, c1, c0]) = reduce(major, minor, o, d);
+    let (_, [c2, c1, c0]) = reduce(&Tube::new(major, minor), o, d);
     [1.0, 0.0, c2.v, c1.v, c0.v]
 }
 
@@ -163,7 +150,7 @@ pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) ->
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
 #[must_use]
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
-    let (line, [c2, c1, c0]) = reduce(major, minor, o, d);
+    let (line, [c2, c1, c0]) = reduce(&Tube::new(major, minor), o, d);
     // t is increasing in u (R > 0, |d| > 0), so the order is kept.
     solve_depressed_monic(c2.v, c1.v, c0.v).map_increasing(|u| line.t_at(sc(u), sc(major)).v)
 }
@@ -199,8 +186,9 @@ fn intersect_reduced<const CHECKED: bool>(
     t_min: f64,
     t_max: f64,
 ) -> Option<(f64, DVec3)> {
-    let found = nearest_hit::<Sc, Careful<CHECKED>>(tube, v(o), v(d), sc(t_min), sc(t_max))?;
-    found.hit.m.then(|| (found.t.v, back(found.normal)))
+    let (o, d) = (V3::from_dvec3(o), V3::from_dvec3(d));
+    let found = nearest_hit::<Sc, Careful<CHECKED>>(tube, o, d, sc(t_min), sc(t_max))?;
+    found.hit.m.then(|| (found.t.v, found.normal.to_dvec3()))
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,

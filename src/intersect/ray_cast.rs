@@ -92,7 +92,6 @@ impl<C: Cull> RayCast for Culled<'_, C> {
 
     #[inline]
     fn intersects_ray<R: TorusRay>(&self, ray: &R) -> bool {
-        let line = ray.cull_line(self.torus);
-        self.cull.keeps(self.torus.bounds(), line.origin, line.dir) && occluded(self.torus, ray)
+        crate::kept_by(&self.cull, self.torus, ray) && occluded(self.torus, ray)
     }
 }
