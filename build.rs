@@ -1,4 +1,4 @@
-// Records what the harness's binaries were built from, for the results' `meta`: the compiler, and
+// Records what the lab's binaries were built from, for the results' `meta`: the compiler, and
 // the git commit and whether the sources differed from it. Taken here, at build time,
 // because a results file describes the build that made it, not whichever repository the
 // command happens to run in.
@@ -7,16 +7,17 @@ use std::process::Command;
 
 /// The files the binaries are built from: what `dirty` looks at, and what reruns this
 /// script when it changes.
-const SOURCES: [&str; 5] = ["src", "benches", "build.rs", "Cargo.toml", "Cargo.lock"];
+const SOURCES: [&str; 6] = [
+    "src",
+    "crates",
+    "benches",
+    "build.rs",
+    "Cargo.toml",
+    "Cargo.lock",
+];
 
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
-    // Only the harness writes results files; a renderer's build (default-features = false)
-    // runs neither git nor rustc from here, so a build without git, or outside a checkout,
-    // is the same build.
-    if std::env::var_os("CARGO_FEATURE_HARNESS").is_none() {
-        return;
-    }
     let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
     let version = Command::new(rustc)
         .arg("--version")

@@ -37,7 +37,7 @@
 //! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
 //! the same cases and ν (each cull against cychosz and none, the scalar and the batch
 //! metrics, the f32 wavefront also against the cull's own f64 wavefront, in shuffled
-//! rounds on the same rays; see [`torus_cull::harness::paired`]).
+//! rounds on the same rays; see [`torus_cull_lab::paired`]).
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -56,17 +56,17 @@ use std::process::ExitCode;
 use std::time::SystemTime;
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
-use torus_cull::harness::measure::{self, LabeledBatch};
-use torus_cull::harness::oracle::OracleClass;
-use torus_cull::harness::paired;
-use torus_cull::harness::results::{
+use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
+use torus_cull_lab::measure::{self, LabeledBatch};
+use torus_cull_lab::oracle::OracleClass;
+use torus_cull_lab::paired;
+use torus_cull_lab::results::{
     BATCH_MODE, BvhSizes, CPU_DEVICE, EstimateRecord, F32_PRECISION, F64_PRECISION, RatioRecord,
     Results, SCALAR_MODE, Sizes, TimingRecord,
 };
-use torus_cull::harness::solver_suite::SolverCase;
-use torus_cull::harness::workload::spec::{BvhSpec, Workload};
-use torus_cull::harness::workload::{Case, generate};
-use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
+use torus_cull_lab::solver_suite::SolverCase;
+use torus_cull_lab::workload::spec::{BvhSpec, Workload};
+use torus_cull_lab::workload::{Case, generate};
 
 /// Times one cull on one batch, both ways.
 struct TimeCull<'a> {
@@ -241,12 +241,12 @@ impl Setup {
             }
             Some(p) => PathBuf::from(p),
             None => {
-                let out = torus_cull::harness::results::default_path(
+                let out = torus_cull_lab::results::default_path(
                     Path::new("results"),
                     &config.file_suffix(&workload),
                 );
                 if mode == Mode::Benchmark {
-                    torus_cull::harness::output::create_default_dir(&out)
+                    torus_cull_lab::output::create_default_dir(&out)
                         .map_err(|e| format!("{}: {e}", out.display()))?;
                 }
                 out
@@ -465,7 +465,7 @@ fn sizes(setup: &Setup, complete: bool, timed_nus: &[f64], bvh_spec: Option<&Bvh
 
 /// Prints the tables of a saved results file and writes its plots beside it.
 fn report(results: &Results, path: &Path, complete: bool, registered: usize) {
-    use torus_cull::harness::report;
+    use torus_cull_lab::report;
     print!("{}", report::timing_tables(results));
     print!("{}", report::cull_ns_tables(results));
     print!("{}", report::scalar_vs_batch_tables(results));
@@ -486,7 +486,7 @@ fn report(results: &Results, path: &Path, complete: bool, registered: usize) {
     let stem = path
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    match torus_cull::harness::plot::plot_results(results, dir, &stem) {
+    match torus_cull_lab::plot::plot_results(results, dir, &stem) {
         Ok(w) => println!("wrote {} plots to {}/{stem}-*.svg", w.len(), dir.display()),
         Err(e) => eprintln!("plots failed: {e}"),
     }
@@ -498,9 +498,9 @@ fn bench() -> Result<ExitCode, String> {
     if mode == Mode::Benchmark {
         // Before the measurements, not after them: a directory, a missing parent or the
         // workload file itself is refused here.
-        torus_cull::harness::output::check_writable(&setup.out)
+        torus_cull_lab::output::check_writable(&setup.out)
             .map_err(|e| format!("TORUS_CULL_RESULTS {}: {e}", setup.out.display()))?;
-        torus_cull::harness::output::check_not_input(
+        torus_cull_lab::output::check_not_input(
             ("TORUS_CULL_RESULTS", &setup.out),
             &[("TORUS_CULL_WORKLOAD", &setup.workload_path)],
         )?;

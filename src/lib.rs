@@ -1,136 +1,36 @@
-//! # torus-cull
+//! # torus-cull-lab
 //!
-//! Bounding tests ("culls") for ray–torus intersection, and an exact intersection that
-//! never misses a hit.
+//! **The lab** that measures the `torus_cull` library: everything behind the `torus-cull`
+//! command and `cargo bench`. A renderer links the library alone and never this crate (nor
+//! its clap, plotters, serde, rand, obvhs, …).
 //!
-//! # The renderer API
-//!
-//! A renderer needs four things: a [`Torus`], a [`Ray`], a [`Cull`] and [`intersect()`]
-//! (or both at once: [`intersect_culled`]).
-//!
-//! * [`Torus`] and [`Ray`]: validated shapes (or [`DRay`], an f64 ray with f64 hits); the
-//!   torus computes its cull constants once ([`Torus::bounds`]), and
-//!   [`Torus::line_to_local`] moves a ray into the torus frame (centre at the origin,
-//!   axis +y) where every cull works.
-//! * [`RayCast`]: the nearest hit, its `t` alone, or a shadow ray's bool, from a
-//!   [`Torus`] or from a torus behind a cull ([`Torus::with_cull`]); the free functions
-//!   [`intersect()`], [`intersect_culled`] and [`occluded()`] are what it calls.
-//! * [`cull`]: one file per cull behind the one-method [`Cull`] trait, all conservative
-//!   (a rejected line provably misses), from Cychosz's sphere + slab ([`CychoszCull`]) and
-//!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
-//!   root-free [`DiscriminantCull`]; [`CullKind`] names them for run-time choice.
-//! * [`intersect()`]: the nearest hit, from [`quartic`]'s nearest-root solver on the
-//!   torus quartic; [`quartic::solve_quartic`] gives every real root (for CSG).
-//! * [`batch`]: the same culls and solver on SIMD lanes, for packets and wavefronts, with
-//!   the instruction set picked at run time.
-//!
-//! With `default-features = false` this is all the crate builds, and its only
-//! dependencies are `glam` and `pulp` (the SIMD lanes of [`batch`]):
-//!
-//! ```toml
-//! [dependencies]
-//! torus-cull = { git = "…", default-features = false }
-//! ```
-//!
-//! The geometry, each cull's bound and soundness argument, the floating-point margin, the
-//! supported range and the seed paper's errata are written up in the repository's
-//! `docs/math.md`.
-//!
-//! ```
-//! use torus_cull::{Cull, Ray, SkalaCull, Torus, intersect};
-//! use glam::Vec3;
-//!
-//! let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?; // and its cull bounds, once
-//! let bounds = torus.bounds();
-//!
-//! // A ray that falls straight through the hole: skala proves the miss, no quartic.
-//! let ray = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.0, -1.0, 0.0))?;
-//! let line = torus.line_to_local(&ray);
-//! assert!(!SkalaCull.keeps(bounds, line.origin, line.dir));
-//!
-//! // A ray aimed at the tube: kept, and the exact intersection finds it.
-//! let ray = Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::new(0.0, -1.0, 0.0))?;
-//! let line = torus.line_to_local(&ray);
-//! assert!(SkalaCull.keeps(bounds, line.origin, line.dir));
-//! let hit = intersect(&torus, &ray).expect("hits the top of the tube");
-//! assert!((hit.t - 9.0).abs() < 1e-4);
-//! # Ok::<(), Box<dyn std::error::Error>>(())
-//! ```
-//!
-//! # The measuring harness
-//!
-//! The feature `harness` (on by default) adds the `harness` module: the f64 oracle, the workload
-//! generators, counting, paired timing, BVH scenes, results files, plots and reports
-//! behind the `torus-cull` command and `cargo bench`. See its module page.
+//! * Ground truth: [`oracle`], the independent f64 labels (hit / miss / ambiguous with a
+//!   margin); it shares no code with the timed path, so it can catch its bugs.
+//! * Rays: [`workload`], the seeded generators per case (hole, outer band, grazing,
+//!   uniform, camera, and the adversarial line families) and the workload files.
+//! * Counting and timing: [`measure`] (rejection counts against the oracle) and
+//!   [`paired`] (culls timed against each other in interleaved rounds, so ratios hold on a
+//!   loaded machine).
+//! * Many tori: [`scene`], an obvhs BVH with a cull at the leaves, and [`render`], its
+//!   picture and cull map.
+//! * Output: [`results`] (the results JSON), [`compare`], [`report`] (tables), [`plot`]
+//!   (SVG), [`eval`] (a user's own rays) and [`output`] (how every file is written).
+//! * Test fixtures: [`errata`], the seed paper's culls as printed, which are **not
+//!   conservative**; they exist to prove that the oracle catches a broken cull.
 
-#![warn(missing_docs)]
-
-/// The glam this API speaks (0.34): a renderer on another glam version converts through
-/// `torus_cull::glam::Vec3` instead of meeting "multiple different versions of crate glam".
-pub use glam;
-
-pub mod batch;
-pub mod certified;
-pub mod cull;
-mod geometry;
-pub mod intersect;
-pub mod quartic;
-
-#[cfg(feature = "harness")]
-pub mod harness;
-
-#[cfg(feature = "gpu")]
-pub mod gpu;
-
-pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};
-pub use cull::{
-    AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
-    DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
-    ThickCylinderCull,
-};
-pub use geometry::{
-    DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
-};
-pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
-
-/// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
-/// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
-///
-/// ```
-/// use torus_cull::{CychoszCull, NoCull, Ray, SkalaCull, Torus, intersect_culled};
-/// use glam::Vec3;
-/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?; // its cull bounds, once
-/// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.1, -1.0, 0.0))?;
-/// // Every conservative cull gives the same answer; skala just gets there without the quartic.
-/// assert_eq!(intersect_culled(&SkalaCull, &torus, &hole), None);
-/// assert_eq!(intersect_culled(&CychoszCull, &torus, &hole), None);
-/// assert_eq!(intersect_culled(&NoCull, &torus, &hole), None);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-#[inline(always)]
-#[must_use]
-pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
-    cull: &C,
-    torus: &Torus,
-    ray: &R,
-) -> Option<R::Hit> {
-    if kept_by(cull, torus, ray) {
-        intersect(torus, ray)
-    } else {
-        None
-    }
-}
-
-/// The cull step of [`intersect_culled`] (and of [`Culled`]'s queries): the ray's line in
-/// the torus frame, as the culls see it, against the torus's own bounds.
-#[inline(always)]
-fn kept_by<C: Cull + ?Sized, R: TorusRay>(cull: &C, torus: &Torus, ray: &R) -> bool {
-    let line = ray.cull_line(torus);
-    cull.keeps(torus.bounds(), line.origin, line.dir)
-}
-
-/// The README's examples, compiled and run by `cargo test --doc`.
-#[cfg(doctest)]
-#[doc = include_str!("../README.md")]
-struct ReadmeExamples;
+pub mod compare;
+pub mod errata;
+pub mod eval;
+pub mod f32_check;
+pub mod measure;
+pub mod oracle;
+pub mod output;
+pub mod paired;
+pub mod peer_f32;
+pub mod plot;
+pub mod render;
+pub mod report;
+pub mod results;
+pub mod scene;
+pub mod solver_suite;
+pub mod workload;

@@ -13,7 +13,6 @@
 //!   to the f32 world → torus transform's own rounding (≤ 10 % of η at 250·(R + r)).
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
@@ -21,8 +20,8 @@ use glam::{DMat3, DVec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::{CullKind, Ray, Torus};
+use torus_cull_lab::oracle::{OracleClass, classify_line};
 
 const NUS: [f64; 8] = [1.01, 1.1, 2.0, 4.0, 8.0, 32.0, 100.0, 1000.0];
 const SCALES: [f64; 3] = [1e-3, 1.0, 1e3];

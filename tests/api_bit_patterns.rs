@@ -7,7 +7,6 @@
 //! scaled far beyond f64's comfortable range.
 
 // Uses the oracle-free API only, but shares the harness feature gate of the suite.
-#![cfg(feature = "harness")]
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;

@@ -20,7 +20,6 @@
 //! `rescaled` paths).
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
@@ -29,10 +28,10 @@ use glam::{DMat3, DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{BATCHED, Dispatch, Isa, KeepMask, Lines, cull_batch};
-use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::harness::workload::Case;
-use torus_cull::harness::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 use torus_cull::{CullBounds, CullKind, Ray, Torus};
+use torus_cull_lab::oracle::{OracleClass, classify_line};
+use torus_cull_lab::workload::Case;
+use torus_cull_lab::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 
 /// One torus and rays on it.
 struct Set {
@@ -374,12 +373,12 @@ fn batch_verdicts_equal_scalar_verdicts_at_every_dispatch_level() {
 fn any_length_and_the_padding_never_shows() {
     let torus = Torus::canonical(1.0, 0.25).unwrap();
     let bounds = torus.bounds();
-    let batch = torus_cull::harness::workload::generate(
+    let batch = torus_cull_lab::workload::generate(
         Case::Uniform,
         4.0,
         300,
         7,
-        torus_cull::harness::workload::Pose::Canonical,
+        torus_cull_lab::workload::Pose::Canonical,
     )
     .unwrap();
     for dispatch in Isa::available()

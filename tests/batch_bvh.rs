@@ -4,13 +4,12 @@
 //! no shrinking t_max).
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use glam::Vec3;
 use torus_cull::batch::{BATCHED, Dispatch, Isa};
-use torus_cull::harness::scene::{LeafBatchStats, trace_leaves_batched};
-use torus_cull::harness::scene::{Scene, SceneHit, SceneKind, TraceStats};
 use torus_cull::{CullKind, NoCull, Ray};
+use torus_cull_lab::scene::{LeafBatchStats, trace_leaves_batched};
+use torus_cull_lab::scene::{Scene, SceneHit, SceneKind, TraceStats};
 
 /// Both miss, or both hit at the same t up to the batch solver's rounding (the torus may
 /// differ only where two tori tie at that t, as `same_hit` allows).

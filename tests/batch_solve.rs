@@ -10,14 +10,13 @@
 //!   follows the scalar method step for step, only libm's `cbrt`/`acos`/`cos` differ.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
-use torus_cull::harness::solver_suite::{NearestScore, SolverCase, family_cases};
-use torus_cull::harness::workload::Pose;
 use torus_cull::quartic::nearest_root_depressed;
+use torus_cull_lab::solver_suite::{NearestScore, SolverCase, family_cases};
+use torus_cull_lab::workload::Pose;
 
 const NUS: [f64; 5] = [1.25, 2.0, 4.0, 8.0, 16.0];
 

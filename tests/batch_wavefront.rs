@@ -7,15 +7,14 @@
 //! 250·(R + r) back.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
 use common::{family, pushed_back};
 use torus_cull::batch::{BATCHED, Dispatch, Isa, Wavefront};
-use torus_cull::harness::oracle::{OracleClass, classify};
-use torus_cull::harness::workload::Case;
 use torus_cull::{CullKind, CullVisitor, Hit, Ray, Torus, intersect_culled};
+use torus_cull_lab::oracle::{OracleClass, classify};
+use torus_cull_lab::workload::Case;
 
 /// The scalar path for one cull, ray by ray.
 struct Scalar<'a>(&'a Torus, &'a [Ray]);

@@ -1,12 +1,11 @@
 //! Through the obvhs BVH, every cull gives the brute-force closest hit (torus and t).
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use glam::Vec3;
-use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::harness::scene::{Scene, SceneKind, TraceStats, same_hit};
 use torus_cull::{Cull, CullKind, CullVisitor, Ray, intersect};
+use torus_cull_lab::oracle::{OracleClass, classify_line};
+use torus_cull_lab::scene::{Scene, SceneKind, TraceStats, same_hit};
 
 struct Check<'a> {
     scene: &'a Scene,
@@ -105,7 +104,7 @@ fn every_cull_matches_brute_force_through_the_bvh() {
 /// root, and no torus the oracle says is hit may be closer or missed.
 #[test]
 fn every_cull_through_the_bvh_agrees_with_the_oracle() {
-    use torus_cull::harness::oracle::{OracleClass, Query, classify, reference_roots};
+    use torus_cull_lab::oracle::{OracleClass, Query, classify, reference_roots};
     let mut definite = 0;
     for kind in SceneKind::ALL {
         for nu in [1.1, 1.5, 4.0, 16.0] {
@@ -221,8 +220,8 @@ fn pinned_far_line_regression() {
     let torus = &scene.tori[523];
     for i in [197184usize, 212016, 240656] {
         let ray = &rays[i];
-        let label = torus_cull::harness::oracle::classify(torus, ray);
-        assert_eq!(label.class, torus_cull::harness::oracle::OracleClass::Miss);
+        let label = torus_cull_lab::oracle::classify(torus, ray);
+        assert_eq!(label.class, torus_cull_lab::oracle::OracleClass::Miss);
         assert!(label.margin > 40.0, "{label:?}");
         assert_eq!(torus_cull::intersect(torus, ray), None, "ray {i}");
         let got = scene.trace(&torus_cull::NoCull, ray, &mut TraceStats::default());

@@ -7,12 +7,11 @@
 //! far more than the ±0.015 allowed here; 40 000 lines give a standard error ≤ 0.0025.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use torus_cull::CullKind;
-use torus_cull::harness::measure::{LabeledBatch, count};
-use torus_cull::harness::oracle::OracleClass;
-use torus_cull::harness::workload::{Case, Pose, generate};
+use torus_cull_lab::measure::{LabeledBatch, count};
+use torus_cull_lab::oracle::OracleClass;
+use torus_cull_lab::workload::{Case, Pose, generate};
 
 const SEED: u64 = 20261121;
 
@@ -86,7 +85,7 @@ fn discriminant_keeps_no_miss_beyond_the_padding_band() {
             let torus = &batch.batch.torus;
             let eta = f64::from(torus.bounds().minor_safe() - torus.minor_radius());
             for cull in [CullKind::Discriminant, CullKind::DiscriminantF64] {
-                let keeps = torus_cull::harness::measure::verdicts(cull, &batch.batch);
+                let keeps = torus_cull_lab::measure::verdicts(cull, &batch.batch);
                 let worst = batch
                     .labels
                     .iter()

@@ -3,13 +3,12 @@
 //! generators and the adversarial families at ν from 1.01 to 1000.
 
 // Every check here runs against the harness's oracle.
-#![cfg(feature = "harness")]
 
 use rand::SeedableRng;
-use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
-use torus_cull::harness::workload::adversarial::{LineFamily, family_rays};
-use torus_cull::harness::workload::{Case, Pose, generate};
 use torus_cull::{F32Verdict, Ray, Torus, intersect_f32_certified};
+use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
+use torus_cull_lab::workload::adversarial::{LineFamily, family_rays};
+use torus_cull_lab::workload::{Case, Pose, generate};
 
 #[derive(Default, Debug)]
 struct Tally {

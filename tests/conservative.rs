@@ -8,14 +8,13 @@
 //! grazing lines whose origin sits 100·(R + r) and 250·(R + r) away.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
-use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::harness::workload::Case;
 use torus_cull::{CullKind, Ray, Torus};
+use torus_cull_lab::oracle::{OracleClass, classify_line};
+use torus_cull_lab::workload::Case;
 
 /// The position of `cull` in [`CullKind::TIMED`].
 fn at(cull: CullKind) -> usize {

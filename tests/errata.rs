@@ -3,17 +3,16 @@
 //! This proves the harness can see a broken cull.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
 use common::{NUS, family, pairs};
 use glam::Vec3;
-use torus_cull::harness::errata::PrintedCull;
-use torus_cull::harness::measure::CountedCull;
-use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::harness::workload::Case;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray, Torus};
+use torus_cull_lab::errata::PrintedCull;
+use torus_cull_lab::measure::CountedCull;
+use torus_cull_lab::oracle::{OracleClass, classify_line};
+use torus_cull_lab::workload::Case;
 
 fn keeps(cull: impl Into<CountedCull>, torus: &Torus, ray: &Ray) -> bool {
     struct One<'a>(&'a Torus, &'a Ray);

@@ -1,12 +1,11 @@
 //! `torus-cull eval`: bad input gives the documented error, good input round-trips.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use std::path::Path;
 use std::process::{Command, Output};
-use torus_cull::harness::oracle::{OracleClass, classify};
 use torus_cull::{CullKind, Ray, Torus, intersect};
+use torus_cull_lab::oracle::{OracleClass, classify};
 
 fn run(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -245,7 +244,7 @@ fn no_hit_row_without_t_hit_on_hole_edge_lines() {
 /// 10⁵·(R + r) are kept by every cull (the raw far origin made them reject some).
 #[test]
 fn far_origins_are_never_falsely_rejected() {
-    use torus_cull::harness::workload::{Case, Pose, generate};
+    use torus_cull_lab::workload::{Case, Pose, generate};
     let batch = generate(Case::Grazing, 4.0, 3000, 11, Pose::Canonical).unwrap();
     let (big, small) = (batch.torus.major_radius(), batch.torus.minor_radius());
     let mut csv = String::from("ox,oy,oz,dx,dy,dz\n");

@@ -4,13 +4,11 @@
 //! first root, on every family; the peer (the plain f32 closed form of shaders) is
 //! counted on the same rays and shows its speckles where the families aim.
 
-#![cfg(feature = "harness")]
-
 use std::process::Command;
 use std::sync::OnceLock;
-use torus_cull::harness::f32_check::{self, CheckFile, FamilyRecord, families};
-use torus_cull::harness::oracle::OracleClass;
-use torus_cull::harness::peer_f32::intersect_peer_f64;
+use torus_cull_lab::f32_check::{self, CheckFile, FamilyRecord, families};
+use torus_cull_lab::oracle::OracleClass;
+use torus_cull_lab::peer_f32::intersect_peer_f64;
 
 const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
 const RAYS: usize = 3000;

@@ -9,7 +9,6 @@
 //! ±10⁻⁷·r, built in f64 (`harness::workload::adversarial`), at ν from 1.01 to 1000.
 
 // Every check here runs against the harness's oracle.
-#![cfg(feature = "harness")]
 
 mod common;
 
@@ -17,10 +16,10 @@ use common::{NUS, family, pairs};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
-use torus_cull::harness::workload::Case;
-use torus_cull::harness::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 use torus_cull::{CullKind, DRay, Torus, intersect, intersect_culled};
+use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
+use torus_cull_lab::workload::Case;
+use torus_cull_lab::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
 
 /// What one family found.
 /// The relative width, in units of the origin's distance, of the band around tangency that

@@ -1,12 +1,11 @@
 //! Each workload generator makes what its doc comment says.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use glam::DVec3;
-use torus_cull::harness::oracle::{OracleClass, classify};
-use torus_cull::harness::workload::{Case, GRAZING_OFFSETS, Pose, generate};
 use torus_cull::{Ray, Torus};
+use torus_cull_lab::oracle::{OracleClass, classify};
+use torus_cull_lab::workload::{Case, GRAZING_OFFSETS, Pose, generate};
 
 const NUS: [f64; 4] = [1.1, 2.0, 8.0, 32.0];
 

@@ -11,7 +11,7 @@
 //! away, and lines hugging the hole's edge and tangent to the four special circles at
 //! ±10⁻⁶·r, at random poses and scales. The escalation rate of each is printed.
 
-#![cfg(all(feature = "gpu", feature = "harness"))]
+#![cfg(feature = "gpu")]
 
 mod common;
 
@@ -22,12 +22,12 @@ use rand_pcg::Pcg64;
 use std::io::Write;
 use std::sync::OnceLock;
 use torus_cull::gpu::{GpuCull, GpuError, GpuIntersector};
-use torus_cull::harness::oracle::{OracleClass, Query, reference_roots};
-use torus_cull::harness::workload::Case;
-use torus_cull::harness::workload::adversarial::{
+use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
+use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
+use torus_cull_lab::workload::Case;
+use torus_cull_lab::workload::adversarial::{
     SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
 };
-use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
 
 /// The adapter, opened once for every test; `None` (after one loud line) without one.
 fn gpu() -> Option<&'static GpuIntersector> {
@@ -435,7 +435,7 @@ fn time_device_gpu_names_the_adapter() {
     );
     assert!(stdout.contains("Mrays/s"), "{stdout}");
     assert!(stdout.contains(gpu.adapter_name()), "{stdout}");
-    let results = torus_cull::harness::results::Results::load(&out_path).unwrap();
+    let results = torus_cull_lab::results::Results::load(&out_path).unwrap();
     let device = results.meta.device.expect("meta.device");
     assert!(device.contains(gpu.adapter_name()), "{device}");
     assert_eq!(

@@ -18,18 +18,17 @@
 //! rounding of the construction cannot make a label wrong.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::harness::oracle::{OracleClass, Query, classify, reference_roots};
-use torus_cull::harness::workload::adversarial::{
-    SpecialCircle, hole_edge_line, random_azimuth, random_pose_torus, tangent_line,
-};
-use torus_cull::harness::workload::{Case, Pose, generate};
 use torus_cull::intersect::{intersect_local, quartic_coefficients_local};
 use torus_cull::{Ray, Torus, intersect};
+use torus_cull_lab::oracle::{OracleClass, Query, classify, reference_roots};
+use torus_cull_lab::workload::adversarial::{
+    SpecialCircle, hole_edge_line, random_azimuth, random_pose_torus, tangent_line,
+};
+use torus_cull_lab::workload::{Case, Pose, generate};
 
 /// One torus and one torus-frame line (f64) built for it; the line goes to the world as an
 /// f32 ray.

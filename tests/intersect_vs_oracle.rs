@@ -1,16 +1,13 @@
 //! The timed exact intersection agrees with the oracle, and the oracle's two methods agree.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
-use torus_cull::harness::oracle::{
-    OracleClass, Query, classify, margin_by_sampling, reference_roots,
-};
-use torus_cull::harness::workload::Case;
 use torus_cull::intersect;
+use torus_cull_lab::oracle::{OracleClass, Query, classify, margin_by_sampling, reference_roots};
+use torus_cull_lab::workload::Case;
 
 /// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between `intersect` (its t is f32) and
 /// the oracle's reference root: relative to the hit distance, or to the torus size for
@@ -77,7 +74,7 @@ fn oracle_methods_agree_outside_the_band() {
         for (torus, ray) in pairs(&batches) {
             let label = classify(torus, ray);
             let sampled = margin_by_sampling(&Query::ray(torus, ray));
-            let band = torus_cull::harness::oracle::AMBIGUITY_REL * torus.outer_radius() as f64;
+            let band = torus_cull_lab::oracle::AMBIGUITY_REL * torus.outer_radius() as f64;
             if label.margin.abs() > band {
                 assert_eq!(
                     label.margin < 0.0,
@@ -159,8 +156,8 @@ fn degenerate_far_lines_never_hit() {
 fn an_origin_inside_the_tube_hits_where_the_ray_leaves() {
     use glam::Vec3;
     use rand::{RngExt, SeedableRng};
-    use torus_cull::harness::oracle::{Query, reference_roots};
     use torus_cull::{Ray, Torus, intersect, occluded};
+    use torus_cull_lab::oracle::{Query, reference_roots};
     let mut rng = rand_pcg::Pcg64::seed_from_u64(23);
     for nu in [1.5f32, 4.0, 100.0] {
         let torus = Torus::canonical(1.0, 1.0 / nu).unwrap();

@@ -4,17 +4,16 @@
 //! with an error that states it.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 mod common;
 
 use common::{family, pairs, pushed_back};
 use glam::Vec3;
-use torus_cull::harness::oracle::{OracleClass, classify_line};
-use torus_cull::harness::workload::Case;
 use torus_cull::{
     CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus, TorusError,
 };
+use torus_cull_lab::oracle::{OracleClass, classify_line};
+use torus_cull_lab::workload::Case;
 
 const NUS: [f64; 6] = [1.01, 1.1, 2.0, 10.0, 100.0, 1000.0];
 const DIR_SCALES: [f32; 3] = [1e-18, 1.0, 1e18];

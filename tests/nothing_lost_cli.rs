@@ -6,7 +6,6 @@
 //! the file and the option.
 
 // Every check here runs against the harness's CLI.
-#![cfg(feature = "harness")]
 #![cfg(unix)]
 
 use std::path::{Path, PathBuf};
@@ -515,7 +514,7 @@ fn progress_meta_and_plots_of_time_files() {
         "{}",
         stderr(&o)
     );
-    let r = torus_cull::harness::results::Results::load(&run_json).unwrap();
+    let r = torus_cull_lab::results::Results::load(&run_json).unwrap();
     assert_eq!(r.meta.threads, Some(2));
     assert!(r.meta.cores.is_some_and(|c| c >= 1));
     assert!(
@@ -541,7 +540,7 @@ fn progress_meta_and_plots_of_time_files() {
         "{}",
         stderr(&o)
     );
-    let t = torus_cull::harness::results::Results::load(&time_json).unwrap();
+    let t = torus_cull_lab::results::Results::load(&time_json).unwrap();
     let sizes = t.meta.sizes.clone().expect("time records its sizes");
     assert_eq!(sizes.timing_rays, Some(200));
     assert_eq!(sizes.timed_nu, vec![2.0, 8.0]);

@@ -4,7 +4,6 @@
 //! ends `eval` quietly, and an unwritable `--out` fails before the work.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 #![cfg(unix)]
 
 use std::io::{Read, Write};

@@ -3,13 +3,12 @@
 //! `eval` never panics on arbitrary rows.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use glam::Vec3;
 use proptest::prelude::*;
-use torus_cull::harness::eval::{Precision, eval_csv};
-use torus_cull::harness::oracle::{OracleClass, classify_line};
 use torus_cull::{CullKind, Ray, Torus};
+use torus_cull_lab::eval::{Precision, eval_csv};
+use torus_cull_lab::oracle::{OracleClass, classify_line};
 
 fn vec3(range: std::ops::Range<f32>) -> impl Strategy<Value = Vec3> {
     (range.clone(), range.clone(), range).prop_map(|(x, y, z)| Vec3::new(x, y, z))

@@ -1,12 +1,11 @@
 //! Results JSON: schema round trip, version check, atomic write; `compare` flags and exit codes.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use std::path::Path;
 use std::process::Command;
-use torus_cull::harness::compare::compare;
-use torus_cull::harness::results::{
+use torus_cull_lab::compare::compare;
+use torus_cull_lab::results::{
     BvhRecord, Meta, RatioRecord, RejectionRecord, Results, ResultsError, SCHEMA_VERSION,
     TimingRecord, write_atomic,
 };
@@ -412,10 +411,10 @@ fn compare_exit_codes() {
     // The same workload at another size (a smoke sweep against a full one): refused too.
     let (full, smoke) = (dir.path().join("full.json"), dir.path().join("smoke.json"));
     let mut f = sample();
-    f.meta.sizes = Some(torus_cull::harness::results::Sizes::rejection_only(100_000));
+    f.meta.sizes = Some(torus_cull_lab::results::Sizes::rejection_only(100_000));
     f.save(&full).unwrap();
     let mut s = worse_of(sample());
-    s.meta.sizes = Some(torus_cull::harness::results::Sizes::rejection_only(1_000));
+    s.meta.sizes = Some(torus_cull_lab::results::Sizes::rejection_only(1_000));
     s.meta.preset = Some("smoke".into());
     s.save(&smoke).unwrap();
     let (code, text) = cli_compare(&full, &smoke);

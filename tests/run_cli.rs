@@ -2,10 +2,9 @@
 //! exit 1 and name the ray and seed; a bad workload exits 2 naming file and field.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use std::process::{Command, Output};
-use torus_cull::harness::results::Results;
+use torus_cull_lab::results::Results;
 
 fn run(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -154,7 +153,7 @@ fn bad_inputs_exit_2_and_say_where() {
 /// it was built from.
 #[test]
 fn the_commit_is_the_builds_not_the_current_directorys() {
-    let (built, _) = torus_cull::harness::results::git_state();
+    let (built, _) = torus_cull_lab::results::git_state();
     let dir = tempfile::tempdir().unwrap();
     let git = |args: &[&str]| {
         let o = Command::new("git")

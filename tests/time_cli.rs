@@ -3,12 +3,11 @@
 //! results files from before the `ratio` section still load.
 
 // Every check here runs against the harness's oracle or CLI.
-#![cfg(feature = "harness")]
 
 use std::path::Path;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
-use torus_cull::harness::results::Results;
+use torus_cull_lab::results::Results;
 
 fn torus_cull(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_torus-cull"))

@@ -6,10 +6,10 @@ use criterion::{BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
-use torus_cull::harness::results::BvhRecord;
-use torus_cull::harness::scene::{Scene, SceneHit, TraceStats, same_hit};
-use torus_cull::harness::workload::spec::BvhSpec;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+use torus_cull_lab::results::BvhRecord;
+use torus_cull_lab::scene::{Scene, SceneHit, TraceStats, same_hit};
+use torus_cull_lab::workload::spec::BvhSpec;
 
 /// Rays per timed iteration: an evenly strided subset of each ray set.
 pub const TIMED_RAYS: usize = 8192;

@@ -6,7 +6,7 @@ pub mod solver;
 
 use std::path::Path;
 use std::time::{Duration, SystemTime};
-use torus_cull::harness::workload::spec::Workload;
+use torus_cull_lab::workload::spec::Workload;
 
 /// How big a `cargo bench` run is (`TORUS_CULL_BENCH`).
 pub struct BenchConfig {
@@ -164,8 +164,8 @@ impl BenchConfig {
     /// The BVH spec to bench: the workload's, or a seconds-sized one for `smoke`.
     pub fn bvh_spec(
         &self,
-        spec: &torus_cull::harness::workload::spec::BvhSpec,
-    ) -> torus_cull::harness::workload::spec::BvhSpec {
+        spec: &torus_cull_lab::workload::spec::BvhSpec,
+    ) -> torus_cull_lab::workload::spec::BvhSpec {
         let mut s = spec.clone();
         if self.small_bvh {
             s.nu.truncate(1);

@@ -15,14 +15,14 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::{Duration, Instant, SystemTime};
 use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
-use torus_cull::harness::paired::stats::{QUIET_FRACTION, quiet_rounds};
-use torus_cull::harness::paired::{Schedule, interleave, ratio_estimate};
-use torus_cull::harness::results::{SolverPairedRatio, SolverRecord};
-use torus_cull::harness::solver_suite::{NearestScore, SolverCase, family_cases};
-use torus_cull::harness::workload::spec::Workload;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
+use torus_cull_lab::paired::stats::{QUIET_FRACTION, quiet_rounds};
+use torus_cull_lab::paired::{Schedule, interleave, ratio_estimate};
+use torus_cull_lab::results::{SolverPairedRatio, SolverRecord};
+use torus_cull_lab::solver_suite::{NearestScore, SolverCase, family_cases};
+use torus_cull_lab::workload::spec::Workload;
 
-pub use torus_cull::harness::solver_suite::FAMILIES;
+pub use torus_cull_lab::solver_suite::FAMILIES;
 
 /// The family's quartics at the timed ν (lines the oracle calls ambiguous are left out).
 pub fn family_sets(family: &str, workload: &Workload, config: &BenchConfig) -> Vec<SolverCase> {
@@ -128,7 +128,7 @@ const REFERENCE: &str = "roots_0.0.8";
 /// Paired ratios t(solver) / t([`REFERENCE`]) on one family's quartics, in
 /// [`solver_names`] order: every solver runs once over all of them per round, in a
 /// shuffled order, for about 3 s at the default size (0.3 s or more), and the ratio is
-/// the median over the quietest rounds, with its bootstrap interval ([`torus_cull::harness::paired`]).
+/// the median over the quietest rounds, with its bootstrap interval ([`torus_cull_lab::paired`]).
 fn paired_vs_roots(
     sets: &[SolverCase],
     q: &Quartics,

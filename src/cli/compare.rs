@@ -4,7 +4,7 @@ use super::CliResult;
 use crate::out;
 use std::path::Path;
 use std::process::ExitCode;
-use torus_cull::harness::results::Results;
+use torus_cull_lab::results::Results;
 
 /// Runs `compare`.
 pub fn compare(
@@ -20,16 +20,16 @@ pub fn compare(
         );
     }
     let (a, b) = (Results::load(old)?, Results::load(new)?);
-    torus_cull::harness::compare::comparable(&a, &b)
+    torus_cull_lab::compare::comparable(&a, &b)
         .map_err(|e| format!("{} vs {}: {e}", old.display(), new.display()))?;
-    let report = torus_cull::harness::compare::compare(&a, &b, threshold / 100.0);
+    let report = torus_cull_lab::compare::compare(&a, &b, threshold / 100.0);
     let name = |p: &Path| {
         p.file_stem()
             .map_or("?".into(), |s| s.to_string_lossy().into_owned())
     };
     out!(
         "{}",
-        torus_cull::harness::compare::render(&report, &name(old), &name(new), only_changes)
+        torus_cull_lab::compare::render(&report, &name(old), &name(new), only_changes)
     )?;
     if report.rows.is_empty() {
         // A comparison of nothing must not pass a CI gate.

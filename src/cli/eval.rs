@@ -9,14 +9,14 @@ use std::process::ExitCode;
 pub fn eval(
     major: f32,
     minor: f32,
-    precision: torus_cull::harness::eval::Precision,
+    precision: torus_cull_lab::eval::Precision,
     rays: &std::path::Path,
     out: Option<&std::path::Path>,
 ) -> CliResult {
     let name = rays.display().to_string();
     if let Some(out) = out {
         if name != "-" {
-            torus_cull::harness::output::check_not_input(("--out", out), &[("--rays", rays)])?;
+            torus_cull_lab::output::check_not_input(("--out", out), &[("--rays", rays)])?;
         }
     }
     let input: Box<dyn std::io::BufRead> = if name == "-" {
@@ -32,8 +32,8 @@ pub fn eval(
         // Written through `output`: a regular file appears only when complete.
         Some(path) => {
             let named = |e: std::io::Error| format!("--out {}: {e}", path.display());
-            let mut file = torus_cull::harness::output::Output::create(path).map_err(named)?;
-            let rows = torus_cull::harness::eval::eval_csv(
+            let mut file = torus_cull_lab::output::Output::create(path).map_err(named)?;
+            let rows = torus_cull_lab::eval::eval_csv(
                 major,
                 minor,
                 precision,
@@ -46,7 +46,7 @@ pub fn eval(
                 Err(e) => Err(e.into()),
             }
         }
-        None => torus_cull::harness::eval::eval_csv(
+        None => torus_cull_lab::eval::eval_csv(
             major,
             minor,
             precision,
@@ -110,8 +110,8 @@ pub fn parse_radius(s: &str) -> Result<f32, String> {
 
 /// Whether `e` is a write to a pipe whose reader has gone.
 fn is_broken_pipe(e: &(dyn std::error::Error + 'static)) -> bool {
-    let io = match e.downcast_ref::<torus_cull::harness::eval::EvalError>() {
-        Some(torus_cull::harness::eval::EvalError::Io(io)) => Some(io),
+    let io = match e.downcast_ref::<torus_cull_lab::eval::EvalError>() {
+        Some(torus_cull_lab::eval::EvalError::Io(io)) => Some(io),
         _ => e.downcast_ref::<std::io::Error>(),
     };
     io.is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)

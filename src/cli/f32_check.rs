@@ -6,8 +6,8 @@ use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use torus_cull::harness::f32_check::{self, CheckFile, families};
-use torus_cull::harness::{output, results};
+use torus_cull_lab::f32_check::{self, CheckFile, families};
+use torus_cull_lab::{output, results};
 
 /// The most rays per family.
 const MAX_RAYS: usize = 1_000_000;

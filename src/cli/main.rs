@@ -192,7 +192,7 @@ fn main() -> ExitCode {
             precision,
             exact,
         } => {
-            use torus_cull::harness::eval::Precision;
+            use torus_cull_lab::eval::Precision;
             let precision = match (precision, exact) {
                 (None | Some(EvalPrecision::F64), EvalExact::F64) => Ok(Precision::F64),
                 (Some(EvalPrecision::F32), EvalExact::F64) => Ok(Precision::F32),
@@ -325,7 +325,7 @@ fn remove_temp_files_on_signals() {
         if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
             std::thread::spawn(move || {
                 if let Some(signal) = signals.forever().next() {
-                    torus_cull::harness::output::remove_pending();
+                    torus_cull_lab::output::remove_pending();
                     let _ = signal_hook::low_level::emulate_default_handler(signal);
                     std::process::exit(128 + signal);
                 }

@@ -4,7 +4,7 @@ use super::CliResult;
 use crate::outln;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use torus_cull::harness::results::Results;
+use torus_cull_lab::results::Results;
 
 /// Runs `plot`.
 pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
@@ -16,7 +16,7 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
     let stem = file
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    let written = torus_cull::harness::plot::plot_results(&results, &dir, &stem)?;
+    let written = torus_cull_lab::plot::plot_results(&results, &dir, &stem)?;
     if written.is_empty() {
         return Err(format!(
             "{}: nothing to plot (no rejection, timing, bvh or ratio records)",

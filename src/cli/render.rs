@@ -7,7 +7,7 @@ use std::process::ExitCode;
 
 /// Runs `render`.
 pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: u64) -> CliResult {
-    let kind: torus_cull::harness::scene::SceneKind =
+    let kind: torus_cull_lab::scene::SceneKind =
         scene.parse().map_err(|e| format!("--scene: {e}"))?;
     if !(1..=8192).contains(&size) {
         return Err(format!("--size {size} is invalid (allowed: 1 ..= 8192)").into());
@@ -15,7 +15,7 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
     if !(1..=1_000_000).contains(&tori) {
         return Err(format!("--tori {tori} is invalid (allowed: 1 ..= 1000000)").into());
     }
-    let scene = torus_cull::harness::scene::Scene::build(kind, nu, tori, seed)
+    let scene = torus_cull_lab::scene::Scene::build(kind, nu, tori, seed)
         .map_err(|e| format!("--nu: {e}"))?;
     let map_path = out.with_file_name(format!(
         "{}-cullmap.png",
@@ -24,13 +24,13 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
     ));
     // Both outputs are checked before the picture is drawn.
     for path in [out, map_path.as_path()] {
-        torus_cull::harness::output::check_writable(path)
+        torus_cull_lab::output::check_writable(path)
             .map_err(|e| format!("--out {}: {e}", path.display()))?;
     }
-    let image = torus_cull::harness::render::render(&scene, size);
-    torus_cull::harness::render::write_png(out, size, &image.shaded)?;
-    let (map, height) = torus_cull::harness::render::cull_map_with_legend(&image.cull_map, size);
-    torus_cull::harness::render::write_png_rect(&map_path, size, height, &map)?;
+    let image = torus_cull_lab::render::render(&scene, size);
+    torus_cull_lab::render::write_png(out, size, &image.shaded)?;
+    let (map, height) = torus_cull_lab::render::cull_map_with_legend(&image.cull_map, size);
+    torus_cull_lab::render::write_png_rect(&map_path, size, height, &map)?;
     let c = image.counts;
     let total = (size * size) as f64;
     outln!("wrote {} and {}", out.display(), map_path.display())?;

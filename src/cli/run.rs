@@ -5,12 +5,12 @@ use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use torus_cull::harness::measure::{self, CountedCull, FalseReject};
-use torus_cull::harness::output;
-use torus_cull::harness::report;
-use torus_cull::harness::results::{self, RejectionRecord, Results};
-use torus_cull::harness::workload::GenerateError;
-use torus_cull::harness::workload::spec::Workload;
+use torus_cull_lab::measure::{self, CountedCull, FalseReject};
+use torus_cull_lab::output;
+use torus_cull_lab::report;
+use torus_cull_lab::results::{self, RejectionRecord, Results};
+use torus_cull_lab::workload::GenerateError;
+use torus_cull_lab::workload::spec::Workload;
 
 /// Runs `run`.
 pub fn run(
@@ -132,7 +132,7 @@ fn write_plots(results: &Results, path: &Path) -> Result<(), Box<dyn std::error:
     let stem = path
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    let written = torus_cull::harness::plot::plot_results(results, &dir, &stem)?;
+    let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",
         written.len(),

@@ -7,12 +7,12 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::CullKind;
 use torus_cull::batch::Dispatch;
-use torus_cull::harness::measure::CountedCull;
-use torus_cull::harness::paired::sweep::{
+use torus_cull_lab::measure::CountedCull;
+use torus_cull_lab::paired::sweep::{
     DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
 };
-use torus_cull::harness::results::{self, RatioRecord, Results};
-use torus_cull::harness::workload::spec::Workload;
+use torus_cull_lab::results::{self, RatioRecord, Results};
+use torus_cull_lab::workload::spec::Workload;
 
 /// The longest `--seconds` accepted: an hour.
 const MAX_SECONDS: f64 = 3600.0;
@@ -90,10 +90,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let batch = pick_batch(args.batch, &workload, &args.workload)?;
     let path = out_path(args.out, &workload)?;
     check_writable(&path)?;
-    torus_cull::harness::output::check_not_input(
-        ("--out", &path),
-        &[("--workload", &args.workload)],
-    )?;
+    torus_cull_lab::output::check_not_input(("--out", &path), &[("--workload", &args.workload)])?;
 
     if args.device == Device::Gpu {
         if args.mode == Mode::Both {
@@ -112,7 +109,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     }
     let records = time_with_progress(&workload, &nus, &culls, &options)?;
     let results = ratio_results(&workload, records, &nus, &options);
-    out!("{}", torus_cull::harness::report::ratio_tables(&results))?;
+    out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
     Ok(ExitCode::SUCCESS)
@@ -159,7 +156,7 @@ fn out_path(out: Option<PathBuf>, workload: &Workload) -> Result<PathBuf, String
         return Ok(path);
     }
     let path = results::default_path(Path::new("results"), &time_suffix(&workload.name));
-    torus_cull::harness::output::create_default_dir(&path)
+    torus_cull_lab::output::create_default_dir(&path)
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     Ok(path)
 }
@@ -297,9 +294,9 @@ fn time_suffix(workload: &str) -> String {
 }
 
 /// Fails now, not after the measurement, if `path` cannot be written the way every output
-/// is (see [`torus_cull::harness::output`]).
+/// is (see [`torus_cull_lab::output`]).
 fn check_writable(path: &Path) -> Result<(), String> {
-    torus_cull::harness::output::check_writable(path)
+    torus_cull_lab::output::check_writable(path)
         .map_err(|e| format!("--out {}: {e}", path.display()))
 }
 
@@ -311,10 +308,10 @@ mod gpu {
     use std::process::ExitCode;
     use std::time::Instant;
     use torus_cull::gpu::{GpuCull, GpuIntersector};
-    use torus_cull::harness::results::{EstimateRecord, Results};
-    use torus_cull::harness::workload::generate;
-    use torus_cull::harness::workload::spec::Workload;
     use torus_cull::{CullKind, F32Verdict, Ray, Torus};
+    use torus_cull_lab::results::{EstimateRecord, Results};
+    use torus_cull_lab::workload::generate;
+    use torus_cull_lab::workload::spec::Workload;
 
     /// Dispatches timed per (case, ν, cull) at least, whatever the time share.
     const MIN_SAMPLES: usize = 3;
@@ -465,7 +462,7 @@ mod gpu {
     use std::path::Path;
     use std::process::ExitCode;
     use torus_cull::CullKind;
-    use torus_cull::harness::workload::spec::Workload;
+    use torus_cull_lab::workload::spec::Workload;
 
     pub(super) fn run(
         _workload: &Workload,

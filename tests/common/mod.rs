@@ -1,8 +1,8 @@
 //! Line families shared by the integration tests.
 #![allow(dead_code, reason = "shared by several test crates, each using a part")]
 
-use torus_cull::harness::workload::{Batch, Case, Pose, generate};
 use torus_cull::{Ray, Torus};
+use torus_cull_lab::workload::{Batch, Case, Pose, generate};
 
 /// The ν values the conservativeness claims are tested at.
 pub const NUS: [f64; 7] = [1.1, 1.5, 2.0, 3.0, 5.0, 10.0, 32.0];

@@ -1,0 +1,371 @@
+//! [`Real`]: the thin number trait that lets a solver step be written once for the scalar
+//! solver and for every lane width (DESIGN.md §15).
+//!
+//! parry writes each ray query once over simba's `SimdRealField`; this is the same idea
+//! cut down to what the quartic solver and the exact intersection use: `+ − × ÷`, `√`,
+//! `|x|`, `min`/`max`, `copysign`, comparisons into a [`RealMask`], `select`, constants
+//! (`splat`), and "is any lane / every lane still active" for early exits.
+//!
+//! It is implemented by the lane wrappers [`F64s<S>`] and [`F32s<S>`] of
+//! [`super::lanes`]. `pulp::Scalar` is a [`pulp::Simd`] whose `f64s` is `f64` and whose
+//! `m64s` is `bool`, so a step generic over `R: Real` instantiated at [`Sc`] =
+//! `F64s<pulp::Scalar>` *is* the scalar step: the scalar solver in [`crate::quartic`]
+//! wraps its `f64`s with [`sc`] and calls the same function the lanes call. A step at
+//! width 1 keeps its early exits: `if !active.any() { return … }` is the scalar `if`.
+//!
+//! **Operation order.** Every method is one IEEE operation (or, for `min`/`max`, the
+//! float type's own `min`/`max` at width 1 and its lane form, IEEE `minNum`/`maxNum`,
+//! on wider lanes), never fused and never reordered, so a step computes the same bits at
+//! every width; the bit-identity tests rest on that.
+
+use super::lanes::{F32s, F64s, M32s, M64s};
+use pulp::Simd;
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Not, Sub};
+
+/// A lane mask of a [`Real`]: each lane true or false (at width 1, a `bool`).
+pub trait RealMask:
+    Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self>
+{
+    /// Some lane is true (at width 1: the lane).
+    fn any(self) -> bool;
+    /// Every lane is true (at width 1: the lane).
+    fn all(self) -> bool;
+}
+
+/// A float, or a register of float lanes, with the operations of the solver's steps.
+///
+/// Constants are made with [`Real::splat`] from any value of the type (which carries the
+/// SIMD token), so a step needs no token argument: `x.splat(2.0)`.
+pub trait Real:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    /// The lane mask of comparisons.
+    type Mask: RealMask;
+    /// How many lanes (1: the scalar instantiation). For a step whose two forms give the
+    /// same bits but suit latency (one lane) or throughput (many) better.
+    const LANES: usize;
+    /// Every lane `x` (rounded to the lane type: exact for f64), same SIMD token as `self`.
+    fn splat(self, x: f64) -> Self;
+    /// `−x` (exact: flips the sign bit). Not the `Neg` operator on purpose: pulp's scalar
+    /// "register" negates natively here, where the lane wrappers' `-` goes through integer
+    /// bit operations that cost the scalar solver several percent.
+    fn negate(self) -> Self;
+    /// √x, correctly rounded.
+    fn sqrt(self) -> Self;
+    /// |x|.
+    fn abs(self) -> Self;
+    /// The float type's `min`: the smaller, ignoring a NaN operand.
+    fn min(self, o: Self) -> Self;
+    /// The float type's `max`: the larger, ignoring a NaN operand.
+    fn max(self, o: Self) -> Self;
+    /// The magnitude of `self` with the sign bit of `sign`.
+    fn copysign(self, sign: Self) -> Self;
+    /// ∛x for x ≥ 0, without libm on the hot path: the solver's own cube root at width 1
+    /// ([`crate::quartic`]'s), a bit-trick seed and Halley steps on wider f64 lanes
+    /// (accurate on `crate::batch::quartic`'s `CBRT_RANGE`, which the lane solver checks).
+    fn cbrt(self) -> Self;
+    /// `self < o`.
+    fn lt(self, o: Self) -> Self::Mask;
+    /// `self ≤ o`.
+    fn le(self, o: Self) -> Self::Mask;
+    /// `self > o`.
+    fn gt(self, o: Self) -> Self::Mask;
+    /// `self ≥ o`.
+    fn ge(self, o: Self) -> Self::Mask;
+    /// `self == o` (false for NaN).
+    fn eq(self, o: Self) -> Self::Mask;
+    /// `self != o` (true for NaN).
+    #[inline(always)]
+    fn ne(self, o: Self) -> Self::Mask {
+        !self.eq(o)
+    }
+    /// `if mask { a } else { b }`, per lane.
+    fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
+    /// Lanes that are finite (not ±∞, not NaN).
+    fn is_finite(self) -> Self::Mask;
+    /// Lanes that are NaN.
+    #[inline(always)]
+    fn is_nan(self) -> Self::Mask {
+        self.ne(self)
+    }
+}
+
+/// The scalar instantiation: one f64 in pulp's scalar "register".
+pub type Sc = F64s<pulp::Scalar>;
+
+/// `x` as the scalar instantiation of [`Real`].
+#[inline(always)]
+pub fn sc(x: f64) -> Sc {
+    F64s {
+        s: pulp::Scalar::new(),
+        v: x,
+    }
+}
+
+/// `b` as the scalar instantiation's mask.
+#[inline(always)]
+pub fn sc_mask(b: bool) -> M64s<pulp::Scalar> {
+    M64s {
+        s: pulp::Scalar::new(),
+        m: b,
+    }
+}
+
+macro_rules! real {
+    ($name:ident, $mask:ident, $elem:ty, $m:ident, $lanes:ident, $neg:ident) => {
+        impl<S: Simd> RealMask for $mask<S> {
+            #[inline(always)]
+            fn any(self) -> bool {
+                if S::$lanes == 1 {
+                    // The one lane's `bool`, by value (`bits` reads the mask's bytes).
+                    pulp::bytemuck::cast::<S::$m, u8>(self.m) != 0
+                } else {
+                    self.bits() != 0
+                }
+            }
+            #[inline(always)]
+            fn all(self) -> bool {
+                if S::$lanes == 1 {
+                    self.any()
+                } else {
+                    self.bits() == u64::MAX >> (64 - S::$lanes)
+                }
+            }
+        }
+
+        impl<S: Simd> Real for $name<S> {
+            type Mask = $mask<S>;
+            const LANES: usize = S::$lanes;
+            #[inline(always)]
+            fn splat(self, x: f64) -> Self {
+                $name::splat(self.s, x as $elem)
+            }
+            #[inline(always)]
+            fn negate(self) -> Self {
+                $name {
+                    s: self.s,
+                    v: self.s.$neg(self.v),
+                }
+            }
+            #[inline(always)]
+            fn sqrt(self) -> Self {
+                $name::sqrt(self)
+            }
+            #[inline(always)]
+            fn abs(self) -> Self {
+                if S::$lanes == 1 {
+                    // At width 1, the float type's own operations (not pulp's bit
+                    // manipulations through integer registers): the scalar solver's code.
+                    let a: $elem = pulp::bytemuck::cast(self.v);
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.abs()),
+                    }
+                } else {
+                    $name::abs(self)
+                }
+            }
+            #[inline(always)]
+            fn min(self, o: Self) -> Self {
+                if S::$lanes == 1 {
+                    // The float type's own `min`, which the scalar code always used
+                    // (it may differ from the select below in the sign of a zero).
+                    let (a, b): ($elem, $elem) =
+                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(o.v));
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.min(b)),
+                    }
+                } else {
+                    self.min_num(o)
+                }
+            }
+            #[inline(always)]
+            fn max(self, o: Self) -> Self {
+                if S::$lanes == 1 {
+                    let (a, b): ($elem, $elem) =
+                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(o.v));
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.max(b)),
+                    }
+                } else {
+                    self.max_num(o)
+                }
+            }
+            #[inline(always)]
+            fn copysign(self, sign: Self) -> Self {
+                if S::$lanes == 1 {
+                    let (a, b): ($elem, $elem) =
+                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(sign.v));
+                    $name {
+                        s: self.s,
+                        v: pulp::bytemuck::cast(a.copysign(b)),
+                    }
+                } else {
+                    $name::copysign(self, sign)
+                }
+            }
+            #[inline(always)]
+            fn cbrt(self) -> Self {
+                cbrt_lanes(self)
+            }
+            #[inline(always)]
+            fn lt(self, o: Self) -> $mask<S> {
+                $name::lt(self, o)
+            }
+            #[inline(always)]
+            fn le(self, o: Self) -> $mask<S> {
+                $name::le(self, o)
+            }
+            #[inline(always)]
+            fn gt(self, o: Self) -> $mask<S> {
+                $name::gt(self, o)
+            }
+            #[inline(always)]
+            fn ge(self, o: Self) -> $mask<S> {
+                $name::ge(self, o)
+            }
+            #[inline(always)]
+            fn eq(self, o: Self) -> $mask<S> {
+                $name::eq(self, o)
+            }
+            #[inline(always)]
+            fn is_finite(self) -> $mask<S> {
+                $name::is_finite(self)
+            }
+            #[inline(always)]
+            fn select(mask: $mask<S>, a: Self, b: Self) -> Self {
+                if S::$lanes == 1 {
+                    if mask.any() { a } else { b }
+                } else {
+                    mask.select(a, b)
+                }
+            }
+        }
+    };
+}
+
+real!(F64s, M64s, f64, m64s, F64_LANES, neg_f64s);
+real!(F32s, M32s, f32, m32s, F32_LANES, neg_f32s);
+
+/// Picks the cube root of a lane type (the only step whose seed depends on the width).
+trait CbrtLanes: Sized {
+    fn cbrt_lanes(self) -> Self;
+}
+
+#[inline(always)]
+fn cbrt_lanes<T: CbrtLanes>(x: T) -> T {
+    x.cbrt_lanes()
+}
+
+impl<S: Simd> CbrtLanes for F64s<S> {
+    #[inline(always)]
+    fn cbrt_lanes(self) -> Self {
+        if S::F64_LANES == 1 {
+            let y: f64 = pulp::bytemuck::cast(self.v);
+            F64s {
+                s: self.s,
+                v: pulp::bytemuck::cast(crate::quartic::cbrt(y)),
+            }
+        } else {
+            super::quartic::cbrt(self)
+        }
+    }
+}
+
+impl<S: Simd> CbrtLanes for F32s<S> {
+    /// ∛y for y ≥ 0 normal, at every width the same bits (the certified f32 path's scalar
+    /// and lane forms agree): Kahan's seed on the f32 word (⌊w/3⌋ + 709 958 130, as
+    /// fdlibm's `cbrtf`, within about 6 %), then two Halley steps (6 % → 10⁻⁴ → below
+    /// f32's rounding). Zero, subnormal and non-finite lanes come out unspecified: the
+    /// certificate, not the cube root, decides what f32 may claim.
+    #[inline(always)]
+    fn cbrt_lanes(self) -> Self {
+        let s = self.s;
+        let words: S::u32s = pulp::bytemuck::cast(self.v);
+        // ⌊w/3⌋ = ⌊w·⌈2³³/3⌉ / 2³³⌋ for every 32-bit w.
+        let (_, high) = s.widening_mul_u32s(words, s.splat_u32s(0xAAAA_AAAB));
+        let third = s.wrapping_dyn_shr_u32s(high, s.splat_u32s(1));
+        let seed = s.add_u32s(third, s.splat_u32s(709_958_130));
+        let mut t = F32s {
+            s,
+            v: pulp::bytemuck::cast(seed),
+        };
+        for _ in 0..2 {
+            t = crate::quartic::cube_root::cbrt_halley(t, self);
+        }
+        t
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At width 1 the trait is the scalar arithmetic, bit for bit.
+    #[test]
+    fn scalar_instantiation_is_f64() {
+        let xs = [
+            0.0,
+            -0.0,
+            1.5,
+            -2.25,
+            1e-300,
+            3e300,
+            f64::INFINITY,
+            f64::NAN,
+        ];
+        for &a in &xs {
+            for &b in &xs {
+                let (x, y) = (sc(a), sc(b));
+                let same = |got: Sc, want: f64| {
+                    assert_eq!(
+                        got.v.to_bits(),
+                        want.to_bits(),
+                        "{a} {b}: {} vs {want}",
+                        got.v
+                    )
+                };
+                same(x + y, a + b);
+                same(x.negate(), -a);
+                same(x - y, a - b);
+                same(x * y, a * b);
+                same(x / y, a / b);
+                same(Real::min(x, y), a.min(b));
+                same(Real::max(x, y), a.max(b));
+                same(Real::copysign(x, y), a.copysign(b));
+                same(Real::sqrt(x), a.sqrt());
+                same(Real::abs(x), a.abs());
+                assert_eq!(Real::lt(x, y).any(), a < b);
+                assert_eq!(Real::le(x, y).all(), a <= b);
+                assert_eq!(Real::gt(x, y).any(), a > b);
+                assert_eq!(Real::ge(x, y).all(), a >= b);
+                assert_eq!(Real::eq(x, y).any(), a == b);
+                assert_eq!(Real::ne(x, y).any(), a != b);
+                same(Sc::select(Real::lt(x, y), x, y), if a < b { a } else { b });
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod f32_cbrt {
+    use super::*;
+
+    #[test]
+    fn f32_cube_root_is_within_two_ulps_on_normal_numbers() {
+        let s = pulp::Scalar::new();
+        let mut worst = 0.0f64;
+        for i in 0..200_000 {
+            let y = 10f32.powf(-37.0 + 75.0 * (i as f32) / 200_000.0);
+            let got = F32s { s, v: y }.cbrt().v;
+            let want = f64::from(y).cbrt();
+            worst = worst.max(((f64::from(got) - want) / want).abs());
+        }
+        assert!(
+            worst < 2.0 * f64::from(f32::EPSILON),
+            "worst relative error {worst:e}"
+        );
+    }
+}

@@ -1,0 +1,370 @@
+//! `torus-cull compare OLD NEW`: a critcmp-style diff of two results files.
+//!
+//! * **rejection**: the same workload and seed must give identical counts, so any changed
+//!   count is flagged `changed`; a new false reject or a lower miss capture is a
+//!   **regression**.
+//! * **timing**: `total_ns` slower by more than the threshold *and* with disjoint
+//!   confidence intervals is a regression; anything else is noise.
+//! * **ratio**: when both files have paired ratio records, they give the timing verdicts
+//!   instead (see [`crate::paired::compare`]).
+//! * **bvh**: a changed hit count or `matches_brute_force: false` is a regression. Mrays/s
+//!   is a single criterion figure with no interval, so a change beyond the threshold is
+//!   shown as `no verdict (no interval)` and decides nothing.
+//!
+//! Records on one side only are listed. The exit code is 1 if any regression is flagged,
+//! and 1 too when records of the old file are missing from the new one (a run that lost
+//! records must not pass a gate), unless `--allow-missing` makes that a warning.
+//!
+//! Only like is compared with like. Files of different workloads (or, see [`comparable`],
+//! made at different sizes) are refused, because their counts differ for reasons that are
+//! not regressions; the CLI then exits 2, as it does when the two files share no record,
+//! so that a vacuous comparison never passes a CI gate.
+
+use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+
+/// One compared record.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// `rejection`, `timing` or `bvh`.
+    pub section: &'static str,
+    /// `case nu cull` or `scene nu cull`.
+    pub key: String,
+    /// What is compared.
+    pub metric: &'static str,
+    /// Old value.
+    pub old: f64,
+    /// New value.
+    pub new: f64,
+    /// Flags: `changed`, `REGRESSION: …`, `faster`, `slower (noise)`.
+    pub flags: Vec<String>,
+    /// Whether this row is a regression.
+    pub regression: bool,
+}
+
+/// The whole comparison.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Report {
+    /// Records present in both files.
+    pub rows: Vec<Row>,
+    /// Keys only in the old file.
+    pub only_old: Vec<String>,
+    /// Keys only in the new file.
+    pub only_new: Vec<String>,
+    /// Notes on the files themselves (e.g. different workloads).
+    pub notes: Vec<String>,
+}
+
+impl Report {
+    /// Number of regressions.
+    pub fn regressions(&self) -> usize {
+        self.rows.iter().filter(|r| r.regression).count()
+    }
+
+    /// Number of records of the old file missing from the new one.
+    pub fn missing(&self) -> usize {
+        self.only_old.len()
+    }
+}
+
+fn key(kind: &str, nu: f64, cull: &str) -> String {
+    format!("{kind} {nu} {cull}")
+}
+
+/// Matches records of the two files by key; keys on one side only go to the report.
+pub(crate) fn pair_up<'a, R>(
+    old: &'a [R],
+    new: &'a [R],
+    k: impl Fn(&R) -> String,
+    report: &mut Report,
+    section: &str,
+) -> Vec<(String, &'a R, &'a R)> {
+    let old_map: BTreeMap<String, &R> = old.iter().map(|r| (k(r), r)).collect();
+    let new_map: BTreeMap<String, &R> = new.iter().map(|r| (k(r), r)).collect();
+    for key in old_map.keys().filter(|k| !new_map.contains_key(*k)) {
+        report.only_old.push(format!("{section} {key}"));
+    }
+    for key in new_map.keys().filter(|k| !old_map.contains_key(*k)) {
+        report.only_new.push(format!("{section} {key}"));
+    }
+    // Keep the new file's order, which is table order.
+    new.iter()
+        .filter_map(|r| {
+            let key = k(r);
+            old_map.get(&key).map(|o| (key, *o, r))
+        })
+        .collect()
+}
+
+/// Compare `old` with `new`; `threshold` is a fraction (0.10 for 10 %).
+pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
+    let mut report = Report::default();
+    if old.meta.workload_sha256 != new.meta.workload_sha256 {
+        report.notes.push(format!(
+            "the workloads differ ({} {} vs {} {}): rejection counts are not comparable",
+            old.meta.workload,
+            &old.meta.workload_sha256[..old.meta.workload_sha256.len().min(12)],
+            new.meta.workload,
+            &new.meta.workload_sha256[..new.meta.workload_sha256.len().min(12)]
+        ));
+    }
+    for (key, o, n) in pair_up(
+        &old.rejection,
+        &new.rejection,
+        |r: &RejectionRecord| key(&r.case, r.nu, &r.cull),
+        &mut report,
+        "rejection",
+    ) {
+        report.rows.push(rejection_row(key, o, n));
+    }
+    for (key, o, n) in pair_up(
+        &old.timing,
+        &new.timing,
+        |r: &TimingRecord| key(&r.case, r.nu, &r.label()),
+        &mut report,
+        "timing",
+    ) {
+        report.rows.push(timing_row(key, o, n, threshold));
+    }
+    for (key, o, n) in pair_up(
+        &old.bvh,
+        &new.bvh,
+        |r: &BvhRecord| key(&format!("{} {}", r.scene, r.ray_set), r.nu, &r.cull),
+        &mut report,
+        "bvh",
+    ) {
+        report.rows.push(bvh_row(key, o, n, threshold));
+    }
+    crate::paired::compare::ratio_rows(old, new, threshold, &mut report);
+    report
+}
+
+fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
+    let mut flags = Vec::new();
+    let mut regression = false;
+    let counts = [
+        ("rays", o.rays, n.rays),
+        ("hits", o.hits, n.hits),
+        ("misses", o.misses, n.misses),
+        ("ambiguous", o.ambiguous, n.ambiguous),
+        ("rejected", o.rejected, n.rejected),
+        ("false_rejects", o.false_rejects, n.false_rejects),
+    ];
+    let changed: Vec<String> = counts
+        .iter()
+        .filter(|(_, a, b)| a != b)
+        .map(|(name, a, b)| format!("{name} {a}->{b}"))
+        .collect();
+    if !changed.is_empty() {
+        flags.push(format!("changed: {}", changed.join(", ")));
+    }
+    if n.false_rejects > o.false_rejects {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: false rejects {} -> {}",
+            o.false_rejects, n.false_rejects
+        ));
+    }
+    let (old_c, new_c) = (
+        o.miss_capture.unwrap_or(f64::NAN),
+        n.miss_capture.unwrap_or(f64::NAN),
+    );
+    if new_c < old_c {
+        regression = true;
+        flags.push("REGRESSION: lower miss capture".into());
+    }
+    Row {
+        section: "rejection",
+        key,
+        metric: "miss_capture",
+        old: old_c,
+        new: new_c,
+        flags,
+        regression,
+    }
+}
+
+fn timing_row(key: String, o: &TimingRecord, n: &TimingRecord, threshold: f64) -> Row {
+    let mut flags = Vec::new();
+    let change = n.total_ns / o.total_ns - 1.0;
+    let disjoint = n.total_ns_ci[0] > o.total_ns_ci[1] || n.total_ns_ci[1] < o.total_ns_ci[0];
+    let mut regression = false;
+    if change > threshold && disjoint {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: {:+.1}% slower, intervals disjoint",
+            change * 100.0
+        ));
+    } else if change > threshold {
+        flags.push("slower, intervals overlap (noise)".into());
+    } else if change < -threshold && disjoint {
+        flags.push("faster".into());
+    }
+    Row {
+        section: "timing",
+        key,
+        metric: "total_ns",
+        old: o.total_ns,
+        new: n.total_ns,
+        flags,
+        regression,
+    }
+}
+
+fn bvh_row(key: String, o: &BvhRecord, n: &BvhRecord, threshold: f64) -> Row {
+    let mut flags = Vec::new();
+    let mut regression = false;
+    if o.hits != n.hits || o.rays != n.rays {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: hits {}/{} -> {}/{}",
+            o.hits, o.rays, n.hits, n.rays
+        ));
+    }
+    if !n.matches_brute_force {
+        regression = true;
+        flags.push("REGRESSION: does not match brute force".into());
+    }
+    // One criterion median, no interval: run-to-run noise alone moves it 10-20 %.
+    let change = n.mrays_per_s / o.mrays_per_s - 1.0;
+    if change < -threshold {
+        flags.push(format!(
+            "slower {:+.1}% Mrays/s: no verdict (no interval)",
+            change * 100.0
+        ));
+    } else if change > threshold {
+        flags.push(format!(
+            "faster {:+.1}% Mrays/s: no verdict (no interval)",
+            change * 100.0
+        ));
+    }
+    if (o.quartic_solves_per_ray - n.quartic_solves_per_ray).abs() > 0.0 {
+        flags.push(format!(
+            "quartic solves/ray {:.4} -> {:.4}",
+            o.quartic_solves_per_ray, n.quartic_solves_per_ray
+        ));
+    }
+    Row {
+        section: "bvh",
+        key,
+        metric: "mrays_per_s",
+        old: o.mrays_per_s,
+        new: n.mrays_per_s,
+        flags,
+        regression,
+    }
+}
+
+/// The report as a table, critcmp-style: one line per record.
+pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: bool) -> String {
+    let mut out = String::new();
+    for note in &report.notes {
+        let _ = writeln!(out, "note: {note}");
+    }
+    let mut section = "";
+    for row in &report.rows {
+        if only_changes && row.flags.is_empty() {
+            continue;
+        }
+        if row.section != section {
+            section = row.section;
+            let _ = writeln!(
+                out,
+                "\n{:<9} {:<34} {:>12} {:>12} {:>9}  flags",
+                section, row.metric, old_name, new_name, "change"
+            );
+        }
+        let change = if row.old.is_finite() && row.new.is_finite() && row.old != 0.0 {
+            format!("{:+.2}%", (row.new / row.old - 1.0) * 100.0)
+        } else {
+            "-".into()
+        };
+        let _ = writeln!(
+            out,
+            "{:<9} {:<34} {:>12} {:>12} {:>9}  {}",
+            "",
+            row.key,
+            fmt_value(row.old),
+            fmt_value(row.new),
+            change,
+            row.flags.join("; ")
+        );
+    }
+    for k in &report.only_old {
+        let _ = writeln!(out, "only in {old_name} (missing from {new_name}): {k}");
+    }
+    for k in &report.only_new {
+        let _ = writeln!(out, "only in {new_name}: {k}");
+    }
+    let _ = writeln!(
+        out,
+        "\n{} records compared, {} regressions, {} only in old, {} only in new",
+        report.rows.len(),
+        report.regressions(),
+        report.only_old.len(),
+        report.only_new.len()
+    );
+    out
+}
+
+fn fmt_value(v: f64) -> String {
+    if v.is_nan() {
+        "n/a".into()
+    } else if v.abs() >= 100.0 {
+        format!("{v:.1}")
+    } else {
+        format!("{v:.4}")
+    }
+}
+
+/// Whether `old` and `new` measure the same thing, so that a changed figure means a changed
+/// build: the same workload file (by SHA-256) and, where both files record them and both
+/// hold the records concerned, the same sizes (`smoke`'s capped rejection sweep, timed
+/// batch and shrunk BVH scenes differ from the default's for reasons that are not
+/// regressions). The error says which field differs.
+pub fn comparable(old: &Results, new: &Results) -> Result<(), String> {
+    let short = |s: &str| s[..s.len().min(12)].to_string();
+    if old.meta.workload_sha256 != new.meta.workload_sha256 {
+        return Err(format!(
+            "the workloads differ (field `meta.workload_sha256`: {} {} vs {} {}): their \
+             rejection counts and timings are of different rays, so nothing is compared",
+            old.meta.workload,
+            short(&old.meta.workload_sha256),
+            new.meta.workload,
+            short(&new.meta.workload_sha256)
+        ));
+    }
+    let (Some(a), Some(b)) = (&old.meta.sizes, &new.meta.sizes) else {
+        return Ok(());
+    };
+    let both = |o: bool, n: bool| o && n;
+    let checks = [
+        (
+            "rejection_rays",
+            both(!old.rejection.is_empty(), !new.rejection.is_empty())
+                && a.rejection_rays != b.rejection_rays,
+            format!("{:?} vs {:?}", a.rejection_rays, b.rejection_rays),
+        ),
+        (
+            "timing_rays",
+            both(!old.timing.is_empty(), !new.timing.is_empty()) && a.timing_rays != b.timing_rays,
+            format!("{:?} vs {:?}", a.timing_rays, b.timing_rays),
+        ),
+        (
+            "bvh",
+            both(!old.bvh.is_empty(), !new.bvh.is_empty()) && a.bvh != b.bvh,
+            format!("{:?} vs {:?}", a.bvh, b.bvh),
+        ),
+    ];
+    for (field, differs, values) in checks {
+        if differs {
+            return Err(format!(
+                "the sizes differ (field `meta.sizes.{field}`: {values}; presets {:?} vs \
+                 {:?}): make both files with the same preset",
+                old.meta.preset, new.meta.preset
+            ));
+        }
+    }
+    Ok(())
+}

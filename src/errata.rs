@@ -1,0 +1,142 @@
+//! Test fixtures: the seed paper's culls as printed. **Not conservative**: they exist so the
+//! errata tests (and `torus-cull run --culls cychosz_printed`) can show that the oracle
+//! catches a broken cull. They are not part of the renderer API; never render with them.
+//!
+//! Each misprint and its correction are written up in the repository's `docs/math.md`
+//! (errata) and in the docs of [`torus_cull::cull::CychoszCull`] and [`torus_cull::cull::SkalaCull`].
+
+use glam::Vec3;
+use pulp::{Scalar, Simd};
+use torus_cull::cull::{Cull, CullBounds, CullVisitor};
+use torus_cull::internals::{F32s, SectionFormulas, Vec3s, foot_point, skala_keeps};
+
+/// The paper-as-printed culls by stable name, as [`torus_cull::cull::CullKind`] names the real ones.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum PrintedCull {
+    /// Cychosz with the paper's Eq. 35 misprint ([`CychoszPrintedCull`]).
+    CychoszPrinted,
+    /// Skala with the printed Eq. 105, h_c² = r² − (a − r)² ([`SkalaPrintedCCull`]).
+    SkalaPrintedC,
+    /// Skala with the printed Eq. 102–103 x_B ([`SkalaEq102Cull`]).
+    SkalaEq102,
+}
+
+impl PrintedCull {
+    /// Every printed variant.
+    pub const ALL: [PrintedCull; 3] = [
+        PrintedCull::CychoszPrinted,
+        PrintedCull::SkalaPrintedC,
+        PrintedCull::SkalaEq102,
+    ];
+
+    /// The stable name used in results and the CLI.
+    pub fn name(self) -> &'static str {
+        match self {
+            PrintedCull::CychoszPrinted => "cychosz_printed",
+            PrintedCull::SkalaPrintedC => "skala_printed_c",
+            PrintedCull::SkalaEq102 => "skala_eq102",
+        }
+    }
+
+    /// Hands the concrete cull to `visitor`, as [`torus_cull::cull::CullKind::visit`] does.
+    pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
+        match self {
+            PrintedCull::CychoszPrinted => visitor.visit(CychoszPrintedCull),
+            PrintedCull::SkalaPrintedC => visitor.visit(SkalaPrintedCCull),
+            PrintedCull::SkalaEq102 => visitor.visit(SkalaEq102Cull),
+        }
+    }
+}
+
+/// Cychosz with Eq. 35 as printed: reject if (y_min > r ∧ y_max > r) ∨ (y_min < r ∧ y_max < r).
+/// The second clause should read "< −r"; as printed it rejects lines crossing the tube.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct CychoszPrintedCull;
+
+impl Cull for CychoszPrintedCull {
+    fn name(&self) -> &'static str {
+        "cychosz_printed"
+    }
+
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        let s = Scalar::new();
+        let (p, inv_len_sq) = foot_point(Vec3s::splat(s, origin), Vec3s::splat(s, dir));
+        let (foot, inv_len_sq) = (Vec3::new(p.x.v, p.y.v, p.z.v), inv_len_sq.v);
+        let unit = dir * inv_len_sq.sqrt();
+        let half_chord_sq = b.outer_safe_sq() - foot.length_squared();
+        if half_chord_sq < 0.0 {
+            return false;
+        }
+        let w = half_chord_sq.sqrt();
+        let (y_min, y_max) = (foot.y - unit.y * w, foot.y + unit.y * w);
+        let r = b.minor_radius();
+        !((y_min > r && y_max > r) || (y_min < r && y_max < r))
+    }
+}
+
+/// Skala with Eq. 105 as printed: h_c² = r² − (a − r)² instead of r² − (a − R)².
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SkalaPrintedCCull;
+
+struct PrintedBand;
+
+impl SectionFormulas for PrintedBand {
+    fn minor(b: &CullBounds) -> f32 {
+        b.minor_radius()
+    }
+    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
+        let inner = F32s::splat(a_h.s, b.major_radius() - b.minor_radius());
+        inner * inner * h_sq - a_h * a_h
+    }
+    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
+        let minor = F32s::splat(a_h.s, b.minor_radius());
+        let off = a_h - minor * h;
+        minor * minor * h * h - off * off
+    }
+}
+
+impl Cull for SkalaPrintedCCull {
+    fn name(&self) -> &'static str {
+        "skala_printed_c"
+    }
+
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        skala_keeps::<PrintedBand>(b, origin, dir)
+    }
+}
+
+/// Skala with Eq. 102–103 as printed: x_B = (R − r) cos φ with sin φ = a/R, i.e.
+/// x_B² = (R − r)²(1 − a²/R²), wider than the true √((R − r)² − a²).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SkalaEq102Cull;
+
+struct PrintedHole;
+
+impl SectionFormulas for PrintedHole {
+    fn minor(b: &CullBounds) -> f32 {
+        b.minor_radius()
+    }
+    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
+        let inner = F32s::splat(a_h.s, b.major_radius() - b.minor_radius());
+        let sin_phi_h = a_h / F32s::splat(a_h.s, b.major_radius());
+        inner * inner * (h_sq - sin_phi_h * sin_phi_h)
+    }
+    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
+        let (major, minor) = (
+            F32s::splat(a_h.s, b.major_radius()),
+            F32s::splat(a_h.s, b.minor_radius()),
+        );
+        let off = a_h - major * h;
+        minor * minor * h * h - off * off
+    }
+}
+
+impl Cull for SkalaEq102Cull {
+    fn name(&self) -> &'static str {
+        "skala_eq102"
+    }
+
+    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+        skala_keeps::<PrintedHole>(b, origin, dir)
+    }
+}

@@ -1,0 +1,394 @@
+//! `torus-cull compare` on ratio records: the timing verdicts when both files have them.
+//!
+//! A `total_ns` ratio record is a **regression** when the cull's ratio against the same
+//! reference grew by more than the threshold *and* the two bootstrap intervals do not
+//! overlap; it is `faster` in the mirror case. `cull_ns` ratios are shown with the same
+//! flags but decide nothing: on a loaded virtual machine a slow spell of the host that
+//! lasts a whole run moves them by 10–20 % (it slows throughput-bound code more than
+//! latency-bound code), while the `total_ns` ratios move by a few percent. A cull that got
+//! slower still shows in `total_ns`, wherever it rejects most rays.
+//!
+//! **A ratio decides only about its cull.** Ratios against `none` (and `none`'s own
+//! ratio) measure the reference, the exact intersection, as much as the cull: when the
+//! intersection gets faster every cull's ratio against `none` grows, with no cull changed.
+//! They are shown, flagged `(against none: not a verdict)`, and decide nothing. A ratio
+//! against `cychosz` that grew while `cychosz` itself got faster by more than the
+//! threshold (its `reference_ns_per_ray`) and the cull's own time (`ns_per_ray`) did not
+//! grow by more than the threshold is a faster reference, not a slower cull: it is shown,
+//! flagged, and decides nothing.
+//!
+//! A ratio is blind to a slow-down that hits the cull and
+//! its reference alike (the exact intersection got slower for everyone): the criterion
+//! `timing` rows still show that, as information, but with ratios on both sides they no
+//! longer decide, because two absolute timings taken minutes apart differ by 10–20 % on a
+//! shared machine whatever the code does.
+
+use crate::compare::{Report, Row, pair_up};
+use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord, Results};
+
+/// Adds one `ratio` row per record present in both files to `report`, and, when both
+/// files have ratios, demotes the criterion `timing` rows' regressions to notes.
+/// `threshold` is a fraction (0.10 for 10 %).
+pub fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &mut Report) {
+    if old.ratio.is_empty() || new.ratio.is_empty() {
+        return;
+    }
+    for row in report.rows.iter_mut().filter(|r| r.section == "timing") {
+        if row.regression {
+            row.regression = false;
+            for flag in &mut row.flags {
+                if let Some(rest) = flag.strip_prefix("REGRESSION: ") {
+                    *flag = format!("{rest} (criterion, not a verdict: the ratios decide)");
+                }
+            }
+        }
+    }
+    for (key, o, n) in pair_up(&old.ratio, &new.ratio, ratio_key, report, "ratio") {
+        report.rows.push(ratio_row(key, o, n, threshold));
+    }
+}
+
+/// `case ν cull/reference metric`, then ` [f32]` (and the device, when not the CPU) for
+/// records of another precision or device: f32 and f64 records never pair, while the
+/// keys of f64 CPU records stay what they were before those fields existed.
+fn ratio_key(r: &RatioRecord) -> String {
+    let mut key = format!(
+        "{} {} {}/{} {}",
+        r.case, r.nu, r.cull, r.reference, r.metric
+    );
+    let mut tags: Vec<&str> = Vec::new();
+    if r.precision != F64_PRECISION {
+        tags.push(&r.precision);
+    }
+    if r.device != CPU_DEVICE {
+        tags.push(&r.device);
+    }
+    if !tags.is_empty() {
+        key += &format!(" [{}]", tags.join(" "));
+    }
+    key
+}
+
+fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> Row {
+    let change = n.ratio / o.ratio - 1.0;
+    let worse_disjoint = n.ratio_ci[0] > o.ratio_ci[1];
+    let better_disjoint = n.ratio_ci[1] < o.ratio_ci[0];
+    // Ratios of different batches differ by sampling alone.
+    let same_batch = o.rays == n.rays;
+    // Against `none` the ratio measures the exact intersection as much as the cull.
+    let about_none = n.reference == "none" || n.cull == "none";
+    // The ratio grew because the reference got faster, not because the cull got slower.
+    let faster_reference = n.reference_ns_per_ray < o.reference_ns_per_ray * (1.0 - threshold)
+        && n.ns_per_ray <= o.ns_per_ray * (1.0 + threshold);
+    let decides = n.metric == "total_ns" && same_batch && !about_none && !faster_reference;
+    let mut flags = Vec::new();
+    let mut regression = false;
+    if change > threshold && worse_disjoint && about_none {
+        flags.push(
+            "slower, intervals disjoint (against none: measures the exact intersection too, \
+             not a verdict)"
+                .to_string(),
+        );
+    } else if change > threshold && worse_disjoint && faster_reference && same_batch {
+        flags.push(format!(
+            "slower against {0}, but {0} itself got faster ({1:.2} -> {2:.2} ns/ray) and \
+             this cull did not slow ({3:.2} -> {4:.2} ns/ray): not a verdict",
+            n.reference, o.reference_ns_per_ray, n.reference_ns_per_ray, o.ns_per_ray, n.ns_per_ray
+        ));
+    } else if change > threshold && worse_disjoint && decides {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: {:+.1}% against {}, intervals disjoint",
+            change * 100.0,
+            n.reference
+        ));
+    } else if change > threshold && worse_disjoint && !same_batch {
+        flags.push(format!(
+            "slower, intervals disjoint (batches of {} and {} rays: not a verdict)",
+            o.rays, n.rays
+        ));
+    } else if change > threshold && worse_disjoint {
+        flags.push(format!(
+            "slower, intervals disjoint ({}: shown, not a verdict)",
+            n.metric
+        ));
+    } else if change > threshold {
+        flags.push("slower, intervals overlap (noise)".into());
+    } else if change < -threshold && better_disjoint {
+        flags.push("faster".into());
+    }
+    Row {
+        section: "ratio",
+        key,
+        metric: "ratio (cull / reference)",
+        old: o.ratio,
+        new: n.ratio,
+        flags,
+        regression,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::compare;
+    use crate::results::{Meta, Results, SCHEMA_VERSION, TimingRecord};
+
+    fn record(cull: &str, ratio: f64, ci: [f64; 2]) -> RatioRecord {
+        RatioRecord {
+            case: "uniform".into(),
+            nu: 2.0,
+            cull: cull.into(),
+            reference: "cychosz".into(),
+            metric: if cull == "aabb_alone" {
+                "cull_ns"
+            } else {
+                "total_ns"
+            }
+            .into(),
+            ratio,
+            ratio_ci: ci,
+            rounds: 250,
+            rounds_measured: 1000,
+            rays: 1024,
+            ns_per_ray: 100.0 * ratio,
+            reference_ns_per_ray: 100.0,
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
+        }
+    }
+
+    fn timing(total_ns: f64) -> TimingRecord {
+        TimingRecord {
+            case: "uniform".into(),
+            nu: 2.0,
+            cull: "skala".into(),
+            cull_ns: 5.0,
+            total_ns,
+            total_ns_ci: [total_ns * 0.99, total_ns * 1.01],
+            speedup_vs_none: 1.0,
+            ideal_total_ns: 50.0,
+            solve_hit_ns: None,
+            ideal_total_ns_at_hit_cost: None,
+            source: "criterion".into(),
+            mode: "scalar".into(),
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
+        }
+    }
+
+    fn results(ratio: Vec<RatioRecord>, timing: Vec<TimingRecord>) -> Results {
+        Results {
+            schema_version: SCHEMA_VERSION,
+            meta: Meta {
+                commit: None,
+                dirty: false,
+                created: "2026-11-21T12:00:00Z".into(),
+                rustc: "rustc".into(),
+                cpu: "cpu".into(),
+                workload: "quick".into(),
+                workload_sha256: "00".repeat(32),
+                seed: Some(7),
+                torus_cull_version: None,
+                tool: Some("time".into()),
+                partial: false,
+                preset: None,
+                sizes: None,
+                isa: None,
+                cores: None,
+                threads: None,
+                os: None,
+                device: None,
+            },
+            rejection: Vec::new(),
+            timing,
+            bvh: Vec::new(),
+            solver: Vec::new(),
+            estimates: Vec::new(),
+            ratio,
+        }
+    }
+
+    fn flags_of<'a>(report: &'a Report, cull: &str) -> &'a Row {
+        report
+            .rows
+            .iter()
+            .find(|r| r.section == "ratio" && r.key.contains(&format!(" {cull}/")))
+            .unwrap()
+    }
+
+    #[test]
+    fn ratio_verdicts_need_the_threshold_and_disjoint_intervals() {
+        let old = results(
+            vec![
+                record("skala", 0.80, [0.79, 0.81]),
+                record("aabb", 0.80, [0.79, 0.81]),
+                record("sphere", 0.80, [0.70, 0.90]),
+                record("thick_cylinder", 0.80, [0.79, 0.81]),
+                record("none", 1.20, [1.19, 1.21]),
+                record("aabb_alone", 0.50, [0.49, 0.51]),
+            ],
+            Vec::new(),
+        );
+        let new = results(
+            vec![
+                // 25 % worse, intervals apart: a regression.
+                record("skala", 1.00, [0.99, 1.01]),
+                // 5 % worse, under the 10 % threshold: nothing.
+                record("aabb", 0.84, [0.835, 0.845]),
+                // 25 % worse, but the intervals overlap: noise.
+                record("sphere", 1.00, [0.85, 1.15]),
+                // 25 % better, apart: faster.
+                record("thick_cylinder", 0.60, [0.59, 0.61]),
+                // A cull-alone ratio 30 % worse, apart: shown, not a regression.
+                record("aabb_alone", 0.65, [0.64, 0.66]),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        assert_eq!(report.regressions(), 1);
+        let skala = flags_of(&report, "skala");
+        assert!(
+            skala.regression && skala.flags[0].starts_with("REGRESSION"),
+            "{skala:?}"
+        );
+        assert!(flags_of(&report, "aabb").flags.is_empty());
+        let sphere = flags_of(&report, "sphere");
+        assert!(
+            !sphere.regression && sphere.flags[0].contains("noise"),
+            "{sphere:?}"
+        );
+        assert_eq!(flags_of(&report, "thick_cylinder").flags, ["faster"]);
+        let alone = flags_of(&report, "aabb_alone");
+        assert!(
+            !alone.regression && alone.flags[0].contains("not a verdict"),
+            "{alone:?}"
+        );
+        assert!(report.only_old.iter().any(|k| k.contains("none/cychosz")));
+    }
+
+    /// Issue 17: the exact intersection got faster, so every ratio against `none` grew
+    /// and `cychosz` (the other reference) got faster: no cull got slower, and nothing is
+    /// a regression; a cull that did get slower against `cychosz` still is.
+    #[test]
+    fn a_faster_reference_is_not_a_slower_cull() {
+        let against = |cull: &str, reference: &str, ratio: f64, ns: f64, ref_ns: f64| RatioRecord {
+            reference: reference.into(),
+            metric: "total_ns".into(),
+            ns_per_ray: ns,
+            reference_ns_per_ray: ref_ns,
+            ..record(cull, ratio, [ratio * 0.99, ratio * 1.01])
+        };
+        let old = results(
+            vec![
+                against("skala", "none", 0.5, 50.0, 100.0),
+                against("cychosz", "none", 0.8, 80.0, 100.0),
+                against("none", "cychosz", 1.25, 100.0, 80.0),
+                against("skala", "cychosz", 0.625, 50.0, 80.0),
+                against("aabb", "cychosz", 0.9, 72.0, 80.0),
+            ],
+            Vec::new(),
+        );
+        let new = results(
+            vec![
+                // The intersection 40 % faster: skala's ratio against none 0.5 -> 0.8.
+                against("skala", "none", 0.8, 48.0, 60.0),
+                against("cychosz", "none", 1.0, 60.0, 60.0),
+                against("none", "cychosz", 1.0, 60.0, 60.0),
+                // cychosz 25 % faster, skala the same: its ratio grew 28 %.
+                against("skala", "cychosz", 0.8, 48.0, 60.0),
+                // aabb itself 50 % slower against an unchanged reference: a regression.
+                against("aabb", "cychosz", 1.35, 108.0, 80.0),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        let flagged: Vec<_> = report.rows.iter().filter(|r| r.regression).collect();
+        assert_eq!(flagged.len(), 1, "{:#?}", report.rows);
+        assert!(flagged[0].key.contains("aabb/cychosz"), "{flagged:?}");
+        let row = |k: &str| report.rows.iter().find(|r| r.key.contains(k)).unwrap();
+        assert!(
+            row("skala/none").flags[0].contains("against none"),
+            "{:?}",
+            row("skala/none")
+        );
+        assert!(
+            row("skala/cychosz").flags[0].contains("cychosz itself got faster"),
+            "{:?}",
+            row("skala/cychosz")
+        );
+    }
+
+    /// An f32 record never pairs with the f64 record of the same cull, reference and
+    /// metric: one file's f32 ratios against another's f64 ones would be a 2× "change"
+    /// that is no change of code.
+    #[test]
+    fn f32_and_f64_ratios_never_pair() {
+        let f32 = |r: RatioRecord| RatioRecord {
+            metric: "batch_total_ns".into(),
+            precision: "f32".into(),
+            escalation_rate: Some(0.001),
+            ..r
+        };
+        let f64 = |r: RatioRecord| RatioRecord {
+            metric: "batch_total_ns".into(),
+            ..r
+        };
+        let old = results(vec![f64(record("skala", 0.80, [0.79, 0.81]))], Vec::new());
+        let new = results(
+            vec![
+                f32(record("skala", 0.40, [0.39, 0.41])),
+                f64(record("aabb", 0.80, [0.79, 0.81])),
+            ],
+            Vec::new(),
+        );
+        let report = compare(&old, &new, 0.10);
+        assert!(
+            !report.rows.iter().any(|r| r.section == "ratio"),
+            "{:#?}",
+            report.rows
+        );
+        assert_eq!(
+            report.only_old,
+            ["ratio uniform 2 skala/cychosz batch_total_ns"]
+        );
+        assert!(
+            report
+                .only_new
+                .iter()
+                .any(|k| k.ends_with("skala/cychosz batch_total_ns [f32]")),
+            "{:?}",
+            report.only_new
+        );
+        // f32 against f32 pairs, under its own key.
+        let report = compare(&new, &new, 0.10);
+        assert!(
+            report
+                .rows
+                .iter()
+                .any(|r| r.key == "uniform 2 skala/cychosz batch_total_ns [f32]"),
+            "{:#?}",
+            report.rows
+        );
+    }
+
+    #[test]
+    fn criterion_timings_decide_only_when_a_file_has_no_ratios() {
+        let ratios = vec![record("skala", 0.80, [0.79, 0.81])];
+        let (slow, fast) = (vec![timing(150.0)], vec![timing(100.0)]);
+        // Without ratios the 50 % criterion slow-down is a regression ...
+        let report = compare(
+            &results(Vec::new(), fast.clone()),
+            &results(Vec::new(), slow.clone()),
+            0.10,
+        );
+        assert_eq!(report.regressions(), 1);
+        // ... with ratios on both sides (and no change in them) it is shown, not a verdict.
+        let report = compare(&results(ratios.clone(), fast), &results(ratios, slow), 0.10);
+        assert_eq!(report.regressions(), 0);
+        let row = report.rows.iter().find(|r| r.section == "timing").unwrap();
+        assert!(row.flags[0].contains("not a verdict"), "{row:?}");
+    }
+}

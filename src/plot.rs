@@ -1,0 +1,617 @@
+//! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
+//! against ν.
+
+use crate::results::{
+    BvhRecord, CPU_DEVICE, F64_PRECISION, F64_REFERENCE, RatioRecord, RejectionRecord, Results,
+    TimingRecord,
+};
+use plotters::prelude::*;
+use std::collections::BTreeMap;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// One named line of (x, y) points.
+pub type Series = (String, Vec<(f64, f64)>);
+
+/// One colour per timed cull, so no two series of a chart share one.
+const COLOURS: [RGBColor; 12] = [
+    RGBColor(120, 120, 120),
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(214, 39, 40),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(23, 190, 207),
+    RGBColor(188, 189, 34),
+    RGBColor(0, 0, 0),
+    RGBColor(255, 187, 120),
+];
+const _: () = assert!(COLOURS.len() >= torus_cull::CullKind::TIMED.len());
+
+/// Draw `series` against ν on a log axis into an SVG at `path`.
+///
+/// The chart is drawn in memory and then written through [`crate::output`], so a failed
+/// or interrupted plot never leaves a truncated SVG; every error names `path`.
+pub fn line_chart(
+    path: &Path,
+    title: &str,
+    y_label: &str,
+    series: &[Series],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let lines: Vec<Line> = series
+        .iter()
+        .enumerate()
+        .map(|(i, (name, pts))| Line {
+            name: name.clone(),
+            colour: i,
+            pts: pts.iter().map(|&(x, y)| (x, y, None)).collect(),
+        })
+        .collect();
+    write_chart(path, title, y_label, &lines, y_from_zero)
+}
+
+/// One line of a chart: its points (x, y, optional 95 % interval of y) and its colour
+/// index (the series' place among all the file's culls, so a cull keeps its colour).
+struct Line {
+    name: String,
+    colour: usize,
+    pts: Vec<(f64, f64, Option<[f64; 2]>)>,
+}
+
+fn write_chart(
+    path: &Path,
+    title: &str,
+    y_label: &str,
+    lines: &[Line],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut svg = String::new();
+    draw_chart(&mut svg, title, y_label, lines, y_from_zero)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    crate::output::write_file(path, svg.as_bytes())
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(())
+}
+
+/// The SVG text of one chart. Lines with no points are left out (legend included); a line
+/// identical to an earlier one says so in the legend, and each line has its own marker
+/// shape, so that neither hides the other; intervals are drawn as error bars.
+fn draw_chart(
+    svg: &mut String,
+    title: &str,
+    y_label: &str,
+    lines: &[Line],
+    y_from_zero: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let lines: Vec<&Line> = lines.iter().filter(|l| !l.pts.is_empty()).collect();
+    let ([x_min, x_max], y_range) = axis_ranges(&lines, y_from_zero).ok_or("nothing to plot")?;
+    let root = SVGBackend::with_string(svg, (900, 480)).into_drawing_area();
+    root.fill(&WHITE)?;
+    // The legend gets its own strip, so it never hides a line.
+    let (plot_area, legend_area) = root.split_horizontally(740);
+    let mut chart = ChartBuilder::on(&plot_area)
+        .caption(title, ("sans-serif", 17))
+        .margin(12)
+        .x_label_area_size(44)
+        .y_label_area_size(64)
+        .build_cartesian_2d(
+            (x_min * 0.95..x_max * 1.05)
+                .log_scale()
+                .with_key_points(x_ticks(&lines)),
+            y_range,
+        )?;
+    chart
+        .configure_mesh()
+        .x_desc("ν = R/r (log scale)")
+        .y_desc(y_label)
+        .label_style(("sans-serif", 14))
+        .light_line_style(WHITE)
+        .x_label_formatter(&|x| format!("{x}"))
+        .draw()?;
+    for (i, line) in lines.iter().enumerate() {
+        let colour = COLOURS[line.colour % COLOURS.len()];
+        let xy = || line.pts.iter().map(|&(x, y, _)| (x, y));
+        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(2)))?;
+        draw_error_bars(&mut chart, line, colour)?;
+        draw_markers(&mut chart, i, xy(), colour)?;
+        draw_legend_entry(&legend_area, i, &lines, colour)?;
+    }
+    root.present()?;
+    Ok(())
+}
+
+/// The x range of `lines`' points and the y range of the chart: the points and their
+/// intervals, padded by 5 % (not below zero when `y_from_zero`, which also takes zero
+/// in); `None` without a point.
+fn axis_ranges(lines: &[&Line], y_from_zero: bool) -> Option<([f64; 2], Range<f64>)> {
+    let (mut x_min, mut x_max, mut y_min, mut y_max) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y, ci) in lines.iter().flat_map(|l| l.pts.iter()) {
+        x_min = x_min.min(x);
+        x_max = x_max.max(x);
+        let [lo, hi] = ci.unwrap_or([y, y]);
+        y_min = y_min.min(y).min(lo);
+        y_max = y_max.max(y).max(hi);
+    }
+    if x_min > x_max {
+        return None;
+    }
+    if y_from_zero {
+        y_min = y_min.min(0.0);
+    }
+    let pad = ((y_max - y_min) * 0.05).max(1e-9);
+    let y_lo = y_min - if y_from_zero { 0.0 } else { pad };
+    Some(([x_min, x_max], y_lo..y_max + pad))
+}
+
+/// Every ν of `lines`, once each, ascending: the x axis labels exactly the ν measured.
+fn x_ticks(lines: &[&Line]) -> Vec<f64> {
+    let mut ticks: Vec<f64> = lines
+        .iter()
+        .flat_map(|l| l.pts.iter().map(|&(x, _, _)| x))
+        .collect();
+    ticks.sort_by(f64::total_cmp);
+    ticks.dedup();
+    ticks
+}
+
+/// `line`'s intervals: a bar with caps a few pixels wide (in data units on a log axis: a
+/// small factor of x).
+fn draw_error_bars(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, impl CoordTranslate<From = (f64, f64)>>,
+    line: &Line,
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for &(x, _, ci) in &line.pts {
+        if let Some([lo, hi]) = ci {
+            let (xl, xr) = (x / 1.012, x * 1.012);
+            chart.draw_series(std::iter::once(PathElement::new(
+                vec![(x, lo), (x, hi)],
+                colour.stroke_width(1),
+            )))?;
+            for y in [lo, hi] {
+                chart.draw_series(std::iter::once(PathElement::new(
+                    vec![(xl, y), (xr, y)],
+                    colour.stroke_width(1),
+                )))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Line `i`'s legend entry: its stroke, its marker and its name, with the earlier line it
+/// coincides with, if any (the twin hides under it on the chart).
+fn draw_legend_entry(
+    area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    i: usize,
+    lines: &[&Line],
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let line = lines[i];
+    let y = 60 + 24 * i as i32;
+    area.draw(&PathElement::new(
+        vec![(8, y), (32, y)],
+        colour.stroke_width(3),
+    ))?;
+    legend_marker(area, i, (20, y), colour)?;
+    let same_as = lines[..i]
+        .iter()
+        .find(|earlier| earlier.pts == line.pts)
+        .map(|earlier| format!(" (= {})", earlier.name))
+        .unwrap_or_default();
+    area.draw(&Text::new(
+        format!("{}{same_as}", line.name),
+        (40, y - 8),
+        ("sans-serif", 13).into_font().color(&BLACK),
+    ))?;
+    Ok(())
+}
+
+/// The markers of line `i`: a circle, triangle, cross or square in turn, so lines that
+/// coincide stay distinguishable.
+fn draw_markers(
+    chart: &mut ChartContext<'_, SVGBackend<'_>, impl CoordTranslate<From = (f64, f64)>>,
+    i: usize,
+    pts: impl Iterator<Item = (f64, f64)> + Clone,
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    match i % 4 {
+        0 => chart.draw_series(pts.map(|p| Circle::new(p, 3, colour.filled())))?,
+        1 => chart.draw_series(pts.map(|p| TriangleMarker::new(p, 5, colour.stroke_width(1))))?,
+        2 => chart.draw_series(pts.map(|p| Cross::new(p, 5, colour.stroke_width(2))))?,
+        _ => chart.draw_series(pts.map(|p| {
+            EmptyElement::at(p) + Rectangle::new([(-3, -3), (3, 3)], colour.stroke_width(1))
+        }))?,
+    };
+    Ok(())
+}
+
+/// Line `i`'s marker in the legend, at pixel `at`.
+fn legend_marker(
+    area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    i: usize,
+    at: (i32, i32),
+    colour: RGBColor,
+) -> Result<(), Box<dyn std::error::Error>> {
+    match i % 4 {
+        0 => area.draw(&Circle::new(at, 4, colour.filled()))?,
+        1 => area.draw(&TriangleMarker::new(at, 6, WHITE.filled()))?,
+        2 => area.draw(&Cross::new(at, 5, WHITE.stroke_width(2)))?,
+        _ => {
+            area.draw(&(EmptyElement::at(at) + Rectangle::new([(-4, -4), (4, 4)], WHITE.filled())))?
+        }
+    };
+    match i % 4 {
+        1 => area.draw(&TriangleMarker::new(at, 6, colour.stroke_width(1)))?,
+        2 => area.draw(&Cross::new(at, 5, colour.stroke_width(2)))?,
+        3 => area.draw(
+            &(EmptyElement::at(at) + Rectangle::new([(-4, -4), (4, 4)], colour.stroke_width(1))),
+        )?,
+        _ => {}
+    };
+    Ok(())
+}
+
+/// Every chart a results file supports, written to `out_dir` with file names starting
+/// with `stem`; returns the paths written. Titles name the workload and the commit;
+/// timings and paired ratios carry their 95 % intervals as error bars.
+pub fn plot_results(
+    results: &Results,
+    out_dir: &Path,
+    stem: &str,
+) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
+    std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+    let mut charts = Charts {
+        out_dir,
+        stem,
+        provenance: format!(
+            "{}, {}{}",
+            results.meta.workload,
+            results.meta.commit.as_deref().unwrap_or("no commit"),
+            if results.meta.dirty { "-dirty" } else { "" }
+        ),
+        written: Vec::new(),
+    };
+    rejection_charts(&results.rejection, &mut charts)?;
+    timing_charts(&results.timing, &mut charts)?;
+    bvh_charts(&results.bvh, &mut charts)?;
+    ratio_charts(&results.ratio, &mut charts)?;
+    Ok(charts.written)
+}
+
+/// Where a results file's charts go, and the ones written so far.
+struct Charts<'a> {
+    out_dir: &'a Path,
+    stem: &'a str,
+    /// Workload and commit, appended to every title.
+    provenance: String,
+    written: Vec<PathBuf>,
+}
+
+impl Charts<'_> {
+    /// Writes chart `<stem>-<name>.svg`, unless none of `lines` has a point.
+    fn chart(
+        &mut self,
+        name: String,
+        title: String,
+        y: &str,
+        lines: Vec<Line>,
+        zero: bool,
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        if lines.iter().all(|l| l.pts.is_empty()) {
+            return Ok(());
+        }
+        let path = self.out_dir.join(format!("{}-{name}.svg", self.stem));
+        let title = format!("{title} ({})", self.provenance);
+        write_chart(&path, &title, y, &lines, zero)?;
+        self.written.push(path);
+        Ok(())
+    }
+}
+
+/// `run`'s counts: miss capture and rejection rate per case.
+fn rejection_charts(
+    records: &[RejectionRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let of = |y: fn(&RejectionRecord) -> Option<f64>| {
+            lines(records, &group, |r| y(r).map(|v| (v, None)))
+        };
+        let capture = of(|r| r.miss_capture);
+        let rate = of(|r| Some(r.rejection_rate));
+        charts.chart(
+            format!("{group}-miss_capture"),
+            format!("{group}: miss capture (rejected / misses)"),
+            "miss capture",
+            capture,
+            true,
+        )?;
+        charts.chart(
+            format!("{group}-rejection_rate"),
+            format!("{group}: rejection rate (rejected / rays)"),
+            "rejection rate",
+            rate,
+            true,
+        )?;
+    }
+    Ok(())
+}
+
+/// The benches' timings: ns per ray and speedup against no cull, per group.
+fn timing_charts(
+    records: &[TimingRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let total = lines(records, &group, |r| Some((r.total_ns, Some(r.total_ns_ci))));
+        let speedup = lines(records, &group, |r| Some((r.speedup_vs_none, None)));
+        charts.chart(
+            format!("{group}-total_ns"),
+            format!("{group}: cull + exact intersection, ns per ray [CI]"),
+            "total ns per ray",
+            total,
+            true,
+        )?;
+        charts.chart(
+            format!("{group}-speedup"),
+            format!("{group}: speedup vs none"),
+            "total_ns(none) / total_ns(cull)",
+            speedup,
+            true,
+        )?;
+    }
+    Ok(())
+}
+
+/// The BVH scenes: throughput and quartic solves per ray, per scene and ray set.
+fn bvh_charts(
+    records: &[BvhRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let of =
+            |y: fn(&BvhRecord) -> Option<f64>| lines(records, &group, |r| y(r).map(|v| (v, None)));
+        let mrays = of(|r| Some(r.mrays_per_s));
+        let solves = of(|r| Some(r.quartic_solves_per_ray));
+        charts.chart(
+            format!("bvh-{group}-mrays"),
+            format!("BVH {group}: million rays per second"),
+            "Mrays/s",
+            mrays,
+            true,
+        )?;
+        charts.chart(
+            format!("bvh-{group}-quartic_solves"),
+            format!("BVH {group}: quartic solves per ray"),
+            "quartic solves per ray",
+            solves,
+            true,
+        )?;
+    }
+    Ok(())
+}
+
+/// `torus-cull time`'s paired ratios: one chart per case × metric × reference.
+fn ratio_charts(
+    records: &[RatioRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        let ratios = lines(records, &group, |r| Some((r.ratio, Some(r.ratio_ci))));
+        let Some(first) = records.iter().find(|r| r.group() == group) else {
+            continue;
+        };
+        charts.chart(
+            format!("ratio-{group}"),
+            ratio_title(first),
+            &format!("t(cull) / t({}), below 1 faster", first.reference),
+            ratios,
+            false,
+        )?;
+    }
+    Ok(())
+}
+
+/// The title of the ratio chart of `record`'s group: what was timed, against what.
+fn ratio_title(record: &RatioRecord) -> String {
+    let what = match record.metric.as_str() {
+        "cull_ns" | "batch_cull_ns" => "cull alone",
+        "batch_f32_total_ns" => "certified f32 wavefront",
+        "batch_f32_uncertified_ns" => "uncertified f32 wavefront",
+        _ => "cull + exact intersection",
+    };
+    let reference = if record.reference == F64_REFERENCE {
+        "the same cull's f64 wavefront"
+    } else {
+        record.reference.as_str()
+    };
+    format!(
+        "{}: {what} / {reference}, paired ratio [95% CI]",
+        record.case
+    )
+}
+
+/// One line per cull of the file (first-seen order, which fixes its colour): the (ν, y,
+/// interval) of the records in `group`; a cull with no record there has no points.
+fn lines<R: Record>(
+    records: &[R],
+    group: &str,
+    y: impl Fn(&R) -> Option<(f64, Option<[f64; 2]>)>,
+) -> Vec<Line> {
+    ordered(records.iter().map(|r| r.cull().to_string()))
+        .into_iter()
+        .enumerate()
+        .map(|(colour, cull)| {
+            let pts = records
+                .iter()
+                .filter(|r| r.group() == group && r.cull() == cull)
+                .filter_map(|r| y(r).map(|(v, ci)| (r.nu(), v, ci)))
+                .collect();
+            Line {
+                name: cull,
+                colour,
+                pts,
+            }
+        })
+        .collect()
+}
+
+/// What the charts need of a record: its chart (case, or scene and ray set), its series
+/// (the cull) and its x (ν).
+trait Record {
+    fn group(&self) -> String;
+    fn cull(&self) -> &str;
+    fn nu(&self) -> f64;
+}
+
+impl Record for RejectionRecord {
+    fn group(&self) -> String {
+        self.case.clone()
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+impl Record for TimingRecord {
+    fn group(&self) -> String {
+        let mut group = self.case.clone();
+        if self.is_batch() {
+            group += "-batch";
+        }
+        if self.precision != F64_PRECISION {
+            group += &format!("-{}", self.precision);
+        }
+        if self.device != CPU_DEVICE {
+            group += &format!("-{}", self.device);
+        }
+        group
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+impl Record for BvhRecord {
+    fn group(&self) -> String {
+        format!("{}-{}", self.scene, self.ray_set)
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+impl Record for RatioRecord {
+    fn group(&self) -> String {
+        format!("{}-{}-vs-{}", self.case, self.metric, self.reference)
+    }
+    fn cull(&self) -> &str {
+        &self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+/// Distinct values in first-seen order.
+fn ordered(values: impl Iterator<Item = String>) -> Vec<String> {
+    let mut seen = BTreeMap::new();
+    for v in values {
+        let n = seen.len();
+        seen.entry(v).or_insert(n);
+    }
+    let mut v: Vec<_> = seen.into_iter().collect();
+    v.sort_by_key(|(_, i)| *i);
+    v.into_iter().map(|(k, _)| k).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn texts(svg: &str) -> Vec<String> {
+        svg.split("<text")
+            .skip(1)
+            .filter_map(|t| t.split_once('>').map(|(_, rest)| rest))
+            .filter_map(|t| t.split_once("</text>").map(|(v, _)| v.trim().to_string()))
+            .collect()
+    }
+
+    /// Issue 17: a series identical to another says so in the legend, a series with no
+    /// points is left out of it, and intervals are drawn (one error bar and two caps per
+    /// point).
+    #[test]
+    fn legends_name_twins_and_skip_empty_series_and_intervals_are_drawn() {
+        let pts = |ci: Option<[f64; 2]>| vec![(2.0, 1.0, ci), (4.0, 2.0, ci)];
+        let lines = vec![
+            Line {
+                name: "discriminant_f64".into(),
+                colour: 0,
+                pts: pts(None),
+            },
+            Line {
+                name: "no_batch_data".into(),
+                colour: 1,
+                pts: Vec::new(),
+            },
+            Line {
+                name: "discriminant".into(),
+                colour: 2,
+                pts: pts(None),
+            },
+            Line {
+                name: "skala".into(),
+                colour: 3,
+                pts: vec![(2.0, 2.5, Some([2.0, 3.0])), (4.0, 2.5, Some([2.4, 2.6]))],
+            },
+        ];
+        let mut svg = String::new();
+        draw_chart(&mut svg, "title (w, abc1234)", "y", &lines, true).unwrap();
+        let t = texts(&svg);
+        assert!(
+            t.iter().any(|x| x == "discriminant (= discriminant_f64)"),
+            "{t:?}"
+        );
+        assert!(!t.iter().any(|x| x.contains("no_batch_data")), "{t:?}");
+        assert!(t.iter().any(|x| x.contains("abc1234")), "{t:?}");
+        let without = {
+            let mut s = String::new();
+            let no_ci: Vec<Line> = lines
+                .iter()
+                .map(|l| Line {
+                    name: l.name.clone(),
+                    colour: l.colour,
+                    pts: l.pts.iter().map(|&(x, y, _)| (x, y, None)).collect(),
+                })
+                .collect();
+            draw_chart(&mut s, "title", "y", &no_ci, true).unwrap();
+            s
+        };
+        // skala's colour (index 3): its line and markers, plus a bar and two caps for each
+        // of its two intervals.
+        let skala = |s: &str| {
+            s.split('<')
+                .filter(|e| e.starts_with("line") || e.starts_with("polyline"))
+                .filter(|e| e.contains("stroke=\"#2CA02C\""))
+                .count()
+        };
+        assert_eq!(
+            skala(&svg),
+            skala(&without) + 2 * 3,
+            "two points with an interval: a bar and two caps each"
+        );
+    }
+}

@@ -1,0 +1,234 @@
+//! Plain-text tables of a results file, as `run` and `cargo bench` print them.
+
+use crate::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord, Results, TimingRecord};
+use std::fmt::Write;
+
+/// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
+fn table<R>(
+    records: &[R],
+    key: impl Fn(&R) -> (&str, f64, &str),
+    cell: impl Fn(&R) -> String,
+    title: impl Fn(&str) -> String,
+) -> String {
+    let mut cases: Vec<&str> = Vec::new();
+    let mut culls: Vec<&str> = Vec::new();
+    for r in records {
+        let (case, _, cull) = key(r);
+        if !cases.contains(&case) {
+            cases.push(case);
+        }
+        if !culls.contains(&cull) {
+            culls.push(cull);
+        }
+    }
+    let mut out = String::new();
+    for case in cases {
+        let _ = writeln!(out, "{}", title(case));
+        let mut nus: Vec<f64> = records
+            .iter()
+            .filter(|r| key(r).0 == case)
+            .map(|r| key(r).1)
+            .collect();
+        nus.sort_by(f64::total_cmp);
+        nus.dedup();
+        let cells: Vec<Vec<String>> = nus
+            .iter()
+            .map(|&nu| {
+                culls
+                    .iter()
+                    .map(|c| {
+                        records
+                            .iter()
+                            .find(|r| key(r) == (case, nu, c))
+                            .map(&cell)
+                            .unwrap_or_else(|| "-".into())
+                    })
+                    .collect()
+            })
+            .collect();
+        // Each column as wide as its name or its widest cell: ten culls stay readable.
+        let widths: Vec<usize> = culls
+            .iter()
+            .enumerate()
+            .map(|(i, c)| {
+                cells
+                    .iter()
+                    .map(|row| row[i].chars().count())
+                    .chain([c.len(), 5])
+                    .max()
+                    .unwrap_or(5)
+            })
+            .collect();
+        let _ = write!(out, "{:>7}", "nu");
+        for (c, width) in culls.iter().zip(&widths) {
+            let _ = write!(out, " {c:>width$}");
+        }
+        let _ = writeln!(out);
+        for (nu, row) in nus.iter().zip(&cells) {
+            let _ = write!(out, "{nu:>7}");
+            for (text, width) in row.iter().zip(&widths) {
+                let _ = write!(out, " {text:>width$}");
+            }
+            let _ = writeln!(out);
+        }
+        let _ = writeln!(out);
+    }
+    out
+}
+
+/// Miss capture per case (rows ν, columns culls); `n/a` where a batch has no misses.
+pub fn miss_capture_tables(results: &Results) -> String {
+    table(
+        &results.rejection,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| r.miss_capture.map_or("n/a".into(), |c| format!("{c:.3}")),
+        |case| format!("{case}: miss capture (rejected / misses)"),
+    )
+}
+
+/// The scalar-mode timing records (one ray at a time, f64).
+fn scalar_timings(results: &Results) -> Vec<TimingRecord> {
+    results
+        .timing
+        .iter()
+        .filter(|r| !r.is_batch() && !r.is_f32())
+        .cloned()
+        .collect()
+}
+
+/// Total ns per ray with the speedup over `none`, per case (scalar mode).
+pub fn timing_tables(results: &Results) -> String {
+    table(
+        &scalar_timings(results),
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| format!("{:.1} ({:.2}x)", r.total_ns, r.speedup_vs_none),
+        |case| format!("{case}: total ns per ray, cull + exact intersection (speedup vs none)"),
+    )
+}
+
+/// Cull-alone ns per ray, per case (scalar mode).
+pub fn cull_ns_tables(results: &Results) -> String {
+    table(
+        &scalar_timings(results),
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| format!("{:.2}", r.cull_ns),
+        |case| format!("{case}: cull alone, ns per ray"),
+    )
+}
+
+/// BVH figures: Mrays/s and quartic solves per ray, per scene.
+pub fn bvh_tables(results: &Results) -> String {
+    let keyed: Vec<(String, &crate::results::BvhRecord)> = results
+        .bvh
+        .iter()
+        .map(|r| (format!("{} {} rays", r.scene, r.ray_set), r))
+        .collect();
+    table(
+        &keyed,
+        |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
+        |(_, r)| format!("{:.2} / {:.3}", r.mrays_per_s, r.quartic_solves_per_ray),
+        |scene| format!("BVH {scene}: Mrays/s / quartic solves per ray"),
+    )
+}
+
+/// Paired ratios per case, metric and reference (rows ν, columns culls): the median
+/// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval. Below 1 the cull
+/// is faster than the reference. The f32 wavefront's ratios against the same cull's f64
+/// wavefront (reference `f64`) are the f32 / f64 speed ratio; after them, the f32
+/// path's escalation rates.
+pub fn ratio_tables(results: &Results) -> String {
+    let keyed: Vec<(String, &RatioRecord)> = results
+        .ratio
+        .iter()
+        .map(|r| {
+            let what = match r.metric.as_str() {
+                "total_ns" => "total (cull + exact intersection)",
+                "cull_ns" => "cull alone",
+                "batch_total_ns" => "batch total (wavefront: SIMD cull + lane intersection)",
+                "batch_cull_ns" => "batch cull alone (SIMD)",
+                "batch_f32_total_ns" => "batch f32 total (certified f32 wavefront)",
+                "batch_f32_uncertified_ns" => "batch f32 total, uncertified (no proof)",
+                other => other,
+            };
+            let device = if r.device == CPU_DEVICE {
+                String::new()
+            } else {
+                format!(" on {}", r.device)
+            };
+            let reference = if r.reference == F64_REFERENCE {
+                "the same cull's f64 wavefront"
+            } else {
+                r.reference.as_str()
+            };
+            (format!("{}: {what}{device} / {reference}", r.case), r)
+        })
+        .collect();
+    let mut out = table(
+        &keyed,
+        |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
+        |(_, r)| {
+            format!(
+                "{:.3} [{:.3}, {:.3}]",
+                r.ratio, r.ratio_ci[0], r.ratio_ci[1]
+            )
+        },
+        |title| format!("{title}, paired ratio [95% CI]"),
+    );
+    // One escalation rate per cull and (case, ν): the certified records all carry it.
+    let escalation: Vec<&RatioRecord> = results
+        .ratio
+        .iter()
+        .filter(|r| r.metric == "batch_f32_total_ns" && r.reference == F64_REFERENCE)
+        .collect();
+    out += &table(
+        &escalation,
+        |r| (r.case.as_str(), r.nu, r.cull.as_str()),
+        |r| {
+            r.escalation_rate
+                .map_or("-".into(), |e| format!("{:.3}%", 100.0 * e))
+        },
+        |case| format!("{case}: certified f32 wavefront, rays escalated to f64 / rays"),
+    );
+    out
+}
+
+/// Scalar against batch mode per case (rows ν, columns the culls timed both ways): each
+/// cell is `cull_ns scalar → batch | total_ns scalar → batch`, ns per ray. Empty when the
+/// file has no batch records.
+pub fn scalar_vs_batch_tables(results: &Results) -> String {
+    let f64_cpu = |r: &TimingRecord| !r.is_f32() && r.device == CPU_DEVICE;
+    let pairs: Vec<(&TimingRecord, &TimingRecord)> = results
+        .timing
+        .iter()
+        .filter(|b| b.is_batch() && f64_cpu(b))
+        .filter_map(|b| {
+            results
+                .timing
+                .iter()
+                .find(|s| {
+                    !s.is_batch()
+                        && f64_cpu(s)
+                        && s.case == b.case
+                        && s.nu == b.nu
+                        && s.cull == b.cull
+                })
+                .map(|s| (s, b))
+        })
+        .collect();
+    let isa = results.meta.isa.as_deref().unwrap_or("unknown");
+    table(
+        &pairs,
+        |(s, _)| (s.case.as_str(), s.nu, s.cull.as_str()),
+        |(s, b)| {
+            format!(
+                "{:.2}→{:.2} | {:.1}→{:.1}",
+                s.cull_ns, b.cull_ns, s.total_ns, b.total_ns
+            )
+        },
+        |case| {
+            format!(
+                "{case}: scalar → batch ({isa}), ns per ray: cull alone | cull + exact intersection"
+            )
+        },
+    )
+}

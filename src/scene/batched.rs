@@ -1,0 +1,93 @@
+//! A BVH in batch mode: collect every ray's leaf candidates, then cull and intersect
+//! them torus by torus with the wavefront.
+//!
+//! obvhs 0.4 traverses one ray at a time (`ray_traverse`, `ray_traverse_anyhit`, and the
+//! resumable `ray_traverse_dynamic` / `traverse!`); it has no packet traversal. What it
+//! allows is this two-pass form: `ray_traverse_anyhit` reports every leaf whose box a ray
+//! enters, the candidates are grouped by torus, and each torus's rays go through
+//! [`torus_cull::batch::Wavefront`] as one batch (one torus per batch, because the lane kernels share
+//! the torus's frame and bounds across lanes). It gives up two things the scalar
+//! closest-hit traversal has: the shrinking `t_max` that skips boxes behind the nearest
+//! hit found so far (every box on the ray is a candidate), and full registers (a torus
+//! sees only the few rays that reach its box). [`LeafBatchStats`] counts both.
+
+use crate::scene::{Scene, SceneHit};
+use glam::Vec3A;
+use torus_cull::batch::Dispatch;
+use torus_cull::batch::NoBatchForm;
+use torus_cull::batch::Wavefront;
+use torus_cull::{CullKind, Ray};
+
+/// What a batched traversal did, summed over its rays.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct LeafBatchStats {
+    /// Rays traced.
+    pub rays: u64,
+    /// Leaf candidates: (ray, torus) pairs whose box the ray enters.
+    pub leaf_candidates: u64,
+    /// Candidates the batch cull rejected.
+    pub cull_rejects: u64,
+    /// Candidates intersected exactly (on lanes, or by the scalar path for tangents).
+    pub intersections: u64,
+    /// Batches run (tori with at least one candidate).
+    pub batches: u64,
+}
+
+/// The closest hit of every ray through `scene` (`hits[i]` for `rays[i]`), with `cull`
+/// applied torus by torus to the collected leaf candidates; adds to `stats`.
+///
+/// Every (ray, torus) pair the scalar traversal would test is tested here too (and more:
+/// those behind the closest hit), so the closest hit is the same, up to the batch
+/// solver's last bits.
+pub fn trace_leaves_batched(
+    scene: &Scene,
+    dispatch: &Dispatch,
+    cull: CullKind,
+    rays: &[Ray],
+    stats: &mut LeafBatchStats,
+) -> Result<Vec<SceneHit>, NoBatchForm> {
+    let bvh = scene.bvh();
+    // Pass 1: every (torus, ray) candidate, bucketed by torus.
+    let mut candidates: Vec<Vec<u32>> = vec![Vec::new(); scene.tori.len()];
+    for (i, ray) in rays.iter().enumerate() {
+        // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into
+        // +0.0 (as in `Scene::trace_with`).
+        let traversal_ray = obvhs::ray::Ray::new(
+            Vec3A::from(ray.origin()),
+            Vec3A::from(ray.dir()) + Vec3A::ZERO,
+            ray.t_min(),
+            ray.t_max(),
+        );
+        bvh.ray_traverse_anyhit(traversal_ray, |_, id| {
+            candidates[bvh.primitive_indices[id] as usize].push(i as u32);
+        });
+    }
+    // Pass 2: per torus, the wavefront on its candidates; keep each ray's nearest hit.
+    let mut best: Vec<SceneHit> = vec![None; rays.len()];
+    let mut wavefront = Wavefront::new();
+    let mut batch_rays = Vec::new();
+    let mut hits = Vec::new();
+    stats.rays += rays.len() as u64;
+    for (torus_index, which) in candidates.iter().enumerate() {
+        if which.is_empty() {
+            continue;
+        }
+        batch_rays.clear();
+        batch_rays.extend(which.iter().map(|&i| rays[i as usize]));
+        let torus = &scene.tori[torus_index];
+        let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits)?;
+        stats.leaf_candidates += which.len() as u64;
+        stats.cull_rejects += (s.rays - s.kept) as u64;
+        stats.intersections += s.kept as u64;
+        stats.batches += 1;
+        for (&i, hit) in which.iter().zip(&hits) {
+            if let Some(h) = hit {
+                let slot = &mut best[i as usize];
+                if slot.is_none_or(|(_, t)| h.t < t) {
+                    *slot = Some((torus_index as u32, h.t));
+                }
+            }
+        }
+    }
+    Ok(best)
+}

@@ -1,0 +1,371 @@
+//! Many-torus scenes in an obvhs BVH, with a cull at the leaves.
+//!
+//! Inside a BVH a ray reaches a torus only after it entered that torus's box, so what a
+//! cull can still save is its **marginal** value: quartic solves per ray beyond the box
+//! test. [`Scene::trace`] counts leaf visits, cull rejections and quartic solves, and the
+//! closest hit must be identical to [`Scene::brute_force`] whatever the cull.
+
+pub mod batched;
+
+pub use batched::{LeafBatchStats, trace_leaves_batched};
+
+use crate::workload::CameraView;
+use glam::{DVec3, Vec3A};
+use obvhs::BvhBuildParams;
+use obvhs::aabb::Aabb;
+use obvhs::cwbvh::CwBvh;
+use obvhs::ray::RayHit;
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+use torus_cull::{Cull, Ray, Torus, intersect};
+
+/// A many-torus scene layout.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SceneKind {
+    /// Tori at random centres in a cube, with random axes.
+    RingField,
+    /// Rows of interlocked links; the camera looks down on them, so every other link is
+    /// seen face-on and rays fall through its hole.
+    Chain,
+    /// A square grid of tori whose axes all point at the camera: the hole-heavy case the
+    /// paper targets.
+    FacingGrid,
+}
+
+impl SceneKind {
+    /// Every scene, in table order.
+    pub const ALL: [SceneKind; 3] = [
+        SceneKind::RingField,
+        SceneKind::Chain,
+        SceneKind::FacingGrid,
+    ];
+
+    /// The stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            SceneKind::RingField => "ring_field",
+            SceneKind::Chain => "chain",
+            SceneKind::FacingGrid => "facing_grid",
+        }
+    }
+}
+
+impl fmt::Display for SceneKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for SceneKind {
+    type Err = String;
+    fn from_str(s: &str) -> Result<SceneKind, String> {
+        SceneKind::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| {
+                format!(
+                    "unknown scene '{s}' (allowed: {})",
+                    SceneKind::ALL.map(|k| k.name()).join(", ")
+                )
+            })
+    }
+}
+
+/// Per-ray work counters of a traversal.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct TraceStats {
+    /// Leaf (primitive) visits: boxes the ray entered.
+    pub leaf_visits: u64,
+    /// Leaves where the cull rejected the ray.
+    pub cull_rejects: u64,
+    /// Leaves where the quartic ran.
+    pub quartic_solves: u64,
+}
+
+impl std::ops::AddAssign for TraceStats {
+    fn add_assign(&mut self, o: TraceStats) {
+        self.leaf_visits += o.leaf_visits;
+        self.cull_rejects += o.cull_rejects;
+        self.quartic_solves += o.quartic_solves;
+    }
+}
+
+/// The closest hit: torus index (into [`Scene::tori`]) and t.
+pub type SceneHit = Option<(u32, f32)>;
+
+/// Whether two closest hits agree: same t, and the same torus unless two tori tie at it.
+pub fn same_hit(a: SceneHit, b: SceneHit) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some((_, ta)), Some((_, tb))) => ta == tb,
+        _ => false,
+    }
+}
+
+/// A scene: tori (each with its cull bounds), the BVH over their boxes, and the camera framing it.
+pub struct Scene {
+    /// Layout.
+    pub kind: SceneKind,
+    /// ν of every torus (R = 1, r = 1/ν).
+    pub nu: f64,
+    /// The tori.
+    pub tori: Vec<Torus>,
+    bvh: CwBvh,
+    /// A pinhole view that frames the scene.
+    pub camera: CameraView,
+    /// Centre and radius of the scene's bounding sphere.
+    pub bounding_sphere: (DVec3, f64),
+}
+
+/// Why a scene could not be built.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SceneError(pub String);
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+impl Scene {
+    /// Build `count` tori of `kind` at ν, deterministically from `seed`.
+    pub fn build(kind: SceneKind, nu: f64, count: usize, seed: u64) -> Result<Scene, SceneError> {
+        if !(nu.is_finite() && nu > 1.0 && nu <= torus_cull::MAX_NU) {
+            return Err(SceneError(format!(
+                "nu = {nu} is invalid (allowed: 1 < nu <= {})",
+                torus_cull::MAX_NU
+            )));
+        }
+        if count == 0 {
+            return Err(SceneError("a scene needs at least one torus".into()));
+        }
+        let mut rng = Pcg64::seed_from_u64(
+            crate::workload::stream_seed(seed, crate::workload::Case::Uniform, nu)
+                ^ (kind as u64 + 1).wrapping_mul(0xA24B_AED4_963E_E407),
+        );
+        let (major, minor) = (1.0f64, 1.0 / nu);
+        let (placed, eye) = match kind {
+            SceneKind::RingField => ring_field(count, major + minor, &mut rng),
+            SceneKind::Chain => chain(count, major, major + minor),
+            SceneKind::FacingGrid => facing_grid(count, major + minor),
+        };
+        let tori: Vec<Torus> = placed
+            .iter()
+            .map(|(c, a)| Torus::new(c.as_vec3(), a.as_vec3(), major as f32, minor as f32))
+            .collect::<Result<_, _>>()
+            .map_err(|e| SceneError(e.to_string()))?;
+        let aabbs: Vec<Aabb> = tori
+            .iter()
+            .map(|t| {
+                let (lo, hi) = t.world_aabb();
+                Aabb::new(Vec3A::from(lo), Vec3A::from(hi))
+            })
+            .collect();
+        let params = BvhBuildParams {
+            max_prims_per_leaf: 1,
+            ..BvhBuildParams::medium_build()
+        };
+        let bvh = obvhs::cwbvh::builder::build_cwbvh(&aabbs, params, &mut Default::default());
+        let (lo, hi) = aabbs.iter().fold((Vec3A::MAX, Vec3A::MIN), |(lo, hi), b| {
+            (lo.min(b.min), hi.max(b.max))
+        });
+        let centre = ((lo + hi) * 0.5).as_dvec3();
+        let radius = ((hi - lo) * 0.5).as_dvec3().length();
+        Ok(Scene {
+            kind,
+            nu,
+            tori,
+            bvh,
+            camera: CameraView::framing(eye, centre, (lo.as_dvec3(), hi.as_dvec3())),
+            bounding_sphere: (centre, radius),
+        })
+    }
+
+    /// The `size`×`size` pinhole rays through pixel centres, row-major from the top left.
+    pub fn camera_rays(&self, size: usize) -> Vec<Ray> {
+        let cam = &self.camera;
+        let mut rays = Vec::with_capacity(size * size);
+        for row in 0..size {
+            for col in 0..size {
+                let u = ((col as f64 + 0.5) / size as f64 * 2.0 - 1.0) * cam.tan_half_fov;
+                let v = (1.0 - (row as f64 + 0.5) / size as f64 * 2.0) * cam.tan_half_fov;
+                let d = cam.forward + cam.right * u + cam.up * v;
+                rays.push(
+                    Ray::new(cam.eye.as_vec3(), d.as_vec3()).expect("camera rays are finite"),
+                );
+            }
+        }
+        rays
+    }
+
+    /// `count` isotropic lines through the scene's bounding sphere (as in the `uniform`
+    /// case), starting outside it.
+    pub fn random_rays(&self, count: usize, seed: u64) -> Vec<Ray> {
+        let mut rng = Pcg64::seed_from_u64(seed ^ 0x5CE7_E0FF);
+        let (centre, radius) = self.bounding_sphere;
+        (0..count)
+            .map(|_| {
+                let d = crate::workload::unit_vector(&mut rng);
+                let p = centre + crate::workload::disk_point(&mut rng, d, radius);
+                Ray::new((p - d * (2.0 * radius)).as_vec3(), d.as_vec3())
+                    .expect("random rays are finite")
+            })
+            .collect()
+    }
+
+    /// The closest hit through the BVH, with `cull` at the leaves; adds to `stats`.
+    #[inline]
+    pub fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
+        self.trace_with(ray, |torus, ray, t_max| {
+            stats.leaf_visits += 1;
+            let line = torus.line_to_local(ray);
+            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
+                stats.cull_rejects += 1;
+                return f32::INFINITY;
+            }
+            stats.quartic_solves += 1;
+            intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+        })
+    }
+
+    /// Traverse the BVH, calling `leaf(torus, ray, current t_max)` at each leaf; it
+    /// returns the torus's t or +∞.
+    pub fn trace_with(
+        &self,
+        ray: &Ray,
+        mut leaf: impl FnMut(&Torus, &Ray, f32) -> f32,
+    ) -> SceneHit {
+        // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into +0.0.
+        let traversal_ray = obvhs::ray::Ray::new(
+            Vec3A::from(ray.origin()),
+            Vec3A::from(ray.dir()) + Vec3A::ZERO,
+            ray.t_min(),
+            ray.t_max(),
+        );
+        let mut hit = RayHit::none();
+        let indices = &self.bvh.primitive_indices;
+        // Traversal ignores tmin: `intersect` honours the ray's own t_min.
+        let found = self.bvh.ray_traverse(traversal_ray, &mut hit, |r, id| {
+            let prim = indices[id] as usize;
+            leaf(&self.tori[prim], ray, r.tmax)
+        });
+        found.then(|| (indices[hit.primitive_id as usize], hit.t))
+    }
+
+    /// The BVH, for the batch traversal of [`torus_cull::batch::trace_leaves_batched`].
+    pub(crate) fn bvh(&self) -> &CwBvh {
+        &self.bvh
+    }
+
+    /// The closest hit over every torus with no cull: the ground truth for the BVH.
+    pub fn brute_force(&self, ray: &Ray) -> SceneHit {
+        let mut best: SceneHit = None;
+        for (i, torus) in self.tori.iter().enumerate() {
+            if let Some(h) = intersect(torus, ray) {
+                if best.is_none_or(|(_, t)| h.t < t) {
+                    best = Some((i as u32, h.t));
+                }
+            }
+        }
+        best
+    }
+}
+
+/// Tori at random positions and axes in a cube sized for `count` of them, and an eye
+/// outside it in a random direction.
+fn ring_field(count: usize, outer: f64, rng: &mut Pcg64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = 2.0 * outer * (count as f64).cbrt() * 1.5;
+    let placed = (0..count)
+        .map(|_| {
+            let c = DVec3::new(
+                rng.random_range(-0.5..0.5),
+                rng.random_range(-0.5..0.5),
+                rng.random_range(-0.5..0.5),
+            ) * side;
+            (c, crate::workload::unit_vector(rng))
+        })
+        .collect();
+    let view = crate::workload::unit_vector(rng);
+    (placed, view * side * 1.8)
+}
+
+/// Chain links in rows: consecutive links R apart, rings in perpendicular planes that both
+/// hold the row direction, so each passes through the other's hole.
+fn chain(count: usize, major: f64, outer: f64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let row_gap = 2.0 * outer * 1.25;
+    let per_row = ((count as f64 * row_gap / major).sqrt().ceil() as usize).max(1);
+    let rows = count.div_ceil(per_row);
+    let placed = (0..count)
+        .map(|i| {
+            let (row, k) = (i / per_row, i % per_row);
+            let c = DVec3::new(
+                (k as f64 - per_row as f64 / 2.0) * major,
+                0.0,
+                (row as f64 - rows as f64 / 2.0) * row_gap,
+            );
+            (c, if k % 2 == 0 { DVec3::Y } else { DVec3::Z })
+        })
+        .collect();
+    let extent = (per_row as f64 * major).max(rows as f64 * row_gap);
+    // From above and slightly off-vertical, so face-on links dominate.
+    (
+        placed,
+        DVec3::new(0.05, 1.0, 0.08).normalize() * extent * 1.2,
+    )
+}
+
+/// A square grid of tori in the plane z = 0, each facing the eye on the z axis.
+fn facing_grid(count: usize, outer: f64) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = (count as f64).sqrt().ceil() as usize;
+    let spacing = 2.0 * outer * 1.05;
+    let eye = DVec3::new(0.0, 0.0, side as f64 * spacing * 1.3);
+    let placed = (0..count)
+        .map(|i| {
+            let (row, col) = (i / side, i % side);
+            let c = DVec3::new(
+                (col as f64 - (side as f64 - 1.0) / 2.0) * spacing,
+                (row as f64 - (side as f64 - 1.0) / 2.0) * spacing,
+                0.0,
+            );
+            (c, (eye - c).normalize())
+        })
+        .collect();
+    (placed, eye)
+}
+
+impl CameraView {
+    /// A pinhole at `eye` looking at `centre`, its field of view just wide enough for the
+    /// box `lo..hi`'s projected corners (not its bounding sphere: a flat grid would
+    /// otherwise fill half the picture).
+    fn framing(eye: DVec3, centre: DVec3, (lo, hi): (DVec3, DVec3)) -> CameraView {
+        let forward = (centre - eye).normalize();
+        let (right, _) = forward.any_orthonormal_pair();
+        let up = right.cross(forward);
+        let tan_half_fov = (0..8)
+            .map(|i| {
+                let corner = DVec3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let v = corner - eye;
+                let z = v.dot(forward).max(1e-9);
+                (v.dot(right) / z).abs().max((v.dot(up) / z).abs())
+            })
+            .fold(0.0, f64::max)
+            * 1.03;
+        CameraView {
+            eye,
+            forward,
+            right,
+            up,
+            tan_half_fov,
+        }
+    }
+}

@@ -1,0 +1,35 @@
+//! `hole`: lines that fall through the hole.
+
+use super::{Batch, Frame, GenerateError, rejection_sample, unit_vector};
+use crate::oracle::{OracleClass, classify};
+use glam::DVec3;
+use rand::RngExt;
+use rand_pcg::Pcg64;
+
+/// Candidates per requested ray before giving up (ν = 1.1 keeps about 4 %).
+const MAX_TRIES_PER_RAY: usize = 1000;
+
+/// Distribution: the line crosses y = 0 at a point uniform in the hole disk ρ < R − r,
+/// with a direction uniform on the sphere; the origin is 2(R + r) back along the line.
+/// Candidates the oracle does not call a miss are redrawn (rejection sampling), so every
+/// ray of this case misses and miss capture equals rejection rate. Cychosz rejects none
+/// of them: the crossing is inside its sphere and between its planes.
+pub(super) fn fill(
+    frame: &Frame,
+    count: usize,
+    rng: &mut Pcg64,
+    batch: &mut Batch,
+) -> Result<(), GenerateError> {
+    let hole_radius = frame.major - frame.minor;
+    let back = 2.0 * frame.outer();
+    rejection_sample(batch, count, MAX_TRIES_PER_RAY, |batch| {
+        let rho = hole_radius * rng.random::<f64>().sqrt();
+        let phi = rng.random_range(0.0..std::f64::consts::TAU);
+        let crossing = DVec3::new(rho * phi.cos(), 0.0, rho * phi.sin());
+        let d = unit_vector(rng);
+        let ray = frame.ray(crossing - d * back, d);
+        if classify(&frame.torus, &ray).class == OracleClass::Miss {
+            batch.rays.push(ray);
+        }
+    })
+}
