@@ -75,6 +75,7 @@ pub mod certified;
 pub mod cull;
 mod geometry;
 pub mod intersect;
+mod num;
 pub mod quartic;
 
 #[cfg(feature = "gpu")]
@@ -85,9 +86,8 @@ pub mod gpu;
 /// API, no stability promise.
 #[doc(hidden)]
 pub mod internals {
-    pub use crate::batch::lanes::F32s;
-    pub use crate::batch::vec3s::Vec3s;
     pub use crate::cull::{SectionFormulas, foot_point, skala_keeps};
+    pub use crate::num::{F32s, Vec3s};
 }
 
 pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};

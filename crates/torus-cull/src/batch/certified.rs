@@ -13,13 +13,13 @@
 //! the f64 [`crate::intersect()`].
 
 use super::intersect::{RaysF64, TorusF64};
-use super::lanes::{F32s, F64s};
 use super::lines::BLOCK;
 use crate::Torus;
-use crate::batch::real::sc;
 use crate::certified::certificate::{ScaledLine, V3, decide, normal_at, solve_uncertified};
 use crate::certified::line::{LINE_ABS, LINE_REL, scale};
 use crate::intersect::reduce::t_at;
+use crate::num::sc;
+use crate::num::{F32s, F64s};
 use glam::Mat3;
 use pulp::{Simd, WithSimd};
 

@@ -6,13 +6,13 @@
 //! arithmetic agrees, and `tests/batch.rs` for the check at every dispatch level). What
 //! is left is the loop over blocks of lines, inside pulp's `#[target_feature]` context.
 
-use super::isa::Dispatch;
-use super::lanes::F32s;
 use super::lines::{BLOCK, Lines};
 use super::mask::KeepMask;
-use super::vec3s::Vec3s;
 use crate::cull::KernelVisitor;
 use crate::cull::kernel::CullKernel;
+use crate::num::Dispatch;
+use crate::num::F32s;
+use crate::num::Vec3s;
 use crate::{CullBounds, CullKind};
 use pulp::{Simd, WithSimd};
 

@@ -8,12 +8,13 @@
 //! scalar [`crate::intersect()`] on that ray instead, so tangent rays get exactly the
 //! scalar answer.
 
-use super::lanes::{F64s, M64s};
 use super::lines::BLOCK;
-use super::quartic::nearest::nearest_root;
-pub(crate) use super::vec3s::DVec3s;
-use super::vec3s::V3;
-use crate::intersect::nearest_hit::{NearestRoot, Tube, nearest_hit};
+use crate::geometry::Tube;
+use crate::intersect::nearest_hit::{NearestRoot, nearest_hit};
+pub(crate) use crate::num::DVec3s;
+use crate::num::V3;
+use crate::num::{F64s, M64s};
+use crate::quartic::lanes::nearest_root;
 use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};

@@ -70,20 +70,16 @@
 mod certified;
 mod cull;
 mod intersect;
-mod isa;
-pub(crate) mod lanes;
 mod lines;
 mod mask;
-pub(crate) mod quartic;
-pub(crate) mod real;
+mod solve;
 mod to_local;
-pub(crate) mod vec3s;
 mod wavefront;
 
 pub use crate::cull::BATCHED;
+pub use crate::num::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use cull::{NoBatchForm, cull_batch};
-pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
-pub use quartic::{Quartics, SolveStats, nearest_roots};
+pub use solve::{Quartics, SolveStats, nearest_roots};
 pub use wavefront::{Wavefront, WavefrontStats};

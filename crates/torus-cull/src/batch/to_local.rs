@@ -7,10 +7,10 @@
 //! centre (or whose square is not finite) takes the scalar f64 foot-point path instead,
 //! exactly as the scalar code decides.
 
-use super::lanes::F32s;
 use super::lines::{BLOCK, Lines};
 use super::mask::KeepMask;
-use super::vec3s::Vec3s;
+use crate::num::F32s;
+use crate::num::Vec3s;
 use crate::{Ray, Torus};
 use glam::{Mat3, Vec3};
 use pulp::{Simd, WithSimd};

@@ -13,9 +13,9 @@
 use super::certified::{F32Answers, Proof, certify_lanes};
 use super::cull::{NoBatchForm, cull_batch};
 use super::intersect::{Answers, RaysF64, intersect_lanes};
-use super::isa::Dispatch;
 use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
+use crate::num::Dispatch;
 use crate::{CullKind, Hit, Ray, Torus, intersect};
 use glam::Vec3;
 

@@ -21,10 +21,10 @@
 //!
 //! A lane that proves neither a hit nor a miss is escalated to the f64 solver.
 
-use crate::batch::quartic::nearest::nearest_root;
-use crate::batch::real::{Real, RealMask};
-pub(crate) use crate::batch::vec3s::V3;
 use crate::intersect::reduce::coefficients;
+pub(crate) use crate::num::V3;
+use crate::num::{Real, RealMask};
+use crate::quartic::lanes::nearest_root;
 
 /// 2⁻²⁴: the unit roundoff of f32.
 pub(crate) const U32: f64 = 1.0 / 16_777_216.0;

@@ -7,8 +7,8 @@
 //! bounds do not grow with the distance of the origin.
 
 use super::certificate::{ScaledLine, U32, V3};
-use crate::batch::real::{Real, Sc, sc};
 use crate::intersect::reduce::{foot_line, t_at};
+use crate::num::{Real, Sc, sc};
 use crate::{Ray, Torus};
 
 /// The f64 side of a [`ScaledLine`]: what maps `u` back to the ray's `t`.

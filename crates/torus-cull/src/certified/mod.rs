@@ -31,8 +31,8 @@
 pub(crate) mod certificate;
 pub(crate) mod line;
 
-use crate::batch::lanes::F32s;
 use crate::intersect::Hit;
+use crate::num::F32s;
 use crate::{Ray, Torus, intersect};
 use certificate::decide;
 use glam::Vec3;

@@ -3,9 +3,9 @@
 
 use super::kernel::{Cull, CullKernel, scalar_cull};
 use super::{CullBounds, moderate};
-use crate::batch::lanes::{F32s, F64s, M32s};
-use crate::batch::real::Real;
-use crate::batch::vec3s::Vec3s;
+use crate::num::Real;
+use crate::num::Vec3s;
+use crate::num::{F32s, F64s, M32s};
 use glam::Vec3;
 use pulp::{Scalar, Simd};
 

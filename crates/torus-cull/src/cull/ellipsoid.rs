@@ -3,8 +3,8 @@
 
 use super::kernel::{CullKernel, scalar_cull};
 use super::{CullBounds, foot_point, moderate};
-use crate::batch::lanes::{F32s, M32s};
-use crate::batch::vec3s::Vec3s;
+use crate::num::Vec3s;
+use crate::num::{F32s, M32s};
 use pulp::Simd;
 
 scalar_cull! {

@@ -10,8 +10,8 @@
 //! (see `src/batch/lanes.rs`); `tests/batch.rs` checks it at every dispatch level.
 
 use super::CullBounds;
-use crate::batch::lanes::M32s;
-use crate::batch::vec3s::Vec3s;
+use crate::num::M32s;
+use crate::num::Vec3s;
 use glam::Vec3;
 use pulp::{Scalar, Simd};
 

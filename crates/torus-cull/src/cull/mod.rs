@@ -9,7 +9,8 @@
 //! the one-line [`Cull::keeps`] and whose instantiation at AVX2, AVX-512 or NEON is the
 //! batch cull of [`crate::batch::cull_batch`]. The module splits into
 //! * `kernel`: the [`Cull`] trait, [`CullVisitor`], and the kernel shape;
-//! * `bounds`: [`CullBounds`] with its safety margin, and the shared scale steps;
+//! * `steps`: the scale steps every cull shares (the foot point, rescaling); the
+//!   per-torus constants with their safety margin, [`CullBounds`], belong to the torus;
 //! * `registry`: [`CullKind`], the registry by stable name, used in results, the CLI and
 //!   the plots; its [`CullKind::visit`] hands a concrete cull type to generic code, so that
 //!   benchmark and BVH loops are monomorphized per cull instead of paying a dynamic
@@ -28,7 +29,6 @@
 //! bound the torus size: see [`crate::MIN_OUTER_RADIUS`] and [`crate::MAX_OUTER_RADIUS`].
 
 mod aabb;
-mod bounds;
 mod cychosz;
 mod discriminant;
 mod ellipsoid;
@@ -38,12 +38,11 @@ mod quadric;
 mod registry;
 mod skala;
 mod sphere;
+mod steps;
 mod thick_cylinder;
 
+pub use crate::geometry::{CullBounds, SAFETY_REL};
 pub use aabb::AabbCull;
-pub use bounds::foot_point;
-pub(crate) use bounds::{AXIS_PARALLEL_H2, moderate, rescaled};
-pub use bounds::{CullBounds, SAFETY_REL};
 pub use cychosz::CychoszCull;
 pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
 pub use ellipsoid::EllipsoidCull;
@@ -53,6 +52,8 @@ pub use quadric::QuadricCull;
 pub(crate) use registry::KernelVisitor;
 pub use registry::{BATCHED, CullKind, NoBatchForm, UnknownCull};
 pub use skala::SkalaCull;
+pub use steps::foot_point;
+pub(crate) use steps::{AXIS_PARALLEL_H2, moderate, rescaled};
 // The paper-as-printed fixtures (the lab's `errata`) reuse the section formulas; not
 // renderer API.
 #[doc(hidden)]

@@ -2,8 +2,8 @@
 
 use super::CullBounds;
 use super::kernel::{CullKernel, scalar_cull};
-use crate::batch::lanes::M32s;
-use crate::batch::vec3s::Vec3s;
+use crate::num::M32s;
+use crate::num::Vec3s;
 use pulp::Simd;
 
 scalar_cull! {

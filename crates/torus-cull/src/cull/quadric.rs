@@ -4,9 +4,9 @@
 use super::CullBounds;
 use super::ellipsoid::{EllipsoidChord, ellipsoid_slab};
 use super::kernel::{CullKernel, scalar_cull};
-use crate::batch::lanes::{F32s, M32s};
-use crate::batch::real::RealMask;
-use crate::batch::vec3s::Vec3s;
+use crate::num::RealMask;
+use crate::num::Vec3s;
+use crate::num::{F32s, M32s};
 use pulp::Simd;
 
 scalar_cull! {

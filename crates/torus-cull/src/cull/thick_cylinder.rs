@@ -2,9 +2,9 @@
 
 use super::kernel::{CullKernel, scalar_cull};
 use super::{AXIS_PARALLEL_H2, CullBounds, foot_point};
-use crate::batch::lanes::{F32s, M32s};
-use crate::batch::real::RealMask;
-use crate::batch::vec3s::Vec3s;
+use crate::num::RealMask;
+use crate::num::Vec3s;
+use crate::num::{F32s, M32s};
 use pulp::Simd;
 
 scalar_cull! {

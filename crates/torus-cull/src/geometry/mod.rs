@@ -1,7 +1,13 @@
-//! The shapes a renderer hands over: a ring torus with its pose, and a ray.
+//! The shapes a renderer hands over: a ring torus with its pose, and a ray; and what the
+//! torus computes once for its culls ([`CullBounds`]) and its exact path ([`Tube`]).
 
+mod bounds;
 mod ray;
 mod torus;
+mod tube;
+
+pub use bounds::{CullBounds, SAFETY_REL};
+pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, Ray, RayError};
 pub use torus::{

@@ -2,7 +2,7 @@
 
 use super::ray::{DRay, Ray};
 use crate::cull::CullBounds;
-use crate::intersect::nearest_hit::Tube;
+use crate::geometry::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 

@@ -13,11 +13,12 @@
 //! (the point is `o + t·d = p + (o·d̂ + t|d|)·d̂`).
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
-use crate::batch::real::{Sc, sc};
-use crate::batch::vec3s::V3;
+use crate::geometry::Tube;
+use crate::num::V3;
+use crate::num::{Sc, sc};
 use crate::quartic::{RealRoots, solve_depressed_monic};
 use crate::{DRay, LocalLine, Ray, Torus};
-use nearest_hit::{Careful, Tube, nearest_hit};
+use nearest_hit::{Careful, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
 
 pub(crate) mod nearest_hit;

@@ -10,40 +10,10 @@
 //! one its common path, which flags the lanes it leaves to the careful one.
 
 use super::reduce::{chord_in_range, coefficients, foot_line, normal};
-use crate::batch::real::{Real, RealMask, Sc, sc, sc_mask};
-use crate::batch::vec3s::V3;
+use crate::geometry::Tube;
+use crate::num::V3;
+use crate::num::{Real, RealMask, Sc, sc, sc_mask};
 use crate::quartic::{nearest_root_depressed, nearest_root_in_range};
-
-/// A torus's constants on the exact path, each computed once in f64.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Tube {
-    /// R.
-    pub(crate) major: f64,
-    /// 1/R: the scale of the foot-point frame.
-    pub(crate) inv_major: f64,
-    /// r/R: the tube radius at R = 1.
-    pub(crate) minor_rel: f64,
-    /// 1 − (r/R)², of the normal's gradient.
-    pub(crate) k: f64,
-    /// 1 + r/R: the bounding sphere's radius at R = 1.
-    pub(crate) outer: f64,
-}
-
-impl Tube {
-    /// The constants of R = `major`, r = `minor`.
-    #[inline(always)]
-    pub(crate) fn new(major: f64, minor: f64) -> Tube {
-        let inv_major = 1.0 / major;
-        let minor_rel = minor * inv_major;
-        Tube {
-            major,
-            inv_major,
-            minor_rel,
-            k: 1.0 - minor_rel * minor_rel,
-            outer: 1.0 + minor / major,
-        }
-    }
-}
 
 /// The nearest root a driver instantiation uses.
 pub(crate) trait NearestRoot<R: Real> {

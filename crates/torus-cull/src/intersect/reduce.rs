@@ -6,8 +6,8 @@
 //! functions; glam's operation order is kept (`dot` = (x·x′ + y·y′) + z·z′), so the
 //! scalar f64 instantiation rounds exactly as glam's `DVec3` code did.
 
-use crate::batch::real::Real;
-use crate::batch::vec3s::V3;
+use crate::num::Real;
+use crate::num::V3;
 
 /// A line `o + t·d` in the foot-point frame scaled by `1/R` (module docs of
 /// [`super`]): the point at `u` is `p + u·d̂`, and `t = (u·R − s)/|d|`.

@@ -11,7 +11,7 @@
 
 use super::resolvent::{self, Root};
 use super::{EPS, RealRoots, eval, eval2};
-use crate::batch::real::{Real, sc};
+use crate::num::{Real, sc};
 
 /// Below this `|disc| / (m² + 4|n|)` a factor's two roots are decided on the quartic, for a
 /// quartic given in depressed form (a depression by the caller adds its own rounding:

@@ -30,22 +30,21 @@
 //! `kurbo::common::solve_quartic` (Orellana & De Michele, ACM TOMS 46(2), 2020, Alg. 1010).
 
 mod all_roots;
-pub(crate) mod cube_root;
 mod even;
 pub(crate) mod factor;
+pub(crate) mod lanes;
 pub(crate) mod nearest;
 pub(crate) mod resolvent;
 mod roots;
 #[cfg(test)]
 mod tests;
+pub(crate) mod trisect;
 
 pub use all_roots::{solve_depressed_monic, solve_quartic};
 pub use nearest::nearest_root_depressed;
 pub(crate) use nearest::nearest_root_in_range;
 
 pub use roots::RealRoots;
-
-pub(crate) use cube_root::cbrt;
 
 const EPS: f64 = f64::EPSILON;
 

@@ -8,7 +8,7 @@
 
 use super::factor::{self, Split};
 use super::{EPS, RealRoots, even};
-use crate::batch::real::{Real, RealMask, sc, sc_mask};
+use crate::num::{Real, RealMask, sc, sc_mask};
 
 /// The nearest real root of `x⁴ + p x² + q x + r` in `[lo, hi]` (either end may be
 /// infinite), or `None`: the renderer's query.

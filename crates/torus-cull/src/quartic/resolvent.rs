@@ -27,8 +27,8 @@
 //! What differs is the driver: this one branches (Vieta's `z`, a Newton polish only where
 //! the closed form loses digits, the careful near-double case), the lanes select.
 
-use super::cube_root::trisect_u;
-use crate::batch::real::{Real, RealMask, Sc, sc, sc_mask};
+use super::trisect::trisect_u;
+use crate::num::{Real, RealMask, Sc, sc, sc_mask};
 
 /// Below this `|Δ| / scale` the sign of the cubic's discriminant is not trusted: a
 /// near-double pair of roots may be real or complex by rounding. Then the pair is classified

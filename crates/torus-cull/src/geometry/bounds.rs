@@ -1,11 +1,5 @@
-//! The per-torus constants of the culls with their safety margin ([`CullBounds`]), and the
-//! scale steps every cull shares ([`foot_point`], [`rescaled`], [`moderate`]), written once
-//! over lanes: at [`pulp::Scalar`] they are the scalar steps.
-
-use crate::batch::lanes::F32s;
-use crate::batch::real::RealMask;
-use crate::batch::vec3s::Vec3s;
-use pulp::Simd;
+//! The per-torus constants of the culls with their safety margin ([`CullBounds`]): owned
+//! by the [`super::Torus`] they were computed for.
 
 /// The relative safety margin: `η = SAFETY_REL · (R + r)`, 2⁻¹² ≈ 2.4e-4.
 ///
@@ -13,11 +7,6 @@ use pulp::Simd;
 /// foot-point rounding for origins within 256·(R + r), small enough to cost nothing
 /// measurable in rejection rate (it only keeps lines that pass within η of the surface).
 pub const SAFETY_REL: f32 = 1.0 / 4096.0;
-
-/// Below this squared horizontal direction fraction (|h|/|d| < 1e-6) a line is treated as
-/// parallel to the axis: within the bounding sphere its distance from the axis changes by
-/// less than 2e-6·(R + r), far inside η.
-pub(crate) const AXIS_PARALLEL_H2: f32 = 1e-12;
 
 /// Per-torus constants for the culls, in f32, with the safety margin folded in.
 ///
@@ -147,80 +136,9 @@ fn round_down(x: f64) -> f32 {
     }
 }
 
-/// The foot point p = o − d (o·d)/|d|² of the line (its point closest to the torus
-/// centre) and 1/|d|². Shared first step of the sphere-based culls: it removes the
-/// far-origin cancellation from every later formula, for one division and no root.
-#[inline(always)]
-pub fn foot_point<S: Simd>(origin: Vec3s<S>, dir: Vec3s<S>) -> (Vec3s<S>, F32s<S>) {
-    let one = F32s::splat(origin.x.s, 1.0);
-    let inv_len_sq = one / dir.length_squared();
-    (origin - dir * (origin.dot(dir) * inv_len_sq), inv_len_sq)
-}
-
-/// `v` times a power of two that brings its largest component into [1, 2): exact (no
-/// rounding), so scale-free formulas give bit-identical answers, and their fourth powers of
-/// a direction stay inside f32's range however the ray is parametrized.
-///
-/// A valid ray's |d|² is a finite normal f32, so the largest component's biased exponent
-/// e is in 1..=191 and the factor 2^(127 − e) is a normal f32.
-#[inline(always)]
-pub(crate) fn rescaled<S: Simd>(v: Vec3s<S>) -> Vec3s<S> {
-    let largest = v.abs().max_element();
-    Vec3s::new(
-        v.x.times_inverse_exponent(largest),
-        v.y.times_inverse_exponent(largest),
-        v.z.times_inverse_exponent(largest),
-    )
-}
-
-/// 2⁻⁴⁰ and 2⁴⁰: the range of |v|² that [`moderate`] leaves alone.
-pub(crate) const MODERATE_LOW: f32 = 9.094_947e-13;
-pub(crate) const MODERATE_HIGH: f32 = 1.099_511_6e12;
-
-/// `v` itself when |v|² lies in (2⁻⁴⁰, 2⁴⁰), else [`rescaled`]: either way fourth powers
-/// of `v`, and |o|²·|v|² for origins within 10¹³, stay inside f32's normal range.
-///
-/// When every lane is in range (a renderer's rays nearly always are) `v` is returned
-/// before `rescaled` runs: at width 1 that is the scalar branch, predictable on a
-/// renderer's rays; `rescaled`'s trip through the integer unit cost a short cull about
-/// 3 ns per line when taken always. Otherwise the lanes select.
-#[inline(always)]
-pub(crate) fn moderate<S: Simd>(v: Vec3s<S>) -> Vec3s<S> {
-    let s = v.x.s;
-    let len_sq = v.length_squared();
-    let plain = len_sq.gt(F32s::splat(s, MODERATE_LOW)) & len_sq.lt(F32s::splat(s, MODERATE_HIGH));
-    if plain.all() {
-        return v;
-    }
-    let r = rescaled(v);
-    Vec3s::new(
-        plain.select(v.x, r.x),
-        plain.select(v.y, r.y),
-        plain.select(v.z, r.z),
-    )
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec3;
-    use pulp::Scalar;
-
-    #[test]
-    fn moderate_keeps_fourth_powers_in_range() {
-        assert_eq!(2f32.powi(-40), 9.094_947e-13);
-        assert_eq!(2f32.powi(40), 1.099_511_6e12);
-        let s = Scalar::new();
-        for scale in [1e-19f32, 1e-15, 1e-5, 1.0, 1e5, 1e15, 1e19] {
-            let m = moderate(Vec3s::splat(s, Vec3::new(0.3, -1.0, 0.2) * scale));
-            let v = Vec3::new(m.x.v, m.y.v, m.z.v);
-            let fourth = v.length_squared() * v.length_squared();
-            assert!(fourth.is_normal() && fourth < 1.3e24, "{scale}: {v}");
-            // Only the length changes.
-            let cos = v.normalize().dot(Vec3::new(0.3, -1.0, 0.2).normalize());
-            assert!((cos - 1.0).abs() < 1e-6);
-        }
-    }
 
     #[test]
     fn margin_is_small_and_positive() {

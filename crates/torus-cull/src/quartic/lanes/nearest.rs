@@ -3,7 +3,7 @@
 //! functions (one source, generic over [`Real`]).
 
 use super::resolvent::greatest_root;
-use crate::batch::real::Real;
+use crate::num::Real;
 use crate::quartic::factor::split_at;
 use crate::quartic::nearest::{clear_factors, nearest_of_clear};
 use crate::quartic::resolvent::Root;

@@ -4,7 +4,7 @@
 //! Same method as the scalar [`crate::quartic::nearest_root_depressed`], and mostly the
 //! same source: the resolvent's steps, Ferrari's split and the nearest-root pick of the
 //! common ("clear") path are the scalar solver's own functions, generic over
-//! `crate::batch::real::Real` and instantiated here on f64 lanes. What this driver does
+//! `crate::num::Real` and instantiated here on f64 lanes. What this driver does
 //! differently is branch-free: both resolvent formulas are evaluated where any lane of a
 //! register needs them and selected. The rare lanes that need the scalar solver's
 //! careful paths (a near-double root of the resolvent, or a factor whose discriminant is
@@ -18,15 +18,10 @@
 //! root is polished rather than taken in Vieta's form, and the cube root starts from a
 //! lane seed (`cube_root.rs`).
 
-mod cube_root;
-pub(crate) use cube_root::cbrt;
-pub(crate) mod nearest;
-mod resolvent;
-
-use super::isa::Dispatch;
-use super::lanes::F64s;
 use super::lines::BLOCK;
 use super::mask::set_bits;
+use crate::num::Dispatch;
+use crate::num::F64s;
 use crate::quartic::nearest_root_depressed;
 use pulp::{Simd, WithSimd};
 
@@ -163,8 +158,13 @@ impl WithSimd for Solve<'_> {
                         F64s::load(s, &$v[at.clone()])
                     };
                 }
-                let (root, cold) =
-                    nearest::nearest_root(load!(p), load!(q), load!(r), load!(lo), load!(hi));
+                let (root, cold) = crate::quartic::lanes::nearest_root(
+                    load!(p),
+                    load!(q),
+                    load!(r),
+                    load!(lo),
+                    load!(hi),
+                );
                 let out = pulp::bytemuck::cast_slice_mut::<f64, u8>(&mut self.roots[at]);
                 out.copy_from_slice(pulp::bytemuck::bytes_of(&root.v));
                 bits |= cold.bits() << k;

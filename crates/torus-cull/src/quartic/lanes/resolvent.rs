@@ -2,8 +2,8 @@
 //! [`crate::quartic`] resolvent's steps (one source, generic over [`Real`]), selected
 //! instead of branched on, with its cold case handed back.
 
-use super::cube_root::CBRT_RANGE;
-use crate::batch::real::{Real, RealMask};
+use crate::num::CBRT_RANGE;
+use crate::num::{Real, RealMask};
 use crate::quartic::resolvent::{cardano, cubic, trigonometric};
 
 /// `(z, h′(z), fallback)`: z ≥ 0 the greatest root of

@@ -62,7 +62,7 @@ pub trait Real:
     fn copysign(self, sign: Self) -> Self;
     /// ∛x for x ≥ 0, without libm on the hot path: the solver's own cube root at width 1
     /// ([`crate::quartic`]'s), a bit-trick seed and Halley steps on wider f64 lanes
-    /// (accurate on `crate::batch::quartic`'s `CBRT_RANGE`, which the lane solver checks).
+    /// (accurate on [`super::CBRT_RANGE`], which the lane solver checks).
     fn cbrt(self) -> Self;
     /// `self < o`.
     fn lt(self, o: Self) -> Self::Mask;
@@ -266,10 +266,10 @@ impl<S: Simd> CbrtLanes for F64s<S> {
             let y: f64 = pulp::bytemuck::cast(self.v);
             F64s {
                 s: self.s,
-                v: pulp::bytemuck::cast(crate::quartic::cbrt(y)),
+                v: pulp::bytemuck::cast(super::cube_root::cbrt(y)),
             }
         } else {
-            super::quartic::cbrt(self)
+            super::cube_root::cbrt_lanes(self)
         }
     }
 }
@@ -293,7 +293,7 @@ impl<S: Simd> CbrtLanes for F32s<S> {
             v: pulp::bytemuck::cast(seed),
         };
         for _ in 0..2 {
-            t = crate::quartic::cube_root::cbrt_halley(t, self);
+            t = super::cube_root::cbrt_halley(t, self);
         }
         t
     }
