@@ -9,17 +9,69 @@
 //!   cheap on lanes, so they start from Kahan's bit trick instead and take more of the
 //!   same Halley steps ([`cbrt_halley`]).
 //!
-//! [`Real::cbrt`] picks between them by width.
+//! [`Cbrt::cbrt`] picks between them by width.
 
-use super::lanes::F64s;
+use super::lanes::{F32s, F64s};
 use super::poly::poly5;
-use super::real::{Real, sc};
 use pulp::Simd;
+use std::ops::{Add, Div, Mul};
+
+/// ∛x for x ≥ 0, without libm on the hot path, for each lane type: the scalar seed at
+/// width 1, a bit-trick seed and Halley steps on wider f64 lanes (accurate on
+/// [`CBRT_RANGE`], which the lane solver checks), the same bits at every width for f32.
+/// A supertrait of [`super::Real`], so every solver step has it.
+pub trait Cbrt: Sized {
+    /// ∛self.
+    fn cbrt(self) -> Self;
+}
+
+impl<S: Simd> Cbrt for F64s<S> {
+    #[inline(always)]
+    fn cbrt(self) -> Self {
+        if S::F64_LANES == 1 {
+            let y: f64 = pulp::bytemuck::cast(self.v);
+            F64s {
+                s: self.s,
+                v: pulp::bytemuck::cast(cbrt(y)),
+            }
+        } else {
+            cbrt_lanes(self)
+        }
+    }
+}
+
+impl<S: Simd> Cbrt for F32s<S> {
+    /// ∛y for y ≥ 0 normal, at every width the same bits (the certified f32 path's scalar
+    /// and lane forms agree): Kahan's seed on the f32 word (⌊w/3⌋ + 709 958 130, as
+    /// fdlibm's `cbrtf`, within about 6 %), then two Halley steps (6 % → 10⁻⁴ → below
+    /// f32's rounding). Zero, subnormal and non-finite lanes come out unspecified: the
+    /// certificate, not the cube root, decides what f32 may claim.
+    #[inline(always)]
+    fn cbrt(self) -> Self {
+        let s = self.s;
+        let words: S::u32s = pulp::bytemuck::cast(self.v);
+        // ⌊w/3⌋ = ⌊w·⌈2³³/3⌉ / 2³³⌋ for every 32-bit w.
+        let (_, high) = s.widening_mul_u32s(words, s.splat_u32s(0xAAAA_AAAB));
+        let third = s.wrapping_dyn_shr_u32s(high, s.splat_u32s(1));
+        let seed = s.add_u32s(third, s.splat_u32s(709_958_130));
+        let mut t = F32s {
+            s,
+            v: pulp::bytemuck::cast(seed),
+        };
+        for _ in 0..2 {
+            t = cbrt_halley(t, self, F32s::splat(s, 2.0));
+        }
+        t
+    }
+}
 
 /// One Halley step for `t ≈ ∛y`: `t·(t³ + 2y)/(2t³ + y)`, which cubes the relative error.
+/// `two` is 2 in `t`'s type (one float or a register of lanes).
 #[inline(always)]
-pub(crate) fn cbrt_halley<R: Real>(t: R, y: R) -> R {
-    let two = t.splat(2.0);
+pub(crate) fn cbrt_halley<T>(t: T, y: T, two: T) -> T
+where
+    T: Copy + Add<Output = T> + Mul<Output = T> + Div<Output = T>,
+{
     let t3 = t * t * t;
     t * ((t3 + two * y) / (two * t3 + y))
 }
@@ -52,8 +104,8 @@ pub(crate) fn cbrt(y: f64) -> f64 {
     let (k_plus, j) = (u64::from(biased / 3), (biased % 3) as usize);
     let mu = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
     let scale = f64::from_bits((k_plus + 1023 - 341) << 52) * CBRT_2J[j];
-    let t = poly5(&FIT, sc(mu)) * sc(scale);
-    cbrt_halley(t, sc(y)).v
+    let t = poly5(FIT, mu) * scale;
+    cbrt_halley(t, y, 2.0)
 }
 
 /// libm's cube root, for the arguments outside the fast path's range (0, subnormal, huge).
@@ -73,7 +125,7 @@ pub(crate) const CBRT_RANGE: (f64, f64) = (1e-290, 1e290);
 /// plus the bias 715 094 163, over a zero low word, is ∛y within about 6 %. Then three
 /// Halley steps t ← t·((t³ + 2y)/(2t³ + y)): 6 % → 10⁻⁴ → 10⁻¹² → below rounding. A
 /// register whose f64 and u32 lanes differ in number calls libm (the one-lane scalar
-/// register never comes here: [`Real::cbrt`] gives it the scalar
+/// register never comes here: [`Cbrt::cbrt`] gives it the scalar
 /// solver's cube root).
 #[inline(always)]
 pub(crate) fn cbrt_lanes<S: Simd>(y: F64s<S>) -> F64s<S> {
@@ -98,7 +150,7 @@ pub(crate) fn cbrt_lanes<S: Simd>(y: F64s<S>) -> F64s<S> {
         v: pulp::bytemuck::cast(seed),
     };
     for _ in 0..3 {
-        t = cbrt_halley(t, y);
+        t = cbrt_halley(t, y, F64s::splat(s, 2.0));
     }
     t
 }
@@ -144,5 +196,26 @@ mod tests {
                 "cbrt({x}) = {got}, libm {want}"
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod f32_cbrt {
+    use super::*;
+
+    #[test]
+    fn f32_cube_root_is_within_two_ulps_on_normal_numbers() {
+        let s = pulp::Scalar::new();
+        let mut worst = 0.0f64;
+        for i in 0..200_000 {
+            let y = 10f32.powf(-37.0 + 75.0 * (i as f32) / 200_000.0);
+            let got = F32s { s, v: y }.cbrt().v;
+            let want = f64::from(y).cbrt();
+            worst = worst.max(((f64::from(got) - want) / want).abs());
+        }
+        assert!(
+            worst < 2.0 * f64::from(f32::EPSILON),
+            "worst relative error {worst:e}"
+        );
     }
 }

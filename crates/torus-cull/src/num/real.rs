@@ -18,6 +18,7 @@
 //! on wider lanes), never fused and never reordered, so a step computes the same bits at
 //! every width; the bit-identity tests rest on that.
 
+use super::cube_root::Cbrt;
 use super::lanes::{F32s, F64s, M32s, M64s};
 use pulp::Simd;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Not, Sub};
@@ -37,7 +38,7 @@ pub trait RealMask:
 /// Constants are made with [`Real::splat`] from any value of the type (which carries the
 /// SIMD token), so a step needs no token argument: `x.splat(2.0)`.
 pub trait Real:
-    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Cbrt
 {
     /// The lane mask of comparisons.
     type Mask: RealMask;
@@ -60,10 +61,6 @@ pub trait Real:
     fn max(self, o: Self) -> Self;
     /// The magnitude of `self` with the sign bit of `sign`.
     fn copysign(self, sign: Self) -> Self;
-    /// ∛x for x ≥ 0, without libm on the hot path: the solver's own cube root at width 1
-    /// ([`crate::quartic`]'s), a bit-trick seed and Halley steps on wider f64 lanes
-    /// (accurate on [`super::CBRT_RANGE`], which the lane solver checks).
-    fn cbrt(self) -> Self;
     /// `self < o`.
     fn lt(self, o: Self) -> Self::Mask;
     /// `self ≤ o`.
@@ -207,10 +204,6 @@ macro_rules! real {
                 }
             }
             #[inline(always)]
-            fn cbrt(self) -> Self {
-                cbrt_lanes(self)
-            }
-            #[inline(always)]
             fn lt(self, o: Self) -> $mask<S> {
                 $name::lt(self, o)
             }
@@ -248,56 +241,6 @@ macro_rules! real {
 
 real!(F64s, M64s, f64, m64s, F64_LANES, neg_f64s);
 real!(F32s, M32s, f32, m32s, F32_LANES, neg_f32s);
-
-/// Picks the cube root of a lane type (the only step whose seed depends on the width).
-trait CbrtLanes: Sized {
-    fn cbrt_lanes(self) -> Self;
-}
-
-#[inline(always)]
-fn cbrt_lanes<T: CbrtLanes>(x: T) -> T {
-    x.cbrt_lanes()
-}
-
-impl<S: Simd> CbrtLanes for F64s<S> {
-    #[inline(always)]
-    fn cbrt_lanes(self) -> Self {
-        if S::F64_LANES == 1 {
-            let y: f64 = pulp::bytemuck::cast(self.v);
-            F64s {
-                s: self.s,
-                v: pulp::bytemuck::cast(super::cube_root::cbrt(y)),
-            }
-        } else {
-            super::cube_root::cbrt_lanes(self)
-        }
-    }
-}
-
-impl<S: Simd> CbrtLanes for F32s<S> {
-    /// ∛y for y ≥ 0 normal, at every width the same bits (the certified f32 path's scalar
-    /// and lane forms agree): Kahan's seed on the f32 word (⌊w/3⌋ + 709 958 130, as
-    /// fdlibm's `cbrtf`, within about 6 %), then two Halley steps (6 % → 10⁻⁴ → below
-    /// f32's rounding). Zero, subnormal and non-finite lanes come out unspecified: the
-    /// certificate, not the cube root, decides what f32 may claim.
-    #[inline(always)]
-    fn cbrt_lanes(self) -> Self {
-        let s = self.s;
-        let words: S::u32s = pulp::bytemuck::cast(self.v);
-        // ⌊w/3⌋ = ⌊w·⌈2³³/3⌉ / 2³³⌋ for every 32-bit w.
-        let (_, high) = s.widening_mul_u32s(words, s.splat_u32s(0xAAAA_AAAB));
-        let third = s.wrapping_dyn_shr_u32s(high, s.splat_u32s(1));
-        let seed = s.add_u32s(third, s.splat_u32s(709_958_130));
-        let mut t = F32s {
-            s,
-            v: pulp::bytemuck::cast(seed),
-        };
-        for _ in 0..2 {
-            t = super::cube_root::cbrt_halley(t, self);
-        }
-        t
-    }
-}
 
 #[cfg(test)]
 mod tests {
@@ -346,26 +289,5 @@ mod tests {
                 same(Sc::select(Real::lt(x, y), x, y), if a < b { a } else { b });
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod f32_cbrt {
-    use super::*;
-
-    #[test]
-    fn f32_cube_root_is_within_two_ulps_on_normal_numbers() {
-        let s = pulp::Scalar::new();
-        let mut worst = 0.0f64;
-        for i in 0..200_000 {
-            let y = 10f32.powf(-37.0 + 75.0 * (i as f32) / 200_000.0);
-            let got = F32s { s, v: y }.cbrt().v;
-            let want = f64::from(y).cbrt();
-            worst = worst.max(((f64::from(got) - want) / want).abs());
-        }
-        assert!(
-            worst < 2.0 * f64::from(f32::EPSILON),
-            "worst relative error {worst:e}"
-        );
     }
 }

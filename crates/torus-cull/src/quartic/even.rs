@@ -16,7 +16,8 @@
 //! point, such as any line in the plane of the top circle that touches it) is decided by the
 //! sign of `p² − 4r`, which a fused multiply-add makes exact too.
 
-use super::{RealRoots, factor::NEAR_DOUBLE, nearest::in_range_f64};
+use super::pick::in_range_f64;
+use super::{RealRoots, factor::NEAR_DOUBLE};
 
 /// The roots `y₁, y₂` of `y² + p y + r`, `Some(None)` when they are complex (no real
 /// `x`), or `None` for non-finite input (left to the general solver, which rejects it).

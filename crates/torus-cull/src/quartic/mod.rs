@@ -34,6 +34,7 @@ mod even;
 pub(crate) mod factor;
 pub(crate) mod lanes;
 pub(crate) mod nearest;
+mod pick;
 pub(crate) mod resolvent;
 mod roots;
 #[cfg(test)]

@@ -7,8 +7,9 @@
 //! steps on its registers.
 
 use super::factor::{self, Split};
+use super::pick::{in_range, in_range_f64};
 use super::{EPS, RealRoots, even};
-use crate::num::{Real, RealMask, sc, sc_mask};
+use crate::num::{Real, RealMask, sc};
 
 /// The nearest real root of `x⁴ + p x² + q x + r` in `[lo, hi]` (either end may be
 /// infinite), or `None`: the renderer's query.
@@ -119,31 +120,6 @@ pub(crate) fn nearest_of_clear<R: Real>(f: &Split<R>, disc1: R, disc2: R, lo: R,
     let second =
         in_range(half_m - half * s2, ok2, lo, hi).min(in_range(half_m + half * s2, ok2, lo, hi));
     first.min(second)
-}
-
-/// `x` if it is a real root (`real`) in `[lo, hi]`, else ∞: a candidate for the nearest
-/// root, selected rather than branched on, since which roots qualify is a coin toss from
-/// ray to ray.
-#[inline(always)]
-pub(crate) fn in_range<R: Real>(x: R, real: R::Mask, lo: R, hi: R) -> R {
-    let inf = x.splat(f64::INFINITY);
-    if R::LANES == 1 {
-        // The same value as the select below, short-circuited: measured, the mask form
-        // cost the scalar solver 3–4 % on uniform lines (paired against `roots`).
-        if real.any() && x.ge(lo).any() && x.le(hi).any() {
-            x
-        } else {
-            inf
-        }
-    } else {
-        R::select(real & x.ge(lo) & x.le(hi), x, inf)
-    }
-}
-
-/// [`in_range`] for one `f64`.
-#[inline(always)]
-pub(super) fn in_range_f64(x: f64, real: bool, lo: f64, hi: f64) -> f64 {
-    in_range(sc(x), sc_mask(real), sc(lo), sc(hi)).v
 }
 
 /// The nearest root found (∞: none).

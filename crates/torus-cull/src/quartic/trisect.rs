@@ -30,7 +30,15 @@ pub(crate) fn trisect_u<R: Real>(x: R) -> R {
     }
     let rhs = k!(2.0) * (k!(1.0) + x);
     let s = (rhs * k!(1.0 / 3.0)).sqrt();
-    let u = s * poly5(&FIT, s - k!(HALF_RANGE));
+    let fit = [
+        k!(FIT[0]),
+        k!(FIT[1]),
+        k!(FIT[2]),
+        k!(FIT[3]),
+        k!(FIT[4]),
+        k!(FIT[5]),
+    ];
+    let u = s * poly5(fit, s - k!(HALF_RANGE));
     let f = u * u * (k!(3.0) + u) - rhs;
     let df = (k!(3.0) * u + k!(6.0)) * u;
     let d2f = k!(6.0) * u + k!(6.0);
