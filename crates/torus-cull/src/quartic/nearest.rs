@@ -30,8 +30,9 @@ use crate::batch::real::{Real, RealMask, sc, sc_mask};
 /// ```
 ///
 /// Coefficients of any size are taken: beyond 2^±100 the quartic is solved for x/s, s a
-/// power of two (see `out_of_range_scale`). That range check costs 4–6 % of a solve (paired
-/// solver bench); [`crate::intersect()`], whose coefficients are O(1), skips it.
+/// power of two (see `out_of_range_scale`). That range check (three absolute values, two
+/// maxima and a range compare in front of every solve) is skipped by
+/// [`crate::intersect()`], whose coefficients are O(1).
 #[inline]
 #[must_use]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
@@ -128,8 +129,9 @@ pub(crate) fn nearest_of_clear<R: Real>(f: &Split<R>, disc1: R, disc2: R, lo: R,
 pub(crate) fn in_range<R: Real>(x: R, real: R::Mask, lo: R, hi: R) -> R {
     let inf = x.splat(f64::INFINITY);
     if R::LANES == 1 {
-        // The same value as the select below, short-circuited: measured, the mask form
-        // cost the scalar solver 3–4 % on uniform lines (paired against `roots`).
+        // The same value as the select below, short-circuited: at one lane three plain
+        // `bool` tests that stop at the first false one, instead of three masks combined
+        // and a select.
         if real.any() && x.ge(lo).any() && x.le(hi).any() {
             x
         } else {
