@@ -5,8 +5,9 @@ use super::lines::BLOCK;
 /// Bit `i` is set when the cull keeps line `i` (run the quartic); clear means a proven
 /// miss. One `u64` per [`BLOCK`] of lines; bits past [`KeepMask::len`] are always clear.
 ///
-/// A bit mask, not a `Vec<bool>`: at a fraction of a nanosecond per line, writing a byte
-/// per line would cost as much as the cull, and the survivors are found a word at a time
+/// A bit mask, not a `Vec<bool>`: a batch cull's arithmetic is shared by all the lanes of
+/// a register, so a byte store per line would be of the same order as the cull itself,
+/// where a block's verdicts are one `u64`; and the survivors are found a word at a time
 /// ([`KeepMask::kept`], the compaction step of a wavefront).
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct KeepMask {

@@ -1,9 +1,9 @@
 //! Batch (SIMD) culls: many lines at once, branch-free, one keep bit per line.
 //!
 //! A renderer that traces packets or wavefronts has the rays of a batch side by side;
-//! there the cost model of a cull changes. A branch-free cull over 8 or 16 lanes costs a
-//! fraction of a nanosecond per ray, the keep/reject branches that a scalar loop
-//! mispredicts vanish, and what remains is the solve of the survivors.
+//! there the cost model of a cull changes. A branch-free cull over 8 or 16 lanes costs
+//! its instructions divided by the lane count per ray, the keep/reject branches that a
+//! scalar loop mispredicts vanish, and what remains is the solve of the survivors.
 //!
 //! * [`Lines`]: torus-frame lines as structure of arrays ([`Lines::from_rays`] builds
 //!   them from world rays with [`crate::Torus::line_to_local`], the scalar path's own

@@ -29,7 +29,9 @@ scalar_cull! {
     /// The foot point of the y-scaled line is taken from the y-scaled origin: for a line
     /// that passes near the torus the origin is its foot point minus t·d, so the projection
     /// cancels ≈ ε·|t d| per component, in unscaled units the same ≈ ε|o| as Cychosz's (not
-    /// s times it). Cost: Cychosz's plus the scaling, measured within about 10 % of it.
+    /// s times it). Cost: Cychosz's plus the scaling (two multiplies by s, a per-torus
+    /// constant) and `moderate`'s range test of |d|²: still one division and no square
+    /// root.
     pub struct EllipsoidCull = "ellipsoid";
 }
 

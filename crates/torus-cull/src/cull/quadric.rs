@@ -33,10 +33,11 @@ scalar_cull! {
     /// H(τ*) − H(q) are differences of values of H over E, bounded by 3(R + r)². A
     /// horizontal line (d_y = 0) leaves the slab unclipped.
     ///
-    /// **Cost.** The hyperboloid stage (a root for the chord, a division for the slab) runs
-    /// only when some lane survived `ellipsoid`: at width 1 that is the scalar early exit,
-    /// which measured faster than the branch-free form (16.8 against 17.7 ns per line, quick
-    /// workload, paired), and on AVX-512 lanes it cost nothing measurable.
+    /// **Cost.** `ellipsoid`'s test, then the hyperboloid stage (a root for the chord, a
+    /// division for the slab) only when some lane survived `ellipsoid`: at width 1 that is
+    /// the scalar early exit, so a line `ellipsoid` rejects pays no root and no division
+    /// beyond it; on lanes a register with no survivor skips the stage, and any other
+    /// pays one `any` test besides the branch-free form.
     pub struct QuadricCull = "quadric";
 }
 

@@ -40,10 +40,11 @@ scalar_cull! {
     /// **One source for scalar and lanes.** The case masks select the answer, and each
     /// case runs only if some lane is in it (`any`), and returns as soon as no lane is
     /// left undecided: at width 1 those are the scalar code's branches and returns, on
-    /// lanes the tail that every open lane needs. Measured one ray at a time (paired,
-    /// quick workload, `torus-cull time`), this form costs about 4 % more than the old
-    /// hand-written scalar twin (8.3 → 8.6 ns per line, 1.69 → 1.76 × cychosz); on
-    /// AVX-512 it is 13 % cheaper (1.42 → 1.23 ns per line).
+    /// lanes the tail that every open lane needs. At width 1 each `any` is the test of one
+    /// `bool`, so the scalar cull does what a hand-written scalar one would: after
+    /// Cychosz's stage only its own case, and a square root only where that case needs
+    /// one. On lanes, a register whose lanes are all decided skips the remaining cases
+    /// (and their square roots) instead of computing every case and selecting.
     pub struct SkalaCull = "skala";
 }
 

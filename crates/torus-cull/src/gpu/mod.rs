@@ -157,8 +157,8 @@ pub struct GpuIntersector {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
     info: wgpu::AdapterInfo,
-    /// The buffers of the last batch, kept for the next one (creating them per call cost
-    /// milliseconds on lavapipe); one batch runs at a time.
+    /// The buffers of the last batch, kept for the next one (creating them per call would
+    /// be four buffer allocations and a bind group per batch); one batch runs at a time.
     buffers: Mutex<Option<Buffers>>,
 }
 

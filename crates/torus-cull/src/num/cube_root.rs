@@ -1,7 +1,8 @@
 //! The cube root ∛y, the one step of the quartic solver whose seed depends on the width,
 //! and the Halley step both seeds share. The resolvent needs ∛ of a cubic's terms on the
 //! critical path; a polynomial or bit-trick seed and Halley steps (each cubes the relative
-//! error) replace libm's `cbrt`.
+//! error) replace libm's `cbrt`: inline, a few bit operations, a degree-5 polynomial and
+//! one division per step, where libm's is an out-of-line call with no lane form.
 //!
 //! * Scalar ([`cbrt`]): the exponent of one `f64`, a table of 2^(j/3) and a degree-5 fit,
 //!   then one Halley step.

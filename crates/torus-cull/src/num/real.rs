@@ -1,10 +1,12 @@
 //! [`Real`]: the thin number trait that lets a solver step be written once for the scalar
 //! solver and for every lane width (DESIGN.md §15).
 //!
-//! parry writes each ray query once over simba's `SimdRealField`; this is the same idea
-//! cut down to what the quartic solver and the exact intersection use: `+ − × ÷`, `√`,
-//! `|x|`, `min`/`max`, `copysign`, comparisons into a [`RealMask`], `select`, constants
-//! (`splat`), and "is any lane / every lane still active" for early exits.
+//! One source for scalar and lane steps: a solver step is written once, generic over
+//! [`Real`], and is the scalar step at width 1 and the lane step at every other width.
+//! The trait holds only what the quartic solver and the exact intersection use:
+//! `+ − × ÷`, `√`, `|x|`, `min`/`max`, `copysign`, comparisons into a [`RealMask`],
+//! `select`, constants (`splat`), and "is any lane / every lane still active" for early
+//! exits.
 //!
 //! It is implemented by the lane wrappers [`F64s<S>`] and [`F32s<S>`] of
 //! [`super::lanes`]. `pulp::Scalar` is a [`pulp::Simd`] whose `f64s` is `f64` and whose
@@ -48,8 +50,9 @@ pub trait Real:
     /// Every lane `x` (rounded to the lane type: exact for f64), same SIMD token as `self`.
     fn splat(self, x: f64) -> Self;
     /// `−x` (exact: flips the sign bit). Not the `Neg` operator on purpose: pulp's scalar
-    /// "register" negates natively here, where the lane wrappers' `-` goes through integer
-    /// bit operations that cost the scalar solver several percent.
+    /// "register" negates natively here, where the lane wrappers' `-` xors the sign bit
+    /// through integer bit operations: at width 1 a round trip from float to integer bits
+    /// and back on each negation of the solver's dependency chain.
     fn negate(self) -> Self;
     /// √x, correctly rounded.
     fn sqrt(self) -> Self;

@@ -31,8 +31,9 @@ use crate::num::{Real, RealMask, sc};
 /// ```
 ///
 /// Coefficients of any size are taken: beyond 2^±100 the quartic is solved for x/s, s a
-/// power of two (see `out_of_range_scale`). That range check costs 4–6 % of a solve (paired
-/// solver bench); [`crate::intersect()`], whose coefficients are O(1), skips it.
+/// power of two (see `out_of_range_scale`). That range check (three absolute values, two
+/// maxima and a range compare in front of every solve) is skipped by
+/// [`crate::intersect()`], whose coefficients are O(1).
 #[inline]
 #[must_use]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {

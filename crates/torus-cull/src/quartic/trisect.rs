@@ -1,6 +1,8 @@
 //! The resolvent's trisection `cos(arccos(x)/3)` without libm: the root of a cubic, so a
 //! polynomial seed good to 2·10⁻⁶ and one Halley step replace libm's `acos` and `cos` on
-//! the critical path. Generic over [`Real`]: the scalar solver and the lanes call the same
+//! the critical path: inline, one square root, a degree-5 polynomial and one division,
+//! where libm's are out-of-line calls with their own range reduction (`acos` then `cos`, a
+//! chain of two) and no lane form. Generic over [`Real`]: the scalar solver and the lanes call the same
 //! function.
 
 use crate::num::{Real, poly5};
