@@ -5,6 +5,7 @@ use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use torus_cull::Named;
 use torus_cull_lab::measure::{self, CountedCull, FalseReject};
 use torus_cull_lab::output;
 use torus_cull_lab::report;

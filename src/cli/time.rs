@@ -6,6 +6,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::CullKind;
+use torus_cull::Named;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::measure::CountedCull;
 use torus_cull_lab::paired::sweep::{
@@ -227,13 +228,7 @@ fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
     if names.is_empty() {
         return Ok(CullKind::TIMED.to_vec());
     }
-    let allowed = || {
-        CullKind::TIMED
-            .iter()
-            .map(|c| c.name())
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
+    let allowed = || CullKind::allowed().join(", ");
     let mut culls = Vec::new();
     for name in names {
         let parsed = name.trim().parse().map_err(|_| {
@@ -308,7 +303,7 @@ mod gpu {
     use std::process::ExitCode;
     use std::time::Instant;
     use torus_cull::gpu::{GpuCull, GpuIntersector};
-    use torus_cull::{CullKind, F32Verdict, Ray, Torus};
+    use torus_cull::{CullKind, F32Verdict, Named, Ray, Torus};
     use torus_cull_lab::results::{EstimateRecord, Results};
     use torus_cull_lab::workload::generate;
     use torus_cull_lab::workload::spec::Workload;
@@ -446,7 +441,7 @@ mod gpu {
         culls
             .iter()
             .map(|c| match c {
-                CullKind::None => Ok(GpuCull::None),
+                CullKind::NoCull => Ok(GpuCull::None),
                 CullKind::Cychosz => Ok(GpuCull::Cychosz),
                 other => Err(format!(
                     "--culls: the GPU kernel runs none and cychosz, not {other}"

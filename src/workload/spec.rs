@@ -12,7 +12,7 @@ use serde::Deserialize;
 use sha2::{Digest, Sha256};
 use std::fmt;
 use std::path::{Path, PathBuf};
-use torus_cull::MAX_NU;
+use torus_cull::{MAX_NU, Named};
 
 /// The most rays per (case, ν) a workload may ask for.
 pub const MAX_RAYS: i64 = 10_000_000;
@@ -196,7 +196,7 @@ fn parse_cases(names: &[String]) -> Result<Vec<Case>, FieldError> {
     }
     let mut cases = Vec::new();
     for name in names {
-        let case: Case = name.parse().map_err(|e: String| (field(), e))?;
+        let case = Case::parse(name).map_err(|e| (field(), e.to_string()))?;
         if cases.contains(&case) {
             return Err((field(), format!("'{name}' is listed twice")));
         }
@@ -295,10 +295,7 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
     }
     let mut scenes = Vec::new();
     for name in &raw.scenes {
-        scenes.push(
-            name.parse::<SceneKind>()
-                .map_err(|e| (field("scenes"), e))?,
-        );
+        scenes.push(SceneKind::parse(name).map_err(|e| (field("scenes"), e.to_string()))?);
     }
     if raw.nu.is_empty() {
         return Err((
@@ -340,7 +337,7 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
 }
 
 fn case_names() -> String {
-    Case::ALL.map(|c| c.name()).join(", ")
+    Case::allowed().join(", ")
 }
 
 fn hex(bytes: &[u8]) -> String {
