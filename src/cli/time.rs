@@ -13,7 +13,7 @@ use torus_cull_lab::paired::sweep::{
     DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
 };
 use torus_cull_lab::results::{self, RatioRecord, Results};
-use torus_cull_lab::workload::spec::Workload;
+use torus_cull_lab::workload::spec::{self, Workload};
 
 /// The longest `--seconds` accepted: an hour.
 const MAX_SECONDS: f64 = 3600.0;
@@ -24,8 +24,8 @@ const MIN_BATCH: usize = 16;
 /// `torus-cull time`'s arguments.
 #[derive(clap::Args)]
 pub struct TimeArgs {
-    /// Workload file.
-    #[arg(long, default_value = "workloads/quick.json")]
+    /// Workload: `quick` or `default` (built into the binary), or a workload file.
+    #[arg(long, default_value = "quick")]
     workload: PathBuf,
     /// Culls to time, comma-separated (default: all ten timed culls: none, sphere, aabb,
     /// cychosz, thick_cylinder, skala, ellipsoid, quadric, discriminant,
@@ -84,14 +84,19 @@ enum Mode {
 
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let workload = Workload::load(&args.workload)?;
+    let workload = Workload::open(&args.workload)?;
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
     let batch = pick_batch(args.batch, &workload, &args.workload)?;
     let path = out_path(args.out, &workload)?;
     check_writable(&path)?;
-    torus_cull_lab::output::check_not_input(("--out", &path), &[("--workload", &args.workload)])?;
+    if spec::built_in(&args.workload).is_none() {
+        torus_cull_lab::output::check_not_input(
+            ("--out", &path),
+            &[("--workload", &args.workload)],
+        )?;
+    }
 
     if args.device == Device::Gpu {
         if args.mode == Mode::Both {
