@@ -55,7 +55,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::SystemTime;
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
-use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
+use torus_cull::Named;
+use torus_cull::batch::{BatchCull, Dispatch, KeepMask, Lines, Wavefront, cull_batch};
 use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
 use torus_cull_lab::measure::{self, LabeledBatch};
 use torus_cull_lab::oracle::OracleClass;
@@ -106,13 +107,13 @@ impl CullVisitor for TimeCull<'_> {
 
 /// The culls timed in batch mode: the baseline and the five the wavefront model is
 /// about (the branch-free classics and the three new quadric/discriminant culls).
-const BATCH_TIMED: [CullKind; 6] = [
-    CullKind::None,
-    CullKind::Cychosz,
-    CullKind::Skala,
-    CullKind::Ellipsoid,
-    CullKind::Quadric,
-    CullKind::Discriminant,
+const BATCH_TIMED: [BatchCull; 6] = [
+    BatchCull::NoCull,
+    BatchCull::Cychosz,
+    BatchCull::Skala,
+    BatchCull::Ellipsoid,
+    BatchCull::Quadric,
+    BatchCull::Discriminant,
 ];
 
 /// The criterion groups of batch mode, each `<group>-<case>`, per cull of [`BATCH_TIMED`].
@@ -131,7 +132,7 @@ struct BatchCase<'a> {
 /// structure-of-arrays lines, into a keep mask), `batch_total_ns` (the wavefront on
 /// world rays: lines, cull, compaction, exact intersection on lanes, hits) and
 /// `batch_f32_total_ns` (the same through the certified f32 path).
-fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &BatchCase) {
+fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: BatchCull, on: &BatchCase) {
     let BatchCase {
         case,
         nu,
@@ -145,8 +146,7 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
     c.benchmark_group(format!("batch_cull_ns-{case}"))
         .bench_with_input(id.clone(), lines, |b, lines| {
             b.iter(|| {
-                cull_batch(dispatch, cull, bounds, black_box(lines), &mut keep)
-                    .expect("a batched cull");
+                cull_batch(dispatch, cull, bounds, black_box(lines), &mut keep);
                 black_box(&keep);
             })
         });
@@ -155,22 +155,20 @@ fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: CullKind, on: &
     c.benchmark_group(format!("batch_total_ns-{case}"))
         .bench_with_input(id.clone(), rays, |b, rays| {
             b.iter(|| {
-                black_box(
-                    wavefront
-                        .intersect(dispatch, cull, torus, black_box(rays), &mut hits)
-                        .expect("a batched cull"),
-                );
+                black_box(wavefront.intersect(dispatch, cull, torus, black_box(rays), &mut hits));
                 black_box(&hits);
             })
         });
     c.benchmark_group(format!("batch_f32_total_ns-{case}"))
         .bench_with_input(id, rays, |b, rays| {
             b.iter(|| {
-                black_box(
-                    wavefront
-                        .intersect_f32(dispatch, cull, torus, black_box(rays), &mut hits)
-                        .expect("a batched cull"),
-                );
+                black_box(wavefront.intersect_f32(
+                    dispatch,
+                    cull,
+                    torus,
+                    black_box(rays),
+                    &mut hits,
+                ));
                 black_box(&hits);
             })
         });
@@ -698,7 +696,7 @@ fn timing_records(
         let read = |group: &str, cull: CullKind| {
             read_estimate(home, &format!("{group}-{case}"), cull.name(), nu, since).map(per_ray)
         };
-        let Some(solve) = read("total_ns", CullKind::None) else {
+        let Some(solve) = read("total_ns", CullKind::NoCull) else {
             continue;
         };
         let hits = labeled.hits();
@@ -747,31 +745,30 @@ fn timing_records(
             ("batch_total_ns", F64_PRECISION),
             ("batch_f32_total_ns", F32_PRECISION),
         ] {
-            let Some(batch_solve) = read(group, CullKind::None) else {
+            let Some(batch_solve) = read(group, CullKind::NoCull) else {
                 continue;
             };
             for cull in BATCH_TIMED {
-                let (Some(cull_ns), Some(total)) = (read("batch_cull_ns", cull), read(group, cull))
+                let kind = cull.kind();
+                let (Some(cull_ns), Some(total)) = (read("batch_cull_ns", kind), read(group, kind))
                 else {
                     continue;
                 };
                 let escalation_rate = (precision == F32_PRECISION).then(|| {
-                    let stats = wavefront
-                        .intersect_f32(
-                            dispatch,
-                            cull,
-                            &labeled.batch.torus,
-                            &labeled.batch.rays,
-                            &mut hits,
-                        )
-                        .expect("a batched cull");
+                    let stats = wavefront.intersect_f32(
+                        dispatch,
+                        cull,
+                        &labeled.batch.torus,
+                        &labeled.batch.rays,
+                        &mut hits,
+                    );
                     stats.escalated as f64 / stats.rays.max(1) as f64
                 });
                 out.push(TimingRecord {
                     mode: BATCH_MODE.into(),
                     precision: precision.into(),
                     escalation_rate,
-                    ..record(cull, cull_ns, total, batch_solve.median)
+                    ..record(kind, cull_ns, total, batch_solve.median)
                 });
             }
         }

@@ -7,6 +7,7 @@
 
 use glam::Vec3;
 use pulp::{Scalar, Simd};
+use torus_cull::Named;
 use torus_cull::cull::{Cull, CullBounds, CullVisitor};
 use torus_cull::internals::{F32s, SectionFormulas, Vec3s, foot_point, skala_keeps};
 
@@ -21,23 +22,25 @@ pub enum PrintedCull {
     SkalaEq102,
 }
 
-impl PrintedCull {
-    /// Every printed variant.
-    pub const ALL: [PrintedCull; 3] = [
+/// Every printed variant by the stable name used in results and the CLI.
+impl Named for PrintedCull {
+    const KIND: &'static str = "printed cull";
+    const ALL: &'static [PrintedCull] = &[
         PrintedCull::CychoszPrinted,
         PrintedCull::SkalaPrintedC,
         PrintedCull::SkalaEq102,
     ];
 
-    /// The stable name used in results and the CLI.
-    pub fn name(self) -> &'static str {
+    fn name(self) -> &'static str {
         match self {
             PrintedCull::CychoszPrinted => "cychosz_printed",
             PrintedCull::SkalaPrintedC => "skala_printed_c",
             PrintedCull::SkalaEq102 => "skala_eq102",
         }
     }
+}
 
+impl PrintedCull {
     /// Hands the concrete cull to `visitor`, as [`torus_cull::cull::CullKind::visit`] does.
     pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
         match self {

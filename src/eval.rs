@@ -330,6 +330,7 @@ fn parse_dray(line: &str) -> Result<DRay, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use torus_cull::Named;
 
     #[test]
     fn header_names_every_timed_cull_in_order() {

@@ -8,7 +8,7 @@ use crate::results::RejectionRecord;
 use crate::workload::{Batch, Case, GenerateError, generate, spec::Workload};
 use std::fmt;
 use std::str::FromStr;
-use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+use torus_cull::{Cull, CullKind, CullVisitor, Named, Ray, UnknownName};
 
 /// A cull the harness can count: a real one, or a paper-as-printed test fixture (counted
 /// only to watch the oracle catch it; never timed).
@@ -20,29 +20,40 @@ pub enum CountedCull {
     Printed(PrintedCull),
 }
 
-impl CountedCull {
-    /// The stable name.
-    pub fn name(self) -> &'static str {
+/// Every countable cull by its stable name: the timed ones in table order, then the
+/// printed ones.
+impl Named for CountedCull {
+    const KIND: &'static str = "cull";
+    const ALL: &'static [CountedCull] = &{
+        const TIMED: usize = CullKind::TIMED.len();
+        let mut all = [CountedCull::Timed(CullKind::NoCull); TIMED + PrintedCull::ALL.len()];
+        let mut i = 0;
+        while i < all.len() {
+            all[i] = if i < TIMED {
+                CountedCull::Timed(CullKind::TIMED[i])
+            } else {
+                CountedCull::Printed(PrintedCull::ALL[i - TIMED])
+            };
+            i += 1;
+        }
+        all
+    };
+
+    fn name(self) -> &'static str {
         match self {
             CountedCull::Timed(c) => c.name(),
             CountedCull::Printed(c) => c.name(),
         }
     }
+}
 
+impl CountedCull {
     /// Hands the concrete cull to `visitor`.
     pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
         match self {
             CountedCull::Timed(c) => c.visit(visitor),
             CountedCull::Printed(c) => c.visit(visitor),
         }
-    }
-
-    /// Every countable cull: the timed ones in table order, then the printed ones.
-    pub fn all() -> impl Iterator<Item = CountedCull> {
-        CullKind::TIMED
-            .into_iter()
-            .map(CountedCull::Timed)
-            .chain(PrintedCull::ALL.into_iter().map(CountedCull::Printed))
     }
 }
 
@@ -65,12 +76,9 @@ impl fmt::Display for CountedCull {
 }
 
 impl FromStr for CountedCull {
-    type Err = String;
-    fn from_str(s: &str) -> Result<CountedCull, String> {
-        CountedCull::all().find(|c| c.name() == s).ok_or_else(|| {
-            let names: Vec<_> = CountedCull::all().map(|c| c.name()).collect();
-            format!("unknown cull '{s}' (allowed: {})", names.join(", "))
-        })
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<CountedCull, UnknownName> {
+        CountedCull::parse(s)
     }
 }
 

@@ -27,8 +27,8 @@ use common::{NUS, family, pushed_back};
 use glam::{DMat3, DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::batch::{BATCHED, Dispatch, Isa, KeepMask, Lines, cull_batch};
-use torus_cull::{CullBounds, CullKind, Ray, Torus};
+use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Isa, KeepMask, Lines, cull_batch};
+use torus_cull::{CullBounds, CullKind, Named, Ray, Torus};
 use torus_cull_lab::oracle::{OracleClass, classify_line};
 use torus_cull_lab::workload::Case;
 use torus_cull_lab::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
@@ -96,11 +96,11 @@ impl Tally {
             let scalar: Vec<bool> = (0..lines.len())
                 .map(|i| {
                     let l = lines.get(i);
-                    reference(cull, bounds, l.origin, l.dir)
+                    reference(cull.kind(), bounds, l.origin, l.dir)
                 })
                 .collect();
             for dispatch in levels {
-                cull_batch(dispatch, cull, bounds, &lines, &mut keep).unwrap();
+                cull_batch(dispatch, cull, bounds, &lines, &mut keep);
                 assert_eq!(keep.len(), rays.len());
                 for (i, (&want, label)) in scalar.iter().zip(&labels).enumerate() {
                     let got = keep.get(i);
@@ -388,9 +388,9 @@ fn any_length_and_the_padding_never_shows() {
         for n in [0, 1, 15, 16, 17, 63, 64, 65, 127, 300] {
             let lines = Lines::from_rays(&torus, &batch.rays[..n]);
             let mut keep = KeepMask::new();
-            cull_batch(&dispatch, CullKind::None, bounds, &lines, &mut keep).unwrap();
+            cull_batch(&dispatch, BatchCull::NoCull, bounds, &lines, &mut keep);
             assert_eq!(keep.count_kept(), n, "{} n={n}", dispatch.isa());
-            cull_batch(&dispatch, CullKind::Skala, bounds, &lines, &mut keep).unwrap();
+            cull_batch(&dispatch, BatchCull::Skala, bounds, &lines, &mut keep);
             let want: Vec<bool> = batch.rays[..n]
                 .iter()
                 .map(|r| {
@@ -401,16 +401,12 @@ fn any_length_and_the_padding_never_shows() {
             assert_eq!(keep.to_vec(), want, "{} n={n}", dispatch.isa());
         }
     }
-    // A cull without a batch form is a clear error, not a silent fallback.
-    let err = cull_batch(
-        &Dispatch::best(),
-        CullKind::DiscriminantF64,
-        bounds,
-        &Lines::new(),
-        &mut KeepMask::new(),
-    )
-    .unwrap_err()
-    .to_string();
+    // A cull without a batch form has no `BatchCull`: asked for by name, a clear error,
+    // not a silent fallback.
+    assert_eq!(CullKind::DiscriminantF64.batched(), None);
+    let err = BatchCull::parse("discriminant_f64")
+        .unwrap_err()
+        .to_string();
     assert!(
         err.contains("discriminant_f64") && err.contains("skala"),
         "{err}"
@@ -453,7 +449,7 @@ fn the_comparison_sees_a_wrong_verdict() {
         };
         cull.keeps(b, o, d)
     });
-    let skala = BATCHED.iter().position(|&c| c == CullKind::Skala).unwrap();
+    let skala = BATCHED.iter().position(|&c| c == BatchCull::Skala).unwrap();
     for (k, &count) in fooled.mismatches.iter().enumerate() {
         let want = if k == skala { 32 * levels.len() } else { 0 };
         assert_eq!(count, want, "{}: {:?}", BATCHED[k], fooled.examples);

@@ -6,8 +6,9 @@
 // Every check here runs against the harness's oracle or CLI.
 
 use glam::Vec3;
-use torus_cull::batch::{BATCHED, Dispatch, Isa};
-use torus_cull::{CullKind, NoCull, Ray};
+use torus_cull::Named;
+use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Isa};
+use torus_cull::{NoCull, Ray};
 use torus_cull_lab::scene::{LeafBatchStats, trace_leaves_batched};
 use torus_cull_lab::scene::{Scene, SceneHit, SceneKind, TraceStats};
 
@@ -42,7 +43,7 @@ fn batched_bvh_matches_brute_force_for_every_batched_cull() {
         .into_iter()
         .map(|i| Dispatch::forced(i).unwrap())
         .collect();
-    for kind in SceneKind::ALL {
+    for &kind in SceneKind::ALL {
         for nu in [1.5, 4.0] {
             let scene = Scene::build(kind, nu, 60, 3).unwrap();
             let mut rays = scene.camera_rays(32);
@@ -59,7 +60,7 @@ fn batched_bvh_matches_brute_force_for_every_batched_cull() {
                 let mut intersections = Vec::new();
                 for cull in BATCHED {
                     let mut stats = LeafBatchStats::default();
-                    let got = trace_leaves_batched(&scene, d, cull, &rays, &mut stats).unwrap();
+                    let got = trace_leaves_batched(&scene, d, cull, &rays, &mut stats);
                     let wrong: Vec<String> = rays
                         .iter()
                         .zip(got.iter().zip(&truth))
@@ -81,9 +82,10 @@ fn batched_bvh_matches_brute_force_for_every_batched_cull() {
                     assert!(stats.leaf_candidates >= scalar.leaf_visits, "{stats:?}");
                     intersections.push(stats.intersections);
                 }
-                let at = |c: CullKind| intersections[BATCHED.iter().position(|&k| k == c).unwrap()];
-                assert!(at(CullKind::Skala) <= at(CullKind::Cychosz));
-                assert!(at(CullKind::Cychosz) <= at(CullKind::None));
+                let at =
+                    |c: BatchCull| intersections[BATCHED.iter().position(|&k| k == c).unwrap()];
+                assert!(at(BatchCull::Skala) <= at(BatchCull::Cychosz));
+                assert!(at(BatchCull::Cychosz) <= at(BatchCull::NoCull));
                 if d.isa() == levels.last().unwrap().isa() {
                     println!(
                         "{kind} nu={nu} ({}): {} rays, leaf candidates {} (scalar closest-hit \
@@ -92,7 +94,7 @@ fn batched_bvh_matches_brute_force_for_every_batched_cull() {
                         rays.len(),
                         {
                             let mut s = LeafBatchStats::default();
-                            trace_leaves_batched(&scene, d, CullKind::None, &rays, &mut s).unwrap();
+                            trace_leaves_batched(&scene, d, BatchCull::NoCull, &rays, &mut s);
                             s.leaf_candidates
                         },
                         scalar.leaf_visits,

@@ -13,6 +13,7 @@
 
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
+use torus_cull::Named;
 use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
 use torus_cull::quartic::nearest_root_depressed;
 use torus_cull_lab::solver_suite::{NearestScore, SolverCase, family_cases};

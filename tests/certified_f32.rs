@@ -5,6 +5,7 @@
 // Every check here runs against the harness's oracle.
 
 use rand::SeedableRng;
+use torus_cull::Named;
 use torus_cull::{F32Verdict, Ray, Torus, intersect_f32_certified};
 use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
 use torus_cull_lab::workload::adversarial::{LineFamily, family_rays};
@@ -196,8 +197,8 @@ fn scales_far_origins_and_secondary_rays_never_miss() {
 /// level (one source: `decide` at width 1 is the scalar path), and its escalations.
 #[test]
 fn wavefront_f32_is_the_scalar_f32_path() {
-    use torus_cull::batch::{Dispatch, Isa, Wavefront};
-    use torus_cull::{CullKind, intersect_f32};
+    use torus_cull::batch::{BatchCull, Dispatch, Isa, Wavefront};
+    use torus_cull::intersect_f32;
     let mut wavefront = Wavefront::new();
     let mut hits = Vec::new();
     for nu in [1.2, 4.0, 32.0, 1000.0] {
@@ -216,10 +217,18 @@ fn wavefront_f32_is_the_scalar_f32_path() {
                 .into_iter()
                 .map(|isa| Dispatch::forced(isa).unwrap())
             {
-                for cull in [CullKind::None, CullKind::Cychosz, CullKind::Discriminant] {
-                    let stats = wavefront
-                        .intersect_f32(&dispatch, cull, &batch.torus, &batch.rays, &mut hits)
-                        .unwrap();
+                for cull in [
+                    BatchCull::NoCull,
+                    BatchCull::Cychosz,
+                    BatchCull::Discriminant,
+                ] {
+                    let stats = wavefront.intersect_f32(
+                        &dispatch,
+                        cull,
+                        &batch.torus,
+                        &batch.rays,
+                        &mut hits,
+                    );
                     for (i, (lane, one)) in hits.iter().zip(&scalar).enumerate() {
                         assert_eq!(
                             lane.is_some(),
@@ -231,7 +240,7 @@ fn wavefront_f32_is_the_scalar_f32_path() {
                             assert_eq!(a.t.to_bits(), b.t.to_bits(), "ray {i}");
                         }
                     }
-                    if cull == CullKind::None {
+                    if cull == BatchCull::NoCull {
                         assert_eq!(
                             stats.escalated,
                             escalated,

@@ -8,6 +8,7 @@ mod common;
 
 use common::{NUS, family, pairs};
 use glam::Vec3;
+use torus_cull::Named;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray, Torus};
 use torus_cull_lab::errata::PrintedCull;
 use torus_cull_lab::measure::CountedCull;
@@ -81,7 +82,7 @@ fn printed_variants_reject_hits_on_the_test_families() {
             if classify_line(torus, ray).class != OracleClass::Hit {
                 continue;
             }
-            for (i, cull) in PrintedCull::ALL.into_iter().enumerate() {
+            for (i, cull) in PrintedCull::ALL.iter().copied().enumerate() {
                 false_rejects[i] += usize::from(!keeps(cull, torus, ray));
             }
             for cull in [CullKind::Cychosz, CullKind::Skala] {
@@ -90,7 +91,7 @@ fn printed_variants_reject_hits_on_the_test_families() {
         }
     }
     println!("printed variants' false rejects {:?}", false_rejects);
-    for (cull, n) in PrintedCull::ALL.into_iter().zip(false_rejects) {
+    for (cull, n) in PrintedCull::ALL.iter().copied().zip(false_rejects) {
         assert!(
             n > 0,
             "{} rejected no hit: the harness cannot see it",

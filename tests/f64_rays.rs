@@ -16,6 +16,7 @@ use common::{NUS, family, pairs};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
+use torus_cull::Named;
 use torus_cull::{CullKind, DRay, Torus, intersect, intersect_culled};
 use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
 use torus_cull_lab::workload::Case;
@@ -112,7 +113,7 @@ fn generator_rays_in_f64_at_every_scale_and_distance() {
     let mut rng = Pcg64::seed_from_u64(0xF64);
     for nu in NUS {
         let mut batches = Vec::new();
-        for case in Case::ALL {
+        for &case in Case::ALL {
             batches.extend(family(case, nu, 600, 0xD0 ^ nu.to_bits()));
         }
         for (torus, ray) in pairs(&batches) {

@@ -3,6 +3,7 @@
 // Every check here runs against the harness's oracle or CLI.
 
 use glam::DVec3;
+use torus_cull::Named;
 use torus_cull::{Ray, Torus};
 use torus_cull_lab::oracle::{OracleClass, classify};
 use torus_cull_lab::workload::{Case, GRAZING_OFFSETS, Pose, generate};
@@ -16,7 +17,7 @@ fn local(torus: &Torus, ray: &Ray) -> (DVec3, DVec3) {
 
 #[test]
 fn deterministic_by_seed_case_and_nu() {
-    for case in Case::ALL {
+    for &case in Case::ALL {
         let a = generate(case, 2.0, 200, 5, Pose::Random).unwrap();
         let b = generate(case, 2.0, 200, 5, Pose::Random).unwrap();
         assert_eq!(a.rays, b.rays, "{case}");

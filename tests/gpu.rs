@@ -21,6 +21,7 @@ use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use std::io::Write;
 use std::sync::OnceLock;
+use torus_cull::Named;
 use torus_cull::gpu::{GpuCull, GpuError, GpuIntersector};
 use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
 use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
@@ -201,7 +202,7 @@ fn generators_near_and_far() {
         for back in [0.0f32, 10.0, 1e3, 1e5] {
             let mut all = Tally::default();
             let mut rates = Vec::new();
-            for case in Case::ALL {
+            for &case in Case::ALL {
                 let mut tally = Tally::default();
                 for nu in NUS {
                     if nu < case.min_nu() {

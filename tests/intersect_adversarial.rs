@@ -22,6 +22,7 @@
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
+use torus_cull::Named;
 use torus_cull::intersect::{intersect_local, quartic_coefficients_local};
 use torus_cull::{Ray, Torus, intersect};
 use torus_cull_lab::oracle::{OracleClass, Query, classify, reference_roots};
@@ -278,7 +279,7 @@ fn generator_families_at_extreme_nu_and_scale() {
     let mut tally = Tally::default();
     let mut seed = 0xE7_0000u64;
     for nu in [1.01, 1.05, 1.2, 100.0, 1000.0] {
-        for case in Case::ALL {
+        for &case in Case::ALL {
             for _ in 0..8 {
                 seed += 1;
                 let batch = generate(case, nu, 2_000, seed, Pose::Random)

@@ -5,6 +5,7 @@
 mod common;
 
 use common::{NUS, family, pairs, pushed_back};
+use torus_cull::Named;
 use torus_cull::intersect;
 use torus_cull_lab::oracle::{OracleClass, Query, classify, margin_by_sampling, reference_roots};
 use torus_cull_lab::workload::Case;
@@ -21,7 +22,7 @@ fn intersect_finds_a_hit_exactly_when_the_oracle_says_hit() {
     let mut failures = Vec::new();
     for nu in NUS {
         let mut batches = Vec::new();
-        for case in Case::ALL {
+        for &case in Case::ALL {
             batches.extend(family(case, nu, 4_000, 0x1A7E ^ nu.to_bits()));
         }
         for (torus, ray) in pairs(&batches) {

@@ -216,3 +216,46 @@ fn the_commit_is_the_builds_not_the_current_directorys() {
         assert!(built.is_some(), "build.rs recorded no commit");
     }
 }
+
+/// The installed command needs no clone: from a folder outside the repository the
+/// built-in `quick` workload runs, and records the same workload (name and hash) as the
+/// repository's file.
+#[test]
+fn a_built_in_workload_runs_from_any_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("quick.json");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["run", "--workload", "quick", "--no-plots", "--out"])
+        .arg(&out)
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = Results::load(&out).unwrap();
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("workloads/quick.json");
+    let want = torus_cull_lab::workload::spec::Workload::load(&file).unwrap();
+    assert_eq!(r.meta.workload, "quick");
+    assert_eq!(r.meta.workload_sha256, want.sha256);
+}
+
+/// Without `--workload`, `run` takes the built-in `default` workload, wherever it runs: an
+/// unwritable `--out` is what stops it, not a missing `workloads/default.json`.
+#[test]
+fn the_default_workload_is_built_in() {
+    let dir = tempfile::tempdir().unwrap();
+    let not_a_dir = dir.path().join("file");
+    std::fs::write(&not_a_dir, "").unwrap();
+    let out = not_a_dir.join("results.json");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["run", "--out"])
+        .arg(&out)
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--out") && !err.contains("cannot read"),
+        "{err}"
+    );
+}

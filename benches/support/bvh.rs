@@ -6,6 +6,7 @@ use criterion::{BenchmarkId, Criterion};
 use std::hint::black_box;
 use std::path::Path;
 use std::time::SystemTime;
+use torus_cull::Named;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 use torus_cull_lab::results::BvhRecord;
 use torus_cull_lab::scene::{Scene, SceneHit, TraceStats, same_hit};
@@ -92,7 +93,7 @@ pub fn bench(c: &mut Criterion, spec: &BvhSpec, seed: u64) -> Vec<Pending> {
                 if rays.is_empty() {
                     continue;
                 }
-                let (baseline, _) = CullKind::None.visit(Count {
+                let (baseline, _) = CullKind::NoCull.visit(Count {
                     scene: &scene,
                     rays: &rays,
                 });

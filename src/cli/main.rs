@@ -34,8 +34,8 @@ struct Cli {
 enum Command {
     /// Run a workload: rejection counts for every case × ν × cull, tables, JSON and plots.
     Run {
-        /// Workload file.
-        #[arg(long, default_value = "workloads/default.json")]
+        /// Workload: `default` or `quick` (built into the binary), or a workload file.
+        #[arg(long, default_value = "default")]
         workload: PathBuf,
         /// Results JSON (default: results/<short commit>[-dirty]-<workload>-run.json, or
         /// …-run.json for the workload named `default`). Its directory must exist; the

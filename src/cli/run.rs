@@ -5,12 +5,13 @@ use crate::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use torus_cull::Named;
 use torus_cull_lab::measure::{self, CountedCull, FalseReject};
 use torus_cull_lab::output;
 use torus_cull_lab::report;
 use torus_cull_lab::results::{self, RejectionRecord, Results};
 use torus_cull_lab::workload::GenerateError;
-use torus_cull_lab::workload::spec::Workload;
+use torus_cull_lab::workload::spec::{self, Workload};
 
 /// Runs `run`.
 pub fn run(
@@ -21,7 +22,7 @@ pub fn run(
     culls: &[String],
 ) -> CliResult {
     let workload_path = workload;
-    let workload = Workload::load(workload_path)?;
+    let workload = Workload::open(workload_path)?;
     let culls = parse_culls(culls)?;
     let threads = threads
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
@@ -29,7 +30,9 @@ pub fn run(
     let path = out_path(out, &workload)?;
     // Before the sweep, not after it: an unwritable --out must not cost the whole run.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
-    output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
+    if spec::built_in(workload_path).is_none() {
+        output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
+    }
     let (records, false_rejects) = sweep(&workload, &culls, threads)?;
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));

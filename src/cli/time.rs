@@ -6,13 +6,14 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull::CullKind;
+use torus_cull::Named;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::measure::CountedCull;
 use torus_cull_lab::paired::sweep::{
     DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
 };
 use torus_cull_lab::results::{self, RatioRecord, Results};
-use torus_cull_lab::workload::spec::Workload;
+use torus_cull_lab::workload::spec::{self, Workload};
 
 /// The longest `--seconds` accepted: an hour.
 const MAX_SECONDS: f64 = 3600.0;
@@ -23,8 +24,8 @@ const MIN_BATCH: usize = 16;
 /// `torus-cull time`'s arguments.
 #[derive(clap::Args)]
 pub struct TimeArgs {
-    /// Workload file.
-    #[arg(long, default_value = "workloads/quick.json")]
+    /// Workload: `quick` or `default` (built into the binary), or a workload file.
+    #[arg(long, default_value = "quick")]
     workload: PathBuf,
     /// Culls to time, comma-separated (default: all ten timed culls: none, sphere, aabb,
     /// cychosz, thick_cylinder, skala, ellipsoid, quadric, discriminant,
@@ -83,14 +84,19 @@ enum Mode {
 
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let workload = Workload::load(&args.workload)?;
+    let workload = Workload::open(&args.workload)?;
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
     let batch = pick_batch(args.batch, &workload, &args.workload)?;
     let path = out_path(args.out, &workload)?;
     check_writable(&path)?;
-    torus_cull_lab::output::check_not_input(("--out", &path), &[("--workload", &args.workload)])?;
+    if spec::built_in(&args.workload).is_none() {
+        torus_cull_lab::output::check_not_input(
+            ("--out", &path),
+            &[("--workload", &args.workload)],
+        )?;
+    }
 
     if args.device == Device::Gpu {
         if args.mode == Mode::Both {
@@ -227,13 +233,7 @@ fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
     if names.is_empty() {
         return Ok(CullKind::TIMED.to_vec());
     }
-    let allowed = || {
-        CullKind::TIMED
-            .iter()
-            .map(|c| c.name())
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
+    let allowed = || CullKind::allowed().join(", ");
     let mut culls = Vec::new();
     for name in names {
         let parsed = name.trim().parse().map_err(|_| {
@@ -308,7 +308,7 @@ mod gpu {
     use std::process::ExitCode;
     use std::time::Instant;
     use torus_cull::gpu::{GpuCull, GpuIntersector};
-    use torus_cull::{CullKind, F32Verdict, Ray, Torus};
+    use torus_cull::{CullKind, F32Verdict, Named, Ray, Torus};
     use torus_cull_lab::results::{EstimateRecord, Results};
     use torus_cull_lab::workload::generate;
     use torus_cull_lab::workload::spec::Workload;
@@ -446,7 +446,7 @@ mod gpu {
         culls
             .iter()
             .map(|c| match c {
-                CullKind::None => Ok(GpuCull::None),
+                CullKind::NoCull => Ok(GpuCull::None),
                 CullKind::Cychosz => Ok(GpuCull::Cychosz),
                 other => Err(format!(
                     "--culls: the GPU kernel runs none and cychosz, not {other}"

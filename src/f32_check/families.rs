@@ -19,6 +19,7 @@ use crate::workload::{self, Case, GenerateError, Pose, disk_point, unit_vector};
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
+use torus_cull::Named;
 use torus_cull::{Ray, Torus};
 
 /// The smallest ν the sweeps draw.
@@ -222,7 +223,7 @@ pub fn all() -> Vec<Family> {
             kind,
         });
     }
-    for case in Case::ALL {
+    for &case in Case::ALL {
         for nu in GENERATOR_NUS {
             out.push(Family {
                 name: case.name().into(),

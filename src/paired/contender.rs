@@ -87,7 +87,7 @@ impl Metric {
 
     /// Whether `cull` can be timed under this metric (batch metrics need a batch form).
     pub fn covers(self, cull: CullKind) -> bool {
-        !self.is_batch() || torus_cull::batch::BATCHED.contains(&cull)
+        !self.is_batch() || cull.batched().is_some()
     }
 }
 
@@ -165,6 +165,7 @@ pub fn time_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize)
 /// per call, outside the per-ray work).
 #[inline(never)]
 fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize) -> Duration {
+    let cull = cull.batched().expect("a cull with a batch form");
     let batch = set
         .batch
         .as_ref()
@@ -178,26 +179,19 @@ fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usiz
         let rays = || black_box(set.rays);
         match metric {
             Metric::BatchTotalNs => {
-                wavefront
-                    .intersect(d, cull, set.torus, rays(), hits)
-                    .expect("a cull with a batch form");
+                wavefront.intersect(d, cull, set.torus, rays(), hits);
                 black_box(&hits);
             }
             Metric::BatchF32TotalNs => {
-                wavefront
-                    .intersect_f32(d, cull, set.torus, rays(), hits)
-                    .expect("a cull with a batch form");
+                wavefront.intersect_f32(d, cull, set.torus, rays(), hits);
                 black_box(&hits);
             }
             Metric::BatchF32UncertifiedNs => {
-                wavefront
-                    .intersect_f32_uncertified(d, cull, set.torus, rays(), hits)
-                    .expect("a cull with a batch form");
+                wavefront.intersect_f32_uncertified(d, cull, set.torus, rays(), hits);
                 black_box(&hits);
             }
             Metric::BatchCullNs => {
-                cull_batch(d, cull, set.torus.bounds(), black_box(&batch.soa), keep)
-                    .expect("a cull with a batch form");
+                cull_batch(d, cull, set.torus.bounds(), black_box(&batch.soa), keep);
                 black_box(&keep);
             }
             Metric::TotalNs | Metric::CullNs => unreachable!("scalar metrics are timed by Pass"),
@@ -222,12 +216,12 @@ pub fn escalation_rate(cull: CullKind, metric: Metric, set: &Workset<'_>) -> Opt
     let mut scratch = batch.scratch.borrow_mut();
     let (wavefront, hits, _) = &mut *scratch;
     let (d, torus) = (&batch.dispatch, set.torus);
+    let cull = cull.batched().expect("a cull with a batch form");
     let stats = if metric == Metric::BatchF32TotalNs {
         wavefront.intersect_f32(d, cull, torus, set.rays, hits)
     } else {
         wavefront.intersect_f32_uncertified(d, cull, torus, set.rays, hits)
-    }
-    .expect("a cull with a batch form");
+    };
     Some(stats.escalated as f64 / stats.rays.max(1) as f64)
 }
 

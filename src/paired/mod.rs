@@ -36,10 +36,9 @@
 //! [`stats`] holds the median, the bootstrap and the choice of quiet rounds, [`engine`]
 //! the rounds, [`switches`] the context-switch count, [`contender`] the per-cull timed
 //! loops, [`sweep`] the workload driver that makes
-//! [`RatioRecord`](crate::results::RatioRecord)s, and [`compare`] the verdicts of
-//! `torus-cull compare` on them.
+//! [`RatioRecord`](crate::results::RatioRecord)s; the verdicts of `torus-cull compare` on
+//! them are [`crate::compare`]'s.
 
-pub mod compare;
 pub mod contender;
 pub mod engine;
 pub mod stats;

@@ -11,11 +11,12 @@ use rand::seq::SliceRandom;
 use rand_pcg::Pcg64;
 use std::fmt;
 use std::time::Duration;
+use torus_cull::Named;
 use torus_cull::batch::{Dispatch, Isa};
 use torus_cull::{CullKind, Ray, Torus};
 
 /// The references every cull is timed against: the classic test, and no test at all.
-pub const REFERENCES: [CullKind; 2] = [CullKind::Cychosz, CullKind::None];
+pub const REFERENCES: [CullKind; 2] = [CullKind::Cychosz, CullKind::NoCull];
 
 /// One cull-alone timing lasts at least this long (the pass over the batch is repeated),
 /// so that the clock's own cost (tens of ns) stays below 0.2 % of it.
@@ -506,7 +507,10 @@ mod tests {
             .unwrap();
         assert!(skala.ratio < 0.6, "{skala:?}");
         // A level this CPU lacks is an error, not a silent fallback.
-        let missing = Isa::ALL.into_iter().find(|i| !Isa::available().contains(i));
+        let missing = Isa::ALL
+            .iter()
+            .copied()
+            .find(|i| !Isa::available().contains(i));
         if let Some(isa) = missing {
             let options = PairedOptions {
                 batch_isa: Some(isa),

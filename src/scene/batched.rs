@@ -13,10 +13,8 @@
 
 use crate::scene::{Scene, SceneHit};
 use glam::Vec3A;
-use torus_cull::batch::Dispatch;
-use torus_cull::batch::NoBatchForm;
-use torus_cull::batch::Wavefront;
-use torus_cull::{CullKind, Ray};
+use torus_cull::Ray;
+use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 
 /// What a batched traversal did, summed over its rays.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -42,10 +40,10 @@ pub struct LeafBatchStats {
 pub fn trace_leaves_batched(
     scene: &Scene,
     dispatch: &Dispatch,
-    cull: CullKind,
+    cull: BatchCull,
     rays: &[Ray],
     stats: &mut LeafBatchStats,
-) -> Result<Vec<SceneHit>, NoBatchForm> {
+) -> Vec<SceneHit> {
     let bvh = scene.bvh();
     // Pass 1: every (torus, ray) candidate, bucketed by torus.
     let mut candidates: Vec<Vec<u32>> = vec![Vec::new(); scene.tori.len()];
@@ -75,7 +73,7 @@ pub fn trace_leaves_batched(
         batch_rays.clear();
         batch_rays.extend(which.iter().map(|&i| rays[i as usize]));
         let torus = &scene.tori[torus_index];
-        let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits)?;
+        let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits);
         stats.leaf_candidates += which.len() as u64;
         stats.cull_rejects += (s.rays - s.kept) as u64;
         stats.intersections += s.kept as u64;
@@ -89,5 +87,5 @@ pub fn trace_leaves_batched(
             }
         }
     }
-    Ok(best)
+    best
 }

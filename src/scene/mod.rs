@@ -20,7 +20,7 @@ use rand_pcg::Pcg64;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
-use torus_cull::{Cull, Ray, Torus, intersect};
+use torus_cull::{Cull, Named, Ray, Torus, UnknownName, intersect};
 
 /// A many-torus scene layout.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -36,16 +36,16 @@ pub enum SceneKind {
     FacingGrid,
 }
 
-impl SceneKind {
-    /// Every scene, in table order.
-    pub const ALL: [SceneKind; 3] = [
+/// Every scene by its stable name, in table order.
+impl Named for SceneKind {
+    const KIND: &'static str = "scene";
+    const ALL: &'static [SceneKind] = &[
         SceneKind::RingField,
         SceneKind::Chain,
         SceneKind::FacingGrid,
     ];
 
-    /// The stable name.
-    pub fn name(self) -> &'static str {
+    fn name(self) -> &'static str {
         match self {
             SceneKind::RingField => "ring_field",
             SceneKind::Chain => "chain",
@@ -61,17 +61,9 @@ impl fmt::Display for SceneKind {
 }
 
 impl FromStr for SceneKind {
-    type Err = String;
-    fn from_str(s: &str) -> Result<SceneKind, String> {
-        SceneKind::ALL
-            .into_iter()
-            .find(|k| k.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown scene '{s}' (allowed: {})",
-                    SceneKind::ALL.map(|k| k.name()).join(", ")
-                )
-            })
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<SceneKind, UnknownName> {
+        SceneKind::parse(s)
     }
 }
 

@@ -29,7 +29,7 @@ use rand_pcg::Pcg64;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
-use torus_cull::{Ray, Torus};
+use torus_cull::{Named, Ray, Torus, UnknownName};
 
 /// A workload case.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -47,9 +47,10 @@ pub enum Case {
     Camera,
 }
 
-impl Case {
-    /// Every case, in table order.
-    pub const ALL: [Case; 5] = [
+/// Every case by its stable name, in table order.
+impl Named for Case {
+    const KIND: &'static str = "case";
+    const ALL: &'static [Case] = &[
         Case::Hole,
         Case::OuterBand,
         Case::Grazing,
@@ -57,8 +58,7 @@ impl Case {
         Case::Camera,
     ];
 
-    /// The stable name.
-    pub fn name(self) -> &'static str {
+    fn name(self) -> &'static str {
         match self {
             Case::Hole => "hole",
             Case::OuterBand => "outer_band",
@@ -67,7 +67,9 @@ impl Case {
             Case::Camera => "camera",
         }
     }
+}
 
+impl Case {
     /// Whether the case is defined only for a torus with a hole (ν > 1).
     pub fn needs_hole(self) -> bool {
         matches!(self, Case::Hole)
@@ -93,15 +95,9 @@ impl fmt::Display for Case {
 }
 
 impl FromStr for Case {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Case, String> {
-        Case::ALL
-            .into_iter()
-            .find(|c| c.name() == s)
-            .ok_or_else(|| {
-                let names: Vec<_> = Case::ALL.iter().map(|c| c.name()).collect();
-                format!("unknown case '{s}' (allowed: {})", names.join(", "))
-            })
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<Case, UnknownName> {
+        Case::parse(s)
     }
 }
 

@@ -12,10 +12,28 @@ use serde::Deserialize;
 use sha2::{Digest, Sha256};
 use std::fmt;
 use std::path::{Path, PathBuf};
-use torus_cull::MAX_NU;
+use torus_cull::{MAX_NU, Named};
 
 /// The most rays per (case, ν) a workload may ask for.
 pub const MAX_RAYS: i64 = 10_000_000;
+
+/// The workloads built into the binary, by name: `--workload default` and
+/// `--workload quick` need no file, so the installed command runs from any folder. Their
+/// bytes are the repository's `workloads/default.json` and `workloads/quick.json`, so a
+/// run records the same name and `workload_sha256` as one that reads the file.
+pub const BUILT_IN: [(&str, &str); 2] = [
+    ("default", include_str!("../../workloads/default.json")),
+    ("quick", include_str!("../../workloads/quick.json")),
+];
+
+/// The text of the built-in workload that `arg` names, if it is exactly one of the names
+/// of [`BUILT_IN`] (anything else, `./quick` included, is a file path).
+pub fn built_in(arg: &Path) -> Option<&'static str> {
+    BUILT_IN
+        .iter()
+        .find(|(name, _)| arg.as_os_str() == *name)
+        .map(|&(_, text)| text)
+}
 
 /// A parsed, validated workload file.
 #[derive(Debug, Clone, PartialEq)]
@@ -114,6 +132,15 @@ impl fmt::Display for WorkloadError {
 impl std::error::Error for WorkloadError {}
 
 impl Workload {
+    /// `--workload ARG`: the built-in workload `arg` names ([`BUILT_IN`]), or else the
+    /// workload file at `arg`.
+    pub fn open(arg: &Path) -> Result<Workload, WorkloadError> {
+        match built_in(arg) {
+            Some(text) => Workload::parse(text.as_bytes(), arg),
+            None => Workload::load(arg),
+        }
+    }
+
     /// Read and validate a workload file.
     pub fn load(path: &Path) -> Result<Workload, WorkloadError> {
         let bytes = std::fs::read(path).map_err(|e| WorkloadError {
@@ -196,7 +223,7 @@ fn parse_cases(names: &[String]) -> Result<Vec<Case>, FieldError> {
     }
     let mut cases = Vec::new();
     for name in names {
-        let case: Case = name.parse().map_err(|e: String| (field(), e))?;
+        let case = Case::parse(name).map_err(|e| (field(), e.to_string()))?;
         if cases.contains(&case) {
             return Err((field(), format!("'{name}' is listed twice")));
         }
@@ -295,10 +322,7 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
     }
     let mut scenes = Vec::new();
     for name in &raw.scenes {
-        scenes.push(
-            name.parse::<SceneKind>()
-                .map_err(|e| (field("scenes"), e))?,
-        );
+        scenes.push(SceneKind::parse(name).map_err(|e| (field("scenes"), e.to_string()))?);
     }
     if raw.nu.is_empty() {
         return Err((
@@ -340,7 +364,7 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
 }
 
 fn case_names() -> String {
-    Case::ALL.map(|c| c.name()).join(", ")
+    Case::allowed().join(", ")
 }
 
 fn hex(bytes: &[u8]) -> String {
@@ -356,6 +380,22 @@ mod tests {
     }
 
     const GOOD: &str = r#"{"name":"t","seed":7,"cases":["hole","uniform"],"nu":[4,1.5],"rays":10}"#;
+
+    /// Each built-in workload is valid, is named as it is asked for, and is the file's
+    /// workload, hash included.
+    #[test]
+    fn built_in_workloads_are_the_files() {
+        for (name, _) in BUILT_IN {
+            let embedded = Workload::open(Path::new(name)).unwrap();
+            assert_eq!(embedded.name, name);
+            let file = Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("workloads")
+                .join(format!("{name}.json"));
+            assert_eq!(embedded, Workload::load(&file).unwrap());
+        }
+        assert!(built_in(Path::new("./quick")).is_none());
+        assert!(built_in(Path::new("quick.json")).is_none());
+    }
 
     #[test]
     fn good_file_parses_sorted() {

@@ -75,6 +75,7 @@ pub mod certified;
 pub mod cull;
 mod geometry;
 pub mod intersect;
+mod names;
 mod num;
 pub mod quartic;
 
@@ -101,6 +102,7 @@ pub use geometry::{
     NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
 };
 pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
+pub use names::{Named, UnknownName};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
 /// intersection only if the cull keeps the ray. This is the timed `total_ns` path.

@@ -8,16 +8,14 @@
 
 use super::lines::{BLOCK, Lines};
 use super::mask::KeepMask;
+use crate::CullBounds;
+use crate::cull::BatchCull;
 use crate::cull::KernelVisitor;
 use crate::cull::kernel::CullKernel;
 use crate::num::Dispatch;
 use crate::num::F32s;
 use crate::num::Vec3s;
-use crate::{CullBounds, CullKind};
 use pulp::{Simd, WithSimd};
-
-// Re-exported here for the wavefront, which names it through this module.
-pub use crate::cull::NoBatchForm;
 
 /// Runs `cull` on every line of `lines` at the dispatch level `dispatch`, writing one
 /// keep bit per line into `keep` (resized to `lines.len()`).
@@ -27,11 +25,11 @@ pub use crate::cull::NoBatchForm;
 /// [`crate::Torus::bounds`] of the torus whose frame `lines` are in.
 pub fn cull_batch(
     dispatch: &Dispatch,
-    cull: CullKind,
+    cull: BatchCull,
     bounds: &CullBounds,
     lines: &Lines,
     keep: &mut KeepMask,
-) -> Result<(), NoBatchForm> {
+) {
     /// Runs the visited kernel at `dispatch`.
     struct Visit<'a> {
         dispatch: &'a Dispatch,
@@ -57,10 +55,8 @@ pub fn cull_batch(
         bounds,
         lines,
         words: &mut keep.words,
-    })
-    .ok_or(NoBatchForm(cull))?;
+    });
     keep.clear_tail();
-    Ok(())
 }
 
 /// One kernel over every block of lines, inside pulp's `#[target_feature]` context.

@@ -8,7 +8,8 @@
 //! * [`Lines`]: torus-frame lines as structure of arrays ([`Lines::from_rays`] builds
 //!   them from world rays with [`crate::Torus::line_to_local`], the scalar path's own
 //!   transform).
-//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. Each cull is written
+//! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. The culls with a batch
+//!   form are [`BatchCull`] ([`crate::CullKind::batched`] converts). Each cull is written
 //!   once in [`crate::cull`], generic over the lane width; the scalar cull is the same
 //!   kernel at width 1, so the verdicts are bit-identical (`tests/batch.rs` checks it at
 //!   every dispatch level).
@@ -25,7 +26,7 @@
 //! The harness's BVH scenes use the wavefront at their leaves (`harness::scene::batched`).
 //!
 //! ```
-//! use torus_cull::batch::{Dispatch, KeepMask, Lines, Wavefront, cull_batch};
+//! use torus_cull::batch::{BatchCull, Dispatch, KeepMask, Lines, Wavefront, cull_batch};
 //! use torus_cull::{CullKind, Ray, Torus, intersect_culled};
 //! use glam::Vec3;
 //!
@@ -39,14 +40,14 @@
 //! // The cull alone: one keep bit per ray, the scalar verdict bit for bit.
 //! let mut keep = KeepMask::new();
 //! let lines = Lines::from_rays(&torus, &rays); // in the torus frame, as the culls see them
-//! cull_batch(&dispatch, CullKind::Skala, torus.bounds(), &lines, &mut keep)?;
+//! cull_batch(&dispatch, BatchCull::Skala, torus.bounds(), &lines, &mut keep);
 //! assert!(!keep.get(32)); // x = 0: down the middle of the hole
 //! assert!(keep.get(0)); // x = −4: down through the tube
 //!
 //! // Cull, compact the survivors, intersect them on f64 lanes.
 //! let mut wavefront = Wavefront::new();
 //! let mut hits = Vec::new();
-//! let stats = wavefront.intersect(&dispatch, CullKind::Skala, &torus, &rays, &mut hits)?;
+//! let stats = wavefront.intersect(&dispatch, BatchCull::Skala, &torus, &rays, &mut hits);
 //! assert_eq!(stats.kept, keep.count_kept());
 //! for (ray, hit) in rays.iter().zip(&hits) {
 //!     let scalar = intersect_culled(&CullKind::Skala, &torus, ray);
@@ -76,9 +77,9 @@ mod solve;
 mod to_local;
 mod wavefront;
 
-pub use crate::cull::BATCHED;
+pub use crate::cull::{BATCHED, BatchCull};
 pub use crate::num::{Dispatch, ISA_ENV, Isa, IsaError};
-pub use cull::{NoBatchForm, cull_batch};
+pub use cull::cull_batch;
 pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
 pub use solve::{Quartics, SolveStats, nearest_roots};

@@ -11,12 +11,13 @@
 //! the [`crate::intersect_culled`] hit up to the last bits of the solver.
 
 use super::certified::{F32Answers, Proof, certify_lanes};
-use super::cull::{NoBatchForm, cull_batch};
+use super::cull::cull_batch;
 use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
+use crate::cull::BatchCull;
 use crate::num::Dispatch;
-use crate::{CullKind, Hit, Ray, Torus, intersect};
+use crate::{Hit, Ray, Torus, intersect};
 use glam::Vec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
@@ -61,12 +62,12 @@ impl Wavefront {
     pub fn intersect(
         &mut self,
         dispatch: &Dispatch,
-        cull: CullKind,
+        cull: BatchCull,
         torus: &Torus,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
-    ) -> Result<WavefrontStats, NoBatchForm> {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits)?;
+    ) -> WavefrontStats {
+        self.cull_and_compact(dispatch, cull, torus, rays, hits);
         intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
         let mut stats = WavefrontStats {
             rays: rays.len(),
@@ -92,7 +93,7 @@ impl Wavefront {
             stats.scalar_fallbacks += 1;
         }
         stats.hits = hits.iter().filter(|h| h.is_some()).count();
-        Ok(stats)
+        stats
     }
 
     /// [`Wavefront::intersect`] through the certified f32 path ([`crate::intersect_f32`]
@@ -103,11 +104,11 @@ impl Wavefront {
     pub fn intersect_f32(
         &mut self,
         dispatch: &Dispatch,
-        cull: CullKind,
+        cull: BatchCull,
         torus: &Torus,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
-    ) -> Result<WavefrontStats, NoBatchForm> {
+    ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Certify)
     }
 
@@ -117,24 +118,24 @@ impl Wavefront {
     pub fn intersect_f32_uncertified(
         &mut self,
         dispatch: &Dispatch,
-        cull: CullKind,
+        cull: BatchCull,
         torus: &Torus,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
-    ) -> Result<WavefrontStats, NoBatchForm> {
+    ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Uncertified)
     }
 
     fn f32_pass(
         &mut self,
         dispatch: &Dispatch,
-        cull: CullKind,
+        cull: BatchCull,
         torus: &Torus,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
         proof: Proof,
-    ) -> Result<WavefrontStats, NoBatchForm> {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits)?;
+    ) -> WavefrontStats {
+        self.cull_and_compact(dispatch, cull, torus, rays, hits);
         certify_lanes(
             dispatch,
             torus,
@@ -165,7 +166,7 @@ impl Wavefront {
             stats.escalated += 1;
         }
         stats.hits = hits.iter().filter(|h| h.is_some()).count();
-        Ok(stats)
+        stats
     }
 
     /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns;
@@ -173,21 +174,20 @@ impl Wavefront {
     fn cull_and_compact(
         &mut self,
         dispatch: &Dispatch,
-        cull: CullKind,
+        cull: BatchCull,
         torus: &Torus,
         rays: &[Ray],
         hits: &mut Vec<Option<Hit>>,
-    ) -> Result<(), NoBatchForm> {
+    ) {
         hits.clear();
         hits.resize(rays.len(), None);
-        if cull == CullKind::None {
+        if cull == BatchCull::NoCull {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {
             self.lines.fill_from_rays_batch(dispatch, torus, rays);
-            cull_batch(dispatch, cull, torus.bounds(), &self.lines, &mut self.keep)?;
+            cull_batch(dispatch, cull, torus.bounds(), &self.lines, &mut self.keep);
             let count = self.keep.count_kept();
             self.survivors.fill(rays, self.keep.kept(), count);
         }
-        Ok(())
     }
 }

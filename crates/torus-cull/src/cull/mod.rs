@@ -14,7 +14,7 @@
 //! * `registry`: [`CullKind`], the registry by stable name, used in results, the CLI and
 //!   the plots; its [`CullKind::visit`] hands a concrete cull type to generic code, so that
 //!   benchmark and BVH loops are monomorphized per cull instead of paying a dynamic
-//!   dispatch per ray; [`BATCHED`] lists the culls with a batch form.
+//!   dispatch per ray; [`BatchCull`] names the culls with a batch form ([`BATCHED`]).
 //!
 //! # Floating-point safety margin
 //! Exact arithmetic is conservative, rounding is not: a plain f32 evaluation rejects some
@@ -50,7 +50,7 @@ pub use kernel::{Cull, CullVisitor};
 pub use none::NoCull;
 pub use quadric::QuadricCull;
 pub(crate) use registry::KernelVisitor;
-pub use registry::{BATCHED, CullKind, NoBatchForm, UnknownCull};
+pub use registry::{BATCHED, BatchCull, CullKind};
 pub use skala::SkalaCull;
 pub use steps::foot_point;
 pub(crate) use steps::{AXIS_PARALLEL_H2, moderate, rescaled};

@@ -1,32 +1,34 @@
 //! Every cull by its stable name ([`CullKind`], used in results, the CLI and the plots),
-//! parsed from text ([`UnknownCull`]), and the ones with a batch form ([`BATCHED`]).
+//! parsed from text ([`Named`]), and the ones with a batch form ([`BatchCull`]).
 
 use super::kernel::{Cull, CullKernel, CullVisitor};
 use super::{
     AabbCull, CullBounds, CychoszCull, DiscriminantCull, DiscriminantF64Cull, EllipsoidCull,
     NoCull, QuadricCull, SkalaCull, SphereCull, ThickCylinderCull,
 };
+use crate::names::{Named, UnknownName};
 use glam::Vec3;
 use std::fmt;
 use std::str::FromStr;
 
-/// The one map from [`CullKind`] to its cull type: binds the cull of `$kind` to `$cull`
-/// and evaluates `$body`, for every cull with a kernel; `discriminant_f64` (no kernel, no
-/// batch form) evaluates `$f64` instead. [`CullKind::visit`] and
-/// [`CullKind::visit_kernel`] are this map with two different trait bounds.
+/// The one map from a cull's name to its type: binds the cull of `$kind` (a [`CullKind`]
+/// or a [`BatchCull`], `$enum`) to `$cull` and evaluates `$body`, for every cull with a
+/// kernel; `discriminant_f64` (a [`CullKind`] only: no kernel, no batch form) evaluates
+/// `$f64` instead. [`CullKind::visit`] and [`BatchCull::visit_kernel`] are this map with
+/// two different trait bounds.
 macro_rules! by_kind {
-    ($kind:expr, $cull:ident => $body:expr, f64: $f64:expr) => {
+    ($enum:ident, $kind:expr, $cull:ident => $body:expr $(, f64: $f64:expr)?) => {
         match $kind {
-            CullKind::None => by_kind!(@bind $cull = NoCull, $body),
-            CullKind::Sphere => by_kind!(@bind $cull = SphereCull, $body),
-            CullKind::Aabb => by_kind!(@bind $cull = AabbCull, $body),
-            CullKind::Cychosz => by_kind!(@bind $cull = CychoszCull, $body),
-            CullKind::ThickCylinder => by_kind!(@bind $cull = ThickCylinderCull, $body),
-            CullKind::Skala => by_kind!(@bind $cull = SkalaCull, $body),
-            CullKind::Ellipsoid => by_kind!(@bind $cull = EllipsoidCull, $body),
-            CullKind::Quadric => by_kind!(@bind $cull = QuadricCull, $body),
-            CullKind::Discriminant => by_kind!(@bind $cull = DiscriminantCull, $body),
-            CullKind::DiscriminantF64 => $f64,
+            $enum::NoCull => by_kind!(@bind $cull = NoCull, $body),
+            $enum::Sphere => by_kind!(@bind $cull = SphereCull, $body),
+            $enum::Aabb => by_kind!(@bind $cull = AabbCull, $body),
+            $enum::Cychosz => by_kind!(@bind $cull = CychoszCull, $body),
+            $enum::ThickCylinder => by_kind!(@bind $cull = ThickCylinderCull, $body),
+            $enum::Skala => by_kind!(@bind $cull = SkalaCull, $body),
+            $enum::Ellipsoid => by_kind!(@bind $cull = EllipsoidCull, $body),
+            $enum::Quadric => by_kind!(@bind $cull = QuadricCull, $body),
+            $enum::Discriminant => by_kind!(@bind $cull = DiscriminantCull, $body),
+            $(CullKind::DiscriminantF64 => $f64,)?
         }
     };
     (@bind $cull:ident = $value:expr, $body:expr) => {{
@@ -36,10 +38,38 @@ macro_rules! by_kind {
 }
 
 /// Every cull by name: the registry.
+///
+/// A cull chosen at run time (from a results file, the command line, a setting) is a
+/// `CullKind`; it is a [`Cull`] itself, and [`CullKind::visit`] hands generic code the
+/// concrete cull type instead. The names are stable ([`Named`]): they are what results
+/// files record.
+///
+/// ```
+/// use torus_cull::{CullKind, Named, Ray, Torus, intersect_culled};
+/// use glam::Vec3;
+///
+/// let kind: CullKind = "skala".parse()?;
+/// assert_eq!(kind, CullKind::Skala);
+/// assert_eq!(kind.to_string(), "skala");
+/// assert_eq!(CullKind::NoCull.name(), "none"); // the baseline: no test at all
+/// assert!("donut".parse::<CullKind>().is_err());
+///
+/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+/// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::NEG_Y)?; // straight down the hole
+/// let line = torus.line_to_local(&hole);
+/// assert!(!kind.keeps(torus.bounds(), line.origin, line.dir)); // a proven miss
+/// assert!(CullKind::NoCull.keeps(torus.bounds(), line.origin, line.dir)); // keeps all
+///
+/// // Every cull gives the same answer; they differ in how many quartics they spare.
+/// for kind in CullKind::TIMED {
+///     assert_eq!(intersect_culled(&kind, &torus, &hole), None, "{kind}");
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum CullKind {
-    /// No test: always run the quartic (the baseline).
-    None,
+    /// No test: always run the quartic (the baseline), [`NoCull`]; named `none`.
+    NoCull,
     /// Bounding sphere of radius R + r.
     Sphere,
     /// The torus's box [−(R+r), R+r] × [−r, r] × [−(R+r), R+r].
@@ -63,7 +93,7 @@ pub enum CullKind {
 impl CullKind {
     /// The culls measured by the harness, in table order.
     pub const TIMED: [CullKind; 10] = [
-        CullKind::None,
+        CullKind::NoCull,
         CullKind::Sphere,
         CullKind::Aabb,
         CullKind::Cychosz,
@@ -75,25 +105,9 @@ impl CullKind {
         CullKind::DiscriminantF64,
     ];
 
-    /// The stable name.
-    pub fn name(self) -> &'static str {
-        match self {
-            CullKind::None => "none",
-            CullKind::Sphere => "sphere",
-            CullKind::Aabb => "aabb",
-            CullKind::Cychosz => "cychosz",
-            CullKind::ThickCylinder => "thick_cylinder",
-            CullKind::Skala => "skala",
-            CullKind::Ellipsoid => "ellipsoid",
-            CullKind::Quadric => "quadric",
-            CullKind::Discriminant => "discriminant",
-            CullKind::DiscriminantF64 => "discriminant_f64",
-        }
-    }
-
     /// Hands the concrete cull to `visitor`, so generic code is monomorphized per cull.
     pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
-        by_kind!(self, cull => visitor.visit(cull), f64: visitor.visit(DiscriminantF64Cull))
+        by_kind!(CullKind, self, cull => visitor.visit(cull), f64: visitor.visit(DiscriminantF64Cull))
     }
 
     /// One line through the registry: convenient, but dispatches per call.
@@ -114,7 +128,7 @@ impl CullKind {
 /// cull's own type, one `match` per line dearer.
 impl Cull for CullKind {
     fn name(&self) -> &'static str {
-        CullKind::name(*self)
+        Named::name(*self)
     }
 
     #[inline]
@@ -123,39 +137,37 @@ impl Cull for CullKind {
     }
 }
 
+/// The registry by stable name: `"skala".parse::<CullKind>()`, `format!("{kind}")`.
+impl Named for CullKind {
+    const KIND: &'static str = "cull";
+    const ALL: &'static [CullKind] = &CullKind::TIMED;
+
+    fn name(self) -> &'static str {
+        match self {
+            CullKind::NoCull => "none",
+            CullKind::Sphere => "sphere",
+            CullKind::Aabb => "aabb",
+            CullKind::Cychosz => "cychosz",
+            CullKind::ThickCylinder => "thick_cylinder",
+            CullKind::Skala => "skala",
+            CullKind::Ellipsoid => "ellipsoid",
+            CullKind::Quadric => "quadric",
+            CullKind::Discriminant => "discriminant",
+            CullKind::DiscriminantF64 => "discriminant_f64",
+        }
+    }
+}
+
 impl fmt::Display for CullKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
+        f.write_str(Named::name(*self))
     }
 }
-
-/// An unknown cull name.
-#[derive(Debug, Clone, PartialEq, Eq)]
-#[non_exhaustive]
-pub struct UnknownCull(pub String);
-
-impl fmt::Display for UnknownCull {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let names: Vec<_> = CullKind::TIMED.iter().map(|c| c.name()).collect();
-        write!(
-            f,
-            "unknown cull '{}' (allowed: {})",
-            self.0,
-            names.join(", ")
-        )
-    }
-}
-
-impl std::error::Error for UnknownCull {}
 
 impl FromStr for CullKind {
-    type Err = UnknownCull;
-    fn from_str(s: &str) -> Result<CullKind, UnknownCull> {
-        CullKind::TIMED
-            .iter()
-            .copied()
-            .find(|c| c.name() == s)
-            .ok_or_else(|| UnknownCull(s.to_string()))
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<CullKind, UnknownName> {
+        CullKind::parse(s)
     }
 }
 
@@ -167,49 +179,130 @@ pub(crate) trait KernelVisitor {
     fn visit<K: CullKernel>(self, kernel: K) -> Self::Output;
 }
 
+/// The culls with a batch form ([`crate::batch::cull_batch`], the
+/// [`crate::batch::Wavefront`]): every [`CullKind`] but `discriminant_f64`, whose point is
+/// the f64 evaluation, which the f32 `discriminant` already makes unnecessary at this
+/// padding. The batch API takes a `BatchCull`, so a cull without a batch form is refused
+/// when the program is compiled, not when it runs; [`CullKind::batched`] converts a cull
+/// chosen at run time.
+///
+/// ```
+/// use torus_cull::batch::{BATCHED, BatchCull};
+/// use torus_cull::{CullKind, Named};
+///
+/// assert_eq!(CullKind::Skala.batched(), Some(BatchCull::Skala));
+/// assert_eq!(CullKind::DiscriminantF64.batched(), None);
+/// assert_eq!(CullKind::from(BatchCull::Skala), CullKind::Skala);
+/// // The same stable names as the scalar culls, in the same table order.
+/// assert_eq!(BatchCull::Quadric.name(), "quadric");
+/// assert_eq!(BATCHED.len(), CullKind::TIMED.len() - 1);
+/// let err = BatchCull::parse("discriminant_f64").unwrap_err().to_string();
+/// assert!(err.starts_with("unknown batched cull 'discriminant_f64' (allowed: none, "));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum BatchCull {
+    /// [`CullKind::NoCull`]: no cull stage, every ray is intersected (the baseline).
+    NoCull,
+    /// [`CullKind::Sphere`].
+    Sphere,
+    /// [`CullKind::Aabb`].
+    Aabb,
+    /// [`CullKind::Cychosz`].
+    Cychosz,
+    /// [`CullKind::ThickCylinder`].
+    ThickCylinder,
+    /// [`CullKind::Skala`].
+    Skala,
+    /// [`CullKind::Ellipsoid`].
+    Ellipsoid,
+    /// [`CullKind::Quadric`].
+    Quadric,
+    /// [`CullKind::Discriminant`].
+    Discriminant,
+}
+
+/// Every [`BatchCull`], in [`CullKind::TIMED`] order.
+pub const BATCHED: [BatchCull; 9] = [
+    BatchCull::NoCull,
+    BatchCull::Sphere,
+    BatchCull::Aabb,
+    BatchCull::Cychosz,
+    BatchCull::ThickCylinder,
+    BatchCull::Skala,
+    BatchCull::Ellipsoid,
+    BatchCull::Quadric,
+    BatchCull::Discriminant,
+];
+
 impl CullKind {
-    /// Hands the cull's one-source kernel to `visitor`, or `None` for a cull without a
-    /// lane form (`discriminant_f64`): the kernels are exactly [`BATCHED`].
-    pub(crate) fn visit_kernel<V: KernelVisitor>(self, visitor: V) -> Option<V::Output> {
-        Some(by_kind!(self, kernel => visitor.visit(kernel), f64: return None))
+    /// This cull's batch form, or `None` for the one cull without one
+    /// (`discriminant_f64`).
+    pub const fn batched(self) -> Option<BatchCull> {
+        Some(match self {
+            CullKind::NoCull => BatchCull::NoCull,
+            CullKind::Sphere => BatchCull::Sphere,
+            CullKind::Aabb => BatchCull::Aabb,
+            CullKind::Cychosz => BatchCull::Cychosz,
+            CullKind::ThickCylinder => BatchCull::ThickCylinder,
+            CullKind::Skala => BatchCull::Skala,
+            CullKind::Ellipsoid => BatchCull::Ellipsoid,
+            CullKind::Quadric => BatchCull::Quadric,
+            CullKind::Discriminant => BatchCull::Discriminant,
+            CullKind::DiscriminantF64 => return None,
+        })
     }
 }
 
-/// The culls with a batch form, in [`CullKind::TIMED`] order: every one but
-/// `discriminant_f64`, whose point is the f64 evaluation, which the f32 `discriminant`
-/// already makes unnecessary at this padding.
-pub const BATCHED: [CullKind; 9] = {
-    let mut out = [CullKind::None; 9];
-    let (mut i, mut n) = (0, 0);
-    while i < CullKind::TIMED.len() {
-        if !matches!(CullKind::TIMED[i], CullKind::DiscriminantF64) {
-            out[n] = CullKind::TIMED[i];
-            n += 1;
+impl BatchCull {
+    /// The same cull in the registry of every cull.
+    pub const fn kind(self) -> CullKind {
+        match self {
+            BatchCull::NoCull => CullKind::NoCull,
+            BatchCull::Sphere => CullKind::Sphere,
+            BatchCull::Aabb => CullKind::Aabb,
+            BatchCull::Cychosz => CullKind::Cychosz,
+            BatchCull::ThickCylinder => CullKind::ThickCylinder,
+            BatchCull::Skala => CullKind::Skala,
+            BatchCull::Ellipsoid => CullKind::Ellipsoid,
+            BatchCull::Quadric => CullKind::Quadric,
+            BatchCull::Discriminant => CullKind::Discriminant,
         }
-        i += 1;
     }
-    assert!(n == out.len());
-    out
-};
 
-/// A cull without a batch form.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub struct NoBatchForm(pub CullKind);
-
-impl fmt::Display for NoBatchForm {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let names: Vec<&str> = BATCHED.iter().map(|c| c.name()).collect();
-        write!(
-            f,
-            "cull '{}' has no batch form (batched: {})",
-            self.0,
-            names.join(", ")
-        )
+    /// Hands the cull's one-source kernel to `visitor`.
+    pub(crate) fn visit_kernel<V: KernelVisitor>(self, visitor: V) -> V::Output {
+        by_kind!(BatchCull, self, kernel => visitor.visit(kernel))
     }
 }
 
-impl std::error::Error for NoBatchForm {}
+impl From<BatchCull> for CullKind {
+    fn from(cull: BatchCull) -> CullKind {
+        cull.kind()
+    }
+}
+
+/// The stable names of [`CullKind`], in its table order.
+impl Named for BatchCull {
+    const KIND: &'static str = "batched cull";
+    const ALL: &'static [BatchCull] = &BATCHED;
+
+    fn name(self) -> &'static str {
+        Named::name(self.kind())
+    }
+}
+
+impl fmt::Display for BatchCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(Named::name(*self))
+    }
+}
+
+impl FromStr for BatchCull {
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<BatchCull, UnknownName> {
+        BatchCull::parse(s)
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -233,14 +326,33 @@ mod tests {
     }
 
     #[test]
-    fn the_kernels_are_the_batched_culls() {
-        struct Has;
-        impl KernelVisitor for Has {
-            type Output = ();
-            fn visit<K: CullKernel>(self, _: K) {}
+    fn the_batched_culls_are_the_timed_ones_with_a_kernel() {
+        // The type each enum hands over: the same cull type for the same name.
+        struct Kernel;
+        impl KernelVisitor for Kernel {
+            type Output = &'static str;
+            fn visit<K: CullKernel>(self, _: K) -> &'static str {
+                std::any::type_name::<K>()
+            }
         }
-        for c in CullKind::TIMED {
-            assert_eq!(c.visit_kernel(Has).is_some(), BATCHED.contains(&c), "{c}");
+        struct Scalar;
+        impl CullVisitor for Scalar {
+            type Output = &'static str;
+            fn visit<C: Cull>(self, _: C) -> &'static str {
+                std::any::type_name::<C>()
+            }
         }
+        let batched: Vec<CullKind> = CullKind::TIMED
+            .iter()
+            .filter_map(|c| c.batched())
+            .map(CullKind::from)
+            .collect();
+        assert_eq!(batched, BATCHED.map(CullKind::from));
+        for b in BATCHED {
+            assert_eq!(b.kind().batched(), Some(b));
+            assert_eq!(b.visit_kernel(Kernel), b.kind().visit(Scalar));
+            assert_eq!(b.to_string(), b.kind().to_string());
+        }
+        assert_eq!(CullKind::DiscriminantF64.batched(), None);
     }
 }

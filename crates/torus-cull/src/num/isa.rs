@@ -6,6 +6,7 @@
 //! `TORUS_CULL_ISA` forces a lower level, so that AVX2 or the scalar fallback can be
 //! measured and tested on an AVX-512 machine.
 
+use crate::names::{Named, UnknownName};
 use std::fmt;
 use std::str::FromStr;
 
@@ -26,12 +27,12 @@ pub enum Isa {
     Avx512,
 }
 
-impl Isa {
-    /// Every level, lowest first.
-    pub const ALL: [Isa; 4] = [Isa::Scalar, Isa::Neon, Isa::Avx2, Isa::Avx512];
+/// The stable names, as in `meta.isa` and `TORUS_CULL_ISA`; every level, lowest first.
+impl Named for Isa {
+    const KIND: &'static str = "instruction set";
+    const ALL: &'static [Isa] = &[Isa::Scalar, Isa::Neon, Isa::Avx2, Isa::Avx512];
 
-    /// The stable name, as in `meta.isa` and `TORUS_CULL_ISA`.
-    pub fn name(self) -> &'static str {
+    fn name(self) -> &'static str {
         match self {
             Isa::Scalar => "scalar",
             Isa::Neon => "neon",
@@ -39,11 +40,14 @@ impl Isa {
             Isa::Avx512 => "avx512",
         }
     }
+}
 
+impl Isa {
     /// The levels this CPU can run, lowest first (always starts with `scalar`).
     pub fn available() -> Vec<Isa> {
         Isa::ALL
-            .into_iter()
+            .iter()
+            .copied()
             .filter(|&isa| Dispatch::forced(isa).is_ok())
             .collect()
     }
@@ -55,7 +59,14 @@ impl fmt::Display for Isa {
     }
 }
 
-/// A level name that is not one of [`Isa::ALL`], or a level this CPU lacks.
+impl FromStr for Isa {
+    type Err = UnknownName;
+    fn from_str(s: &str) -> Result<Isa, UnknownName> {
+        Isa::parse(s)
+    }
+}
+
+/// A `TORUS_CULL_ISA` that names no level, or a level this CPU lacks.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum IsaError {
@@ -67,7 +78,7 @@ pub enum IsaError {
 
 impl fmt::Display for IsaError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let names: Vec<&str> = Isa::ALL.iter().map(|i| i.name()).collect();
+        let names = Isa::allowed();
         let here: Vec<&str> = Isa::available().iter().map(|i| i.name()).collect();
         match self {
             IsaError::Unknown(s) => write!(
@@ -87,18 +98,31 @@ impl fmt::Display for IsaError {
 
 impl std::error::Error for IsaError {}
 
-impl FromStr for Isa {
-    type Err = IsaError;
-    fn from_str(s: &str) -> Result<Isa, IsaError> {
-        Isa::ALL
-            .into_iter()
-            .find(|i| i.name() == s)
-            .ok_or_else(|| IsaError::Unknown(s.to_string()))
-    }
-}
-
 /// A dispatch level proven available: hands the batch kernels to pulp's implementation for
 /// that level.
+///
+/// ```
+/// use torus_cull::Named;
+/// use torus_cull::batch::{Dispatch, Isa};
+///
+/// // The best level this CPU has: the last of the available ones, scalar always among them.
+/// let best = Dispatch::best();
+/// let here = Isa::available();
+/// assert_eq!(here.first(), Some(&Isa::Scalar));
+/// assert_eq!(here.last(), Some(&best.isa()));
+///
+/// // A lower level on request (to measure or test it), by value or by its stable name.
+/// let scalar = Dispatch::forced("scalar".parse()?)?;
+/// assert_eq!(scalar.isa(), Isa::Scalar);
+/// assert_eq!(scalar.isa().name(), "scalar");
+///
+/// // A level this CPU cannot run is an error, never a silent fallback.
+/// if cfg!(target_arch = "x86_64") {
+///     let err = Dispatch::forced(Isa::Neon).unwrap_err();
+///     assert!(err.to_string().contains("this CPU cannot run it"), "{err}");
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Copy)]
 pub struct Dispatch {
     arch: pulp::Arch,
@@ -125,7 +149,10 @@ impl Dispatch {
     /// empty; an unknown or unavailable name is an error that names the allowed values.
     pub fn from_env() -> Result<Dispatch, IsaError> {
         match std::env::var(ISA_ENV) {
-            Ok(s) if !s.trim().is_empty() => Dispatch::forced(s.trim().parse()?),
+            Ok(s) if !s.trim().is_empty() => {
+                let isa = Isa::parse(s.trim()).map_err(|e| IsaError::Unknown(e.name().into()))?;
+                Dispatch::forced(isa)
+            }
             Ok(_) | Err(std::env::VarError::NotPresent) => Ok(Dispatch::best()),
             Err(std::env::VarError::NotUnicode(s)) => {
                 Err(IsaError::Unknown(s.to_string_lossy().into_owned()))
@@ -197,7 +224,7 @@ mod tests {
 
     #[test]
     fn names_round_trip_and_bad_names_are_clear_errors() {
-        for isa in Isa::ALL {
+        for &isa in Isa::ALL {
             assert_eq!(isa.name().parse::<Isa>().unwrap(), isa);
         }
         let err = "sse9".parse::<Isa>().unwrap_err().to_string();

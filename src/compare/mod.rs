@@ -6,7 +6,7 @@
 //! * **timing**: `total_ns` slower by more than the threshold *and* with disjoint
 //!   confidence intervals is a regression; anything else is noise.
 //! * **ratio**: when both files have paired ratio records, they give the timing verdicts
-//!   instead (see [`crate::paired::compare`]).
+//!   instead (see `ratio.rs`).
 //! * **bvh**: a changed hit count or `matches_brute_force: false` is a regression. Mrays/s
 //!   is a single criterion figure with no interval, so a change beyond the threshold is
 //!   shown as `no verdict (no interval)` and decides nothing.
@@ -20,81 +20,17 @@
 //! not regressions; the CLI then exits 2, as it does when the two files share no record,
 //! so that a vacuous comparison never passes a CI gate.
 
+mod ratio;
+mod rows;
+
+pub use rows::{Report, Row};
+
 use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
-use std::collections::BTreeMap;
+use rows::pair_up;
 use std::fmt::Write;
-
-/// One compared record.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Row {
-    /// `rejection`, `timing` or `bvh`.
-    pub section: &'static str,
-    /// `case nu cull` or `scene nu cull`.
-    pub key: String,
-    /// What is compared.
-    pub metric: &'static str,
-    /// Old value.
-    pub old: f64,
-    /// New value.
-    pub new: f64,
-    /// Flags: `changed`, `REGRESSION: …`, `faster`, `slower (noise)`.
-    pub flags: Vec<String>,
-    /// Whether this row is a regression.
-    pub regression: bool,
-}
-
-/// The whole comparison.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct Report {
-    /// Records present in both files.
-    pub rows: Vec<Row>,
-    /// Keys only in the old file.
-    pub only_old: Vec<String>,
-    /// Keys only in the new file.
-    pub only_new: Vec<String>,
-    /// Notes on the files themselves (e.g. different workloads).
-    pub notes: Vec<String>,
-}
-
-impl Report {
-    /// Number of regressions.
-    pub fn regressions(&self) -> usize {
-        self.rows.iter().filter(|r| r.regression).count()
-    }
-
-    /// Number of records of the old file missing from the new one.
-    pub fn missing(&self) -> usize {
-        self.only_old.len()
-    }
-}
 
 fn key(kind: &str, nu: f64, cull: &str) -> String {
     format!("{kind} {nu} {cull}")
-}
-
-/// Matches records of the two files by key; keys on one side only go to the report.
-pub(crate) fn pair_up<'a, R>(
-    old: &'a [R],
-    new: &'a [R],
-    k: impl Fn(&R) -> String,
-    report: &mut Report,
-    section: &str,
-) -> Vec<(String, &'a R, &'a R)> {
-    let old_map: BTreeMap<String, &R> = old.iter().map(|r| (k(r), r)).collect();
-    let new_map: BTreeMap<String, &R> = new.iter().map(|r| (k(r), r)).collect();
-    for key in old_map.keys().filter(|k| !new_map.contains_key(*k)) {
-        report.only_old.push(format!("{section} {key}"));
-    }
-    for key in new_map.keys().filter(|k| !old_map.contains_key(*k)) {
-        report.only_new.push(format!("{section} {key}"));
-    }
-    // Keep the new file's order, which is table order.
-    new.iter()
-        .filter_map(|r| {
-            let key = k(r);
-            old_map.get(&key).map(|o| (key, *o, r))
-        })
-        .collect()
 }
 
 /// Compare `old` with `new`; `threshold` is a fraction (0.10 for 10 %).
@@ -136,7 +72,7 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     ) {
         report.rows.push(bvh_row(key, o, n, threshold));
     }
-    crate::paired::compare::ratio_rows(old, new, threshold, &mut report);
+    ratio::ratio_rows(old, new, threshold, &mut report);
     report
 }
 

@@ -23,13 +23,13 @@
 //! longer decide, because two absolute timings taken minutes apart differ by 10–20 % on a
 //! shared machine whatever the code does.
 
-use crate::compare::{Report, Row, pair_up};
+use super::rows::{Report, Row, pair_up};
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord, Results};
 
 /// Adds one `ratio` row per record present in both files to `report`, and, when both
 /// files have ratios, demotes the criterion `timing` rows' regressions to notes.
 /// `threshold` is a fraction (0.10 for 10 %).
-pub fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &mut Report) {
+pub(super) fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &mut Report) {
     if old.ratio.is_empty() || new.ratio.is_empty() {
         return;
     }
