@@ -6,9 +6,7 @@ use crate::errata::PrintedCull;
 use crate::oracle::{OracleClass, OracleLabel, classify};
 use crate::results::RejectionRecord;
 use crate::workload::{Batch, Case, GenerateError, generate, spec::Workload};
-use std::fmt;
-use std::str::FromStr;
-use torus_cull::{Cull, CullKind, CullVisitor, Named, Ray, UnknownName};
+use torus_cull::{Cull, CullKind, CullVisitor, Named, Ray};
 
 /// A cull the harness can count: a real one, or a paper-as-printed test fixture (counted
 /// only to watch the oracle catch it; never timed).
@@ -69,18 +67,7 @@ impl From<PrintedCull> for CountedCull {
     }
 }
 
-impl fmt::Display for CountedCull {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for CountedCull {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<CountedCull, UnknownName> {
-        CountedCull::parse(s)
-    }
-}
+torus_cull::named_display_and_from_str!(CountedCull);
 
 /// A batch with the oracle's label for each ray (ray mode, t ≥ 0).
 #[derive(Debug, Clone)]

@@ -19,8 +19,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::str::FromStr;
-use torus_cull::{Cull, Named, Ray, Torus, UnknownName, intersect};
+use torus_cull::{Cull, Named, Ray, Torus, intersect};
 
 /// A many-torus scene layout.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -54,18 +53,7 @@ impl Named for SceneKind {
     }
 }
 
-impl fmt::Display for SceneKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for SceneKind {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<SceneKind, UnknownName> {
-        SceneKind::parse(s)
-    }
-}
+torus_cull::named_display_and_from_str!(SceneKind);
 
 /// Per-ray work counters of a traversal.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

@@ -28,8 +28,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::str::FromStr;
-use torus_cull::{Named, Ray, Torus, UnknownName};
+use torus_cull::{Named, Ray, Torus};
 
 /// A workload case.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -88,18 +87,7 @@ impl Case {
     }
 }
 
-impl fmt::Display for Case {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Case {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<Case, UnknownName> {
-        Case::parse(s)
-    }
-}
+torus_cull::named_display_and_from_str!(Case);
 
 /// Where the torus sits in the world.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]

@@ -11,9 +11,9 @@ use std::fmt;
 
 /// An enum whose values have stable string names.
 ///
-/// Implementors usually also implement [`fmt::Display`] as `f.write_str(self.name())` and
-/// [`std::str::FromStr`] as [`Named::parse`], so that `format!("{value}")` and
-/// `s.parse()` work too.
+/// [`named_display_and_from_str!`](crate::named_display_and_from_str) gives an implementor
+/// [`fmt::Display`] (its name) and [`std::str::FromStr`] ([`Named::parse`]), so that
+/// `format!("{value}")` and `s.parse()` work too.
 ///
 /// ```
 /// use torus_cull::{CullKind, Named};
@@ -94,3 +94,30 @@ impl fmt::Display for UnknownName {
 }
 
 impl std::error::Error for UnknownName {}
+
+/// Implements [`fmt::Display`] (the stable name) and [`std::str::FromStr`]
+/// ([`Named::parse`], erring with [`UnknownName`]) for each [`Named`] type given.
+///
+/// ```
+/// use torus_cull::{Isa, Named};
+/// // Isa's impls come from this macro.
+/// assert_eq!(Isa::Scalar.to_string(), "scalar");
+/// assert_eq!("scalar".parse::<Isa>(), Ok(Isa::Scalar));
+/// ```
+#[macro_export]
+macro_rules! named_display_and_from_str {
+    ($($named:ty),+ $(,)?) => {$(
+        impl ::std::fmt::Display for $named {
+            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
+                f.write_str($crate::Named::name(*self))
+            }
+        }
+
+        impl ::std::str::FromStr for $named {
+            type Err = $crate::UnknownName;
+            fn from_str(s: &str) -> ::std::result::Result<$named, $crate::UnknownName> {
+                <$named as $crate::Named>::parse(s)
+            }
+        }
+    )+};
+}

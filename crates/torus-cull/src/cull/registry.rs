@@ -6,10 +6,8 @@ use super::{
     AabbCull, CullBounds, CychoszCull, DiscriminantCull, DiscriminantF64Cull, EllipsoidCull,
     NoCull, QuadricCull, SkalaCull, SphereCull, ThickCylinderCull,
 };
-use crate::names::{Named, UnknownName};
+use crate::names::Named;
 use glam::Vec3;
-use std::fmt;
-use std::str::FromStr;
 
 /// The one map from a cull's name to its type: binds the cull of `$kind` (a [`CullKind`]
 /// or a [`BatchCull`], `$enum`) to `$cull` and evaluates `$body`, for every cull with a
@@ -158,18 +156,7 @@ impl Named for CullKind {
     }
 }
 
-impl fmt::Display for CullKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(Named::name(*self))
-    }
-}
-
-impl FromStr for CullKind {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<CullKind, UnknownName> {
-        CullKind::parse(s)
-    }
-}
+crate::named_display_and_from_str!(CullKind);
 
 /// Generic code that runs with a concrete cull kernel; see [`CullKind::visit_kernel`].
 pub(crate) trait KernelVisitor {
@@ -291,18 +278,7 @@ impl Named for BatchCull {
     }
 }
 
-impl fmt::Display for BatchCull {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(Named::name(*self))
-    }
-}
-
-impl FromStr for BatchCull {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<BatchCull, UnknownName> {
-        BatchCull::parse(s)
-    }
-}
+crate::named_display_and_from_str!(BatchCull);
 
 #[cfg(test)]
 mod tests {

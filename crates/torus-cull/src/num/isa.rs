@@ -6,9 +6,8 @@
 //! `TORUS_CULL_ISA` forces a lower level, so that AVX2 or the scalar fallback can be
 //! measured and tested on an AVX-512 machine.
 
-use crate::names::{Named, UnknownName};
+use crate::names::Named;
 use std::fmt;
-use std::str::FromStr;
 
 /// The environment variable that forces a dispatch level (`avx512`, `avx2`, `neon`,
 /// `scalar`); unset or empty means the best the CPU has.
@@ -53,18 +52,7 @@ impl Isa {
     }
 }
 
-impl fmt::Display for Isa {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Isa {
-    type Err = UnknownName;
-    fn from_str(s: &str) -> Result<Isa, UnknownName> {
-        Isa::parse(s)
-    }
-}
+crate::named_display_and_from_str!(Isa);
 
 /// A `TORUS_CULL_ISA` that names no level, or a level this CPU lacks.
 #[derive(Debug, Clone, PartialEq, Eq)]
