@@ -69,11 +69,6 @@ impl Wavefront {
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, hits);
         intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
-        let mut stats = WavefrontStats {
-            rays: rays.len(),
-            kept: self.survivors.len(),
-            ..WavefrontStats::default()
-        };
         let a = &self.answers;
         // Padding lanes lie past `len` and are never read.
         let len = self.survivors.len();
@@ -87,13 +82,11 @@ impl Wavefront {
                 ),
             });
         }
-        for j in set_bits(&a.fallback, len) {
-            let i = self.survivors.index[j];
-            hits[i] = intersect(torus, &rays[i]);
-            stats.scalar_fallbacks += 1;
+        let scalar_fallbacks = self.finish_in_f64(torus, rays, hits, &a.fallback);
+        WavefrontStats {
+            scalar_fallbacks,
+            ..self.stats(rays, hits)
         }
-        stats.hits = hits.iter().filter(|h| h.is_some()).count();
-        stats
     }
 
     /// [`Wavefront::intersect`] through the certified f32 path ([`crate::intersect_f32`]
@@ -144,11 +137,6 @@ impl Wavefront {
             &mut self.answers_f32,
         );
         let len = self.survivors.len();
-        let mut stats = WavefrontStats {
-            rays: rays.len(),
-            kept: len,
-            ..WavefrontStats::default()
-        };
         let a = &self.answers_f32;
         let major = f64::from(torus.major_radius());
         for j in set_bits(&a.hit, len) {
@@ -160,13 +148,39 @@ impl Wavefront {
         }
         // Escalated: neither proved. The bits past `len` are padding, never read.
         let open: Vec<u64> = a.hit.iter().zip(&a.miss).map(|(h, m)| !(h | m)).collect();
-        for j in set_bits(&open, len) {
+        let escalated = self.finish_in_f64(torus, rays, hits, &open);
+        WavefrontStats {
+            escalated,
+            ..self.stats(rays, hits)
+        }
+    }
+
+    /// The survivors whose bit is set in `open` (the lanes left undecided), intersected by
+    /// the scalar f64 path; how many.
+    fn finish_in_f64(
+        &self,
+        torus: &Torus,
+        rays: &[Ray],
+        hits: &mut [Option<Hit>],
+        open: &[u64],
+    ) -> usize {
+        let mut finished = 0;
+        for j in set_bits(open, self.survivors.len()) {
             let i = self.survivors.index[j];
             hits[i] = intersect(torus, &rays[i]);
-            stats.escalated += 1;
+            finished += 1;
         }
-        stats.hits = hits.iter().filter(|h| h.is_some()).count();
-        stats
+        finished
+    }
+
+    /// The counts every pass reports: rays, survivors of the cull, hits.
+    fn stats(&self, rays: &[Ray], hits: &[Option<Hit>]) -> WavefrontStats {
+        WavefrontStats {
+            rays: rays.len(),
+            kept: self.survivors.len(),
+            hits: hits.iter().filter(|h| h.is_some()).count(),
+            ..WavefrontStats::default()
+        }
     }
 
     /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns;
