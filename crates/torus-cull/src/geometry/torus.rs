@@ -1,6 +1,6 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
-use super::ray::{DRay, Ray};
+use super::ray::{DRay, Precision, Ray};
 use crate::cull::CullBounds;
 use crate::intersect::nearest_hit::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
@@ -397,21 +397,24 @@ impl Torus {
         }
     }
 
-    /// The ray's origin and direction in the torus frame, in f64 (for the exact path).
+    /// The ray's origin and direction in the torus frame, in f64 (for the exact path);
+    /// an f32 [`Ray`] is widened exactly first.
     #[inline]
-    pub fn line_to_local_f64(&self, ray: &Ray) -> (DVec3, DVec3) {
-        let o = ray.origin().as_dvec3() - self.center.as_dvec3();
+    #[must_use]
+    pub fn line_to_local_f64<P: Precision>(&self, ray: &Ray<P>) -> (DVec3, DVec3) {
+        let o = ray.origin().to_dvec3() - self.center.as_dvec3();
         (
             self.to_local_f64 * o,
-            self.to_local_f64 * ray.dir().as_dvec3(),
+            self.to_local_f64 * ray.dir().to_dvec3(),
         )
     }
 
-    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path).
+    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path):
+    /// [`Torus::line_to_local_f64`] of a [`DRay`].
     #[inline]
+    #[must_use]
     pub fn dline_to_local_f64(&self, ray: &DRay) -> (DVec3, DVec3) {
-        let o = ray.origin() - self.center.as_dvec3();
-        (self.to_local_f64 * o, self.to_local_f64 * ray.dir())
+        self.line_to_local_f64(ray)
     }
 
     /// An f64 ray's line in the torus frame, rounded to f32 for the culls.
