@@ -149,7 +149,7 @@ impl Wavefront {
             ..WavefrontStats::default()
         };
         let a = &self.answers_f32;
-        let major = f64::from(torus.major_radius());
+        let major = torus.major_radius_f64();
         for j in set_bits(&a.hit, len) {
             let t = a.t(major, j) as f32;
             hits[self.survivors.index[j]] = t.is_finite().then_some(Hit {
