@@ -559,6 +559,18 @@ impl Torus {
     /// The world-space axis-aligned bounding box of the torus, `(min, max)`.
     ///
     /// Exact for any axis: along world axis i the half-extent is `R·√(1 − a_i²) + r`.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::Torus;
+    /// // Lying flat (axis +y): 2(R + r) wide in x and z, 2r high.
+    /// let flat = Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::Y, 4.0, 1.0)?;
+    /// assert_eq!(flat.world_aabb(), (Vec3::new(-4.0, 1.0, -2.0), Vec3::new(6.0, 3.0, 8.0)));
+    /// // Standing on edge (axis +x): now thin in x.
+    /// let (lo, hi) = Torus::new(Vec3::ZERO, Vec3::X, 4.0, 1.0)?.world_aabb();
+    /// assert_eq!((lo, hi), (Vec3::new(-1.0, -5.0, -5.0), Vec3::new(1.0, 5.0, 5.0)));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn world_aabb(&self) -> (Vec3, Vec3) {
         let a = self.axis;
         let ring = (Vec3::ONE - a * a).max(Vec3::ZERO).sqrt() * self.major_radius;

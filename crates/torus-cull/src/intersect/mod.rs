@@ -145,6 +145,22 @@ pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) ->
 
 /// Every real `t` (units of `d`, sorted, double roots twice) where the whole line
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
+///
+/// ```
+/// use glam::DVec3;
+/// use torus_cull::intersect::line_roots_local;
+/// // R = 2, r = 1: along the x axis from x = −5 the line crosses x = −3, −1, 1, 3.
+/// let roots = line_roots_local(2.0, 1.0, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+/// assert_eq!(roots.len(), 4);
+/// for (got, want) in roots.as_slice().iter().zip([2.0, 4.0, 6.0, 8.0]) {
+///     assert!((got - want).abs() < 1e-12);
+/// }
+/// // Roots behind the origin count too (no range), in units of the direction given.
+/// let back = line_roots_local(2.0, 1.0, DVec3::new(5.0, 0.0, 0.0), DVec3::X * 2.0);
+/// assert!((back.as_slice()[0] + 4.0).abs() < 1e-12); // x = −3
+/// // Down the axis, through the hole: no root.
+/// assert!(line_roots_local(2.0, 1.0, DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y).is_empty());
+/// ```
 #[must_use]
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
     let (line, [c2, c1, c0]) = reduce(&Tube::new(major, minor), o, d);
