@@ -325,28 +325,28 @@ impl<P: Precision> Ray<P> {
     /// The origin `o`.
     #[inline]
     #[must_use]
-    pub fn origin(&self) -> P {
+    pub const fn origin(&self) -> P {
         self.origin
     }
 
     /// The direction `d` (as given; not normalized).
     #[inline]
     #[must_use]
-    pub fn dir(&self) -> P {
+    pub const fn dir(&self) -> P {
         self.dir
     }
 
     /// The lower end of the parameter range.
     #[inline]
     #[must_use]
-    pub fn t_min(&self) -> P::Float {
+    pub const fn t_min(&self) -> P::Float {
         self.t_min
     }
 
     /// The upper end of the parameter range (may be +∞).
     #[inline]
     #[must_use]
-    pub fn t_max(&self) -> P::Float {
+    pub const fn t_max(&self) -> P::Float {
         self.t_max
     }
 

@@ -329,25 +329,29 @@ impl Torus {
 
     /// The centre in world space.
     #[inline]
-    pub fn center(&self) -> Vec3 {
+    #[must_use]
+    pub const fn center(&self) -> Vec3 {
         self.center
     }
 
     /// The unit rotation axis in world space.
     #[inline]
-    pub fn axis(&self) -> Vec3 {
+    #[must_use]
+    pub const fn axis(&self) -> Vec3 {
         self.axis
     }
 
     /// R: distance from the axis to the tube centre.
     #[inline]
-    pub fn major_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn major_radius(&self) -> f32 {
         self.major_radius
     }
 
     /// r: the tube radius.
     #[inline]
-    pub fn minor_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn minor_radius(&self) -> f32 {
         self.minor_radius
     }
 
@@ -382,13 +386,15 @@ impl Torus {
 
     /// ν = R/r, > 1 for every `Torus`.
     #[inline]
-    pub fn nu(&self) -> f32 {
+    #[must_use]
+    pub const fn nu(&self) -> f32 {
         self.major_radius / self.minor_radius
     }
 
     /// The radius R + r of the bounding sphere.
     #[inline]
-    pub fn outer_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn outer_radius(&self) -> f32 {
         self.major_radius + self.minor_radius
     }
 
@@ -397,42 +403,47 @@ impl Torus {
     /// [`crate::batch::cull_batch`] take with a line already in this torus's frame.
     #[inline]
     #[must_use]
-    pub fn bounds(&self) -> &CullBounds {
+    pub const fn bounds(&self) -> &CullBounds {
         &self.bounds
     }
 
     /// The exact intersection's per-torus constants.
     #[inline(always)]
-    pub(crate) fn tube(&self) -> &Tube {
+    pub(crate) const fn tube(&self) -> &Tube {
         &self.tube
     }
 
     /// The rotation world→torus frame (axis → +y), f32.
     #[inline]
-    pub fn to_local_rotation(&self) -> Mat3 {
+    #[must_use]
+    pub const fn to_local_rotation(&self) -> Mat3 {
         self.to_local
     }
 
     /// The rotation world→torus frame (axis → +y), built in f64.
     #[inline]
-    pub fn to_local_rotation_f64(&self) -> DMat3 {
+    #[must_use]
+    pub const fn to_local_rotation_f64(&self) -> DMat3 {
         self.to_local_f64
     }
 
     /// A world point in the torus frame (f32).
     #[inline]
+    #[must_use]
     pub fn point_to_local(&self, p: Vec3) -> Vec3 {
         self.to_local * (p - self.center)
     }
 
     /// A torus-frame point in the world (f32).
     #[inline]
+    #[must_use]
     pub fn point_to_world(&self, p: Vec3) -> Vec3 {
         self.to_local.transpose() * p + self.center
     }
 
     /// A torus-frame direction in the world (f32); lengths are kept.
     #[inline]
+    #[must_use]
     pub fn dir_to_world(&self, d: Vec3) -> Vec3 {
         self.to_local.transpose() * d
     }
@@ -440,7 +451,7 @@ impl Torus {
     /// (`NEAR_ORIGIN_REL`·(R + r))²: origins farther than this from the centre take
     /// [`Torus::line_to_local`]'s f64 foot-point path.
     #[inline]
-    pub(crate) fn near_origin_sq(&self) -> f32 {
+    pub(crate) const fn near_origin_sq(&self) -> f32 {
         self.near_origin_sq
     }
 
@@ -453,6 +464,7 @@ impl Torus {
     /// covers, whatever the distance. The near case, which is every ray a camera near
     /// the torus shoots, costs one compare.
     #[inline]
+    #[must_use]
     pub fn line_to_local(&self, ray: &Ray) -> LocalLine {
         let relative = ray.origin() - self.center;
         // An overflowed (infinite) square fails the test too and takes the f64 path.
@@ -530,6 +542,7 @@ impl Torus {
     /// sphere, below the culls' margin η = 2⁻¹²·(R + r). A foot point farther than
     /// 4·(R + r) (a line that misses the torus by far, and whose foot f32 may not even
     /// hold) is pulled in to 4·(R + r) along itself: still a line that misses.
+    #[must_use]
     pub fn dline_to_local(&self, ray: &DRay) -> LocalLine {
         let (o, d) = self.dline_to_local_f64(ray);
         if !self.placeable(o) {
@@ -571,6 +584,7 @@ impl Torus {
     /// assert_eq!((lo, hi), (Vec3::new(-1.0, -5.0, -5.0), Vec3::new(1.0, 5.0, 5.0)));
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
+    #[must_use]
     pub fn world_aabb(&self) -> (Vec3, Vec3) {
         let a = self.axis;
         let ring = (Vec3::ONE - a * a).max(Vec3::ZERO).sqrt() * self.major_radius;

@@ -50,6 +50,7 @@ pub trait TorusRay: sealed::Sealed {
     /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`](crate::DRay).
     type Float;
     /// A hit's `t` ([`RayCast::cast_ray`]'s answer).
+    #[must_use]
     fn hit_t(hit: &Self::Hit) -> Self::Float;
 }
 
