@@ -386,3 +386,40 @@ impl From<Ray> for DRay {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_their_precision() {
+        let msg = |e: &dyn std::error::Error| e.to_string();
+        let zero = Ray::new(Vec3::ZERO, Vec3::ZERO).unwrap_err();
+        assert_eq!(
+            msg(&zero),
+            "ray direction [0, 0, 0] is zero (|d|² must be a normal f32 > 0)"
+        );
+        let huge = DRay::new(DVec3::ZERO, DVec3::splat(1e300)).unwrap_err();
+        assert!(matches!(huge, DRayError::HugeDirection(_)));
+        assert!(msg(&huge).ends_with("is too long (|d|² overflows f64)"));
+        let huge = Ray::new(Vec3::ZERO, Vec3::splat(1e20)).unwrap_err();
+        assert!(msg(&huge).ends_with("(|d|² must be finite in f32: |d| < 1.8e19)"));
+        let tiny = Ray::new(Vec3::ZERO, Vec3::new(1e-20, 0.0, 0.0)).unwrap_err();
+        assert_eq!(
+            msg(&tiny),
+            "ray direction [1e-20, 0e0, 0e0] is too short: |d|² = 9.99999936531046e-41 is \
+             below the smallest normal f32 1.1754944e-38 (scale it up: only its direction \
+             matters)"
+        );
+        let range = DRay::with_range(DVec3::ZERO, DVec3::X, 2.0, 1.0).unwrap_err();
+        assert_eq!(
+            msg(&range),
+            "ray range [2, 1] is invalid (t_min finite, t_min ≤ t_max)"
+        );
+        let range = Ray::with_range(Vec3::ZERO, Vec3::X, 2.0, 1.0).unwrap_err();
+        assert_eq!(
+            msg(&range),
+            "ray range [2, 1] is invalid (need finite t_min ≤ t_max)"
+        );
+    }
+}
