@@ -16,8 +16,7 @@ use common::{NUS, family, pairs};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use torus_cull::Named;
-use torus_cull::{CullKind, DRay, Torus, intersect, intersect_culled};
+use torus_cull::{CullKind, DRay, Named, Ray, Torus, intersect, intersect_culled};
 use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
 use torus_cull_lab::workload::Case;
 use torus_cull_lab::workload::adversarial::{SpecialCircle, hole_edge_line, tangent_line};
@@ -168,4 +167,95 @@ fn adversarial_lines_built_in_f64() {
         }
     }
     tally.assert_clean("adversarial", 10_000);
+}
+
+/// A torus built in f64 (`Torus::new_f64`) whose centre, axis and radii f32 cannot hold:
+/// its `DRay` hits agree with the oracle on that f64 torus far better than those of the
+/// same torus built from the values rounded to f32 (`Torus::new`), and no cull, seeing
+/// bounds rounded to f32, rejects a hit of an f64 or an f32 ray.
+#[test]
+fn f64_torus_keeps_its_pose_and_radii() {
+    let mut rng = Pcg64::seed_from_u64(0x7F64);
+    let cube = |rng: &mut Pcg64| {
+        DVec3::new(
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+            rng.random_range(-1.0..1.0),
+        )
+    };
+    let (mut err_f64, mut err_f32, mut hits) = (0.0f64, 0.0f64, 0usize);
+    let mut worst_f64 = 0.0f64;
+    let mut failures = Vec::new();
+    for _ in 0..200 {
+        // R from 10⁻² to 10², off the f32 grid; the centre up to 10·R from the origin.
+        let major = 10f64.powf(rng.random_range(-2.0..2.0)) * (1.0 + 1e-9);
+        let minor = major / rng.random_range(1.5..20.0);
+        let center = cube(&mut rng) * (10.0 * major) + DVec3::splat(1e-10 * major);
+        let axis = cube(&mut rng) + DVec3::new(0.0, 2.0, 0.0);
+        let exact = Torus::new_f64(center, axis, major, minor).unwrap();
+        let rounded =
+            Torus::new(center.as_vec3(), axis.as_vec3(), major as f32, minor as f32).unwrap();
+        assert_eq!(exact.center_f64(), center);
+        assert_eq!(
+            (exact.major_radius_f64(), exact.minor_radius_f64()),
+            (major, minor)
+        );
+        assert!(exact.center_f64() != exact.center().as_dvec3());
+        let outer = major + minor;
+        for _ in 0..100 {
+            let o = center + cube(&mut rng) * (4.0 * outer);
+            let aim = center + cube(&mut rng) * outer;
+            let ray = DRay::new(o, aim - o).unwrap();
+            let query = Query::dray(&exact, &ray);
+            let label = query.classify();
+            if label.class == OracleClass::Ambiguous || label.margin.abs() <= 1e-6 * outer {
+                continue;
+            }
+            let hit = label.class == OracleClass::Hit;
+            let found = intersect(&exact, &ray);
+            if found.is_some() != hit {
+                failures.push(format!("intersect {found:?}, oracle {label:?}: {ray:?}"));
+                continue;
+            }
+            // The same line as an f32 ray, on the same f64 torus: the culls' f32 path.
+            let ray_f32 = Ray::new(ray.origin().as_vec3(), ray.dir().as_vec3()).unwrap();
+            let label_f32 = Query::ray(&exact, &ray_f32).classify();
+            let hit_f32 =
+                label_f32.class == OracleClass::Hit && label_f32.margin.abs() > 1e-6 * outer;
+            for cull in CullKind::TIMED {
+                if hit && intersect_culled(&cull, &exact, &ray).is_none() {
+                    failures.push(format!("{cull} rejects a DRay hit: {ray:?} on {exact:?}"));
+                }
+                if hit_f32 && intersect_culled(&cull, &exact, &ray_f32).is_none() {
+                    failures.push(format!(
+                        "{cull} rejects a Ray hit: {ray_f32:?} on {exact:?}"
+                    ));
+                }
+            }
+            let (Some(found), Some(other)) = (found, intersect(&rounded, &ray)) else {
+                continue;
+            };
+            hits += 1;
+            let reference = reference_roots(&query)[0];
+            let len = ray.dir().length();
+            let e64 = (found.t - reference).abs() * len / outer;
+            let e32 = (other.t - reference).abs() * len / outer;
+            worst_f64 = worst_f64.max(e64);
+            err_f64 += e64;
+            err_f32 += e32;
+        }
+    }
+    println!(
+        "f64 torus: {hits} hits, mean t error {:e}·(R + r) (worst {worst_f64:e}); \
+         built from f32: mean {:e}·(R + r)",
+        err_f64 / hits as f64,
+        err_f32 / hits as f64
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(hits > 2000, "only {hits} hits");
+    assert!(worst_f64 < 1e-10, "worst f64 error {worst_f64:e}·(R + r)");
+    assert!(
+        err_f32 > 1000.0 * err_f64,
+        "f64-built {err_f64:e} vs f32-built {err_f32:e}"
+    );
 }

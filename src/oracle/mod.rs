@@ -121,13 +121,15 @@ impl Query {
         Query::dray(torus, &DRay::from(*ray))
     }
 
-    /// An f64 ray over its range, on the torus as the oracle defines it.
+    /// An f64 ray over its range, on the torus as the oracle defines it: its f64 pose and
+    /// radii (for a torus built from f32 values, those widened exactly, the axis
+    /// normalized in f64; for `Torus::new_f64`, the f64 values given).
     pub fn dray(torus: &Torus, ray: &DRay) -> Query {
         Query {
-            center: torus.center().as_dvec3(),
-            axis: torus.axis().as_dvec3().normalize(),
-            major: f64::from(torus.major_radius()),
-            minor: f64::from(torus.minor_radius()),
+            center: torus.center_f64(),
+            axis: torus.axis_f64(),
+            major: torus.major_radius_f64(),
+            minor: torus.minor_radius_f64(),
             o: ray.origin(),
             d: ray.dir(),
             t_min: ray.t_min(),

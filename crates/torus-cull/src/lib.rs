@@ -99,7 +99,7 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, Ray, RayError, Torus, TorusError,
+    NEAR_ORIGIN_REL, Precision, Ray, RayError, Torus, TorusError,
 };
 pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
 pub use names::{Named, UnknownName};
@@ -136,7 +136,7 @@ pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
 /// the torus frame, as the culls see it, against the torus's own bounds.
 #[inline(always)]
 fn kept_by<C: Cull + ?Sized, R: TorusRay>(cull: &C, torus: &Torus, ray: &R) -> bool {
-    let line = ray.cull_line(torus);
+    let line = intersect::sealed::Steps::cull_line(ray, torus);
     cull.keeps(torus.bounds(), line.origin, line.dir)
 }
 

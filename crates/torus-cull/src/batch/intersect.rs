@@ -131,7 +131,7 @@ impl TorusF64 {
     pub(crate) fn of(torus: &Torus) -> TorusF64 {
         let to_local = torus.to_local_rotation_f64();
         TorusF64 {
-            center: torus.center().as_dvec3(),
+            center: torus.center_f64(),
             to_local,
             to_world: to_local.transpose(),
             tube: *torus.tube(),

@@ -21,6 +21,33 @@ use crate::{Hit, Ray, Torus, intersect};
 use glam::Vec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::batch::{Dispatch, Wavefront};
+/// use torus_cull::{CullKind, Ray, Torus, intersect_culled};
+/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+/// // A row of rays straight down: x = 0 and 1 fall through the hole, 3 to 5 hit the tube.
+/// let rays: Vec<Ray> = (0..6)
+///     .map(|x| Ray::new(Vec3::new(x as f32, 10.0, 0.0), Vec3::NEG_Y))
+///     .collect::<Result<_, _>>()?;
+/// let mut wavefront = Wavefront::new(); // reused from batch to batch
+/// let mut hits = Vec::new();
+/// let stats = wavefront.intersect(&Dispatch::best(), CullKind::Skala, &torus, &rays, &mut hits)?;
+/// assert_eq!(hits.len(), rays.len());
+/// assert_eq!(stats.hits, 3);
+/// assert!(stats.kept < rays.len()); // the cull proved some misses
+/// for (ray, hit) in rays.iter().zip(&hits) {
+///     // The scalar answer, to the batch solver's rounding.
+///     let scalar = intersect_culled(&CullKind::Skala, &torus, ray);
+///     assert_eq!(hit.is_some(), scalar.is_some());
+///     if let (Some(a), Some(b)) = (hit, scalar) {
+///         assert!((a.t - b.t).abs() < 1e-5);
+///     }
+/// }
+/// assert!((hits[4].unwrap().t - 9.0).abs() < 1e-5); // the top of the tube at x = 4
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Default)]
 pub struct Wavefront {
     lines: Lines,
@@ -138,7 +165,7 @@ impl Wavefront {
         );
         let len = self.survivors.len();
         let a = &self.answers_f32;
-        let major = f64::from(torus.major_radius());
+        let major = torus.major_radius_f64();
         for j in set_bits(&a.hit, len) {
             let t = a.t(major, j) as f32;
             hits[self.survivors.index[j]] = t.is_finite().then_some(Hit {

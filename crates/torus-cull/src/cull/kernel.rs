@@ -26,6 +26,22 @@ use pulp::{Scalar, Simd};
 /// [`crate::Torus`], so a torus without a hole (R ≤ r) cannot reach a cull.
 /// [`crate::intersect_culled`] and [`crate::Torus::with_cull`] do both steps for a world
 /// ray.
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::{Cull, CychoszCull, NoCull, Ray, SkalaCull, Torus};
+/// let torus = Torus::new(Vec3::new(0.0, 0.0, 5.0), Vec3::Y, 4.0, 1.0)?;
+/// // Through the hole along the axis: a line that misses, in the torus's frame.
+/// let hole = torus.line_to_local(&Ray::new(Vec3::new(0.0, 10.0, 5.0), Vec3::NEG_Y)?);
+/// assert!(!SkalaCull.keeps(torus.bounds(), hole.origin, hole.dir));
+/// assert!(NoCull.keeps(torus.bounds(), hole.origin, hole.dir)); // keeps every line
+/// // A line through the tube is kept by every cull (they are conservative).
+/// let tube = torus.line_to_local(&Ray::new(Vec3::new(4.0, 10.0, 5.0), Vec3::NEG_Y)?);
+/// assert!(SkalaCull.keeps(torus.bounds(), tube.origin, tube.dir));
+/// assert!(CychoszCull.keeps(torus.bounds(), tube.origin, tube.dir));
+/// assert_eq!(SkalaCull.name(), "skala");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub trait Cull {
     /// The stable name used in results, the CLI and plots.
     fn name(&self) -> &'static str;

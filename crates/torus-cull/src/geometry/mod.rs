@@ -2,14 +2,14 @@
 //! torus computes once for its culls ([`CullBounds`]) and its exact path ([`Tube`]).
 
 mod bounds;
-mod ray;
+pub(crate) mod ray;
 mod torus;
 mod tube;
 
 pub use bounds::{CullBounds, SAFETY_REL};
 pub(crate) use tube::Tube;
 
-pub use ray::{DRay, DRayError, Ray, RayError};
+pub use ray::{DRay, DRayError, Precision, Ray, RayError};
 pub use torus::{
     FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus,
     TorusError,

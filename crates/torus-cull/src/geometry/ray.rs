@@ -1,78 +1,275 @@
-//! The ray type shared by the culls, the exact intersection and the oracle.
+//! The ray type shared by the culls, the exact intersection and the oracle, written once
+//! for both precisions: [`Ray`] (`Ray<Vec3>`, f32, as a renderer shoots it) and [`DRay`]
+//! (`Ray<DVec3>`, f64 geometry), with their errors [`RayError`] and [`DRayError`].
 
 use glam::{DVec3, Vec3};
+use sealed::Scalar;
 use std::fmt;
+use std::ops::{Add, Mul};
 
-/// A ray `o + t·d` with `t ∈ [t_min, t_max]`, in f32 as a renderer shoots it.
+/// A ray's precision, named by its vector type: [`Vec3`] (f32) or [`DVec3`] (f64).
 ///
-/// The direction need not be unit length; every `t` in this crate is in units of the
-/// given direction. The constructors reject zero, NaN and infinite directions, so every
-/// `Ray` is a valid line.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Ray {
-    origin: Vec3,
-    dir: Vec3,
-    t_min: f32,
-    t_max: f32,
+/// Sealed: the two are the whole list. It is the parameter of [`Ray`], [`RayError`] and
+/// [`crate::Hit`]; a renderer names it only to write code generic over both.
+pub trait Precision:
+    sealed::Internals
+    + Copy
+    + PartialEq
+    + fmt::Debug
+    + fmt::Display
+    + Add<Output = Self>
+    + Mul<<Self as Precision>::Float, Output = Self>
+{
+    /// The float of `t` and of the components: `f32` for [`Vec3`], `f64` for [`DVec3`].
+    type Float: sealed::Scalar + fmt::Debug + fmt::Display + fmt::LowerExp;
 }
 
-/// Why a ray was refused.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum RayError {
-    /// The origin has a NaN or infinite component.
-    NonFiniteOrigin(Vec3),
-    /// The direction has a NaN or infinite component.
-    NonFiniteDirection(Vec3),
-    /// The direction is the zero vector (or so small that its squared length underflows).
-    ZeroDirection(Vec3),
-    /// The direction is so long that its squared length overflows f32.
-    HugeDirection(Vec3),
-    /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
-    BadRange {
-        /// The lower end given.
-        t_min: f32,
-        /// The upper end given.
-        t_max: f32,
-    },
+impl Precision for Vec3 {
+    type Float = f32;
 }
 
-impl fmt::Display for RayError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            RayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
-            RayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
-            RayError::ZeroDirection(d) if *d == Vec3::ZERO => {
-                write!(
-                    f,
-                    "ray direction {d} is zero (|d|² must be a normal f32 > 0)"
-                )
+impl Precision for DVec3 {
+    type Float = f64;
+}
+
+pub(crate) mod sealed {
+    use super::{Precision, Ray};
+    use crate::{LocalLine, Torus};
+    use glam::{DVec3, Vec3};
+
+    /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
+    pub trait Scalar: Copy + PartialOrd {
+        /// +∞, `t_max` of [`Ray::new`].
+        const INFINITY: Self;
+        /// 0, `t_min` of [`Ray::new`].
+        const ZERO: Self;
+        /// The smallest normal float: `|d|²` must reach it.
+        const MIN_POSITIVE: Self;
+        fn finite(self) -> bool;
+        fn nan(self) -> bool;
+        fn min(self, other: Self) -> Self;
+        fn max(self, other: Self) -> Self;
+        /// Widened to f64 (exactly).
+        fn to_f64(self) -> f64;
+        /// An f64 rounded to this float.
+        fn from_f64(x: f64) -> Self;
+    }
+
+    macro_rules! scalar {
+        ($f:ty) => {
+            impl Scalar for $f {
+                const INFINITY: $f = <$f>::INFINITY;
+                const ZERO: $f = 0.0;
+                const MIN_POSITIVE: $f = <$f>::MIN_POSITIVE;
+                #[inline(always)]
+                fn finite(self) -> bool {
+                    self.is_finite()
+                }
+                #[inline(always)]
+                fn nan(self) -> bool {
+                    self.is_nan()
+                }
+                #[inline(always)]
+                fn min(self, other: $f) -> $f {
+                    <$f>::min(self, other)
+                }
+                #[inline(always)]
+                fn max(self, other: $f) -> $f {
+                    <$f>::max(self, other)
+                }
+                #[inline(always)]
+                fn to_f64(self) -> f64 {
+                    f64::from(self)
+                }
+                #[inline(always)]
+                #[allow(clippy::cast_possible_truncation)]
+                fn from_f64(x: f64) -> $f {
+                    x as $f
+                }
             }
-            RayError::ZeroDirection(d) => write!(
-                f,
-                "ray direction [{:e}, {:e}, {:e}] is too short: |d|² = {:e} is below the \
-                 smallest normal f32 {:e} (scale it up: only its direction matters)",
-                d.x,
-                d.y,
-                d.z,
-                (d.as_dvec3()).length_squared(),
-                f32::MIN_POSITIVE
-            ),
-            RayError::HugeDirection(d) => write!(
-                f,
-                "ray direction {d} is too long (|d|² must be finite in f32: |d| < 1.8e19)"
-            ),
-            RayError::BadRange { t_min, t_max } => write!(
-                f,
-                "ray range [{t_min}, {t_max}] is invalid (need finite t_min ≤ t_max)"
-            ),
+        };
+    }
+    scalar!(f32);
+    scalar!(f64);
+
+    /// What the crate needs of a [`Precision`]'s vector, out of the docs.
+    pub trait Internals: Copy {
+        /// The zero vector.
+        const ZERO: Self;
+        /// "f32" or "f64", for the messages.
+        const NAME: &'static str;
+        /// Why a direction is too long, as [`super::RayError`]'s message says it.
+        const HUGE: &'static str;
+        /// What a range must be, as [`super::RayError`]'s message says it.
+        const RANGE: &'static str;
+        fn finite(self) -> bool;
+        fn length_sq(self) -> Self::Float
+        where
+            Self: Precision;
+        fn components(self) -> [Self::Float; 3]
+        where
+            Self: Precision;
+        /// Widened to f64 (exactly).
+        fn to_dvec3(self) -> DVec3;
+        /// An f64 vector rounded to this precision.
+        fn from_dvec3(v: DVec3) -> Self;
+        /// The ray's line in the torus frame in f32, as the culls see it.
+        fn cull_line(ray: &Ray<Self>, torus: &Torus) -> LocalLine
+        where
+            Self: Precision;
+    }
+
+    impl Internals for Vec3 {
+        const ZERO: Vec3 = Vec3::ZERO;
+        const NAME: &'static str = "f32";
+        const HUGE: &'static str = "|d|² must be finite in f32: |d| < 1.8e19";
+        const RANGE: &'static str = "need finite t_min ≤ t_max";
+        #[inline(always)]
+        fn finite(self) -> bool {
+            self.is_finite()
+        }
+        #[inline(always)]
+        fn length_sq(self) -> f32 {
+            self.length_squared()
+        }
+        fn components(self) -> [f32; 3] {
+            self.to_array()
+        }
+        #[inline(always)]
+        fn to_dvec3(self) -> DVec3 {
+            self.as_dvec3()
+        }
+        #[inline(always)]
+        fn from_dvec3(v: DVec3) -> Vec3 {
+            v.as_vec3()
+        }
+        #[inline(always)]
+        fn cull_line(ray: &Ray<Vec3>, torus: &Torus) -> LocalLine {
+            torus.line_to_local(ray)
+        }
+    }
+
+    impl Internals for DVec3 {
+        const ZERO: DVec3 = DVec3::ZERO;
+        const NAME: &'static str = "f64";
+        const HUGE: &'static str = "|d|² overflows f64";
+        const RANGE: &'static str = "t_min finite, t_min ≤ t_max";
+        #[inline(always)]
+        fn finite(self) -> bool {
+            self.is_finite()
+        }
+        #[inline(always)]
+        fn length_sq(self) -> f64 {
+            self.length_squared()
+        }
+        fn components(self) -> [f64; 3] {
+            self.to_array()
+        }
+        #[inline(always)]
+        fn to_dvec3(self) -> DVec3 {
+            self
+        }
+        #[inline(always)]
+        fn from_dvec3(v: DVec3) -> DVec3 {
+            v
+        }
+        #[inline]
+        fn cull_line(ray: &Ray<DVec3>, torus: &Torus) -> LocalLine {
+            torus.dline_to_local(ray)
         }
     }
 }
 
-impl std::error::Error for RayError {}
+/// A ray `o + t·d` with `t ∈ [t_min, t_max]`, in f32 as a renderer shoots it ([`Ray`],
+/// the default `Ray<Vec3>`) or in f64 for callers whose geometry is f64 ([`DRay`],
+/// `Ray<DVec3>`: particle transport, CAD, another project's test suite).
+///
+/// The direction need not be unit length; every `t` in this crate is in units of the
+/// given direction. The constructors reject zero, NaN and infinite directions, so every
+/// ray is a valid line.
+///
+/// [`crate::intersect()`] takes a [`DRay`] without rounding anything to f32 and answers
+/// in f64 ([`crate::DHit`]); the culls see its line rounded to f32 (direction normalized
+/// first), which their margin covers.
+///
+/// ```
+/// use glam::DVec3;
+/// use torus_cull::DRay;
+/// assert!(DRay::new(DVec3::ZERO, DVec3::X).is_ok());
+/// assert!(DRay::new(DVec3::ZERO, DVec3::ZERO).is_err());
+/// assert!(DRay::new(DVec3::ZERO, DVec3::splat(1e300)).is_err()); // |d|² overflows
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ray<P: Precision = Vec3> {
+    origin: P,
+    dir: P,
+    t_min: P::Float,
+    t_max: P::Float,
+}
 
-impl Ray {
+/// A ray in f64: [`Ray`] over [`DVec3`], whose hits ([`crate::DHit`]) are f64.
+pub type DRay = Ray<DVec3>;
+
+/// Why a ray was refused (`RayError<DVec3>`, [`DRayError`], for a [`DRay`]).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum RayError<P: Precision = Vec3> {
+    /// The origin has a NaN or infinite component.
+    NonFiniteOrigin(P),
+    /// The direction has a NaN or infinite component.
+    NonFiniteDirection(P),
+    /// |d|² is below the smallest normal float of the ray's precision (the zero vector
+    /// included).
+    ZeroDirection(P),
+    /// |d|² overflows the ray's float.
+    HugeDirection(P),
+    /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
+    BadRange {
+        /// The lower end given.
+        t_min: P::Float,
+        /// The upper end given.
+        t_max: P::Float,
+    },
+}
+
+/// Why a [`DRay`] was refused: [`RayError`]'s cases, in f64.
+pub type DRayError = RayError<DVec3>;
+
+impl<P: Precision> fmt::Display for RayError<P> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let name = P::NAME;
+        match self {
+            RayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
+            RayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
+            RayError::ZeroDirection(d) if *d == P::ZERO => {
+                write!(
+                    f,
+                    "ray direction {d} is zero (|d|² must be a normal {name} > 0)"
+                )
+            }
+            RayError::ZeroDirection(d) => {
+                let [x, y, z] = d.components();
+                write!(
+                    f,
+                    "ray direction [{x:e}, {y:e}, {z:e}] is too short: |d|² = {:e} is below the \
+                     smallest normal {name} {:e} (scale it up: only its direction matters)",
+                    d.to_dvec3().length_squared(),
+                    <P::Float as Scalar>::MIN_POSITIVE
+                )
+            }
+            RayError::HugeDirection(d) => {
+                write!(f, "ray direction {d} is too long ({})", P::HUGE)
+            }
+            RayError::BadRange { t_min, t_max } => {
+                write!(f, "ray range [{t_min}, {t_max}] is invalid ({})", P::RANGE)
+            }
+        }
+    }
+}
+
+impl<P: Precision> std::error::Error for RayError<P> {}
+
+impl<P: Precision> Ray<P> {
     /// A ray over `t ∈ [0, +∞)`.
     ///
     /// ```
@@ -83,28 +280,38 @@ impl Ray {
     /// assert!(Ray::new(Vec3::ZERO, Vec3::new(f32::NAN, 0.0, 1.0)).is_err());
     /// assert!(Ray::new(Vec3::ZERO, Vec3::splat(1e20)).is_err()); // |d|² overflows
     /// ```
-    pub fn new(origin: Vec3, dir: Vec3) -> Result<Ray, RayError> {
-        Ray::with_range(origin, dir, 0.0, f32::INFINITY)
+    pub fn new(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
+        Ray::with_range(
+            origin,
+            dir,
+            <P::Float as Scalar>::ZERO,
+            <P::Float as Scalar>::INFINITY,
+        )
     }
 
     /// A ray over `t ∈ [t_min, t_max]`.
-    pub fn with_range(origin: Vec3, dir: Vec3, t_min: f32, t_max: f32) -> Result<Ray, RayError> {
-        if !origin.is_finite() {
+    pub fn with_range(
+        origin: P,
+        dir: P,
+        t_min: P::Float,
+        t_max: P::Float,
+    ) -> Result<Ray<P>, RayError<P>> {
+        if !origin.finite() {
             return Err(RayError::NonFiniteOrigin(origin));
         }
-        if !dir.is_finite() {
+        if !dir.finite() {
             return Err(RayError::NonFiniteDirection(dir));
         }
-        // The culls divide by |d|²: below the smallest normal f32 it would overflow or lose
-        // bits, and an infinite |d|² would make every 1/|d|² zero.
-        let len_sq = dir.length_squared();
-        if len_sq < f32::MIN_POSITIVE {
+        // The culls divide by |d|²: below the smallest normal float it would overflow or
+        // lose bits, and an infinite |d|² would make every 1/|d|² zero.
+        let len_sq = dir.length_sq();
+        if len_sq < <P::Float as Scalar>::MIN_POSITIVE {
             return Err(RayError::ZeroDirection(dir));
         }
-        if !len_sq.is_finite() {
+        if !len_sq.finite() {
             return Err(RayError::HugeDirection(dir));
         }
-        if !t_min.is_finite() || t_max.is_nan() || t_min > t_max {
+        if !t_min.finite() || t_max.nan() || t_min > t_max {
             return Err(RayError::BadRange { t_min, t_max });
         }
         Ok(Ray {
@@ -117,32 +324,37 @@ impl Ray {
 
     /// The origin `o`.
     #[inline]
-    pub fn origin(&self) -> Vec3 {
+    #[must_use]
+    pub const fn origin(&self) -> P {
         self.origin
     }
 
     /// The direction `d` (as given; not normalized).
     #[inline]
-    pub fn dir(&self) -> Vec3 {
+    #[must_use]
+    pub const fn dir(&self) -> P {
         self.dir
     }
 
     /// The lower end of the parameter range.
     #[inline]
-    pub fn t_min(&self) -> f32 {
+    #[must_use]
+    pub const fn t_min(&self) -> P::Float {
         self.t_min
     }
 
     /// The upper end of the parameter range (may be +∞).
     #[inline]
-    pub fn t_max(&self) -> f32 {
+    #[must_use]
+    pub const fn t_max(&self) -> P::Float {
         self.t_max
     }
 
     /// The same ray with its range cut to end at `t_max` (never widened, never below
     /// `t_min`): what a traversal passes on once a closer hit is known.
     #[inline]
-    pub fn with_t_max(&self, t_max: f32) -> Ray {
+    #[must_use]
+    pub fn with_t_max(&self, t_max: P::Float) -> Ray<P> {
         Ray {
             t_max: t_max.min(self.t_max).max(self.t_min),
             ..*self
@@ -151,148 +363,15 @@ impl Ray {
 
     /// The point `o + t·d`.
     #[inline]
-    pub fn at(&self, t: f32) -> Vec3 {
+    #[must_use]
+    pub fn at(&self, t: P::Float) -> P {
         self.origin + self.dir * t
     }
-}
 
-/// A ray `o + t·d` with `t ∈ [t_min, t_max]` in f64, for callers whose geometry is f64
-/// (particle transport, CAD, another project's test suite).
-///
-/// [`crate::intersect()`] takes it without rounding anything to f32 and answers in f64
-/// ([`crate::DHit`]); the culls see its line rounded to f32 (direction normalized
-/// first), which their margin covers. The constructors reject zero, NaN and infinite
-/// directions, so every `DRay` is a valid line.
-///
-/// ```
-/// use glam::DVec3;
-/// use torus_cull::DRay;
-/// assert!(DRay::new(DVec3::ZERO, DVec3::X).is_ok());
-/// assert!(DRay::new(DVec3::ZERO, DVec3::ZERO).is_err());
-/// assert!(DRay::new(DVec3::ZERO, DVec3::splat(1e300)).is_err()); // |d|² overflows
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DRay {
-    origin: DVec3,
-    dir: DVec3,
-    t_min: f64,
-    t_max: f64,
-}
-
-/// Why a [`DRay`] was refused: [`RayError`]'s cases, in f64.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum DRayError {
-    /// The origin has a NaN or infinite component.
-    NonFiniteOrigin(DVec3),
-    /// The direction has a NaN or infinite component.
-    NonFiniteDirection(DVec3),
-    /// |d|² is below the smallest normal f64 (the zero vector included).
-    ZeroDirection(DVec3),
-    /// |d|² overflows f64.
-    HugeDirection(DVec3),
-    /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
-    BadRange {
-        /// The lower end given.
-        t_min: f64,
-        /// The upper end given.
-        t_max: f64,
-    },
-}
-
-impl fmt::Display for DRayError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            DRayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
-            DRayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
-            DRayError::ZeroDirection(d) if *d == DVec3::ZERO => {
-                write!(
-                    f,
-                    "ray direction {d} is zero (|d|² must be a normal f64 > 0)"
-                )
-            }
-            DRayError::ZeroDirection(d) => write!(
-                f,
-                "ray direction [{:e}, {:e}, {:e}] is too short: |d|² = {:e} is below the \
-                 smallest normal f64 {:e} (scale it up: only its direction matters)",
-                d.x,
-                d.y,
-                d.z,
-                d.length_squared(),
-                f64::MIN_POSITIVE
-            ),
-            DRayError::HugeDirection(d) => {
-                write!(f, "ray direction {d} is too long (|d|² overflows f64)")
-            }
-            DRayError::BadRange { t_min, t_max } => write!(
-                f,
-                "ray range [{t_min}, {t_max}] is invalid (t_min finite, t_min ≤ t_max)"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for DRayError {}
-
-impl DRay {
-    /// A ray over `t ∈ [0, +∞)`.
-    pub fn new(origin: DVec3, dir: DVec3) -> Result<DRay, DRayError> {
-        DRay::with_range(origin, dir, 0.0, f64::INFINITY)
-    }
-
-    /// A ray over `t ∈ [t_min, t_max]`.
-    pub fn with_range(
-        origin: DVec3,
-        dir: DVec3,
-        t_min: f64,
-        t_max: f64,
-    ) -> Result<DRay, DRayError> {
-        if !origin.is_finite() {
-            return Err(DRayError::NonFiniteOrigin(origin));
-        }
-        if !dir.is_finite() {
-            return Err(DRayError::NonFiniteDirection(dir));
-        }
-        let len_sq = dir.length_squared();
-        if len_sq < f64::MIN_POSITIVE {
-            return Err(DRayError::ZeroDirection(dir));
-        }
-        if !len_sq.is_finite() {
-            return Err(DRayError::HugeDirection(dir));
-        }
-        if !t_min.is_finite() || t_max.is_nan() || t_min > t_max {
-            return Err(DRayError::BadRange { t_min, t_max });
-        }
-        Ok(DRay {
-            origin,
-            dir,
-            t_min,
-            t_max,
-        })
-    }
-
-    /// The origin `o`.
-    #[inline]
-    pub fn origin(&self) -> DVec3 {
-        self.origin
-    }
-
-    /// The direction `d` (as given; not normalized).
-    #[inline]
-    pub fn dir(&self) -> DVec3 {
-        self.dir
-    }
-
-    /// The lower end of the parameter range.
-    #[inline]
-    pub fn t_min(&self) -> f64 {
-        self.t_min
-    }
-
-    /// The upper end of the parameter range (may be +∞).
-    #[inline]
-    pub fn t_max(&self) -> f64 {
-        self.t_max
+    /// `[t_min, t_max]` in f64 (exact).
+    #[inline(always)]
+    pub(crate) fn range_f64(&self) -> (f64, f64) {
+        (self.t_min.to_f64(), self.t_max.to_f64())
     }
 }
 
@@ -305,5 +384,42 @@ impl From<Ray> for DRay {
             t_min: f64::from(ray.t_min()),
             t_max: f64::from(ray.t_max()),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_name_their_precision() {
+        let msg = |e: &dyn std::error::Error| e.to_string();
+        let zero = Ray::new(Vec3::ZERO, Vec3::ZERO).unwrap_err();
+        assert_eq!(
+            msg(&zero),
+            "ray direction [0, 0, 0] is zero (|d|² must be a normal f32 > 0)"
+        );
+        let huge = DRay::new(DVec3::ZERO, DVec3::splat(1e300)).unwrap_err();
+        assert!(matches!(huge, DRayError::HugeDirection(_)));
+        assert!(msg(&huge).ends_with("is too long (|d|² overflows f64)"));
+        let huge = Ray::new(Vec3::ZERO, Vec3::splat(1e20)).unwrap_err();
+        assert!(msg(&huge).ends_with("(|d|² must be finite in f32: |d| < 1.8e19)"));
+        let tiny = Ray::new(Vec3::ZERO, Vec3::new(1e-20, 0.0, 0.0)).unwrap_err();
+        assert_eq!(
+            msg(&tiny),
+            "ray direction [1e-20, 0e0, 0e0] is too short: |d|² = 9.99999936531046e-41 is \
+             below the smallest normal f32 1.1754944e-38 (scale it up: only its direction \
+             matters)"
+        );
+        let range = DRay::with_range(DVec3::ZERO, DVec3::X, 2.0, 1.0).unwrap_err();
+        assert_eq!(
+            msg(&range),
+            "ray range [2, 1] is invalid (t_min finite, t_min ≤ t_max)"
+        );
+        let range = Ray::with_range(Vec3::ZERO, Vec3::X, 2.0, 1.0).unwrap_err();
+        assert_eq!(
+            msg(&range),
+            "ray range [2, 1] is invalid (need finite t_min ≤ t_max)"
+        );
     }
 }

@@ -1,6 +1,6 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
-use super::ray::{DRay, Ray};
+use super::ray::{DRay, Precision, Ray};
 use crate::cull::CullBounds;
 use crate::geometry::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
@@ -32,6 +32,20 @@ use std::fmt;
 /// cull against the oracle at both limits. Larger or smaller scenes should be rescaled
 /// before they reach the culls; [`TorusError::OutOfRange`] says so.
 ///
+/// **f64 geometry: [`Torus::new_f64`].** A torus built from f64 centre, axis and radii
+/// keeps them in f64 for everything that runs in f64: [`crate::intersect()`],
+/// [`crate::occluded()`] and [`crate::intersect_culled`]'s exact step (for a [`Ray`] and a
+/// [`DRay`] alike), the f64 lines the culls of a [`DRay`] start from, the batch f64
+/// intersection and the certified f32 path's line. Only what is f32 by nature is
+/// rounded: the getters without `_f64` ([`Torus::center`], [`Torus::axis`],
+/// [`Torus::major_radius`], [`Torus::minor_radius`], and what derives from them:
+/// [`Torus::nu`], [`Torus::outer_radius`], [`Torus::world_aabb`], the f32 rotation and
+/// transforms) are rounded to nearest, and the culls' [`CullBounds`] are built for a
+/// slightly fatter tube (R rounded to nearest, r rounded up by R's rounding error too),
+/// which holds the f64 one, so the culls stay conservative. An f32 [`Ray`] whose torus
+/// centre f32 cannot hold reaches the culls through the f64 foot-point path
+/// ([`Torus::line_to_local`]), never through the rounded centre.
+///
 /// ```
 /// use torus_cull::Torus;
 /// use glam::Vec3;
@@ -47,9 +61,17 @@ pub struct Torus {
     minor_radius: f32,
     /// Rows are the world directions of the torus frame's x, y (= axis) and z.
     to_local: Mat3,
-    /// The same rotation built in f64 from the f32 axis, for the f64 exact intersection.
+    /// The same rotation built in f64 (from the f32 axis, or for [`Torus::new_f64`] from
+    /// the f64 one), for the f64 exact intersection; its middle row is the unit axis.
     to_local_f64: DMat3,
-    /// (NEAR_ORIGIN_REL·(R + r))²: origins beyond it take the f64 path to the culls.
+    /// The centre in f64: `center` widened, or [`Torus::new_f64`]'s own.
+    center_f64: DVec3,
+    /// R in f64: `major_radius` widened, or [`Torus::new_f64`]'s own.
+    major_f64: f64,
+    /// r in f64: `minor_radius` widened, or [`Torus::new_f64`]'s own.
+    minor_f64: f64,
+    /// (NEAR_ORIGIN_REL·(R + r))²: origins beyond it take the f64 path to the culls; −1
+    /// (every origin) when `center` is not `center_f64`.
     near_origin_sq: f32,
     /// The culls' constants, derived once here from the validated radii: a cull can only
     /// be given the bounds of the torus it tests.
@@ -193,58 +215,111 @@ impl Torus {
         major_radius: f32,
         minor_radius: f32,
     ) -> Result<Torus, TorusError> {
-        for (name, value) in [
-            ("major_radius", major_radius),
-            ("minor_radius", minor_radius),
-        ] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(TorusError::BadRadius { name, value });
-            }
-        }
-        if major_radius <= minor_radius {
-            return Err(TorusError::NoHole {
-                major_radius,
-                minor_radius,
-            });
-        }
-        // In f64: R + r may overflow f32 while both radii are finite.
-        let outer = major_radius as f64 + minor_radius as f64;
-        if !(MIN_OUTER_RADIUS as f64..=MAX_OUTER_RADIUS as f64).contains(&outer) {
-            return Err(TorusError::OutOfRange {
-                major_radius,
-                minor_radius,
-            });
-        }
-        // After the size: a torus out of range says so first.
-        if major_radius as f64 / minor_radius as f64 > MAX_NU * (1.0 + MAX_NU_SLACK) {
-            return Err(TorusError::TooThin {
-                major_radius,
-                minor_radius,
-            });
-        }
-        if !center.is_finite() {
-            return Err(TorusError::NonFiniteCenter(center));
-        }
-        let axis_f64 = axis.as_dvec3();
-        if !axis.is_finite() || axis_f64.length_squared() == 0.0 {
-            return Err(TorusError::BadAxis(axis));
-        }
+        validate(
+            center.as_dvec3(),
+            axis.as_dvec3(),
+            f64::from(major_radius),
+            f64::from(minor_radius),
+        )?;
         // The stored f32 axis *is* the torus: the f64 rotation (and the oracle) start from it,
         // so both paths agree on the same surface to f64 precision.
-        let axis = axis_f64.normalize().as_vec3();
-        let to_local_f64 = rotation_axis_to_y(axis.as_dvec3().normalize());
+        let axis = axis.as_dvec3().normalize().as_vec3();
+        let (major, minor) = (f64::from(major_radius), f64::from(minor_radius));
+        Ok(Torus::build(
+            (center, center.as_dvec3()),
+            (axis, axis.as_dvec3().normalize()),
+            (major_radius, major),
+            (minor_radius, minor),
+            minor_radius,
+        ))
+    }
+
+    /// A torus from f64 geometry, kept in f64 for the exact intersection (see the type's
+    /// docs for what is exact and what is rounded to f32): centre `center`, rotation
+    /// `axis` (normalized here, in f64), R = `major_radius`, r = `minor_radius`.
+    ///
+    /// The same rules as [`Torus::new`], checked on the f64 values, with the same errors;
+    /// the values an error carries are rounded to f32. A centre beyond f32's range is
+    /// refused as [`TorusError::NonFiniteCenter`] (it is infinite where the culls and f32
+    /// rays work).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use torus_cull::{DRay, Torus, intersect};
+    /// // R = 2 + 10⁻⁹ and a centre at x = 0.1: neither is an f32.
+    /// let torus = Torus::new_f64(DVec3::new(0.1, 0.0, 0.0), DVec3::Y, 2.0 + 1e-9, 1.0)?;
+    /// assert_eq!(torus.major_radius_f64(), 2.0 + 1e-9);
+    /// assert_eq!(torus.major_radius(), 2.0); // the f32 view, rounded
+    /// let ray = DRay::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X)?;
+    /// // The outer equator at x = 0.1 − (3 + 10⁻⁹): t = 7.1 − 10⁻⁹, to f64 precision.
+    /// let hit = intersect(&torus, &ray).expect("the outer equator");
+    /// assert!((hit.t - (7.1 - 1e-9)).abs() < 1e-12);
+    /// // The same torus built from f32 values is off by their rounding (about 10⁻⁹ here).
+    /// let rounded = Torus::new(glam::Vec3::new(0.1, 0.0, 0.0), glam::Vec3::Y, 2.0, 1.0)?;
+    /// let off = intersect(&rounded, &ray).expect("the outer equator");
+    /// assert!((off.t - (7.1 - 1e-9)).abs() > 1e-10);
+    /// assert!(Torus::new_f64(DVec3::ZERO, DVec3::Y, 1.0, 1.0).is_err()); // no hole
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn new_f64(
+        center: DVec3,
+        axis: DVec3,
+        major_radius: f64,
+        minor_radius: f64,
+    ) -> Result<Torus, TorusError> {
+        validate(center, axis, major_radius, minor_radius)?;
+        let center_f32 = center.as_vec3();
+        if !center_f32.is_finite() {
+            return Err(TorusError::NonFiniteCenter(center_f32));
+        }
+        // Scaled to its largest component first, so that |axis|² neither overflows nor
+        // underflows.
+        let unit = (axis / axis.abs().max_element()).normalize();
+        let major_f32 = major_radius as f32;
+        // The culls' tube: around the circle of radius R rounded, it must hold the f64
+        // tube, whose points are within r + |R − R_f32| of that circle.
+        let minor_cull = round_up(minor_radius + (major_radius - f64::from(major_f32)).abs());
+        Ok(Torus::build(
+            (center_f32, center),
+            (unit.as_vec3(), unit),
+            (major_f32, major_radius),
+            (minor_radius as f32, minor_radius),
+            minor_cull,
+        ))
+    }
+
+    /// The torus of validated values, each given as (f32 view, f64 value); `minor_cull`
+    /// is the r the culls' bounds are built for.
+    fn build(
+        (center, center_f64): (Vec3, DVec3),
+        (axis, unit_axis): (Vec3, DVec3),
+        (major_radius, major_f64): (f32, f64),
+        (minor_radius, minor_f64): (f32, f64),
+        minor_cull: f32,
+    ) -> Torus {
+        let to_local_f64 = rotation_axis_to_y(unit_axis);
         let near = NEAR_ORIGIN_REL * (major_radius + minor_radius);
-        Ok(Torus {
+        // A centre f32 cannot hold: the f32 `ray.origin() − center` of the near path would
+        // be off by the centre's rounding, so every f32 ray takes the f64 path.
+        let near_origin_sq = if center.as_dvec3() == center_f64 {
+            near * near
+        } else {
+            -1.0
+        };
+        Torus {
             center,
             axis,
             major_radius,
             minor_radius,
             to_local: to_local_f64.as_mat3(),
             to_local_f64,
-            near_origin_sq: near * near,
-            bounds: CullBounds::new(major_radius, minor_radius),
-            tube: Tube::new(f64::from(major_radius), f64::from(minor_radius)),
-        })
+            center_f64,
+            major_f64,
+            minor_f64,
+            near_origin_sq,
+            bounds: CullBounds::new(major_radius, minor_cull),
+            tube: Tube::new(major_f64, minor_f64),
+        }
     }
 
     /// The torus in its own frame: centre at the origin, axis +y.
@@ -254,37 +329,72 @@ impl Torus {
 
     /// The centre in world space.
     #[inline]
-    pub fn center(&self) -> Vec3 {
+    #[must_use]
+    pub const fn center(&self) -> Vec3 {
         self.center
     }
 
     /// The unit rotation axis in world space.
     #[inline]
-    pub fn axis(&self) -> Vec3 {
+    #[must_use]
+    pub const fn axis(&self) -> Vec3 {
         self.axis
     }
 
     /// R: distance from the axis to the tube centre.
     #[inline]
-    pub fn major_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn major_radius(&self) -> f32 {
         self.major_radius
     }
 
     /// r: the tube radius.
     #[inline]
-    pub fn minor_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn minor_radius(&self) -> f32 {
         self.minor_radius
+    }
+
+    /// The centre in f64: [`Torus::center`] widened, or [`Torus::new_f64`]'s as given.
+    #[inline]
+    #[must_use]
+    pub const fn center_f64(&self) -> DVec3 {
+        self.center_f64
+    }
+
+    /// The unit rotation axis in f64, that of the f64 rotation: [`Torus::axis`] widened
+    /// and normalized in f64, or [`Torus::new_f64`]'s normalized in f64.
+    #[inline]
+    #[must_use]
+    pub fn axis_f64(&self) -> DVec3 {
+        self.to_local_f64.row(1)
+    }
+
+    /// R in f64: [`Torus::major_radius`] widened, or [`Torus::new_f64`]'s as given.
+    #[inline]
+    #[must_use]
+    pub const fn major_radius_f64(&self) -> f64 {
+        self.major_f64
+    }
+
+    /// r in f64: [`Torus::minor_radius`] widened, or [`Torus::new_f64`]'s as given.
+    #[inline]
+    #[must_use]
+    pub const fn minor_radius_f64(&self) -> f64 {
+        self.minor_f64
     }
 
     /// ν = R/r, > 1 for every `Torus`.
     #[inline]
-    pub fn nu(&self) -> f32 {
+    #[must_use]
+    pub const fn nu(&self) -> f32 {
         self.major_radius / self.minor_radius
     }
 
     /// The radius R + r of the bounding sphere.
     #[inline]
-    pub fn outer_radius(&self) -> f32 {
+    #[must_use]
+    pub const fn outer_radius(&self) -> f32 {
         self.major_radius + self.minor_radius
     }
 
@@ -293,42 +403,47 @@ impl Torus {
     /// [`crate::batch::cull_batch`] take with a line already in this torus's frame.
     #[inline]
     #[must_use]
-    pub fn bounds(&self) -> &CullBounds {
+    pub const fn bounds(&self) -> &CullBounds {
         &self.bounds
     }
 
     /// The exact intersection's per-torus constants.
     #[inline(always)]
-    pub(crate) fn tube(&self) -> &Tube {
+    pub(crate) const fn tube(&self) -> &Tube {
         &self.tube
     }
 
     /// The rotation world→torus frame (axis → +y), f32.
     #[inline]
-    pub fn to_local_rotation(&self) -> Mat3 {
+    #[must_use]
+    pub const fn to_local_rotation(&self) -> Mat3 {
         self.to_local
     }
 
     /// The rotation world→torus frame (axis → +y), built in f64.
     #[inline]
-    pub fn to_local_rotation_f64(&self) -> DMat3 {
+    #[must_use]
+    pub const fn to_local_rotation_f64(&self) -> DMat3 {
         self.to_local_f64
     }
 
     /// A world point in the torus frame (f32).
     #[inline]
+    #[must_use]
     pub fn point_to_local(&self, p: Vec3) -> Vec3 {
         self.to_local * (p - self.center)
     }
 
     /// A torus-frame point in the world (f32).
     #[inline]
+    #[must_use]
     pub fn point_to_world(&self, p: Vec3) -> Vec3 {
         self.to_local.transpose() * p + self.center
     }
 
     /// A torus-frame direction in the world (f32); lengths are kept.
     #[inline]
+    #[must_use]
     pub fn dir_to_world(&self, d: Vec3) -> Vec3 {
         self.to_local.transpose() * d
     }
@@ -336,7 +451,7 @@ impl Torus {
     /// (`NEAR_ORIGIN_REL`·(R + r))²: origins farther than this from the centre take
     /// [`Torus::line_to_local`]'s f64 foot-point path.
     #[inline]
-    pub(crate) fn near_origin_sq(&self) -> f32 {
+    pub(crate) const fn near_origin_sq(&self) -> f32 {
         self.near_origin_sq
     }
 
@@ -349,6 +464,7 @@ impl Torus {
     /// covers, whatever the distance. The near case, which is every ray a camera near
     /// the torus shoots, costs one compare.
     #[inline]
+    #[must_use]
     pub fn line_to_local(&self, ray: &Ray) -> LocalLine {
         let relative = ray.origin() - self.center;
         // An overflowed (infinite) square fails the test too and takes the f64 path.
@@ -381,8 +497,7 @@ impl Torus {
     /// the foot point's rounding, about 2⁻⁵³·|o|, must stay below η = 2⁻¹²·(R + r), so
     /// |o| ≤ 2⁴⁰·(R + r).
     fn placeable(&self, o: DVec3) -> bool {
-        let limit =
-            FAR_LIMIT_REL * (f64::from(self.major_radius()) + f64::from(self.minor_radius()));
+        let limit = FAR_LIMIT_REL * (self.major_f64 + self.minor_f64);
         o.length_squared() <= limit * limit
     }
 
@@ -397,21 +512,24 @@ impl Torus {
         }
     }
 
-    /// The ray's origin and direction in the torus frame, in f64 (for the exact path).
+    /// The ray's origin and direction in the torus frame, in f64 (for the exact path);
+    /// an f32 [`Ray`] is widened exactly first.
     #[inline]
-    pub fn line_to_local_f64(&self, ray: &Ray) -> (DVec3, DVec3) {
-        let o = ray.origin().as_dvec3() - self.center.as_dvec3();
+    #[must_use]
+    pub fn line_to_local_f64<P: Precision>(&self, ray: &Ray<P>) -> (DVec3, DVec3) {
+        let o = ray.origin().to_dvec3() - self.center_f64;
         (
             self.to_local_f64 * o,
-            self.to_local_f64 * ray.dir().as_dvec3(),
+            self.to_local_f64 * ray.dir().to_dvec3(),
         )
     }
 
-    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path).
+    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path):
+    /// [`Torus::line_to_local_f64`] of a [`DRay`].
     #[inline]
+    #[must_use]
     pub fn dline_to_local_f64(&self, ray: &DRay) -> (DVec3, DVec3) {
-        let o = ray.origin() - self.center.as_dvec3();
-        (self.to_local_f64 * o, self.to_local_f64 * ray.dir())
+        self.line_to_local_f64(ray)
     }
 
     /// An f64 ray's line in the torus frame, rounded to f32 for the culls.
@@ -424,13 +542,14 @@ impl Torus {
     /// sphere, below the culls' margin η = 2⁻¹²·(R + r). A foot point farther than
     /// 4·(R + r) (a line that misses the torus by far, and whose foot f32 may not even
     /// hold) is pulled in to 4·(R + r) along itself: still a line that misses.
+    #[must_use]
     pub fn dline_to_local(&self, ray: &DRay) -> LocalLine {
         let (o, d) = self.dline_to_local_f64(ray);
         if !self.placeable(o) {
             return self.unplaceable(d);
         }
         let d = d / d.length();
-        let outer = f64::from(self.major_radius()) + f64::from(self.minor_radius());
+        let outer = self.major_f64 + self.minor_f64;
         let near = f64::from(NEAR_ORIGIN_REL) * outer;
         let origin = if o.length_squared() <= near * near {
             o
@@ -453,11 +572,74 @@ impl Torus {
     /// The world-space axis-aligned bounding box of the torus, `(min, max)`.
     ///
     /// Exact for any axis: along world axis i the half-extent is `R·√(1 − a_i²) + r`.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::Torus;
+    /// // Lying flat (axis +y): 2(R + r) wide in x and z, 2r high.
+    /// let flat = Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::Y, 4.0, 1.0)?;
+    /// assert_eq!(flat.world_aabb(), (Vec3::new(-4.0, 1.0, -2.0), Vec3::new(6.0, 3.0, 8.0)));
+    /// // Standing on edge (axis +x): now thin in x.
+    /// let (lo, hi) = Torus::new(Vec3::ZERO, Vec3::X, 4.0, 1.0)?.world_aabb();
+    /// assert_eq!((lo, hi), (Vec3::new(-1.0, -5.0, -5.0), Vec3::new(1.0, 5.0, 5.0)));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
     pub fn world_aabb(&self) -> (Vec3, Vec3) {
         let a = self.axis;
         let ring = (Vec3::ONE - a * a).max(Vec3::ZERO).sqrt() * self.major_radius;
         let half = ring + Vec3::splat(self.minor_radius);
         (self.center - half, self.center + half)
+    }
+}
+
+/// Checks [`Torus::new`]'s rules on f64 values (f32 ones widened exactly).
+fn validate(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
+    for (name, value) in [("major_radius", major), ("minor_radius", minor)] {
+        if !(value.is_finite() && value > 0.0) {
+            return Err(TorusError::BadRadius {
+                name,
+                value: value as f32,
+            });
+        }
+    }
+    let (major_radius, minor_radius) = (major as f32, minor as f32);
+    if major <= minor {
+        return Err(TorusError::NoHole {
+            major_radius,
+            minor_radius,
+        });
+    }
+    // In f64: R + r may overflow f32 while both radii are finite.
+    if !(f64::from(MIN_OUTER_RADIUS)..=f64::from(MAX_OUTER_RADIUS)).contains(&(major + minor)) {
+        return Err(TorusError::OutOfRange {
+            major_radius,
+            minor_radius,
+        });
+    }
+    // After the size: a torus out of range says so first.
+    if major / minor > MAX_NU * (1.0 + MAX_NU_SLACK) {
+        return Err(TorusError::TooThin {
+            major_radius,
+            minor_radius,
+        });
+    }
+    if !center.is_finite() {
+        return Err(TorusError::NonFiniteCenter(center.as_vec3()));
+    }
+    if !axis.is_finite() || axis == DVec3::ZERO {
+        return Err(TorusError::BadAxis(axis.as_vec3()));
+    }
+    Ok(())
+}
+
+/// The smallest f32 ≥ `x` (for a positive finite `x` within f32's range).
+fn round_up(x: f64) -> f32 {
+    let y = x as f32;
+    if f64::from(y) < x {
+        f32::from_bits(y.to_bits() + 1)
+    } else {
+        y
     }
 }
 
@@ -506,6 +688,70 @@ mod tests {
         ));
         let msg = Torus::canonical(1.0, 2.0).unwrap_err().to_string();
         assert!(msg.contains("nu") && msg.contains("> 1"), "{msg}");
+    }
+
+    #[test]
+    fn new_f64_refuses_what_new_refuses() {
+        let bad = |c: DVec3, a: DVec3, big: f64, small: f64| {
+            Torus::new_f64(c, a, big, small).unwrap_err()
+        };
+        let (o, y) = (DVec3::ZERO, DVec3::Y);
+        assert!(matches!(
+            bad(o, y, f64::NAN, 1.0),
+            TorusError::BadRadius { .. }
+        ));
+        assert!(matches!(bad(o, y, 2.0, -1.0), TorusError::BadRadius { .. }));
+        assert!(matches!(bad(o, y, 1.0, 1.0), TorusError::NoHole { .. }));
+        assert!(matches!(bad(o, y, 2e3, 1.0), TorusError::TooThin { .. }));
+        assert!(matches!(
+            bad(o, y, 2e15, 1e15),
+            TorusError::OutOfRange { .. }
+        ));
+        assert!(matches!(
+            bad(DVec3::splat(f64::NAN), y, 2.0, 1.0),
+            TorusError::NonFiniteCenter(_)
+        ));
+        // Finite in f64, infinite in f32.
+        assert!(matches!(
+            bad(DVec3::splat(1e39), y, 2.0, 1.0),
+            TorusError::NonFiniteCenter(_)
+        ));
+        assert!(matches!(
+            bad(o, DVec3::ZERO, 2.0, 1.0),
+            TorusError::BadAxis(_)
+        ));
+        // The same errors as the f32 constructor on f32 values.
+        assert_eq!(bad(o, y, 1.0, 2.0), Torus::canonical(1.0, 2.0).unwrap_err());
+        // An axis whose |a|² over- or underflows f64 is still a direction.
+        for scale in [1e-200, 1e200] {
+            let t = Torus::new_f64(o, DVec3::new(0.0, 3.0, 4.0) * scale, 2.0, 1.0).unwrap();
+            assert!((t.axis_f64() - DVec3::new(0.0, 0.6, 0.8)).length() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn new_f64_of_f32_values_is_new() {
+        let c = Vec3::new(1.0, -2.0, 0.5);
+        let a = Vec3::new(1.0, 2.0, -3.0);
+        let wide = Torus::new_f64(c.as_dvec3(), a.as_dvec3(), 3.0, 1.0).unwrap();
+        let narrow = Torus::new(c, a, 3.0, 1.0).unwrap();
+        assert_eq!(wide.bounds(), narrow.bounds());
+        assert_eq!(wide.center_f64(), narrow.center_f64());
+        assert_eq!(wide.near_origin_sq(), narrow.near_origin_sq());
+        assert!((wide.axis_f64() - narrow.axis_f64()).length() < 1e-7);
+    }
+
+    #[test]
+    fn f64_bounds_hold_the_f64_tube() {
+        // R rounds down by about 6e-8 (1 + 1e-7 is between two f32s): r is padded by it.
+        let (big, small) = (1.0 + 1e-7, 0.25 + 1e-9);
+        let t = Torus::new_f64(DVec3::ZERO, DVec3::Y, big, small).unwrap();
+        let b = t.bounds();
+        let (bb, bs) = (f64::from(b.major_radius()), f64::from(b.minor_radius()));
+        assert!(bs >= small + (big - bb).abs(), "{bb} {bs}");
+        assert!(bs - small < 1e-6);
+        assert_eq!(t.major_radius(), big as f32);
+        assert_eq!(t.minor_radius(), small as f32);
     }
 
     #[test]

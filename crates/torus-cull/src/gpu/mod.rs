@@ -590,14 +590,14 @@ struct Packed {
 impl Frame {
     fn of(torus: &Torus) -> Frame {
         let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
-        let major_f64 = f64::from(torus.major_radius());
+        let major_f64 = torus.major_radius_f64();
         Frame {
             rows: [m.x_axis, m.y_axis, m.z_axis],
             major: torus.major_radius(),
             minor: torus.minor_radius(),
-            center: torus.center().as_dvec3(),
+            center: torus.center_f64(),
             major_f64,
-            outer: major_f64 + f64::from(torus.minor_radius()),
+            outer: major_f64 + torus.minor_radius_f64(),
         }
     }
 

@@ -17,9 +17,10 @@ use crate::geometry::Tube;
 use crate::num::V3;
 use crate::num::{Sc, sc};
 use crate::quartic::{RealRoots, solve_depressed_monic};
-use crate::{DRay, LocalLine, Ray, Torus};
+use crate::{Precision, Ray, Torus};
 use nearest_hit::{Careful, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
+use sealed::{FromExact, Steps};
 
 pub(crate) mod nearest_hit;
 mod ray_cast;
@@ -27,104 +28,101 @@ pub(crate) mod reduce;
 use glam::{DVec3, Vec3};
 pub use ray_cast::{Culled, RayCast};
 
-/// The nearest hit of a ray.
+/// The nearest hit of a ray, in the ray's precision: [`Hit`] (`Hit<Vec3>`, f32) for a
+/// [`Ray`], [`DHit`] (`Hit<DVec3>`, f64) for a [`DRay`](crate::DRay).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
-pub struct Hit {
+pub struct Hit<P: Precision = Vec3> {
     /// Ray parameter, in units of the ray's direction.
-    pub t: f32,
+    pub t: P::Float,
     /// Unit outward surface normal, world space.
-    pub normal: Vec3,
+    pub normal: P,
 }
 
 /// The nearest hit of an f64 ray ([`crate::DRay`]): `t` and the normal in f64.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct DHit {
-    /// Ray parameter, in units of the ray's direction.
-    pub t: f64,
-    /// Unit outward surface normal, world space.
-    pub normal: DVec3,
-}
+pub type DHit = Hit<DVec3>;
 
 /// A ray the exact intersection and [`crate::intersect_culled`] take: [`Ray`] (f32, as a
-/// renderer shoots it; hits in f32) or [`DRay`] (f64 geometry; hits in f64). Sealed: the
-/// two are the whole list.
+/// renderer shoots it; hits in f32) or [`DRay`](crate::DRay) (f64 geometry; hits in f64). Sealed: the
+/// two are the whole list (it is `Ray<P>` for either [`Precision`]).
 pub trait TorusRay: sealed::Sealed {
-    /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`].
-    type Hit;
-    /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`].
+    /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`](crate::DRay).
+    type Hit: sealed::FromExact;
+    /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`](crate::DRay).
     type Float;
-    /// The line in the torus frame in f32, as the culls see it.
-    fn cull_line(&self, torus: &Torus) -> LocalLine;
-    /// Origin and direction in the torus frame, in f64.
-    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3);
-    /// `[t_min, t_max]` in f64.
-    fn range_f64(&self) -> (f64, f64);
-    /// The hit, from f64 `t` and world normal; `None` when `t` does not fit the ray's
-    /// float type (a hit farther along than f32, or f64, can count).
-    fn hit(t: f64, normal: DVec3) -> Option<Self::Hit>;
     /// A hit's `t` ([`RayCast::cast_ray`]'s answer).
+    #[must_use]
     fn hit_t(hit: &Self::Hit) -> Self::Float;
 }
 
-mod sealed {
-    pub trait Sealed {}
-    impl Sealed for crate::Ray {}
-    impl Sealed for crate::DRay {}
+/// What the crate needs of a [`TorusRay`], out of the public docs.
+pub(crate) mod sealed {
+    use super::Hit;
+    use crate::geometry::ray::sealed::{Internals, Scalar};
+    use crate::{LocalLine, Precision, Ray, Torus};
+    use glam::DVec3;
+
+    /// A hit made from the exact intersection's answer.
+    pub trait FromExact: Sized {
+        /// The hit from the exact intersection's f64 `t` and world normal, rounded to the
+        /// ray's precision; `None` when `t` does not fit its float (a hit farther along
+        /// than f32, or f64, can count).
+        fn from_exact(t: f64, normal: DVec3) -> Option<Self>;
+    }
+
+    impl<P: Precision> FromExact for Hit<P> {
+        #[inline(always)]
+        fn from_exact(t: f64, normal: DVec3) -> Option<Hit<P>> {
+            let t = <P::Float as Scalar>::from_f64(t);
+            t.finite().then(|| Hit {
+                t,
+                normal: P::from_dvec3(normal),
+            })
+        }
+    }
+
+    pub trait Sealed {
+        /// The ray as a `Ray` of its precision.
+        type Precision: Precision;
+        fn as_ray(&self) -> &Ray<Self::Precision>;
+    }
+
+    impl<P: Precision> Sealed for Ray<P> {
+        type Precision = P;
+        #[inline(always)]
+        fn as_ray(&self) -> &Ray<P> {
+            self
+        }
+    }
+
+    /// The steps of the exact intersection and of the culls, on any ray.
+    pub(crate) trait Steps: Sealed {
+        /// The line in the torus frame in f32, as the culls see it.
+        #[inline(always)]
+        fn cull_line(&self, torus: &Torus) -> LocalLine {
+            Self::Precision::cull_line(self.as_ray(), torus)
+        }
+        /// Origin and direction in the torus frame, in f64.
+        #[inline(always)]
+        fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3) {
+            torus.line_to_local_f64(self.as_ray())
+        }
+        /// `[t_min, t_max]` in f64.
+        #[inline(always)]
+        fn range_f64(&self) -> (f64, f64) {
+            self.as_ray().range_f64()
+        }
+    }
+
+    impl<R: Sealed + ?Sized> Steps for R {}
 }
 
-impl TorusRay for Ray {
-    type Hit = Hit;
-    type Float = f32;
+impl<P: Precision> TorusRay for Ray<P> {
+    type Hit = Hit<P>;
+    type Float = P::Float;
     #[inline(always)]
-    fn hit_t(hit: &Hit) -> f32 {
+    fn hit_t(hit: &Hit<P>) -> P::Float {
         hit.t
-    }
-    #[inline(always)]
-    fn cull_line(&self, torus: &Torus) -> LocalLine {
-        torus.line_to_local(self)
-    }
-    #[inline(always)]
-    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3) {
-        torus.line_to_local_f64(self)
-    }
-    #[inline(always)]
-    fn range_f64(&self) -> (f64, f64) {
-        (f64::from(self.t_min()), f64::from(self.t_max()))
-    }
-    #[inline(always)]
-    fn hit(t: f64, normal: DVec3) -> Option<Hit> {
-        let t = t as f32;
-        t.is_finite().then(|| Hit {
-            t,
-            normal: normal.as_vec3(),
-        })
-    }
-}
-
-impl TorusRay for DRay {
-    type Hit = DHit;
-    type Float = f64;
-    #[inline(always)]
-    fn hit_t(hit: &DHit) -> f64 {
-        hit.t
-    }
-    #[inline]
-    fn cull_line(&self, torus: &Torus) -> LocalLine {
-        torus.dline_to_local(self)
-    }
-    #[inline(always)]
-    fn local_f64(&self, torus: &Torus) -> (DVec3, DVec3) {
-        torus.dline_to_local_f64(self)
-    }
-    #[inline(always)]
-    fn range_f64(&self) -> (f64, f64) {
-        (self.t_min(), self.t_max())
-    }
-    #[inline(always)]
-    fn hit(t: f64, normal: DVec3) -> Option<DHit> {
-        t.is_finite().then_some(DHit { t, normal })
     }
 }
 
@@ -149,6 +147,22 @@ pub fn quartic_coefficients_local(major: f64, minor: f64, o: DVec3, d: DVec3) ->
 
 /// Every real `t` (units of `d`, sorted, double roots twice) where the whole line
 /// `o + t·d` meets the torus; torus-frame input, no range restriction.
+///
+/// ```
+/// use glam::DVec3;
+/// use torus_cull::intersect::line_roots_local;
+/// // R = 2, r = 1: along the x axis from x = −5 the line crosses x = −3, −1, 1, 3.
+/// let roots = line_roots_local(2.0, 1.0, DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+/// assert_eq!(roots.len(), 4);
+/// for (got, want) in roots.as_slice().iter().zip([2.0, 4.0, 6.0, 8.0]) {
+///     assert!((got - want).abs() < 1e-12);
+/// }
+/// // Roots behind the origin count too (no range), in units of the direction given.
+/// let back = line_roots_local(2.0, 1.0, DVec3::new(5.0, 0.0, 0.0), DVec3::X * 2.0);
+/// assert!((back.as_slice()[0] + 4.0).abs() < 1e-12); // x = −3
+/// // Down the axis, through the hole: no root.
+/// assert!(line_roots_local(2.0, 1.0, DVec3::new(0.0, 5.0, 0.0), DVec3::NEG_Y).is_empty());
+/// ```
 #[must_use]
 pub fn line_roots_local(major: f64, minor: f64, o: DVec3, d: DVec3) -> RealRoots {
     let (line, [c2, c1, c0]) = reduce(&Tube::new(major, minor), o, d);
@@ -194,7 +208,7 @@ fn intersect_reduced<const CHECKED: bool>(
 }
 
 /// The nearest hit with `t ∈ [t_min, t_max]`, or `None`: for a [`Ray`] a [`Hit`] in f32,
-/// for a [`DRay`] a [`DHit`] in f64 (nothing rounded to f32 on the way). A hit whose `t`
+/// for a [`DRay`](crate::DRay) a [`DHit`] in f64 (nothing rounded to f32 on the way). A hit whose `t`
 /// overflows the ray's float type (an origin near f32's, or f64's, largest value, aimed
 /// back at the torus) is not reported: no finite `t` of that type reaches it.
 ///
@@ -224,7 +238,7 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     let (t_min, t_max) = ray.range_f64();
     let (t, n) = intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)?;
     // The rotation is orthonormal: its transpose is its inverse.
-    R::hit(t, torus.to_local_rotation_f64().transpose() * n)
+    R::Hit::from_exact(t, torus.to_local_rotation_f64().transpose() * n)
 }
 
 /// Whether the ray meets the torus at some `t ∈ [t_min, t_max]`: a shadow ray's question.
@@ -246,7 +260,7 @@ pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();
     intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)
-        .is_some_and(|(t, n)| R::hit(t, n).is_some())
+        .is_some_and(|(t, n)| R::Hit::from_exact(t, n).is_some())
 }
 
 #[cfg(test)]

@@ -13,6 +13,21 @@ use super::{RealRoots, eval, eval2, even, factor};
 /// Coefficients of any finite size are taken: where the roots' scale lies beyond 2^±25
 /// or the coefficients beyond 2^±900, the quartic is solved for t/2^m with its
 /// coefficients scaled by powers of two, and a root too large for f64 is left out.
+///
+/// ```
+/// use torus_cull::quartic::solve_quartic;
+/// // 2(t − 1)(t − 2)(t − 3)(t − 4) = 2t⁴ − 20t³ + 70t² − 100t + 48.
+/// let roots = solve_quartic([2.0, -20.0, 70.0, -100.0, 48.0]);
+/// assert_eq!(roots.len(), 4);
+/// for (got, want) in roots.as_slice().iter().zip([1.0, 2.0, 3.0, 4.0]) {
+///     assert!((got - want).abs() < 1e-12);
+/// }
+/// // t⁴ + 1 has no real root; a double root is reported twice: (t − 5)²(t² + 1).
+/// assert!(solve_quartic([1.0, 0.0, 0.0, 0.0, 1.0]).is_empty());
+/// let double = solve_quartic([1.0, -10.0, 26.0, -10.0, 25.0]);
+/// assert_eq!(double.len(), 2);
+/// assert!(double.as_slice().iter().all(|t| (t - 5.0).abs() < 1e-6));
+/// ```
 #[must_use]
 pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
     if c[0] == 0.0 || !c.iter().all(|v| v.is_finite()) {
