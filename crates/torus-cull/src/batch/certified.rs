@@ -13,7 +13,7 @@
 //! the f64 [`crate::intersect()`].
 
 use super::intersect::{RaysF64, TorusF64};
-use super::lines::BLOCK;
+use super::lines::{BLOCK, size_lane_output};
 use crate::Torus;
 use crate::certified::certificate::{ScaledLine, V3, decide, normal_at, solve_uncertified};
 use crate::certified::line::{LINE_ABS, LINE_REL, scale};
@@ -65,11 +65,7 @@ pub(crate) fn certify_lanes(
     out.u.resize(n, 0.0);
     out.s.resize(n, 0.0);
     out.inv_len.resize(n, 0.0);
-    for c in &mut out.normal {
-        c.resize(n, 0.0);
-    }
-    out.hit.resize(n / BLOCK, 0);
-    out.miss.resize(n / BLOCK, 0);
+    size_lane_output(n, &mut out.normal, [&mut out.hit, &mut out.miss]);
     dispatch.run(Kernel {
         frame: TorusF64::of(torus),
         to_world: torus.to_local_rotation().transpose(),

@@ -8,7 +8,7 @@
 //! scalar [`crate::intersect()`] on that ray instead, so tangent rays get exactly the
 //! scalar answer.
 
-use super::lines::BLOCK;
+use super::lines::{BLOCK, size_lane_output};
 use crate::geometry::Tube;
 use crate::intersect::nearest_hit::{NearestRoot, nearest_hit};
 pub(crate) use crate::num::DVec3s;
@@ -105,11 +105,7 @@ pub(crate) fn intersect_lanes(
 ) {
     let n = rays.padded();
     out.t.resize(n, 0.0);
-    for c in &mut out.normal {
-        c.resize(n, 0.0);
-    }
-    out.hit.resize(n / BLOCK, 0);
-    out.fallback.resize(n / BLOCK, 0);
+    size_lane_output(n, &mut out.normal, [&mut out.hit, &mut out.fallback]);
     dispatch.run(Kernel {
         frame: TorusF64::of(torus),
         rays,

@@ -152,6 +152,21 @@ impl Lines {
     }
 }
 
+/// Sizes a lane pass's output for `n` lanes (a multiple of [`BLOCK`]): the world normal's
+/// three columns per lane, and two bit words (say "hit" and "left undecided") per block.
+pub(crate) fn size_lane_output<T: Copy + Default>(
+    n: usize,
+    normal: &mut [Vec<T>; 3],
+    bits: [&mut Vec<u64>; 2],
+) {
+    for c in normal {
+        c.resize(n, T::default());
+    }
+    for b in bits {
+        b.resize(n / BLOCK, 0);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

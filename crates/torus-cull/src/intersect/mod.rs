@@ -462,6 +462,22 @@ mod tests {
         Torus::new(center, axis, major, major / nu).expect("valid radii at any pose")
     }
 
+    /// An origin in the box ±`reach`·R around the centre, and the direction from it to a
+    /// point near the tube (|x|, |z| ≤ 1.5R, |y| ≤ 0.5R), unnormalized.
+    fn aimed_at_the_tube(rng: &mut Pcg64, torus: &Torus, reach: f32) -> (Vec3, Vec3) {
+        let big = torus.major_radius();
+        let mut offset = |x: f32, y: f32| {
+            Vec3::new(
+                rng.random_range(-x..x),
+                rng.random_range(-y..y),
+                rng.random_range(-x..x),
+            ) * big
+        };
+        let o = torus.center() + offset(reach, reach);
+        let target = torus.center() + offset(1.5, 0.5);
+        (o, target - o)
+    }
+
     #[test]
     fn random_poses_hits_lie_on_the_surface_with_correct_normals() {
         // Rays from a box of ±4R aimed at random points near the torus. For each hit:
@@ -472,20 +488,8 @@ mod tests {
         let mut hits = 0;
         for _ in 0..5000 {
             let torus = random_torus(&mut rng);
-            let big = torus.major_radius();
-            let o = torus.center()
-                + Vec3::new(
-                    rng.random_range(-4.0..4.0),
-                    rng.random_range(-4.0..4.0),
-                    rng.random_range(-4.0..4.0),
-                ) * big;
-            let target = torus.center()
-                + Vec3::new(
-                    rng.random_range(-1.5..1.5),
-                    rng.random_range(-0.5..0.5),
-                    rng.random_range(-1.5..1.5),
-                ) * big;
-            let dir = (target - o) * rng.random_range(0.01..100.0);
+            let (o, dir) = aimed_at_the_tube(&mut rng, &torus, 4.0);
+            let dir = dir * rng.random_range(0.01..100.0);
             let Ok(ray) = Ray::new(o, dir) else { continue };
             let (lo, ld) = torus.line_to_local_f64(&ray);
             let (major, minor) = (
@@ -579,19 +583,8 @@ mod tests {
         for _ in 0..3000 {
             let torus = random_torus(&mut rng);
             let big = torus.major_radius();
-            let o = torus.center()
-                + Vec3::new(
-                    rng.random_range(-3.0..3.0),
-                    rng.random_range(-3.0..3.0),
-                    rng.random_range(-3.0..3.0),
-                ) * big;
-            let target = torus.center()
-                + Vec3::new(
-                    rng.random_range(-1.5..1.5),
-                    rng.random_range(-0.5..0.5),
-                    rng.random_range(-1.5..1.5),
-                ) * big;
-            let dir = (target - o).normalize();
+            let (o, dir) = aimed_at_the_tube(&mut rng, &torus, 3.0);
+            let dir = dir.normalize();
             let Ok(near) = Ray::new(o, dir) else { continue };
             let Some(hn) = intersect(&torus, &near) else {
                 continue;
