@@ -136,15 +136,15 @@ fn foot_points<S: Simd>(
         let (o, d) = frame.line_to_local(origin, dir);
         let line = scale(o, d, F64s::splat(s, frame.tube.inv_major), t_min, t_max);
         far |= line.far.bits() << k;
-        let (q, dh) = (line.q, line.dh);
+        let (q, dh) = (line.foot.p, line.foot.dh);
         for (j, v) in [q.x, q.y, q.z, dh.x, dh.y, dh.z, line.lo, line.hi]
             .into_iter()
             .enumerate()
         {
             v.store(&mut wide[j][k..k + lanes]);
         }
-        line.s.store(&mut out.s[at.clone()]);
-        line.inv_len.store(&mut out.inv_len[at]);
+        line.foot.s.store(&mut out.s[at.clone()]);
+        line.foot.inv_len.store(&mut out.inv_len[at]);
     }
     for (narrow, wide) in columns.iter_mut().zip(wide.iter()) {
         for (n, w) in narrow.iter_mut().zip(wide) {

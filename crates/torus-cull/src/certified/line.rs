@@ -7,7 +7,7 @@
 //! bounds do not grow with the distance of the origin.
 
 use super::certificate::{ScaledLine, U32, V3};
-use crate::intersect::reduce::{foot_line, t_at};
+use crate::intersect::reduce::{FootLine, foot_line, t_at};
 use crate::num::{Real, Sc, sc};
 use crate::{Ray, Torus};
 
@@ -33,16 +33,12 @@ impl BackMap {
 /// A scaled line in f64 (one ray at width 1, a register on lanes), before its one
 /// rounding to f32.
 pub(crate) struct WideLine<R: Real> {
-    /// Foot point over R.
-    pub(crate) q: V3<R>,
-    /// Unit direction.
-    pub(crate) dh: V3<R>,
+    /// The foot-point line: foot point over R, unit direction, and the back map
+    /// `t = (u·R − s)/|d|`.
+    pub(crate) foot: FootLine<R>,
     /// The ray's range in `u`, clamped to ±4.
     pub(crate) lo: R,
     pub(crate) hi: R,
-    /// `o·d̂` and `1/|d|`: the back map `t = (u·R − s)/|d|`.
-    pub(crate) s: R,
-    pub(crate) inv_len: R,
     /// Origins too far for the bounds (see [`FAR_SCALED`]), or not finite: they escalate.
     pub(crate) far: R::Mask,
 }
@@ -60,12 +56,9 @@ pub(crate) fn scale<R: Real>(o: V3<R>, d: V3<R>, inv_major: R, t_min: R, t_max: 
     // finite.
     let (min, max) = (inv_major.splat(-4.0), inv_major.splat(4.0));
     WideLine {
-        q: line.p,
-        dh: line.dh,
+        foot: line,
         lo: lo.max(min).min(max),
         hi: hi.max(min).min(max),
-        s: line.s,
-        inv_len: line.inv_len,
         far,
     }
 }
@@ -120,7 +113,7 @@ pub(crate) fn of_ray(torus: &Torus, ray: &Ray) -> Option<([[f32; 3]; 3], BackMap
         return None;
     }
     let f = |x: Sc| x.v as f32;
-    let (q, dh) = (wide.q, wide.dh);
+    let (q, dh) = (wide.foot.p, wide.foot.dh);
     Some((
         [
             [f(q.x), f(q.y), f(q.z)],
@@ -129,8 +122,8 @@ pub(crate) fn of_ray(torus: &Torus, ray: &Ray) -> Option<([[f32; 3]; 3], BackMap
         ],
         BackMap {
             major: tube.major,
-            s: wide.s.v,
-            inv_len: wide.inv_len.v,
+            s: wide.foot.s.v,
+            inv_len: wide.foot.inv_len.v,
         },
     ))
 }
