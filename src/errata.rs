@@ -77,69 +77,62 @@ impl Cull for CychoszPrintedCull {
     }
 }
 
+/// A Skala cull built from the section formulas `$formulas` (one of the printed
+/// misreadings below), under the stable name `$name`.
+macro_rules! printed_skala_cull {
+    ($cull:ty, $name:literal, $formulas:ty) => {
+        impl Cull for $cull {
+            fn name(&self) -> &'static str {
+                $name
+            }
+
+            fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
+                skala_keeps::<$formulas>(b, origin, dir)
+            }
+        }
+    };
+}
+
 /// Skala with Eq. 105 as printed: h_c² = r² − (a − r)² instead of r² − (a − R)².
 #[derive(Debug, Clone, Copy, Default)]
 pub struct SkalaPrintedCCull;
 
-struct PrintedBand;
-
-impl SectionFormulas for PrintedBand {
-    fn minor(b: &CullBounds) -> f32 {
-        b.minor_radius()
-    }
-    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
-        let inner = F32s::splat(a_h.s, b.major_radius() - b.minor_radius());
-        inner * inner * h_sq - a_h * a_h
-    }
-    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
-        let minor = F32s::splat(a_h.s, b.minor_radius());
-        let off = a_h - minor * h;
-        minor * minor * h * h - off * off
-    }
-}
-
-impl Cull for SkalaPrintedCCull {
-    fn name(&self) -> &'static str {
-        "skala_printed_c"
-    }
-
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        skala_keeps::<PrintedBand>(b, origin, dir)
-    }
-}
+printed_skala_cull!(SkalaPrintedCCull, "skala_printed_c", Printed<false>);
 
 /// Skala with Eq. 102–103 as printed: x_B = (R − r) cos φ with sin φ = a/R, i.e.
 /// x_B² = (R − r)²(1 − a²/R²), wider than the true √((R − r)² − a²).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct SkalaEq102Cull;
 
-struct PrintedHole;
+printed_skala_cull!(SkalaEq102Cull, "skala_eq102", Printed<true>);
 
-impl SectionFormulas for PrintedHole {
+/// The printed section formulas on the unpadded torus, one misprint at a time: with
+/// `EQ102`, x_B as printed in Eq. 102–103 and h_c as corrected; without, x_B as in
+/// Eq. 104 and h_c as printed in Eq. 105.
+struct Printed<const EQ102: bool>;
+
+impl<const EQ102: bool> SectionFormulas for Printed<EQ102> {
     fn minor(b: &CullBounds) -> f32 {
         b.minor_radius()
     }
     fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
         let inner = F32s::splat(a_h.s, b.major_radius() - b.minor_radius());
-        let sin_phi_h = a_h / F32s::splat(a_h.s, b.major_radius());
-        inner * inner * (h_sq - sin_phi_h * sin_phi_h)
+        if EQ102 {
+            let sin_phi_h = a_h / F32s::splat(a_h.s, b.major_radius());
+            inner * inner * (h_sq - sin_phi_h * sin_phi_h)
+        } else {
+            inner * inner * h_sq - a_h * a_h
+        }
     }
     fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
-        let (major, minor) = (
-            F32s::splat(a_h.s, b.major_radius()),
-            F32s::splat(a_h.s, b.minor_radius()),
-        );
-        let off = a_h - major * h;
+        let minor = F32s::splat(a_h.s, b.minor_radius());
+        // The printed Eq. 105 has r where the corrected one has R.
+        let centre = if EQ102 {
+            F32s::splat(a_h.s, b.major_radius())
+        } else {
+            minor
+        };
+        let off = a_h - centre * h;
         minor * minor * h * h - off * off
-    }
-}
-
-impl Cull for SkalaEq102Cull {
-    fn name(&self) -> &'static str {
-        "skala_eq102"
-    }
-
-    fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
-        skala_keeps::<PrintedHole>(b, origin, dir)
     }
 }

@@ -316,11 +316,18 @@ fn ignore_unsyncable(e: io::Error) -> io::Result<()> {
 mod tests {
     use super::*;
 
+    /// A fresh directory holding one file, `name`, with `contents`; the directory and the
+    /// file's path.
+    fn dir_with_file(name: &str, contents: &str) -> (tempfile::TempDir, PathBuf) {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join(name);
+        fs::write(&path, contents).unwrap();
+        (dir, path)
+    }
+
     #[test]
     fn replaces_a_regular_file_by_rename_and_leaves_no_temp() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("out.json");
-        fs::write(&path, "old").unwrap();
+        let (dir, path) = dir_with_file("out.json", "old");
         // A hard link to the old file still sees the old bytes after a rename.
         let link = dir.path().join("old-link");
         fs::hard_link(&path, &link).unwrap();
@@ -362,9 +369,7 @@ mod tests {
 
     #[test]
     fn an_input_is_not_an_output() {
-        let dir = tempfile::tempdir().unwrap();
-        let input = dir.path().join("in.csv");
-        fs::write(&input, "x").unwrap();
+        let (dir, input) = dir_with_file("in.csv", "x");
         let same = dir.path().join(".").join("in.csv");
         let e = check_not_input(("--out", &same), &[("--rays", &input)]).unwrap_err();
         assert!(e.contains("--out") && e.contains("--rays"), "{e}");
@@ -374,9 +379,7 @@ mod tests {
 
     #[test]
     fn an_unfinished_output_leaves_the_old_file_and_no_temp() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("out.csv");
-        fs::write(&path, "old").unwrap();
+        let (dir, path) = dir_with_file("out.csv", "old");
         {
             let mut out = Output::create(&path).unwrap();
             out.write_all(b"half").unwrap();
@@ -386,32 +389,31 @@ mod tests {
         assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 1);
     }
 
+    /// Asserts that `path` is still a symbolic link (not replaced by a regular file).
+    #[cfg(unix)]
+    #[track_caller]
+    fn assert_is_symlink(path: &Path) {
+        assert!(
+            fs::symlink_metadata(path).unwrap().file_type().is_symlink(),
+            "{} is no longer a symlink",
+            path.display()
+        );
+    }
+
     #[cfg(unix)]
     #[test]
     fn follows_symlinks_and_keeps_the_link() {
-        let dir = tempfile::tempdir().unwrap();
-        let real = dir.path().join("real.svg");
-        fs::write(&real, "old").unwrap();
+        let (dir, real) = dir_with_file("real.svg", "old");
         let link = dir.path().join("link.svg");
         std::os::unix::fs::symlink("real.svg", &link).unwrap();
         write_file(&link, b"new").unwrap();
-        assert!(
-            fs::symlink_metadata(&link)
-                .unwrap()
-                .file_type()
-                .is_symlink()
-        );
+        assert_is_symlink(&link);
         assert_eq!(fs::read_to_string(&real).unwrap(), "new");
         // A dangling link: its target is created.
         let dangling = dir.path().join("dangling");
         std::os::unix::fs::symlink("made.json", &dangling).unwrap();
         write_file(&dangling, b"made").unwrap();
-        assert!(
-            fs::symlink_metadata(&dangling)
-                .unwrap()
-                .file_type()
-                .is_symlink()
-        );
+        assert_is_symlink(&dangling);
         assert_eq!(
             fs::read_to_string(dir.path().join("made.json")).unwrap(),
             "made"
@@ -462,12 +464,7 @@ mod tests {
             std::os::unix::fs::symlink("/dev/full", &full).unwrap();
             let e = write_file(&full, &[0u8; 1 << 16]).unwrap_err();
             assert_eq!(e.raw_os_error(), Some(28), "{e}"); // ENOSPC
-            assert!(
-                fs::symlink_metadata(&full)
-                    .unwrap()
-                    .file_type()
-                    .is_symlink()
-            );
+            assert_is_symlink(&full);
         }
         // A FIFO stays a FIFO, and its reader gets the bytes.
         let fifo = dir.path().join("fifo");

@@ -122,34 +122,20 @@ macro_rules! real {
                 x as $t
             }
             #[inline(always)]
-            fn sqrt(self) -> $t {
-                <$t>::sqrt(self)
-            }
-            #[inline(always)]
-            fn cbrt(self) -> $t {
-                <$t>::cbrt(self)
-            }
-            #[inline(always)]
-            fn abs(self) -> $t {
-                <$t>::abs(self)
-            }
-            #[inline(always)]
-            fn signum(self) -> $t {
-                <$t>::signum(self)
-            }
-            #[inline(always)]
-            fn acos(self) -> $t {
-                <$t>::acos(self)
-            }
-            #[inline(always)]
-            fn cos(self) -> $t {
-                <$t>::cos(self)
-            }
-            #[inline(always)]
             fn clamp(self, lo: $t, hi: $t) -> $t {
                 <$t>::clamp(self, lo, hi)
             }
+            real!(@unary $t: sqrt, cbrt, abs, signum, acos, cos);
         }
+    };
+    // The one-argument methods, each the inherent method of the same name.
+    (@unary $t:ty: $($f:ident),*) => {
+        $(
+            #[inline(always)]
+            fn $f(self) -> $t {
+                <$t>::$f(self)
+            }
+        )*
     };
 }
 real!(f32);

@@ -312,33 +312,61 @@ impl Charts<'_> {
     }
 }
 
+/// One chart per group: the name's suffix, the title after the group, the y label, and
+/// each record's value with its interval, if it has one.
+type GroupChart<R> = (
+    &'static str,
+    &'static str,
+    &'static str,
+    fn(&R) -> Option<(f64, Option<[f64; 2]>)>,
+);
+
+/// Per group of `records`, in order, each of `specs` as chart
+/// `<name_prefix><group>-<suffix>` titled `<title_prefix><group>: <title>`, from zero.
+fn group_charts<R: Record>(
+    records: &[R],
+    charts: &mut Charts<'_>,
+    (name_prefix, title_prefix): (&str, &str),
+    specs: &[GroupChart<R>],
+) -> Result<(), Box<dyn std::error::Error>> {
+    for group in ordered(records.iter().map(Record::group)) {
+        for &(suffix, title, y, value) in specs {
+            charts.chart(
+                format!("{name_prefix}{group}-{suffix}"),
+                format!("{title_prefix}{group}: {title}"),
+                y,
+                lines(records, &group, value),
+                true,
+            )?;
+        }
+    }
+    Ok(())
+}
+
 /// `run`'s counts: miss capture and rejection rate per case.
 fn rejection_charts(
     records: &[RejectionRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    for group in ordered(records.iter().map(Record::group)) {
-        let of = |y: fn(&RejectionRecord) -> Option<f64>| {
-            lines(records, &group, |r| y(r).map(|v| (v, None)))
-        };
-        let capture = of(|r| r.miss_capture);
-        let rate = of(|r| Some(r.rejection_rate));
-        charts.chart(
-            format!("{group}-miss_capture"),
-            format!("{group}: miss capture (rejected / misses)"),
-            "miss capture",
-            capture,
-            true,
-        )?;
-        charts.chart(
-            format!("{group}-rejection_rate"),
-            format!("{group}: rejection rate (rejected / rays)"),
-            "rejection rate",
-            rate,
-            true,
-        )?;
-    }
-    Ok(())
+    group_charts(
+        records,
+        charts,
+        ("", ""),
+        &[
+            (
+                "miss_capture",
+                "miss capture (rejected / misses)",
+                "miss capture",
+                |r| r.miss_capture.map(|v| (v, None)),
+            ),
+            (
+                "rejection_rate",
+                "rejection rate (rejected / rays)",
+                "rejection rate",
+                |r| Some((r.rejection_rate, None)),
+            ),
+        ],
+    )
 }
 
 /// The benches' timings: ns per ray and speedup against no cull, per group.
@@ -346,25 +374,25 @@ fn timing_charts(
     records: &[TimingRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    for group in ordered(records.iter().map(Record::group)) {
-        let total = lines(records, &group, |r| Some((r.total_ns, Some(r.total_ns_ci))));
-        let speedup = lines(records, &group, |r| Some((r.speedup_vs_none, None)));
-        charts.chart(
-            format!("{group}-total_ns"),
-            format!("{group}: cull + exact intersection, ns per ray [CI]"),
-            "total ns per ray",
-            total,
-            true,
-        )?;
-        charts.chart(
-            format!("{group}-speedup"),
-            format!("{group}: speedup vs none"),
-            "total_ns(none) / total_ns(cull)",
-            speedup,
-            true,
-        )?;
-    }
-    Ok(())
+    group_charts(
+        records,
+        charts,
+        ("", ""),
+        &[
+            (
+                "total_ns",
+                "cull + exact intersection, ns per ray [CI]",
+                "total ns per ray",
+                |r| Some((r.total_ns, Some(r.total_ns_ci))),
+            ),
+            (
+                "speedup",
+                "speedup vs none",
+                "total_ns(none) / total_ns(cull)",
+                |r| Some((r.speedup_vs_none, None)),
+            ),
+        ],
+    )
 }
 
 /// The BVH scenes: throughput and quartic solves per ray, per scene and ray set.
@@ -372,27 +400,22 @@ fn bvh_charts(
     records: &[BvhRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    for group in ordered(records.iter().map(Record::group)) {
-        let of =
-            |y: fn(&BvhRecord) -> Option<f64>| lines(records, &group, |r| y(r).map(|v| (v, None)));
-        let mrays = of(|r| Some(r.mrays_per_s));
-        let solves = of(|r| Some(r.quartic_solves_per_ray));
-        charts.chart(
-            format!("bvh-{group}-mrays"),
-            format!("BVH {group}: million rays per second"),
-            "Mrays/s",
-            mrays,
-            true,
-        )?;
-        charts.chart(
-            format!("bvh-{group}-quartic_solves"),
-            format!("BVH {group}: quartic solves per ray"),
-            "quartic solves per ray",
-            solves,
-            true,
-        )?;
-    }
-    Ok(())
+    group_charts(
+        records,
+        charts,
+        ("bvh-", "BVH "),
+        &[
+            ("mrays", "million rays per second", "Mrays/s", |r| {
+                Some((r.mrays_per_s, None))
+            }),
+            (
+                "quartic_solves",
+                "quartic solves per ray",
+                "quartic solves per ray",
+                |r| Some((r.quartic_solves_per_ray, None)),
+            ),
+        ],
+    )
 }
 
 /// `torus-cull time`'s paired ratios: one chart per case × metric × reference.

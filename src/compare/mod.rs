@@ -26,7 +26,7 @@ mod rows;
 pub use rows::{Report, Row};
 
 use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
-use rows::pair_up;
+use rows::{noise_or_faster, pair_up};
 use std::fmt::Write;
 
 fn key(kind: &str, nu: f64, cull: &str) -> String {
@@ -122,21 +122,19 @@ fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
 }
 
 fn timing_row(key: String, o: &TimingRecord, n: &TimingRecord, threshold: f64) -> Row {
-    let mut flags = Vec::new();
     let change = n.total_ns / o.total_ns - 1.0;
     let disjoint = n.total_ns_ci[0] > o.total_ns_ci[1] || n.total_ns_ci[1] < o.total_ns_ci[0];
-    let mut regression = false;
-    if change > threshold && disjoint {
-        regression = true;
-        flags.push(format!(
+    let regression = change > threshold && disjoint;
+    let flags = if regression {
+        vec![format!(
             "REGRESSION: {:+.1}% slower, intervals disjoint",
             change * 100.0
-        ));
-    } else if change > threshold {
-        flags.push("slower, intervals overlap (noise)".into());
-    } else if change < -threshold && disjoint {
-        flags.push("faster".into());
-    }
+        )]
+    } else {
+        noise_or_faster(change, threshold, disjoint)
+            .into_iter()
+            .collect()
+    };
     Row {
         section: "timing",
         key,

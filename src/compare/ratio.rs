@@ -23,7 +23,7 @@
 //! longer decide, because two absolute timings taken minutes apart differ by 10–20 % on a
 //! shared machine whatever the code does.
 
-use super::rows::{Report, Row, pair_up};
+use super::rows::{Report, Row, noise_or_faster, pair_up};
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord, Results};
 
 /// Adds one `ratio` row per record present in both files to `report`, and, when both
@@ -112,10 +112,8 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
             "slower, intervals disjoint ({}: shown, not a verdict)",
             n.metric
         ));
-    } else if change > threshold {
-        flags.push("slower, intervals overlap (noise)".into());
-    } else if change < -threshold && better_disjoint {
-        flags.push("faster".into());
+    } else {
+        flags.extend(noise_or_faster(change, threshold, better_disjoint));
     }
     Row {
         section: "ratio",

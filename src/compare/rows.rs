@@ -36,6 +36,23 @@ pub struct Report {
     pub notes: Vec<String>,
 }
 
+/// The flag of a timed value that moved by `change` (relative, positive slower) without
+/// a disjoint slowdown: noise when it grew past `threshold`, `faster` when it fell past
+/// it with disjoint intervals (`better_disjoint`), else none.
+pub(super) fn noise_or_faster(
+    change: f64,
+    threshold: f64,
+    better_disjoint: bool,
+) -> Option<String> {
+    if change > threshold {
+        Some("slower, intervals overlap (noise)".into())
+    } else if change < -threshold && better_disjoint {
+        Some("faster".into())
+    } else {
+        None
+    }
+}
+
 impl Report {
     /// Number of regressions.
     pub fn regressions(&self) -> usize {

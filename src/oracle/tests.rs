@@ -114,20 +114,26 @@ fn close(a: f64, b: f64, tol: f64) -> bool {
     (a - b).abs() <= tol
 }
 
+/// Asserts that the line through `o` along +x hits `p` with `margin` (to 1e-15) and
+/// crosses it at exactly the `t`s of `want` (each to 1e-14).
+#[track_caller]
+fn assert_hit_along_x(p: &Pose, o: DVec3, margin: f64, want: &[f64]) {
+    let l = p.label(o, DVec3::X, -INF, INF);
+    assert_eq!(l.class, OracleClass::Hit);
+    assert!(close(l.margin, margin, 1e-15), "{l:?}");
+    let roots = p.roots(o, DVec3::X, -INF, INF);
+    assert_eq!(roots.len(), want.len(), "{roots:?}");
+    for (t, w) in roots.iter().zip(want) {
+        assert!(close(*t, *w, 1e-14), "{roots:?}");
+    }
+}
+
 #[test]
 fn hand_computed_lines_on_the_canonical_torus() {
     let p = Pose::canonical(2.0, 1.0);
     let x = DVec3::X;
     // Along the x axis: through both tube centres (D = 0 at x = ±2), margin −r.
-    let o = DVec3::new(-5.0, 0.0, 0.0);
-    let l = p.label(o, x, -INF, INF);
-    assert_eq!(l.class, OracleClass::Hit);
-    assert!(close(l.margin, -1.0, 1e-15), "{l:?}");
-    let roots = p.roots(o, x, -INF, INF);
-    assert_eq!(roots.len(), 4, "{roots:?}");
-    for (t, want) in roots.iter().zip([2.0, 4.0, 6.0, 8.0]) {
-        assert!(close(*t, want, 1e-14), "{roots:?}");
-    }
+    assert_hit_along_x(&p, DVec3::new(-5.0, 0.0, 0.0), -1.0, &[2.0, 4.0, 6.0, 8.0]);
     // Vertical line at ρ = 0.5 through the hole: margin |0.5 − 2| − 1.
     let o = DVec3::new(0.3, 3.0, 0.4);
     let l = p.label(o, -DVec3::Y, -INF, INF);
@@ -190,29 +196,14 @@ fn f32_wrappers_use_the_ray_range_and_the_line() {
 #[test]
 fn design_section7_counterexamples_are_hits() {
     let p = Pose::canonical(2.0, 1.0);
-    let x = DVec3::X;
     // Eq. 35: y = 0.5 through both tubes; crossings at x = ±2 ± √0.75.
-    let o = DVec3::new(-6.0, 0.5, 0.0);
-    let l = p.label(o, x, -INF, INF);
-    assert_eq!(l.class, OracleClass::Hit);
-    assert!(close(l.margin, -0.5, 1e-15), "{l:?}");
-    let roots = p.roots(o, x, -INF, INF);
     let h = 0.75f64.sqrt();
     let want = [6.0 - 2.0 - h, 6.0 - 2.0 + h, 6.0 + 2.0 - h, 6.0 + 2.0 + h];
-    assert_eq!(roots.len(), 4, "{roots:?}");
-    for (t, w) in roots.iter().zip(want) {
-        assert!(close(*t, w, 1e-14), "{roots:?}");
-    }
+    assert_hit_along_x(&p, DVec3::new(-6.0, 0.5, 0.0), -0.5, &want);
     // Eq. 105: the plane z = 2, y = 0.5; crossings at x = ±√((2 + √0.75)² − 4) ≈ ±2.0528.
-    let o = DVec3::new(-5.0, 0.5, 2.0);
-    let l = p.label(o, x, -INF, INF);
-    assert_eq!(l.class, OracleClass::Hit);
-    assert!(close(l.margin, -0.5, 1e-15), "{l:?}");
     let xr = ((2.0 + h).powi(2) - 4.0).sqrt();
     assert!(close(xr, 2.0528, 1e-4));
-    let roots = p.roots(o, x, -INF, INF);
-    assert_eq!(roots.len(), 2, "{roots:?}");
-    assert!(close(roots[0], 5.0 - xr, 1e-14) && close(roots[1], 5.0 + xr, 1e-14));
+    assert_hit_along_x(&p, DVec3::new(-5.0, 0.5, 2.0), -0.5, &[5.0 - xr, 5.0 + xr]);
     // Eq. 102: steep line through the hole's edge; at t = 3 it is at ρ ≈ 1.056, y = 0.
     let (o, d) = (DVec3::new(0.9, -3.0, 0.5), DVec3::new(0.01, 1.0, 0.0));
     let l = p.label(o, d, -INF, INF);

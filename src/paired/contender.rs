@@ -148,6 +148,13 @@ impl<'a> Workset<'a> {
     pub fn is_empty(&self) -> bool {
         self.rays.is_empty()
     }
+
+    /// The batch forms; panics on a set made without [`Workset::with_batch`].
+    fn batch_set(&self) -> &BatchSet {
+        self.batch
+            .as_ref()
+            .expect("a batch metric needs Workset::with_batch")
+    }
 }
 
 /// Time `reps` passes of `cull` over the batch, measuring `metric`.
@@ -166,10 +173,7 @@ pub fn time_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize)
 #[inline(never)]
 fn time_batch_pass(cull: CullKind, metric: Metric, set: &Workset<'_>, reps: usize) -> Duration {
     let cull = cull.batched().expect("a cull with a batch form");
-    let batch = set
-        .batch
-        .as_ref()
-        .expect("a batch metric needs Workset::with_batch");
+    let batch = set.batch_set();
     let mut scratch = batch.scratch.borrow_mut();
     let (wavefront, hits, keep) = &mut *scratch;
     let d = &batch.dispatch;
@@ -209,10 +213,7 @@ pub fn escalation_rate(cull: CullKind, metric: Metric, set: &Workset<'_>) -> Opt
     if !metric.is_f32() {
         return None;
     }
-    let batch = set
-        .batch
-        .as_ref()
-        .expect("a batch metric needs Workset::with_batch");
+    let batch = set.batch_set();
     let mut scratch = batch.scratch.borrow_mut();
     let (wavefront, hits, _) = &mut *scratch;
     let (d, torus) = (&batch.dispatch, set.torus);
