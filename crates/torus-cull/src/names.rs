@@ -99,7 +99,7 @@ impl std::error::Error for UnknownName {}
 /// ([`Named::parse`], erring with [`UnknownName`]) for each [`Named`] type given.
 ///
 /// ```
-/// use torus_cull::{Isa, Named};
+/// use torus_cull::batch::Isa;
 /// // Isa's impls come from this macro.
 /// assert_eq!(Isa::Scalar.to_string(), "scalar");
 /// assert_eq!("scalar".parse::<Isa>(), Ok(Isa::Scalar));

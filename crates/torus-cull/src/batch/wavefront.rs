@@ -24,7 +24,7 @@ use glam::Vec3;
 ///
 /// ```
 /// use glam::Vec3;
-/// use torus_cull::batch::{Dispatch, Wavefront};
+/// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 /// use torus_cull::{CullKind, Ray, Torus, intersect_culled};
 /// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
 /// // A row of rays straight down: x = 0 and 1 fall through the hole, 3 to 5 hit the tube.
@@ -33,7 +33,7 @@ use glam::Vec3;
 ///     .collect::<Result<_, _>>()?;
 /// let mut wavefront = Wavefront::new(); // reused from batch to batch
 /// let mut hits = Vec::new();
-/// let stats = wavefront.intersect(&Dispatch::best(), CullKind::Skala, &torus, &rays, &mut hits)?;
+/// let stats = wavefront.intersect(&Dispatch::best(), BatchCull::Skala, &torus, &rays, &mut hits);
 /// assert_eq!(hits.len(), rays.len());
 /// assert_eq!(stats.hits, 3);
 /// assert!(stats.kept < rays.len()); // the cull proved some misses
