@@ -7,6 +7,7 @@ mod torus;
 mod tube;
 
 pub use bounds::{CullBounds, SAFETY_REL};
+pub(crate) use torus::CullLine;
 pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, Precision, Ray, RayError};

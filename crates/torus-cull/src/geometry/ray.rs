@@ -33,8 +33,7 @@ impl Precision for DVec3 {
 }
 
 pub(crate) mod sealed {
-    use super::{Precision, Ray};
-    use crate::{LocalLine, Torus};
+    use super::Precision;
     use glam::{DVec3, Vec3};
 
     /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
@@ -113,10 +112,6 @@ pub(crate) mod sealed {
         fn to_dvec3(self) -> DVec3;
         /// An f64 vector rounded to this precision.
         fn from_dvec3(v: DVec3) -> Self;
-        /// The ray's line in the torus frame in f32, as the culls see it.
-        fn cull_line(ray: &Ray<Self>, torus: &Torus) -> LocalLine
-        where
-            Self: Precision;
     }
 
     impl Internals for Vec3 {
@@ -143,10 +138,6 @@ pub(crate) mod sealed {
         fn from_dvec3(v: DVec3) -> Vec3 {
             v.as_vec3()
         }
-        #[inline(always)]
-        fn cull_line(ray: &Ray<Vec3>, torus: &Torus) -> LocalLine {
-            torus.line_to_local(ray)
-        }
     }
 
     impl Internals for DVec3 {
@@ -172,10 +163,6 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn from_dvec3(v: DVec3) -> DVec3 {
             v
-        }
-        #[inline]
-        fn cull_line(ray: &Ray<DVec3>, torus: &Torus) -> LocalLine {
-            torus.dline_to_local(ray)
         }
     }
 }

@@ -1,8 +1,8 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
+use super::bounds::CullBounds;
 use super::ray::{DRay, Precision, Ray};
-use crate::cull::CullBounds;
-use crate::geometry::Tube;
+use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
 
@@ -650,6 +650,27 @@ fn rotation_axis_to_y(axis: DVec3) -> DMat3 {
     let (x_hat, _) = axis.any_orthonormal_pair();
     let z_hat = x_hat.cross(axis);
     DMat3::from_cols(x_hat, axis, z_hat).transpose()
+}
+
+/// The torus-frame line of a ray of either precision, as the culls see it (in f32):
+/// [`Torus::line_to_local`] for a [`Ray`], [`Torus::dline_to_local`] for a [`DRay`].
+pub trait CullLine: Precision {
+    /// `ray`'s line in `torus`'s frame.
+    fn cull_line(torus: &Torus, ray: &Ray<Self>) -> LocalLine;
+}
+
+impl CullLine for Vec3 {
+    #[inline(always)]
+    fn cull_line(torus: &Torus, ray: &Ray) -> LocalLine {
+        torus.line_to_local(ray)
+    }
+}
+
+impl CullLine for DVec3 {
+    #[inline]
+    fn cull_line(torus: &Torus, ray: &DRay) -> LocalLine {
+        torus.dline_to_local(ray)
+    }
 }
 
 #[cfg(test)]

@@ -13,7 +13,7 @@
 //! (the point is `o + t·d = p + (o·d̂ + t|d|)·d̂`).
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
-use crate::geometry::Tube;
+use crate::geometry::{CullLine, Tube};
 use crate::num::V3;
 use crate::num::{Sc, sc};
 use crate::quartic::{RealRoots, solve_depressed_monic};
@@ -58,7 +58,8 @@ pub trait TorusRay: sealed::Sealed {
 /// What the crate needs of a [`TorusRay`], out of the public docs.
 pub(crate) mod sealed {
     use super::Hit;
-    use crate::geometry::ray::sealed::{Internals, Scalar};
+    use crate::geometry::CullLine;
+    use crate::geometry::ray::sealed::Scalar;
     use crate::{LocalLine, Precision, Ray, Torus};
     use glam::DVec3;
 
@@ -83,11 +84,11 @@ pub(crate) mod sealed {
 
     pub trait Sealed {
         /// The ray as a `Ray` of its precision.
-        type Precision: Precision;
+        type Precision: Precision + CullLine;
         fn as_ray(&self) -> &Ray<Self::Precision>;
     }
 
-    impl<P: Precision> Sealed for Ray<P> {
+    impl<P: Precision + CullLine> Sealed for Ray<P> {
         type Precision = P;
         #[inline(always)]
         fn as_ray(&self) -> &Ray<P> {
@@ -100,7 +101,7 @@ pub(crate) mod sealed {
         /// The line in the torus frame in f32, as the culls see it.
         #[inline(always)]
         fn cull_line(&self, torus: &Torus) -> LocalLine {
-            Self::Precision::cull_line(self.as_ray(), torus)
+            <Self::Precision as CullLine>::cull_line(torus, self.as_ray())
         }
         /// Origin and direction in the torus frame, in f64.
         #[inline(always)]
@@ -117,7 +118,7 @@ pub(crate) mod sealed {
     impl<R: Sealed + ?Sized> Steps for R {}
 }
 
-impl<P: Precision> TorusRay for Ray<P> {
+impl<P: Precision + CullLine> TorusRay for Ray<P> {
     type Hit = Hit<P>;
     type Float = P::Float;
     #[inline(always)]
