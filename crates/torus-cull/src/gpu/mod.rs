@@ -271,26 +271,18 @@ impl GpuIntersector {
                 mapped_at_creation: false,
             })
         };
-        let params = buffer(
-            "torus-cull params",
-            PARAMS_BYTES,
-            wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        );
-        let input = buffer(
-            "torus-cull rays",
-            size,
-            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-        );
-        let output = buffer(
-            "torus-cull results",
-            size,
-            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-        );
-        let staging = buffer(
-            "torus-cull staging",
-            size,
-            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        );
+        use wgpu::BufferUsages as Use;
+        let [params, input, output, staging] = [
+            (
+                "torus-cull params",
+                PARAMS_BYTES,
+                Use::UNIFORM | Use::COPY_DST,
+            ),
+            ("torus-cull rays", size, Use::STORAGE | Use::COPY_DST),
+            ("torus-cull results", size, Use::STORAGE | Use::COPY_SRC),
+            ("torus-cull staging", size, Use::MAP_READ | Use::COPY_DST),
+        ]
+        .map(|(label, size, usage)| buffer(label, size, usage));
         let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("torus-cull bind group"),
             layout: &self.layout,

@@ -59,8 +59,20 @@ fn solve_in_range(c: [f64; 5]) -> RealRoots {
     let r = d - s * (cc - s * (b - 3.0 * s * s));
     // Near-tangent decisions look for a local extremum, so they need the monic form.
     let monic = [1.0, c3 * inv, b, cc, d];
-    let near = factor::near_double_threshold(p, q, r, &monic, s);
-    let mut roots = factor::real_roots(p, q, r, &monic, s, near).map_increasing(|x| x - s);
+    // q = 0: a quadratic in x², solved as one (as `solve_depressed_monic` does). Ferrari's
+    // split has no pairing to find there (its resolvent's greatest root is 0), and took
+    // x⁴ − 16 to ±1.07·10⁸.
+    let even = if q == 0.0 {
+        even::real_roots(p, r)
+    } else {
+        None
+    };
+    let mut roots = even
+        .unwrap_or_else(|| {
+            let near = factor::near_double_threshold(p, q, r, &monic, s);
+            factor::real_roots(p, q, r, &monic, s, near)
+        })
+        .map_increasing(|x| x - s);
     roots.sort();
     polish(&mut roots, &c);
     roots

@@ -336,3 +336,37 @@ fn random_double_roots_are_kept() {
         }
     }
 }
+
+#[test]
+fn pure_powers_with_negative_constant_take_the_quadratic_in_t_squared() {
+    // x⁴ − 16 (p = q = 0, r < 0) once gave ±1.07·10⁸, x⁴ − 1 gave ±5.3·10⁷. With any
+    // leading coefficient, and shifted so that the depression produces q = 0 exactly.
+    for (c, want) in [
+        ([1.0, 0.0, 0.0, 0.0, -16.0], [-2.0, 2.0]),
+        ([1.0, 0.0, 0.0, 0.0, -1.0], [-1.0, 1.0]),
+        ([-3.0, 0.0, 0.0, 0.0, 48.0], [-2.0, 2.0]),
+        // (t − 1)⁴ − 16 = t⁴ − 4t³ + 6t² − 4t − 15: roots 1 ± 2.
+        ([1.0, -4.0, 6.0, -4.0, -15.0], [-1.0, 3.0]),
+        // x⁴ − 5x² + 4 = (x² − 1)(x² − 4).
+        ([1.0, 0.0, -5.0, 0.0, 4.0], [-2.0, 2.0]),
+    ] {
+        let roots = solve_quartic(c);
+        let got = roots.as_slice();
+        assert!(got.len() == 2 || got.len() == 4, "{c:?}: {roots:?}");
+        assert!(
+            (got[0] - want[0]).abs() < 1e-14 && (got[got.len() - 1] - want[1]).abs() < 1e-14,
+            "{c:?}: {roots:?}"
+        );
+    }
+    // The proptest's shrunk case: −2.24t⁴ + 1.1·10⁻³⁰⁸t² + 1.049 = 0.
+    let roots = solve_quartic([
+        -2.2430208849158286,
+        0.0,
+        1.1125369292536007e-308,
+        0.0,
+        1.0489973467731717,
+    ]);
+    let x = (1.0489973467731717f64 / 2.2430208849158286).sqrt().sqrt();
+    assert_eq!(roots.len(), 2, "{roots:?}");
+    assert!((roots.as_slice()[1] - x).abs() < 1e-15 && (roots.as_slice()[0] + x).abs() < 1e-15);
+}
