@@ -16,7 +16,7 @@
 mod common;
 
 use common::{family, pairs, pushed_back};
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use std::io::Write;
@@ -452,4 +452,33 @@ fn time_device_gpu_names_the_adapter() {
             .iter()
             .all(|e| e.benchmark.starts_with("gpu_ns-") && e.ns_per_element > 0.0)
     );
+}
+
+/// Rays from surface points (`Torus::spawn`) go to the host, which divides the origin's
+/// root out: the finished answers are the f64 path's, never a hit on the origin.
+#[test]
+fn secondary_rays_from_hits_are_finished_on_the_host() {
+    let Some(gpu) = gpu() else { return };
+    let torus = Torus::canonical(4.0, 1.0).unwrap();
+    let mut rays = Vec::new();
+    for i in 0..64 {
+        let x = -4.9 + 0.15 * i as f32;
+        let primary = Ray::new(Vec3::new(x, 10.0, 0.3), Vec3::new(0.05, -1.0, 0.02)).unwrap();
+        if let Some(hit) = intersect(&torus, &primary) {
+            for dir in [hit.normal, -hit.normal, Vec3::X, Vec3::NEG_X, Vec3::Z] {
+                rays.push(torus.spawn(&primary, hit.t, dir).unwrap());
+            }
+        }
+    }
+    assert!(rays.len() > 100);
+    let finished = gpu
+        .intersect_finished(&torus, GpuCull::None, &rays)
+        .expect("dispatch");
+    for (ray, answer) in rays.iter().zip(&finished) {
+        assert!(answer.escalated, "{ray:?}");
+        assert_eq!(answer.hit, intersect(&torus, ray), "{ray:?}");
+        if let Some(hit) = answer.hit {
+            assert!(hit.t > 1e-3, "a hit on its own origin: {ray:?} {hit:?}");
+        }
+    }
 }

@@ -28,6 +28,9 @@ pub(crate) struct RaysF64 {
     pub(crate) columns: [Vec<f64>; 8],
     /// The ray's index in the caller's slice.
     pub(crate) index: Vec<usize>,
+    /// Per block, a bit for each ray that starts on the surface ([`Ray::from_surface`]):
+    /// the lanes solve the literal ray, so the scalar path answers these.
+    pub(crate) on_surface: Vec<u64>,
 }
 
 impl RaysF64 {
@@ -52,9 +55,12 @@ impl RaysF64 {
             count,
             "kept lines and their count disagree"
         );
+        self.on_surface.clear();
+        self.on_surface.resize(padded / BLOCK, 0);
         let [ox, oy, oz, dx, dy, dz, lo, hi] = &mut self.columns;
         for (j, &i) in self.index.iter().enumerate() {
             let ray = &rays[i];
+            self.on_surface[j / BLOCK] |= u64::from(ray.starts_on_surface()) << (j % BLOCK);
             let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
             (ox[j], oy[j], oz[j]) = (o.x, o.y, o.z);
             (dx[j], dy[j], dz[j]) = (d.x, d.y, d.z);

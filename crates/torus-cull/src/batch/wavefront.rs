@@ -109,7 +109,10 @@ impl Wavefront {
                 ),
             });
         }
-        let scalar_fallbacks = self.finish_in_f64(torus, rays, hits, &a.fallback);
+        let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
+            .map(|(f, s)| f | s)
+            .collect();
+        let scalar_fallbacks = self.finish_in_f64(torus, rays, hits, &open);
         WavefrontStats {
             scalar_fallbacks,
             ..self.stats(rays, hits)
@@ -173,8 +176,11 @@ impl Wavefront {
                 normal: Vec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]),
             });
         }
-        // Escalated: neither proved. The bits past `len` are padding, never read.
-        let open: Vec<u64> = a.hit.iter().zip(&a.miss).map(|(h, m)| !(h | m)).collect();
+        // Escalated: neither proved, or from a surface point (the f64 path divides its
+        // root out). The bits past `len` are padding, never read.
+        let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&self.survivors.on_surface))
+            .map(|((h, m), s)| !(h | m) | s)
+            .collect();
         let escalated = self.finish_in_f64(torus, rays, hits, &open);
         WavefrontStats {
             escalated,

@@ -78,6 +78,11 @@ fn sc32(x: f32) -> F32s<Scalar> {
 /// The certified f32 verdict alone (no f64 fallback): what a GPU kernel returns.
 #[must_use]
 pub fn intersect_f32_certified(torus: &Torus, ray: &Ray) -> F32Verdict {
+    // A ray from a surface point needs its origin's root divided out; the f32 proof of
+    // that cubic is not built, so the f64 path answers it.
+    if ray.starts_on_surface() {
+        return F32Verdict::Escalate;
+    }
     let Some((columns, back)) = line::of_ray(torus, ray) else {
         return F32Verdict::Escalate;
     };

@@ -192,6 +192,9 @@ pub struct Ray<P: Precision = Vec3> {
     dir: P,
     t_min: P::Float,
     t_max: P::Float,
+    /// The origin is a point of the surface (a hit's), whose own root `t = 0` the
+    /// intersection divides out ([`Ray::from_surface`]).
+    on_surface: bool,
 }
 
 /// A ray in f64: [`Ray`] over [`DVec3`], whose hits ([`crate::DHit`]) are f64.
@@ -306,7 +309,47 @@ impl<P: Precision> Ray<P> {
             dir,
             t_min,
             t_max,
+            on_surface: false,
         })
+    }
+
+    /// A secondary ray over `t ∈ [0, +∞)` whose origin is a point **of the surface** (a
+    /// hit point, as the renderer stored it), such as a shadow ray, a bounce or a
+    /// refraction ray. [`Torus::spawn`](crate::Torus::spawn) makes one from a hit and
+    /// projects the origin onto the surface first.
+    ///
+    /// The intersection treats the origin as lying on the torus: the quartic's root that
+    /// belongs to it (`t = 0`) is divided out, and the nearest of the other crossings with
+    /// `t > 0` (and in the range) is the hit. So the ray never hits its own origin, however
+    /// the origin was rounded, and it finds a re-hit through the hole or across the tube
+    /// however close, with no ε to choose. An origin off the surface by δ moves the other
+    /// crossings by about δ/|cos θ| there, as it would move any hit (docs/math.md §9).
+    /// A ray that is not from a surface point keeps [`Ray::new`]'s literal semantics.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::{Ray, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// // From the top of the tube, straight up: nothing above.
+    /// let up = Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::Y)?;
+    /// assert_eq!(intersect(&torus, &up), None);
+    /// // From the inner equator across the hole: the far side of the tube, at t = 6.
+    /// let across = Ray::from_surface(Vec3::new(3.0, 0.0, 0.0), Vec3::NEG_X)?;
+    /// assert!((intersect(&torus, &across).unwrap().t - 6.0).abs() < 1e-5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn from_surface(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
+        Ok(Ray {
+            on_surface: true,
+            ..Ray::new(origin, dir)?
+        })
+    }
+
+    /// Whether the origin is a point of the surface ([`Ray::from_surface`]).
+    #[inline]
+    #[must_use]
+    pub const fn starts_on_surface(&self) -> bool {
+        self.on_surface
     }
 
     /// The origin `o`.
@@ -370,6 +413,7 @@ impl From<Ray> for DRay {
             dir: ray.dir().as_dvec3(),
             t_min: f64::from(ray.t_min()),
             t_max: f64::from(ray.t_max()),
+            on_surface: ray.on_surface,
         }
     }
 }

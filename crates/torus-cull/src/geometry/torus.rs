@@ -1,7 +1,8 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
-use super::ray::{DRay, Precision, Ray};
+use super::ray::sealed::Scalar;
+use super::ray::{DRay, Precision, Ray, RayError};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
@@ -522,6 +523,64 @@ impl Torus {
             self.to_local_f64 * o,
             self.to_local_f64 * ray.dir().to_dvec3(),
         )
+    }
+
+    /// The point of the surface nearest to `p` (world space, f64): the tube's core circle's
+    /// nearest point `c` (at distance R from the axis, in the plane through `p` and the
+    /// axis), then `c + r·(p − c)/|p − c|`. Closed form, exact but for rounding. A point on
+    /// the axis, or on the core circle itself, has no unique nearest point and is
+    /// returned unchanged.
+    #[must_use]
+    pub fn nearest_surface_point(&self, p: DVec3) -> DVec3 {
+        let local = self.to_local_f64 * (p - self.center_f64);
+        let rho = local.x.hypot(local.z);
+        if rho == 0.0 {
+            return p;
+        }
+        let (major, minor) = (self.major_radius_f64(), self.minor_radius_f64());
+        let core = DVec3::new(local.x, 0.0, local.z) * (major / rho);
+        let off = local - core;
+        let len = off.length();
+        if len == 0.0 || !len.is_finite() {
+            return p;
+        }
+        let on = core + off * (minor / len);
+        self.to_local_f64.transpose() * on + self.center_f64
+    }
+
+    /// The secondary ray that leaves the hit at `t` on `ray` (its `Hit::t`) in direction
+    /// `dir`: its origin is `ray`'s point at `t`, formed in f64 and moved onto the surface
+    /// ([`Torus::nearest_surface_point`]) before it is rounded to the ray's precision, and
+    /// it is marked as starting there ([`Ray::from_surface`]), so it cannot hit its own
+    /// origin and needs no ε. A shadow ray takes [`Ray::with_t_max`] after.
+    ///
+    /// `dir` may point to either side of the surface: outward (reflection, a shadow ray
+    /// to a light above the surface) or into the tube (refraction), where the hit is the
+    /// ray's exit.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::{Ray, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// // Along the x axis from outside: the outer equator, x = 5, at t = 5.
+    /// let ray = Ray::new(Vec3::new(10.0, 0.0, 0.0), Vec3::NEG_X)?;
+    /// let hit = intersect(&torus, &ray).expect("hits the outer equator first");
+    /// // Straight through the tube instead: the refraction ray exits at x = 3.
+    /// let through = torus.spawn(&ray, hit.t, Vec3::NEG_X)?;
+    /// assert!(through.starts_on_surface());
+    /// assert!((intersect(&torus, &through).unwrap().t - 2.0).abs() < 1e-5);
+    /// // Back the way it came: nothing.
+    /// assert_eq!(intersect(&torus, &torus.spawn(&ray, hit.t, Vec3::X)?), None);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn spawn<P: Precision>(
+        &self,
+        ray: &Ray<P>,
+        t: P::Float,
+        dir: P,
+    ) -> Result<Ray<P>, RayError<P>> {
+        let at = ray.origin().to_dvec3() + ray.dir().to_dvec3() * t.to_f64();
+        Ray::from_surface(P::from_dvec3(self.nearest_surface_point(at)), dir)
     }
 
     /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path):

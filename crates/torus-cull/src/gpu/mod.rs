@@ -397,13 +397,17 @@ impl GpuIntersector {
         } = buffers;
         let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
         let mut shifts: Vec<f64> = Vec::with_capacity(batch.len());
-        let mut far = Vec::new();
+        let mut host = Vec::new();
         for (i, ray) in batch.iter().enumerate() {
-            let ray = frame.pack(ray);
-            packed.extend_from_slice(&ray.words);
-            shifts.push(ray.t0);
-            if !ray.sendable {
-                far.push(i);
+            let packed_ray = frame.pack(ray);
+            packed.extend_from_slice(&packed_ray.words);
+            shifts.push(packed_ray.t0);
+            if !packed_ray.sendable {
+                host.push((i, Escalation::FarOrigin));
+            } else if ray.starts_on_surface() {
+                // The kernel solves the literal ray; its origin's own root is divided out
+                // on the host (`crate::Ray::from_surface`).
+                host.push((i, Escalation::OnSurface));
             }
         }
         self.queue
@@ -448,8 +452,8 @@ impl GpuIntersector {
                 });
                 out.push(shifted(verdict(w), t0));
             }
-            for i in far {
-                out[start + i] = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
+            for (i, why) in host {
+                out[start + i] = (F32Verdict::Escalate, Some(why));
             }
         }
         staging.unmap();
@@ -538,6 +542,9 @@ pub enum Escalation {
     EarlierRootNotRuledOut,
     /// The reported t would not be within 1.9·10⁻⁴·(R + r) of the root.
     TErrorTooLarge,
+    /// The ray starts on the surface ([`crate::Ray::from_surface`]): the host divides its
+    /// origin's root out.
+    OnSurface,
     /// A code the host does not know.
     Unknown,
 }
@@ -554,6 +561,7 @@ impl Escalation {
             Escalation::NoSignChange => "no_sign_change",
             Escalation::EarlierRootNotRuledOut => "earlier_root",
             Escalation::TErrorTooLarge => "t_error",
+            Escalation::OnSurface => "on_surface",
             Escalation::Unknown => "unknown",
         }
     }

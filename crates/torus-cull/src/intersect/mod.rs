@@ -22,6 +22,7 @@ use nearest_hit::{Careful, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
 use sealed::{FromExact, Steps};
 
+mod from_surface;
 pub(crate) mod nearest_hit;
 mod ray_cast;
 pub(crate) mod reduce;
@@ -112,6 +113,11 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn range_f64(&self) -> (f64, f64) {
             self.as_ray().range_f64()
+        }
+        /// The origin is a surface point ([`Ray::from_surface`]).
+        #[inline(always)]
+        fn on_surface(&self) -> bool {
+            self.as_ray().starts_on_surface()
         }
     }
 
@@ -235,9 +241,7 @@ fn intersect_reduced<const CHECKED: bool>(
 #[inline]
 #[must_use]
 pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
-    let (o, d) = ray.local_f64(torus);
-    let (t_min, t_max) = ray.range_f64();
-    let (t, n) = intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)?;
+    let (t, n) = exact(torus, ray)?;
     // The rotation is orthonormal: its transpose is its inverse.
     R::Hit::from_exact(t, torus.to_local_rotation_f64().transpose() * n)
 }
@@ -258,10 +262,20 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
 #[inline]
 #[must_use]
 pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
+    exact(torus, ray).is_some_and(|(t, n)| R::Hit::from_exact(t, n).is_some())
+}
+
+/// The nearest root in range and the torus-frame normal there, for either kind of ray:
+/// the literal range, or from a surface point with its own root divided out
+/// ([`from_surface`]).
+#[inline(always)]
+fn exact<R: TorusRay>(torus: &Torus, ray: &R) -> Option<(f64, DVec3)> {
     let (o, d) = ray.local_f64(torus);
     let (t_min, t_max) = ray.range_f64();
+    if ray.on_surface() {
+        return from_surface::intersect_from_surface(torus.tube(), o, d, t_min, t_max);
+    }
     intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)
-        .is_some_and(|(t, n)| R::Hit::from_exact(t, n).is_some())
 }
 
 #[cfg(test)]

@@ -1,0 +1,217 @@
+//! The exact intersection of a ray that starts **on the surface** ([`crate::Ray::from_surface`]):
+//! the origin's own root divided out.
+//!
+//! In the scaled foot-point frame the line meets the torus where the depressed quartic
+//! `Q(u) = u⁴ + c2 u² + c1 u + c0` vanishes, and the origin sits at `u₀ = (o·d̂)/R`. In
+//! `v = u − u₀` (so `t = v·R/|d|`), `Q(u₀ + v) = v⁴ + a3 v³ + a2 v² + a1 v + Q(u₀)` with
+//!
+//! `a3 = 4u₀`, `a2 = 6u₀² + c2`, `a1 = Q′(u₀) = (4u₀² + 2c2)·u₀ + c1`.
+//!
+//! An origin on the surface has `Q(u₀) = 0`, so `v = 0` is a root (the origin's) and the
+//! others are the roots of the cubic `g(v) = v³ + a3 v² + a2 v + a1`. The stored origin is
+//! off the surface by its rounding δ, so the origin's root sits near, not at, `u₀`: Newton
+//! on `Q` from `u₀` finds it (`own_root`), and the expansion is taken about it instead, so
+//! the other roots are the literal ray's, untouched. Where that root cannot be told from
+//! `u₀` (a grazing origin), `Q(u₀)` is dropped instead, which moves the other roots by
+//! `|Q(u₀)|/|Q′|` there, as δ moves any hit. Either way the origin's root is removed
+//! exactly, so no rounding can turn the origin into a hit. The nearest root of `g` past it,
+//! in range, is the hit (docs/math.md §9).
+
+use super::reduce::{coefficients, foot_line, normal};
+use crate::geometry::Tube;
+use crate::num::{V3, sc};
+use glam::DVec3;
+
+/// The nearest crossing with `t ∈ [t_min, t_max]`, `t > 0`, of the torus-frame line
+/// `o + t·d` whose origin `o` lies on the surface, and the unit outward normal there.
+pub(crate) fn intersect_from_surface(
+    tube: &Tube,
+    o: DVec3,
+    d: DVec3,
+    t_min: f64,
+    t_max: f64,
+) -> Option<(f64, DVec3)> {
+    let inv_major = sc(tube.inv_major);
+    let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), inv_major);
+    let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
+    let (c2, c1, c0) = (c2.v, c1.v, c0.v);
+    let u0 = line.s.v * tube.inv_major;
+    // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
+    // where that root cannot be told apart (a grazing origin).
+    let own = own_root(c2, c1, c0, u0);
+    let a3 = 4.0 * own;
+    let a2 = 6.0 * own * own + c2;
+    let a1 = (4.0 * own * own + 2.0 * c2) * own + c1;
+    // v = u − own per unit t: |d|/R; the own root sits at t = (own − u₀)/v_per_t.
+    let v_per_t = tube.inv_major / line.inv_len.v;
+    let shift = own - u0;
+    let lo = (t_min.max(0.0) * v_per_t - shift).max(0.0);
+    let hi = t_max * v_per_t - shift;
+    let v = nearest_cubic_root(a3, a2, a1, lo, hi)?;
+    let t = (v + shift) / v_per_t;
+    let u = sc(own + v);
+    let n = normal(line.p, line.dh, u, sc(tube.k));
+    Some((t, n.to_dvec3()))
+}
+
+/// How far (in u, units of R) Newton may carry the origin's root from `u₀`: an origin
+/// rounded to f32 at up to 10⁴·R from the world origin is off the surface by about
+/// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.
+const OWN_ROOT_REACH: f64 = 1e-2;
+
+/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`: three
+/// Newton steps from `u₀` when each stays within [`OWN_ROOT_REACH`] and lowers |Q|, else
+/// `u₀` (then the constant `Q(u₀)` is what is dropped).
+fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> f64 {
+    let q = |u: f64| {
+        (
+            ((u * u + c2) * u + c1) * u + c0,
+            (4.0 * u * u + 2.0 * c2) * u + c1,
+        )
+    };
+    let (mut u, (mut f, mut df)) = (u0, q(u0));
+    for _ in 0..3 {
+        if f == 0.0 || df == 0.0 {
+            break;
+        }
+        let next = u - f / df;
+        let (fn_, dfn) = q(next);
+        // Written so that NaN also stops.
+        let within = (next - u0).abs() <= OWN_ROOT_REACH && fn_.abs() < f.abs();
+        if !within {
+            break;
+        }
+        (u, f, df) = (next, fn_, dfn);
+    }
+    u
+}
+
+/// `g(v) = v³ + a v² + b v + c` and `g′(v)`.
+#[inline]
+fn cubic(a: f64, b: f64, c: f64, v: f64) -> (f64, f64) {
+    (((v + a) * v + b) * v + c, (3.0 * v + 2.0 * a) * v + b)
+}
+
+/// A bound on `g`'s rounding at `v`: a few ulps of the sum of its terms' sizes.
+#[inline]
+fn rounding(a: f64, b: f64, c: f64, v: f64) -> f64 {
+    let x = v.abs();
+    8.0 * f64::EPSILON * (((x + a.abs()) * x + b.abs()) * x + c.abs())
+}
+
+/// The smallest root of `g(v) = v³ + a v² + b v + c` in `(lo, hi]` (in `[lo, hi]` for
+/// `lo > 0`), or `None`.
+///
+/// `g` is monotone between its critical points (the roots of `3v² + 2av + b`), so each
+/// piece of `(lo, hi]` between them holds at most one simple root, found by a sign change
+/// and safeguarded Newton; a double root (a tangent) sits at a critical point whose `|g|`
+/// is within rounding. The pieces are visited in order, so the first root found is the
+/// nearest.
+pub(crate) fn nearest_cubic_root(a: f64, b: f64, c: f64, lo: f64, hi: f64) -> Option<f64> {
+    // NaN ends (a non-finite line) compare false: no root.
+    if lo.partial_cmp(&hi).is_none_or(|o| o.is_gt()) {
+        return None;
+    }
+    // Every root has |v| < 1 + max(|a|, |b|, |c|) (Cauchy).
+    let bound = 1.0 + a.abs().max(b.abs()).max(c.abs());
+    let hi = hi.min(bound);
+    if lo > hi {
+        return None;
+    }
+    let mut ends = [lo, hi, hi, hi];
+    let mut n = 1;
+    for x in critical_points(a, b) {
+        if x > lo && x < hi {
+            ends[n] = x;
+            n += 1;
+        }
+    }
+    ends[n] = hi;
+    let open = lo == 0.0;
+    let (mut x, mut gx) = (lo, cubic(a, b, c, lo).0);
+    if gx == 0.0 && !open {
+        return Some(lo);
+    }
+    for &y in &ends[1..=n] {
+        let gy = cubic(a, b, c, y).0;
+        if (gx < 0.0 && gy > 0.0) || (gx > 0.0 && gy < 0.0) {
+            return Some(bracketed_root(a, b, c, x, y, gx));
+        }
+        // A double root at a critical point (or a root exactly at a piece's end).
+        let at_end = y == hi;
+        if gy == 0.0 || (!at_end && gy.abs() <= rounding(a, b, c, y)) {
+            return Some(y);
+        }
+        (x, gx) = (y, gy);
+    }
+    None
+}
+
+/// The critical points of `g` (roots of `3v² + 2av + b`), ascending; NaN where there are
+/// fewer than two.
+fn critical_points(a: f64, b: f64) -> [f64; 2] {
+    let disc = a * a - 3.0 * b;
+    if disc.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return [f64::NAN; 2];
+    }
+    // (−a ∓ √disc)/3 without cancellation: q/3 and b/q, whose product is b/3.
+    let q = -(a + disc.sqrt().copysign(a));
+    let (x, y) = (q / 3.0, if q != 0.0 { b / q } else { 0.0 });
+    [x.min(y), x.max(y)]
+}
+
+/// The root of `g` in `[x, y]`, where `g` is monotone and changes sign (`gx = g(x)`):
+/// Newton's steps inside the shrinking bracket, a bisection where a step would leave it.
+fn bracketed_root(a: f64, b: f64, c: f64, mut x: f64, mut y: f64, gx: f64) -> f64 {
+    let rising = gx < 0.0;
+    let mut v = 0.5 * (x + y);
+    for _ in 0..200 {
+        let (g, dg) = cubic(a, b, c, v);
+        if g == 0.0 {
+            return v;
+        }
+        if (g < 0.0) == rising {
+            x = v;
+        } else {
+            y = v;
+        }
+        let newton = v - g / dg;
+        let next = if newton > x && newton < y {
+            newton
+        } else {
+            0.5 * (x + y)
+        };
+        if (next - v).abs() <= 2.0 * f64::EPSILON * next.abs()
+            || y - x <= 2.0 * f64::EPSILON * y.abs().max(x.abs())
+        {
+            return next;
+        }
+        v = next;
+    }
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cubic_roots_in_order_and_range() {
+        // (v − 1)(v − 2)(v − 3) = v³ − 6v² + 11v − 6: g's rounding near a root is about
+        // 60ε against |g′| ≥ 1, so each root to 1e-14.
+        let r = |lo, hi| nearest_cubic_root(-6.0, 11.0, -6.0, lo, hi);
+        assert!((r(0.0, 10.0).unwrap() - 1.0).abs() < 1e-14);
+        assert!((r(1.5, 10.0).unwrap() - 2.0).abs() < 1e-14);
+        assert!((r(2.5, 10.0).unwrap() - 3.0).abs() < 1e-14);
+        assert_eq!(r(3.5, 10.0), None);
+        assert_eq!(r(0.0, 0.5), None);
+        // A double root (tangent): (v − 1)²(v + 2) = v³ − 3v + 2.
+        assert!((nearest_cubic_root(0.0, -3.0, 2.0, 0.0, 5.0).unwrap() - 1.0).abs() < 1e-7);
+        // A root at 0 itself (a1 = 0: the origin tangent) is the origin's, not a hit.
+        assert_eq!(nearest_cubic_root(0.0, 1.0, 0.0, 0.0, 5.0), None);
+        // Root ratios of 10⁸: (v − 1e-8)(v − 1)(v − 2).
+        let (p, q, s) = (1e-8, 1.0, 2.0);
+        let (a, b, c) = (-(p + q + s), p * q + q * s + p * s, -(p * q * s));
+        assert!((nearest_cubic_root(a, b, c, 0.0, 10.0).unwrap() - 1e-8).abs() < 1e-20);
+    }
+}
