@@ -26,10 +26,8 @@ use glam::DVec3;
 /// `o + t·d` whose origin `o` lies on the surface, and the unit outward normal there.
 pub(crate) fn intersect_from_surface(
     tube: &Tube,
-    o: DVec3,
-    d: DVec3,
-    t_min: f64,
-    t_max: f64,
+    (o, d): (DVec3, DVec3),
+    (t_min, t_max): (f64, f64),
 ) -> Option<(f64, DVec3)> {
     let inv_major = sc(tube.inv_major);
     let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), inv_major);

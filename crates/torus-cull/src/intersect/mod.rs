@@ -270,11 +270,12 @@ pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
 /// ([`from_surface`]).
 #[inline(always)]
 fn exact<R: TorusRay>(torus: &Torus, ray: &R) -> Option<(f64, DVec3)> {
-    let (o, d) = ray.local_f64(torus);
-    let (t_min, t_max) = ray.range_f64();
+    let line = ray.local_f64(torus);
+    let range = ray.range_f64();
     if ray.on_surface() {
-        return from_surface::intersect_from_surface(torus.tube(), o, d, t_min, t_max);
+        return from_surface::intersect_from_surface(torus.tube(), line, range);
     }
+    let ((o, d), (t_min, t_max)) = (line, range);
     intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)
 }
 
