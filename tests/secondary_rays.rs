@@ -13,6 +13,7 @@ use rand_pcg::Pcg64;
 use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 use torus_cull::{DRay, Ray, Torus, intersect, intersect_f32, occluded};
 use torus_cull_lab::oracle::{AMBIGUITY_REL, OracleClass, Query, reference_roots};
+use torus_cull_lab::workload::unit_vector;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Family {
@@ -29,23 +30,9 @@ const FAMILIES: [Family; 4] = [
     Family::Across,
 ];
 
-fn unit(rng: &mut Pcg64) -> DVec3 {
-    loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l = v.length_squared();
-        if (1e-4..=1.0).contains(&l) {
-            return v / l.sqrt();
-        }
-    }
-}
-
 fn random_torus(rng: &mut Pcg64, major: f32, nu: f32) -> Torus {
-    let center = unit(rng).as_vec3() * major * rng.random_range(0.0..3.0);
-    Torus::new(center, unit(rng).as_vec3(), major, major / nu).expect("a valid torus")
+    let center = unit_vector(rng).as_vec3() * major * rng.random_range(0.0..3.0);
+    Torus::new(center, unit_vector(rng).as_vec3(), major, major / nu).expect("a valid torus")
 }
 
 /// A point on the surface (world, f64) and the outward normal there.
@@ -201,7 +188,7 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
                     // A primary ray from outside aimed at a surface point; the family's
                     // direction leaves its first hit, relative to the normal there.
                     let (p, n) = surface_point(&mut rng, &torus);
-                    let from = p + (n * 2.0 + unit(&mut rng)) * size;
+                    let from = p + (n * 2.0 + unit_vector(&mut rng)) * size;
                     let primary = DRay::new(from, p - from).unwrap();
                     let Some(hit) = intersect(&torus, &primary) else {
                         continue;

@@ -293,7 +293,7 @@ pub(crate) fn rejection_sample(
 }
 
 /// A direction uniform on the unit sphere (Archimedes: z uniform, azimuth uniform).
-pub(crate) fn unit_vector(rng: &mut Pcg64) -> DVec3 {
+pub fn unit_vector(rng: &mut Pcg64) -> DVec3 {
     let z: f64 = rng.random_range(-1.0..1.0);
     let phi = rng.random_range(0.0..std::f64::consts::TAU);
     let s = (1.0 - z * z).max(0.0).sqrt();

@@ -20,6 +20,7 @@
 use super::reduce::{coefficients, foot_line, normal};
 use crate::geometry::Tube;
 use crate::num::{V3, sc};
+use crate::quartic::eval;
 use glam::DVec3;
 
 /// The nearest crossing with `t ∈ [t_min, t_max]`, `t > 0`, of the torus-frame line
@@ -36,10 +37,9 @@ pub(crate) fn intersect_from_surface(
     let u0 = line.s.v * tube.inv_major;
     // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
     // where that root cannot be told apart (a grazing origin).
-    let own = own_root(c2, c1, c0, u0);
+    let (own, a1) = own_root(c2, c1, c0, u0);
     let a3 = 4.0 * own;
     let a2 = 6.0 * own * own + c2;
-    let a1 = (4.0 * own * own + 2.0 * c2) * own + c1;
     // v = u − own per unit t: |d|/R; the own root sits at t = (own − u₀)/v_per_t.
     let v_per_t = tube.inv_major / line.inv_len.v;
     let shift = own - u0;
@@ -57,16 +57,12 @@ pub(crate) fn intersect_from_surface(
 /// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.
 const OWN_ROOT_REACH: f64 = 1e-2;
 
-/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`: three
-/// Newton steps from `u₀` when each stays within [`OWN_ROOT_REACH`] and lowers |Q|, else
-/// `u₀` (then the constant `Q(u₀)` is what is dropped).
-fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> f64 {
-    let q = |u: f64| {
-        (
-            ((u * u + c2) * u + c1) * u + c0,
-            (4.0 * u * u + 2.0 * c2) * u + c1,
-        )
-    };
+/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`, and
+/// `Q′` there (the cubic's constant): three Newton steps from `u₀` while each stays within
+/// [`OWN_ROOT_REACH`] and lowers |Q|, else `u₀` (then the constant `Q(u₀)` is what is
+/// dropped).
+fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> (f64, f64) {
+    let q = |u: f64| eval(&[1.0, 0.0, c2, c1, c0], u);
     let (mut u, (mut f, mut df)) = (u0, q(u0));
     for _ in 0..3 {
         if f == 0.0 || df == 0.0 {
@@ -81,7 +77,7 @@ fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> f64 {
         }
         (u, f, df) = (next, fn_, dfn);
     }
-    u
+    (u, df)
 }
 
 /// `g(v) = v³ + a v² + b v + c` and `g′(v)`.

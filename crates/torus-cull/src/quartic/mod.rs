@@ -98,7 +98,7 @@ pub(super) fn eval2(c: &[f64; 5], x: f64) -> (f64, f64, f64) {
 
 /// `f(x)` and `f'(x)` for `c = [c4, c3, c2, c1, c0]`, Horner.
 #[inline]
-pub(super) fn eval(c: &[f64; 5], x: f64) -> (f64, f64) {
+pub(crate) fn eval(c: &[f64; 5], x: f64) -> (f64, f64) {
     let mut f = c[0];
     let mut df = 0.0;
     for &ci in &c[1..] {
