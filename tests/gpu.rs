@@ -425,6 +425,8 @@ fn time_device_gpu_names_the_adapter() {
         "2",
         "--seconds",
         "0.5",
+        "--batch",
+        "4096",
         "--out",
         out_path.to_str().unwrap(),
     ]);
@@ -444,13 +446,38 @@ fn time_device_gpu_names_the_adapter() {
         gpu.is_software(),
         "{device}"
     );
-    // Five cases at one ν, two culls.
-    assert_eq!(results.estimates.len(), 10);
-    assert!(
-        results
+    // Five cases at one ν: per case the upload, the read-back, the copy kernel and
+    // every cull, each timed apart; every cull paired against none and cychosz.
+    let culls = torus_cull::gpu::GpuCull::ALL.len();
+    assert_eq!(results.estimates.len(), 5 * (3 + culls));
+    for prefix in ["gpu_upload_ns-", "gpu_readback_ns-", "gpu_copy_ns-"] {
+        let n = results
             .estimates
             .iter()
-            .all(|e| e.benchmark.starts_with("gpu_ns-") && e.ns_per_element > 0.0)
+            .filter(|e| e.benchmark.starts_with(prefix))
+            .count();
+        assert_eq!(n, 5, "{prefix}");
+    }
+    assert!(results.estimates.iter().all(|e| e.ns_per_element > 0.0
+        && e.ns_per_element_ci[0] <= e.ns_per_element
+        && e.ns_per_element <= e.ns_per_element_ci[1]));
+    // Each cull against none and cychosz, but not against itself.
+    assert_eq!(results.ratio.len(), 5 * (2 * culls - 2));
+    for r in &results.ratio {
+        assert_eq!(
+            (r.device.as_str(), r.metric.as_str()),
+            ("gpu", "gpu_kernel_ns")
+        );
+        assert!(
+            r.ratio_ci[0] <= r.ratio && r.ratio <= r.ratio_ci[1],
+            "{r:?}"
+        );
+        assert!(r.ratio > 0.0 && r.rays == 4096, "{r:?}");
+        assert_ne!(r.cull, r.reference);
+    }
+    assert!(
+        stdout.contains("vs none") && stdout.contains("copy"),
+        "{stdout}"
     );
 }
 

@@ -54,6 +54,9 @@ use glam::Vec3;
 use std::fmt;
 use std::sync::{Mutex, mpsc};
 
+mod timing;
+pub use timing::{KernelTime, ResidentRays};
+
 /// The kernel's source (WGSL).
 pub const KERNEL_WGSL: &str = include_str!("kernel.wgsl");
 
@@ -204,6 +207,9 @@ impl GpuIntersector {
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("torus-cull"),
+                // Timestamps only time the kernel (`ResidentRays::run`); an adapter
+                // without them still runs it.
+                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
                 required_limits: wgpu::Limits::downlevel_defaults(),
                 ..Default::default()
             })

@@ -55,11 +55,13 @@ pub struct TimeArgs {
     #[arg(long, value_enum, default_value_t = Mode::Scalar)]
     mode: Mode,
     /// `cpu`: the paired ratios above. `gpu` (a binary built with `--features gpu`): the
-    /// WGSL kernel's Mrays/s (cull and certified f32 intersection, upload and readback
-    /// included) per case × ν for the culls none and cychosz, `--batch` rays a dispatch
-    /// (default: the workload's rays), written as `estimates` with the adapter in
-    /// `meta.device`. A software adapter (device type Cpu, e.g. Mesa's lavapipe) is timed
-    /// too, but the output says so and claims no GPU speed.
+    /// WGSL kernel (cull and certified f32 intersection) with the rays resident on the
+    /// device, per case × ν and cull: ns per ray from the device's timestamps, each
+    /// cull's paired ratio to none and cychosz, and its time over a copy kernel's (the
+    /// bandwidth floor), `--batch` rays (default 2 097 152, drawn from the workload's generators at that count); upload and read-back are
+    /// timed apart. Written as `ratio` (metric `gpu_kernel_ns`, device `gpu`) and
+    /// `estimates`, with the adapter in `meta.device`. A software adapter (device type
+    /// Cpu, e.g. Mesa's lavapipe) is timed too, but as a CPU proxy, never as GPU speed.
     #[arg(long, value_enum, default_value_t = Device::Cpu)]
     device: Device,
 }
@@ -88,7 +90,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
-    let batch = pick_batch(args.batch, &workload, &args.workload)?;
+    let batch = match args.device {
+        Device::Cpu => pick_batch(args.batch, &workload, &args.workload)?,
+        Device::Gpu => pick_gpu_batch(args.batch)?,
+    };
     let path = out_path(args.out, &workload)?;
     check_writable(&path)?;
     if spec::built_in(&args.workload).is_none() {
@@ -102,7 +107,6 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         if args.mode == Mode::Both {
             return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
         }
-        let batch = args.batch.unwrap_or(workload.rays);
         return gpu::run(&workload, &nus, &culls, args.seconds, batch, &path);
     }
 
@@ -154,6 +158,25 @@ fn pick_batch(asked: Option<usize>, workload: &Workload, file: &Path) -> Result<
         ));
     }
     Ok(batch)
+}
+
+/// Rays per case × ν on the GPU by default: a GPU needs about this many in flight before
+/// its time per ray stops falling (an H100 holds 132 multiprocessors × 2 048 threads).
+const GPU_BATCH: usize = 1 << 21;
+
+/// The most rays per case × ν on the GPU: 64 bytes each on the device, 2 GiB in all.
+const MAX_GPU_BATCH: usize = 1 << 25;
+
+/// `--batch` with `--device gpu`: drawn from the workload's generators at that count,
+/// whatever the workload's `rays`.
+fn pick_gpu_batch(asked: Option<usize>) -> Result<usize, String> {
+    match asked {
+        None => Ok(GPU_BATCH),
+        Some(b) if (MIN_BATCH..=MAX_GPU_BATCH).contains(&b) => Ok(b),
+        Some(b) => Err(format!(
+            "--batch {b} is invalid with --device gpu (allowed: {MIN_BATCH} ..= {MAX_GPU_BATCH})"
+        )),
+    }
 }
 
 /// `--out`, or the default file under `results/` (its directory made if need be).
@@ -302,159 +325,7 @@ fn check_writable(path: &Path) -> Result<(), String> {
 
 /// `torus-cull time --device gpu`.
 #[cfg(feature = "gpu")]
-mod gpu {
-    use crate::outln;
-    use std::path::Path;
-    use std::process::ExitCode;
-    use std::time::Instant;
-    use torus_cull::gpu::{GpuCull, GpuIntersector};
-    use torus_cull::{CullKind, F32Verdict, Named, Ray, Torus};
-    use torus_cull_lab::results::{EstimateRecord, Results};
-    use torus_cull_lab::workload::generate;
-    use torus_cull_lab::workload::spec::Workload;
-
-    /// Dispatches timed per (case, ν, cull) at least, whatever the time share.
-    const MIN_SAMPLES: usize = 3;
-
-    /// Times the kernel on every case × ν of `workload` (see `TimeArgs::device`).
-    pub(super) fn run(
-        workload: &Workload,
-        nus: &[f64],
-        culls: &[CullKind],
-        seconds: f64,
-        batch: usize,
-        path: &Path,
-    ) -> Result<ExitCode, Box<dyn std::error::Error>> {
-        let culls = gpu_culls(culls)?;
-        let gpu = GpuIntersector::new()?;
-        let device = announce_adapter(&gpu)?;
-        let units = workload.cases.len() * nus.len() * culls.len();
-        let share = seconds / units as f64;
-        outln!(
-            "{:<12} {:>8} {:<8} {:>10} {:>12} {:>10}",
-            "case",
-            "nu",
-            "cull",
-            "rays",
-            "Mrays/s",
-            "escalated"
-        )?;
-        let mut records = Vec::new();
-        for &case in &workload.cases {
-            for &nu in nus {
-                let b = generate(case, nu, batch, workload.seed, workload.pose)?;
-                let rays = b.rays.len();
-                for &cull in &culls {
-                    let t = time_kernel(&gpu, &b.torus, cull, &b.rays, share)?;
-                    outln!(
-                        "{:<12} {:>8} {:<8} {:>10} {:>12.2} {:>9.2}%",
-                        case.name(),
-                        nu,
-                        cull.name(),
-                        rays,
-                        1e3 / t.median,
-                        100.0 * t.escalated as f64 / rays.max(1) as f64
-                    )?;
-                    records.push(EstimateRecord {
-                        benchmark: format!("gpu_ns-{}/{}/{nu}", case.name(), cull.name()),
-                        elements: rays as u64,
-                        ns_per_element: t.median,
-                        ns_per_element_ci: [t.fastest, t.slowest],
-                    });
-                }
-            }
-        }
-        let mut results = Results::new(workload, "time");
-        results.estimates = records;
-        results.meta.device = Some(device);
-        results.meta.threads = Some(1);
-        results.meta.sizes = Some(super::timing_sizes(batch, nus));
-        results.save(path)?;
-        outln!("wrote {}", path.display())?;
-        Ok(ExitCode::SUCCESS)
-    }
-
-    /// The adapter, described and said on stdout; a software one is called out, so that
-    /// its figures are not taken for a GPU's.
-    fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
-        let mut device = format!(
-            "{} ({:?}, {:?})",
-            gpu.adapter_name(),
-            gpu.device_type(),
-            gpu.backend()
-        );
-        if gpu.is_software() {
-            device.push_str("; software adapter: no GPU timing claimed");
-        }
-        outln!("adapter: {device}")?;
-        if gpu.is_software() {
-            outln!(
-                "the adapter is a CPU rasteriser (device type Cpu): these figures time \
-                 this CPU through Vulkan, not a GPU"
-            )?;
-        }
-        Ok(device)
-    }
-
-    /// One cull's dispatches on one batch: ns per ray.
-    struct KernelTiming {
-        /// Rays the kernel escalated (from the warm-up dispatch).
-        escalated: usize,
-        median: f64,
-        fastest: f64,
-        slowest: f64,
-    }
-
-    /// Dispatches of `cull` on `rays` until `share` seconds have passed and at least
-    /// [`MIN_SAMPLES`] were timed.
-    fn time_kernel(
-        gpu: &GpuIntersector,
-        torus: &Torus,
-        cull: GpuCull,
-        rays: &[Ray],
-        share: f64,
-    ) -> Result<KernelTiming, Box<dyn std::error::Error>> {
-        // The first dispatch warms up (and counts the escalations).
-        let verdicts = gpu.intersect(torus, cull, rays)?;
-        let escalated = verdicts
-            .iter()
-            .filter(|v| **v == F32Verdict::Escalate)
-            .count();
-        let mut samples = Vec::new();
-        let start = Instant::now();
-        while samples.len() < MIN_SAMPLES || start.elapsed().as_secs_f64() < share {
-            let t = Instant::now();
-            let out = gpu.intersect(torus, cull, rays)?;
-            let ns = t.elapsed().as_nanos() as f64;
-            std::hint::black_box(out);
-            samples.push(ns / rays.len().max(1) as f64);
-        }
-        samples.sort_by(f64::total_cmp);
-        Ok(KernelTiming {
-            escalated,
-            median: samples[samples.len() / 2],
-            fastest: samples[0],
-            slowest: samples[samples.len() - 1],
-        })
-    }
-
-    /// The GPU kernel's culls among `culls` (default: both).
-    fn gpu_culls(culls: &[CullKind]) -> Result<Vec<GpuCull>, String> {
-        if culls.len() == CullKind::TIMED.len() {
-            return Ok(GpuCull::ALL.to_vec());
-        }
-        culls
-            .iter()
-            .map(|c| match c {
-                CullKind::NoCull => Ok(GpuCull::None),
-                CullKind::Cychosz => Ok(GpuCull::Cychosz),
-                other => Err(format!(
-                    "--culls: the GPU kernel runs none and cychosz, not {other}"
-                )),
-            })
-            .collect()
-    }
-}
+mod gpu;
 
 /// `torus-cull time --device gpu` in a binary built without the feature.
 #[cfg(not(feature = "gpu"))]

@@ -1,0 +1,382 @@
+//! Rays resident on the device, so that the kernel can be timed without the transfers.
+//!
+//! [`GpuIntersector::intersect`] packs, uploads, dispatches and reads back in one call:
+//! right for a renderer that hands over a batch and wants answers, wrong for asking how
+//! fast the kernel is, because a small batch is then timed by its transfers and the
+//! submission's latency. [`ResidentRays`] splits the three: [`GpuIntersector::upload`]
+//! packs and uploads once (its wall time is kept), [`ResidentRays::run`] dispatches the
+//! kernel over every resident ray `repeats` times in one submission and reports the
+//! device's own timestamps where the adapter offers them (`TIMESTAMP_QUERY`), and
+//! [`ResidentRays::read_back`] copies the last run's records back (its wall time kept
+//! apart).
+
+use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
+use super::{WORKGROUP, as_bytes, shifted, verdict};
+use crate::Ray;
+use crate::Torus;
+use crate::certified::F32Verdict;
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+/// A batch of rays packed and uploaded once, for timing the kernel alone.
+pub struct ResidentRays<'g> {
+    gpu: &'g GpuIntersector,
+    frame: Frame,
+    /// One set of buffers per dispatch of at most [`CHUNK`] rays.
+    chunks: Vec<Buffers>,
+    /// Rays in each chunk.
+    counts: Vec<usize>,
+    /// Per ray, what the host adds to the kernel's t ([`Frame::pack`]), and the rays the
+    /// kernel is not asked about (far origins, on-surface rays).
+    shifts: Vec<f64>,
+    host: Vec<(usize, Escalation)>,
+    /// Wall time of packing and uploading.
+    upload: Duration,
+    /// [`COPY_WGSL`] on the kernel's bindings.
+    copy: wgpu::ComputePipeline,
+}
+
+/// The memory-bound floor of the kernel's access pattern: each thread reads its ray's
+/// 32-byte record and writes 32 bytes, and computes nothing. The kernel's time over
+/// this one's is how far it is from the adapter's bandwidth bound.
+const COPY_WGSL: &str = "
+@group(0) @binding(1) var<storage, read> rays: array<vec4<f32>>;
+@group(0) @binding(2) var<storage, read_write> results: array<vec4<f32>>;
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let i = 2u * id.x;
+    if (i + 1u < arrayLength(&rays)) {
+        results[i] = rays[i];
+        results[i + 1u] = rays[i + 1u];
+    }
+}
+";
+
+/// One [`ResidentRays::run`]: `repeats` dispatches over every resident ray.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KernelTime {
+    /// Wall time from submission to completion, over all repeats (it includes the
+    /// submission's latency, which a large batch and several repeats amortise).
+    pub wall: Duration,
+    /// The device's own time of each repeat, from timestamps written at the start and
+    /// end of its compute pass; empty when the adapter has no timestamp queries.
+    pub device: Vec<Duration>,
+}
+
+impl GpuIntersector {
+    /// Packs `rays` for `torus` (as [`GpuIntersector::intersect`] does) and uploads them
+    /// into buffers that stay on the device until the returned batch is dropped.
+    pub fn upload(&self, torus: &Torus, rays: &[Ray]) -> Result<ResidentRays<'_>, GpuError> {
+        let start = Instant::now();
+        let frame = Frame::of(torus);
+        let mut chunks = Vec::new();
+        let mut counts = Vec::new();
+        let mut shifts = Vec::with_capacity(rays.len());
+        let mut host = Vec::new();
+        for (k, batch) in rays.chunks(CHUNK).enumerate() {
+            let buffers = self.buffers(batch.len());
+            let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
+            for (i, ray) in batch.iter().enumerate() {
+                let p = frame.pack(ray);
+                packed.extend_from_slice(&p.words);
+                shifts.push(p.t0);
+                if !p.sendable {
+                    host.push((k * CHUNK + i, Escalation::FarOrigin));
+                } else if ray.starts_on_surface() {
+                    host.push((k * CHUNK + i, Escalation::OnSurface));
+                }
+            }
+            self.queue
+                .write_buffer(&buffers.input, 0, &as_bytes(&packed));
+            chunks.push(buffers);
+            counts.push(batch.len());
+        }
+        let copy = self.copy_pipeline()?;
+        self.queue.submit([]);
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        Ok(ResidentRays {
+            gpu: self,
+            frame,
+            chunks,
+            counts,
+            shifts,
+            host,
+            upload: start.elapsed(),
+            copy,
+        })
+    }
+
+    /// [`COPY_WGSL`] compiled on the kernel's bind group layout.
+    fn copy_pipeline(&self) -> Result<wgpu::ComputePipeline, GpuError> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some("torus-cull copy"),
+                source: wgpu::ShaderSource::Wgsl(COPY_WGSL.into()),
+            });
+        let layout = self
+            .device
+            .create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some("torus-cull copy layout"),
+                bind_group_layouts: &[Some(&self.layout)],
+                immediate_size: 0,
+            });
+        let pipeline = self
+            .device
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some("torus-cull copy pipeline"),
+                layout: Some(&layout),
+                module: &module,
+                entry_point: Some("main"),
+                compilation_options: Default::default(),
+                cache: None,
+            });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(GpuError::Kernel(e.to_string()));
+        }
+        Ok(pipeline)
+    }
+
+    /// Whether [`ResidentRays::run`] reports the device's own timestamps.
+    pub fn has_timestamps(&self) -> bool {
+        self.device
+            .features()
+            .contains(wgpu::Features::TIMESTAMP_QUERY)
+    }
+}
+
+impl ResidentRays<'_> {
+    /// Rays resident.
+    pub fn len(&self) -> usize {
+        self.shifts.len()
+    }
+
+    /// No rays resident.
+    pub fn is_empty(&self) -> bool {
+        self.shifts.is_empty()
+    }
+
+    /// Bytes the kernel reads and writes per ray (one record in, one out).
+    pub const BYTES_PER_RAY: u64 = 2 * RAY_BYTES;
+
+    /// Wall time of packing and uploading the rays.
+    pub fn upload_time(&self) -> Duration {
+        self.upload
+    }
+
+    /// Runs the kernel with `cull` over every resident ray `repeats` times (at least
+    /// once), in one submission, and waits for it.
+    pub fn run(&self, cull: GpuCull, repeats: usize) -> Result<KernelTime, GpuError> {
+        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+            self.gpu
+                .queue
+                .write_buffer(&buffers.params, 0, &self.frame.params(count as u32, cull));
+        }
+        self.dispatch(&self.gpu.pipeline, repeats)
+    }
+
+    /// Runs the copy kernel (each ray's record read and written, nothing computed) over
+    /// every resident ray `repeats` times: the memory-bound floor that [`ResidentRays::run`]
+    /// is measured against. It overwrites the results of the last run.
+    pub fn run_copy(&self, repeats: usize) -> Result<KernelTime, GpuError> {
+        self.dispatch(&self.copy, repeats)
+    }
+
+    fn dispatch(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        repeats: usize,
+    ) -> Result<KernelTime, GpuError> {
+        let gpu = self.gpu;
+        let repeats = repeats.max(1);
+        let queries = gpu.has_timestamps().then(|| {
+            let n = 2 * repeats as u32;
+            let set = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("torus-cull timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count: n,
+            });
+            let bytes = u64::from(n) * 8;
+            let resolve = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("torus-cull timestamps resolved"),
+                size: bytes,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            });
+            let read = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("torus-cull timestamps read"),
+                size: bytes,
+                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            (set, resolve, read, n)
+        });
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("torus-cull timed dispatch"),
+            });
+        for rep in 0..repeats as u32 {
+            let timestamp_writes =
+                queries
+                    .as_ref()
+                    .map(|(set, ..)| wgpu::ComputePassTimestampWrites {
+                        query_set: set,
+                        beginning_of_pass_write_index: Some(2 * rep),
+                        end_of_pass_write_index: Some(2 * rep + 1),
+                    });
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("torus-cull timed pass"),
+                timestamp_writes,
+            });
+            pass.set_pipeline(pipeline);
+            for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+                pass.set_bind_group(0, &buffers.bind_group, &[]);
+                pass.dispatch_workgroups(count.div_ceil(WORKGROUP) as u32, 1, 1);
+            }
+        }
+        if let Some((set, resolve, read, n)) = &queries {
+            encoder.resolve_query_set(set, 0..*n, resolve, 0);
+            encoder.copy_buffer_to_buffer(resolve, 0, read, 0, u64::from(*n) * 8);
+        }
+        let start = Instant::now();
+        gpu.queue.submit([encoder.finish()]);
+        gpu.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        let wall = start.elapsed();
+        let device = match &queries {
+            None => Vec::new(),
+            Some((_, _, read, _)) => {
+                let ticks = map_words(gpu, read)?;
+                let period = f64::from(gpu.queue.get_timestamp_period());
+                ticks
+                    .chunks_exact(2)
+                    .map(|p| {
+                        Duration::from_nanos((p[1].saturating_sub(p[0]) as f64 * period) as u64)
+                    })
+                    .collect()
+            }
+        };
+        Ok(KernelTime { wall, device })
+    }
+
+    /// The verdicts of the last [`ResidentRays::run`] (as [`GpuIntersector::explain`]
+    /// gives them), and the wall time of copying them back.
+    #[allow(clippy::type_complexity)]
+    pub fn read_back(&self) -> Result<(Vec<(F32Verdict, Option<Escalation>)>, Duration), GpuError> {
+        let gpu = self.gpu;
+        let start = Instant::now();
+        let mut out = Vec::with_capacity(self.len());
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("torus-cull read back"),
+            });
+        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+            let bytes = count as u64 * RAY_BYTES;
+            encoder.copy_buffer_to_buffer(&buffers.output, 0, &buffers.staging, 0, bytes);
+        }
+        gpu.queue.submit([encoder.finish()]);
+        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+            let bytes = count as u64 * RAY_BYTES;
+            let slice = buffers.staging.slice(..bytes);
+            map(gpu, &slice)?;
+            {
+                let view = slice
+                    .get_mapped_range()
+                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+                for record in view.chunks_exact(RAY_BYTES as usize) {
+                    let w: [f32; 8] = std::array::from_fn(|k| {
+                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+                    });
+                    let t0 = self.shifts[out.len()];
+                    out.push(shifted(verdict(w), t0));
+                }
+            }
+            buffers.staging.unmap();
+        }
+        for &(i, why) in &self.host {
+            out[i] = (F32Verdict::Escalate, Some(why));
+        }
+        Ok((out, start.elapsed()))
+    }
+}
+
+/// Maps `slice` for reading and waits for it.
+fn map(gpu: &GpuIntersector, slice: &wgpu::BufferSlice<'_>) -> Result<(), GpuError> {
+    let (tx, rx) = mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    gpu.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    rx.recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))
+}
+
+/// The u64 words of a mappable buffer.
+fn map_words(gpu: &GpuIntersector, buffer: &wgpu::Buffer) -> Result<Vec<u64>, GpuError> {
+    let slice = buffer.slice(..);
+    map(gpu, &slice)?;
+    let words = {
+        let view = slice
+            .get_mapped_range()
+            .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+        view.chunks_exact(8)
+            .map(|b| u64::from_le_bytes(b.try_into().expect("8 bytes")))
+            .collect()
+    };
+    buffer.unmap();
+    Ok(words)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// The resident path gives the same verdicts as the one-call path.
+    #[test]
+    fn resident_rays_give_the_same_verdicts_as_intersect() {
+        let Ok(gpu) = GpuIntersector::new() else {
+            eprintln!("no GPU adapter: skipped");
+            return;
+        };
+        let torus = Torus::new(
+            Vec3::new(0.5, -1.0, 2.0),
+            Vec3::new(0.2, 1.0, 0.1),
+            3.0,
+            1.0,
+        )
+        .expect("valid torus");
+        let rays: Vec<Ray> = (0..500)
+            .map(|i| {
+                let a = i as f32 * 0.37;
+                let o = Vec3::new(8.0 * a.cos(), 3.0 * (a * 0.7).sin(), 8.0 * a.sin());
+                let target = Vec3::new((a * 1.3).sin(), 0.2 * a.cos(), (a * 0.9).cos());
+                Ray::new(o, target - o).expect("valid ray")
+            })
+            .collect();
+        for cull in GpuCull::ALL {
+            let want = gpu.explain(&torus, cull, &rays).expect("dispatch");
+            let resident = gpu.upload(&torus, &rays).expect("upload");
+            let time = resident.run(cull, 3).expect("run");
+            let copy = resident.run_copy(2).expect("copy");
+            assert!(copy.device.is_empty() || copy.device.len() == 2);
+            resident.run(cull, 1).expect("run");
+            assert!(time.device.is_empty() || time.device.len() == 3);
+            let (got, _) = resident.read_back().expect("read back");
+            assert_eq!(got, want, "{cull}");
+            assert!(
+                want.iter()
+                    .any(|(v, _)| matches!(v, F32Verdict::Hit { .. }))
+            );
+        }
+    }
+}

@@ -1,0 +1,341 @@
+//! `torus-cull time --device gpu`: the WGSL kernel timed with its rays resident on the
+//! device, every cull paired against `none` and `cychosz` (and a copy kernel, the
+//! memory-bound floor) in the same interleaved rounds.
+//!
+//! Per case × ν the rays are uploaded once ([`GpuIntersector::upload`]); each round runs
+//! every contender, in an order rotated from round to round, `repeats` dispatches each in
+//! one submission, and takes the device's timestamps (the submission's wall time where
+//! the adapter has none). Upload and read-back are timed once per case × ν and reported
+//! apart.
+
+use crate::outln;
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+use torus_cull::gpu::{GpuCull, GpuIntersector, KernelTime, ResidentRays};
+use torus_cull::{CullKind, F32Verdict, Named};
+use torus_cull_lab::paired::ratio_estimate;
+use torus_cull_lab::results::{EstimateRecord, F32_PRECISION, RatioRecord, Results};
+use torus_cull_lab::workload::spec::Workload;
+use torus_cull_lab::workload::{Batch, Case, GenerateError, generate};
+
+/// Rounds per case × ν at least, whatever the time share.
+const MIN_ROUNDS: usize = 7;
+
+/// Each timed submission lasts about this long (repeats of the whole batch), so that
+/// the wall clock's latency is small beside it where there are no timestamps.
+const SUBMISSION: Duration = Duration::from_millis(4);
+
+/// The metric of the records: the kernel's device time per ray (cull and certified f32
+/// intersection), rays resident.
+const METRIC: &str = "gpu_kernel_ns";
+
+/// The contender that only copies each ray's record: the bandwidth floor.
+const COPY: &str = "copy";
+
+/// Times the kernel on every case × ν of `workload`.
+pub(super) fn run(
+    workload: &Workload,
+    nus: &[f64],
+    culls: &[CullKind],
+    seconds: f64,
+    batch: usize,
+    path: &Path,
+) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    let mut culls = gpu_culls(culls)?;
+    for reference in [GpuCull::None, GpuCull::Cychosz] {
+        if !culls.contains(&reference) {
+            culls.insert(0, reference);
+        }
+    }
+    let gpu = GpuIntersector::new()?;
+    let device = announce_adapter(&gpu)?;
+    let share = seconds / (workload.cases.len() * nus.len()) as f64;
+    outln!(
+        "{:<11} {:>6} {:<15} {:>8} {:>9} {:>21} {:>21} {:>7} {:>6}",
+        "case",
+        "nu",
+        "cull",
+        "ns/ray",
+        "Mrays/s",
+        "vs none [95% CI]",
+        "vs cychosz [95% CI]",
+        "of_copy",
+        "escal"
+    )?;
+    let mut results = Results::new(workload, "time");
+    for (case, nu, b) in generate_all(workload, nus, batch)? {
+        let resident = gpu.upload(&b.torus, &b.rays)?;
+        let unit = time_unit(&resident, &culls, share)?;
+        let rays = resident.len() as f64;
+        let tag = format!("{}/{nu}", case.name());
+        let per_ray = |d: Duration| d.as_nanos() as f64 / rays;
+        for (name, d) in [
+            ("upload", resident.upload_time()),
+            ("readback", unit.read_back),
+        ] {
+            results.estimates.push(EstimateRecord {
+                benchmark: format!("gpu_{name}_ns-{tag}"),
+                elements: rays as u64,
+                ns_per_element: per_ray(d),
+                ns_per_element_ci: [per_ray(d); 2],
+            });
+        }
+        let copy = &unit.ns[0];
+        results
+            .estimates
+            .push(estimate(&format!("gpu_copy_ns-{tag}"), copy, rays));
+        let seed = workload.seed ^ nu.to_bits();
+        for (k, &cull) in culls.iter().enumerate() {
+            let mine = &unit.ns[k + 1];
+            let escalated = unit.escalated[k] as f64 / rays;
+            results.estimates.push(estimate(
+                &format!("gpu_ns-{}/{}/{nu}", case.name(), cull.name()),
+                mine,
+                rays,
+            ));
+            let mut cells = Vec::new();
+            for reference in [GpuCull::None, GpuCull::Cychosz] {
+                if reference == cull {
+                    cells.push("-".into());
+                    continue;
+                }
+                let r = culls.iter().position(|&c| c == reference).expect("added");
+                let est = ratio_estimate(mine, &unit.ns[r + 1], rays, seed)
+                    .ok_or("the GPU's clock did not advance")?;
+                cells.push(format!(
+                    "{:.3} [{:.3},{:.3}]",
+                    est.ratio, est.ratio_ci[0], est.ratio_ci[1]
+                ));
+                results.ratio.push(RatioRecord {
+                    case: case.name().into(),
+                    nu,
+                    cull: cull.name().into(),
+                    reference: reference.name().into(),
+                    metric: METRIC.into(),
+                    ratio: est.ratio,
+                    ratio_ci: est.ratio_ci,
+                    rounds: est.rounds as u64,
+                    rounds_measured: unit.rounds as u64,
+                    rays: rays as u64,
+                    ns_per_ray: est.ns_per_ray,
+                    reference_ns_per_ray: est.reference_ns_per_ray,
+                    precision: F32_PRECISION.into(),
+                    device: "gpu".into(),
+                    escalation_rate: Some(escalated),
+                });
+            }
+            let ns = median(mine) / rays;
+            outln!(
+                "{:<11} {:>6} {:<15} {:>8.4} {:>9.1} {:>21} {:>21} {:>7.2} {:>5.2}%",
+                case.name(),
+                nu,
+                cull.name(),
+                ns,
+                1e3 / ns,
+                cells[0],
+                cells[1],
+                median(copy) / median(mine),
+                100.0 * escalated
+            )?;
+        }
+        outln!(
+            "{:<11} {:>6} {:<15} {:>8.4} {:>9.1}   ({:.0} GB/s read+written; upload {:.2} ns/ray, read-back {:.2} ns/ray, not in the times above)",
+            case.name(),
+            nu,
+            COPY,
+            median(copy) / rays,
+            1e3 * rays / median(copy),
+            ResidentRays::BYTES_PER_RAY as f64 * rays / median(copy),
+            per_ray(resident.upload_time()),
+            per_ray(unit.read_back),
+        )?;
+    }
+    results.meta.device = Some(device);
+    results.meta.threads = Some(1);
+    results.meta.sizes = Some(super::timing_sizes(batch, nus));
+    results.save(path)?;
+    outln!("wrote {}", path.display())?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Every case × ν's batch, drawn on all cores (the generators are the slow part of a
+/// GPU run: a few µs per ray), in the workload's order.
+fn generate_all(
+    workload: &Workload,
+    nus: &[f64],
+    batch: usize,
+) -> Result<Vec<(Case, f64, Batch)>, GenerateError> {
+    let units: Vec<(Case, f64)> = workload
+        .cases
+        .iter()
+        .flat_map(|&case| nus.iter().map(move |&nu| (case, nu)))
+        .collect();
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let per_thread = units.len().div_ceil(threads.max(1)).max(1);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = units
+            .chunks(per_thread)
+            .map(|chunk| {
+                scope.spawn(move || {
+                    chunk
+                        .iter()
+                        .map(|&(case, nu)| {
+                            generate(case, nu, batch, workload.seed, workload.pose)
+                                .map(|b| (case, nu, b))
+                        })
+                        .collect::<Result<Vec<_>, _>>()
+                })
+            })
+            .collect();
+        let mut all = Vec::with_capacity(units.len());
+        for h in handles {
+            all.extend(h.join().expect("a generator thread panicked")?);
+        }
+        Ok(all)
+    })
+}
+
+/// One case × ν: per contender (the copy kernel first, then `culls` in order), the
+/// device time of one pass over the batch in each round (ns); the rays each cull
+/// escalated; the read-back time.
+struct UnitTimes {
+    ns: Vec<Vec<f64>>,
+    escalated: Vec<usize>,
+    read_back: Duration,
+    rounds: usize,
+}
+
+fn time_unit(
+    resident: &ResidentRays<'_>,
+    culls: &[GpuCull],
+    share: f64,
+) -> Result<UnitTimes, Box<dyn std::error::Error>> {
+    // Warm-up: every contender once, each cull's verdicts counted.
+    let mut escalated = Vec::with_capacity(culls.len());
+    let mut read_back = Duration::MAX;
+    resident.run_copy(1)?;
+    for &cull in culls {
+        resident.run(cull, 1)?;
+        let (verdicts, took) = resident.read_back()?;
+        read_back = read_back.min(took);
+        escalated.push(
+            verdicts
+                .iter()
+                .filter(|(v, _)| *v == F32Verdict::Escalate)
+                .count(),
+        );
+    }
+    let once = resident.run(GpuCull::None, 1)?.wall;
+    let repeats = (SUBMISSION.as_secs_f64() / once.as_secs_f64().max(1e-9)).ceil() as usize;
+    let repeats = repeats.clamp(1, 1000);
+    let contenders = culls.len() + 1;
+    let mut ns = vec![Vec::new(); contenders];
+    let start = Instant::now();
+    let mut round = 0;
+    while round < MIN_ROUNDS || start.elapsed().as_secs_f64() < share {
+        for j in 0..contenders {
+            // Rotated order: no contender always follows the same one.
+            let k = (j + round) % contenders;
+            let time = if k == 0 {
+                resident.run_copy(repeats)?
+            } else {
+                resident.run(culls[k - 1], repeats)?
+            };
+            ns[k].push(per_pass(&time, repeats));
+        }
+        round += 1;
+    }
+    Ok(UnitTimes {
+        ns,
+        escalated,
+        read_back,
+        rounds: round,
+    })
+}
+
+/// ns of one pass over the batch: the device's timestamps where there are any, else the
+/// submission's wall time, over the repeats.
+fn per_pass(time: &KernelTime, repeats: usize) -> f64 {
+    if time.device.is_empty() {
+        time.wall.as_nanos() as f64 / repeats as f64
+    } else {
+        let total: Duration = time.device.iter().sum();
+        total.as_nanos() as f64 / time.device.len() as f64
+    }
+}
+
+fn median(ns: &[f64]) -> f64 {
+    let mut v = ns.to_vec();
+    torus_cull_lab::paired::median(&mut v)
+}
+
+/// A per-ray estimate from per-pass times: the median, with the fastest and slowest.
+fn estimate(benchmark: &str, ns: &[f64], rays: f64) -> EstimateRecord {
+    let lo = ns.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = ns.iter().copied().fold(0.0, f64::max);
+    EstimateRecord {
+        benchmark: benchmark.into(),
+        elements: rays as u64,
+        ns_per_element: median(ns) / rays,
+        ns_per_element_ci: [lo / rays, hi / rays],
+    }
+}
+
+/// The adapter, described and said on stdout; a software one is called out, so that
+/// its figures are not taken for a GPU's.
+fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
+    let mut device = format!(
+        "{} ({:?}, {:?})",
+        gpu.adapter_name(),
+        gpu.device_type(),
+        gpu.backend()
+    );
+    if gpu.is_software() {
+        device.push_str("; software adapter: a CPU proxy, no GPU timing claimed");
+    }
+    outln!("adapter: {device}")?;
+    if gpu.is_software() {
+        outln!(
+            "the adapter is a CPU rasteriser (device type Cpu): these figures time \
+             this CPU through {:?}, not a GPU",
+            gpu.backend()
+        )?;
+    }
+    if !gpu.has_timestamps() {
+        outln!(
+            "the adapter has no timestamp queries: each pass is timed by its \
+             submission's wall clock"
+        )?;
+    }
+    Ok(device)
+}
+
+/// The GPU kernel's culls among `culls` (default: all it has).
+fn gpu_culls(culls: &[CullKind]) -> Result<Vec<GpuCull>, String> {
+    if culls.len() == CullKind::TIMED.len() {
+        return Ok(GpuCull::ALL.to_vec());
+    }
+    let allowed = || {
+        GpuCull::ALL
+            .iter()
+            .map(|c| c.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    culls
+        .iter()
+        .map(|c| {
+            GpuCull::ALL
+                .iter()
+                .copied()
+                .find(|g| g.name() == c.name())
+                .ok_or_else(|| {
+                    format!(
+                        "--culls: the GPU kernel has no {c} (allowed with --device gpu: {})",
+                        allowed()
+                    )
+                })
+        })
+        .collect()
+}
