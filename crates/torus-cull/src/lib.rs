@@ -91,7 +91,10 @@ pub mod internals {
     pub use crate::num::{F32s, Vec3s};
 }
 
-pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};
+pub use certified::{
+    F32Hit, F32Occluded, F32Verdict, intersect_f32, intersect_f32_certified, intersect_f32_culled,
+    occluded_f32, occluded_f32_culled,
+};
 pub use cull::{
     AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
     DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,

@@ -16,11 +16,19 @@ use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
 use crate::cull::BatchCull;
+use crate::intersect::TorusRay;
+use crate::intersect::sealed::{FromExact, Steps};
 use crate::num::Dispatch;
-use crate::{Hit, Ray, Torus, intersect};
-use glam::Vec3;
+use crate::{Torus, intersect};
+use glam::DVec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
+///
+/// Every pass takes a slice of [`crate::Ray`]s (hits in f32, [`crate::Hit`]) or of
+/// [`crate::DRay`]s (hits in f64, [`crate::DHit`]), rays from a surface point
+/// ([`crate::Torus::spawn`]) among them, and after it [`Wavefront::finished_in_f64`] names
+/// the rays the scalar f64 path answered. Shadow rays take the any-hit passes
+/// ([`Wavefront::occluded`], [`Wavefront::occluded_f32`]).
 ///
 /// ```
 /// use glam::Vec3;
@@ -55,6 +63,8 @@ pub struct Wavefront {
     survivors: RaysF64,
     answers: Answers,
     answers_f32: F32Answers,
+    /// The rays of the last pass the scalar f64 path answered (indices, ascending).
+    finished: Vec<usize>,
 }
 
 /// What one wavefront did.
@@ -66,12 +76,12 @@ pub struct WavefrontStats {
     /// Rays the cull kept (all of them for `none`): the exact intersection's lanes.
     pub kept: usize,
     /// Kept rays handed to the scalar [`crate::intersect()`] (tangent and near-tangent
-    /// quartics).
+    /// quartics, and rays from a surface point).
     pub scalar_fallbacks: usize,
-    /// Rays with a hit.
+    /// Rays with a hit (for the any-hit passes: rays occluded).
     pub hits: usize,
     /// Kept rays the f32 path could not prove, answered by the f64 [`crate::intersect()`]
-    /// ([`Wavefront::intersect_f32`] only).
+    /// ([`Wavefront::intersect_f32`] and [`Wavefront::occluded_f32`] only).
     pub escalated: usize,
 }
 
@@ -83,16 +93,16 @@ impl Wavefront {
 
     /// The nearest hit of every ray (`hits[i]` for `rays[i]`, resized), culled with
     /// `cull` first: what [`crate::intersect_culled`] returns ray by ray, to the batch
-    /// solver's rounding.
+    /// solver's rounding. [`crate::Ray`]s get f32 hits, [`crate::DRay`]s f64 ones.
     ///
     /// `none` skips the cull stage (every ray is intersected): the baseline.
-    pub fn intersect(
+    pub fn intersect<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, hits);
         intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
@@ -100,14 +110,9 @@ impl Wavefront {
         // Padding lanes lie past `len` and are never read.
         let len = self.survivors.len();
         for j in set_bits(&a.hit, len) {
-            hits[self.survivors.index[j]] = Some(Hit {
-                t: a.t[j] as f32,
-                normal: Vec3::new(
-                    a.normal[0][j] as f32,
-                    a.normal[1][j] as f32,
-                    a.normal[2][j] as f32,
-                ),
-            });
+            let (o, d) = self.survivors.world(j);
+            let normal = DVec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]);
+            hits[self.survivors.index[j]] = R::Hit::from_exact(a.t[j], normal, o, d);
         }
         let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
             .map(|(f, s)| f | s)
@@ -122,40 +127,133 @@ impl Wavefront {
     /// [`Wavefront::intersect`] through the certified f32 path ([`crate::intersect_f32`]
     /// on lanes): the kept rays are solved and proved on f32 lanes, twice as many per
     /// register, and only the rays f32 cannot prove go to the f64 [`crate::intersect()`]
-    /// (counted in [`WavefrontStats::escalated`]). Never misses a hit the f64 path finds;
-    /// a hit's `t` is within 1.9·10⁻⁴·R of it.
-    pub fn intersect_f32(
+    /// (counted in [`WavefrontStats::escalated`], named by
+    /// [`Wavefront::finished_in_f64`]). Never misses a hit the f64 path finds; a proved
+    /// hit's `t` is within 1.9·10⁻⁴·R of it (for a [`crate::DRay`] too: the proof is
+    /// f32's, on the f64 line rounded once), and it is a front face (the proof is a
+    /// crossing from outside to inside).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
+    /// use torus_cull::{DRay, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// let rays = [
+    ///     DRay::new(DVec3::new(4.0, 10.0, 0.0), DVec3::NEG_Y)?, // proved in f32
+    ///     DRay::new(DVec3::new(4.0, 0.0, 0.0), DVec3::X)?,      // inside the tube: f64
+    /// ];
+    /// let mut wavefront = Wavefront::new();
+    /// let mut hits = Vec::new();
+    /// let stats =
+    ///     wavefront.intersect_f32(&Dispatch::best(), BatchCull::Skala, &torus, &rays, &mut hits);
+    /// assert_eq!((stats.hits, stats.escalated), (2, 1));
+    /// assert_eq!(wavefront.finished_in_f64(), &[1]);
+    /// assert_eq!(hits[1], intersect(&torus, &rays[1])); // the f64 answer, exactly
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn intersect_f32<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Certify)
+    }
+
+    /// The any-hit pass for shadow rays: `occluded[i]` (resized) is whether `rays[i]`
+    /// meets the torus at some `t ∈ [t_min, t_max]`, what [`crate::occluded()`] answers
+    /// ray by ray. The same lanes as [`Wavefront::intersect`] (which form the normal
+    /// anyway), answered as a bool; the caller keeps no hit buffer.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
+    /// use torus_cull::{Ray, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// // Up from below onto the bottom of the tube, then shadow rays from that hit.
+    /// let up = Ray::new(Vec3::new(4.0, -10.0, 0.0), Vec3::Y)?;
+    /// let hit = intersect(&torus, &up).expect("the bottom of the tube, at t = 9");
+    /// let shadow = [
+    ///     torus.spawn(&up, hit.t, Vec3::Y)?,     // up, through the tube: blocked by its top
+    ///     torus.spawn(&up, hit.t, Vec3::NEG_Y)?, // down, away from the torus: clear
+    ///     torus.spawn(&up, hit.t, Vec3::Y)?.with_t_max(1.5), // a light inside the tube
+    /// ];
+    /// let mut wavefront = Wavefront::new();
+    /// let mut blocked = Vec::new();
+    /// wavefront.occluded(&Dispatch::best(), BatchCull::Skala, &torus, &shadow, &mut blocked);
+    /// assert_eq!(blocked, [true, false, false]);
+    /// // Rays from a surface point are answered by the f64 path, and named.
+    /// assert_eq!(wavefront.finished_in_f64(), &[0, 1, 2]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn occluded<R: TorusRay>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        occluded: &mut Vec<bool>,
+    ) -> WavefrontStats {
+        let mut hits = Vec::new();
+        let stats = self.intersect(dispatch, cull, torus, rays, &mut hits);
+        occluded.clear();
+        occluded.extend(hits.iter().map(Option::is_some));
+        stats
+    }
+
+    /// [`Wavefront::occluded`] through the certified f32 path: a proved hit is a proved
+    /// root in range, a proved miss none; every other kept ray (counted in
+    /// [`WavefrontStats::escalated`], named by [`Wavefront::finished_in_f64`]) gets the
+    /// f64 answer. Always [`crate::occluded()`]'s answer.
+    pub fn occluded_f32<R: TorusRay>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        occluded: &mut Vec<bool>,
+    ) -> WavefrontStats {
+        let mut hits = Vec::new();
+        let stats = self.intersect_f32(dispatch, cull, torus, rays, &mut hits);
+        occluded.clear();
+        occluded.extend(hits.iter().map(Option::is_some));
+        stats
+    }
+
+    /// The rays of the last pass (indices into its slice, ascending) that the scalar f64
+    /// path answered: after [`Wavefront::intersect_f32`] or [`Wavefront::occluded_f32`]
+    /// the escalated ones (not proved in f32, or from a surface point), after
+    /// [`Wavefront::intersect`] or [`Wavefront::occluded`] the scalar fallbacks (tangent
+    /// quartics, rays from a surface point). Its length is the pass's
+    /// [`WavefrontStats::escalated`] or [`WavefrontStats::scalar_fallbacks`].
+    #[must_use]
+    pub fn finished_in_f64(&self) -> &[usize] {
+        &self.finished
     }
 
     /// The f32 wavefront **without** the proof: every f32 answer taken as it comes (hits
     /// lost and invented near tangents). Only for timing what the proof costs.
     #[doc(hidden)]
-    pub fn intersect_f32_uncertified(
+    pub fn intersect_f32_uncertified<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Uncertified)
     }
 
-    fn f32_pass(
+    fn f32_pass<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
         proof: Proof,
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, hits);
@@ -170,11 +268,13 @@ impl Wavefront {
         let a = &self.answers_f32;
         let major = torus.major_radius_f64();
         for j in set_bits(&a.hit, len) {
-            let t = a.t(major, j) as f32;
-            hits[self.survivors.index[j]] = t.is_finite().then_some(Hit {
-                t,
-                normal: Vec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]),
-            });
+            let (o, d) = self.survivors.world(j);
+            let normal = DVec3::new(
+                f64::from(a.normal[0][j]),
+                f64::from(a.normal[1][j]),
+                f64::from(a.normal[2][j]),
+            );
+            hits[self.survivors.index[j]] = R::Hit::from_proved(a.t(major, j), normal, o, d);
         }
         // Escalated: neither proved, or from a surface point (the f64 path divides its
         // root out). The bits past `len` are padding, never read.
@@ -189,25 +289,25 @@ impl Wavefront {
     }
 
     /// The survivors whose bit is set in `open` (the lanes left undecided), intersected by
-    /// the scalar f64 path; how many.
-    fn finish_in_f64(
-        &self,
+    /// the scalar f64 path and recorded in `finished`; how many.
+    fn finish_in_f64<R: TorusRay>(
+        &mut self,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut [Option<Hit>],
+        rays: &[R],
+        hits: &mut [Option<R::Hit>],
         open: &[u64],
     ) -> usize {
-        let mut finished = 0;
+        self.finished.clear();
         for j in set_bits(open, self.survivors.len()) {
             let i = self.survivors.index[j];
             hits[i] = intersect(torus, &rays[i]);
-            finished += 1;
+            self.finished.push(i);
         }
-        finished
+        self.finished.len()
     }
 
     /// The counts every pass reports: rays, survivors of the cull, hits.
-    fn stats(&self, rays: &[Ray], hits: &[Option<Hit>]) -> WavefrontStats {
+    fn stats<H>(&self, rays: &[impl Sized], hits: &[Option<H>]) -> WavefrontStats {
         WavefrontStats {
             rays: rays.len(),
             kept: self.survivors.len(),
@@ -217,21 +317,32 @@ impl Wavefront {
     }
 
     /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns;
-    /// `hits` cleared to `None` for every ray.
-    fn cull_and_compact(
+    /// `hits` cleared to `None` for every ray. f32 rays reach the culls' frame on lanes
+    /// ([`Lines::fill_from_rays_batch`]), f64 ones through their scalar transform.
+    fn cull_and_compact<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) {
         hits.clear();
         hits.resize(rays.len(), None);
+        self.finished.clear();
         if cull == BatchCull::NoCull {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {
-            self.lines.fill_from_rays_batch(dispatch, torus, rays);
+            match R::as_f32_rays(rays) {
+                Some(rays) => self.lines.fill_from_rays_batch(dispatch, torus, rays),
+                None => {
+                    self.lines.clear();
+                    for ray in rays {
+                        let line = ray.cull_line(torus);
+                        self.lines.push(line.origin, line.dir);
+                    }
+                }
+            }
             cull_batch(dispatch, cull, torus.bounds(), &self.lines, &mut self.keep);
             let count = self.keep.count_kept();
             self.survivors.fill(rays, self.keep.kept(), count);

@@ -112,6 +112,10 @@ pub(crate) mod sealed {
         fn to_dvec3(self) -> DVec3;
         /// An f64 vector rounded to this precision.
         fn from_dvec3(v: DVec3) -> Self;
+        /// Rays of this precision as f32 rays, if they are.
+        fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
+        where
+            Self: Precision;
     }
 
     impl Internals for Vec3 {
@@ -138,6 +142,9 @@ pub(crate) mod sealed {
         fn from_dvec3(v: DVec3) -> Vec3 {
             v.as_vec3()
         }
+        fn as_f32_rays(rays: &[super::Ray]) -> Option<&[super::Ray]> {
+            Some(rays)
+        }
     }
 
     impl Internals for DVec3 {
@@ -163,6 +170,9 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn from_dvec3(v: DVec3) -> DVec3 {
             v
+        }
+        fn as_f32_rays(_: &[super::DRay]) -> Option<&[super::Ray]> {
+            None
         }
     }
 }
