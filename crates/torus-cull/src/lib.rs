@@ -102,7 +102,7 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, Precision, Ray, RayError, Torus, TorusError,
+    NEAR_ORIGIN_REL, ON_SURFACE_REL, Precision, Ray, RayError, Torus, TorusError,
 };
 pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
 pub use names::{Named, UnknownName};
