@@ -360,7 +360,7 @@ impl<P: Precision> Ray<P> {
     /// ```
     ///
     /// **How near the surface.** The origin should lie within [`ON_SURFACE_REL`]·(R + r)
-    /// of the surface: any surface point rounded to f32 within about 10³·(R + r) of the
+    /// of the surface: any surface point rounded to f32 within about 1 600·(R + r) of the
     /// world origin does (docs/math.md §9). The lab's `eval` refuses an `on_surface` row
     /// farther off; the library does not know the torus here and cannot.
     pub fn from_surface(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
