@@ -572,9 +572,17 @@ fn what_a_renderer_needs_around_secondary_rays_agrees_with_the_oracle() {
                 );
                 literal_wide += rays64.len();
                 literal_wide_escalated += stats.escalated;
+                let mut lanes64 = Vec::new();
+                wavefront.occluded(
+                    &dispatch,
+                    BatchCull::Discriminant,
+                    &torus,
+                    &rays64,
+                    &mut lanes64,
+                );
                 wavefront.occluded_f32(&dispatch, BatchCull::Skala, &torus, &rays64, &mut blocked);
                 for (k, (ray, hit)) in lit64.iter().enumerate() {
-                    if hits[k].is_some() != *hit || blocked[k] != *hit {
+                    if hits[k].is_some() != *hit || blocked[k] != *hit || lanes64[k] != *hit {
                         literal_wrong.push(format!("wavefront {hit} {:?} {ray:?}", hits[k]));
                     }
                     let proved = !wavefront.finished_in_f64().contains(&k);

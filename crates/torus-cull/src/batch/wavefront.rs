@@ -19,7 +19,7 @@ use crate::cull::BatchCull;
 use crate::intersect::TorusRay;
 use crate::intersect::sealed::{FromExact, Steps};
 use crate::num::Dispatch;
-use crate::{Torus, intersect};
+use crate::{Torus, intersect, occluded};
 use glam::DVec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
@@ -104,24 +104,7 @@ impl Wavefront {
         rays: &[R],
         hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits);
-        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
-        let a = &self.answers;
-        // Padding lanes lie past `len` and are never read.
-        let len = self.survivors.len();
-        for j in set_bits(&a.hit, len) {
-            let (o, d) = self.survivors.world(j);
-            let normal = DVec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]);
-            hits[self.survivors.index[j]] = R::Hit::from_exact(a.t[j], normal, o, d);
-        }
-        let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
-            .map(|(f, s)| f | s)
-            .collect();
-        let scalar_fallbacks = self.finish_in_f64(torus, rays, hits, &open);
-        WavefrontStats {
-            scalar_fallbacks,
-            ..self.stats(rays, hits)
-        }
+        self.f64_pass(dispatch, cull, torus, rays, hits)
     }
 
     /// [`Wavefront::intersect`] through the certified f32 path ([`crate::intersect_f32`]
@@ -165,7 +148,9 @@ impl Wavefront {
     /// The any-hit pass for shadow rays: `occluded[i]` (resized) is whether `rays[i]`
     /// meets the torus at some `t ∈ [t_min, t_max]`, what [`crate::occluded()`] answers
     /// ray by ray. The same lanes as [`Wavefront::intersect`] (which form the normal
-    /// anyway), answered as a bool; the caller keeps no hit buffer.
+    /// anyway), answered as a bool; the rays the scalar path finishes (tangents, and
+    /// every ray from a surface point) get [`crate::occluded()`], which skips the hit's
+    /// normal, point and world transform.
     ///
     /// ```
     /// use glam::Vec3;
@@ -196,11 +181,7 @@ impl Wavefront {
         rays: &[R],
         occluded: &mut Vec<bool>,
     ) -> WavefrontStats {
-        let mut hits = Vec::new();
-        let stats = self.intersect(dispatch, cull, torus, rays, &mut hits);
-        occluded.clear();
-        occluded.extend(hits.iter().map(Option::is_some));
-        stats
+        self.f64_pass(dispatch, cull, torus, rays, occluded)
     }
 
     /// [`Wavefront::occluded`] through the certified f32 path: a proved hit is a proved
@@ -215,11 +196,7 @@ impl Wavefront {
         rays: &[R],
         occluded: &mut Vec<bool>,
     ) -> WavefrontStats {
-        let mut hits = Vec::new();
-        let stats = self.intersect_f32(dispatch, cull, torus, rays, &mut hits);
-        occluded.clear();
-        occluded.extend(hits.iter().map(Option::is_some));
-        stats
+        self.f32_pass(dispatch, cull, torus, rays, occluded, Proof::Certify)
     }
 
     /// The rays of the last pass (indices into its slice, ascending) that the scalar f64
@@ -247,16 +224,46 @@ impl Wavefront {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Uncertified)
     }
 
-    fn f32_pass<R: TorusRay>(
+    /// The f64 lanes, then the scalar f64 path on the lanes they leave open: hits, or
+    /// bools for the any-hit pass.
+    fn f64_pass<R: TorusRay, A: Answer<R>>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
         rays: &[R],
-        hits: &mut Vec<Option<R::Hit>>,
+        out: &mut Vec<A>,
+    ) -> WavefrontStats {
+        self.cull_and_compact(dispatch, cull, torus, rays, out);
+        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
+        let a = &self.answers;
+        // Padding lanes lie past `len` and are never read.
+        let len = self.survivors.len();
+        for j in set_bits(&a.hit, len) {
+            let (o, d) = self.survivors.world(j);
+            let normal = DVec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]);
+            out[self.survivors.index[j]] = A::exact(a.t[j], normal, o, d);
+        }
+        let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
+            .map(|(f, s)| f | s)
+            .collect();
+        let scalar_fallbacks = self.finish_in_f64(torus, rays, out, &open);
+        WavefrontStats {
+            scalar_fallbacks,
+            ..self.stats(rays, out)
+        }
+    }
+
+    fn f32_pass<R: TorusRay, A: Answer<R>>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        out: &mut Vec<A>,
         proof: Proof,
     ) -> WavefrontStats {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits);
+        self.cull_and_compact(dispatch, cull, torus, rays, out);
         certify_lanes(
             dispatch,
             torus,
@@ -274,61 +281,61 @@ impl Wavefront {
                 f64::from(a.normal[1][j]),
                 f64::from(a.normal[2][j]),
             );
-            hits[self.survivors.index[j]] = R::Hit::from_proved(a.t(major, j), normal, o, d);
+            out[self.survivors.index[j]] = A::proved(a.t(major, j), normal, o, d);
         }
         // Escalated: neither proved, or from a surface point (the f64 path divides its
         // root out). The bits past `len` are padding, never read.
         let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&self.survivors.on_surface))
             .map(|((h, m), s)| !(h | m) | s)
             .collect();
-        let escalated = self.finish_in_f64(torus, rays, hits, &open);
+        let escalated = self.finish_in_f64(torus, rays, out, &open);
         WavefrontStats {
             escalated,
-            ..self.stats(rays, hits)
+            ..self.stats(rays, out)
         }
     }
 
-    /// The survivors whose bit is set in `open` (the lanes left undecided), intersected by
+    /// The survivors whose bit is set in `open` (the lanes left undecided), answered by
     /// the scalar f64 path and recorded in `finished`; how many.
-    fn finish_in_f64<R: TorusRay>(
+    fn finish_in_f64<R: TorusRay, A: Answer<R>>(
         &mut self,
         torus: &Torus,
         rays: &[R],
-        hits: &mut [Option<R::Hit>],
+        out: &mut [A],
         open: &[u64],
     ) -> usize {
         self.finished.clear();
         for j in set_bits(open, self.survivors.len()) {
             let i = self.survivors.index[j];
-            hits[i] = intersect(torus, &rays[i]);
+            out[i] = A::scalar(torus, &rays[i]);
             self.finished.push(i);
         }
         self.finished.len()
     }
 
     /// The counts every pass reports: rays, survivors of the cull, hits.
-    fn stats<H>(&self, rays: &[impl Sized], hits: &[Option<H>]) -> WavefrontStats {
+    fn stats<R: TorusRay, A: Answer<R>>(&self, rays: &[R], out: &[A]) -> WavefrontStats {
         WavefrontStats {
             rays: rays.len(),
             kept: self.survivors.len(),
-            hits: hits.iter().filter(|h| h.is_some()).count(),
+            hits: out.iter().filter(|h| h.is_hit()).count(),
             ..WavefrontStats::default()
         }
     }
 
     /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns;
-    /// `hits` cleared to `None` for every ray. f32 rays reach the culls' frame on lanes
+    /// `out` cleared to "no hit" for every ray. f32 rays reach the culls' frame on lanes
     /// ([`Lines::fill_from_rays_batch`]), f64 ones through their scalar transform.
-    fn cull_and_compact<R: TorusRay>(
+    fn cull_and_compact<R: TorusRay, A: Answer<R>>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
         rays: &[R],
-        hits: &mut Vec<Option<R::Hit>>,
+        out: &mut Vec<A>,
     ) {
-        hits.clear();
-        hits.resize(rays.len(), None);
+        out.clear();
+        out.resize(rays.len(), A::NONE);
         self.finished.clear();
         if cull == BatchCull::NoCull {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
@@ -347,5 +354,56 @@ impl Wavefront {
             let count = self.keep.count_kept();
             self.survivors.fill(rays, self.keep.kept(), count);
         }
+    }
+}
+
+/// What a pass writes per ray: the hit (`Option<R::Hit>`, the nearest-hit passes), or
+/// whether there is one (`bool`, the any-hit passes).
+trait Answer<R: TorusRay>: Copy {
+    /// No hit.
+    const NONE: Self;
+    /// From the f64 lanes' root `t` and world normal on the world line `o + t·d`.
+    fn exact(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self;
+    /// From a root the f32 lanes proved.
+    fn proved(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self;
+    /// The scalar f64 path's answer.
+    fn scalar(torus: &Torus, ray: &R) -> Self;
+    fn is_hit(&self) -> bool;
+}
+
+impl<R: TorusRay> Answer<R> for Option<R::Hit> {
+    const NONE: Self = None;
+    #[inline(always)]
+    fn exact(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self {
+        R::Hit::from_exact(t, normal, o, d)
+    }
+    #[inline(always)]
+    fn proved(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self {
+        R::Hit::from_proved(t, normal, o, d)
+    }
+    fn scalar(torus: &Torus, ray: &R) -> Self {
+        intersect(torus, ray)
+    }
+    fn is_hit(&self) -> bool {
+        self.is_some()
+    }
+}
+
+/// A hit whose `t` the ray's float can hold, as [`crate::occluded()`] counts one.
+impl<R: TorusRay> Answer<R> for bool {
+    const NONE: Self = false;
+    #[inline(always)]
+    fn exact(t: f64, _: DVec3, _: DVec3, _: DVec3) -> Self {
+        R::fits(t)
+    }
+    #[inline(always)]
+    fn proved(t: f64, _: DVec3, _: DVec3, _: DVec3) -> Self {
+        R::fits(t)
+    }
+    fn scalar(torus: &Torus, ray: &R) -> Self {
+        occluded(torus, ray)
+    }
+    fn is_hit(&self) -> bool {
+        *self
     }
 }
