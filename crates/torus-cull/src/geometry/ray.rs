@@ -195,6 +195,10 @@ pub(crate) mod sealed {
 /// assert!(DRay::new(DVec3::ZERO, DVec3::X).is_ok());
 /// assert!(DRay::new(DVec3::ZERO, DVec3::ZERO).is_err());
 /// assert!(DRay::new(DVec3::ZERO, DVec3::splat(1e300)).is_err()); // |d|² overflows
+/// // `at` and `with_t_max` are written once, for both precisions.
+/// let ray = DRay::new(DVec3::ZERO, DVec3::X * 2.0)?.with_t_max(3.0);
+/// assert_eq!((ray.at(1.5), ray.t_max()), (DVec3::new(3.0, 0.0, 0.0), 3.0));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ray<P: Precision = Vec3> {
