@@ -2,10 +2,23 @@
 //!
 //! Input: CSV with the header `ox,oy,oz,dx,dy,dz` (a UTF-8 byte-order mark before it is
 //! accepted), one ray per row, in the torus frame (centre at the origin, axis y); the
-//! direction need not be unit length.
-//! Output: CSV with the header [`OUTPUT_HEADER`]. `oracle` is for the ray t ≥ 0; `t_hit`
-//! is the nearest t ≥ 0 from the timed exact intersection, in units of the given
-//! direction, empty when there is none; each cull column is `1` (keep) or `0` (reject).
+//! direction need not be unit length. After the six, optional columns ([`OPTIONAL_COLUMNS`]),
+//! any subset in this order, named in the header:
+//! - `t_min`, `t_max`: the ray's range (default `[0, +∞)`; `inf` is allowed for `t_max`),
+//!   with `0 ≤ t_min ≤ t_max`, in the row's precision;
+//! - `on_surface`: `0` or `1` (default 0). `1`: the origin is a surface point a renderer
+//!   got from a hit, as printed in f32 or f64 ([`torus_cull::Ray::from_surface`]); it must
+//!   lie within [`torus_cull::ON_SURFACE_REL`]·(R + r) of the surface. Its own crossing
+//!   is excluded, by the library and by the oracle alike (the oracle's rule:
+//!   [`crate::oracle::classify_from_surface`], docs/math.md §9).
+//!
+//! Output: CSV with the header [`OUTPUT_HEADER`]. `oracle` is for the ray over its range;
+//! `t_hit` is the nearest t in range from the timed exact intersection, in units of the
+//! given direction, empty when there is none; each cull column is `1` (keep) or `0`
+//! (reject). The oracle's `hit` means the ray comes within the tube in its range (margin
+//! < 0), so a literal ray that starts inside the tube is a hit even where its range ends
+//! before it leaves it (no `t_hit`); an `on_surface` ray into the tube is a hit where it
+//! leaves the tube in range.
 //!
 //! **Precision.** [`Precision::F64`] (the default of `torus-cull eval`) parses every value
 //! as f64 and runs the oracle and the exact intersection on the f64 ray ([`torus_cull::DRay`]):
@@ -17,17 +30,24 @@
 //! 1 where f32 could not prove the answer and the f64 solver gave it.
 //!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
-//! non-finite direction) ends it with an error naming the input and the line number, and
-//! the command exits non-zero: no answer is ever silently wrong or skipped.
+//! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
+//! an `on_surface` other than 0 or 1, an `on_surface` origin off the surface) ends it with
+//! an error naming the input, the line number and the column, and the command exits
+//! non-zero: no answer is ever silently wrong or skipped.
 
-use crate::oracle::{OracleClass, OracleLabel, Query, classify};
+use crate::oracle::{OracleClass, OracleLabel, Query, classify_from_surface};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
-use torus_cull::{CullKind, DRay, LocalLine, Ray, Torus, TorusError, intersect, intersect_f32};
+use torus_cull::{
+    CullKind, DRay, LocalLine, ON_SURFACE_REL, Ray, Torus, TorusError, intersect, intersect_f32,
+};
 
-/// The input header.
+/// The input header's six required columns.
 pub const INPUT_HEADER: &str = "ox,oy,oz,dx,dy,dz";
+
+/// The optional columns after the six: any subset, in this order, named in the header.
+pub const OPTIONAL_COLUMNS: [&str; 3] = ["t_min", "t_max", "on_surface"];
 
 /// The output header.
 pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
@@ -111,9 +131,9 @@ pub fn eval_csv(
         message,
     };
     let mut lines = input.lines();
-    check_header(lines.next().transpose()?, &row_error)?;
+    let columns = check_header(lines.next().transpose()?, &row_error)?;
     let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
-        let (lines, answers) = read_for_gpu(&torus, lines, &row_error)?;
+        let (lines, answers) = read_for_gpu(&torus, &columns, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
             answers.into_iter(),
@@ -140,7 +160,7 @@ pub fn eval_csv(
         if line.trim().is_empty() {
             continue;
         }
-        let row = evaluate(&torus, precision, &line, &mut gpu_answers)
+        let row = evaluate(&torus, &columns, precision, &line, &mut gpu_answers)
             .map_err(|m| row_error(line_no, m))?;
         write_row(&mut output, &torus, index, &row)?;
         index += 1;
@@ -149,32 +169,72 @@ pub fn eval_csv(
     Ok(index)
 }
 
-/// The header row, without a spreadsheet's byte-order mark, must be [`INPUT_HEADER`].
+/// The header row, without a spreadsheet's byte-order mark: [`INPUT_HEADER`], then any
+/// of [`OPTIONAL_COLUMNS`] in their order; the optional columns it names.
 fn check_header(
     header: Option<String>,
     row_error: &impl Fn(usize, String) -> EvalError,
-) -> Result<(), EvalError> {
+) -> Result<Columns, EvalError> {
+    let expected = || {
+        format!(
+            "'{INPUT_HEADER}', then any of {} in this order",
+            OPTIONAL_COLUMNS.join(",")
+        )
+    };
     let Some(header) = header else {
         return Err(row_error(
             1,
-            format!("empty input, expected the header '{INPUT_HEADER}'"),
+            format!("empty input, expected the header {}", expected()),
         ));
     };
     // Spreadsheets often save CSV with a UTF-8 byte-order mark: it is not data.
     let bare = header.strip_prefix('\u{feff}').unwrap_or(&header);
-    if bare.trim().replace(' ', "") != INPUT_HEADER {
-        return Err(row_error(
-            1,
-            format!("header is '{header}', expected '{INPUT_HEADER}'"),
-        ));
+    let bare = bare.trim().replace(' ', "");
+    let wrong = || row_error(1, format!("header is '{header}', expected {}", expected()));
+    let Some(rest) = bare.strip_prefix(INPUT_HEADER) else {
+        return Err(wrong());
+    };
+    let mut columns = Columns::default();
+    if !rest.is_empty() {
+        let Some(rest) = rest.strip_prefix(',') else {
+            return Err(wrong());
+        };
+        // Each name must come after the one before it in OPTIONAL_COLUMNS.
+        let mut next = 0;
+        for name in rest.split(',') {
+            let Some(k) = OPTIONAL_COLUMNS[next..].iter().position(|c| *c == name) else {
+                return Err(wrong());
+            };
+            next += k + 1;
+            columns.present[next - 1] = true;
+        }
     }
-    Ok(())
+    Ok(columns)
+}
+
+/// Which of [`OPTIONAL_COLUMNS`] the input has.
+#[derive(Debug, Clone, Copy, Default)]
+struct Columns {
+    present: [bool; 3],
+}
+
+impl Columns {
+    /// The names of a row's columns, in order.
+    fn names(&self) -> Vec<&'static str> {
+        let six = ["ox", "oy", "oz", "dx", "dy", "dz"];
+        let extra = OPTIONAL_COLUMNS
+            .iter()
+            .zip(self.present)
+            .filter_map(|(name, p)| p.then_some(*name));
+        six.into_iter().chain(extra).collect()
+    }
 }
 
 /// The GPU answers every row at once: all rows are read first (a malformed row still
 /// stops the run with its line number, before the adapter is opened).
 fn read_for_gpu(
     torus: &Torus,
+    columns: &Columns,
     lines: impl Iterator<Item = std::io::Result<String>>,
     row_error: &impl Fn(usize, String) -> EvalError,
 ) -> Result<(Vec<std::io::Result<String>>, Vec<torus_cull::F32Hit>), EvalError> {
@@ -183,7 +243,7 @@ fn read_for_gpu(
     for (i, line) in lines.iter().enumerate() {
         let Ok(line) = line else { break };
         if !line.trim().is_empty() {
-            rays.push(parse_ray(line).map_err(|m| row_error(i + 2, m))?);
+            rays.push(parse_ray(torus, columns, line).map_err(|m| row_error(i + 2, m))?);
         }
     }
     let answers = gpu_answers(torus, &rays)?;
@@ -202,20 +262,21 @@ struct Row {
 /// Parses one row in the given precision and answers it.
 fn evaluate(
     torus: &Torus,
+    columns: &Columns,
     precision: Precision,
     line: &str,
     gpu_answers: &mut impl Iterator<Item = torus_cull::F32Hit>,
 ) -> Result<Row, String> {
     if precision == Precision::F64 {
-        let ray = parse_dray(line)?;
+        let ray = parse_dray(torus, columns, line)?;
         return Ok(Row {
-            label: Query::dray(torus, &ray).classify(),
+            label: oracle(torus, &ray),
             t_hit: intersect(torus, &ray).map(|hit| hit.t.to_string()),
             escalated: None,
             line: torus.dline_to_local(&ray),
         });
     }
-    let ray = parse_ray(line)?;
+    let ray = parse_ray(torus, columns, line)?;
     let (t, escalated) = match precision {
         Precision::CertifiedF32 => {
             let answer = intersect_f32(torus, &ray);
@@ -228,12 +289,23 @@ fn evaluate(
         _ => (intersect(torus, &ray).map(|hit| hit.t), None),
     };
     Ok(Row {
-        label: classify(torus, &ray),
+        label: oracle(torus, &DRay::from(ray)),
         t_hit: t.map(|t| t.to_string()),
         escalated,
         // The culls' own input: far origins go to the foot point, as in a renderer.
         line: torus.line_to_local(&ray),
     })
+}
+
+/// The oracle's label of a ray over its range (an f32 ray widened exactly): the literal
+/// ray's, or by the on-surface rule ([`classify_from_surface`]).
+fn oracle(torus: &Torus, ray: &DRay) -> OracleLabel {
+    let query = Query::dray(torus, ray);
+    if ray.starts_on_surface() {
+        classify_from_surface(&query)
+    } else {
+        query.classify()
+    }
 }
 
 /// `index,oracle,margin,t_hit[,escalated],<one 0/1 per cull>`.
@@ -281,33 +353,138 @@ fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<torus_cull::F32Hit>,
     ))
 }
 
-/// The six numbers of a row in the float type `T` (each finite), and the fields as typed
-/// (for messages).
-fn parse_row<T: std::str::FromStr + Copy + Default>(
-    line: &str,
-    is_finite: fn(T) -> bool,
-) -> Result<([T; 6], Vec<&str>), String> {
-    const NAMES: [&str; 6] = ["ox", "oy", "oz", "dx", "dy", "dz"];
-    let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-    if fields.len() != NAMES.len() {
-        return Err(format!(
-            "expected 6 columns ({INPUT_HEADER}), found {}",
-            fields.len()
-        ));
-    }
-    let mut v = [T::default(); 6];
-    for ((slot, field), name) in v.iter_mut().zip(&fields).zip(NAMES) {
-        *slot = field
-            .parse::<T>()
-            .map_err(|_| format!("column {name}: '{field}' is not a number"))?;
-        if !is_finite(*slot) {
-            return Err(format!("column {name}: {field} is not finite"));
-        }
-    }
-    Ok((v, fields))
+/// A row's float: f32 or f64.
+trait Float: std::str::FromStr + Copy + PartialOrd + fmt::Display {
+    const ZERO: Self;
+    const INFINITY: Self;
+    fn finite(self) -> bool;
 }
 
-/// How a refused direction is reported: the error, and the direction as typed.
+impl Float for f32 {
+    const ZERO: f32 = 0.0;
+    const INFINITY: f32 = f32::INFINITY;
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl Float for f64 {
+    const ZERO: f64 = 0.0;
+    const INFINITY: f64 = f64::INFINITY;
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+}
+
+/// One row's values in the float `T`.
+struct Fields<'a, T> {
+    /// ox, oy, oz, dx, dy, dz (each finite).
+    six: [T; 6],
+    /// The range: `0 ≤ t_min ≤ t_max`, t_min finite.
+    t_min: T,
+    t_max: T,
+    on_surface: bool,
+    /// The fields as typed (for messages).
+    typed: Vec<&'a str>,
+}
+
+/// A row's values in the float type `T`, each checked with an error naming its column.
+fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a, T>, String> {
+    let names = columns.names();
+    let typed: Vec<&str> = line.split(',').map(str::trim).collect();
+    if typed.len() != names.len() {
+        return Err(format!(
+            "expected {} columns ({}), found {}",
+            names.len(),
+            names.join(","),
+            typed.len()
+        ));
+    }
+    let mut fields = Fields {
+        six: [T::ZERO; 6],
+        t_min: T::ZERO,
+        t_max: T::INFINITY,
+        on_surface: false,
+        typed: Vec::new(),
+    };
+    let number = |name: &str, field: &str| {
+        field
+            .parse::<T>()
+            .map_err(|_| format!("column {name}: '{field}' is not a number"))
+    };
+    for (k, (name, field)) in names.iter().zip(&typed).enumerate() {
+        match *name {
+            "t_min" => {
+                let v = number(name, field)?;
+                if !v.finite() {
+                    return Err(format!(
+                        "column t_min: {field} is not finite (allowed: 0 ≤ t_min ≤ t_max)"
+                    ));
+                }
+                if v < T::ZERO {
+                    return Err(format!(
+                        "column t_min: {field} is negative (allowed: 0 ≤ t_min ≤ t_max)"
+                    ));
+                }
+                fields.t_min = v;
+            }
+            "t_max" => {
+                let v = number(name, field)?;
+                // NaN compares with nothing: `partial_cmp` is None for it.
+                if !matches!(
+                    v.partial_cmp(&T::ZERO),
+                    Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)
+                ) {
+                    return Err(format!(
+                        "column t_max: {field} is not a number ≥ 0 (allowed: t_min ≤ t_max ≤ inf)"
+                    ));
+                }
+                fields.t_max = v;
+            }
+            "on_surface" => {
+                fields.on_surface = match *field {
+                    "0" => false,
+                    "1" => true,
+                    _ => return Err(format!("column on_surface: '{field}' is not 0 or 1")),
+                };
+            }
+            _ => {
+                let v = number(name, field)?;
+                if !v.finite() {
+                    return Err(format!("column {name}: {field} is not finite"));
+                }
+                fields.six[k] = v;
+            }
+        }
+    }
+    if fields.t_min > fields.t_max {
+        return Err(format!(
+            "columns t_min, t_max: t_min = {} > t_max = {} (allowed: 0 ≤ t_min ≤ t_max)",
+            fields.t_min, fields.t_max
+        ));
+    }
+    fields.typed = typed;
+    Ok(fields)
+}
+
+/// An `on_surface` row's origin must be a surface point: within
+/// [`ON_SURFACE_REL`]·(R + r) of the surface (docs/math.md §9).
+fn check_on_surface(torus: &Torus, origin: DVec3) -> Result<(), String> {
+    let (major, minor) = (torus.major_radius_f64(), torus.minor_radius_f64());
+    let rho = origin.x.hypot(origin.z);
+    let off = ((rho - major).hypot(origin.y) - minor).abs();
+    let bound = ON_SURFACE_REL * (major + minor);
+    if off > bound {
+        return Err(format!(
+            "column on_surface: 1, but the origin is {off:.3e} from the surface (allowed: ≤ \
+             {ON_SURFACE_REL:e}·(R + r) = {bound:e}, docs/math.md §9): not a surface point; \
+             give 0 for a literal ray"
+        ));
+    }
+    Ok(())
+}
+
+/// How a refused ray is reported: the error, and the direction as typed.
 fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
     format!(
         "{e} (as typed: dx,dy,dz = {},{},{})",
@@ -315,16 +492,30 @@ fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
     )
 }
 
-fn parse_ray(line: &str) -> Result<Ray, String> {
-    let (v, fields) = parse_row::<f32>(line, f32::is_finite)?;
-    Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]))
-        .map_err(|e| as_typed(e, &fields))
+fn parse_ray(torus: &Torus, columns: &Columns, line: &str) -> Result<Ray, String> {
+    let f = parse_row::<f32>(columns, line)?;
+    let v = f.six;
+    let (o, d) = (Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]));
+    if f.on_surface {
+        check_on_surface(torus, o.as_dvec3())?;
+        Ray::from_surface_with_range(o, d, f.t_min, f.t_max)
+    } else {
+        Ray::with_range(o, d, f.t_min, f.t_max)
+    }
+    .map_err(|e| as_typed(e, &f.typed))
 }
 
-fn parse_dray(line: &str) -> Result<DRay, String> {
-    let (v, fields) = parse_row::<f64>(line, f64::is_finite)?;
-    DRay::new(DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]))
-        .map_err(|e| as_typed(e, &fields))
+fn parse_dray(torus: &Torus, columns: &Columns, line: &str) -> Result<DRay, String> {
+    let f = parse_row::<f64>(columns, line)?;
+    let v = f.six;
+    let (o, d) = (DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]));
+    if f.on_surface {
+        check_on_surface(torus, o)?;
+        DRay::from_surface_with_range(o, d, f.t_min, f.t_max)
+    } else {
+        DRay::with_range(o, d, f.t_min, f.t_max)
+    }
+    .map_err(|e| as_typed(e, &f.typed))
 }
 
 #[cfg(test)]

@@ -380,3 +380,253 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--exact f32 takes f32 rays"));
 }
+
+/// `eval` on `csv` (written to a file) with extra arguments; stdout as rows of fields.
+fn eval_rows(dir: &Path, csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
+    let input = dir.join("rays.csv");
+    std::fs::write(&input, csv).unwrap();
+    let mut all = vec!["eval", "--rays", input.to_str().unwrap()];
+    all.extend_from_slice(args);
+    let out = run(&all);
+    if !out.status.success() {
+        return Err(String::from_utf8_lossy(&out.stderr).into_owned());
+    }
+    let text = String::from_utf8(out.stdout).unwrap();
+    Ok(text
+        .lines()
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect())
+}
+
+/// The three `--exact` modes on the CPU, and `--precision f32` with the f64 solver.
+const CPU_MODES: [&[&str]; 3] = [
+    &["--exact", "f64"],
+    &["--exact", "f32"],
+    &["--precision", "f32"],
+];
+
+#[test]
+fn optional_range_and_on_surface_columns_in_every_cpu_mode() {
+    let dir = tempfile::tempdir().unwrap();
+    // R = 4, r = 1. Each row: the oracle's class and t_hit (empty: none).
+    let rows: [(&str, &str, Option<f32>); 9] = [
+        // From the inner equator across the hole: the far wall at t = 6 …
+        ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
+        // … beyond a light at t = 5.
+        ("3,0,0,-1,0,0,0,5,1", "miss", None),
+        // From the top of the tube into it: it leaves at the bottom, t = 2 …
+        ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
+        // … not before t = 1.5.
+        ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
+        // From the top, up: nothing.
+        ("4,1,0,0,1,0,0,inf,1", "miss", None),
+        // Literal rays with a range: the top of the tube at t = 9 …
+        ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
+        ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
+        // … from inside the tube (t_min = 9.5): the oracle's hit, the exit at t = 11.
+        ("4,10,0,0,-1,0,9.5,20,0", "hit", Some(11.0)),
+        // t_min = t_max = 9: the one point of the top.
+        ("4,10,0,0,-1,0,8,10,0", "hit", Some(9.0)),
+    ];
+    let csv = std::iter::once("ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface")
+        .chain(rows.iter().map(|r| r.0))
+        .collect::<Vec<_>>()
+        .join("\n");
+    for mode in CPU_MODES {
+        let mut args = vec!["--major", "4", "--minor", "1"];
+        args.extend_from_slice(mode);
+        let out = eval_rows(dir.path(), &csv, &args).unwrap();
+        let certified = mode == ["--exact", "f32"];
+        assert_eq!(out[0][4], if certified { "escalated" } else { "none" });
+        for ((row, class, t), got) in rows.iter().zip(&out[1..]) {
+            assert_eq!(got[1], *class, "{mode:?} {row}");
+            match t {
+                None => assert_eq!(got[3], "", "{mode:?} {row}"),
+                Some(t) => {
+                    let g: f32 = got[3].parse().unwrap();
+                    assert!((g - t).abs() < 1e-4, "{mode:?} {row}: t_hit {g}");
+                }
+            }
+            if certified && row.ends_with(",1") {
+                assert_eq!(got[4], "1", "an on-surface row escalates: {row}");
+            }
+        }
+    }
+    // Any subset in order; the six-column header as before.
+    for (header, row, t) in [
+        ("ox,oy,oz,dx,dy,dz", "4,10,0,0,-1,0", "9"),
+        ("ox,oy,oz,dx,dy,dz,t_max", "4,10,0,0,-1,0,8.5", ""),
+        ("ox,oy,oz,dx,dy,dz,t_min", "4,10,0,0,-1,0,9.5", "11"),
+        ("ox,oy,oz,dx,dy,dz,on_surface", "3,0,0,-1,0,0,1", "6"),
+        ("ox,oy,oz,dx,dy,dz,t_max,on_surface", "3,0,0,-1,0,0,5,1", ""),
+        (
+            "ox, oy, oz, dx, dy, dz, t_min, on_surface",
+            "3,0,0,-1,0,0,6.5,1",
+            "8", // inside the far wall from t = 6: it leaves at t = 8
+        ),
+    ] {
+        let out = eval_rows(
+            dir.path(),
+            &format!("{header}\n{row}\n"),
+            &["--major", "4", "--minor", "1"],
+        )
+        .unwrap();
+        let got = out[1][3]
+            .parse::<f64>()
+            .map_or(String::new(), |g| format!("{}", g.round()));
+        assert_eq!(got, t, "{header}: {row}");
+    }
+}
+
+#[test]
+fn bad_optional_columns_name_the_row_and_the_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let header = "ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface\n";
+    let good = "4,10,0,0,-1,0,0,inf,0\n";
+    for (row, expect) in [
+        (
+            "4,10,0,0,-1,0,2,1,0\n",
+            "columns t_min, t_max: t_min = 2 > t_max = 1",
+        ),
+        ("4,10,0,0,-1,0,-1,5,0\n", "column t_min: -1 is negative"),
+        ("4,10,0,0,-1,0,NaN,5,0\n", "column t_min: NaN is not finite"),
+        (
+            "4,10,0,0,-1,0,inf,inf,0\n",
+            "column t_min: inf is not finite",
+        ),
+        (
+            "4,10,0,0,-1,0,0,NaN,0\n",
+            "column t_max: NaN is not a number ≥ 0",
+        ),
+        (
+            "4,10,0,0,-1,0,0,-3,0\n",
+            "column t_max: -3 is not a number ≥ 0",
+        ),
+        ("4,10,0,0,-1,0,0,x,0\n", "column t_max: 'x' is not a number"),
+        (
+            "4,10,0,0,-1,0,0,inf,2\n",
+            "column on_surface: '2' is not 0 or 1",
+        ),
+        (
+            "4,10,0,0,-1,0,0,inf,yes\n",
+            "column on_surface: 'yes' is not 0 or 1",
+        ),
+        ("4,10,0,0,-1,0,0,inf\n", "expected 9 columns"),
+        // An on-surface origin 2·10⁻³ off the surface (bound 10⁻⁴·(R + r) = 5·10⁻⁴).
+        (
+            "3.002,0,0,-1,0,0,0,inf,1\n",
+            "column on_surface: 1, but the origin is 2.000e-3 from the surface",
+        ),
+        ("4,10,0,0,-1,0,0,inf,1\n", "not a surface point"),
+    ] {
+        for mode in CPU_MODES {
+            let mut args = vec!["--major", "4", "--minor", "1"];
+            args.extend_from_slice(mode);
+            let err = eval_rows(dir.path(), &format!("{header}{good}{row}"), &args).unwrap_err();
+            assert!(err.contains("rays.csv:3:"), "{mode:?} {row:?}: {err}");
+            assert!(err.contains(expect), "{mode:?} {row:?}: {err}");
+        }
+    }
+    // An origin within the bound is a surface point (3 + 4·10⁻⁴).
+    let near = format!("{header}3.0004,0,0,-1,0,0,0,inf,1\n");
+    assert!(eval_rows(dir.path(), &near, &["--major", "4", "--minor", "1"]).is_ok());
+    // Headers: out of order, unknown, repeated.
+    for header in [
+        "ox,oy,oz,dx,dy,dz,t_max,t_min",
+        "ox,oy,oz,dx,dy,dz,t_far",
+        "ox,oy,oz,dx,dy,dz,t_min,t_min",
+        "ox,oy,oz,dx,dy,dz,",
+    ] {
+        let err = eval_rows(
+            dir.path(),
+            &format!("{header}\n4,10,0,0,-1,0,1,1\n"),
+            &["--major", "4", "--minor", "1"],
+        )
+        .unwrap_err();
+        assert!(
+            err.contains("rays.csv:1: header")
+                && err.contains("t_min,t_max,on_surface in this order"),
+            "{header}: {err}"
+        );
+    }
+}
+
+/// Spawned secondary rays as a renderer prints them (surface points in f32 and in f64,
+/// bounces, grazing rays, rays into the tube and across the hole or the tube, with and
+/// without a light), through every CPU mode: the library's answer and the oracle's label
+/// by the on-surface rule agree on every decided row.
+#[test]
+fn on_surface_rows_agree_with_the_oracle_in_every_cpu_mode() {
+    use glam::DVec3;
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(0xE7A1_0026);
+    let dir = tempfile::tempdir().unwrap();
+    let (mut decided, mut hits, mut ambiguous) = (0usize, 0usize, 0usize);
+    for (major, minor) in [(1.0f64, 0.99), (4.0, 1.0), (1000.0, 10.0), (1e-3, 1e-5)] {
+        let point = |rng: &mut rand_pcg::Pcg64| {
+            let (phi, theta) = (
+                rng.random_range(0.0..std::f64::consts::TAU),
+                rng.random_range(0.0..std::f64::consts::TAU),
+            );
+            let radial = DVec3::new(phi.cos(), 0.0, phi.sin());
+            let n = radial * theta.cos() + DVec3::Y * theta.sin();
+            (radial * major + n * minor, n)
+        };
+        let mut csv = String::from("ox,oy,oz,dx,dy,dz,t_max,on_surface\n");
+        for k in 0..600 {
+            let (p, n) = point(&mut rng);
+            let t1 = n.any_orthonormal_vector();
+            let t2 = n.cross(t1);
+            let a = rng.random_range(0.0..std::f64::consts::TAU);
+            let d = match k % 4 {
+                0 => n + (t1 * a.cos() + t2 * a.sin()) * rng.random_range(0.0..2.0),
+                1 => {
+                    let e = 10f64.powf(rng.random_range(-4.0..-1.0));
+                    (t1 * a.cos() + t2 * a.sin()) * e.cos() + n * e.sin()
+                }
+                2 => -n + (t1 * a.cos() + t2 * a.sin()) * rng.random_range(0.0..2.0),
+                _ => point(&mut rng).0 - p,
+            };
+            // Half the rows with a light somewhere along the way.
+            let t_max = if k % 8 < 4 {
+                f64::INFINITY
+            } else {
+                rng.random_range(0.1..3.0)
+            };
+            if k % 2 == 0 {
+                let (p, d) = (p.as_vec3(), d.as_vec3());
+                csv += &format!(
+                    "{},{},{},{},{},{},{t_max},1\n",
+                    p.x, p.y, p.z, d.x, d.y, d.z
+                );
+            } else {
+                csv += &format!(
+                    "{},{},{},{},{},{},{t_max},1\n",
+                    p.x, p.y, p.z, d.x, d.y, d.z
+                );
+            }
+        }
+        let (r_major, r_minor) = (major.to_string(), minor.to_string());
+        for mode in CPU_MODES {
+            let mut args = vec!["--major", &r_major, "--minor", &r_minor];
+            args.extend_from_slice(mode);
+            let out = eval_rows(dir.path(), &csv, &args).unwrap();
+            for (row, input) in out[1..].iter().zip(csv.lines().skip(1)) {
+                match row[1].as_str() {
+                    "ambiguous" => ambiguous += 1,
+                    class => {
+                        decided += 1;
+                        hits += usize::from(class == "hit");
+                        assert_eq!(
+                            class == "hit",
+                            !row[3].is_empty(),
+                            "R={major} r={minor} {mode:?}: {input} -> {row:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    println!("on-surface rows: {decided} decided ({hits} hits), {ambiguous} ambiguous");
+    assert!(decided > 5_000 && hits > 1_000 && ambiguous * 10 < decided);
+}

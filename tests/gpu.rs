@@ -509,3 +509,61 @@ fn secondary_rays_from_hits_are_finished_on_the_host() {
         }
     }
 }
+
+/// `eval --exact gpu` takes the optional columns t_min, t_max, on_surface as the CPU
+/// modes do (tests/eval_cli.rs): the same labels and answers, every on-surface row
+/// escalated to the host, and a bad value named by row and column before the adapter runs.
+#[test]
+fn eval_exact_gpu_takes_range_and_on_surface_columns() {
+    let Some(_) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    let rows: [(&str, &str, Option<f64>); 7] = [
+        ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
+        ("3,0,0,-1,0,0,0,5,1", "miss", None),
+        ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
+        ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
+        ("4,1,0,0,1,0,0,inf,1", "miss", None),
+        ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
+        ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
+    ];
+    let csv = std::iter::once("ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface")
+        .chain(rows.iter().map(|r| r.0))
+        .collect::<Vec<_>>()
+        .join("\n");
+    std::fs::write(&input, &csv).unwrap();
+    let args = [
+        "eval",
+        "--major",
+        "4",
+        "--minor",
+        "1",
+        "--rays",
+        input.to_str().unwrap(),
+        "--exact",
+        "gpu",
+    ];
+    let out = torus_cull(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    for ((row, class, t), line) in rows.iter().zip(text.lines().skip(1)) {
+        let f: Vec<&str> = line.split(',').collect();
+        assert_eq!(f[1], *class, "{row}");
+        assert_eq!(f[3].parse::<f64>().ok().map(|g| g.round()), *t, "{row}");
+        if row.ends_with(",1") {
+            assert_eq!(f[4], "1", "an on-surface row escalates: {row}");
+        }
+    }
+    std::fs::write(&input, format!("{csv}\n4,10,0,0,-1,0,2,1,0\n")).unwrap();
+    let out = torus_cull(&args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        err.contains("rays.csv:9:") && err.contains("columns t_min, t_max"),
+        "{err}"
+    );
+}

@@ -6,12 +6,20 @@
 //! R from 10⁻³ to 10³ on random poses: cosine-weighted bounces, grazing directions
 //! 10⁻⁴ … 10⁻¹ rad above the tangent plane, refraction into the tube, and rays aimed at
 //! another point of the torus (across the hole or the tube, where re-hits are common).
+//! The second test runs what a renderer needs around them (the hit's point and face, the
+//! f32 path's culled and occlusion forms, the wavefronts on `DRay`s and their any-hit
+//! passes, `RayCast` trait objects) on the same families, with shadow rays cut just
+//! before and just after the next crossing, and literal rays from the same points with
+//! `t_min = 10⁻⁴·r`.
 
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
-use torus_cull::{DRay, Ray, Torus, intersect, intersect_f32, occluded};
+use torus_cull::{
+    CullKind, DRay, Ray, RayCast, SkalaCull, Torus, intersect, intersect_f32, intersect_f32_culled,
+    occluded, occluded_f32, occluded_f32_culled,
+};
 use torus_cull_lab::oracle::{AMBIGUITY_REL, OracleClass, Query, reference_roots};
 use torus_cull_lab::workload::unit_vector;
 
@@ -322,4 +330,376 @@ fn a_literal_ray_from_a_rounded_surface_point_can_hit_its_origin() {
     let spawned = Ray::from_surface(inside, Vec3::NEG_X).unwrap();
     let across = intersect(&torus, &spawned).expect("the far side of the hole");
     assert!((across.t - 6.000_001).abs() < 1e-5, "{across:?}");
+}
+
+/// One spawned secondary ray with the oracle's answer: the f64 ray and its expected next
+/// crossing, the f32 one and its own (each `None` where not decidable), and the tolerances
+/// on `t`.
+struct Case {
+    family: Family,
+    wide: DRay,
+    want: Option<Option<f64>>,
+    tol: f64,
+    narrow: Option<(Ray, Option<Option<f64>>, f64)>,
+}
+
+/// `count` secondary rays of `family` spawned from hits on `torus`, labelled.
+fn cases(rng: &mut Pcg64, torus: &Torus, family: Family, count: usize) -> Vec<Case> {
+    let size = torus.outer_radius() as f64;
+    let mut out = Vec::new();
+    for _ in 0..count {
+        let (p, n) = surface_point(rng, torus);
+        let from = p + (n * 2.0 + unit_vector(rng)) * size;
+        let primary = DRay::new(from, p - from).unwrap();
+        let Some(hit) = intersect(torus, &primary) else {
+            continue;
+        };
+        let d = direction(rng, family, torus, primary.at(hit.t), hit.normal);
+        let Ok(wide) = torus.spawn(&primary, hit.t, d) else {
+            continue;
+        };
+        let want = expected(torus, &wide);
+        let len = d.length();
+        let bound = |ray: &DRay, want: Option<Option<f64>>| {
+            want.flatten().map_or(0.0, |t| shift_bound(torus, ray, t))
+        };
+        let tol = 1e-9 * size / len + bound(&wide, want);
+        let primary32 = Ray::new(from.as_vec3(), (p - from).as_vec3()).unwrap();
+        let narrow = intersect(torus, &primary32).and_then(|hit32| {
+            let ray = torus.spawn(&primary32, hit32.t, d.as_vec3()).ok()?;
+            let want32 = expected(torus, &DRay::from(ray));
+            let tol32 = 1e-9 * size / len
+                + want32.flatten().unwrap_or(0.0) * 1.2e-7
+                + bound(&DRay::from(ray), want32);
+            Some((ray, want32, tol32))
+        });
+        out.push(Case {
+            family,
+            wide,
+            want,
+            tol,
+            narrow,
+        });
+    }
+    out
+}
+
+/// Shadow rays from a labelled secondary ray: cut to end just before its next crossing
+/// (never occluded: a hit there is a self-hit) and just after it (occluded: a miss there
+/// is a missed re-hit), where the gap `t·10⁻³` clears the tolerance; the whole ray when
+/// the oracle sees no crossing. Each with the answer it must get.
+fn shadows<P: torus_cull::Precision>(
+    ray: &torus_cull::Ray<P>,
+    want: Option<f64>,
+    tol: f64,
+) -> Vec<(torus_cull::Ray<P>, bool)>
+where
+    P::Float: From<f32>,
+{
+    use torus_cull::Precision;
+    let cut = |t: f64| ray.with_t_max(<P as Precision>::Float::from(t as f32));
+    match want {
+        None => vec![(*ray, false)],
+        Some(t) if t * 1e-3 > 4.0 * tol => vec![(cut(t * 0.999), false), (cut(t * 1.001), true)],
+        Some(_) => Vec::new(),
+    }
+}
+
+#[test]
+fn what_a_renderer_needs_around_secondary_rays_agrees_with_the_oracle() {
+    let mut rng = Pcg64::seed_from_u64(0x5EC0_0126);
+    let dispatch = Dispatch::best();
+    let mut wavefront = Wavefront::new();
+    let (mut tally, mut tally32) = (Tally::default(), Tally::default());
+    let (mut shadow_rays, mut shadow_wrong) = (0usize, Vec::new());
+    let (mut faces, mut back_faces, mut points) = (0usize, 0usize, 0usize);
+    let (mut literal, mut literal_escalated, mut literal_wrong) = (0usize, 0usize, Vec::new());
+    let (mut literal_wide, mut literal_wide_escalated) = (0usize, 0usize);
+    for &nu in &[1.01f32, 1.1, 2.0, 4.0, 16.0, 100.0, 1000.0] {
+        for &major in &[1e-3f32, 1.0, 1e3] {
+            let torus = random_torus(&mut rng, major, nu);
+            let size = torus.outer_radius() as f64;
+            let scene: Vec<Box<dyn RayCast<DRay> + '_>> =
+                vec![Box::new(torus), Box::new(torus.with_cull(CullKind::Skala))];
+            for &family in &FAMILIES {
+                let cases = cases(&mut rng, &torus, family, 150);
+                let what = |c: &Case| format!("{:?} nu={nu} R={major} {:?}", c.family, c.wide);
+                // Scalar f64: the hit's point and face, RayCast objects, the oracle.
+                for c in &cases {
+                    let Some(want) = c.want else { continue };
+                    let hit = intersect(&torus, &c.wide);
+                    tally.checked += 1;
+                    tally.check(&what(c), want, hit.map(|h| h.t), c.tol);
+                    for object in &scene {
+                        assert_eq!(object.cast_ray_and_get_normal(&c.wide), hit, "{}", what(c));
+                        assert_eq!(object.intersects_ray(&c.wide), hit.is_some());
+                    }
+                    let Some(hit) = hit else { continue };
+                    let exact = c.wide.at(hit.t);
+                    assert!(
+                        (hit.point - exact).length() <= 1e-15 * (exact.length() + size),
+                        "point {} vs {exact}: {}",
+                        hit.point,
+                        what(c)
+                    );
+                    points += 1;
+                    // The face against the surface's normal at the oracle's crossing.
+                    let (_, _, n) = near_surface(&torus, c.wide.at(want.unwrap_or(hit.t)));
+                    let cos = n.dot(c.wide.dir().normalize());
+                    if cos.abs() > 1e-3 {
+                        faces += 1;
+                        back_faces += usize::from(cos > 0.0);
+                        assert_eq!(hit.front_face, cos < 0.0, "face: {}", what(c));
+                    }
+                }
+                // Wavefronts on DRays (f64 and f32 lanes): the scalar answer, each ray
+                // named as finished in f64.
+                let wide: Vec<DRay> = cases.iter().map(|c| c.wide).collect();
+                let scalar: Vec<_> = wide.iter().map(|r| intersect(&torus, r)).collect();
+                let mut hits = Vec::new();
+                let stats = wavefront.intersect(
+                    &dispatch,
+                    BatchCull::Discriminant,
+                    &torus,
+                    &wide,
+                    &mut hits,
+                );
+                assert_eq!(
+                    hits, scalar,
+                    "f64 wavefront on DRays, {family:?} nu={nu} R={major}"
+                );
+                assert_eq!(wavefront.finished_in_f64().len(), stats.scalar_fallbacks);
+                assert_eq!(
+                    stats.scalar_fallbacks, stats.kept,
+                    "on-surface rays finish in f64"
+                );
+                let stats =
+                    wavefront.intersect_f32(&dispatch, BatchCull::Skala, &torus, &wide, &mut hits);
+                assert_eq!(
+                    hits, scalar,
+                    "f32 wavefront on DRays, {family:?} nu={nu} R={major}"
+                );
+                assert_eq!(wavefront.finished_in_f64().len(), stats.escalated);
+                // Shadow rays, f64: scalar, culled, wavefront any-hit (f64 and f32 lanes).
+                let mut shadow64 = Vec::new();
+                for c in &cases {
+                    if let Some(want) = c.want {
+                        shadow64.extend(shadows(&c.wide, want, c.tol));
+                    }
+                }
+                let mut blocked = Vec::new();
+                wavefront.occluded(
+                    &dispatch,
+                    BatchCull::Skala,
+                    &torus,
+                    &shadow64.iter().map(|s| s.0).collect::<Vec<_>>(),
+                    &mut blocked,
+                );
+                let mut blocked32 = Vec::new();
+                wavefront.occluded_f32(
+                    &dispatch,
+                    BatchCull::Cychosz,
+                    &torus,
+                    &shadow64.iter().map(|s| s.0).collect::<Vec<_>>(),
+                    &mut blocked32,
+                );
+                for (k, (ray, must)) in shadow64.iter().enumerate() {
+                    shadow_rays += 1;
+                    let answers = [
+                        occluded(&torus, ray),
+                        scene[1].intersects_ray(ray),
+                        blocked[k],
+                        blocked32[k],
+                    ];
+                    if answers.iter().any(|a| a != must) {
+                        shadow_wrong.push(format!("f64 {answers:?}, want {must}: {ray:?}"));
+                    }
+                }
+                // f32: the spawned ray through intersect_f32(_culled), occluded_f32(_culled)
+                // and the f32 wavefront's any-hit pass.
+                let mut shadow32 = Vec::new();
+                for c in &cases {
+                    let Some((ray, Some(want), tol)) = c.narrow else {
+                        continue;
+                    };
+                    let got = intersect(&torus, &ray).map(|h| f64::from(h.t));
+                    tally32.checked += 1;
+                    tally32.check(&format!("f32 {}", what(c)), want, got, tol);
+                    let culled = intersect_f32_culled(&SkalaCull, &torus, &ray);
+                    assert_eq!(culled.hit.map(|h| f64::from(h.t)), got, "{}", what(c));
+                    shadow32.extend(shadows(&ray, want, tol));
+                }
+                let rays32: Vec<Ray> = shadow32.iter().map(|s| s.0).collect();
+                wavefront.occluded_f32(
+                    &dispatch,
+                    BatchCull::Skala,
+                    &torus,
+                    &rays32,
+                    &mut blocked32,
+                );
+                for (k, (ray, must)) in shadow32.iter().enumerate() {
+                    shadow_rays += 1;
+                    let a = occluded_f32(&torus, ray);
+                    let b = occluded_f32_culled(&SkalaCull, &torus, ray);
+                    assert!(a.escalated, "an on-surface ray is answered by f64");
+                    let answers = [a.occluded, b.occluded, blocked32[k]];
+                    if answers.iter().any(|a| a != must) {
+                        shadow_wrong.push(format!("f32 {answers:?}, want {must}: {ray:?}"));
+                    }
+                }
+                // Literal rays from the same f32 points with t_min = 10⁻⁴·r (no flag): the
+                // f32 path proves what it can, and every answer is the oracle's.
+                let minor = f64::from(torus.minor_radius());
+                // The f64 spawned origins, literal, through the f32 wavefront on DRays (its
+                // proofs on the f64 line) and its any-hit pass.
+                let mut lit64 = Vec::new();
+                for c in &cases {
+                    let t_min = 1e-4 * minor / c.wide.dir().length();
+                    let ray = DRay::with_range(c.wide.origin(), c.wide.dir(), t_min, f64::INFINITY)
+                        .unwrap();
+                    let label = Query::dray(&torus, &ray).classify().class;
+                    if label != OracleClass::Ambiguous {
+                        lit64.push((ray, label == OracleClass::Hit));
+                    }
+                }
+                let rays64: Vec<DRay> = lit64.iter().map(|l| l.0).collect();
+                let stats = wavefront.intersect_f32(
+                    &dispatch,
+                    BatchCull::Skala,
+                    &torus,
+                    &rays64,
+                    &mut hits,
+                );
+                literal_wide += rays64.len();
+                literal_wide_escalated += stats.escalated;
+                let mut lanes64 = Vec::new();
+                wavefront.occluded(
+                    &dispatch,
+                    BatchCull::Discriminant,
+                    &torus,
+                    &rays64,
+                    &mut lanes64,
+                );
+                wavefront.occluded_f32(&dispatch, BatchCull::Skala, &torus, &rays64, &mut blocked);
+                for (k, (ray, hit)) in lit64.iter().enumerate() {
+                    if hits[k].is_some() != *hit || blocked[k] != *hit || lanes64[k] != *hit {
+                        literal_wrong.push(format!("wavefront {hit} {:?} {ray:?}", hits[k]));
+                    }
+                    let proved = !wavefront.finished_in_f64().contains(&k);
+                    if let Some(h) = hits[k].filter(|_| proved) {
+                        assert!(h.front_face, "a proved f32 hit enters the tube");
+                    }
+                }
+                for c in &cases {
+                    let Some((ray, _, _)) = c.narrow else {
+                        continue;
+                    };
+                    let len = f64::from(ray.dir().length());
+                    let t_min = (1e-4 * minor / len) as f32;
+                    let Ok(lit) = Ray::with_range(ray.origin(), ray.dir(), t_min, f32::INFINITY)
+                    else {
+                        continue;
+                    };
+                    let label = Query::ray(&torus, &lit).classify().class;
+                    if label == OracleClass::Ambiguous {
+                        continue;
+                    }
+                    literal += 1;
+                    let answer = intersect_f32_culled(&SkalaCull, &torus, &lit);
+                    let shadow = occluded_f32(&torus, &lit);
+                    literal_escalated += usize::from(answer.escalated);
+                    let hit = label == OracleClass::Hit;
+                    if answer.hit.is_some() != hit || shadow.occluded != hit {
+                        literal_wrong.push(format!("{label:?}: {answer:?} {shadow:?} {lit:?}"));
+                    }
+                    if let Some(h) = answer.hit.filter(|_| !answer.escalated) {
+                        assert!(h.front_face, "a proved f32 hit enters the tube");
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "f64: {} decided, {} self-hits, {} missed, {} t off; f32: {} decided, {} self-hits, \
+         {} missed, {} t off; {points} hit points, {faces} faces checked ({back_faces} back); \
+         {shadow_rays} shadow rays, {} wrong; {literal} literal rays (t_min = 1e-4 r), \
+         {literal_escalated} escalated; {literal_wide} literal DRays through the f32 wavefront, \
+         {literal_wide_escalated} escalated; {} wrong",
+        tally.checked,
+        tally.self_hits.len(),
+        tally.missed.len(),
+        tally.wrong_t.len(),
+        tally32.checked,
+        tally32.self_hits.len(),
+        tally32.missed.len(),
+        tally32.wrong_t.len(),
+        shadow_wrong.len(),
+        literal_wrong.len(),
+    );
+    let show = |v: &Vec<String>| v[..v.len().min(8)].join("\n");
+    for t in [&tally, &tally32] {
+        assert!(t.self_hits.is_empty(), "self-hits:\n{}", show(&t.self_hits));
+        assert!(t.missed.is_empty(), "missed re-hits:\n{}", show(&t.missed));
+        assert!(t.wrong_t.is_empty(), "t off:\n{}", show(&t.wrong_t));
+    }
+    assert!(
+        shadow_wrong.is_empty(),
+        "shadow rays:\n{}",
+        show(&shadow_wrong)
+    );
+    assert!(
+        literal_wrong.is_empty(),
+        "literal rays:\n{}",
+        show(&literal_wrong)
+    );
+    assert!(shadow_rays > 10_000 && back_faces > 500 && literal > 5_000);
+}
+
+/// Bad input to `Torus::spawn`: a NaN or infinite direction, a zero one, or a NaN or
+/// infinite `t` is a typed `RayError`, never a panic or a NaN ray; a direction into the
+/// surface is a refraction ray, whose hit is where it leaves the tube (a back face).
+#[test]
+fn spawn_refuses_bad_input_and_documents_rays_into_the_tube() {
+    use torus_cull::{DRayError, RayError};
+    let torus = Torus::canonical(4.0, 1.0).unwrap();
+    let down = Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y).unwrap();
+    let hit = intersect(&torus, &down).expect("the top of the tube");
+    for bad in [
+        Vec3::new(f32::NAN, 1.0, 0.0),
+        Vec3::new(0.0, f32::INFINITY, 0.0),
+        Vec3::new(0.0, 0.0, f32::NEG_INFINITY),
+    ] {
+        let err = torus.spawn(&down, hit.t, bad).unwrap_err();
+        assert!(matches!(err, RayError::NonFiniteDirection(_)), "{err}");
+        assert!(err.to_string().contains("direction"), "{err}");
+    }
+    assert!(matches!(
+        torus.spawn(&down, hit.t, Vec3::ZERO),
+        Err(RayError::ZeroDirection(_))
+    ));
+    for t in [f32::NAN, f32::INFINITY] {
+        let err = torus.spawn(&down, t, Vec3::Y).unwrap_err();
+        assert!(
+            matches!(err, RayError::NonFiniteOrigin(_)),
+            "t = {t}: {err}"
+        );
+    }
+    let down64 = DRay::from(down);
+    let err = torus
+        .spawn(&down64, f64::from(hit.t), DVec3::new(f64::NAN, 0.0, 0.0))
+        .unwrap_err();
+    assert!(matches!(err, DRayError::NonFiniteDirection(_)), "{err}");
+    // Into the surface, straight down through the tube: its exit, the bottom (y = −1),
+    // at t = 2, with the outward normal −y and the ray leaving the solid.
+    let into = torus.spawn(&down, hit.t, Vec3::NEG_Y).unwrap();
+    let exit = intersect(&torus, &into).expect("the bottom of the tube");
+    assert!((exit.t - 2.0).abs() < 1e-5, "{exit:?}");
+    assert!(!exit.front_face && (exit.normal - Vec3::NEG_Y).length() < 1e-5);
+    assert!((exit.point - Vec3::new(4.0, -1.0, 0.0)).length() < 1e-5);
+    // Obliquely into the tube: the exit too, never the origin itself.
+    let slant = torus
+        .spawn(&down, hit.t, Vec3::new(0.3, -1.0, 0.2))
+        .unwrap();
+    let exit = intersect(&torus, &slant).expect("the tube's far wall");
+    assert!(exit.t > 0.5 && !exit.front_face, "{exit:?}");
 }

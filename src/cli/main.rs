@@ -114,7 +114,22 @@ enum Command {
         /// Minor radius r (R > r > 0).
         #[arg(long = "minor", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         minor: f32,
-        /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin).
+        /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin), optionally followed
+        /// by t_min, t_max, on_surface (any subset, in this order).
+        ///
+        /// t_min, t_max: the ray's range (default 0 and inf), 0 <= t_min <= t_max, in units
+        /// of the direction. on_surface: 0 or 1 (default 0); 1 marks the origin as a
+        /// surface point a renderer got from a hit (printed in f32 or f64), which must lie
+        /// within 1e-4·(R + r) of the surface. Such a ray never hits its own origin: the
+        /// library divides the origin's crossing out, and the oracle labels the row by the
+        /// rule of docs/math.md §9: with δ the origin's distance from the surface and θ the
+        /// angle between the direction and the normal there, the origin's own crossing is
+        /// the one nearest t = 0, within w = 4·(δ + 1e-11·(R + r))/(|cos θ|·|d|); the row is
+        /// ambiguous if there is none, if a second crossing lies within w plus the
+        /// ambiguity band (1e-8·(R + r)/(|cos θ|·|d|)), or if the range ends there;
+        /// otherwise it is labelled over the rest of its range (a ray into the tube: hit
+        /// if it leaves the tube in range). A bad value stops the run with the line
+        /// number and the column.
         #[arg(long)]
         rays: PathBuf,
         /// Output CSV (default: stdout).

@@ -31,12 +31,14 @@
 //! coordinates + golden-section refinement) that the tests compare against.
 
 mod frame;
+mod from_surface;
 mod interval;
 mod roots;
 mod sampling;
 #[cfg(test)]
 mod tests;
 
+pub use from_surface::classify_from_surface;
 pub use roots::reference_roots;
 pub use sampling::margin_by_sampling;
 

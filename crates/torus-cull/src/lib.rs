@@ -91,7 +91,10 @@ pub mod internals {
     pub use crate::num::{F32s, Vec3s};
 }
 
-pub use certified::{F32Hit, F32Verdict, intersect_f32, intersect_f32_certified};
+pub use certified::{
+    F32Hit, F32Occluded, F32Verdict, intersect_f32, intersect_f32_certified, intersect_f32_culled,
+    occluded_f32, occluded_f32_culled,
+};
 pub use cull::{
     AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
     DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
@@ -99,7 +102,7 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, Precision, Ray, RayError, Torus, TorusError,
+    NEAR_ORIGIN_REL, ON_SURFACE_REL, Precision, Ray, RayError, Torus, TorusError,
 };
 pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
 pub use names::{Named, UnknownName};

@@ -9,13 +9,15 @@
 //! scalar answer.
 
 use super::lines::{BLOCK, size_lane_output};
+use crate::Torus;
 use crate::geometry::Tube;
+use crate::intersect::TorusRay;
 use crate::intersect::nearest_hit::{NearestRoot, nearest_hit};
+use crate::intersect::sealed::Steps;
 pub(crate) use crate::num::DVec3s;
 use crate::num::V3;
 use crate::num::{F64s, M64s};
 use crate::quartic::lanes::nearest_root;
-use crate::{Ray, Torus};
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
 
@@ -28,7 +30,7 @@ pub(crate) struct RaysF64 {
     pub(crate) columns: [Vec<f64>; 8],
     /// The ray's index in the caller's slice.
     pub(crate) index: Vec<usize>,
-    /// Per block, a bit for each ray that starts on the surface ([`Ray::from_surface`]):
+    /// Per block, a bit for each ray that starts on the surface ([`crate::Ray::from_surface`]):
     /// the lanes solve the literal ray, so the scalar path answers these.
     pub(crate) on_surface: Vec<u64>,
 }
@@ -37,7 +39,12 @@ impl RaysF64 {
     /// The rays `rays[i]` for each `i` of `kept` (ascending, `count` of them), widened to
     /// f64 exactly, with whole blocks of padding: a ray from (4, 0, 0) along +x,
     /// harmless, whose answers are dropped.
-    pub(crate) fn fill(&mut self, rays: &[Ray], kept: impl Iterator<Item = usize>, count: usize) {
+    pub(crate) fn fill<R: TorusRay>(
+        &mut self,
+        rays: &[R],
+        kept: impl Iterator<Item = usize>,
+        count: usize,
+    ) {
         self.len = count;
         let padded = count.div_ceil(BLOCK) * BLOCK;
         for (c, pad) in self
@@ -60,11 +67,11 @@ impl RaysF64 {
         let [ox, oy, oz, dx, dy, dz, lo, hi] = &mut self.columns;
         for (j, &i) in self.index.iter().enumerate() {
             let ray = &rays[i];
-            self.on_surface[j / BLOCK] |= u64::from(ray.starts_on_surface()) << (j % BLOCK);
-            let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
+            self.on_surface[j / BLOCK] |= u64::from(ray.on_surface()) << (j % BLOCK);
+            let (o, d) = ray.world_f64();
             (ox[j], oy[j], oz[j]) = (o.x, o.y, o.z);
             (dx[j], dy[j], dz[j]) = (d.x, d.y, d.z);
-            (lo[j], hi[j]) = (f64::from(ray.t_min()), f64::from(ray.t_max()));
+            (lo[j], hi[j]) = ray.range_f64();
         }
     }
 
@@ -85,6 +92,15 @@ impl RaysF64 {
             .each_ref()
             .map(|c| F64s::load(s, &c[at.clone()]));
         (V3::new(ox, oy, oz), V3::new(dx, dy, dz), lo, hi)
+    }
+
+    /// Ray `j`'s world origin and direction (f64).
+    pub(crate) fn world(&self, j: usize) -> (DVec3, DVec3) {
+        let [ox, oy, oz, dx, dy, dz, ..] = &self.columns;
+        (
+            DVec3::new(ox[j], oy[j], oz[j]),
+            DVec3::new(dx[j], dy[j], dz[j]),
+        )
     }
 
     pub(crate) fn padded(&self) -> usize {

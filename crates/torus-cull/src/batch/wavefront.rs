@@ -16,11 +16,19 @@ use super::intersect::{Answers, RaysF64, intersect_lanes};
 use super::lines::Lines;
 use super::mask::{KeepMask, set_bits};
 use crate::cull::BatchCull;
+use crate::intersect::TorusRay;
+use crate::intersect::sealed::{FromExact, Steps};
 use crate::num::Dispatch;
-use crate::{Hit, Ray, Torus, intersect};
-use glam::Vec3;
+use crate::{Torus, intersect, occluded};
+use glam::DVec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
+///
+/// Every pass takes a slice of [`crate::Ray`]s (hits in f32, [`crate::Hit`]) or of
+/// [`crate::DRay`]s (hits in f64, [`crate::DHit`]), rays from a surface point
+/// ([`crate::Torus::spawn`]) among them, and after it [`Wavefront::finished_in_f64`] names
+/// the rays the scalar f64 path answered. Shadow rays take the any-hit passes
+/// ([`Wavefront::occluded`], [`Wavefront::occluded_f32`]).
 ///
 /// ```
 /// use glam::Vec3;
@@ -55,6 +63,8 @@ pub struct Wavefront {
     survivors: RaysF64,
     answers: Answers,
     answers_f32: F32Answers,
+    /// The rays of the last pass the scalar f64 path answered (indices, ascending).
+    finished: Vec<usize>,
 }
 
 /// What one wavefront did.
@@ -66,12 +76,12 @@ pub struct WavefrontStats {
     /// Rays the cull kept (all of them for `none`): the exact intersection's lanes.
     pub kept: usize,
     /// Kept rays handed to the scalar [`crate::intersect()`] (tangent and near-tangent
-    /// quartics).
+    /// quartics, and rays from a surface point).
     pub scalar_fallbacks: usize,
-    /// Rays with a hit.
+    /// Rays with a hit (for the any-hit passes: rays occluded).
     pub hits: usize,
     /// Kept rays the f32 path could not prove, answered by the f64 [`crate::intersect()`]
-    /// ([`Wavefront::intersect_f32`] only).
+    /// ([`Wavefront::intersect_f32`] and [`Wavefront::occluded_f32`] only).
     pub escalated: usize,
 }
 
@@ -83,82 +93,177 @@ impl Wavefront {
 
     /// The nearest hit of every ray (`hits[i]` for `rays[i]`, resized), culled with
     /// `cull` first: what [`crate::intersect_culled`] returns ray by ray, to the batch
-    /// solver's rounding.
+    /// solver's rounding. [`crate::Ray`]s get f32 hits, [`crate::DRay`]s f64 ones.
     ///
     /// `none` skips the cull stage (every ray is intersected): the baseline.
-    pub fn intersect(
+    pub fn intersect<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits);
-        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
-        let a = &self.answers;
-        // Padding lanes lie past `len` and are never read.
-        let len = self.survivors.len();
-        for j in set_bits(&a.hit, len) {
-            hits[self.survivors.index[j]] = Some(Hit {
-                t: a.t[j] as f32,
-                normal: Vec3::new(
-                    a.normal[0][j] as f32,
-                    a.normal[1][j] as f32,
-                    a.normal[2][j] as f32,
-                ),
-            });
-        }
-        let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
-            .map(|(f, s)| f | s)
-            .collect();
-        let scalar_fallbacks = self.finish_in_f64(torus, rays, hits, &open);
-        WavefrontStats {
-            scalar_fallbacks,
-            ..self.stats(rays, hits)
-        }
+        self.f64_pass(dispatch, cull, torus, rays, hits)
     }
 
     /// [`Wavefront::intersect`] through the certified f32 path ([`crate::intersect_f32`]
     /// on lanes): the kept rays are solved and proved on f32 lanes, twice as many per
     /// register, and only the rays f32 cannot prove go to the f64 [`crate::intersect()`]
-    /// (counted in [`WavefrontStats::escalated`]). Never misses a hit the f64 path finds;
-    /// a hit's `t` is within 1.9·10⁻⁴·R of it.
-    pub fn intersect_f32(
+    /// (counted in [`WavefrontStats::escalated`], named by
+    /// [`Wavefront::finished_in_f64`]). Never misses a hit the f64 path finds; a proved
+    /// hit's `t` is within 1.9·10⁻⁴·R of it (for a [`crate::DRay`] too: the proof is
+    /// f32's, on the f64 line rounded once), and it is a front face (the proof is a
+    /// crossing from outside to inside).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
+    /// use torus_cull::{DRay, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// let rays = [
+    ///     DRay::new(DVec3::new(4.0, 10.0, 0.0), DVec3::NEG_Y)?, // proved in f32
+    ///     DRay::new(DVec3::new(4.0, 0.0, 0.0), DVec3::X)?,      // inside the tube: f64
+    /// ];
+    /// let mut wavefront = Wavefront::new();
+    /// let mut hits = Vec::new();
+    /// let stats =
+    ///     wavefront.intersect_f32(&Dispatch::best(), BatchCull::Skala, &torus, &rays, &mut hits);
+    /// assert_eq!((stats.hits, stats.escalated), (2, 1));
+    /// assert_eq!(wavefront.finished_in_f64(), &[1]);
+    /// assert_eq!(hits[1], intersect(&torus, &rays[1])); // the f64 answer, exactly
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn intersect_f32<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Certify)
+    }
+
+    /// The any-hit pass for shadow rays: `occluded[i]` (resized) is whether `rays[i]`
+    /// meets the torus at some `t ∈ [t_min, t_max]`, what [`crate::occluded()`] answers
+    /// ray by ray. The same lanes as [`Wavefront::intersect`] (which form the normal
+    /// anyway), answered as a bool; the rays the scalar path finishes (tangents, and
+    /// every ray from a surface point) get [`crate::occluded()`], which skips the hit's
+    /// normal, point and world transform.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
+    /// use torus_cull::{Ray, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// // Up from below onto the bottom of the tube, then shadow rays from that hit.
+    /// let up = Ray::new(Vec3::new(4.0, -10.0, 0.0), Vec3::Y)?;
+    /// let hit = intersect(&torus, &up).expect("the bottom of the tube, at t = 9");
+    /// let shadow = [
+    ///     torus.spawn(&up, hit.t, Vec3::Y)?,     // up, through the tube: blocked by its top
+    ///     torus.spawn(&up, hit.t, Vec3::NEG_Y)?, // down, away from the torus: clear
+    ///     torus.spawn(&up, hit.t, Vec3::Y)?.with_t_max(1.5), // a light inside the tube
+    /// ];
+    /// let mut wavefront = Wavefront::new();
+    /// let mut blocked = Vec::new();
+    /// wavefront.occluded(&Dispatch::best(), BatchCull::Skala, &torus, &shadow, &mut blocked);
+    /// assert_eq!(blocked, [true, false, false]);
+    /// // Rays from a surface point are answered by the f64 path, and named.
+    /// assert_eq!(wavefront.finished_in_f64(), &[0, 1, 2]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn occluded<R: TorusRay>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        occluded: &mut Vec<bool>,
+    ) -> WavefrontStats {
+        self.f64_pass(dispatch, cull, torus, rays, occluded)
+    }
+
+    /// [`Wavefront::occluded`] through the certified f32 path: a proved hit is a proved
+    /// root in range, a proved miss none; every other kept ray (counted in
+    /// [`WavefrontStats::escalated`], named by [`Wavefront::finished_in_f64`]) gets the
+    /// f64 answer. Always [`crate::occluded()`]'s answer.
+    pub fn occluded_f32<R: TorusRay>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        occluded: &mut Vec<bool>,
+    ) -> WavefrontStats {
+        self.f32_pass(dispatch, cull, torus, rays, occluded, Proof::Certify)
+    }
+
+    /// The rays of the last pass (indices into its slice, ascending) that the scalar f64
+    /// path answered: after [`Wavefront::intersect_f32`] or [`Wavefront::occluded_f32`]
+    /// the escalated ones (not proved in f32, or from a surface point), after
+    /// [`Wavefront::intersect`] or [`Wavefront::occluded`] the scalar fallbacks (tangent
+    /// quartics, rays from a surface point). Its length is the pass's
+    /// [`WavefrontStats::escalated`] or [`WavefrontStats::scalar_fallbacks`].
+    #[must_use]
+    pub fn finished_in_f64(&self) -> &[usize] {
+        &self.finished
     }
 
     /// The f32 wavefront **without** the proof: every f32 answer taken as it comes (hits
     /// lost and invented near tangents). Only for timing what the proof costs.
     #[doc(hidden)]
-    pub fn intersect_f32_uncertified(
+    pub fn intersect_f32_uncertified<R: TorusRay>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        hits: &mut Vec<Option<R::Hit>>,
     ) -> WavefrontStats {
         self.f32_pass(dispatch, cull, torus, rays, hits, Proof::Uncertified)
     }
 
-    fn f32_pass(
+    /// The f64 lanes, then the scalar f64 path on the lanes they leave open: hits, or
+    /// bools for the any-hit pass.
+    fn f64_pass<R: TorusRay, A: Answer<R>>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        out: &mut Vec<A>,
+    ) -> WavefrontStats {
+        self.cull_and_compact(dispatch, cull, torus, rays, out);
+        intersect_lanes(dispatch, torus, &self.survivors, &mut self.answers);
+        let a = &self.answers;
+        // Padding lanes lie past `len` and are never read.
+        let len = self.survivors.len();
+        for j in set_bits(&a.hit, len) {
+            let (o, d) = self.survivors.world(j);
+            let normal = DVec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]);
+            out[self.survivors.index[j]] = A::exact(a.t[j], normal, o, d);
+        }
+        let open: Vec<u64> = (a.fallback.iter().zip(&self.survivors.on_surface))
+            .map(|(f, s)| f | s)
+            .collect();
+        let scalar_fallbacks = self.finish_in_f64(torus, rays, out, &open);
+        WavefrontStats {
+            scalar_fallbacks,
+            ..self.stats(rays, out)
+        }
+    }
+
+    fn f32_pass<R: TorusRay, A: Answer<R>>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+        out: &mut Vec<A>,
         proof: Proof,
     ) -> WavefrontStats {
-        self.cull_and_compact(dispatch, cull, torus, rays, hits);
+        self.cull_and_compact(dispatch, cull, torus, rays, out);
         certify_lanes(
             dispatch,
             torus,
@@ -170,71 +275,135 @@ impl Wavefront {
         let a = &self.answers_f32;
         let major = torus.major_radius_f64();
         for j in set_bits(&a.hit, len) {
-            let t = a.t(major, j) as f32;
-            hits[self.survivors.index[j]] = t.is_finite().then_some(Hit {
-                t,
-                normal: Vec3::new(a.normal[0][j], a.normal[1][j], a.normal[2][j]),
-            });
+            let (o, d) = self.survivors.world(j);
+            let normal = DVec3::new(
+                f64::from(a.normal[0][j]),
+                f64::from(a.normal[1][j]),
+                f64::from(a.normal[2][j]),
+            );
+            out[self.survivors.index[j]] = A::proved(a.t(major, j), normal, o, d);
         }
         // Escalated: neither proved, or from a surface point (the f64 path divides its
         // root out). The bits past `len` are padding, never read.
         let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&self.survivors.on_surface))
             .map(|((h, m), s)| !(h | m) | s)
             .collect();
-        let escalated = self.finish_in_f64(torus, rays, hits, &open);
+        let escalated = self.finish_in_f64(torus, rays, out, &open);
         WavefrontStats {
             escalated,
-            ..self.stats(rays, hits)
+            ..self.stats(rays, out)
         }
     }
 
-    /// The survivors whose bit is set in `open` (the lanes left undecided), intersected by
-    /// the scalar f64 path; how many.
-    fn finish_in_f64(
-        &self,
+    /// The survivors whose bit is set in `open` (the lanes left undecided), answered by
+    /// the scalar f64 path and recorded in `finished`; how many.
+    fn finish_in_f64<R: TorusRay, A: Answer<R>>(
+        &mut self,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut [Option<Hit>],
+        rays: &[R],
+        out: &mut [A],
         open: &[u64],
     ) -> usize {
-        let mut finished = 0;
+        self.finished.clear();
         for j in set_bits(open, self.survivors.len()) {
             let i = self.survivors.index[j];
-            hits[i] = intersect(torus, &rays[i]);
-            finished += 1;
+            out[i] = A::scalar(torus, &rays[i]);
+            self.finished.push(i);
         }
-        finished
+        self.finished.len()
     }
 
     /// The counts every pass reports: rays, survivors of the cull, hits.
-    fn stats(&self, rays: &[Ray], hits: &[Option<Hit>]) -> WavefrontStats {
+    fn stats<R: TorusRay, A: Answer<R>>(&self, rays: &[R], out: &[A]) -> WavefrontStats {
         WavefrontStats {
             rays: rays.len(),
             kept: self.survivors.len(),
-            hits: hits.iter().filter(|h| h.is_some()).count(),
+            hits: out.iter().filter(|h| h.is_hit()).count(),
             ..WavefrontStats::default()
         }
     }
 
     /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns;
-    /// `hits` cleared to `None` for every ray.
-    fn cull_and_compact(
+    /// `out` cleared to "no hit" for every ray. f32 rays reach the culls' frame on lanes
+    /// ([`Lines::fill_from_rays_batch`]), f64 ones through their scalar transform.
+    fn cull_and_compact<R: TorusRay, A: Answer<R>>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        hits: &mut Vec<Option<Hit>>,
+        rays: &[R],
+        out: &mut Vec<A>,
     ) {
-        hits.clear();
-        hits.resize(rays.len(), None);
+        out.clear();
+        out.resize(rays.len(), A::NONE);
+        self.finished.clear();
         if cull == BatchCull::NoCull {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {
-            self.lines.fill_from_rays_batch(dispatch, torus, rays);
+            match R::as_f32_rays(rays) {
+                Some(rays) => self.lines.fill_from_rays_batch(dispatch, torus, rays),
+                None => {
+                    self.lines.clear();
+                    for ray in rays {
+                        let line = ray.cull_line(torus);
+                        self.lines.push(line.origin, line.dir);
+                    }
+                }
+            }
             cull_batch(dispatch, cull, torus.bounds(), &self.lines, &mut self.keep);
             let count = self.keep.count_kept();
             self.survivors.fill(rays, self.keep.kept(), count);
         }
+    }
+}
+
+/// What a pass writes per ray: the hit (`Option<R::Hit>`, the nearest-hit passes), or
+/// whether there is one (`bool`, the any-hit passes).
+trait Answer<R: TorusRay>: Copy {
+    /// No hit.
+    const NONE: Self;
+    /// From the f64 lanes' root `t` and world normal on the world line `o + t·d`.
+    fn exact(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self;
+    /// From a root the f32 lanes proved.
+    fn proved(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self;
+    /// The scalar f64 path's answer.
+    fn scalar(torus: &Torus, ray: &R) -> Self;
+    fn is_hit(&self) -> bool;
+}
+
+impl<R: TorusRay> Answer<R> for Option<R::Hit> {
+    const NONE: Self = None;
+    #[inline(always)]
+    fn exact(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self {
+        R::Hit::from_exact(t, normal, o, d)
+    }
+    #[inline(always)]
+    fn proved(t: f64, normal: DVec3, o: DVec3, d: DVec3) -> Self {
+        R::Hit::from_proved(t, normal, o, d)
+    }
+    fn scalar(torus: &Torus, ray: &R) -> Self {
+        intersect(torus, ray)
+    }
+    fn is_hit(&self) -> bool {
+        self.is_some()
+    }
+}
+
+/// A hit whose `t` the ray's float can hold, as [`crate::occluded()`] counts one.
+impl<R: TorusRay> Answer<R> for bool {
+    const NONE: Self = false;
+    #[inline(always)]
+    fn exact(t: f64, _: DVec3, _: DVec3, _: DVec3) -> Self {
+        R::fits(t)
+    }
+    #[inline(always)]
+    fn proved(t: f64, _: DVec3, _: DVec3, _: DVec3) -> Self {
+        R::fits(t)
+    }
+    fn scalar(torus: &Torus, ray: &R) -> Self {
+        occluded(torus, ray)
+    }
+    fn is_hit(&self) -> bool {
+        *self
     }
 }

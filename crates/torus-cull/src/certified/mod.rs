@@ -30,12 +30,14 @@
 
 pub(crate) mod certificate;
 pub(crate) mod line;
+mod occlusion;
 
 use crate::intersect::Hit;
 use crate::num::F32s;
-use crate::{Ray, Torus, intersect};
-use certificate::decide;
+use crate::{Cull, Ray, Torus, intersect};
+use certificate::{ScaledLine, decide};
 use glam::Vec3;
+pub use occlusion::{F32Occluded, occluded_f32, occluded_f32_culled};
 use pulp::Scalar;
 
 /// What the f32 path proved about one ray.
@@ -78,32 +80,63 @@ fn sc32(x: f32) -> F32s<Scalar> {
 /// The certified f32 verdict alone (no f64 fallback): what a GPU kernel returns.
 #[must_use]
 pub fn intersect_f32_certified(torus: &Torus, ray: &Ray) -> F32Verdict {
+    match prove(torus, ray) {
+        Proof::Miss => F32Verdict::Miss,
+        Proof::Escalate => F32Verdict::Escalate,
+        Proof::Hit { t, scaled, u } => {
+            let n = certificate::normal_at(&scaled, u);
+            let normal = torus
+                .dir_to_world(Vec3::new(n.x.v, n.y.v, n.z.v))
+                .normalize_or_zero();
+            F32Verdict::Hit { t, normal }
+        }
+    }
+}
+
+/// What the certificate proved about one ray, before a hit's normal is formed (which a
+/// shadow ray does not need).
+pub(crate) enum Proof {
+    /// No root in range.
+    Miss,
+    /// Neither proved.
+    Escalate,
+    /// The first root in range is within the bracket of `u`, at the ray's `t` (finite).
+    Hit {
+        t: f32,
+        scaled: ScaledLine<F32s<Scalar>>,
+        u: F32s<Scalar>,
+    },
+}
+
+/// The certificate on one ray.
+#[inline]
+pub(crate) fn prove(torus: &Torus, ray: &Ray) -> Proof {
     // A ray from a surface point needs its origin's root divided out; the f32 proof of
     // that cubic is not built, so the f64 path answers it.
     if ray.starts_on_surface() {
-        return F32Verdict::Escalate;
+        return Proof::Escalate;
     }
     let Some((columns, back)) = line::of_ray(torus, ray) else {
-        return F32Verdict::Escalate;
+        return Proof::Escalate;
     };
     let [q, d, rest] = columns.map(|c| c.map(sc32));
     let scaled = line::lanes(sc32(0.0), q, d, rest);
     let decision = decide(&scaled);
     if decision.miss.m {
-        return F32Verdict::Miss;
+        return Proof::Miss;
     }
     if !decision.hit.m {
-        return F32Verdict::Escalate;
+        return Proof::Escalate;
     }
     let t = back.t(f64::from(decision.u.v)) as f32;
     if !t.is_finite() {
-        return F32Verdict::Escalate;
+        return Proof::Escalate;
     }
-    let n = certificate::normal_at(&scaled, decision.u);
-    let normal = torus
-        .dir_to_world(Vec3::new(n.x.v, n.y.v, n.z.v))
-        .normalize_or_zero();
-    F32Verdict::Hit { t, normal }
+    Proof::Hit {
+        t,
+        scaled,
+        u: decision.u,
+    }
 }
 
 /// The nearest hit through the f32 path: certified in f32, escalated to [`intersect()`]
@@ -136,7 +169,7 @@ pub fn intersect_f32(torus: &Torus, ray: &Ray) -> F32Hit {
 pub(crate) fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
     match verdict {
         F32Verdict::Hit { t, normal } => F32Hit {
-            hit: Some(Hit { t, normal }),
+            hit: Some(proved_hit(t, normal, ray)),
             escalated: false,
         },
         F32Verdict::Miss => F32Hit {
@@ -147,5 +180,44 @@ pub(crate) fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
             hit: intersect(torus, ray),
             escalated: true,
         },
+    }
+}
+
+/// The [`Hit`] of a proved f32 root: the point `o + t·d` formed in f64 at the reported
+/// `t`, and `front_face` true, because the proof is a sign change of the signed distance
+/// from outside (> 0) to inside (< 0) with the distance proved positive before it: the
+/// ray enters the solid there.
+fn proved_hit(t: f32, normal: Vec3, ray: &Ray) -> Hit {
+    let point = ray.origin().as_dvec3() + ray.dir().as_dvec3() * f64::from(t);
+    Hit {
+        t,
+        normal,
+        point: point.as_vec3(),
+        front_face: true,
+    }
+}
+
+/// [`intersect_f32`] behind a cull: a line the cull rejects is a miss (proved by the
+/// cull, not escalated); a kept one goes through the certified f32 path. What
+/// [`crate::intersect_culled`] is to [`crate::intersect()`].
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::{Ray, SkalaCull, Torus, intersect_f32_culled};
+/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+/// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::NEG_Y)?;
+/// let answer = intersect_f32_culled(&SkalaCull, &torus, &hole);
+/// assert!(answer.hit.is_none() && !answer.escalated);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn intersect_f32_culled<C: Cull + ?Sized>(cull: &C, torus: &Torus, ray: &Ray) -> F32Hit {
+    if crate::kept_by(cull, torus, ray) {
+        intersect_f32(torus, ray)
+    } else {
+        F32Hit {
+            hit: None,
+            escalated: false,
+        }
     }
 }

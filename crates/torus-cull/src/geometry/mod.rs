@@ -10,7 +10,7 @@ pub use bounds::{CullBounds, SAFETY_REL};
 pub(crate) use torus::CullLine;
 pub(crate) use tube::Tube;
 
-pub use ray::{DRay, DRayError, Precision, Ray, RayError};
+pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};
 pub use torus::{
     FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus,
     TorusError,

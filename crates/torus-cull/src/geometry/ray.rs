@@ -112,6 +112,10 @@ pub(crate) mod sealed {
         fn to_dvec3(self) -> DVec3;
         /// An f64 vector rounded to this precision.
         fn from_dvec3(v: DVec3) -> Self;
+        /// Rays of this precision as f32 rays, if they are.
+        fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
+        where
+            Self: Precision;
     }
 
     impl Internals for Vec3 {
@@ -137,6 +141,9 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn from_dvec3(v: DVec3) -> Vec3 {
             v.as_vec3()
+        }
+        fn as_f32_rays(rays: &[super::Ray]) -> Option<&[super::Ray]> {
+            Some(rays)
         }
     }
 
@@ -164,6 +171,9 @@ pub(crate) mod sealed {
         fn from_dvec3(v: DVec3) -> DVec3 {
             v
         }
+        fn as_f32_rays(_: &[super::DRay]) -> Option<&[super::Ray]> {
+            None
+        }
     }
 }
 
@@ -185,6 +195,10 @@ pub(crate) mod sealed {
 /// assert!(DRay::new(DVec3::ZERO, DVec3::X).is_ok());
 /// assert!(DRay::new(DVec3::ZERO, DVec3::ZERO).is_err());
 /// assert!(DRay::new(DVec3::ZERO, DVec3::splat(1e300)).is_err()); // |d|² overflows
+/// // `at` and `with_t_max` are written once, for both precisions.
+/// let ray = DRay::new(DVec3::ZERO, DVec3::X * 2.0)?.with_t_max(3.0);
+/// assert_eq!((ray.at(1.5), ray.t_max()), (DVec3::new(3.0, 0.0, 0.0), 3.0));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ray<P: Precision = Vec3> {
@@ -196,6 +210,16 @@ pub struct Ray<P: Precision = Vec3> {
     /// intersection divides out ([`Ray::from_surface`]).
     on_surface: bool,
 }
+
+/// How far from the surface, relative to R + r, the origin of a ray from a surface point
+/// ([`Ray::from_surface`]) may lie: 10⁻⁴.
+///
+/// A surface point rounded to f32 is off by at most 2⁻²⁴·|p|, within this bound for
+/// |p| up to about 1 600·(R + r) from the world origin (and [`crate::Torus::spawn`]
+/// rounds a point it first moved onto the surface in f64). The semantics hold for any
+/// small offset δ, which moves the other crossings by about δ/|cos θ| (docs/math.md §9);
+/// past this bound a point is not a surface point to the lab, whose `eval` refuses it.
+pub const ON_SURFACE_REL: f64 = 1e-4;
 
 /// A ray in f64: [`Ray`] over [`DVec3`], whose hits ([`crate::DHit`]) are f64.
 pub type DRay = Ray<DVec3>;
@@ -338,10 +362,44 @@ impl<P: Precision> Ray<P> {
     /// assert!((intersect(&torus, &across).unwrap().t - 6.0).abs() < 1e-5);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
+    ///
+    /// **How near the surface.** The origin should lie within [`ON_SURFACE_REL`]·(R + r)
+    /// of the surface: any surface point rounded to f32 within about 1 600·(R + r) of the
+    /// world origin does (docs/math.md §9). The lab's `eval` refuses an `on_surface` row
+    /// farther off; the library does not know the torus here and cannot.
     pub fn from_surface(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
+        Ray::from_surface_with_range(
+            origin,
+            dir,
+            <P::Float as Scalar>::ZERO,
+            <P::Float as Scalar>::INFINITY,
+        )
+    }
+
+    /// [`Ray::from_surface`] over `t ∈ [t_min, t_max]`: the nearest crossing in the range
+    /// with `t > 0`, other than the origin's own. A shadow ray to a light at `t = 1` is
+    /// `from_surface_with_range(p, light − p, 0.0, 1.0)` (or
+    /// [`Ray::from_surface`]`(…)?.`[`with_t_max`](Ray::with_t_max)`(1.0)`).
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::{Ray, Torus, occluded};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// // From the inner equator across the hole, to lights at x = −2 and x = −4.
+    /// let near = Ray::from_surface_with_range(Vec3::new(3.0, 0.0, 0.0), Vec3::NEG_X, 0.0, 5.0)?;
+    /// let far = Ray::from_surface_with_range(Vec3::new(3.0, 0.0, 0.0), Vec3::NEG_X, 0.0, 7.0)?;
+    /// assert!(!occluded(&torus, &near) && occluded(&torus, &far));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn from_surface_with_range(
+        origin: P,
+        dir: P,
+        t_min: P::Float,
+        t_max: P::Float,
+    ) -> Result<Ray<P>, RayError<P>> {
         Ok(Ray {
             on_surface: true,
-            ..Ray::new(origin, dir)?
+            ..Ray::with_range(origin, dir, t_min, t_max)?
         })
     }
 

@@ -556,7 +556,16 @@ impl Torus {
     ///
     /// `dir` may point to either side of the surface: outward (reflection, a shadow ray
     /// to a light above the surface) or into the tube (refraction), where the hit is the
-    /// ray's exit.
+    /// ray's exit (`Hit::front_face` false, the outward normal along the ray). Nothing
+    /// is assumed about the side: the origin's own root is divided out either way, and a
+    /// direction in the tangent plane is a grazing ray (docs/math.md §9).
+    ///
+    /// # Errors
+    ///
+    /// A [`RayError`], never a panic or a NaN ray: `NonFiniteDirection` for a NaN or
+    /// infinite component of `dir`, `ZeroDirection` / `HugeDirection` for a `dir` whose
+    /// `|d|²` is not a normal finite float, `NonFiniteOrigin` when the point at `t` is not
+    /// finite (a NaN or infinite `t`, or a hit too far along for the ray's float).
     ///
     /// ```
     /// use glam::Vec3;

@@ -31,6 +31,25 @@ pub use ray_cast::{Culled, RayCast};
 
 /// The nearest hit of a ray, in the ray's precision: [`Hit`] (`Hit<Vec3>`, f32) for a
 /// [`Ray`], [`DHit`] (`Hit<DVec3>`, f64) for a [`DRay`](crate::DRay).
+///
+/// What a renderer shades and spawns from: where ([`Hit::point`]), which way the surface
+/// faces ([`Hit::normal`], always the *outward* normal), and from which side the ray came
+/// ([`Hit::front_face`]).
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::{Ray, Torus, intersect};
+/// let torus = Torus::canonical(4.0, 1.0)?;
+/// // Down onto the top of the tube: the outside, at (4, 1, 0).
+/// let down = Ray::new(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y)?;
+/// let hit = intersect(&torus, &down).expect("the top of the tube");
+/// assert!(hit.front_face && (hit.point - Vec3::new(4.0, 1.0, 0.0)).length() < 1e-5);
+/// // From the tube's centre outwards: the inside of the tube, where the ray leaves it.
+/// let out = Ray::new(Vec3::new(4.0, 0.0, 0.0), Vec3::X)?;
+/// let hit = intersect(&torus, &out).expect("the outer equator, from inside");
+/// assert!(!hit.front_face && (hit.normal - Vec3::X).length() < 1e-6);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub struct Hit<P: Precision = Vec3> {
@@ -38,6 +57,16 @@ pub struct Hit<P: Precision = Vec3> {
     pub t: P::Float,
     /// Unit outward surface normal, world space.
     pub normal: P,
+    /// The hit point `o + t·d`, world space, formed in f64 from the solver's f64 `t` and
+    /// rounded once to the ray's precision (so more accurate than `ray.at(hit.t)` in f32).
+    /// To start a secondary ray here, hand the hit to [`Torus::spawn`], which projects
+    /// this point onto the surface and marks the ray as starting on it.
+    pub point: P,
+    /// The ray struck the outside of the tube: `d·n < 0` with `n` the outward normal (it
+    /// enters the solid torus here). `false` where it leaves the solid (an origin inside
+    /// the tube, or a ray spawned into it); a renderer flips the normal for shading then.
+    /// On an exactly tangent hit (`d·n = 0`) it is `false`.
+    pub front_face: bool,
 }
 
 /// The nearest hit of an f64 ray ([`crate::DRay`]): `t` and the normal in f64.
@@ -48,7 +77,7 @@ pub type DHit = Hit<DVec3>;
 /// two are the whole list (it is `Ray<P>` for either [`Precision`]).
 pub trait TorusRay: sealed::Sealed {
     /// What a hit reports: [`Hit`] for [`Ray`], [`DHit`] for [`DRay`](crate::DRay).
-    type Hit: sealed::FromExact;
+    type Hit: sealed::FromExact + Copy + std::fmt::Debug + PartialEq;
     /// The ray's float type, that of a hit's `t`: `f32` for [`Ray`], `f64` for [`DRay`](crate::DRay).
     type Float;
     /// A hit's `t` ([`RayCast::cast_ray`]'s answer).
@@ -60,25 +89,43 @@ pub trait TorusRay: sealed::Sealed {
 pub(crate) mod sealed {
     use super::Hit;
     use crate::geometry::CullLine;
+    use crate::geometry::ray::sealed::Internals;
     use crate::geometry::ray::sealed::Scalar;
     use crate::{LocalLine, Precision, Ray, Torus};
     use glam::DVec3;
 
     /// A hit made from the exact intersection's answer.
     pub trait FromExact: Sized {
-        /// The hit from the exact intersection's f64 `t` and world normal, rounded to the
-        /// ray's precision; `None` when `t` does not fit its float (a hit farther along
-        /// than f32, or f64, can count).
-        fn from_exact(t: f64, normal: DVec3) -> Option<Self>;
+        /// The hit from the exact intersection's f64 `t` and world normal on the world
+        /// line `origin + t·dir` (f64), rounded to the ray's precision; `None` when `t`
+        /// does not fit its float (a hit farther along than f32, or f64, can count).
+        fn from_exact(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Self>;
+        /// The hit of a root the certified f32 path proved: `t` rounded to the ray's
+        /// float, the point at that `t`, and `front_face` true (the proof is a crossing
+        /// from outside to inside: `crate::certified`'s `proved_hit`).
+        fn from_proved(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Self>;
     }
 
     impl<P: Precision> FromExact for Hit<P> {
         #[inline(always)]
-        fn from_exact(t: f64, normal: DVec3) -> Option<Hit<P>> {
-            let t = <P::Float as Scalar>::from_f64(t);
-            t.finite().then(|| Hit {
-                t,
+        fn from_exact(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Hit<P>> {
+            let t_p = <P::Float as Scalar>::from_f64(t);
+            t_p.finite().then(|| Hit {
+                t: t_p,
                 normal: P::from_dvec3(normal),
+                point: P::from_dvec3(origin + dir * t),
+                front_face: dir.dot(normal) < 0.0,
+            })
+        }
+
+        #[inline(always)]
+        fn from_proved(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Hit<P>> {
+            let t_p = <P::Float as Scalar>::from_f64(t);
+            t_p.finite().then(|| Hit {
+                t: t_p,
+                normal: P::from_dvec3(normal),
+                point: P::from_dvec3(origin + dir * t_p.to_f64()),
+                front_face: true,
             })
         }
     }
@@ -87,6 +134,14 @@ pub(crate) mod sealed {
         /// The ray as a `Ray` of its precision.
         type Precision: Precision + CullLine;
         fn as_ray(&self) -> &Ray<Self::Precision>;
+        /// Whether an f64 `t` is finite once rounded to the ray's float (a hit the ray
+        /// can report).
+        fn fits(t: f64) -> bool;
+        /// The slice as f32 [`Ray`]s, if that is what it is (the wavefront's lane
+        /// transform to the culls' frame is written for them).
+        fn as_f32_rays(rays: &[Self]) -> Option<&[Ray]>
+        where
+            Self: Sized;
     }
 
     impl<P: Precision + CullLine> Sealed for Ray<P> {
@@ -94,6 +149,14 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn as_ray(&self) -> &Ray<P> {
             self
+        }
+        #[inline(always)]
+        fn fits(t: f64) -> bool {
+            <P::Float as Scalar>::from_f64(t).finite()
+        }
+        #[inline(always)]
+        fn as_f32_rays(rays: &[Ray<P>]) -> Option<&[Ray]> {
+            P::as_f32_rays(rays)
         }
     }
 
@@ -118,6 +181,12 @@ pub(crate) mod sealed {
         #[inline(always)]
         fn on_surface(&self) -> bool {
             self.as_ray().starts_on_surface()
+        }
+        /// World origin and direction, in f64 (exact).
+        #[inline(always)]
+        fn world_f64(&self) -> (DVec3, DVec3) {
+            let ray = self.as_ray();
+            (ray.origin().to_dvec3(), ray.dir().to_dvec3())
         }
     }
 
@@ -242,8 +311,9 @@ fn intersect_reduced<const CHECKED: bool>(
 #[must_use]
 pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
     let (t, n) = exact(torus, ray)?;
+    let (o, d) = ray.world_f64();
     // The rotation is orthonormal: its transpose is its inverse.
-    R::Hit::from_exact(t, torus.to_local_rotation_f64().transpose() * n)
+    R::Hit::from_exact(t, torus.to_local_rotation_f64().transpose() * n, o, d)
 }
 
 /// Whether the ray meets the torus at some `t ∈ [t_min, t_max]`: a shadow ray's question.
@@ -262,7 +332,8 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
 #[inline]
 #[must_use]
 pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
-    exact(torus, ray).is_some_and(|(t, n)| R::Hit::from_exact(t, n).is_some())
+    // The same test as `FromExact`: the hit's `t` fits the ray's float.
+    exact(torus, ray).is_some_and(|(t, _)| R::fits(t))
 }
 
 /// The nearest root in range and the torus-frame normal there, for either kind of ray:
