@@ -185,6 +185,10 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
     let mut wavefront = Wavefront::new();
     let mut tally = Tally::default();
     let mut per_family = [0usize; 4];
+    let (mut spawned32, mut escalated32, mut wavefront_escalated) = ([0usize; 4], [0; 4], [0; 4]);
+    // Across rays that leave into the outside (across the hole or over the tube):
+    // (spawned, escalated).
+    let mut across_out = (0usize, 0usize);
     for &nu in &[1.01f32, 1.1, 2.0, 4.0, 16.0, 100.0, 1000.0] {
         for &major in &[1e-3f32, 1.0, 1e3] {
             let torus = random_torus(&mut rng, major, nu);
@@ -192,6 +196,7 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
             for (k, &family) in FAMILIES.iter().enumerate() {
                 let mut rays = Vec::new();
                 let mut wants = Vec::new();
+                let mut proved_wants = Vec::new();
                 for _ in 0..400 {
                     // A primary ray from outside aimed at a surface point; the family's
                     // direction leaves its first hit, relative to the normal there.
@@ -242,11 +247,27 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
                     let got32 = intersect(&torus, &secondary32).map(|h| f64::from(h.t));
                     let what32 = format!("{family:?} nu={nu} R={major} f32 {secondary32:?}");
                     tally.check(&what32, want32, got32, tol32);
+                    // The certified f32 path: proved past the origin's own root where the
+                    // ray leaves into the outside, within 2·10⁻⁴·(R + r) of the root;
+                    // the f64 answer where it escalates.
                     let f32_path = intersect_f32(&torus, &secondary32);
-                    assert!(f32_path.escalated, "an on-surface ray is answered by f64");
-                    assert_eq!(f32_path.hit.map(|h| h.t), got32.map(|t| t as f32));
+                    let tol_proved = tol32 + 2e-4 * size / len;
+                    spawned32[k] += 1;
+                    let leaves = d.dot(hit.normal) > 0.0;
+                    if family == Family::Across && leaves {
+                        across_out.0 += 1;
+                        across_out.1 += usize::from(f32_path.escalated);
+                    }
+                    if f32_path.escalated {
+                        escalated32[k] += 1;
+                        assert_eq!(f32_path.hit.map(|h| h.t), got32.map(|t| t as f32));
+                    } else {
+                        let proved = f32_path.hit.map(|h| f64::from(h.t));
+                        tally.check(&format!("proved {what32}"), want32, proved, tol_proved);
+                    }
                     rays.push(secondary32);
                     wants.push(got32);
+                    proved_wants.push((want32, tol_proved));
                 }
                 // The wavefronts give the scalar answers, for every on-surface ray.
                 let mut hits = Vec::new();
@@ -267,17 +288,12 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
                 assert!(stats.scalar_fallbacks <= rays.len());
                 let stats =
                     wavefront.intersect_f32(&dispatch, BatchCull::Skala, &torus, &rays, &mut hits);
-                for (h, w) in hits.iter().zip(&wants) {
-                    assert_eq!(
-                        h.map(|h| f64::from(h.t)),
-                        *w,
-                        "f32 wavefront, {family:?} nu={nu} R={major}"
-                    );
+                let what = format!("f32 wavefront, {family:?} nu={nu} R={major}");
+                for (h, &(w, tol)) in hits.iter().zip(&proved_wants) {
+                    tally.check(&what, w, h.map(|h| f64::from(h.t)), tol);
                 }
-                assert_eq!(
-                    stats.escalated, stats.kept,
-                    "every kept on-surface ray escalates"
-                );
+                assert_eq!(wavefront.finished_in_f64().len(), stats.escalated);
+                wavefront_escalated[k] += stats.escalated;
             }
         }
     }
@@ -291,6 +307,24 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
         tally.missed.len(),
         tally.wrong_t.len()
     );
+    println!(
+        "certified f32, spawned rays per family {FAMILIES:?}: {spawned32:?}, escalated \
+         (scalar) {escalated32:?}, escalated (f32 wavefront) {wavefront_escalated:?}; \
+         across rays that leave into the outside: {} spawned, {} escalated",
+        across_out.0, across_out.1
+    );
+    // Regression guards on docs/math.md §9's figures: bounces escalate 0.06 % (goal
+    // ≤ 1 %), outward across rays 5.0 % (goal ≤ 1 %, unmet); every ray into the tube
+    // escalates (no inside proof).
+    assert!(
+        escalated32[0] * 100 <= spawned32[0],
+        "bounces: {escalated32:?}"
+    );
+    assert!(
+        across_out.1 * 100 <= 8 * across_out.0,
+        "across: {across_out:?}"
+    );
+    assert_eq!(escalated32[2], spawned32[2], "into the tube");
     let show = |v: &Vec<String>| v[..v.len().min(8)].join("\n");
     assert!(
         tally.self_hits.is_empty(),
@@ -473,13 +507,21 @@ fn what_a_renderer_needs_around_secondary_rays_agrees_with_the_oracle() {
                     stats.scalar_fallbacks, stats.kept,
                     "on-surface rays finish in f64"
                 );
+                // f32 lanes: the rays finished in f64 give the scalar answer; the proved
+                // ones (past their origin's own root) the oracle's, within the bound.
                 let stats =
                     wavefront.intersect_f32(&dispatch, BatchCull::Skala, &torus, &wide, &mut hits);
-                assert_eq!(
-                    hits, scalar,
-                    "f32 wavefront on DRays, {family:?} nu={nu} R={major}"
-                );
                 assert_eq!(wavefront.finished_in_f64().len(), stats.escalated);
+                let size = f64::from(torus.outer_radius());
+                for (i, (h, c)) in hits.iter().zip(&cases).enumerate() {
+                    let what = format!("f32 wavefront on DRays: {}", what(c));
+                    if wavefront.finished_in_f64().contains(&i) {
+                        assert_eq!(*h, scalar[i], "{what}");
+                    } else if let Some(want) = c.want {
+                        let tol = c.tol + 2e-4 * size / c.wide.dir().length();
+                        tally32.check(&what, want, h.map(|h| h.t), tol);
+                    }
+                }
                 // Shadow rays, f64: scalar, culled, wavefront any-hit (f64 and f32 lanes).
                 let mut shadow64 = Vec::new();
                 for c in &cases {
@@ -526,7 +568,14 @@ fn what_a_renderer_needs_around_secondary_rays_agrees_with_the_oracle() {
                     tally32.checked += 1;
                     tally32.check(&format!("f32 {}", what(c)), want, got, tol);
                     let culled = intersect_f32_culled(&SkalaCull, &torus, &ray);
-                    assert_eq!(culled.hit.map(|h| f64::from(h.t)), got, "{}", what(c));
+                    let proved_tol = tol + 2e-4 * size / f64::from(ray.dir().length());
+                    let culled_t = culled.hit.map(|h| f64::from(h.t));
+                    tally32.check(
+                        &format!("f32 culled {}", what(c)),
+                        want,
+                        culled_t,
+                        proved_tol,
+                    );
                     shadow32.extend(shadows(&ray, want, tol));
                 }
                 let rays32: Vec<Ray> = shadow32.iter().map(|s| s.0).collect();
@@ -541,7 +590,6 @@ fn what_a_renderer_needs_around_secondary_rays_agrees_with_the_oracle() {
                     shadow_rays += 1;
                     let a = occluded_f32(&torus, ray);
                     let b = occluded_f32_culled(&SkalaCull, &torus, ray);
-                    assert!(a.escalated, "an on-surface ray is answered by f64");
                     let answers = [a.occluded, b.occluded, blocked32[k]];
                     if answers.iter().any(|a| a != must) {
                         shadow_wrong.push(format!("f32 {answers:?}, want {must}: {ray:?}"));

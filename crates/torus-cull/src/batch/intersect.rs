@@ -9,7 +9,9 @@
 //! scalar answer.
 
 use super::lines::{BLOCK, size_lane_output};
+use super::mask::set_bits;
 use crate::Torus;
+use crate::certified::on_surface::clear_start;
 use crate::geometry::Tube;
 use crate::intersect::TorusRay;
 use crate::intersect::nearest_hit::{NearestRoot, nearest_hit};
@@ -77,6 +79,24 @@ impl RaysF64 {
 
     pub(crate) fn len(&self) -> usize {
         self.len
+    }
+
+    /// For the certified f32 pass: each ray from a surface point that leaves into the
+    /// outside starts past its origin's own root (its t_min raised to
+    /// [`clear_start`], where the only root before is the
+    /// origin's); returns the bits of the other rays from a surface point, which the
+    /// f64 path answers.
+    pub(crate) fn start_past_origins(&mut self, torus: &Torus) -> Vec<u64> {
+        let mut open = vec![0u64; self.on_surface.len()];
+        for j in set_bits(&self.on_surface, self.len) {
+            let (o, d) = self.world(j);
+            let [.., lo, hi] = &mut self.columns;
+            match clear_start(torus, o, d) {
+                Some(start) if lo[j].max(start) <= hi[j] => lo[j] = lo[j].max(start),
+                _ => open[j / BLOCK] |= 1 << (j % BLOCK),
+            }
+        }
+        open
     }
 
     /// Rays `at..at + F64_LANES` as lanes: origin, direction, t_min, t_max.

@@ -264,6 +264,7 @@ impl Wavefront {
         proof: Proof,
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, out);
+        let unproved_on_surface = self.survivors.start_past_origins(torus);
         certify_lanes(
             dispatch,
             torus,
@@ -283,9 +284,9 @@ impl Wavefront {
             );
             out[self.survivors.index[j]] = A::proved(a.t(major, j), normal, o, d);
         }
-        // Escalated: neither proved, or from a surface point (the f64 path divides its
-        // root out). The bits past `len` are padding, never read.
-        let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&self.survivors.on_surface))
+        // Escalated: neither proved, or from a surface point with no proved start past
+        // its origin's root. The bits past `len` are padding, never read.
+        let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
             .map(|((h, m), s)| !(h | m) | s)
             .collect();
         let escalated = self.finish_in_f64(torus, rays, out, &open);

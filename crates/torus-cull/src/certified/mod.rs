@@ -31,6 +31,7 @@
 pub(crate) mod certificate;
 pub(crate) mod line;
 mod occlusion;
+pub(crate) mod on_surface;
 
 use crate::intersect::Hit;
 use crate::num::F32s;
@@ -111,10 +112,14 @@ pub(crate) enum Proof {
 /// The certificate on one ray.
 #[inline]
 pub(crate) fn prove(torus: &Torus, ray: &Ray) -> Proof {
-    // A ray from a surface point needs its origin's root divided out; the f32 proof of
-    // that cubic is not built, so the f64 path answers it.
+    // A ray from a surface point: the literal certificate past its origin's own root
+    // (`on_surface`), where it leaves into the outside.
     if ray.starts_on_surface() {
-        return Proof::Escalate;
+        return match on_surface::start(torus, ray) {
+            on_surface::Start::Literal(literal) => prove(torus, &literal),
+            on_surface::Start::Miss => Proof::Miss,
+            on_surface::Start::Escalate => Proof::Escalate,
+        };
     }
     let Some((columns, back)) = line::of_ray(torus, ray) else {
         return Proof::Escalate;

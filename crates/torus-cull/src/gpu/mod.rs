@@ -405,15 +405,14 @@ impl GpuIntersector {
         let mut shifts: Vec<f64> = Vec::with_capacity(batch.len());
         let mut host = Vec::new();
         for (i, ray) in batch.iter().enumerate() {
-            let packed_ray = frame.pack(ray);
+            let (ray, answer) = frame.kernel_ray(ray);
+            let packed_ray = frame.pack(&ray);
             packed.extend_from_slice(&packed_ray.words);
             shifts.push(packed_ray.t0);
             if !packed_ray.sendable {
-                host.push((i, Escalation::FarOrigin));
-            } else if ray.starts_on_surface() {
-                // The kernel solves the literal ray; its origin's own root is divided out
-                // on the host (`crate::Ray::from_surface`).
-                host.push((i, Escalation::OnSurface));
+                host.push((i, (F32Verdict::Escalate, Some(Escalation::FarOrigin))));
+            } else if let Some(answer) = answer {
+                host.push((i, answer));
             }
         }
         self.queue
@@ -458,8 +457,8 @@ impl GpuIntersector {
                 });
                 out.push(shifted(verdict(w), t0));
             }
-            for (i, why) in host {
-                out[start + i] = (F32Verdict::Escalate, Some(why));
+            for (i, answer) in host {
+                out[start + i] = answer;
             }
         }
         staging.unmap();
@@ -548,8 +547,10 @@ pub enum Escalation {
     EarlierRootNotRuledOut,
     /// The reported t would not be within 1.9·10⁻⁴·(R + r) of the root.
     TErrorTooLarge,
-    /// The ray starts on the surface ([`crate::Ray::from_surface`]): the host divides its
-    /// origin's root out.
+    /// The ray starts on the surface ([`crate::Ray::from_surface`]) and does not leave
+    /// into the outside by a margin (into the tube, or along the tangent plane): the host
+    /// divides its origin's root out in f64. Rays that leave into the outside go to the
+    /// kernel as the literal ray past their origin's root.
     OnSurface,
     /// A code the host does not know.
     Unknown,
@@ -575,6 +576,7 @@ impl Escalation {
 
 /// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
 struct Frame {
+    torus: Torus,
     rows: [Vec3; 3],
     major: f32,
     minor: f32,
@@ -598,12 +600,32 @@ impl Frame {
         let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
         let major_f64 = torus.major_radius_f64();
         Frame {
+            torus: *torus,
             rows: [m.x_axis, m.y_axis, m.z_axis],
             major: torus.major_radius(),
             minor: torus.minor_radius(),
             center: torus.center_f64(),
             major_f64,
             outer: major_f64 + torus.minor_radius_f64(),
+        }
+    }
+
+    /// The ray the kernel is given for `ray`, and the host's own answer where it has one.
+    /// A ray from a surface point goes as the literal ray past its origin's own root
+    /// ([`crate::certified::on_surface`]), or is answered here when it has no such start:
+    /// a proved miss (its range ends first), or escalated (it goes into the tube).
+    fn kernel_ray(&self, ray: &Ray) -> (Ray, Option<(F32Verdict, Option<Escalation>)>) {
+        use crate::certified::on_surface::{Start, start};
+        if !ray.starts_on_surface() {
+            return (*ray, None);
+        }
+        match start(&self.torus, ray) {
+            Start::Literal(literal) => (literal, None),
+            Start::Miss => (*ray, Some((F32Verdict::Miss, None))),
+            Start::Escalate => (
+                *ray,
+                Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
+            ),
         }
     }
 

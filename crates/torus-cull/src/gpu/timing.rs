@@ -29,7 +29,7 @@ pub struct ResidentRays<'g> {
     /// Per ray, what the host adds to the kernel's t ([`Frame::pack`]), and the rays the
     /// kernel is not asked about (far origins, on-surface rays).
     shifts: Vec<f64>,
-    host: Vec<(usize, Escalation)>,
+    host: Vec<(usize, (F32Verdict, Option<Escalation>))>,
     /// Wall time of packing and uploading.
     upload: Duration,
     /// [`COPY_WGSL`] on the kernel's bindings.
@@ -77,13 +77,15 @@ impl GpuIntersector {
             let buffers = self.buffers(batch.len());
             let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
             for (i, ray) in batch.iter().enumerate() {
-                let p = frame.pack(ray);
+                let (ray, answer) = frame.kernel_ray(ray);
+                let p = frame.pack(&ray);
                 packed.extend_from_slice(&p.words);
                 shifts.push(p.t0);
                 if !p.sendable {
-                    host.push((k * CHUNK + i, Escalation::FarOrigin));
-                } else if ray.starts_on_surface() {
-                    host.push((k * CHUNK + i, Escalation::OnSurface));
+                    let far = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
+                    host.push((k * CHUNK + i, far));
+                } else if let Some(answer) = answer {
+                    host.push((k * CHUNK + i, answer));
                 }
             }
             self.queue
@@ -299,8 +301,8 @@ impl ResidentRays<'_> {
             }
             buffers.staging.unmap();
         }
-        for &(i, why) in &self.host {
-            out[i] = (F32Verdict::Escalate, Some(why));
+        for &(i, answer) in &self.host {
+            out[i] = answer;
         }
         Ok((out, start.elapsed()))
     }
