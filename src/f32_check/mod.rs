@@ -19,7 +19,9 @@
 
 pub mod families;
 
-use crate::oracle::{OracleClass, Query, reference_roots};
+use crate::oracle::{
+    OracleClass, Query, classify_from_surface, first_crossing_from_surface, reference_roots,
+};
 use families::Family;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
@@ -51,12 +53,24 @@ pub struct Labeled {
 }
 
 impl Labeled {
-    /// The oracle's label of `ray`.
+    /// The oracle's label of `ray`; for a ray from a surface point
+    /// ([`Ray::from_surface`]), by the rule of docs/math.md §9 (the origin's own crossing
+    /// excluded, [`classify_from_surface`]).
     pub fn new(torus: Torus, ray: Ray) -> Labeled {
         let query = Query::ray(&torus, &ray);
-        let label = query.classify();
+        let (label, first) = if ray.starts_on_surface() {
+            (
+                classify_from_surface(&query),
+                first_crossing_from_surface as fn(&Query) -> Option<f64>,
+            )
+        } else {
+            (
+                query.classify(),
+                first_root_in_range as fn(&Query) -> Option<f64>,
+            )
+        };
         let first_root = if label.class == OracleClass::Hit {
-            reference_roots(&query).first().copied()
+            first(&query)
         } else {
             None
         };
@@ -257,6 +271,11 @@ pub fn tally(rays: &[Labeled], intersector: impl Fn(&Torus, &Ray) -> Answer) -> 
     };
     tally.t_error = ErrorStats::of(errors);
     tally
+}
+
+/// The first reference root in the query's range.
+fn first_root_in_range(query: &Query) -> Option<f64> {
+    reference_roots(query).first().copied()
 }
 
 /// Nanoseconds per ray, the minimum over interleaved rounds on one thread.

@@ -32,11 +32,8 @@ pub fn classify_from_surface(query: &Query) -> OracleLabel {
         class: OracleClass::Ambiguous,
         margin: 0.0,
     };
-    let (delta, normal) = off_surface(query);
     let len = query.d.length();
-    let cos0 = normal.dot(query.d / len).abs().max(1e-12);
-    let window = 4.0 * (delta + 1e-11 * size) / cos0 / len;
-    let clear = window + 10.0 * AMBIGUITY_REL * size / cos0 / len;
+    let (window, clear) = windows(query);
     let roots = reference_roots(&query.over(f64::NEG_INFINITY, f64::INFINITY));
     let Some(own) = roots
         .iter()
@@ -76,6 +73,27 @@ pub fn classify_from_surface(query: &Query) -> OracleLabel {
         },
         margin: outside.margin,
     }
+}
+
+/// The origin's own window `w` and the distance `w′` past which the ray has left the
+/// band around the surface near its origin (the module docs), in units of `t`.
+fn windows(query: &Query) -> (f64, f64) {
+    let size = query.major + query.minor;
+    let (delta, normal) = off_surface(query);
+    let len = query.d.length();
+    let cos0 = normal.dot(query.d / len).abs().max(1e-12);
+    let window = 4.0 * (delta + 1e-11 * size) / cos0 / len;
+    (window, window + 10.0 * AMBIGUITY_REL * size / cos0 / len)
+}
+
+/// For a ray that [`classify_from_surface`] labels a hit: its first crossing after the
+/// origin's own, the first reference root in `[max(t_min, w′), t_max]` (units of `t`).
+pub fn first_crossing_from_surface(query: &Query) -> Option<f64> {
+    let (_, clear) = windows(query);
+    let lo = query.t_min.max(clear);
+    reference_roots(&query.over(f64::NEG_INFINITY, f64::INFINITY))
+        .into_iter()
+        .find(|&t| t >= lo && t <= query.t_max)
 }
 
 /// The origin's distance from the surface and the unit outward normal at its nearest
