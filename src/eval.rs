@@ -20,6 +20,7 @@
 //! non-finite direction) ends it with an error naming the input and the line number, and
 //! the command exits non-zero: no answer is ever silently wrong or skipped.
 
+use crate::number::Num;
 use crate::oracle::{OracleClass, OracleLabel, Query, classify};
 use glam::{DVec3, Vec3};
 use std::fmt;
@@ -210,7 +211,7 @@ fn evaluate(
         let ray = parse_dray(line)?;
         return Ok(Row {
             label: Query::dray(torus, &ray).classify(),
-            t_hit: intersect(torus, &ray).map(|hit| hit.t.to_string()),
+            t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
             line: torus.dline_to_local(&ray),
         });
@@ -229,7 +230,7 @@ fn evaluate(
     };
     Ok(Row {
         label: classify(torus, &ray),
-        t_hit: t.map(|t| t.to_string()),
+        t_hit: t.map(|t| Num::from(t).to_string()),
         escalated,
         // The culls' own input: far origins go to the foot point, as in a renderer.
         line: torus.line_to_local(&ray),
@@ -283,10 +284,11 @@ fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<torus_cull::F32Hit>,
 
 /// The six numbers of a row in the float type `T` (each finite), and the fields as typed
 /// (for messages).
-fn parse_row<T: std::str::FromStr + Copy + Default>(
-    line: &str,
+fn parse_row<'a, T: std::str::FromStr + Copy + Default>(
+    line: &'a str,
     is_finite: fn(T) -> bool,
-) -> Result<([T; 6], Vec<&str>), String> {
+    max: (&'static str, Num),
+) -> Result<([T; 6], Vec<&'a str>), String> {
     const NAMES: [&str; 6] = ["ox", "oy", "oz", "dx", "dy", "dz"];
     let fields: Vec<&str> = line.split(',').map(str::trim).collect();
     if fields.len() != NAMES.len() {
@@ -301,10 +303,27 @@ fn parse_row<T: std::str::FromStr + Copy + Default>(
             .parse::<T>()
             .map_err(|_| format!("column {name}: '{field}' is not a number"))?;
         if !is_finite(*slot) {
-            return Err(format!("column {name}: {field} is not finite"));
+            return Err(not_finite(name, field, max));
         }
     }
     Ok((v, fields))
+}
+
+/// Why `field` (column `name`) did not give a finite number: it is `inf` or `NaN` as
+/// typed, or a number beyond the precision's largest finite value `max` (`1e39` in f32,
+/// which f64 would read).
+fn not_finite(name: &str, field: &str, (precision, max): (&str, Num)) -> String {
+    let word = field.trim_start_matches(['+', '-']).to_ascii_lowercase();
+    if matches!(word.as_str(), "inf" | "infinity" | "nan") {
+        return format!("column {name}: {field} is not finite (allowed: a finite number)");
+    }
+    let hint = if precision == "f32" {
+        "; the rays are read as f32 (--precision f32, --exact f32 or gpu): \
+         --precision f64 --exact f64 reads them as f64"
+    } else {
+        ""
+    };
+    format!("column {name}: {field} is out of {precision} range (allowed: |value| <= {max}){hint}")
 }
 
 /// How a refused direction is reported: the error, and the direction as typed.
@@ -316,13 +335,13 @@ fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
 }
 
 fn parse_ray(line: &str) -> Result<Ray, String> {
-    let (v, fields) = parse_row::<f32>(line, f32::is_finite)?;
+    let (v, fields) = parse_row::<f32>(line, f32::is_finite, ("f32", Num::from(f32::MAX)))?;
     Ray::new(Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]))
         .map_err(|e| as_typed(e, &fields))
 }
 
 fn parse_dray(line: &str) -> Result<DRay, String> {
-    let (v, fields) = parse_row::<f64>(line, f64::is_finite)?;
+    let (v, fields) = parse_row::<f64>(line, f64::is_finite, ("f64", Num(f64::MAX)))?;
     DRay::new(DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]))
         .map_err(|e| as_typed(e, &fields))
 }

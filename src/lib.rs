@@ -23,6 +23,7 @@ pub mod errata;
 pub mod eval;
 pub mod f32_check;
 pub mod measure;
+pub mod number;
 pub mod oracle;
 pub mod output;
 pub mod paired;

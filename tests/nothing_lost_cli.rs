@@ -573,3 +573,95 @@ fn progress_meta_and_plots_of_time_files() {
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("nothing to plot"), "{}", stderr(&o));
 }
+
+/// Issue 29: `--major NaN`/`inf`/`-inf` are not finite (not "too small"); a CSV value
+/// beyond f32 with f32 rays is out of f32 range (not "not finite"), with the range; huge
+/// values are written in scientific notation, not as 300 digits.
+#[test]
+fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("rays.csv");
+    std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
+    let rays = rays.to_str().unwrap();
+    for bad in ["NaN", "inf", "-inf"] {
+        let o = torus_cull(&["eval", "--major", bad, "--minor", "1", "--rays", rays]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {err}");
+        assert!(
+            err.contains("--major") && err.contains(&format!("{bad} is not a finite number")),
+            "{bad}: {err}"
+        );
+        assert!(err.contains("3.4028235e38"), "{bad}: no range in {err}");
+        assert!(!err.contains("too small"), "{bad}: {err}");
+    }
+    let big = dir.path().join("big.csv");
+    std::fs::write(&big, "ox,oy,oz,dx,dy,dz\n1e39,0,0,-1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+        "--precision",
+        "f32",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("column ox: 1e39 is out of f32 range (allowed: |value| <= 3.4028235e38)"),
+        "{err}"
+    );
+    assert!(!err.contains("not finite"), "{err}");
+    // The same row in f64 is read, and its t_hit (about 1e39) is one short word.
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = String::from_utf8_lossy(&o.stdout).into_owned();
+    let row = csv.lines().nth(1).unwrap();
+    let t_hit = row.split(',').nth(3).unwrap();
+    assert!(t_hit.contains('e') && t_hit.len() < 30, "{row}");
+    assert!(
+        (t_hit.parse::<f64>().unwrap() / 1e39 - 1.0).abs() < 1e-9,
+        "{row}"
+    );
+    // `inf` typed in a CSV is still "not finite".
+    std::fs::write(&big, "ox,oy,oz,dx,dy,dz\ninf,0,0,-1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+    ]);
+    assert!(
+        stderr(&o).contains("column ox: inf is not finite"),
+        "{}",
+        stderr(&o)
+    );
+    // ν typed as 1e300 is named as typed, not as 301 digits.
+    for args in [
+        &[
+            "render", "--scene", "chain", "--nu", "1e300", "--out", "x.png",
+        ][..],
+        &["time", "--nu", "1e300"][..],
+    ] {
+        let o = torus_cull(args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("1e300") && !err.contains("0000000000"),
+            "{err}"
+        );
+    }
+}

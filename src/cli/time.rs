@@ -272,7 +272,8 @@ fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>,
         if !workload.nu.contains(&nu) {
             let have: Vec<String> = workload.nu.iter().map(f64::to_string).collect();
             return Err(format!(
-                "--nu {nu} is not in workload {} (allowed: {})",
+                "--nu {} is not in workload {} (allowed: {})",
+                torus_cull_lab::number::Num(nu),
                 file.display(),
                 have.join(", ")
             ));
