@@ -665,3 +665,22 @@ fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
         );
     }
 }
+
+/// Issue 29: `--threads 0` is refused before any work, naming the option and the range.
+#[test]
+fn zero_threads_is_refused_with_the_range() {
+    for command in [
+        &["run", "--workload", "quick", "--no-plots"][..],
+        &["f32-check"][..],
+    ] {
+        let started = Instant::now();
+        let mut args = command.to_vec();
+        args.extend(["--threads", "0", "--out", "/nonexistent-dir-h29/x.json"]);
+        let o = torus_cull(&args);
+        refused_before_work(
+            &o,
+            started,
+            &["--threads 0 is invalid", "allowed: 1 ..= 1024"],
+        );
+    }
+}

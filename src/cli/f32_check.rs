@@ -25,7 +25,7 @@ pub struct F32CheckArgs {
     /// directory must exist.
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Worker threads for the oracle's labels (default: available cores); the timings
+    /// Worker threads for the oracle's labels, 1 ..= 1024 (default: available cores); the timings
     /// run on one.
     #[arg(long)]
     threads: Option<usize>,
@@ -45,10 +45,7 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         )
         .into());
     }
-    let threads = args
-        .threads
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
+    let threads = crate::threads::pick(args.threads)?;
     let path = match args.out {
         Some(path) => path,
         None => {
