@@ -207,7 +207,7 @@ fn an_interrupted_eval_leaves_no_temp_file() {
             .arg(&out)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())
-            .stderr(Stdio::null())
+            .stderr(Stdio::piped())
             .spawn()
             .unwrap();
         // Some rows, then the input stays open: eval is mid-run when the signal comes.
@@ -224,9 +224,18 @@ fn an_interrupted_eval_leaves_no_temp_file() {
             .status()
             .unwrap();
         assert!(killed.success());
+        let mut stderr = child.stderr.take().unwrap();
         let status = child.wait().unwrap();
         drop(stdin);
         assert!(!status.success(), "SIG{signal}: {status:?}");
+        // Issue 29: one line says what happened (an exit status alone said nothing).
+        let mut err = String::new();
+        stderr.read_to_string(&mut err).unwrap();
+        assert!(
+            err.contains(&format!("interrupted by SIG{signal}"))
+                && err.contains("no partial output"),
+            "SIG{signal}: {err}"
+        );
         assert_eq!(temp_files(dir.path()), Vec::<String>::new(), "SIG{signal}");
         assert!(
             !out.exists(),

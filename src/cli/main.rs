@@ -17,6 +17,7 @@ mod f32_check;
 mod plot;
 mod render;
 mod run;
+mod threads;
 mod time;
 
 #[derive(Parser)]
@@ -42,7 +43,7 @@ enum Command {
         /// plots go next to it.
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Worker threads (default: available cores).
+        /// Worker threads, 1 ..= 1024 (default: available cores).
         #[arg(long)]
         threads: Option<usize>,
         /// Skip the SVG plots.
@@ -315,8 +316,9 @@ macro_rules! outln {
 }
 pub(crate) use {out, outln};
 
-/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, then die of
-/// the signal as if there were no handler (so the caller sees the usual status).
+/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, say so in
+/// one line on stderr, then die of the signal as if there were no handler (so the caller
+/// sees the usual status, 130 for Ctrl-C in a shell).
 fn remove_temp_files_on_signals() {
     #[cfg(unix)]
     {
@@ -326,10 +328,28 @@ fn remove_temp_files_on_signals() {
             std::thread::spawn(move || {
                 if let Some(signal) = signals.forever().next() {
                     torus_cull_lab::output::remove_pending();
+                    // One line, so that a status of 128 + n is not the only trace.
+                    eprintln!(
+                        "torus-cull: interrupted by {}: stopped; no partial output was \
+                         left (files finished before it are kept)",
+                        signal_name(signal)
+                    );
                     let _ = signal_hook::low_level::emulate_default_handler(signal);
                     std::process::exit(128 + signal);
                 }
             });
         }
+    }
+}
+
+/// The name of a signal the handler above catches.
+#[cfg(unix)]
+fn signal_name(signal: i32) -> &'static str {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    match signal {
+        SIGINT => "SIGINT (Ctrl-C)",
+        SIGTERM => "SIGTERM",
+        SIGHUP => "SIGHUP",
+        _ => "a signal",
     }
 }
