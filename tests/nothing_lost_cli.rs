@@ -203,6 +203,7 @@ fn time_names_its_default_file_after_the_workload() {
                 workload.to_str().unwrap(),
                 "--seconds",
                 "0.5",
+                "--no-plots",
             ])
             .current_dir(&cwd)
             .output()
@@ -545,6 +546,15 @@ fn progress_meta_and_plots_of_time_files() {
     assert_eq!(sizes.timing_rays, Some(200));
     assert_eq!(sizes.timed_nu, vec![2.0, 8.0]);
     assert_eq!(t.meta.threads, Some(1));
+    // Issue 29: `time` draws its own plots, as the README says every command does.
+    let svg = dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg");
+    assert!(svg.is_file(), "time wrote no plot");
+    assert!(
+        String::from_utf8_lossy(&o.stdout).contains("plots to"),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    std::fs::remove_file(&svg).unwrap();
 
     let o = torus_cull(&["plot", time_json.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -683,4 +693,38 @@ fn zero_threads_is_refused_with_the_range() {
             &["--threads 0 is invalid", "allowed: 1 ..= 1024"],
         );
     }
+}
+
+/// Issue 29: `time --mode both` with a cull that has no batch form says on stderr why its
+/// batch tables are missing, instead of dropping them without a word.
+#[test]
+fn time_says_why_a_cull_has_no_batch_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--mode",
+        "both",
+        "--culls",
+        "discriminant_f64",
+        "--seconds",
+        "0.3",
+        "--no-plots",
+        "--out",
+        dir.path().join("t.json").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(
+            "discriminant_f64 has no batch form and is timed one ray at a time only, so no \
+             batch table is printed"
+        ),
+        "{}",
+        stderr(&o)
+    );
+    // --no-plots: the results file alone.
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(files.len(), 2, "{files:?}");
 }

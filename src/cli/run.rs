@@ -125,8 +125,11 @@ fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io
     )
 }
 
-/// The SVG charts, next to the results file `path` and named after it.
-fn write_plots(results: &Results, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+pub(crate) fn write_plots(
+    results: &Results,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
     let dir = path
         .parent()
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);

@@ -62,6 +62,10 @@ pub struct TimeArgs {
     /// too, but the output says so and claims no GPU speed.
     #[arg(long, value_enum, default_value_t = Device::Cpu)]
     device: Device,
+    /// Skip the SVG plots (by default the paired ratios are drawn against ν, with their
+    /// intervals, next to the results file).
+    #[arg(long)]
+    no_plots: bool,
 }
 
 /// Where `torus-cull time` measures.
@@ -112,13 +116,47 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut options = PairedOptions::total(args.seconds, batch);
     if args.mode == Mode::Both {
         options.batch_isa = Some(dispatch.isa());
+        if let Some(note) = no_batch_form_note(&culls) {
+            eprintln!("{note}");
+        }
     }
     let records = time_with_progress(&workload, &nus, &culls, &options)?;
     let results = ratio_results(&workload, records, &nus, &options);
     out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
+    if !args.no_plots {
+        crate::run::write_plots(&results, &path)?;
+    }
     Ok(ExitCode::SUCCESS)
+}
+
+/// With `--mode both`, what the batch tables will lack and why: the culls asked for with
+/// no batch form (`discriminant_f64`, whose point is the scalar f64 discriminant) are timed
+/// one ray at a time only. `None` when every cull asked for has a batch form.
+fn no_batch_form_note(culls: &[CullKind]) -> Option<String> {
+    let scalar_only: Vec<&str> = culls
+        .iter()
+        .filter(|c| c.batched().is_none())
+        .map(|c| c.name())
+        .collect();
+    if scalar_only.is_empty() {
+        return None;
+    }
+    let batched: Vec<&str> = culls
+        .iter()
+        .filter(|c| c.batched().is_some())
+        .map(|c| c.name())
+        .collect();
+    let rest = if batched.is_empty() {
+        ", so no batch table is printed (no cull asked for has a batch form)".to_string()
+    } else {
+        format!("; the batch tables cover {}", batched.join(", "))
+    };
+    Some(format!(
+        "note: --mode both: {} has no batch form and is timed one ray at a time only{rest}",
+        scalar_only.join(", ")
+    ))
 }
 
 /// `--seconds`: positive, finite and at most [`MAX_SECONDS`].
