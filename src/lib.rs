@@ -32,6 +32,7 @@ pub mod plot;
 pub mod render;
 pub mod report;
 pub mod results;
+pub mod results_file;
 pub mod scene;
 pub mod solver_suite;
 pub mod workload;

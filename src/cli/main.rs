@@ -57,8 +57,8 @@ enum Command {
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
     /// 95% intervals), in about 30 s.
     Time(time::TimeArgs),
-    /// Diff two results files; exits 1 on a regression or when records of OLD are
-    /// missing from NEW, 2 on unusable input (for CI gates).
+    /// Diff two results files (or two f32-check files); exits 1 on a regression or when
+    /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
         /// The older results JSON.
         old: PathBuf,
@@ -73,6 +73,11 @@ enum Command {
         /// Records of OLD missing from NEW only warn instead of failing (exit 1).
         #[arg(long)]
         allow_missing: bool,
+        /// Give timing verdicts even when the files were measured on different machines
+        /// (`meta.cpu`, `meta.isa`, `meta.device` or the architecture differ); without it
+        /// such timings are shown but decide nothing.
+        #[arg(long)]
+        across_machines: bool,
     },
     /// Render a many-torus scene and its cull map (PNG).
     Render {
@@ -184,7 +189,17 @@ fn main() -> ExitCode {
             threshold,
             only_changes,
             allow_missing,
-        } => compare::compare(&old, &new, threshold, only_changes, allow_missing),
+            across_machines,
+        } => compare::compare(
+            &old,
+            &new,
+            &compare::CompareOptions {
+                threshold,
+                only_changes,
+                allow_missing,
+                across_machines,
+            },
+        ),
         Command::Eval {
             major,
             minor,
