@@ -88,10 +88,16 @@ fn draw_chart(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let lines: Vec<&Line> = lines.iter().filter(|l| !l.pts.is_empty()).collect();
     let ([x_min, x_max], y_range) = axis_ranges(&lines, y_from_zero).ok_or("nothing to plot")?;
-    let root = SVGBackend::with_string(svg, (900, 480)).into_drawing_area();
+    // The legend gets its own strip, so it never hides a line, and the strip is as wide
+    // as its longest entry, so no name is cut at the right edge.
+    let legend_width = (0..lines.len())
+        .map(|i| LEGEND_TEXT_X + text_width(&legend_text(i, &lines)))
+        .max()
+        .unwrap_or(0)
+        .max(160);
+    let root = SVGBackend::with_string(svg, (PLOT_WIDTH + legend_width, 480)).into_drawing_area();
     root.fill(&WHITE)?;
-    // The legend gets its own strip, so it never hides a line.
-    let (plot_area, legend_area) = root.split_horizontally(740);
+    let (plot_area, legend_area) = root.split_horizontally(PLOT_WIDTH);
     let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 17))
         .margin(12)
@@ -114,7 +120,11 @@ fn draw_chart(
     for (i, line) in lines.iter().enumerate() {
         let colour = COLOURS[line.colour % COLOURS.len()];
         let xy = || line.pts.iter().map(|&(x, y, _)| (x, y));
-        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(2)))?;
+        // A line that later lines coincide with is drawn wider, 3 px per twin, so that
+        // each twin drawn over it leaves a band of its colour showing on either side.
+        let twins_after = lines[i + 1..].iter().filter(|l| l.pts == line.pts).count();
+        let width = 2 + 3 * twins_after as u32;
+        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(width)))?;
         draw_error_bars(&mut chart, line, colour)?;
         draw_markers(&mut chart, i, xy(), colour)?;
         draw_legend_entry(&legend_area, i, &lines, colour)?;
@@ -183,31 +193,49 @@ fn draw_error_bars(
 }
 
 /// Line `i`'s legend entry: its stroke, its marker and its name, with the earlier line it
-/// coincides with, if any (the twin hides under it on the chart).
+/// coincides with, if any (on the chart the earlier one is drawn wider underneath).
 fn draw_legend_entry(
     area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
     i: usize,
     lines: &[&Line],
     colour: RGBColor,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let line = lines[i];
     let y = 60 + 24 * i as i32;
     area.draw(&PathElement::new(
         vec![(8, y), (32, y)],
         colour.stroke_width(3),
     ))?;
     legend_marker(area, i, (20, y), colour)?;
+    area.draw(&Text::new(
+        legend_text(i, lines),
+        (LEGEND_TEXT_X as i32, y - 8),
+        ("sans-serif", 13).into_font().color(&BLACK),
+    ))?;
+    Ok(())
+}
+
+/// The plot's width in pixels; the legend strip comes to its right.
+const PLOT_WIDTH: u32 = 740;
+
+/// Where a legend entry's text starts in the strip, pixels.
+const LEGEND_TEXT_X: u32 = 40;
+
+/// Line `i`'s legend text: its name, and the earlier line it coincides with, if any.
+fn legend_text(i: usize, lines: &[&Line]) -> String {
+    let line = lines[i];
     let same_as = lines[..i]
         .iter()
         .find(|earlier| earlier.pts == line.pts)
         .map(|earlier| format!(" (= {})", earlier.name))
         .unwrap_or_default();
-    area.draw(&Text::new(
-        format!("{}{same_as}", line.name),
-        (40, y - 8),
-        ("sans-serif", 13).into_font().color(&BLACK),
-    ))?;
-    Ok(())
+    format!("{}{same_as}", line.name)
+}
+
+/// A generous width of `text` in 13 px sans-serif, pixels: 8 px a character (the widest
+/// common glyphs, `m` and `w`, are about 10, most are 6-7) and a margin, so an entry is
+/// never cut where the SVG's viewer picks a wide font.
+fn text_width(text: &str) -> u32 {
+    8 * text.chars().count() as u32 + 12
 }
 
 /// The markers of line `i`: a circle, triangle, cross or square in turn, so lines that
@@ -609,6 +637,43 @@ mod tests {
             "{t:?}"
         );
         assert!(!t.iter().any(|x| x.contains("no_batch_data")), "{t:?}");
+        // Issue 29: the canvas is wide enough for the longest entry (it was cut at
+        // "discriminant (= dis"), and the twin under another line is drawn wider, so both
+        // colours show.
+        let width: u32 = svg
+            .split("width=\"")
+            .nth(1)
+            .and_then(|w| w.split('"').next())
+            .and_then(|w| w.parse().ok())
+            .unwrap();
+        let longest = "discriminant (= discriminant_f64)".len() as u32;
+        assert!(width >= PLOT_WIDTH + LEGEND_TEXT_X + 7 * longest, "{width}");
+        // The widest stroke of a colour's polylines inside the plot (the legend's sample
+        // strokes, right of PLOT_WIDTH, are 3 px for every line).
+        let strokes = |colour: &str| {
+            svg.split('<')
+                .filter(|e| e.starts_with("polyline") && e.contains(colour))
+                .filter(|e| {
+                    let x = e
+                        .split("points=\"")
+                        .nth(1)
+                        .and_then(|p| p.split(',').next());
+                    x.and_then(|x| x.parse::<u32>().ok())
+                        .is_some_and(|x| x < PLOT_WIDTH)
+                })
+                .filter_map(|e| {
+                    e.split("stroke-width=\"")
+                        .nth(1)?
+                        .split('"')
+                        .next()?
+                        .parse::<u32>()
+                        .ok()
+                })
+                .max()
+        };
+        // discriminant_f64 (COLOURS[0]) lies under discriminant (COLOURS[2]).
+        assert_eq!(strokes("stroke=\"#787878\""), Some(5), "{svg}");
+        assert_eq!(strokes("stroke=\"#FF7F0E\""), Some(2), "{svg}");
         assert!(t.iter().any(|x| x.contains("abc1234")), "{t:?}");
         let without = {
             let mut s = String::new();
