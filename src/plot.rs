@@ -283,7 +283,7 @@ fn legend_marker(
     Ok(())
 }
 
-/// Every chart a results file supports, written to `out_dir` with file names starting
+/// Every chart a results file supports, written to `out_dir` (which must exist) with file names starting
 /// with `stem`; returns the paths written. Titles name the workload and the commit;
 /// timings and paired ratios carry their 95 % intervals as error bars.
 pub fn plot_results(
@@ -291,7 +291,16 @@ pub fn plot_results(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+    // The directory is the caller's: like every output, a missing one is not created.
+    // An empty path (the parent of a bare file name) is the current directory.
+    let out_dir = if out_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        out_dir
+    };
+    if !out_dir.is_dir() {
+        return Err(format!("{}: no such directory", out_dir.display()).into());
+    }
     let mut charts = Charts {
         out_dir,
         stem,

@@ -87,7 +87,8 @@ enum Command {
         /// ν = R/r of the scene's tori (> 1).
         #[arg(long)]
         nu: f64,
-        /// Output PNG; the cull map goes next to it as <stem>-cullmap.png.
+        /// Output PNG (a name ending in .png); the cull map goes next to it as
+        /// <stem>-cullmap.png.
         #[arg(long)]
         out: PathBuf,
         /// Image side in pixels.
@@ -100,11 +101,11 @@ enum Command {
         #[arg(long, default_value_t = 20261121)]
         seed: u64,
     },
-    /// Write the SVG charts of a results file.
+    /// Write the SVG charts of a results file (run, time, cargo bench) or an f32-check file.
     Plot {
         /// Results JSON.
         file: PathBuf,
-        /// Where to write the SVGs (default: next to the file).
+        /// Where to write the SVGs, an existing directory (default: next to the file).
         #[arg(long)]
         out_dir: Option<PathBuf>,
     },
