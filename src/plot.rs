@@ -2,8 +2,8 @@
 //! against ν.
 
 use crate::results::{
-    BvhRecord, CPU_DEVICE, F64_PRECISION, F64_REFERENCE, RatioRecord, RejectionRecord, Results,
-    TimingRecord,
+    BvhRecord, CPU_DEVICE, EstimateRecord, F64_PRECISION, F64_REFERENCE, RatioRecord,
+    RejectionRecord, Results, TimingRecord,
 };
 use plotters::prelude::*;
 use std::collections::BTreeMap;
@@ -316,7 +316,70 @@ pub fn plot_results(
     timing_charts(&results.timing, &mut charts)?;
     bvh_charts(&results.bvh, &mut charts)?;
     ratio_charts(&results.ratio, &mut charts)?;
+    // A file with only estimates (`time --device gpu`, a filtered bench) is drawn from
+    // them; in a complete bench file they repeat the timing records and are not.
+    if results.timing.is_empty() && results.ratio.is_empty() {
+        estimate_charts(&results.estimates, &mut charts)?;
+    }
     Ok(charts.written)
+}
+
+/// An estimate whose benchmark id reads `group/cull/ν` (`gpu_ns-hole/cychosz/2`,
+/// `total_ns-hole/skala/2`): one point of a chart per group.
+struct Estimate<'a> {
+    group: &'a str,
+    cull: &'a str,
+    nu: f64,
+    record: &'a EstimateRecord,
+}
+
+impl<'a> Estimate<'a> {
+    /// `None` for an id of another shape (the solver and BVH benchmarks).
+    fn of(record: &'a EstimateRecord) -> Option<Estimate<'a>> {
+        let mut parts = record.benchmark.split('/');
+        let (group, cull, nu) = (parts.next()?, parts.next()?, parts.next()?);
+        let nu: f64 = nu.parse().ok()?;
+        (parts.next().is_none() && nu.is_finite()).then_some(Estimate {
+            group,
+            cull,
+            nu,
+            record,
+        })
+    }
+}
+
+impl Record for Estimate<'_> {
+    fn group(&self) -> String {
+        self.group.to_string()
+    }
+    fn cull(&self) -> &str {
+        self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+/// One chart per estimate group: ns per element against ν, one line per cull, with the
+/// record's interval.
+fn estimate_charts(
+    records: &[EstimateRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let estimates: Vec<Estimate> = records.iter().filter_map(Estimate::of).collect();
+    for group in ordered(estimates.iter().map(Record::group)) {
+        let pts = lines(&estimates, &group, |e| {
+            Some((e.record.ns_per_element, Some(e.record.ns_per_element_ci)))
+        });
+        charts.chart(
+            format!("estimates-{group}"),
+            format!("{group}: ns per element [interval]"),
+            "ns per element",
+            pts,
+            true,
+        )?;
+    }
+    Ok(())
 }
 
 /// Where a results file's charts go, and the ones written so far.

@@ -452,6 +452,11 @@ fn time_device_gpu_names_the_adapter() {
             .iter()
             .all(|e| e.benchmark.starts_with("gpu_ns-") && e.ns_per_element > 0.0)
     );
+    // Issue 29: its plots are written next to it, one chart per case.
+    assert!(
+        dir.path().join("time-estimates-gpu_ns-hole.svg").is_file(),
+        "{stdout}"
+    );
 }
 
 /// Rays from surface points (`Torus::spawn`) go to the host, which divides the origin's

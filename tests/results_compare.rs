@@ -691,3 +691,57 @@ fn f32_check_files_compare_and_mixed_kinds_are_refused() {
         "{err}"
     );
 }
+
+/// Issue 29: a file with only `estimates` (`time --device gpu`, a filtered bench) is
+/// plotted and compared by them (it was "nothing to plot" and "share no record"); an
+/// adapter change is a machine change.
+#[test]
+fn estimate_only_files_are_plotted_and_compared() {
+    use torus_cull_lab::results::EstimateRecord;
+    let gpu = |ns: f64, device: &str| {
+        let mut r = sample();
+        r.rejection.clear();
+        r.timing.clear();
+        r.bvh.clear();
+        r.meta.tool = Some("time".into());
+        r.meta.device = Some(device.into());
+        r.estimates = [2.0, 8.0]
+            .iter()
+            .flat_map(|nu| {
+                ["none", "cychosz"].map(|cull| EstimateRecord {
+                    benchmark: format!("gpu_ns-hole/{cull}/{nu}"),
+                    elements: 1024,
+                    ns_per_element: ns,
+                    ns_per_element_ci: [ns * 0.99, ns * 1.01],
+                })
+            })
+            .collect();
+        r
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    gpu(2.0, "RTX").save(&a).unwrap();
+    gpu(3.0, "RTX").save(&b).unwrap();
+    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("gpu_ns-hole/cychosz/2") && out.contains("4 regressions"),
+        "{out}"
+    );
+    gpu(3.0, "lavapipe").save(Path::new(b)).unwrap();
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("meta.device: RTX vs lavapipe"), "{out}");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["plot", a])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = dir.path().join("a-estimates-gpu_ns-hole.svg");
+    let text = std::fs::read_to_string(&svg).expect("an estimates chart");
+    assert!(
+        text.contains("cychosz") && text.contains("ns per element"),
+        "{text}"
+    );
+}

@@ -27,7 +27,7 @@ mod rows;
 
 pub use rows::{Report, Row};
 
-use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
+use crate::results::{BvhRecord, EstimateRecord, RejectionRecord, Results, TimingRecord};
 use rows::{TIMED_SECTIONS, first_duplicate, noise_or_faster, pair_up};
 use std::fmt::Write;
 
@@ -61,7 +61,11 @@ pub fn check_unique(r: &Results) -> Result<(), String> {
     twice("rejection", first_duplicate(&r.rejection, rejection_key))?;
     twice("timing", first_duplicate(&r.timing, timing_key))?;
     twice("bvh", first_duplicate(&r.bvh, bvh_key))?;
-    twice("ratio", first_duplicate(&r.ratio, ratio::ratio_key))
+    twice("ratio", first_duplicate(&r.ratio, ratio::ratio_key))?;
+    twice(
+        "estimate",
+        first_duplicate(&r.estimates, |e| e.benchmark.clone()),
+    )
 }
 
 /// Compare `old` with `new`; `threshold` is a fraction (0.10 for 10 %). Timing verdicts
@@ -105,6 +109,20 @@ pub fn compare_across(
     }
     for (key, o, n) in pair_up(&old.bvh, &new.bvh, bvh_key, &mut report, "bvh") {
         report.rows.push(bvh_row(key, o, n, threshold));
+    }
+    // Estimates repeat the timing records in a complete bench file; a file with only
+    // estimates (`time --device gpu`, a filtered bench) is compared by them.
+    let timed = |r: &Results| !r.timing.is_empty() || !r.ratio.is_empty();
+    if !timed(old) && !timed(new) {
+        for (key, o, n) in pair_up(
+            &old.estimates,
+            &new.estimates,
+            |e: &EstimateRecord| e.benchmark.clone(),
+            &mut report,
+            "estimate",
+        ) {
+            report.rows.push(estimate_row(key, o, n, threshold));
+        }
     }
     ratio::ratio_rows(old, new, threshold, &mut report);
     judge_across_machines(&mut report);
@@ -233,6 +251,34 @@ fn timing_row(key: String, o: &TimingRecord, n: &TimingRecord, threshold: f64) -
         metric: "total_ns",
         old: o.total_ns,
         new: n.total_ns,
+        flags,
+        regression,
+    }
+}
+
+/// An estimate (ns per element with its interval): slower by more than the threshold with
+/// disjoint intervals is a regression, as for a criterion timing.
+fn estimate_row(key: String, o: &EstimateRecord, n: &EstimateRecord, threshold: f64) -> Row {
+    let change = n.ns_per_element / o.ns_per_element - 1.0;
+    let (a, b) = (o.ns_per_element_ci, n.ns_per_element_ci);
+    let disjoint = b[0] > a[1] || b[1] < a[0];
+    let regression = change > threshold && disjoint;
+    let flags = if regression {
+        vec![format!(
+            "REGRESSION: {:+.1}% slower, intervals disjoint",
+            change * 100.0
+        )]
+    } else {
+        noise_or_faster(change, threshold, disjoint)
+            .into_iter()
+            .collect()
+    };
+    Row {
+        section: "estimate",
+        key,
+        metric: "ns_per_element",
+        old: o.ns_per_element,
+        new: n.ns_per_element,
         flags,
         regression,
     }
