@@ -28,7 +28,7 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
     };
     if written.is_empty() {
         return Err(format!(
-            "{}: nothing to plot (no rejection, timing, bvh or ratio records)",
+            "{}: nothing to plot (no rejection, timing, bvh, ratio or estimate records)",
             file.display()
         )
         .into());
