@@ -35,6 +35,7 @@
 //! an error naming the input, the line number and the column, and the command exits
 //! non-zero: no answer is ever silently wrong or skipped.
 
+use crate::number::Num;
 use crate::oracle::{OracleClass, OracleLabel, Query, classify_from_surface};
 use glam::{DVec3, Vec3};
 use std::fmt;
@@ -271,7 +272,7 @@ fn evaluate(
         let ray = parse_dray(torus, columns, line)?;
         return Ok(Row {
             label: oracle(torus, &ray),
-            t_hit: intersect(torus, &ray).map(|hit| hit.t.to_string()),
+            t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
             line: torus.dline_to_local(&ray),
         });
@@ -290,7 +291,7 @@ fn evaluate(
     };
     Ok(Row {
         label: oracle(torus, &DRay::from(ray)),
-        t_hit: t.map(|t| t.to_string()),
+        t_hit: t.map(|t| Num::from(t).to_string()),
         escalated,
         // The culls' own input: far origins go to the foot point, as in a renderer.
         line: torus.line_to_local(&ray),
@@ -357,22 +358,33 @@ fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<torus_cull::F32Hit>,
 trait Float: std::str::FromStr + Copy + PartialOrd + fmt::Display {
     const ZERO: Self;
     const INFINITY: Self;
+    /// The precision's name and its largest finite value (for messages).
+    const NAME: &'static str;
     fn finite(self) -> bool;
+    fn max() -> Num;
 }
 
 impl Float for f32 {
     const ZERO: f32 = 0.0;
     const INFINITY: f32 = f32::INFINITY;
+    const NAME: &'static str = "f32";
     fn finite(self) -> bool {
         self.is_finite()
+    }
+    fn max() -> Num {
+        Num::from(f32::MAX)
     }
 }
 
 impl Float for f64 {
     const ZERO: f64 = 0.0;
     const INFINITY: f64 = f64::INFINITY;
+    const NAME: &'static str = "f64";
     fn finite(self) -> bool {
         self.is_finite()
+    }
+    fn max() -> Num {
+        Num(f64::MAX)
     }
 }
 
@@ -451,7 +463,7 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
             _ => {
                 let v = number(name, field)?;
                 if !v.finite() {
-                    return Err(format!("column {name}: {field} is not finite"));
+                    return Err(not_finite(name, field, (T::NAME, T::max())));
                 }
                 fields.six[k] = v;
             }
@@ -482,6 +494,23 @@ fn check_on_surface(torus: &Torus, origin: DVec3) -> Result<(), String> {
         ));
     }
     Ok(())
+}
+
+/// Why `field` (column `name`) did not give a finite number: it is `inf` or `NaN` as
+/// typed, or a number beyond the precision's largest finite value `max` (`1e39` in f32,
+/// which f64 would read).
+fn not_finite(name: &str, field: &str, (precision, max): (&str, Num)) -> String {
+    let word = field.trim_start_matches(['+', '-']).to_ascii_lowercase();
+    if matches!(word.as_str(), "inf" | "infinity" | "nan") {
+        return format!("column {name}: {field} is not finite (allowed: a finite number)");
+    }
+    let hint = if precision == "f32" {
+        "; the rays are read as f32 (--precision f32, --exact f32 or gpu): \
+         --precision f64 --exact f64 reads them as f64"
+    } else {
+        ""
+    };
+    format!("column {name}: {field} is out of {precision} range (allowed: |value| <= {max}){hint}")
 }
 
 /// How a refused ray is reported: the error, and the direction as typed.

@@ -2,8 +2,8 @@
 //! against ν.
 
 use crate::results::{
-    BvhRecord, CPU_DEVICE, F64_PRECISION, F64_REFERENCE, RatioRecord, RejectionRecord, Results,
-    TimingRecord,
+    BvhRecord, CPU_DEVICE, EstimateRecord, F64_PRECISION, F64_REFERENCE, RatioRecord,
+    RejectionRecord, Results, TimingRecord,
 };
 use plotters::prelude::*;
 use std::collections::BTreeMap;
@@ -88,10 +88,16 @@ fn draw_chart(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let lines: Vec<&Line> = lines.iter().filter(|l| !l.pts.is_empty()).collect();
     let ([x_min, x_max], y_range) = axis_ranges(&lines, y_from_zero).ok_or("nothing to plot")?;
-    let root = SVGBackend::with_string(svg, (900, 480)).into_drawing_area();
+    // The legend gets its own strip, so it never hides a line, and the strip is as wide
+    // as its longest entry, so no name is cut at the right edge.
+    let legend_width = (0..lines.len())
+        .map(|i| LEGEND_TEXT_X + text_width(&legend_text(i, &lines)))
+        .max()
+        .unwrap_or(0)
+        .max(160);
+    let root = SVGBackend::with_string(svg, (PLOT_WIDTH + legend_width, 480)).into_drawing_area();
     root.fill(&WHITE)?;
-    // The legend gets its own strip, so it never hides a line.
-    let (plot_area, legend_area) = root.split_horizontally(740);
+    let (plot_area, legend_area) = root.split_horizontally(PLOT_WIDTH);
     let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 17))
         .margin(12)
@@ -114,7 +120,11 @@ fn draw_chart(
     for (i, line) in lines.iter().enumerate() {
         let colour = COLOURS[line.colour % COLOURS.len()];
         let xy = || line.pts.iter().map(|&(x, y, _)| (x, y));
-        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(2)))?;
+        // A line that later lines coincide with is drawn wider, 3 px per twin, so that
+        // each twin drawn over it leaves a band of its colour showing on either side.
+        let twins_after = lines[i + 1..].iter().filter(|l| l.pts == line.pts).count();
+        let width = 2 + 3 * twins_after as u32;
+        chart.draw_series(LineSeries::new(xy(), colour.stroke_width(width)))?;
         draw_error_bars(&mut chart, line, colour)?;
         draw_markers(&mut chart, i, xy(), colour)?;
         draw_legend_entry(&legend_area, i, &lines, colour)?;
@@ -183,31 +193,49 @@ fn draw_error_bars(
 }
 
 /// Line `i`'s legend entry: its stroke, its marker and its name, with the earlier line it
-/// coincides with, if any (the twin hides under it on the chart).
+/// coincides with, if any (on the chart the earlier one is drawn wider underneath).
 fn draw_legend_entry(
     area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
     i: usize,
     lines: &[&Line],
     colour: RGBColor,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let line = lines[i];
     let y = 60 + 24 * i as i32;
     area.draw(&PathElement::new(
         vec![(8, y), (32, y)],
         colour.stroke_width(3),
     ))?;
     legend_marker(area, i, (20, y), colour)?;
+    area.draw(&Text::new(
+        legend_text(i, lines),
+        (LEGEND_TEXT_X as i32, y - 8),
+        ("sans-serif", 13).into_font().color(&BLACK),
+    ))?;
+    Ok(())
+}
+
+/// The plot's width in pixels; the legend strip comes to its right.
+const PLOT_WIDTH: u32 = 740;
+
+/// Where a legend entry's text starts in the strip, pixels.
+const LEGEND_TEXT_X: u32 = 40;
+
+/// Line `i`'s legend text: its name, and the earlier line it coincides with, if any.
+fn legend_text(i: usize, lines: &[&Line]) -> String {
+    let line = lines[i];
     let same_as = lines[..i]
         .iter()
         .find(|earlier| earlier.pts == line.pts)
         .map(|earlier| format!(" (= {})", earlier.name))
         .unwrap_or_default();
-    area.draw(&Text::new(
-        format!("{}{same_as}", line.name),
-        (40, y - 8),
-        ("sans-serif", 13).into_font().color(&BLACK),
-    ))?;
-    Ok(())
+    format!("{}{same_as}", line.name)
+}
+
+/// A generous width of `text` in 13 px sans-serif, pixels: 8 px a character (the widest
+/// common glyphs, `m` and `w`, are about 10, most are 6-7) and a margin, so an entry is
+/// never cut where the SVG's viewer picks a wide font.
+fn text_width(text: &str) -> u32 {
+    8 * text.chars().count() as u32 + 12
 }
 
 /// The markers of line `i`: a circle, triangle, cross or square in turn, so lines that
@@ -255,7 +283,7 @@ fn legend_marker(
     Ok(())
 }
 
-/// Every chart a results file supports, written to `out_dir` with file names starting
+/// Every chart a results file supports, written to `out_dir` (which must exist) with file names starting
 /// with `stem`; returns the paths written. Titles name the workload and the commit;
 /// timings and paired ratios carry their 95 % intervals as error bars.
 pub fn plot_results(
@@ -263,7 +291,16 @@ pub fn plot_results(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    std::fs::create_dir_all(out_dir).map_err(|e| format!("{}: {e}", out_dir.display()))?;
+    // The directory is the caller's: like every output, a missing one is not created.
+    // An empty path (the parent of a bare file name) is the current directory.
+    let out_dir = if out_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        out_dir
+    };
+    if !out_dir.is_dir() {
+        return Err(format!("{}: no such directory", out_dir.display()).into());
+    }
     let mut charts = Charts {
         out_dir,
         stem,
@@ -279,7 +316,70 @@ pub fn plot_results(
     timing_charts(&results.timing, &mut charts)?;
     bvh_charts(&results.bvh, &mut charts)?;
     ratio_charts(&results.ratio, &mut charts)?;
+    // A file with only estimates (`time --device gpu`, a filtered bench) is drawn from
+    // them; in a complete bench file they repeat the timing records and are not.
+    if results.timing.is_empty() && results.ratio.is_empty() {
+        estimate_charts(&results.estimates, &mut charts)?;
+    }
     Ok(charts.written)
+}
+
+/// An estimate whose benchmark id reads `group/cull/ν` (`gpu_ns-hole/cychosz/2`,
+/// `total_ns-hole/skala/2`): one point of a chart per group.
+struct Estimate<'a> {
+    group: &'a str,
+    cull: &'a str,
+    nu: f64,
+    record: &'a EstimateRecord,
+}
+
+impl<'a> Estimate<'a> {
+    /// `None` for an id of another shape (the solver and BVH benchmarks).
+    fn of(record: &'a EstimateRecord) -> Option<Estimate<'a>> {
+        let mut parts = record.benchmark.split('/');
+        let (group, cull, nu) = (parts.next()?, parts.next()?, parts.next()?);
+        let nu: f64 = nu.parse().ok()?;
+        (parts.next().is_none() && nu.is_finite()).then_some(Estimate {
+            group,
+            cull,
+            nu,
+            record,
+        })
+    }
+}
+
+impl Record for Estimate<'_> {
+    fn group(&self) -> String {
+        self.group.to_string()
+    }
+    fn cull(&self) -> &str {
+        self.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
+}
+
+/// One chart per estimate group: ns per element against ν, one line per cull, with the
+/// record's interval.
+fn estimate_charts(
+    records: &[EstimateRecord],
+    charts: &mut Charts<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let estimates: Vec<Estimate> = records.iter().filter_map(Estimate::of).collect();
+    for group in ordered(estimates.iter().map(Record::group)) {
+        let pts = lines(&estimates, &group, |e| {
+            Some((e.record.ns_per_element, Some(e.record.ns_per_element_ci)))
+        });
+        charts.chart(
+            format!("estimates-{group}"),
+            format!("{group}: ns per element [interval]"),
+            "ns per element",
+            pts,
+            true,
+        )?;
+    }
+    Ok(())
 }
 
 /// Where a results file's charts go, and the ones written so far.
@@ -609,6 +709,43 @@ mod tests {
             "{t:?}"
         );
         assert!(!t.iter().any(|x| x.contains("no_batch_data")), "{t:?}");
+        // Issue 29: the canvas is wide enough for the longest entry (it was cut at
+        // "discriminant (= dis"), and the twin under another line is drawn wider, so both
+        // colours show.
+        let width: u32 = svg
+            .split("width=\"")
+            .nth(1)
+            .and_then(|w| w.split('"').next())
+            .and_then(|w| w.parse().ok())
+            .unwrap();
+        let longest = "discriminant (= discriminant_f64)".len() as u32;
+        assert!(width >= PLOT_WIDTH + LEGEND_TEXT_X + 7 * longest, "{width}");
+        // The widest stroke of a colour's polylines inside the plot (the legend's sample
+        // strokes, right of PLOT_WIDTH, are 3 px for every line).
+        let strokes = |colour: &str| {
+            svg.split('<')
+                .filter(|e| e.starts_with("polyline") && e.contains(colour))
+                .filter(|e| {
+                    let x = e
+                        .split("points=\"")
+                        .nth(1)
+                        .and_then(|p| p.split(',').next());
+                    x.and_then(|x| x.parse::<u32>().ok())
+                        .is_some_and(|x| x < PLOT_WIDTH)
+                })
+                .filter_map(|e| {
+                    e.split("stroke-width=\"")
+                        .nth(1)?
+                        .split('"')
+                        .next()?
+                        .parse::<u32>()
+                        .ok()
+                })
+                .max()
+        };
+        // discriminant_f64 (COLOURS[0]) lies under discriminant (COLOURS[2]).
+        assert_eq!(strokes("stroke=\"#787878\""), Some(5), "{svg}");
+        assert_eq!(strokes("stroke=\"#FF7F0E\""), Some(2), "{svg}");
         assert!(t.iter().any(|x| x.contains("abc1234")), "{t:?}");
         let without = {
             let mut s = String::new();

@@ -509,19 +509,7 @@ impl Results {
 
     /// Read a results file, refusing other schema versions with a clear error.
     pub fn load(path: &Path) -> Result<Results, ResultsError> {
-        let text = std::fs::read_to_string(path).map_err(|e| ResultsError::Io(path.into(), e))?;
-        let value: serde_json::Value = serde_json::from_str(&text)
-            .map_err(|e| ResultsError::Parse(path.into(), e.to_string()))?;
-        match value.get("schema_version") {
-            Some(v) if v.as_u64() == Some(SCHEMA_VERSION as u64) => {}
-            Some(v) => return Err(ResultsError::Version(path.into(), v.clone())),
-            None => {
-                return Err(ResultsError::Parse(
-                    path.into(),
-                    "missing field `schema_version`".into(),
-                ));
-            }
-        }
+        let value = read_json(path)?;
         serde_json::from_value(value).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))
     }
 
@@ -530,6 +518,22 @@ impl Results {
         let mut text = serde_json::to_string_pretty(self).expect("results serialize");
         text.push('\n');
         write_atomic(path, text.as_bytes()).map_err(|e| ResultsError::Io(path.into(), e))
+    }
+}
+
+/// The JSON of a file this tool wrote (a results file or an f32-check file), after
+/// checking its `schema_version`: other versions are refused with a clear error.
+pub fn read_json(path: &Path) -> Result<serde_json::Value, ResultsError> {
+    let text = std::fs::read_to_string(path).map_err(|e| ResultsError::Io(path.into(), e))?;
+    let value: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))?;
+    match value.get("schema_version") {
+        Some(v) if v.as_u64() == Some(SCHEMA_VERSION as u64) => Ok(value),
+        Some(v) => Err(ResultsError::Version(path.into(), v.clone())),
+        None => Err(ResultsError::Parse(
+            path.into(),
+            "missing field `schema_version`".into(),
+        )),
     }
 }
 

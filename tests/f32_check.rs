@@ -216,11 +216,21 @@ fn the_cli_writes_the_json_and_refuses_bad_outputs() {
     assert_eq!(file.rays_per_family, 40);
     assert_eq!(file.families.len(), families::all().len());
     assert!(file.families.iter().all(|f| f.ns_per_ray.is_some()));
-    // No temp file is left next to it.
-    let names: Vec<_> = std::fs::read_dir(&dir)
+    // No temp file is left next to it: the file and its four plots (issue 29).
+    let mut names: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
-        .map(|e| e.unwrap().file_name())
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
-    assert_eq!(names, vec![std::ffi::OsString::from("f32.json")]);
+    names.sort();
+    assert_eq!(
+        names,
+        [
+            "f32-escalation.svg",
+            "f32-ns_per_ray.svg",
+            "f32-t_error.svg",
+            "f32-wrong.svg",
+            "f32.json"
+        ]
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }

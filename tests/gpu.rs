@@ -479,6 +479,11 @@ fn time_device_gpu_names_the_adapter() {
         stdout.contains("vs none") && stdout.contains("copy"),
         "{stdout}"
     );
+    // Issue 29: its plots are written next to it, one chart per case.
+    assert!(
+        dir.path().join("time-estimates-gpu_ns-hole.svg").is_file(),
+        "{stdout}"
+    );
 }
 
 /// Rays from surface points (`Torus::spawn`): those that leave into the outside go to the

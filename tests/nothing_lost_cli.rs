@@ -203,6 +203,7 @@ fn time_names_its_default_file_after_the_workload() {
                 workload.to_str().unwrap(),
                 "--seconds",
                 "0.5",
+                "--no-plots",
             ])
             .current_dir(&cwd)
             .output()
@@ -545,6 +546,15 @@ fn progress_meta_and_plots_of_time_files() {
     assert_eq!(sizes.timing_rays, Some(200));
     assert_eq!(sizes.timed_nu, vec![2.0, 8.0]);
     assert_eq!(t.meta.threads, Some(1));
+    // Issue 29: `time` draws its own plots, as the README says every command does.
+    let svg = dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg");
+    assert!(svg.is_file(), "time wrote no plot");
+    assert!(
+        String::from_utf8_lossy(&o.stdout).contains("plots to"),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    std::fs::remove_file(&svg).unwrap();
 
     let o = torus_cull(&["plot", time_json.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -572,4 +582,149 @@ fn progress_meta_and_plots_of_time_files() {
     let o = torus_cull(&["plot", empty.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("nothing to plot"), "{}", stderr(&o));
+}
+
+/// Issue 29: `--major NaN`/`inf`/`-inf` are not finite (not "too small"); a CSV value
+/// beyond f32 with f32 rays is out of f32 range (not "not finite"), with the range; huge
+/// values are written in scientific notation, not as 300 digits.
+#[test]
+fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
+    let dir = tempfile::tempdir().unwrap();
+    let rays = dir.path().join("rays.csv");
+    std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
+    let rays = rays.to_str().unwrap();
+    for bad in ["NaN", "inf", "-inf"] {
+        let o = torus_cull(&["eval", "--major", bad, "--minor", "1", "--rays", rays]);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{bad}: {err}");
+        assert!(
+            err.contains("--major") && err.contains(&format!("{bad} is not a finite number")),
+            "{bad}: {err}"
+        );
+        assert!(err.contains("3.4028235e38"), "{bad}: no range in {err}");
+        assert!(!err.contains("too small"), "{bad}: {err}");
+    }
+    let big = dir.path().join("big.csv");
+    std::fs::write(&big, "ox,oy,oz,dx,dy,dz\n1e39,0,0,-1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+        "--precision",
+        "f32",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("column ox: 1e39 is out of f32 range (allowed: |value| <= 3.4028235e38)"),
+        "{err}"
+    );
+    assert!(!err.contains("not finite"), "{err}");
+    // The same row in f64 is read, and its t_hit (about 1e39) is one short word.
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = String::from_utf8_lossy(&o.stdout).into_owned();
+    let row = csv.lines().nth(1).unwrap();
+    let t_hit = row.split(',').nth(3).unwrap();
+    assert!(t_hit.contains('e') && t_hit.len() < 30, "{row}");
+    assert!(
+        (t_hit.parse::<f64>().unwrap() / 1e39 - 1.0).abs() < 1e-9,
+        "{row}"
+    );
+    // `inf` typed in a CSV is still "not finite".
+    std::fs::write(&big, "ox,oy,oz,dx,dy,dz\ninf,0,0,-1,0,0\n").unwrap();
+    let o = torus_cull(&[
+        "eval",
+        "--major",
+        "3",
+        "--minor",
+        "1",
+        "--rays",
+        big.to_str().unwrap(),
+    ]);
+    assert!(
+        stderr(&o).contains("column ox: inf is not finite"),
+        "{}",
+        stderr(&o)
+    );
+    // ν typed as 1e300 is named as typed, not as 301 digits.
+    for args in [
+        &[
+            "render", "--scene", "chain", "--nu", "1e300", "--out", "x.png",
+        ][..],
+        &["time", "--nu", "1e300"][..],
+    ] {
+        let o = torus_cull(args);
+        let err = stderr(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("1e300") && !err.contains("0000000000"),
+            "{err}"
+        );
+    }
+}
+
+/// Issue 29: `--threads 0` is refused before any work, naming the option and the range.
+#[test]
+fn zero_threads_is_refused_with_the_range() {
+    for command in [
+        &["run", "--workload", "quick", "--no-plots"][..],
+        &["f32-check"][..],
+    ] {
+        let started = Instant::now();
+        let mut args = command.to_vec();
+        args.extend(["--threads", "0", "--out", "/nonexistent-dir-h29/x.json"]);
+        let o = torus_cull(&args);
+        refused_before_work(
+            &o,
+            started,
+            &["--threads 0 is invalid", "allowed: 1 ..= 1024"],
+        );
+    }
+}
+
+/// Issue 29: `time --mode both` with a cull that has no batch form says on stderr why its
+/// batch tables are missing, instead of dropping them without a word.
+#[test]
+fn time_says_why_a_cull_has_no_batch_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path(), "tiny");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        workload.to_str().unwrap(),
+        "--mode",
+        "both",
+        "--culls",
+        "discriminant_f64",
+        "--seconds",
+        "0.3",
+        "--no-plots",
+        "--out",
+        dir.path().join("t.json").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(
+            "discriminant_f64 has no batch form and is timed one ray at a time only, so no \
+             batch table is printed"
+        ),
+        "{}",
+        stderr(&o)
+    );
+    // --no-plots: the results file alone.
+    let files: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(files.len(), 2, "{files:?}");
 }

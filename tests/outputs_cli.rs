@@ -207,7 +207,7 @@ fn an_interrupted_eval_leaves_no_temp_file() {
             .arg(&out)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())
-            .stderr(Stdio::null())
+            .stderr(Stdio::piped())
             .spawn()
             .unwrap();
         // Some rows, then the input stays open: eval is mid-run when the signal comes.
@@ -224,9 +224,18 @@ fn an_interrupted_eval_leaves_no_temp_file() {
             .status()
             .unwrap();
         assert!(killed.success());
+        let mut stderr = child.stderr.take().unwrap();
         let status = child.wait().unwrap();
         drop(stdin);
         assert!(!status.success(), "SIG{signal}: {status:?}");
+        // Issue 29: one line says what happened (an exit status alone said nothing).
+        let mut err = String::new();
+        stderr.read_to_string(&mut err).unwrap();
+        assert!(
+            err.contains(&format!("interrupted by SIG{signal}"))
+                && err.contains("no partial output"),
+            "SIG{signal}: {err}"
+        );
         assert_eq!(temp_files(dir.path()), Vec::<String>::new(), "SIG{signal}");
         assert!(
             !out.exists(),
@@ -362,4 +371,151 @@ fn plots_are_replaced_atomically_and_errors_name_the_path() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("q-hole-miss_capture.svg"), "{err}");
+}
+
+/// Issue 29: `plot --out-dir` treats its directory as every `--out` does (a missing one
+/// is an error, not created); a file there is named as a file, not "File exists".
+#[test]
+fn plot_out_dir_must_be_an_existing_directory() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("q.json");
+    let o = Command::new(BIN)
+        .args([
+            "run",
+            "--workload",
+            "workloads/quick.json",
+            "--no-plots",
+            "--out",
+        ])
+        .arg(&json)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let missing = dir.path().join("no").join("such");
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "x").unwrap();
+    for (out_dir, needle) in [
+        (&missing, "no such directory (it is not created"),
+        (&file, "is a file, not a directory"),
+    ] {
+        let o = Command::new(BIN)
+            .arg("plot")
+            .arg(&json)
+            .arg("--out-dir")
+            .arg(out_dir)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("--out-dir")
+                && err.contains(out_dir.to_str().unwrap())
+                && err.contains(needle),
+            "{err}"
+        );
+        assert!(!err.contains("os error 17"), "{err}");
+    }
+    assert!(!dir.path().join("no").exists(), "the directory was created");
+}
+
+/// Issue 29: `render --out x.svg` is refused before drawing (it wrote PNG bytes into it).
+#[test]
+fn render_refuses_a_name_that_is_not_png() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["x.svg", "x.jpg", "x"] {
+        let out = dir.path().join(name);
+        let o = Command::new(BIN)
+            .args([
+                "render", "--scene", "chain", "--nu", "4", "--size", "8", "--tori", "2", "--out",
+            ])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {err}");
+        assert!(err.contains("a file name ending in .png"), "{name}: {err}");
+        assert!(!out.exists(), "{name} was written");
+    }
+    let out = dir.path().join("x.PNG");
+    let o = Command::new(BIN)
+        .args([
+            "render", "--scene", "chain", "--nu", "4", "--size", "8", "--tori", "2", "--out",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read(&out).unwrap().starts_with(b"\x89PNG"));
+}
+
+/// Issue 29: `f32-check` writes its plots, and its file goes through `plot` and `compare`
+/// (both refused it: "missing field `rejection`"); one ray per family shows ν as one
+/// value, not "3.145-3", and the f64 time sits on the f32 path's row.
+#[test]
+fn f32_check_files_are_plotted_and_compared() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("f.json");
+    let o = Command::new(BIN)
+        .args(["f32-check", "--rays", "1", "--rounds", "1", "--out"])
+        .arg(&json)
+        .output()
+        .unwrap();
+    let table = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svgs = |d: &Path| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(".svg"))
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(
+        svgs(dir.path()),
+        [
+            "f-escalation.svg",
+            "f-ns_per_ray.svg",
+            "f-t_error.svg",
+            "f-wrong.svg"
+        ]
+    );
+    let inner = table
+        .lines()
+        .find(|l| l.starts_with("tangent_1e-6_inner_equator"))
+        .unwrap();
+    let nu = inner.split_whitespace().nth(1).unwrap();
+    assert!(nu.parse::<f64>().is_ok(), "ν '{nu}' in: {inner}");
+    // Each family's f32 line carries both times; its cert line neither.
+    let mut hole_edge = table.lines().skip_while(|l| !l.starts_with("hole_edge"));
+    let (cert, f32_line) = (hole_edge.next().unwrap(), hole_edge.next().unwrap());
+    // who, esc%, missed, spurious, far, three t errors, ns/ray, f64 ns/ray.
+    assert_eq!(f32_line.split_whitespace().count(), 10, "{f32_line}");
+    assert!(cert.trim_end().ends_with(" -"), "{cert}");
+    let again = dir.path().join("again");
+    std::fs::create_dir(&again).unwrap();
+    let o = Command::new(BIN)
+        .arg("plot")
+        .arg(&json)
+        .arg("--out-dir")
+        .arg(&again)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(svgs(&again), svgs(dir.path()));
+    let o = Command::new(BIN)
+        .arg("compare")
+        .arg(&json)
+        .arg(&json)
+        .output()
+        .unwrap();
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("0 regressions"), "{out}");
 }

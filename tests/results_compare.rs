@@ -485,3 +485,263 @@ fn records_missing_from_the_new_file_fail_unless_allowed() {
     let (code, text) = cli_compare(&b, &a);
     assert_eq!(code, 0, "{text}");
 }
+
+fn compare_cli(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .arg("compare")
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Issue 29: a file with one record twice is refused (exit 2), naming the file and the
+/// record, instead of one of the two being compared silently.
+#[test]
+fn duplicate_records_are_refused_naming_the_record() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    sample().save(&a).unwrap();
+    let mut twice = sample();
+    let mut copy = twice.rejection[0].clone();
+    copy.rejected = 10;
+    twice.rejection.push(copy);
+    twice.save(&b).unwrap();
+    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(
+        err.contains(b.to_str().unwrap())
+            && err.contains("record `rejection hole 2 skala` appears more than once"),
+        "{err}"
+    );
+    assert!(out.is_empty(), "{out}");
+}
+
+/// Issue 29: the miss capture is recomputed from the counts. A record whose counts fell
+/// while its stored capture did not is a regression, and the stale value is named.
+#[test]
+fn miss_capture_is_recomputed_from_the_counts() {
+    let old = sample();
+    let mut stale = sample();
+    stale.rejection[0].rejected = 900; // 0.90 by the counts, still 0.94 as stored
+    let r = compare(&old, &stale, 0.1);
+    assert_eq!(r.regressions(), 1, "{:?}", r.rows[0]);
+    let row = &r.rows[0];
+    assert!((row.new - 0.9).abs() < 1e-12, "{row:?}");
+    assert!(
+        row.flags
+            .iter()
+            .any(|f| f.contains("new: stored miss_capture 0.940000 disagrees with its counts")),
+        "{row:?}"
+    );
+    // Counts unchanged, only the stored value edited: no regression, but it is said.
+    let mut edited = sample();
+    edited.rejection[0].miss_capture = Some(0.5);
+    let r = compare(&old, &edited, 0.1);
+    assert_eq!(r.regressions(), 0);
+    assert!(r.rows[0].flags.iter().any(|f| f.contains("disagrees")));
+}
+
+/// Issue 29: files from different machines (here AVX-512 against AVX2, and two CPU models)
+/// say so on the report's first line, in its summary and on stderr; a timing regression
+/// between them is labelled not comparable and does not fail, unless `--across-machines`.
+/// Rejection verdicts stay.
+#[test]
+fn different_machines_are_said_first_and_their_timings_decide_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("old.json"), dir.path().join("new.json"));
+    let mut old = sample();
+    old.meta.isa = Some("avx512".into());
+    old.meta.cpu = "Intel Xeon Platinum 8480".into();
+    old.save(&a).unwrap();
+    let mut slow = sample();
+    slow.meta.isa = Some("avx2".into());
+    slow.meta.cpu = "AMD EPYC 7763".into();
+    slow.timing[0].total_ns = 30.0;
+    slow.timing[0].total_ns_ci = [29.0, 31.0];
+    slow.save(&b).unwrap();
+    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (code, out, err) = compare_cli(&[a, b]);
+    assert_eq!(code, 0, "{out}{err}");
+    let first = out.lines().next().unwrap();
+    assert!(
+        first.starts_with("WARNING: old and new were measured on different machines")
+            && first.contains("meta.isa: avx512 vs avx2")
+            && first.contains("AMD EPYC 7763"),
+        "{first}"
+    );
+    assert!(
+        out.contains("not comparable (different machines): +50.0% slower"),
+        "{out}"
+    );
+    assert!(
+        out.trim_end()
+            .ends_with("different machines: 1 timing regressions not counted"),
+        "{out}"
+    );
+    assert!(err.contains("different machines"), "{err}");
+    let (code, out, _) = compare_cli(&[a, b, "--across-machines"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("REGRESSION: +50.0% slower, intervals disjoint (across machines)"));
+    // A count regression is a regression on any machine.
+    let mut worse = worse_of(sample());
+    worse.meta.isa = Some("avx2".into());
+    worse.save(Path::new(b)).unwrap();
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 1, "{out}");
+    // Same machine: no warning line.
+    let (_, out, _) = compare_cli(&[a, a]);
+    assert!(!out.contains("WARNING"), "{out}");
+}
+
+/// Issue 29: the report's first line is never blank (`compare | head -1`), and a key longer
+/// than the default column keeps the columns aligned.
+#[test]
+fn first_line_is_not_blank_and_long_keys_stay_aligned() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    let mut r = sample();
+    r.rejection[1].case = "a_case_with_a_very_long_name_indeed".into();
+    r.rejection[1].cull = "discriminant_f64".into();
+    r.save(&a).unwrap();
+    r.save(&b).unwrap();
+    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.lines().next().is_some_and(|l| !l.trim().is_empty()),
+        "{out}"
+    );
+    let rejection: Vec<&str> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("rejection"))
+        .take(3)
+        .collect();
+    // The `change` column ends at the same place on every line of the section.
+    let ends: Vec<usize> = rejection
+        .iter()
+        .map(|l| {
+            l.find("  flags")
+                .or_else(|| l.rfind('%').map(|i| i + 1))
+                .or_else(|| l.rfind('-').map(|i| i + 1))
+                .unwrap()
+        })
+        .collect();
+    assert!(ends.windows(2).all(|w| w[0] == w[1]), "{rejection:#?}");
+}
+
+/// Issue 29: two f32-check files compare family by family; more missed hits is a
+/// regression; an f32-check file against a results file is refused, naming both tools.
+#[test]
+fn f32_check_files_compare_and_mixed_kinds_are_refused() {
+    use torus_cull_lab::f32_check::{CheckFile, FamilyRecord, Tally};
+    let tally = |missed: u64| Tally {
+        escalated: 1,
+        escalation_rate: 0.01,
+        missed,
+        spurious: 0,
+        hits_answered: 50,
+        far: 0,
+        t_error: None,
+    };
+    let family = |missed: u64| FamilyRecord {
+        family: "hole".into(),
+        nu: Some(2.0),
+        nu_range: [2.0, 2.0],
+        rays: 100,
+        hits: 50,
+        misses: 50,
+        ambiguous: 0,
+        certified: tally(missed),
+        f32_path: tally(missed),
+        peer: tally(3),
+        ns_per_ray: None,
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b, c) = (
+        dir.path().join("a.json"),
+        dir.path().join("b.json"),
+        dir.path().join("c.json"),
+    );
+    let write = |path: &Path, f: &CheckFile| {
+        write_atomic(path, serde_json::to_string(f).unwrap().as_bytes()).unwrap();
+    };
+    let good = CheckFile::new(vec![family(0)], 100, 1, 1);
+    write(&a, &good);
+    let mut bad = good.clone();
+    bad.families[0] = family(2);
+    write(&b, &bad);
+    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), a.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("hole 2 cert"), "{out}");
+    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("REGRESSION: missed/spurious/far 0/0/0 -> 2/0/0"),
+        "{out}"
+    );
+    sample().save(&c).unwrap();
+    let (code, _, err) = compare_cli(&[a.to_str().unwrap(), c.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("`f32-check`") && err.contains("`run`"),
+        "{err}"
+    );
+}
+
+/// Issue 29: a file with only `estimates` (`time --device gpu`, a filtered bench) is
+/// plotted and compared by them (it was "nothing to plot" and "share no record"); an
+/// adapter change is a machine change.
+#[test]
+fn estimate_only_files_are_plotted_and_compared() {
+    use torus_cull_lab::results::EstimateRecord;
+    let gpu = |ns: f64, device: &str| {
+        let mut r = sample();
+        r.rejection.clear();
+        r.timing.clear();
+        r.bvh.clear();
+        r.meta.tool = Some("time".into());
+        r.meta.device = Some(device.into());
+        r.estimates = [2.0, 8.0]
+            .iter()
+            .flat_map(|nu| {
+                ["none", "cychosz"].map(|cull| EstimateRecord {
+                    benchmark: format!("gpu_ns-hole/{cull}/{nu}"),
+                    elements: 1024,
+                    ns_per_element: ns,
+                    ns_per_element_ci: [ns * 0.99, ns * 1.01],
+                })
+            })
+            .collect();
+        r
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    gpu(2.0, "RTX").save(&a).unwrap();
+    gpu(3.0, "RTX").save(&b).unwrap();
+    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("gpu_ns-hole/cychosz/2") && out.contains("4 regressions"),
+        "{out}"
+    );
+    gpu(3.0, "lavapipe").save(Path::new(b)).unwrap();
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("meta.device: RTX vs lavapipe"), "{out}");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["plot", a])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = dir.path().join("a-estimates-gpu_ns-hole.svg");
+    let text = std::fs::read_to_string(&svg).expect("an estimates chart");
+    assert!(
+        text.contains("cychosz") && text.contains("ns per element"),
+        "{text}"
+    );
+}

@@ -1,35 +1,70 @@
-//! `torus-cull compare OLD NEW`: the diff of two results files, exit 1 on a regression.
+//! `torus-cull compare OLD NEW`: the diff of two results files (or two f32-check files),
+//! exit 1 on a regression.
 
 use super::CliResult;
 use crate::out;
 use std::path::Path;
 use std::process::ExitCode;
-use torus_cull_lab::results::Results;
+use torus_cull_lab::compare::{self, Report};
+use torus_cull_lab::results_file::ResultsFile;
+
+/// `compare`'s options after the two files.
+pub struct CompareOptions {
+    /// Slowdown in percent.
+    pub threshold: f64,
+    /// Show only flagged records.
+    pub only_changes: bool,
+    /// Records of OLD missing from NEW only warn.
+    pub allow_missing: bool,
+    /// Give timing verdicts across machines.
+    pub across_machines: bool,
+}
 
 /// Runs `compare`.
-pub fn compare(
-    old: &Path,
-    new: &Path,
-    threshold: f64,
-    only_changes: bool,
-    allow_missing: bool,
-) -> CliResult {
+pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
+    let threshold = options.threshold;
     if !(threshold.is_finite() && threshold >= 0.0) {
         return Err(
             format!("--threshold {threshold} is invalid (allowed: a percentage >= 0)").into(),
         );
     }
-    let (a, b) = (Results::load(old)?, Results::load(new)?);
-    torus_cull_lab::compare::comparable(&a, &b)
-        .map_err(|e| format!("{} vs {}: {e}", old.display(), new.display()))?;
-    let report = torus_cull_lab::compare::compare(&a, &b, threshold / 100.0);
+    let (a, b) = (ResultsFile::load(old)?, ResultsFile::load(new)?);
+    let pair = format!("{} vs {}", old.display(), new.display());
+    let report = match (&a, &b) {
+        (ResultsFile::Results(a), ResultsFile::Results(b)) => {
+            compare::check_unique(a).map_err(|e| format!("{}: {e}", old.display()))?;
+            compare::check_unique(b).map_err(|e| format!("{}: {e}", new.display()))?;
+            compare::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
+            compare::compare_across(a, b, threshold / 100.0, options.across_machines)
+        }
+        (ResultsFile::F32Check(a), ResultsFile::F32Check(b)) => {
+            compare::f32_check::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
+            compare::f32_check::compare(a, b, threshold / 100.0, options.across_machines)
+        }
+        _ => {
+            return Err(format!(
+                "{pair}: {} was written by `{}` and {} by `{}`: they hold different \
+                 records, so nothing is compared (compare two files of one command)",
+                old.display(),
+                a.tool(),
+                new.display(),
+                b.tool()
+            )
+            .into());
+        }
+    };
+    finish(&report, old, new, options)
+}
+
+/// Prints the report and turns it into the exit code.
+fn finish(report: &Report, old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
     let name = |p: &Path| {
         p.file_stem()
             .map_or("?".into(), |s| s.to_string_lossy().into_owned())
     };
     out!(
         "{}",
-        torus_cull_lab::compare::render(&report, &name(old), &name(new), only_changes)
+        compare::render(report, &name(old), &name(new), options.only_changes)
     )?;
     if report.rows.is_empty() {
         // A comparison of nothing must not pass a CI gate.
@@ -40,8 +75,21 @@ pub fn compare(
         )
         .into());
     }
+    if report.meta.machines_differ() {
+        eprintln!(
+            "warning: {} and {} were measured on different machines ({}): {}",
+            old.display(),
+            new.display(),
+            report.meta.machine.join("; "),
+            if options.across_machines {
+                "timing verdicts given because of --across-machines"
+            } else {
+                "timing verdicts withheld (--across-machines to judge them)"
+            }
+        );
+    }
     let missing = report.missing();
-    let lost = missing > 0 && !allow_missing;
+    let lost = missing > 0 && !options.allow_missing;
     if missing > 0 {
         eprintln!(
             "{}: {missing} records of {} are missing from {} (listed above as 'only in'){}",

@@ -84,26 +84,31 @@ impl<W> Named<W> {
     }
 }
 
-/// Parses `--major`/`--minor`: a number that is finite and non-zero in f32 when it is so
-/// as typed, so that the error names the value typed, not what f32 made of it (`1e300`
-/// is not `inf`, `1e-300` is not `0`).
+/// Parses `--major`/`--minor`: a finite number whose magnitude is a normal f32,
+/// `f32::MIN_POSITIVE <= |value| <= f32::MAX`, judged as typed, so that the error names
+/// the value typed, not what f32 made of it (`1e300` is not `inf`, `1e-300` is not `0`).
+/// `NaN` and `inf` are not radii at all. Zero and negative radii pass here and are
+/// refused by the torus, which names both radii.
 pub fn parse_radius(s: &str) -> Result<f32, String> {
+    use torus_cull_lab::number::Num;
+    let range = format!(
+        "allowed: a finite number with {} <= |value| <= {}",
+        Num::from(f32::MIN_POSITIVE),
+        Num::from(f32::MAX)
+    );
     let v: f64 = s
         .trim()
         .parse()
-        .map_err(|_| format!("'{s}' is not a number"))?;
-    let f = v as f32;
-    if v.is_finite() && !f.is_finite() {
-        return Err(format!(
-            "{s} is too large for f32 (allowed: |value| <= {:e})",
-            f32::MAX
-        ));
+        .map_err(|_| format!("'{s}' is not a number ({range})"))?;
+    if !v.is_finite() {
+        return Err(format!("{s} is not a finite number ({range})"));
     }
-    if v != 0.0 && (f == 0.0 || !f.is_normal()) {
-        return Err(format!(
-            "{s} is too small for f32 (allowed: |value| >= {:e})",
-            f32::MIN_POSITIVE
-        ));
+    let f = v as f32;
+    if !f.is_finite() {
+        return Err(format!("{s} is too large for f32 ({range})"));
+    }
+    if v != 0.0 && !f.is_normal() {
+        return Err(format!("{s} is too small for f32 ({range})"));
     }
     Ok(f)
 }

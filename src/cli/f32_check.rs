@@ -25,13 +25,17 @@ pub struct F32CheckArgs {
     /// directory must exist.
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Worker threads for the oracle's labels (default: available cores); the timings
+    /// Worker threads for the oracle's labels, 1 ..= 1024 (default: available cores); the timings
     /// run on one.
     #[arg(long)]
     threads: Option<usize>,
     /// Timing rounds per family (0: no timings).
     #[arg(long, default_value_t = 5)]
     rounds: u32,
+    /// Skip the SVG plots (by default escalation, wrong answers, t error and ns per ray
+    /// per family, next to the results file).
+    #[arg(long)]
+    no_plots: bool,
 }
 
 /// Runs `f32-check`. Exit 1 when ours (the certified verdict or the whole f32 path)
@@ -45,10 +49,7 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         )
         .into());
     }
-    let threads = args
-        .threads
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
+    let threads = crate::threads::pick(args.threads)?;
     let path = match args.out {
         Some(path) => path,
         None => {
@@ -100,6 +101,21 @@ pub fn run(args: F32CheckArgs) -> CliResult {
     output::write_file(&path, text.as_bytes())
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     outln!("wrote {}", path.display())?;
+    if !args.no_plots {
+        let dir = path
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+        let stem = path
+            .file_stem()
+            .map_or("f32-check".into(), |s| s.to_string_lossy());
+        let written = f32_check::plot::plot_check(&file, &dir, &stem)?;
+        outln!(
+            "wrote {} plots to {}/{stem}-*.svg",
+            written.len(),
+            dir.display()
+        )?;
+    }
     if !failed.is_empty() {
         eprintln!(
             "error: the f32 path missed a hit, reported a spurious one or a t outside the \

@@ -17,6 +17,7 @@ mod f32_check;
 mod plot;
 mod render;
 mod run;
+mod threads;
 mod time;
 
 #[derive(Parser)]
@@ -42,7 +43,7 @@ enum Command {
         /// plots go next to it.
         #[arg(long)]
         out: Option<PathBuf>,
-        /// Worker threads (default: available cores).
+        /// Worker threads, 1 ..= 1024 (default: available cores).
         #[arg(long)]
         threads: Option<usize>,
         /// Skip the SVG plots.
@@ -56,8 +57,8 @@ enum Command {
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
     /// 95% intervals), in about 30 s.
     Time(time::TimeArgs),
-    /// Diff two results files; exits 1 on a regression or when records of OLD are
-    /// missing from NEW, 2 on unusable input (for CI gates).
+    /// Diff two results files (or two f32-check files); exits 1 on a regression or when
+    /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
         /// The older results JSON.
         old: PathBuf,
@@ -72,6 +73,11 @@ enum Command {
         /// Records of OLD missing from NEW only warn instead of failing (exit 1).
         #[arg(long)]
         allow_missing: bool,
+        /// Give timing verdicts even when the files were measured on different machines
+        /// (`meta.cpu`, `meta.isa`, `meta.device` or the architecture differ); without it
+        /// such timings are shown but decide nothing.
+        #[arg(long)]
+        across_machines: bool,
     },
     /// Render a many-torus scene and its cull map (PNG).
     Render {
@@ -81,7 +87,8 @@ enum Command {
         /// ν = R/r of the scene's tori (> 1).
         #[arg(long)]
         nu: f64,
-        /// Output PNG; the cull map goes next to it as <stem>-cullmap.png.
+        /// Output PNG (a name ending in .png); the cull map goes next to it as
+        /// <stem>-cullmap.png.
         #[arg(long)]
         out: PathBuf,
         /// Image side in pixels.
@@ -94,11 +101,11 @@ enum Command {
         #[arg(long, default_value_t = 20261121)]
         seed: u64,
     },
-    /// Write the SVG charts of a results file.
+    /// Write the SVG charts of a results file (run, time, cargo bench) or an f32-check file.
     Plot {
         /// Results JSON.
         file: PathBuf,
-        /// Where to write the SVGs (default: next to the file).
+        /// Where to write the SVGs, an existing directory (default: next to the file).
         #[arg(long)]
         out_dir: Option<PathBuf>,
     },
@@ -198,7 +205,17 @@ fn main() -> ExitCode {
             threshold,
             only_changes,
             allow_missing,
-        } => compare::compare(&old, &new, threshold, only_changes, allow_missing),
+            across_machines,
+        } => compare::compare(
+            &old,
+            &new,
+            &compare::CompareOptions {
+                threshold,
+                only_changes,
+                allow_missing,
+                across_machines,
+            },
+        ),
         Command::Eval {
             major,
             minor,
@@ -330,8 +347,9 @@ macro_rules! outln {
 }
 pub(crate) use {out, outln};
 
-/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, then die of
-/// the signal as if there were no handler (so the caller sees the usual status).
+/// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, say so in
+/// one line on stderr, then die of the signal as if there were no handler (so the caller
+/// sees the usual status, 130 for Ctrl-C in a shell).
 fn remove_temp_files_on_signals() {
     #[cfg(unix)]
     {
@@ -341,10 +359,28 @@ fn remove_temp_files_on_signals() {
             std::thread::spawn(move || {
                 if let Some(signal) = signals.forever().next() {
                     torus_cull_lab::output::remove_pending();
+                    // One line, so that a status of 128 + n is not the only trace.
+                    eprintln!(
+                        "torus-cull: interrupted by {}: stopped; no partial output was \
+                         left (files finished before it are kept)",
+                        signal_name(signal)
+                    );
                     let _ = signal_hook::low_level::emulate_default_handler(signal);
                     std::process::exit(128 + signal);
                 }
             });
         }
+    }
+}
+
+/// The name of a signal the handler above catches.
+#[cfg(unix)]
+fn signal_name(signal: i32) -> &'static str {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    match signal {
+        SIGINT => "SIGINT (Ctrl-C)",
+        SIGTERM => "SIGTERM",
+        SIGHUP => "SIGHUP",
+        _ => "a signal",
     }
 }

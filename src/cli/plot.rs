@@ -1,25 +1,34 @@
-//! `torus-cull plot`: the SVG figures of a results file.
+//! `torus-cull plot`: the SVG figures of a results file or an f32-check file.
 
 use super::CliResult;
 use crate::outln;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use torus_cull_lab::results::Results;
+use torus_cull_lab::results_file::ResultsFile;
 
 /// Runs `plot`.
 pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
-    let results = Results::load(file)?;
-    let dir = out_dir.unwrap_or_else(|| {
-        file.parent()
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
-    });
+    let results = ResultsFile::load(file)?;
+    let dir = match out_dir {
+        Some(dir) => {
+            check_out_dir(&dir)?;
+            dir
+        }
+        None => file
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+    };
     let stem = file
         .file_stem()
         .map_or("results".into(), |s| s.to_string_lossy());
-    let written = torus_cull_lab::plot::plot_results(&results, &dir, &stem)?;
+    let written = match &results {
+        ResultsFile::Results(r) => torus_cull_lab::plot::plot_results(r, &dir, &stem)?,
+        ResultsFile::F32Check(c) => torus_cull_lab::f32_check::plot::plot_check(c, &dir, &stem)?,
+    };
     if written.is_empty() {
         return Err(format!(
-            "{}: nothing to plot (no rejection, timing, bvh or ratio records)",
+            "{}: nothing to plot (no rejection, timing, bvh, ratio or estimate records)",
             file.display()
         )
         .into());
@@ -28,4 +37,23 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
         outln!("wrote {}", p.display())?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `--out-dir` must be an existing directory, as every `--out`'s directory must: a
+/// typed path never gets a directory created (a typo would scatter charts), and a file
+/// is named as one rather than reported as "File exists".
+fn check_out_dir(dir: &Path) -> Result<(), String> {
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => Ok(()),
+        Ok(_) => Err(format!(
+            "--out-dir {}: is a file, not a directory (allowed: an existing directory)",
+            dir.display()
+        )),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Err(format!(
+            "--out-dir {}: no such directory (it is not created: make it first, as for \
+             every --out)",
+            dir.display()
+        )),
+        Err(e) => Err(format!("--out-dir {}: {e}", dir.display())),
+    }
 }

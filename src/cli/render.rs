@@ -9,6 +9,7 @@ use std::process::ExitCode;
 pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: u64) -> CliResult {
     let kind: torus_cull_lab::scene::SceneKind =
         scene.parse().map_err(|e| format!("--scene: {e}"))?;
+    check_png_name(out)?;
     if !(1..=8192).contains(&size) {
         return Err(format!("--size {size} is invalid (allowed: 1 ..= 8192)").into());
     }
@@ -53,4 +54,24 @@ pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: 
         )?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// `--out` must name a PNG (`.png`, any case): `render` writes PNG bytes, and an `.svg`
+/// or `.jpg` name would hold bytes its viewer cannot read. Refused before the picture is
+/// drawn; the cull map takes the same extension.
+fn check_png_name(out: &Path) -> Result<(), String> {
+    let ext = out
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase());
+    if ext.as_deref() == Some("png") {
+        return Ok(());
+    }
+    Err(format!(
+        "--out {}: render writes PNG images (allowed: a file name ending in .png{})",
+        out.display(),
+        match ext {
+            Some(e) => format!("; .{e} is not written"),
+            None => String::new(),
+        }
+    ))
 }

@@ -24,9 +24,7 @@ pub fn run(
     let workload_path = workload;
     let workload = Workload::open(workload_path)?;
     let culls = parse_culls(culls)?;
-    let threads = threads
-        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
-        .max(1);
+    let threads = crate::threads::pick(threads)?;
     let path = out_path(out, &workload)?;
     // Before the sweep, not after it: an unwritable --out must not cost the whole run.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
@@ -127,8 +125,11 @@ fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io
     )
 }
 
-/// The SVG charts, next to the results file `path` and named after it.
-fn write_plots(results: &Results, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+pub(crate) fn write_plots(
+    results: &Results,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
     let dir = path
         .parent()
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);

@@ -20,22 +20,72 @@
 //! not regressions; the CLI then exits 2, as it does when the two files share no record,
 //! so that a vacuous comparison never passes a CI gate.
 
+pub mod f32_check;
+pub mod machine;
 mod ratio;
 mod rows;
 
 pub use rows::{Report, Row};
 
-use crate::results::{BvhRecord, RejectionRecord, Results, TimingRecord};
-use rows::{noise_or_faster, pair_up};
+use crate::results::{BvhRecord, EstimateRecord, RejectionRecord, Results, TimingRecord};
+use rows::{TIMED_SECTIONS, first_duplicate, noise_or_faster, pair_up};
 use std::fmt::Write;
 
 fn key(kind: &str, nu: f64, cull: &str) -> String {
     format!("{kind} {nu} {cull}")
 }
 
-/// Compare `old` with `new`; `threshold` is a fraction (0.10 for 10 %).
+fn rejection_key(r: &RejectionRecord) -> String {
+    key(&r.case, r.nu, &r.cull)
+}
+
+fn timing_key(r: &TimingRecord) -> String {
+    key(&r.case, r.nu, &r.label())
+}
+
+fn bvh_key(r: &BvhRecord) -> String {
+    key(&format!("{} {}", r.scene, r.ray_set), r.nu, &r.cull)
+}
+
+/// Refuses a file with two records under one key in a section: compare pairs records by
+/// key, and with two candidates it would silently pick one. The error names the section
+/// and the record.
+pub fn check_unique(r: &Results) -> Result<(), String> {
+    let twice = |section: &str, key: Option<String>| match key {
+        Some(key) => Err(format!(
+            "record `{section} {key}` appears more than once (each case × ν × cull once per \
+             section): compare cannot tell which to pair"
+        )),
+        None => Ok(()),
+    };
+    twice("rejection", first_duplicate(&r.rejection, rejection_key))?;
+    twice("timing", first_duplicate(&r.timing, timing_key))?;
+    twice("bvh", first_duplicate(&r.bvh, bvh_key))?;
+    twice("ratio", first_duplicate(&r.ratio, ratio::ratio_key))?;
+    twice(
+        "estimate",
+        first_duplicate(&r.estimates, |e| e.benchmark.clone()),
+    )
+}
+
+/// Compare `old` with `new`; `threshold` is a fraction (0.10 for 10 %). Timing verdicts
+/// across machines are withheld (see [`machine`]).
 pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
-    let mut report = Report::default();
+    compare_across(old, new, threshold, false)
+}
+
+/// [`compare`], giving timing verdicts across machines too when `across_machines`.
+pub fn compare_across(
+    old: &Results,
+    new: &Results,
+    threshold: f64,
+    across_machines: bool,
+) -> Report {
+    let mut report = Report {
+        meta: machine::differences(&old.meta, &new.meta),
+        across_machines,
+        ..Report::default()
+    };
     if old.meta.workload_sha256 != new.meta.workload_sha256 {
         report.notes.push(format!(
             "the workloads differ ({} {} vs {} {}): rejection counts are not comparable",
@@ -48,32 +98,80 @@ pub fn compare(old: &Results, new: &Results, threshold: f64) -> Report {
     for (key, o, n) in pair_up(
         &old.rejection,
         &new.rejection,
-        |r: &RejectionRecord| key(&r.case, r.nu, &r.cull),
+        rejection_key,
         &mut report,
         "rejection",
     ) {
         report.rows.push(rejection_row(key, o, n));
     }
-    for (key, o, n) in pair_up(
-        &old.timing,
-        &new.timing,
-        |r: &TimingRecord| key(&r.case, r.nu, &r.label()),
-        &mut report,
-        "timing",
-    ) {
+    for (key, o, n) in pair_up(&old.timing, &new.timing, timing_key, &mut report, "timing") {
         report.rows.push(timing_row(key, o, n, threshold));
     }
-    for (key, o, n) in pair_up(
-        &old.bvh,
-        &new.bvh,
-        |r: &BvhRecord| key(&format!("{} {}", r.scene, r.ray_set), r.nu, &r.cull),
-        &mut report,
-        "bvh",
-    ) {
+    for (key, o, n) in pair_up(&old.bvh, &new.bvh, bvh_key, &mut report, "bvh") {
         report.rows.push(bvh_row(key, o, n, threshold));
     }
+    // Estimates repeat the timing records in a complete bench file; a file with only
+    // estimates (`time --device gpu`, a filtered bench) is compared by them.
+    let timed = |r: &Results| !r.timing.is_empty() || !r.ratio.is_empty();
+    if !timed(old) && !timed(new) {
+        for (key, o, n) in pair_up(
+            &old.estimates,
+            &new.estimates,
+            |e: &EstimateRecord| e.benchmark.clone(),
+            &mut report,
+            "estimate",
+        ) {
+            report.rows.push(estimate_row(key, o, n, threshold));
+        }
+    }
     ratio::ratio_rows(old, new, threshold, &mut report);
+    judge_across_machines(&mut report);
     report
+}
+
+/// When the machines differ: without `--across-machines` a timing regression is not
+/// counted and every timing flag says it is no verdict; with it, the verdicts stand and
+/// say they were taken across machines. Counts are left alone.
+pub(crate) fn judge_across_machines(report: &mut Report) {
+    if !report.meta.machines_differ() {
+        return;
+    }
+    let across = report.across_machines;
+    let mut withheld = 0;
+    for row in report
+        .rows
+        .iter_mut()
+        .filter(|r| TIMED_SECTIONS.contains(&r.section))
+    {
+        if across {
+            for flag in &mut row.flags {
+                flag.push_str(" (across machines)");
+            }
+            continue;
+        }
+        if row.regression {
+            row.regression = false;
+            withheld += 1;
+        }
+        for flag in &mut row.flags {
+            *flag = match flag.strip_prefix("REGRESSION: ") {
+                Some(rest) => format!("not comparable (different machines): {rest}"),
+                None => format!("{flag} (different machines: not a verdict)"),
+            };
+        }
+    }
+    report.withheld = withheld;
+}
+
+/// The miss capture a record's counts give, rejected / misses (what `run` stores), and
+/// whether the stored value disagrees with it.
+fn capture(r: &RejectionRecord) -> (Option<f64>, bool) {
+    let computed = (r.misses > 0).then(|| r.rejected as f64 / r.misses as f64);
+    let disagrees = match (computed, r.miss_capture) {
+        (Some(c), Some(s)) => (c - s).abs() > 1e-9 * c.abs().max(1.0),
+        (a, b) => a.is_some() != b.is_some(),
+    };
+    (computed, disagrees)
 }
 
 fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
@@ -102,10 +200,22 @@ fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
             o.false_rejects, n.false_rejects
         ));
     }
-    let (old_c, new_c) = (
-        o.miss_capture.unwrap_or(f64::NAN),
-        n.miss_capture.unwrap_or(f64::NAN),
-    );
+    // The counts decide, not a stored ratio that may be stale or edited.
+    let ((old_c, old_stale), (new_c, new_stale)) = (capture(o), capture(n));
+    for (side, stale, r, c) in [("old", old_stale, o, old_c), ("new", new_stale, n, new_c)] {
+        if stale {
+            let shown = |v: Option<f64>| v.map_or("null".into(), |v| format!("{v:.6}"));
+            flags.push(format!(
+                "{side}: stored miss_capture {} disagrees with its counts ({}/{} = {}); the \
+                 counts are compared",
+                shown(r.miss_capture),
+                r.rejected,
+                r.misses,
+                shown(c)
+            ));
+        }
+    }
+    let (old_c, new_c) = (old_c.unwrap_or(f64::NAN), new_c.unwrap_or(f64::NAN));
     if new_c < old_c {
         regression = true;
         flags.push("REGRESSION: lower miss capture".into());
@@ -141,6 +251,34 @@ fn timing_row(key: String, o: &TimingRecord, n: &TimingRecord, threshold: f64) -
         metric: "total_ns",
         old: o.total_ns,
         new: n.total_ns,
+        flags,
+        regression,
+    }
+}
+
+/// An estimate (ns per element with its interval): slower by more than the threshold with
+/// disjoint intervals is a regression, as for a criterion timing.
+fn estimate_row(key: String, o: &EstimateRecord, n: &EstimateRecord, threshold: f64) -> Row {
+    let change = n.ns_per_element / o.ns_per_element - 1.0;
+    let (a, b) = (o.ns_per_element_ci, n.ns_per_element_ci);
+    let disjoint = b[0] > a[1] || b[1] < a[0];
+    let regression = change > threshold && disjoint;
+    let flags = if regression {
+        vec![format!(
+            "REGRESSION: {:+.1}% slower, intervals disjoint",
+            change * 100.0
+        )]
+    } else {
+        noise_or_faster(change, threshold, disjoint)
+            .into_iter()
+            .collect()
+    };
+    Row {
+        section: "estimate",
+        key,
+        metric: "ns_per_element",
+        old: o.ns_per_element,
+        new: n.ns_per_element,
         flags,
         regression,
     }
@@ -190,22 +328,64 @@ fn bvh_row(key: String, o: &BvhRecord, n: &BvhRecord, threshold: f64) -> Row {
     }
 }
 
-/// The report as a table, critcmp-style: one line per record.
+/// The report as a table, critcmp-style: one line per record, the key column as wide as
+/// the longest key. Different machines come first (a warning line) and last (in the
+/// summary); the first line is never blank, so `compare … | head -1` shows something.
 pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: bool) -> String {
     let mut out = String::new();
+    if report.meta.machines_differ() {
+        let _ = writeln!(
+            out,
+            "WARNING: {old_name} and {new_name} were measured on different machines ({}): {}",
+            report.meta.machine.join("; "),
+            if report.across_machines {
+                "timing verdicts are given (--across-machines), but they measure the \
+                 machines as much as the code"
+            } else {
+                "timings are not comparable and give no verdict (--across-machines to judge \
+                 them); counts and capture are compared as usual"
+            }
+        );
+    }
+    if !report.meta.setup.is_empty() {
+        let _ = writeln!(
+            out,
+            "note: the setups differ ({})",
+            report.meta.setup.join("; ")
+        );
+    }
     for note in &report.notes {
         let _ = writeln!(out, "note: {note}");
     }
+    let shown: Vec<&Row> = report
+        .rows
+        .iter()
+        .filter(|r| !only_changes || !r.flags.is_empty())
+        .collect();
+    let width = shown
+        .iter()
+        .map(|r| r.key.chars().count().max(r.metric.chars().count()))
+        .max()
+        .unwrap_or(0)
+        .max(34);
+    let w_section = shown
+        .iter()
+        .map(|r| r.section.chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(9);
+    let names = [old_name, new_name].map(|n| n.chars().count().max(12));
+    let [w_old, w_new] = names;
     let mut section = "";
-    for row in &report.rows {
-        if only_changes && row.flags.is_empty() {
-            continue;
-        }
+    for row in shown {
         if row.section != section {
+            if !out.is_empty() {
+                out.push('\n');
+            }
             section = row.section;
             let _ = writeln!(
                 out,
-                "\n{:<9} {:<34} {:>12} {:>12} {:>9}  flags",
+                "{:<w_section$} {:<width$} {:>w_old$} {:>w_new$} {:>9}  flags",
                 section, row.metric, old_name, new_name, "change"
             );
         }
@@ -214,9 +394,8 @@ pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: boo
         } else {
             "-".into()
         };
-        let _ = writeln!(
-            out,
-            "{:<9} {:<34} {:>12} {:>12} {:>9}  {}",
+        let line = format!(
+            "{:<w_section$} {:<width$} {:>w_old$} {:>w_new$} {:>9}  {}",
             "",
             row.key,
             fmt_value(row.old),
@@ -224,6 +403,7 @@ pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: boo
             change,
             row.flags.join("; ")
         );
+        let _ = writeln!(out, "{}", line.trim_end());
     }
     for k in &report.only_old {
         let _ = writeln!(out, "only in {old_name} (missing from {new_name}): {k}");
@@ -231,14 +411,29 @@ pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: boo
     for k in &report.only_new {
         let _ = writeln!(out, "only in {new_name}: {k}");
     }
-    let _ = writeln!(
+    if !out.is_empty() {
+        out.push('\n');
+    }
+    let _ = write!(
         out,
-        "\n{} records compared, {} regressions, {} only in old, {} only in new",
+        "{} records compared, {} regressions, {} only in old, {} only in new",
         report.rows.len(),
         report.regressions(),
         report.only_old.len(),
         report.only_new.len()
     );
+    if report.meta.machines_differ() {
+        if report.across_machines {
+            let _ = write!(out, "; different machines, timings judged anyway");
+        } else {
+            let _ = write!(
+                out,
+                "; different machines: {} timing regressions not counted",
+                report.withheld
+            );
+        }
+    }
+    out.push('\n');
     out
 }
 

@@ -51,7 +51,7 @@ pub(super) fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &
 /// `case ν cull/reference metric`, then ` [f32]` (and the device, when not the CPU) for
 /// records of another precision or device: f32 and f64 records never pair, while the
 /// keys of f64 CPU records stay what they were before those fields existed.
-fn ratio_key(r: &RatioRecord) -> String {
+pub(super) fn ratio_key(r: &RatioRecord) -> String {
     let mut key = format!(
         "{} {} {}/{} {}",
         r.case, r.nu, r.cull, r.reference, r.metric

@@ -34,7 +34,18 @@ pub struct Report {
     pub only_new: Vec<String>,
     /// Notes on the files themselves (e.g. different workloads).
     pub notes: Vec<String>,
+    /// How the files' `meta` differ: the machine (timing verdicts withheld unless
+    /// `across_machines`) and the setup (notes).
+    pub meta: super::machine::MetaDiff,
+    /// Whether timing verdicts were given although the machines differ
+    /// (`--across-machines`).
+    pub across_machines: bool,
+    /// Timing regressions not counted because the machines differ.
+    pub withheld: usize,
 }
+
+/// The sections whose verdicts are timings: a fact about the machine as much as the code.
+pub(super) const TIMED_SECTIONS: [&str; 4] = ["timing", "ratio", "f32-check timing", "estimate"];
 
 /// The flag of a timed value that moved by `change` (relative, positive slower) without
 /// a disjoint slowdown: noise when it grew past `threshold`, `faster` when it fell past
@@ -63,6 +74,13 @@ impl Report {
     pub fn missing(&self) -> usize {
         self.only_old.len()
     }
+}
+
+/// The first key that two of `records` share, if any: such a file cannot be paired
+/// record by record (which of the two would be compared?).
+pub(super) fn first_duplicate<R>(records: &[R], k: impl Fn(&R) -> String) -> Option<String> {
+    let mut seen = std::collections::BTreeSet::new();
+    records.iter().map(k).find(|key| !seen.insert(key.clone()))
 }
 
 /// Matches records of the two files by key; keys on one side only go to the report.

@@ -18,6 +18,7 @@
 //!   for the whole f32 path ([`torus_cull::intersect_f32`]) it is answered by f64 and counted.
 
 pub mod families;
+pub mod plot;
 
 use crate::oracle::{
     OracleClass, Query, classify_from_surface, first_crossing_from_surface, reference_roots,
@@ -503,7 +504,8 @@ fn opt_stats(s: Option<ErrorStats>) -> [String; 3] {
     }
 }
 
-/// The table's columns; `family` to `amb` are filled on each family's first line only.
+/// The table's columns; `family` to `amb` are filled on each family's first line only,
+/// `f64 ns/ray` on its `f32` line, beside the f32 path's own time.
 const TABLE_HEADER: [&str; 16] = [
     "family",
     "nu",
@@ -537,7 +539,7 @@ pub fn table(records: &[FamilyRecord]) -> String {
 fn family_rows(r: &FamilyRecord) -> Vec<[String; 16]> {
     let nu = match r.nu {
         Some(nu) => format!("{nu}"),
-        None => format!("{:.3}-{:.0}", r.nu_range[0], r.nu_range[1]),
+        None => nu_span(r.nu_range),
     };
     let lines = [
         ("cert", &r.certified, None),
@@ -570,10 +572,13 @@ fn family_rows(r: &FamilyRecord) -> Vec<[String; 16]> {
             p99,
             max,
             ns.map_or_else(|| "-".into(), |v| format!("{v:.1}")),
-            lead(
+            // On the f32 path's row, beside the time it is the scale for.
+            if who == "f32" {
                 r.ns_per_ray
-                    .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect)),
-            ),
+                    .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect))
+            } else {
+                String::new()
+            },
         ]
     };
     lines
@@ -581,6 +586,15 @@ fn family_rows(r: &FamilyRecord) -> Vec<[String; 16]> {
         .enumerate()
         .map(|(i, l)| row(i, l))
         .collect()
+}
+
+/// The ν a family without one ν spans, `lo..hi` to four significant digits, or one value
+/// when the two agree to that precision (a family of one ray). It was `{lo:.3}-{hi:.0}`,
+/// which read `3.145-3` for rays between 3.145 and 3.4.
+pub fn nu_span([lo, hi]: [f64; 2]) -> String {
+    let sig = |v: f64| crate::number::Num(format!("{v:.3e}").parse().unwrap_or(v)).to_string();
+    let (lo, hi) = (sig(lo), sig(hi));
+    if lo == hi { lo } else { format!("{lo}..{hi}") }
 }
 
 /// `header` and `rows` in columns as wide as their widest cell: family, nu and who to the
@@ -635,6 +649,16 @@ fn totals(records: &[FamilyRecord]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 29: one ray's ν is one value, a range keeps four significant digits (it
+    /// printed "3.145-3" for 3.145..3.4).
+    #[test]
+    fn nu_spans_keep_their_digits() {
+        assert_eq!(nu_span([3.145, 3.145]), "3.145");
+        assert_eq!(nu_span([3.145, 3.4]), "3.145..3.4");
+        assert_eq!(nu_span([1.0123, 999.87]), "1.012..999.9");
+        assert_eq!(nu_span([22.713, 22.713]), "22.71");
+    }
 
     #[test]
     fn ulp_and_stats() {

@@ -118,7 +118,8 @@ impl Scene {
     pub fn build(kind: SceneKind, nu: f64, count: usize, seed: u64) -> Result<Scene, SceneError> {
         if !(nu.is_finite() && nu > 1.0 && nu <= torus_cull::MAX_NU) {
             return Err(SceneError(format!(
-                "nu = {nu} is invalid (allowed: 1 < nu <= {})",
+                "nu = {} is invalid (allowed: 1 < nu <= {})",
+                crate::number::Num(nu),
                 torus_cull::MAX_NU
             )));
         }

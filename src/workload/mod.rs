@@ -143,7 +143,8 @@ impl fmt::Display for GenerateError {
             GenerateError::BadNu(nu) => {
                 write!(
                     f,
-                    "nu = {nu} is invalid (allowed: 1 < nu <= {})",
+                    "nu = {} is invalid (allowed: 1 < nu <= {})",
+                    crate::number::Num(*nu),
                     torus_cull::MAX_NU
                 )
             }

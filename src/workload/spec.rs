@@ -259,12 +259,13 @@ fn check_nu(nu: f64, cases: &[Case]) -> Result<(), String> {
         } else {
             "nu = R/r must be finite and > 1 (ring tori only)"
         };
-        return Err(format!("{nu} is invalid: {why}"));
+        return Err(format!("{} is invalid: {why}", crate::number::Num(nu)));
     }
     if nu > MAX_NU {
         return Err(format!(
-            "{nu} is invalid (allowed: 1 < nu <= {MAX_NU}, the largest nu the \
-             intersection and the culls are tested at)"
+            "{} is invalid (allowed: 1 < nu <= {MAX_NU}, the largest nu the \
+             intersection and the culls are tested at)",
+            crate::number::Num(nu)
         ));
     }
     if let Some(case) = cases.iter().find(|c| nu < c.min_nu()) {
@@ -334,7 +335,10 @@ fn parse_bvh(value: serde_json::Value) -> Result<BvhSpec, FieldError> {
         if !(nu.is_finite() && nu > 1.0 && nu <= MAX_NU) {
             return Err((
                 format!("bvh.nu[{i}]"),
-                format!("{nu} is invalid (allowed: 1 < nu <= {MAX_NU})"),
+                format!(
+                    "{} is invalid (allowed: 1 < nu <= {MAX_NU})",
+                    crate::number::Num(nu)
+                ),
             ));
         }
     }

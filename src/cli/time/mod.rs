@@ -64,6 +64,10 @@ pub struct TimeArgs {
     /// Cpu, e.g. Mesa's lavapipe) is timed too, but as a CPU proxy, never as GPU speed.
     #[arg(long, value_enum, default_value_t = Device::Cpu)]
     device: Device,
+    /// Skip the SVG plots (by default the paired ratios, or with `--device gpu` the ns
+    /// per ray, are drawn against ν with their intervals, next to the results file).
+    #[arg(long)]
+    no_plots: bool,
 }
 
 /// Where `torus-cull time` measures.
@@ -107,7 +111,12 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         if args.mode == Mode::Both {
             return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
         }
-        return gpu::run(&workload, &nus, &culls, args.seconds, batch, &path);
+        let code = gpu::run(&workload, &nus, &culls, args.seconds, batch, &path)?;
+        if !args.no_plots {
+            // Drawn from the file as written: its estimates, ns per ray against ν.
+            crate::run::write_plots(&Results::load(&path)?, &path)?;
+        }
+        return Ok(code);
     }
 
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
@@ -116,13 +125,47 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut options = PairedOptions::total(args.seconds, batch);
     if args.mode == Mode::Both {
         options.batch_isa = Some(dispatch.isa());
+        if let Some(note) = no_batch_form_note(&culls) {
+            eprintln!("{note}");
+        }
     }
     let records = time_with_progress(&workload, &nus, &culls, &options)?;
     let results = ratio_results(&workload, records, &nus, &options);
     out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
+    if !args.no_plots {
+        crate::run::write_plots(&results, &path)?;
+    }
     Ok(ExitCode::SUCCESS)
+}
+
+/// With `--mode both`, what the batch tables will lack and why: the culls asked for with
+/// no batch form (`discriminant_f64`, whose point is the scalar f64 discriminant) are timed
+/// one ray at a time only. `None` when every cull asked for has a batch form.
+fn no_batch_form_note(culls: &[CullKind]) -> Option<String> {
+    let scalar_only: Vec<&str> = culls
+        .iter()
+        .filter(|c| c.batched().is_none())
+        .map(|c| c.name())
+        .collect();
+    if scalar_only.is_empty() {
+        return None;
+    }
+    let batched: Vec<&str> = culls
+        .iter()
+        .filter(|c| c.batched().is_some())
+        .map(|c| c.name())
+        .collect();
+    let rest = if batched.is_empty() {
+        ", so no batch table is printed (no cull asked for has a batch form)".to_string()
+    } else {
+        format!("; the batch tables cover {}", batched.join(", "))
+    };
+    Some(format!(
+        "note: --mode both: {} has no batch form and is timed one ray at a time only{rest}",
+        scalar_only.join(", ")
+    ))
 }
 
 /// `--seconds`: positive, finite and at most [`MAX_SECONDS`].
@@ -295,7 +338,8 @@ fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>,
         if !workload.nu.contains(&nu) {
             let have: Vec<String> = workload.nu.iter().map(f64::to_string).collect();
             return Err(format!(
-                "--nu {nu} is not in workload {} (allowed: {})",
+                "--nu {} is not in workload {} (allowed: {})",
+                torus_cull_lab::number::Num(nu),
                 file.display(),
                 have.join(", ")
             ));

@@ -1,0 +1,160 @@
+//! `torus-cull compare` on two f32-check files, family by family.
+//!
+//! * **f32-check** rows (`<family>[ ν] cert` and `<family>[ ν] f32`, the certified verdict and
+//!   the whole f32 path): the escalation rate, recomputed from `escalated / rays`. A
+//!   changed count is flagged `changed`; more missed, spurious or far answers than before
+//!   is a **regression** (ours must have none). The peer's row (`<family> peer`) shows its
+//!   changes and decides nothing: its speckles are what f32-check measures, not ours.
+//! * **f32-check timing** rows (`<family> f32 path`): ns per ray, the minimum over a few
+//!   rounds with no interval, so a change is shown as `no verdict (no interval)`.
+//!
+//! Two files of different families, rays or seed (`meta.workload_sha256`) are refused by
+//! [`comparable`], as results files of different workloads are.
+
+use super::rows::{Report, Row, TIMED_SECTIONS, first_duplicate, pair_up};
+use crate::f32_check::{CheckFile, FamilyRecord, Tally};
+
+/// A family's key: its name, and its ν when it has one (the workload generators' families
+/// share a name across ν).
+fn family_key(f: &FamilyRecord) -> String {
+    match f.nu {
+        Some(nu) => format!("{} {nu}", f.family),
+        None => f.family.clone(),
+    }
+}
+
+/// Refuses files whose rays differ, and a file that holds a family twice.
+pub fn comparable(old: &CheckFile, new: &CheckFile) -> Result<(), String> {
+    for file in [old, new] {
+        if let Some(family) = first_duplicate(&file.families, family_key) {
+            return Err(format!(
+                "family `{family}` appears more than once: compare cannot tell which to pair"
+            ));
+        }
+    }
+    if old.meta.workload_sha256 != new.meta.workload_sha256 {
+        return Err(format!(
+            "the f32-check rays differ (field `meta.workload_sha256`; rays per family {} vs \
+             {}, seeds {:?} vs {:?}): their counts are of different rays, so nothing is \
+             compared",
+            old.rays_per_family, new.rays_per_family, old.meta.seed, new.meta.seed
+        ));
+    }
+    Ok(())
+}
+
+/// The rows of two f32-check files; `threshold` is a fraction (0.10 for 10 %). Timing
+/// verdicts across machines are handled as for results files.
+pub fn compare(old: &CheckFile, new: &CheckFile, threshold: f64, across_machines: bool) -> Report {
+    let mut report = Report {
+        meta: super::machine::differences(&old.meta, &new.meta),
+        across_machines,
+        ..Report::default()
+    };
+    let pairs = pair_up(
+        &old.families,
+        &new.families,
+        family_key,
+        &mut report,
+        "f32-check",
+    );
+    for (key, o, n) in &pairs {
+        let oracle = changed_counts(&[
+            ("rays", o.rays, n.rays),
+            ("hits", o.hits, n.hits),
+            ("misses", o.misses, n.misses),
+            ("ambiguous", o.ambiguous, n.ambiguous),
+        ]);
+        for (who, a, b, ours) in [
+            ("cert", &o.certified, &n.certified, true),
+            ("f32", &o.f32_path, &n.f32_path, true),
+            ("peer", &o.peer, &n.peer, false),
+        ] {
+            let mut row = tally_row(format!("{key} {who}"), (a, o.rays), (b, n.rays), ours);
+            if who == "cert" && !oracle.is_empty() {
+                row.flags
+                    .insert(0, format!("oracle counts changed: {}", oracle.join(", ")));
+            }
+            report.rows.push(row);
+        }
+    }
+    for (key, o, n) in &pairs {
+        if let (Some(a), Some(b)) = (o.ns_per_ray, n.ns_per_ray) {
+            let change = b.f32_path / a.f32_path - 1.0;
+            let flags = if change.abs() > threshold {
+                vec![format!(
+                    "{} {:+.1}%: no verdict (no interval)",
+                    if change > 0.0 { "slower" } else { "faster" },
+                    change * 100.0
+                )]
+            } else {
+                Vec::new()
+            };
+            report.rows.push(Row {
+                section: TIMED_SECTIONS[2],
+                key: format!("{key} f32 path"),
+                metric: "ns_per_ray (min of rounds)",
+                old: a.f32_path,
+                new: b.f32_path,
+                flags,
+                regression: false,
+            });
+        }
+    }
+    super::judge_across_machines(&mut report);
+    report
+}
+
+/// `name a->b` for each count that changed.
+fn changed_counts(counts: &[(&str, u64, u64)]) -> Vec<String> {
+    counts
+        .iter()
+        .filter(|(_, a, b)| a != b)
+        .map(|(name, a, b)| format!("{name} {a}->{b}"))
+        .collect()
+}
+
+/// One intersector on one family: its escalation rate from its counts, its changed
+/// counts, and (for ours) a regression when it got more answers wrong.
+fn tally_row(
+    key: String,
+    (o, o_rays): (&Tally, u64),
+    (n, n_rays): (&Tally, u64),
+    ours: bool,
+) -> Row {
+    let rate = |t: &Tally, rays: u64| {
+        if rays > 0 {
+            t.escalated as f64 / rays as f64
+        } else {
+            f64::NAN
+        }
+    };
+    let changed = changed_counts(&[
+        ("escalated", o.escalated, n.escalated),
+        ("missed", o.missed, n.missed),
+        ("spurious", o.spurious, n.spurious),
+        ("far", o.far, n.far),
+        ("hits_answered", o.hits_answered, n.hits_answered),
+    ]);
+    let mut flags = Vec::new();
+    if !changed.is_empty() {
+        flags.push(format!("changed: {}", changed.join(", ")));
+    }
+    let wrong = |t: &Tally| t.missed + t.spurious + t.far;
+    let regression = ours && wrong(n) > wrong(o);
+    if regression {
+        flags.push(format!(
+            "REGRESSION: missed/spurious/far {}/{}/{} -> {}/{}/{}",
+            o.missed, o.spurious, o.far, n.missed, n.spurious, n.far
+        ));
+    }
+    Row {
+        section: "f32-check",
+        key,
+        metric: "escalation_rate",
+        old: rate(o, o_rays),
+        new: rate(n, n_rays),
+        flags,
+        regression,
+    }
+}
