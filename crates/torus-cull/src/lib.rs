@@ -101,7 +101,10 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, Precision, Ray, RayError, Torus, TorusError,
 };
-pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
+pub use intersect::{
+    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
+    intersect_all, occluded,
+};
 pub use names::{Named, UnknownName};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact

@@ -22,10 +22,12 @@ use nearest_hit::{Careful, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
 use sealed::{FromExact, Steps};
 
+mod all;
 mod from_surface;
 pub(crate) mod nearest_hit;
 mod ray_cast;
 pub(crate) mod reduce;
+pub use all::{Crossing, Crossings, Passage, Span, Spans, intersect_all};
 use glam::{DVec3, Vec3};
 pub use ray_cast::{Culled, RayCast};
 
