@@ -602,3 +602,32 @@ fn fixed_capacity_and_bad_input() {
     assert_eq!(all.spans().len(), 2);
     assert!(std::mem::size_of::<Crossings<Vec3>>() <= 128);
 }
+
+#[test]
+fn wavefront_form_gives_the_scalar_answers_behind_every_cull() {
+    // Every batched cull in front: every ray's answer equals intersect_all's, so a ray
+    // the cull rejects (no crossing, outside all along) never had a crossing to lose.
+    use torus_cull::batch::{BATCHED, Dispatch, Wavefront};
+    let dispatch = Dispatch::best();
+    let mut wavefront = Wavefront::new();
+    let mut all = Vec::new();
+    let (mut rays_checked, mut culled) = (0, 0);
+    for nu in [1.01, 2.0, 32.0, 1000.0] {
+        for &case in &[Case::Uniform, Case::Grazing, Case::Hole, Case::Camera] {
+            let batch = generate(case, nu, 500, 0xA16 ^ nu.to_bits(), Pose::Random).unwrap();
+            for cull in BATCHED {
+                let stats =
+                    wavefront.intersect_all(&dispatch, cull, &batch.torus, &batch.rays, &mut all);
+                assert_eq!(all.len(), batch.rays.len());
+                culled += stats.rays - stats.kept;
+                for (ray, got) in batch.rays.iter().zip(&all) {
+                    let want = intersect_all(&batch.torus, ray);
+                    assert_eq!(got, &want, "{cull:?} {case:?} nu={nu}: {ray:?}");
+                    rays_checked += 1;
+                }
+            }
+        }
+    }
+    println!("wavefront: {rays_checked} ray answers equal to the scalar ones, {culled} culled");
+    assert!(culled > 10_000);
+}

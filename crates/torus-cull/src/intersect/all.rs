@@ -90,7 +90,7 @@ pub struct Spans<P: Precision = Vec3> {
 
 impl<P: Precision> Crossings<P> {
     /// No crossing, outside at `t_min`, over the ray's range.
-    fn none(ray: &Ray<P>) -> Crossings<P> {
+    pub(crate) fn none(ray: &Ray<P>) -> Crossings<P> {
         Crossings {
             crossings: [Crossing {
                 t: <P::Float as Scalar>::ZERO,
