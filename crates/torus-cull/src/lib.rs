@@ -20,7 +20,9 @@
 //!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
 //!   root-free [`DiscriminantCull`]; [`CullKind`] names them for run-time choice.
 //! * [`intersect()`]: the nearest hit, from [`quartic`]'s nearest-root solver on the
-//!   torus quartic; [`quartic::solve_quartic`] gives every real root (for CSG).
+//!   torus quartic; [`intersect_all`] every crossing in range with its normal and whether
+//!   the ray enters or leaves, paired into the spans inside the solid (for CSG and
+//!   transport); [`quartic::solve_quartic`] every real root of a quartic of your own.
 //! * [`batch`]: the same culls and solver on SIMD lanes, for packets and wavefronts, with
 //!   the instruction set picked at run time.
 //!
