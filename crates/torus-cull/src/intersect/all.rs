@@ -208,12 +208,11 @@ impl<P: Precision> Spans<P> {
     }
 }
 
-/// A root of the whole line's quartic in the foot-point frame: `key`, the coordinate the
-/// range is tested in (`u`, or `v` = u − own root from a surface point), and `u`.
+/// A root of the whole line's quartic in the foot-point frame, at `key`: `u`, or for a ray
+/// from a surface point `v = u − own root`.
 #[derive(Debug, Clone, Copy)]
 struct LineRoot {
     key: f64,
-    u: f64,
     double: bool,
     /// The origin's own root of a ray from a surface point: counted for the side, never
     /// reported.
@@ -295,14 +294,12 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
         let (cubic, n) = cubic_roots(g.a3, g.a2, g.a1);
         let mut roots = [LineRoot {
             key: 0.0,
-            u: g.own,
             double: false,
             origin: true,
         }; 4];
         for (slot, &(v, double)) in roots[1..].iter_mut().zip(&cubic[..n]) {
             *slot = LineRoot {
                 key: v,
-                u: g.own + v,
                 double,
                 origin: false,
             };
@@ -344,7 +341,7 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
             }
         };
         walk(&roots[..n], range, |r, passage| {
-            let u = sc(r.u);
+            let u = sc(r.key);
             let t = line.t_at(u, sc(tube.major)).v;
             emit(
                 t,
@@ -362,7 +359,6 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
 fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
     let mut out = [LineRoot {
         key: 0.0,
-        u: 0.0,
         double: false,
         origin: false,
     }; 4];
@@ -372,7 +368,6 @@ fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
         let double = i + 1 < sorted.len() && sorted[i + 1] == u;
         out[n] = LineRoot {
             key: u,
-            u,
             double,
             origin: false,
         };
