@@ -4,7 +4,7 @@
 //! `intersect`'s hit.
 //!
 //! Families: the workload's five cases (uniform, camera, grazing, outer band, hole) at
-//! random poses, the adversarial hole-edge, tangent and tangent-limit lines (f32 rays, and
+//! random poses, from their origins and from 100·(R + r) farther back, the adversarial hole-edge, tangent and tangent-limit lines (f32 rays, and
 //! f64 rays exactly on the f64 line), rays from inside the tube, and rays from a surface
 //! point (`Torus::spawn`); ν from 1.01 to 1000, R from 10⁻³ to 10³.
 //!
@@ -18,7 +18,7 @@
 
 mod common;
 
-use common::pairs;
+use common::{pairs, pushed_back};
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -404,12 +404,15 @@ fn workload_cases_at_every_scale() {
                         continue;
                     };
                     check_f32_and_f64(&mut tally, &format!("{case:?} nu={nu} k={k}"), &t, &r);
+                    // The same line from 100·(R + r) farther back.
+                    let far = pushed_back(&r, 100.0 * t.outer_radius());
+                    check_f32_and_f64(&mut tally, &format!("{case:?} nu={nu} k={k} far"), &t, &far);
                 }
             }
         }
     }
     tally.report_and_assert("workload cases");
-    assert!(tally.robust_roots > 20_000, "{}", tally.robust_roots);
+    assert!(tally.robust_roots > 40_000, "{}", tally.robust_roots);
 }
 
 #[test]
