@@ -16,7 +16,8 @@ coefficients by a relative ε moves the root by about κ·ε relative.
 Sources of the cases: A. G. Orellana and C. De Michele, "Algorithm 1010: Boosting
 efficiency in solving quartic equations with no compromise in accuracy", ACM TOMS 46(2),
 2020 (cases 1-24 of its accuracy test, as listed in the authors' reference code
-`accuracytest.cpp` of cridemichel/quarticpp, current version); cases 1-13 are those of
+`accuracytest.cpp` of cridemichel/quarticpp, in its version with case 15's fourth root
+2^-48 and case 23's 3/8 computed as a quotient); cases 1-13 are those of
 F. Flocke, "Algorithm 954: An accurate and efficient cubic and quartic equation solver
 for physical applications", ACM TOMS 41(4), 2015, and 14-18 those of P. Strobach,
 "The fast quartic solver", J. Comput. Appl. Math. 234, 2010. The structured cases below
@@ -222,6 +223,9 @@ case("oqs12_complex_1e3+-3i_1e3+-i", [], [("1e3", "3"), ("1e3", "1")])
 case("oqs13_complex_2+-1e4i_1+-1e3i", [], [("2", "1e4"), ("1", "1e3")])
 case("oqs14_strobach_quadruple_1000", ["1000"] * 4)
 case("oqs15_strobach_triple_1000_and_2^-48", ["1000"] * 3 + [F(1, 2**48)])
+# An earlier version of the reference code has 1e-15 for this root (and 3/8 written as
+# the string "3.0/8.0" in case 23); both variants of case 15 are kept.
+case("oqs15_earlier_triple_1000_and_1e-15", ["1000"] * 3 + ["1e-15"])
 case("oqs16_strobach_complex_1e16+-1e7i_1+-0.1i", [], [("1e16", "1e7"), ("1", "0.1")])
 case("oqs17_strobach_1e4_10001_10010_10100", ["10000", "10001", "10010", "10100"])
 case("oqs18_strobach_complex_4e5+-3e2i_3e4+-7e3i", [], [("4e5", "3e2"), ("3e4", "7e3")])
