@@ -16,7 +16,7 @@
 //! crossings in range alternate, entering first, by construction: a span can only be
 //! wrong where a root is missed, which the tests check against the oracle.
 
-use super::from_surface::{SurfaceCubic, cubic_roots};
+use super::from_surface::{SurfaceCubic, cubic_roots, starts_on_the_surface};
 use super::reduce::{coefficients, foot_line, normal};
 use crate::geometry::ray::sealed::Scalar;
 use crate::num::{V3, sc};
@@ -233,7 +233,9 @@ struct LineRoot {
 ///   far as f64 resolves it.
 /// - A ray from a surface point ([`Ray::from_surface`](crate::Ray::from_surface)) has its
 ///   origin's root divided out, as in [`crate::intersect()`]: the crossings are those with
-///   `t > 0`, and [`Crossings::starts_inside`] is the side just past the origin.
+///   `t > 0`, and [`Crossings::starts_inside`] is the side just past the origin (an
+///   origin farther than 10⁻²·R from the surface is no surface point: that ray is
+///   answered literally, as there).
 /// - A crossing whose `t` overflows the ray's float is left out (it lies past every finite
 ///   `t`, so a span it would close runs to `t_max`): never ∞ or NaN.
 ///
@@ -288,7 +290,7 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
             out.len += 1;
         }
     };
-    let starts_inside = if ray.starts_on_surface() {
+    let starts_inside = if ray.starts_on_surface() && starts_on_the_surface(tube, line.0) {
         let g = SurfaceCubic::new(tube, line);
         let (lo, hi) = g.v_range(t_min, t_max);
         let (cubic, n) = cubic_roots(g.a3, g.a2, g.a1);

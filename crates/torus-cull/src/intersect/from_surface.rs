@@ -94,6 +94,18 @@ impl SurfaceCubic {
     }
 }
 
+/// Whether a ray marked as starting on the surface really does: its torus-frame origin `o`
+/// within [`OWN_ROOT_REACH`]·R of the surface (`|√((ρ − R)² + y²) − r|`, in units of R).
+/// Farther, there is no root of its own to divide out (an origin 10⁶⁹ away, say, whose
+/// dropped constant would leave the mirror image of the origin as a "crossing"): such a
+/// ray is answered as a literal one. NaN is not on the surface.
+pub(crate) fn starts_on_the_surface(tube: &Tube, o: DVec3) -> bool {
+    let x = o * tube.inv_major;
+    let rho = x.x.hypot(x.z);
+    let off = ((rho - 1.0).hypot(x.y) - tube.minor_rel).abs();
+    off <= OWN_ROOT_REACH
+}
+
 /// How far (in u, units of R) Newton may carry the origin's root from `u₀`: an origin
 /// rounded to f32 at up to 10⁴·R from the world origin is off the surface by about
 /// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.

@@ -274,7 +274,7 @@ pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
 fn exact<R: TorusRay>(torus: &Torus, ray: &R) -> Option<(f64, DVec3)> {
     let line = ray.local_f64(torus);
     let range = ray.range_f64();
-    if ray.on_surface() {
+    if ray.on_surface() && from_surface::starts_on_the_surface(torus.tube(), line.0) {
         return from_surface::intersect_from_surface(torus.tube(), line, range);
     }
     let ((o, d), (t_min, t_max)) = (line, range);
