@@ -23,7 +23,7 @@ for physical applications", ACM TOMS 41(4), 2015, and 14-18 those of P. Strobach
 "The fast quartic solver", J. Comput. Appl. Math. 234, 2010. The structured cases below
 them are this crate's.
 
-Run: python3 cases.py > cases.rs
+Run: python3 cases.py > cases.rs && cargo fmt --all
 """
 
 from fractions import Fraction as F
