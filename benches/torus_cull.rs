@@ -18,8 +18,8 @@
 //! The instruction set is picked at run time and recorded in `meta.isa`;
 //! `TORUS_CULL_ISA=avx2` (or `scalar`) forces a lower one.
 //!
-//! Plus the quartic solver (scalar, and the batch solver on lanes) against the `roots`
-//! and `kurbo` crates on the same coefficient sets, the
+//! Plus the quartic solver (scalar, and the batch solver on lanes) against the `roots`,
+//! `kurbo` and `polycool` crates on the same coefficient sets, the
 //! workload's `bvh` scenes (obvhs CWBVH over many tori, each cull at the leaves, Mrays/s
 //! and quartic solves per ray) and, last, the rejection sweep over every ν. The figures
 //! are criterion's medians and confidence intervals of this run, read back from its

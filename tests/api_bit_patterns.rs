@@ -2,7 +2,8 @@
 //! constructors refuse what they cannot serve, and on everything they accept the exact
 //! intersection and every cull run without a panic, answer finitely inside the ray's
 //! range, no cull changes the answer (a rejected ray has no hit), and the `RayCast` queries
-//! give the free functions' answers. The quartic solvers take any f64 coefficients
+//! give the free functions' answers; `intersect_all`'s crossings are finite, sorted, in
+//! range and alternate. The quartic solvers take any f64 coefficients
 //! (finite, sorted roots), and `solve_quartic` still finds the known roots of quartics
 //! scaled far beyond f64's comfortable range.
 
@@ -12,8 +13,8 @@ use glam::{DVec3, Vec3};
 use proptest::prelude::*;
 use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 use torus_cull::{
-    CullKind, DRay, F32Verdict, Ray, RayCast, Torus, intersect, intersect_culled, intersect_f32,
-    intersect_f32_certified,
+    CullKind, DRay, F32Verdict, Passage, Ray, RayCast, Torus, intersect, intersect_all,
+    intersect_culled, intersect_f32, intersect_f32_certified,
 };
 
 /// Floats by bit pattern: every class of f32 equally likely to come up as any other.
@@ -107,6 +108,47 @@ where
     Ok(())
 }
 
+/// What `intersect_all` must be on any accepted ray (see the property below).
+fn check_all<P: torus_cull::Precision>(
+    torus: &Torus,
+    ray: &Ray<P>,
+    t64: impl Fn(P::Float) -> f64,
+    n64: impl Fn(P) -> DVec3,
+) -> Result<(), TestCaseError>
+where
+    Ray<P>: torus_cull::TorusRay<Hit = torus_cull::Hit<P>>,
+{
+    let all = intersect_all(torus, ray);
+    let (lo, hi) = (t64(ray.t_min()), t64(ray.t_max()));
+    prop_assert!(all.len() <= 4);
+    let mut inside = all.starts_inside();
+    let mut last = f64::NEG_INFINITY;
+    for c in all.as_slice() {
+        let t = t64(c.t);
+        prop_assert!(t.is_finite() && t >= lo && t <= hi && t >= last, "{all:?}");
+        let n = n64(c.normal);
+        prop_assert!(n.is_finite() && (n.length() - 1.0).abs() < 1e-3, "{all:?}");
+        match c.passage {
+            Passage::Enter => prop_assert!(!inside, "{all:?}"),
+            Passage::Exit => prop_assert!(inside, "{all:?}"),
+            Passage::Touch => {}
+        }
+        if c.passage != Passage::Touch {
+            inside = !inside;
+        }
+        last = t;
+    }
+    let spans = all.spans();
+    prop_assert!(spans.len() <= 2);
+    for s in spans.as_slice() {
+        prop_assert!(t64(s.t_enter) <= t64(s.t_exit), "{spans:?}");
+    }
+    let first = all.as_slice().first().map(|c| t64(c.t));
+    let hit = intersect(torus, ray).map(|h| t64(h.t));
+    prop_assert_eq!(first.is_some(), hit.is_some(), "{:?} vs {:?}", all, hit);
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 20_000, ..ProptestConfig::default() })]
 
@@ -150,6 +192,29 @@ proptest! {
                     prop_assert!(finished.escalated);
                     prop_assert_eq!(finished.hit, intersect(&torus, &ray));
                 }
+            }
+        }
+    }
+
+    /// `intersect_all` on any ray the constructor accepts, f32 and f64, literal or from a
+    /// surface point: no panic, at most four crossings with finite `t` in range, sorted,
+    /// unit normals, entries and exits alternating from the side at `t_min`, at most two
+    /// well-formed spans, and the first crossing where `intersect` puts the hit (or
+    /// neither has one).
+    #[test]
+    fn intersect_all_on_rays_of_any_bits(
+        torus in torus(), o in dvec3(), d in dvec3(), aim in any::<bool>(), surface in any::<bool>(),
+    ) {
+        let d = if aim { torus.center().as_dvec3() - o } else { d };
+        let made = if surface { DRay::from_surface(o, d) } else { DRay::new(o, d) };
+        if let Ok(ray) = made {
+            check_all(&torus, &ray, |t| t, |n| n)?;
+            if let Ok(narrow) = if surface {
+                Ray::from_surface(o.as_vec3(), d.as_vec3())
+            } else {
+                Ray::new(o.as_vec3(), d.as_vec3())
+            } {
+                check_all(&torus, &narrow, f64::from, |n| n.as_dvec3())?;
             }
         }
     }

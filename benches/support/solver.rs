@@ -4,7 +4,8 @@
 //!
 //! Every solver answers the renderer's question, the nearest root at or after the ray's
 //! origin (t ≥ 0): ours directly ([`nearest_root_depressed`]), the all-roots solvers
-//! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking.
+//! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking, and
+//! `polycool` 0.4 (Yuksel's monotone pieces) by its roots in `[lo, B]`.
 //! Accuracy is counted on that nearest root by [`NearestScore`], the count
 //! `tests/batch_solve.rs` uses too.
 
@@ -72,15 +73,33 @@ fn kurbo_crate(c: &[f64; 3], lo: f64) -> Option<f64> {
     )
 }
 
+/// `polycool` 0.4 (linebender; C. Yuksel's method, HPG 2022: the roots of the derivative
+/// split the interval into monotone pieces, each sign change bracketed and refined by
+/// Newton's steps) asked for the roots in `[lo, B]`, B = 1 + max|cᵢ| (Cauchy's bound),
+/// to an absolute 10⁻¹⁴ in u (about 50 ulps of the O(1) roots: the others' accuracy).
+/// Its roots come sorted, so the first is the nearest.
+#[inline(always)]
+fn polycool_crate(c: &[f64; 3], lo: f64) -> Option<f64> {
+    let bound = 1.0 + c[0].abs().max(c[1].abs()).max(c[2].abs());
+    polycool::Quartic::new([c[2], c[1], c[0], 0.0, 1.0])
+        .roots_between(lo, bound, POLYCOOL_X_ERROR)
+        .first()
+        .copied()
+}
+
+/// The absolute accuracy in u asked of `polycool`.
+const POLYCOOL_X_ERROR: f64 = 1e-14;
+
 /// A solver under test: its name and its nearest root u ≥ lo for one quartic.
 pub type Solver = (&'static str, fn(&[f64; 3], f64) -> Option<f64>);
 
 /// Ours first; the ratio tables compare everyone with `roots_0.0.8`.
-pub const SOLVERS: [Solver; 4] = [
+pub const SOLVERS: [Solver; 5] = [
     ("torus_cull", ours_nearest),
     ("torus_cull_all", ours_all),
     ("roots_0.0.8", roots_crate),
     ("kurbo_0.13", kurbo_crate),
+    ("polycool_0.4", polycool_crate),
 ];
 
 /// The batch solver ([`nearest_roots`]: every quartic of a family at once, on SIMD

@@ -20,7 +20,9 @@
 //!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
 //!   root-free [`DiscriminantCull`]; [`CullKind`] names them for run-time choice.
 //! * [`intersect()`]: the nearest hit, from [`quartic`]'s nearest-root solver on the
-//!   torus quartic; [`quartic::solve_quartic`] gives every real root (for CSG).
+//!   torus quartic; [`intersect_all`] every crossing in range with its normal and whether
+//!   the ray enters or leaves, paired into the spans inside the solid (for CSG and
+//!   transport); [`quartic::solve_quartic`] every real root of a quartic of your own.
 //! * [`batch`]: the same culls and solver on SIMD lanes, for packets and wavefronts, with
 //!   the instruction set picked at run time.
 //!
@@ -104,7 +106,10 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, ON_SURFACE_REL, Precision, Ray, RayError, Torus, TorusError,
 };
-pub use intersect::{Culled, DHit, Hit, RayCast, TorusRay, intersect, occluded};
+pub use intersect::{
+    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
+    intersect_all, occluded,
+};
 pub use names::{Named, UnknownName};
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact

@@ -19,7 +19,7 @@ use crate::cull::BatchCull;
 use crate::intersect::TorusRay;
 use crate::intersect::sealed::{FromExact, Steps};
 use crate::num::Dispatch;
-use crate::{Torus, intersect, occluded};
+use crate::{Crossings, Ray, Torus, intersect, intersect_all, occluded};
 use glam::DVec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
@@ -296,6 +296,57 @@ impl Wavefront {
         }
     }
 
+    /// Every crossing of every ray (`all[i]` for `rays[i]`, resized): what
+    /// [`crate::intersect_all`] returns ray by ray, exactly. The cull runs on lanes and a
+    /// ray it rejects gets no crossing (a cull proves that the whole line misses the
+    /// torus, so the ray is outside all along); each ray it keeps is solved by the scalar
+    /// all-roots path, since the lane solver finds only the nearest root. So this form
+    /// saves the quartic on the rays a cull proves to miss and nothing more. In the stats,
+    /// `hits` counts the rays with a crossing and `scalar_fallbacks` the kept rays (all of
+    /// them solved by the scalar path).
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
+    /// use torus_cull::{Ray, Torus, intersect_all};
+    /// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+    /// // Rays along x at heights 0 (through both sides of the tube) and 5 (above it).
+    /// let rays = [
+    ///     Ray::new(Vec3::new(-10.0, 0.0, 0.0), Vec3::X)?,
+    ///     Ray::new(Vec3::new(-10.0, 5.0, 0.0), Vec3::X)?,
+    /// ];
+    /// let mut all = Vec::new();
+    /// let stats = Wavefront::new().intersect_all(&Dispatch::best(), BatchCull::Skala, &torus, &rays, &mut all);
+    /// assert_eq!((all[0].len(), all[0].spans().len()), (4, 2));
+    /// assert!(all[1].is_empty());
+    /// assert_eq!(all[0], intersect_all(&torus, &rays[0]));
+    /// assert_eq!(stats.kept, 1); // the ray above the torus is culled
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn intersect_all(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[Ray],
+        all: &mut Vec<Crossings>,
+    ) -> WavefrontStats {
+        self.cull_only(dispatch, cull, torus, rays);
+        all.clear();
+        all.extend(rays.iter().map(Crossings::none));
+        let kept = self.survivors.len();
+        for &i in &self.survivors.index[..kept] {
+            all[i] = intersect_all(torus, &rays[i]);
+        }
+        WavefrontStats {
+            rays: rays.len(),
+            kept,
+            scalar_fallbacks: kept,
+            hits: all.iter().filter(|c| !c.is_empty()).count(),
+            ..WavefrontStats::default()
+        }
+    }
+
     /// The survivors whose bit is set in `open` (the lanes left undecided), answered by
     /// the scalar f64 path and recorded in `finished`; how many.
     fn finish_in_f64<R: TorusRay, A: Answer<R>>(
@@ -338,6 +389,17 @@ impl Wavefront {
         out.clear();
         out.resize(rays.len(), A::NONE);
         self.finished.clear();
+        self.cull_only(dispatch, cull, torus, rays);
+    }
+
+    /// Cull on lanes (all rays for `none`) and compact the survivors into f64 columns.
+    fn cull_only<R: TorusRay>(
+        &mut self,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        torus: &Torus,
+        rays: &[R],
+    ) {
         if cull == BatchCull::NoCull {
             self.survivors.fill(rays, 0..rays.len(), rays.len());
         } else {

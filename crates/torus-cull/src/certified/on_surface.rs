@@ -22,6 +22,7 @@
 //! A ray into the tube (`c ≤ 0`), or one that leaves too close to the tangent plane for
 //! the margin, has no such start and escalates.
 
+use crate::intersect::from_surface::starts_on_the_surface;
 use crate::{Ray, Torus};
 use glam::DVec3;
 
@@ -42,12 +43,17 @@ pub(crate) enum Start {
 
 /// `t*` in units of the ray's `t` for a line from a surface point, in the torus's world
 /// frame (f64): the end of the stretch where the only root is the origin's own; `None`
-/// when the ray does not leave into the outside by a margin.
+/// when the ray does not leave into the outside by a margin. `Some(0)` for an origin too
+/// far off the surface to be a surface point, which the f64 path answers as a literal ray
+/// ([`starts_on_the_surface`]), and so does this one.
 #[must_use]
 pub(crate) fn clear_start(torus: &Torus, origin: DVec3, dir: DVec3) -> Option<f64> {
     let to_local = torus.to_local_rotation_f64();
     let o = to_local * (origin - torus.center_f64());
     let d = to_local * dir;
+    if !starts_on_the_surface(torus.tube(), o) {
+        return Some(0.0);
+    }
     let rho = o.x.hypot(o.z);
     let major = torus.major_radius_f64();
     if rho.is_nan() || rho <= 0.0 {
@@ -77,6 +83,12 @@ pub(crate) fn start(torus: &Torus, ray: &Ray) -> Start {
     let Some(t_star) = clear_start(torus, o, d) else {
         return Start::Escalate;
     };
+    if t_star == 0.0 {
+        return match Ray::with_range(ray.origin(), ray.dir(), ray.t_min(), ray.t_max()) {
+            Ok(literal) => Start::Literal(literal),
+            Err(_) => Start::Escalate,
+        };
+    }
     // Rounded down: any start in (0, t*] keeps the lemma (t* is positive and finite).
     let mut from = t_star as f32;
     if from == 0.0 || from.is_infinite() {
@@ -132,5 +144,11 @@ mod tests {
             panic!("across the hole has a start");
         };
         assert!((literal.t_min() - 1.0 / 3.0).abs() < 1e-6);
+        // An origin 0.5·R off the surface is no surface point: the literal ray, as f64.
+        let off = Ray::from_surface(Vec3::new(4.0, 3.0, 0.0), Vec3::NEG_Y).expect("ray");
+        let Start::Literal(literal) = start(&torus, &off) else {
+            panic!("answered as a literal ray");
+        };
+        assert_eq!((literal.t_min(), literal.starts_on_surface()), (0.0, false));
     }
 }

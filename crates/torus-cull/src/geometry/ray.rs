@@ -348,7 +348,9 @@ impl<P: Precision> Ray<P> {
     /// the origin was rounded, and it finds a re-hit through the hole or across the tube
     /// however close, with no ε to choose. An origin off the surface by δ moves the other
     /// crossings by about δ/|cos θ| there, as it would move any hit (docs/math.md §9).
-    /// A ray that is not from a surface point keeps [`Ray::new`]'s literal semantics.
+    /// An origin farther than 10⁻²·R from the surface is not a surface point, and such a
+    /// ray is answered literally. A ray that is not from a surface point keeps
+    /// [`Ray::new`]'s literal semantics.
     ///
     /// ```
     /// use glam::Vec3;

@@ -17,9 +17,9 @@
 //! exactly, so no rounding can turn the origin into a hit. The nearest root of `g` past it,
 //! in range, is the hit (docs/math.md §9).
 
-use super::reduce::{coefficients, foot_line, normal};
+use super::reduce::{FootLine, coefficients, foot_line, normal};
 use crate::geometry::Tube;
-use crate::num::{V3, sc};
+use crate::num::{Sc, V3, sc};
 use crate::quartic::eval;
 use glam::DVec3;
 
@@ -27,29 +27,83 @@ use glam::DVec3;
 /// `o + t·d` whose origin `o` lies on the surface, and the unit outward normal there.
 pub(crate) fn intersect_from_surface(
     tube: &Tube,
-    (o, d): (DVec3, DVec3),
+    line: (DVec3, DVec3),
     (t_min, t_max): (f64, f64),
 ) -> Option<(f64, DVec3)> {
-    let inv_major = sc(tube.inv_major);
-    let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), inv_major);
-    let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
-    let (c2, c1, c0) = (c2.v, c1.v, c0.v);
-    let u0 = line.s.v * tube.inv_major;
-    // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
-    // where that root cannot be told apart (a grazing origin).
-    let (own, a1) = own_root(c2, c1, c0, u0);
-    let a3 = 4.0 * own;
-    let a2 = 6.0 * own * own + c2;
-    // v = u − own per unit t: |d|/R; the own root sits at t = (own − u₀)/v_per_t.
-    let v_per_t = tube.inv_major / line.inv_len.v;
-    let shift = own - u0;
-    let lo = (t_min.max(0.0) * v_per_t - shift).max(0.0);
-    let hi = t_max * v_per_t - shift;
-    let v = nearest_cubic_root(a3, a2, a1, lo, hi)?;
-    let t = (v + shift) / v_per_t;
-    let u = sc(own + v);
-    let n = normal(line.p, line.dh, u, sc(tube.k));
-    Some((t, n.to_dvec3()))
+    let g = SurfaceCubic::new(tube, line);
+    let (lo, hi) = g.v_range(t_min, t_max);
+    let v = nearest_cubic_root(g.a3, g.a2, g.a1, lo, hi)?;
+    Some((g.t_at(v), g.normal(tube, v)))
+}
+
+/// The cubic `g(v) = v³ + a3 v² + a2 v + a1` left once the origin's root is divided out of
+/// the quartic of a line from a surface point (module docs), with what maps its roots `v`
+/// back to the ray.
+pub(crate) struct SurfaceCubic {
+    /// The foot-point line (scaled by 1/R).
+    pub(crate) line: FootLine<Sc>,
+    /// The origin's own root `u` (v = 0).
+    pub(crate) own: f64,
+    pub(crate) a3: f64,
+    pub(crate) a2: f64,
+    pub(crate) a1: f64,
+    /// `v` per unit `t`: `|d|/R`.
+    v_per_t: f64,
+    /// `own − u₀`: the origin's root sits at `t = shift/v_per_t`.
+    shift: f64,
+}
+
+impl SurfaceCubic {
+    /// The cubic of the torus-frame line `o + t·d` whose origin lies on the surface.
+    pub(crate) fn new(tube: &Tube, (o, d): (DVec3, DVec3)) -> SurfaceCubic {
+        let inv_major = sc(tube.inv_major);
+        let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), inv_major);
+        let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
+        let (c2, c1, c0) = (c2.v, c1.v, c0.v);
+        let u0 = line.s.v * tube.inv_major;
+        // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
+        // where that root cannot be told apart (a grazing origin).
+        let (own, a1) = own_root(c2, c1, c0, u0);
+        SurfaceCubic {
+            line,
+            own,
+            a3: 4.0 * own,
+            a2: 6.0 * own * own + c2,
+            a1,
+            v_per_t: tube.inv_major / line.inv_len.v,
+            shift: own - u0,
+        }
+    }
+
+    /// The ray's range in `v`, its lower end at least 0 (only crossings past the origin
+    /// count; [`nearest_cubic_root`] takes `(0, hi]` open at 0).
+    pub(crate) fn v_range(&self, t_min: f64, t_max: f64) -> (f64, f64) {
+        let lo = (t_min.max(0.0) * self.v_per_t - self.shift).max(0.0);
+        (lo, t_max * self.v_per_t - self.shift)
+    }
+
+    /// The ray parameter of the root `v`.
+    pub(crate) fn t_at(&self, v: f64) -> f64 {
+        (v + self.shift) / self.v_per_t
+    }
+
+    /// The unit outward normal (torus frame) at the root `v`.
+    pub(crate) fn normal(&self, tube: &Tube, v: f64) -> DVec3 {
+        let u = sc(self.own + v);
+        normal(self.line.p, self.line.dh, u, sc(tube.k)).to_dvec3()
+    }
+}
+
+/// Whether a ray marked as starting on the surface really does: its torus-frame origin `o`
+/// within [`OWN_ROOT_REACH`]·R of the surface (`|√((ρ − R)² + y²) − r|`, in units of R).
+/// Farther, there is no root of its own to divide out (an origin 10⁶⁹ away, say, whose
+/// dropped constant would leave the mirror image of the origin as a "crossing"): such a
+/// ray is answered as a literal one. NaN is not on the surface.
+pub(crate) fn starts_on_the_surface(tube: &Tube, o: DVec3) -> bool {
+    let x = o * tube.inv_major;
+    let rho = x.x.hypot(x.z);
+    let off = ((rho - 1.0).hypot(x.y) - tube.minor_rel).abs();
+    off <= OWN_ROOT_REACH
 }
 
 /// How far (in u, units of R) Newton may carry the origin's root from `u₀`: an origin
@@ -141,6 +195,51 @@ pub(crate) fn nearest_cubic_root(a: f64, b: f64, c: f64, lo: f64, hi: f64) -> Op
     None
 }
 
+/// Every real root of `g(v) = v³ + a v² + b v + c`, ascending, each with whether it is a
+/// double root (a tangent, reported once): at most three. The same pieces as
+/// [`nearest_cubic_root`] over the whole line `[−B, B]`, `B = 1 + max(|a|, |b|, |c|)`
+/// (Cauchy: `g(−B) < 0 < g(B)`): a sign change between consecutive ends is a simple root;
+/// a critical point whose `|g|` is within rounding is a double root, after which `g`
+/// turns back, so the next piece starts from the sign before it.
+pub(crate) fn cubic_roots(a: f64, b: f64, c: f64) -> ([(f64, bool); 3], usize) {
+    let mut out = [(0.0, false); 3];
+    let mut n = 0;
+    let bound = 1.0 + a.abs().max(b.abs()).max(c.abs());
+    // Non-finite coefficients (a non-finite line): no root.
+    if !(a.is_finite() && b.is_finite() && c.is_finite() && bound.is_finite()) {
+        return (out, 0);
+    }
+    let (mut x, mut negative) = (-bound, true);
+    let crit = critical_points(a, b);
+    for (i, y) in crit.into_iter().chain([bound]).enumerate() {
+        // NaN: fewer than two critical points.
+        if !(y > x && y <= bound) {
+            continue;
+        }
+        let gy = cubic(a, b, c, y).0;
+        let at_end = i == 2;
+        if !at_end && gy.abs() <= rounding(a, b, c, y) {
+            // A double root at the critical point; g turns back there.
+            if n < 3 {
+                out[n] = (y, true);
+                n += 1;
+            }
+            x = y;
+            continue;
+        }
+        let below = gy < 0.0;
+        if below != negative && n < 3 {
+            // g(x) is nonzero (the Cauchy end, or a critical point beyond rounding) or a
+            // double root already reported: its side is `negative` either way.
+            let side = if negative { -1.0 } else { 1.0 };
+            out[n] = (bracketed_root(a, b, c, x, y, side), false);
+            n += 1;
+        }
+        (x, negative) = (y, below);
+    }
+    (out, n)
+}
+
 /// The critical points of `g` (roots of `3v² + 2av + b`), ascending; NaN where there are
 /// fewer than two.
 fn critical_points(a: f64, b: f64) -> [f64; 2] {
@@ -154,7 +253,8 @@ fn critical_points(a: f64, b: f64) -> [f64; 2] {
     [x.min(y), x.max(y)]
 }
 
-/// The root of `g` in `[x, y]`, where `g` is monotone and changes sign (`gx = g(x)`):
+/// The root of `g` in `[x, y]`, where `g` is monotone and changes sign (`gx` = g(x), or
+/// any number of its sign):
 /// Newton's steps inside the shrinking bracket, a bisection where a step would leave it.
 fn bracketed_root(a: f64, b: f64, c: f64, mut x: f64, mut y: f64, gx: f64) -> f64 {
     let rising = gx < 0.0;

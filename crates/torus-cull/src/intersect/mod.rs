@@ -22,10 +22,12 @@ use nearest_hit::{Careful, nearest_hit};
 use reduce::{FootLine, coefficients, foot_line};
 use sealed::{FromExact, Steps};
 
-mod from_surface;
+mod all;
+pub(crate) mod from_surface;
 pub(crate) mod nearest_hit;
 mod ray_cast;
 pub(crate) mod reduce;
+pub use all::{Crossing, Crossings, Passage, Span, Spans, intersect_all};
 use glam::{DVec3, Vec3};
 pub use ray_cast::{Culled, RayCast};
 
@@ -343,7 +345,7 @@ pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
 fn exact<R: TorusRay>(torus: &Torus, ray: &R) -> Option<(f64, DVec3)> {
     let line = ray.local_f64(torus);
     let range = ray.range_f64();
-    if ray.on_surface() {
+    if ray.on_surface() && from_surface::starts_on_the_surface(torus.tube(), line.0) {
         return from_surface::intersect_from_surface(torus.tube(), line, range);
     }
     let ((o, d), (t_min, t_max)) = (line, range);

@@ -1,13 +1,16 @@
 //! Every real root, sorted and Newton-polished on the caller's polynomial: for CSG, the
 //! oracle's checks and the tests.
 
-use super::{RealRoots, eval, eval2, even, factor};
+use super::{EPS, RealRoots, eval, eval2, even, factor, pieces};
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
 ///
 /// The quartic is made monic and depressed (`t = x − c[1]/(4c[0])`), factored, and each
 /// root is then Newton-polished on the original coefficients (the depression loses
-/// absolute accuracy when the shift is large).
+/// absolute accuracy when the shift is large). Where that answer cannot be trusted (a
+/// returned root that is no root within rounding, or a shift that can have rounded a
+/// small root away: roots −1, 1, 2 beside 10¹⁴), the roots are found on the original
+/// coefficients by monotone pieces instead (`pieces.rs`), each to its own condition.
 /// Returns no roots if `c[0] = 0` or a coefficient is not finite.
 ///
 /// Coefficients of any finite size are taken: where the roots' scale lies beyond 2^±25
@@ -75,7 +78,52 @@ fn solve_in_range(c: [f64; 5]) -> RealRoots {
         .map_increasing(|x| x - s);
     roots.sort();
     polish(&mut roots, &c);
-    roots
+    if trusted(&roots, &c, s) {
+        roots
+    } else {
+        pieces::real_roots(&c)
+    }
+}
+
+/// A returned root whose backward error `|f(t)|/Σ|cᵢ||t|ⁱ` exceeds this multiple of ε is
+/// no root of any quartic within rounding of the caller's.
+const BACKWARD: f64 = 1e3;
+
+/// A root smaller than this fraction of the depression's shift `s` lies within
+/// `ε·|s|/|t| > 2²⁰ε` of its neighbours in the depressed variable: rounded away.
+const SHIFT_RATIO: f64 = 9.5367431640625e-7; // 2⁻²⁰
+
+/// Whether the closed form's roots can be returned: each is a root within rounding of
+/// `c`, and the depression `t = x − s` cannot have rounded a root away. A root much
+/// smaller than `|s|` sits in a cluster of the depressed quartic (Algorithm 1010's case 4:
+/// roots −1, 1, 2 beside 10¹⁴ became one root 0.99988), so that is refused by a lower
+/// bound on every root's size, Fujiwara's bound for the reversed polynomial:
+/// `|t| ≥ 1/(2·max_k |c[4−k]/c[4]|^(1/k))`, and `t = 0` (a zero constant) with any shift.
+/// Otherwise [`pieces::real_roots`] solves `c` itself.
+fn trusted(roots: &RealRoots, c: &[f64; 5], s: f64) -> bool {
+    let backward_ok = roots.as_slice().iter().all(|&t| {
+        let f = eval(c, t).0.abs();
+        let mag = c.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
+        // Written so that NaN fails.
+        f <= BACKWARD * EPS * mag
+    });
+    if !backward_ok {
+        return false;
+    }
+    if s == 0.0 {
+        return true;
+    }
+    if c[4] == 0.0 {
+        return false;
+    }
+    // 1/|t| ≤ 2·max_k |c[4−k]/c[4]|^(1/k), in exponents: no overflow.
+    let exp = |x: f64| x.abs().log2();
+    let inv_exp = (1..5)
+        .filter(|&k| c[4 - k] != 0.0)
+        .map(|k| (exp(c[4 - k]) - exp(c[4])) / k as f64)
+        .fold(f64::NEG_INFINITY, f64::max);
+    // log2 of the lower bound on |t|, against log2(2⁻²⁰·|s|).
+    -(inv_exp + 1.0) >= exp(s) + SHIFT_RATIO.log2()
 }
 
 /// For a quartic whose monic form would leave f64's comfortable range, `(m, a)`: the

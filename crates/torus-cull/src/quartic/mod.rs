@@ -23,18 +23,24 @@
 //!
 //! Files: `nearest.rs` and `all_roots.rs` (the entry points), `even.rs` (`q = 0`),
 //! `resolvent.rs` (the cubic in `m²`), `cube_root.rs` (its cube root and trisection without
-//! libm), `factor.rs` (Ferrari's split and near-double factors), `roots.rs` ([`RealRoots`]).
+//! libm), `factor.rs` (Ferrari's split and near-double factors), `pieces.rs` (every real
+//! root by monotone pieces: `solve_quartic`'s path where the depression cannot be
+//! trusted), `roots.rs` ([`RealRoots`]); `corpus/` (tests: the published quartic corpus,
+//! its reference roots derived exactly by `corpus/cases.py`).
 //!
 //! References: L. Ferrari's method as in Abramowitz & Stegun 3.8.3; the resolvent in `m²`
 //! is Descartes'. Peers measured in the bench: the `roots` crate (Ferrari) and
 //! `kurbo::common::solve_quartic` (Orellana & De Michele, ACM TOMS 46(2), 2020, Alg. 1010).
 
 mod all_roots;
+#[cfg(test)]
+mod corpus;
 mod even;
 pub(crate) mod factor;
 pub(crate) mod lanes;
 pub(crate) mod nearest;
 mod pick;
+mod pieces;
 pub(crate) mod resolvent;
 mod roots;
 #[cfg(test)]

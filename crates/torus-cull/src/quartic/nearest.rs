@@ -31,19 +31,22 @@ use crate::num::{Real, RealMask, sc};
 /// ```
 ///
 /// Coefficients of any size are taken: beyond 2^±100 the quartic is solved for x/s, s a
-/// power of two (see `out_of_range_scale`). That range check (three absolute values, two
+/// power of two (see `out_of_range_scale`), by [`super::solve_depressed_monic`], which
+/// keeps a small root beside a huge one to its own relative accuracy. That range check (three absolute values, two
 /// maxima and a range compare in front of every solve) is skipped by
 /// [`crate::intersect()`], whose coefficients are O(1).
 #[inline]
 #[must_use]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
-    if let Some(s) = super::out_of_range_scale(p, q, r) {
-        let (p, q, r) = super::scaled(p, q, r, s);
-        // lo/s or hi/s may round (to a subnormal or 0): the root is checked against the
-        // caller's own range.
-        return nearest_root_in_range(p, q, r, lo / s, hi / s)
-            .map(|y| y * s)
-            .filter(|&x| x >= lo && x <= hi);
+    if super::out_of_range_scale(p, q, r).is_some() {
+        // Coefficients this far apart put roots of very different sizes side by side
+        // (±10³⁰ next to 0.25 in the corpus, `corpus/`): the nearest-root path's roots are
+        // accurate to ε of the largest in absolute terms, which left the small ones at 0.
+        // The all-roots solve (rescaled by the same power of two, each factor's stable
+        // root pair, Newton-polished) keeps every root to its own relative accuracy; this
+        // path is rare and was already the slow one. The range is checked on the roots
+        // themselves, so no rounding of lo or hi can move a root in or out.
+        return found(nearest_of(&super::solve_depressed_monic(p, q, r), lo, hi));
     }
     nearest_root_in_range(p, q, r, lo, hi)
 }

@@ -1,0 +1,485 @@
+//! Every crossing of a ray with the torus, paired into the spans where the ray is inside
+//! the solid: the query CSG, transport and CAD need (BRL-CAD's `tor.c` returns the same
+//! segments).
+//!
+//! **Method.** The same line as the nearest hit (module docs of [`super`]): the foot-point
+//! frame scaled by 1/R, the bounding sphere's chord test, and the depressed quartic, here
+//! solved for all its real roots ([`solve_depressed_monic`]: Ferrari with near-double
+//! factors decided on the quartic itself, then Newton-polished). For a ray from a surface
+//! point ([`Ray::from_surface`](crate::Ray::from_surface)) the origin's root is divided
+//! out as in `from_surface.rs` and the other roots are the cubic's ([`cubic_roots`]).
+//!
+//! **Entering or leaving** is not read off the sign of `d·n`, which rounding decides at a
+//! grazing crossing. The whole line's roots are sorted, and the line is outside the solid
+//! at `u → −∞`; each simple root flips inside/outside and a double root (a tangent) does
+//! not. So the side at `t_min` is the parity of the simple roots before it, and the
+//! crossings in range alternate, entering first, by construction: a span can only be
+//! wrong where a root is missed, which the tests check against the oracle.
+
+use super::from_surface::{SurfaceCubic, cubic_roots, starts_on_the_surface};
+use super::reduce::{coefficients, foot_line, normal};
+use crate::geometry::ray::sealed::Scalar;
+use crate::num::{V3, sc};
+use crate::quartic::solve_depressed_monic;
+use crate::{Precision, Ray, Torus};
+use glam::{DVec3, Vec3};
+
+/// How a ray meets the surface at a [`Crossing`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Passage {
+    /// The ray enters the solid torus: a span starts here.
+    Enter,
+    /// The ray leaves the solid torus: a span ends here.
+    Exit,
+    /// The ray touches the surface (a double root of the quartic: a tangent) and stays on
+    /// the side it was on. Reported once, not as a span of zero length.
+    Touch,
+}
+
+/// One crossing of a ray with the torus surface, in the ray's precision.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Crossing<P: Precision = Vec3> {
+    /// Ray parameter, in units of the ray's direction.
+    pub t: P::Float,
+    /// Unit outward surface normal, world space.
+    pub normal: P,
+    /// Whether the ray enters, leaves or touches the solid here.
+    pub passage: Passage,
+}
+
+/// A stretch `[t_enter, t_exit]` of the ray's range inside the solid torus.
+///
+/// `enter` is `None` for a ray that is already inside at `t_min` (then `t_enter = t_min`),
+/// and `exit` is `None` for one still inside at `t_max` (then `t_exit = t_max`, possibly
+/// +∞, or a crossing left out because its `t` overflows the ray's float).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Span<P: Precision = Vec3> {
+    /// Where the span starts.
+    pub t_enter: P::Float,
+    /// Where the span ends.
+    pub t_exit: P::Float,
+    /// The crossing that opens the span, unless it opens at `t_min`.
+    pub enter: Option<Crossing<P>>,
+    /// The crossing that closes the span, unless it runs to `t_max`.
+    pub exit: Option<Crossing<P>>,
+}
+
+/// Every crossing of a ray with the torus in `[t_min, t_max]`, sorted by `t` (at most
+/// four: a quartic's roots), and the ray's side at `t_min`: what [`intersect_all`]
+/// returns. Fixed capacity, no allocation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use]
+pub struct Crossings<P: Precision = Vec3> {
+    crossings: [Crossing<P>; 4],
+    len: usize,
+    starts_inside: bool,
+    t_min: P::Float,
+    t_max: P::Float,
+}
+
+/// The spans of a [`Crossings`] (at most two: a line crosses the surface at most four
+/// times). Fixed capacity, no allocation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use]
+pub struct Spans<P: Precision = Vec3> {
+    spans: [Span<P>; 2],
+    len: usize,
+}
+
+impl<P: Precision> Crossings<P> {
+    /// No crossing, outside at `t_min`, over the ray's range.
+    pub(crate) fn none(ray: &Ray<P>) -> Crossings<P> {
+        Crossings {
+            crossings: [Crossing {
+                t: <P::Float as Scalar>::ZERO,
+                normal: P::ZERO,
+                passage: Passage::Touch,
+            }; 4],
+            len: 0,
+            starts_inside: false,
+            t_min: ray.t_min(),
+            t_max: ray.t_max(),
+        }
+    }
+
+    /// The crossings, ascending in `t`: entries and exits alternate (an entry first unless
+    /// [`Crossings::starts_inside`]), with touches anywhere between them.
+    #[inline]
+    #[must_use]
+    pub fn as_slice(&self) -> &[Crossing<P>] {
+        &self.crossings[..self.len]
+    }
+
+    /// How many crossings (0 to 4; a touch counts once).
+    #[inline]
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// No crossing in range (the ray may still lie wholly inside: see
+    /// [`Crossings::starts_inside`]).
+    #[inline]
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Whether the ray is inside the solid torus at `t_min` (for a ray from a surface
+    /// point: just past its origin).
+    #[inline]
+    #[must_use]
+    pub fn starts_inside(&self) -> bool {
+        self.starts_inside
+    }
+
+    /// The crossings paired into the stretches of the range inside the solid, ascending.
+    /// Touches open no span.
+    pub fn spans(&self) -> Spans<P> {
+        let zero = Crossing {
+            t: <P::Float as Scalar>::ZERO,
+            normal: P::ZERO,
+            passage: Passage::Touch,
+        };
+        let mut out = Spans {
+            spans: [Span {
+                t_enter: zero.t,
+                t_exit: zero.t,
+                enter: None,
+                exit: None,
+            }; 2],
+            len: 0,
+        };
+        let mut open = self.starts_inside.then_some((self.t_min, None));
+        let push = |out: &mut Spans<P>, (t_enter, enter), t_exit, exit| {
+            if out.len < 2 {
+                out.spans[out.len] = Span {
+                    t_enter,
+                    t_exit,
+                    enter,
+                    exit,
+                };
+                out.len += 1;
+            }
+        };
+        for &c in self.as_slice() {
+            match c.passage {
+                Passage::Enter => open = Some((c.t, Some(c))),
+                // Alternation makes `open` set here; a missing one can only be the range's
+                // start.
+                Passage::Exit => push(
+                    &mut out,
+                    open.take().unwrap_or((self.t_min, None)),
+                    c.t,
+                    Some(c),
+                ),
+                Passage::Touch => {}
+            }
+        }
+        if let Some(start) = open {
+            push(&mut out, start, self.t_max, None);
+        }
+        out
+    }
+}
+
+impl<P: Precision> Spans<P> {
+    /// The spans, ascending.
+    #[inline]
+    #[must_use]
+    pub fn as_slice(&self) -> &[Span<P>] {
+        &self.spans[..self.len]
+    }
+
+    /// How many spans (0 to 2).
+    #[inline]
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// The ray's range holds no point inside the solid (touches aside).
+    #[inline]
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+}
+
+/// A root of the whole line's quartic in the foot-point frame, at `key`: `u`, or for a ray
+/// from a surface point `v = u − own root`.
+#[derive(Debug, Clone, Copy)]
+struct LineRoot {
+    key: f64,
+    double: bool,
+    /// The origin's own root of a ray from a surface point: counted for the side, never
+    /// reported.
+    origin: bool,
+}
+
+/// Every crossing of `ray` with the torus in `[t_min, t_max]`, sorted, each with its `t`,
+/// its world normal and whether the ray enters or leaves the solid there, in the ray's
+/// precision ([`Ray`]: f32, [`DRay`](crate::DRay): f64); [`Crossings::spans`] pairs them
+/// into the stretches inside the solid.
+///
+/// - A ray that starts inside begins with a span opened at `t_min`
+///   ([`Crossings::starts_inside`]); one that ends inside, with a span closed at `t_max`.
+/// - A tangent (a double root, decided within rounding on the quartic itself, as
+///   [`crate::quartic::solve_depressed_monic`] decides it) is one [`Passage::Touch`]
+///   crossing, not a span of zero length. A line that dips in by less than rounding can
+///   as well come back as a touch or as a pair of crossings a few ulps apart: that is as
+///   far as f64 resolves it.
+/// - A ray from a surface point ([`Ray::from_surface`](crate::Ray::from_surface)) has its
+///   origin's root divided out, as in [`crate::intersect()`]: the crossings are those with
+///   `t > 0`, and [`Crossings::starts_inside`] is the side just past the origin (an
+///   origin farther than 10⁻²·R from the surface is no surface point: that ray is
+///   answered literally, as there).
+/// - A crossing whose `t` overflows the ray's float is left out (it lies past every finite
+///   `t`, so a span it would close runs to `t_max`): never ∞ or NaN.
+///
+/// Its first crossing is [`crate::intersect()`]'s hit, up to the last Newton step (the
+/// nearest-root query skips it).
+///
+/// ```
+/// use glam::Vec3;
+/// use torus_cull::{Passage, Ray, Torus, intersect_all};
+/// let torus = Torus::canonical(2.0, 1.0)?;
+/// // Along the x axis from x = −5: through the tube at x = −3 … −1, then at 1 … 3.
+/// let ray = Ray::new(Vec3::new(-5.0, 0.0, 0.0), Vec3::X)?;
+/// let all = intersect_all(&torus, &ray);
+/// let ts: Vec<f32> = all.as_slice().iter().map(|c| c.t).collect();
+/// assert_eq!(ts, [2.0, 4.0, 6.0, 8.0]);
+/// assert_eq!(all.as_slice()[0].passage, Passage::Enter);
+/// assert_eq!(all.as_slice()[0].normal, Vec3::NEG_X);
+/// let spans = all.spans();
+/// assert_eq!(spans.len(), 2);
+/// assert_eq!((spans.as_slice()[1].t_enter, spans.as_slice()[1].t_exit), (6.0, 8.0));
+/// // From inside the tube (x = −2), with the range cut at t = 4.5: a span open at t_min,
+/// // then one cut at t_max.
+/// let inside = Ray::with_range(Vec3::new(-2.0, 0.0, 0.0), Vec3::X, 0.0, 4.5)?;
+/// let all = intersect_all(&torus, &inside);
+/// assert!(all.starts_inside());
+/// let spans = all.spans();
+/// let ends: Vec<(f32, f32)> = spans.as_slice().iter().map(|s| (s.t_enter, s.t_exit)).collect();
+/// assert_eq!(ends, [(0.0, 1.0), (3.0, 4.5)]);
+/// assert!(spans.as_slice()[0].enter.is_none() && spans.as_slice()[1].exit.is_none());
+/// // Over the top of the tube, y = r: two touches, no span.
+/// let over = Ray::new(Vec3::new(-5.0, 1.0, 0.0), Vec3::X)?;
+/// let all = intersect_all(&torus, &over);
+/// assert_eq!(all.len(), 2);
+/// assert!(all.as_slice().iter().all(|c| c.passage == Passage::Touch));
+/// assert!(all.spans().is_empty());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> {
+    let tube = torus.tube();
+    let line = torus.line_to_local_f64(ray);
+    let (t_min, t_max) = ray.range_f64();
+    let to_world = torus.to_local_rotation_f64().transpose();
+    let mut out = Crossings::none(ray);
+    let mut emit = |t: f64, n: DVec3, passage: Passage| {
+        let t = <P::Float as Scalar>::from_f64(t);
+        if t.finite() && out.len < 4 {
+            out.crossings[out.len] = Crossing {
+                t,
+                normal: P::from_dvec3(to_world * n),
+                passage,
+            };
+            out.len += 1;
+        }
+    };
+    let starts_inside = if ray.starts_on_surface() && starts_on_the_surface(tube, line.0) {
+        let g = SurfaceCubic::new(tube, line);
+        let (lo, hi) = g.v_range(t_min, t_max);
+        let (cubic, n) = cubic_roots(g.a3, g.a2, g.a1);
+        let mut roots = [LineRoot {
+            key: 0.0,
+            double: false,
+            origin: true,
+        }; 4];
+        for (slot, &(v, double)) in roots[1..].iter_mut().zip(&cubic[..n]) {
+            *slot = LineRoot {
+                key: v,
+                double,
+                origin: false,
+            };
+        }
+        let roots = &mut roots[..=n];
+        roots.sort_by(|a, b| a.key.total_cmp(&b.key));
+        // Past the origin only: v > 0, and v ≥ lo.
+        let range = |v: f64| {
+            if v <= 0.0 || v < lo {
+                Place::Before
+            } else if v <= hi {
+                Place::Within
+            } else {
+                Place::After
+            }
+        };
+        walk(roots, range, |r, passage| {
+            emit(g.t_at(r.key), g.normal(tube, r.key), passage);
+        })
+    } else {
+        let (o, d) = line;
+        let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), sc(tube.inv_major));
+        // A line that misses the bounding sphere has no root: no solve.
+        if line.chord_sq(sc(tube.outer)).v < 0.0 {
+            return Crossings::none(ray);
+        }
+        let (lo, hi) = line.u_range(sc(t_min), sc(t_max), sc(tube.inv_major));
+        let (lo, hi) = (lo.v, hi.v);
+        let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
+        let found = solve_depressed_monic(c2.v, c1.v, c0.v);
+        let (roots, n) = pair_doubles(found.as_slice());
+        let range = |u: f64| {
+            if u < lo {
+                Place::Before
+            } else if u <= hi {
+                Place::Within
+            } else {
+                Place::After
+            }
+        };
+        walk(&roots[..n], range, |r, passage| {
+            let u = sc(r.key);
+            let t = line.t_at(u, sc(tube.major)).v;
+            emit(
+                t,
+                normal(line.p, line.dh, u, sc(tube.k)).to_dvec3(),
+                passage,
+            );
+        })
+    };
+    out.starts_inside = starts_inside;
+    out
+}
+
+/// The sorted roots of the whole line (a double root given twice, as the solver gives
+/// it) with each exactly repeated pair merged into one double root.
+fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
+    let mut out = [LineRoot {
+        key: 0.0,
+        double: false,
+        origin: false,
+    }; 4];
+    let (mut n, mut i) = (0, 0);
+    while i < sorted.len() {
+        let u = sorted[i];
+        let double = i + 1 < sorted.len() && sorted[i + 1] == u;
+        out[n] = LineRoot {
+            key: u,
+            double,
+            origin: false,
+        };
+        n += 1;
+        i += if double { 2 } else { 1 };
+    }
+    (out, n)
+}
+
+/// Where a root lies against the ray's range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Place {
+    Before,
+    Within,
+    After,
+}
+
+/// Walks the whole line's sorted roots from `−∞` (outside), flipping the side at each
+/// simple root; calls `emit` for each root in range (never the origin's own) with its
+/// passage, and returns the side at the start of the range: the side before the first
+/// root not before it.
+fn walk(
+    roots: &[LineRoot],
+    place: impl Fn(f64) -> Place,
+    mut emit: impl FnMut(&LineRoot, Passage),
+) -> bool {
+    let mut inside = false;
+    let mut at_start = None;
+    for r in roots {
+        let at = if r.origin {
+            Place::Before
+        } else {
+            place(r.key)
+        };
+        if at != Place::Before {
+            at_start.get_or_insert(inside);
+        }
+        if at == Place::Within {
+            let passage = match (r.double, inside) {
+                (true, _) => Passage::Touch,
+                (false, false) => Passage::Enter,
+                (false, true) => Passage::Exit,
+            };
+            emit(r, passage);
+        }
+        if !r.double {
+            inside = !inside;
+        }
+    }
+    at_start.unwrap_or(inside)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::DRay;
+
+    #[test]
+    fn surface_ray_across_the_hole_and_through_the_tube() {
+        let torus = Torus::canonical(4.0, 1.0).unwrap();
+        // From the inner equator (3, 0, 0) across the hole: enters the far side at x = −3
+        // (t = 6), leaves it at x = −5 (t = 8). The origin's own root is not reported.
+        let across = DRay::from_surface(DVec3::new(3.0, 0.0, 0.0), DVec3::NEG_X).unwrap();
+        let all = intersect_all(&torus, &across);
+        assert!(!all.starts_inside());
+        let got: Vec<(f64, Passage)> = all.as_slice().iter().map(|c| (c.t, c.passage)).collect();
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert!((got[0].0 - 6.0).abs() < 1e-12 && got[0].1 == Passage::Enter);
+        assert!((got[1].0 - 8.0).abs() < 1e-12 && got[1].1 == Passage::Exit);
+        // Into the tube from the outer equator (5, 0, 0): inside at once, out at x = 3,
+        // then across the hole.
+        let into = DRay::from_surface(DVec3::new(5.0, 0.0, 0.0), DVec3::NEG_X).unwrap();
+        let all = intersect_all(&torus, &into);
+        assert!(all.starts_inside());
+        let spans = all.spans();
+        let ends: Vec<(f64, f64)> = spans
+            .as_slice()
+            .iter()
+            .map(|s| (s.t_enter, s.t_exit))
+            .collect();
+        assert_eq!(ends.len(), 2, "{ends:?}");
+        assert_eq!(ends[0].0, 0.0);
+        for (got, want) in [ends[0].1, ends[1].0, ends[1].1]
+            .iter()
+            .zip([2.0, 8.0, 10.0])
+        {
+            assert!((got - want).abs() < 1e-12, "{ends:?}");
+        }
+        // The first crossing is intersect's hit (the cubic's bracket may differ by an ulp).
+        let hit = crate::intersect(&torus, &into).unwrap().t;
+        assert!((all.as_slice()[0].t - hit).abs() < 1e-15, "{hit}");
+    }
+
+    #[test]
+    fn cubic_roots_simple_and_double() {
+        // (v − 1)(v − 2)(v − 3).
+        let (r, n) = cubic_roots(-6.0, 11.0, -6.0);
+        assert_eq!(n, 3);
+        for ((v, double), want) in r.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((v - want).abs() < 1e-14 && !double, "{r:?}");
+        }
+        // (v − 1)²(v + 2) = v³ − 3v + 2: −2 simple, 1 double.
+        let (r, n) = cubic_roots(0.0, -3.0, 2.0);
+        assert_eq!(n, 2, "{r:?}");
+        assert!((r[0].0 + 2.0).abs() < 1e-14 && !r[0].1);
+        assert!((r[1].0 - 1.0).abs() < 1e-7 && r[1].1);
+        // v³ + v: only 0.
+        let (r, n) = cubic_roots(0.0, 1.0, 0.0);
+        assert_eq!((n, r[0]), (1, (0.0, false)));
+        // Non-finite: none.
+        assert_eq!(cubic_roots(f64::NAN, 1.0, 0.0).1, 0);
+    }
+}
