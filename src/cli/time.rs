@@ -390,7 +390,8 @@ mod gpu {
         if gpu.is_software() {
             outln!(
                 "the adapter is a CPU rasteriser (device type Cpu): these figures time \
-                 this CPU through Vulkan, not a GPU"
+                 this CPU through {:?}, not a GPU",
+                gpu.backend()
             )?;
         }
         Ok(device)
@@ -438,19 +439,17 @@ mod gpu {
         })
     }
 
-    /// The GPU kernel's culls among `culls` (default: both).
+    /// The GPU kernel's culls among `culls` (default: every one with a batch form).
     fn gpu_culls(culls: &[CullKind]) -> Result<Vec<GpuCull>, String> {
         if culls.len() == CullKind::TIMED.len() {
             return Ok(GpuCull::ALL.to_vec());
         }
         culls
             .iter()
-            .map(|c| match c {
-                CullKind::NoCull => Ok(GpuCull::None),
-                CullKind::Cychosz => Ok(GpuCull::Cychosz),
-                other => Err(format!(
-                    "--culls: the GPU kernel runs none and cychosz, not {other}"
-                )),
+            .map(|&c| {
+                GpuCull::try_from(c).map_err(|other| {
+                    format!("--culls: the GPU kernel runs the culls with a batch form, not {other}")
+                })
             })
             .collect()
     }
