@@ -436,6 +436,11 @@ fn time_device_gpu_names_the_adapter() {
     );
     assert!(stdout.contains("Mrays/s"), "{stdout}");
     assert!(stdout.contains(gpu.adapter_name()), "{stdout}");
+    if gpu.is_software() {
+        // The backend actually used (Vulkan with lavapipe, Gl with wgpu's GL fallback).
+        let through = format!("this CPU through {:?}, not a GPU", gpu.backend());
+        assert!(stdout.contains(&through), "{stdout}");
+    }
     let results = torus_cull_lab::results::Results::load(&out_path).unwrap();
     let device = results.meta.device.expect("meta.device");
     assert!(device.contains(gpu.adapter_name()), "{device}");

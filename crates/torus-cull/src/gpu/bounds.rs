@@ -1,6 +1,6 @@
 //! The culls' per-torus constants as the kernel uses them: the CPU's [`CullBounds`] at
 //! R = 1 (the kernel's line is scaled by 1/R), with the tube padded by the GPU's margin
-//! [`gpu_margin`] instead of the CPU's η = [`crate::SAFETY_REL`]·(R + r).
+//! [`gpu_margin`] instead of the CPU's η = [`crate::cull::SAFETY_REL`]·(R + r).
 
 use super::source::{LINE_ABS, LINE_ABS_DIST, LINE_REL};
 use crate::certified::certificate::U32;

@@ -30,6 +30,21 @@
 //! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
 //! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
 //!
+//! **The culls.** Every cull with a batch form runs in the kernel ([`GpuCull`], the
+//! CPU's math on the kernel's line, a foot point and a unit direction in units of R),
+//! against the CPU's [`crate::CullBounds`] at R = 1 with the tube padded by the GPU's
+//! margin: the CPU's η = [`crate::cull::SAFETY_REL`]·(R + r) plus the kernel's line error on
+//! any line that meets the torus (at most 2.1·10⁻⁵·R more; `bounds.rs`). `quadric`,
+//! `thick_cylinder`'s hole test and `discriminant` reject only what a running error bound
+//! proves (docs/math.md, "The GPU's culls"). [`GpuIntersector::cull_keeps`] runs a cull
+//! alone.
+//!
+//! **One source for the constants.** The kernel's text is `kernel.wgsl` behind a header
+//! generated from the Rust constants the CPU uses ([`kernel_source`], [`KernelConstants`]):
+//! the cube-root seed, the trisection fit, the solver's thresholds, the bracket,
+//! [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's constants, as exact
+//! hexadecimal floats.
+//!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
 //!

@@ -1,7 +1,7 @@
 //! The kernel's WGSL text: `kernel.wgsl` behind a header of `const` lines generated from
 //! the Rust constants the CPU uses ([`KernelConstants`]), so that the two cannot drift
 //! apart: the cube-root seed and the trisection fit of the f32 solver, the solver's
-//! thresholds, the culls' margin [`crate::SAFETY_REL`] and their thresholds, the
+//! thresholds, the culls' margin [`crate::cull::SAFETY_REL`] and their thresholds, the
 //! certificate's bracket, and the GPU's own error constants, which the host also uses
 //! for the culls' margin ([`super::bounds`]).
 //!
@@ -62,7 +62,7 @@ pub struct KernelConstants {
     pub unit_roundoff: f32,
     /// The GPU's factor on every rounding term.
     pub rounding_factor: f32,
-    /// The culls' relative margin, [`crate::SAFETY_REL`].
+    /// The culls' relative margin, [`crate::cull::SAFETY_REL`].
     pub safety_rel: f32,
     /// The kernel's "finite" bound.
     pub big: f32,
