@@ -63,6 +63,31 @@ fn gpu() -> Option<&'static GpuIntersector> {
     .as_ref()
 }
 
+/// What the CPU says of one ray: the oracle's query and label, the f64 path's hit, and
+/// the CPU's certified f32 verdict (both are proofs, so they never disagree with the
+/// kernel's on a proved answer).
+#[derive(Clone, Copy)]
+struct CpuAnswer {
+    query: Query,
+    label: torus_cull_lab::oracle::OracleLabel,
+    f64_hit: Option<torus_cull::Hit>,
+    cpu: F32Verdict,
+}
+
+fn cpu_answers(torus: &Torus, rays: &[Ray]) -> Vec<CpuAnswer> {
+    rays.iter()
+        .map(|ray| {
+            let query = Query::ray(torus, ray);
+            CpuAnswer {
+                query,
+                label: query.classify(),
+                f64_hit: intersect(torus, ray),
+                cpu: intersect_f32_certified(torus, ray),
+            }
+        })
+        .collect()
+}
+
 /// What one family found, for one cull.
 #[derive(Default)]
 struct Tally {
@@ -84,8 +109,16 @@ impl Tally {
         }
     }
 
-    /// Runs `rays` on `torus` through the kernel with `cull` and checks every answer.
-    fn check(&mut self, gpu: &GpuIntersector, cull: GpuCull, torus: &Torus, rays: &[Ray]) {
+    /// Runs `rays` on `torus` through the kernel with `cull` and checks every answer
+    /// against the CPU's (computed once for every cull).
+    fn check(
+        &mut self,
+        gpu: &GpuIntersector,
+        cull: GpuCull,
+        torus: &Torus,
+        rays: &[Ray],
+        cpu_answers: &[CpuAnswer],
+    ) {
         let explained = gpu.explain(torus, cull, rays).expect("dispatch");
         let mut verdicts = Vec::with_capacity(rays.len());
         for (verdict, why) in explained {
@@ -96,14 +129,16 @@ impl Tally {
         }
         let finished = gpu.intersect_finished(torus, cull, rays).expect("dispatch");
         assert_eq!(verdicts.len(), rays.len());
-        for ((ray, verdict), done) in rays.iter().zip(verdicts).zip(finished) {
+        for (((ray, verdict), done), answer) in
+            rays.iter().zip(verdicts).zip(finished).zip(cpu_answers)
+        {
             self.rays += 1;
-            let query = Query::ray(torus, ray);
-            let label = query.classify();
-            let f64_hit = intersect(torus, ray);
-            // The CPU's certified f32 path on the same ray: both are proofs, so they never
-            // disagree on a proved answer.
-            let cpu = intersect_f32_certified(torus, ray);
+            let CpuAnswer {
+                query,
+                label,
+                f64_hit,
+                cpu,
+            } = *answer;
             if cpu == F32Verdict::Escalate {
                 self.cpu_escalated += 1;
             }
@@ -198,36 +233,54 @@ const NUS: [f64; 6] = [1.01, 1.5, 3.0, 10.0, 100.0, 1000.0];
 #[test]
 fn generators_near_and_far() {
     let Some(gpu) = gpu() else { return };
-    for cull in GpuCull::ALL {
-        for back in [0.0f32, 10.0, 1e3, 1e5] {
-            let mut all = Tally::default();
-            let mut rates = Vec::new();
-            for &case in Case::ALL {
-                let mut tally = Tally::default();
-                for nu in NUS {
-                    if nu < case.min_nu() {
-                        continue;
-                    }
-                    let batches = family(case, nu, 2000, 0x6E0 ^ nu.to_bits());
-                    for batch in &batches {
-                        let torus = batch.torus;
-                        let rays: Vec<Ray> = pairs(std::slice::from_ref(batch))
-                            .map(|(_, ray)| {
-                                if back == 0.0 {
-                                    *ray
-                                } else {
-                                    pushed_back(ray, back * torus.outer_radius())
-                                }
-                            })
-                            .collect();
-                        tally.check(gpu, cull, &torus, &rays);
+    for back in [0.0f32, 10.0, 1e3, 1e5] {
+        // Per cull, per case; the CPU's answers once per batch for every cull.
+        let mut tallies: Vec<Vec<Tally>> = GpuCull::ALL
+            .iter()
+            .map(|_| Case::ALL.iter().map(|_| Tally::default()).collect())
+            .collect();
+        for (c, &case) in Case::ALL.iter().enumerate() {
+            for nu in NUS {
+                if nu < case.min_nu() {
+                    continue;
+                }
+                let batches = family(case, nu, 2000, 0x6E0 ^ nu.to_bits());
+                for batch in &batches {
+                    let torus = batch.torus;
+                    let rays: Vec<Ray> = pairs(std::slice::from_ref(batch))
+                        .map(|(_, ray)| {
+                            if back == 0.0 {
+                                *ray
+                            } else {
+                                pushed_back(ray, back * torus.outer_radius())
+                            }
+                        })
+                        .collect();
+                    let answers = cpu_answers(&torus, &rays);
+                    for (k, &cull) in GpuCull::ALL.iter().enumerate() {
+                        tallies[k][c].check(gpu, cull, &torus, &rays, &answers);
                     }
                 }
+            }
+        }
+        for (cull, per_case) in GpuCull::ALL.into_iter().zip(&tallies) {
+            let mut all = Tally::default();
+            for (&case, tally) in Case::ALL.iter().zip(per_case) {
                 tally.report(&format!("{case} back {back:e}·(R+r)"), cull);
-                rates.push((case, tally.escalated as f64 / tally.rays.max(1) as f64));
                 all.rays += tally.rays;
                 all.escalated += tally.escalated;
                 all.hits += tally.hits;
+                if back == 0.0 && matches!(case, Case::OuterBand | Case::Uniform | Case::Camera) {
+                    // Near origins: the kernel must prove most of the ordinary rays, or it
+                    // saves nothing (hole and grazing rays are near misses and near
+                    // tangents by design, and escalate far more: see the printed rates).
+                    let rate = tally.escalated as f64 / tally.rays.max(1) as f64;
+                    assert!(
+                        rate < 0.35,
+                        "{cull}: {case} escalated {:.1} %",
+                        100.0 * rate
+                    );
+                }
             }
             println!(
                 "generators back {back:e}·(R+r), {cull}: {} rays, {} proved hits, escalated {:.1} %",
@@ -235,20 +288,6 @@ fn generators_near_and_far() {
                 all.hits,
                 100.0 * all.escalated as f64 / all.rays.max(1) as f64
             );
-            if back == 0.0 {
-                // Near origins: the kernel must prove most of the ordinary rays, or it
-                // saves nothing (hole and grazing rays are near misses and near tangents by
-                // design, and escalate far more: see the printed rates).
-                for (case, rate) in &rates {
-                    if matches!(case, Case::OuterBand | Case::Uniform | Case::Camera) {
-                        assert!(
-                            *rate < 0.35,
-                            "{cull}: {case} escalated {:.1} %",
-                            100.0 * rate
-                        );
-                    }
-                }
-            }
         }
     }
 }
@@ -266,40 +305,51 @@ fn world_ray(torus: &Torus, point: DVec3, dir: DVec3) -> Option<Ray> {
 fn adversarial_lines() {
     let Some(gpu) = gpu() else { return };
     let mut rng = Pcg64::seed_from_u64(0x0006_B0AD);
-    for cull in GpuCull::ALL {
-        let mut hole = Tally::default();
-        let mut tangent: Vec<Tally> = SpecialCircle::ALL
-            .iter()
-            .map(|_| Tally::default())
-            .collect();
-        for nu in [1.01, 1.1, 2.0, 8.0, 100.0, 1000.0] {
-            for major in [1e-3f32, 1.0, 1e3] {
-                let torus = random_pose_torus(&mut rng, major, major / nu as f32);
-                let (big, small) = (
-                    f64::from(torus.major_radius()),
-                    f64::from(torus.minor_radius()),
-                );
-                let rays: Vec<Ray> = (0..400)
-                    .filter_map(|_| {
-                        let (p, d) = hole_edge_line(&mut rng, big, small);
+    // Per cull: the hole's edge, then each special circle; the same lines for every cull,
+    // the CPU's answers computed once.
+    let mut tallies: Vec<Vec<Tally>> = GpuCull::ALL
+        .iter()
+        .map(|_| {
+            (0..=SpecialCircle::ALL.len())
+                .map(|_| Tally::default())
+                .collect()
+        })
+        .collect();
+    let mut check = |slot: usize, torus: &Torus, rays: &[Ray]| {
+        let answers = cpu_answers(torus, rays);
+        for (k, &cull) in GpuCull::ALL.iter().enumerate() {
+            tallies[k][slot].check(gpu, cull, torus, rays, &answers);
+        }
+    };
+    for nu in [1.01, 1.1, 2.0, 8.0, 100.0, 1000.0] {
+        for major in [1e-3f32, 1.0, 1e3] {
+            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
+            let (big, small) = (
+                f64::from(torus.major_radius()),
+                f64::from(torus.minor_radius()),
+            );
+            let rays: Vec<Ray> = (0..400)
+                .filter_map(|_| {
+                    let (p, d) = hole_edge_line(&mut rng, big, small);
+                    world_ray(&torus, p, d)
+                })
+                .collect();
+            check(0, &torus, &rays);
+            for (i, circle) in SpecialCircle::ALL.into_iter().enumerate() {
+                let rays: Vec<Ray> = (0..200)
+                    .filter_map(|i| {
+                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
+                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
                         world_ray(&torus, p, d)
                     })
                     .collect();
-                hole.check(gpu, cull, &torus, &rays);
-                for (circle, tally) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
-                    let rays: Vec<Ray> = (0..200)
-                        .filter_map(|i| {
-                            let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
-                            let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
-                            world_ray(&torus, p, d)
-                        })
-                        .collect();
-                    tally.check(gpu, cull, &torus, &rays);
-                }
+                check(1 + i, &torus, &rays);
             }
         }
-        hole.report("hole_edge_line", cull);
-        for (circle, tally) in SpecialCircle::ALL.into_iter().zip(&tangent) {
+    }
+    for (cull, per_family) in GpuCull::ALL.into_iter().zip(&tallies) {
+        per_family[0].report("hole_edge_line", cull);
+        for (circle, tally) in SpecialCircle::ALL.into_iter().zip(&per_family[1..]) {
             tally.report(&format!("tangent ±1e-6 r {}", circle.name()), cull);
         }
     }
