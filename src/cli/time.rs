@@ -56,7 +56,7 @@ pub struct TimeArgs {
     mode: Mode,
     /// `cpu`: the paired ratios above. `gpu` (a binary built with `--features gpu`): the
     /// WGSL kernel's Mrays/s (cull and certified f32 intersection, upload and readback
-    /// included) per case × ν for the culls none and cychosz, `--batch` rays a dispatch
+    /// included) per case × ν for every cull with a batch form, `--batch` rays a dispatch
     /// (default: the workload's rays), written as `estimates` with the adapter in
     /// `meta.device`. A software adapter (device type Cpu, e.g. Mesa's lavapipe) is timed
     /// too, but the output says so and claims no GPU speed.

@@ -703,8 +703,11 @@ fn quadric_keeps(b: Bounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
     let inv_dy = 1.0 / dy;
     let t_bottom = (-b.slab - q.y) * inv_dy;
     let t_top = (b.slab - q.y) * inv_dy;
-    let lo = max(-half, min(t_bottom, t_top));
-    let hi = min(half, max(t_bottom, t_top));
+    // Clamped to the chord on both sides: a no-op unless the clip is empty (which no
+    // line through the torus gives: its points there are η inside), where it keeps
+    // q + τ·d finite (WGSL may assume no infinities).
+    let lo = clamp(max(-half, min(t_bottom, t_top)), -half, half);
+    let hi = clamp(min(half, max(t_bottom, t_top)), -half, half);
     if (hyperboloid_reached(b, q, d, lo) || hyperboloid_reached(b, q, d, hi)) {
         return true;
     }

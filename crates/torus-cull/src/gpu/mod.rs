@@ -818,3 +818,38 @@ impl Frame {
 fn as_bytes(words: &[f32]) -> Vec<u8> {
     words.iter().flat_map(|w| w.to_le_bytes()).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cull::BATCHED;
+
+    #[test]
+    fn every_batch_cull_is_a_gpu_cull_by_the_same_name() {
+        assert_eq!(GpuCull::ALL.len(), BATCHED.len());
+        for (i, (&gpu, &batch)) in GpuCull::ALL.iter().zip(&BATCHED).enumerate() {
+            assert_eq!(GpuCull::from(batch), gpu);
+            assert_eq!(gpu.batched(), batch);
+            assert_eq!(gpu.kind(), batch.kind());
+            assert_eq!(gpu.name(), Named::name(batch.kind()));
+            assert_eq!(GpuCull::try_from(batch.kind()), Ok(gpu));
+            // The kernel's switch reads the code in this order.
+            assert_eq!(gpu.code(), i as u32);
+        }
+        assert_eq!(
+            GpuCull::try_from(CullKind::DiscriminantF64),
+            Err(CullKind::DiscriminantF64)
+        );
+    }
+
+    #[test]
+    fn the_uniform_block_has_its_size() {
+        let torus = Torus::canonical(4.0, 1.0).unwrap();
+        let frame = Frame::of(&torus);
+        let bytes = frame.params(7, GpuCull::Skala, Mode::CullOnly);
+        assert_eq!(bytes.len() as u64, PARAMS_BYTES);
+        let word = |k: usize| u32::from_le_bytes(bytes[4 * k..4 * k + 4].try_into().unwrap());
+        // config = (count, cull, mode, 0), the last row.
+        assert_eq!([word(28), word(29), word(30), word(31)], [7, 5, 1, 0]);
+    }
+}
