@@ -28,6 +28,10 @@
 //! (`eval --exact f32`) rounds the row to an f32 ray too and takes `t_hit` from the
 //! certified f32 path ([`torus_cull::intersect_f32`]), with a column `escalated` after `t_hit`:
 //! 1 where f32 could not prove the answer and the f64 solver gave it.
+//! [`Precision::CertifiedGpu`] (`eval --exact gpu`) is the same on the GPU kernel, and adds
+//! after the CPU's cull columns one column per GPU cull, `gpu_<cull>` ([`GPU_CULLS`]):
+//! the kernel's own verdict for that cull (1 keep, 0 reject), on the same ray, so that any
+//! CSV of rays checks the kernel's culls against the CPU's and the oracle.
 //!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
@@ -54,6 +58,20 @@ pub const OPTIONAL_COLUMNS: [&str; 3] = ["t_min", "t_max", "on_surface"];
 pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
     thick_cylinder,skala,ellipsoid,quadric,discriminant,discriminant_f64";
 
+/// The GPU columns' culls, in [`CullKind::TIMED`] order: every cull with a batch form.
+pub const GPU_CULLS: [torus_cull::batch::BatchCull; 9] = torus_cull::batch::BATCHED;
+
+/// The output header of `--exact gpu`: [`OUTPUT_HEADER`] with `escalated` after `t_hit`
+/// and one `gpu_<cull>` column per [`GPU_CULLS`] at the end.
+pub fn gpu_output_header() -> String {
+    let mut header = OUTPUT_HEADER.replace(",t_hit,", ",t_hit,escalated,");
+    for cull in GPU_CULLS {
+        header.push_str(",gpu_");
+        header.push_str(torus_cull::Named::name(cull));
+    }
+    header
+}
+
 /// How a row is read and intersected.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 #[non_exhaustive]
@@ -68,7 +86,8 @@ pub enum Precision {
     CertifiedF32,
     /// As [`Precision::CertifiedF32`], on the GPU kernel (`torus_cull::gpu`, feature `gpu`):
     /// every row is read first and the rays go to the adapter in one batch; escalated
-    /// rays are answered by the f64 solver.
+    /// rays are answered by the f64 solver. The output adds the kernel's cull verdicts,
+    /// `gpu_<cull>` ([`gpu_output_header`]).
     CertifiedGpu,
 }
 
@@ -145,7 +164,9 @@ pub fn eval_csv(
             Vec::new().into_iter(),
         )
     };
-    if matches!(precision, Precision::CertifiedF32 | Precision::CertifiedGpu) {
+    if precision == Precision::CertifiedGpu {
+        writeln!(output, "{}", gpu_output_header())?;
+    } else if precision == Precision::CertifiedF32 {
         writeln!(
             output,
             "{}",
@@ -238,7 +259,7 @@ fn read_for_gpu(
     columns: &Columns,
     lines: impl Iterator<Item = std::io::Result<String>>,
     row_error: &impl Fn(usize, String) -> EvalError,
-) -> Result<(Vec<std::io::Result<String>>, Vec<torus_cull::F32Hit>), EvalError> {
+) -> Result<(Vec<std::io::Result<String>>, Vec<GpuAnswer>), EvalError> {
     let lines: Vec<std::io::Result<String>> = lines.collect();
     let mut rays = Vec::new();
     for (i, line) in lines.iter().enumerate() {
@@ -251,13 +272,21 @@ fn read_for_gpu(
     Ok((lines, answers))
 }
 
-/// One row's answers: the oracle's label, the exact `t`, whether f32 escalated, and the
-/// line the culls see.
+/// The GPU's answer for one row: the certified intersection (finished in f64), and each
+/// of [`GPU_CULLS`]'s verdict (true keeps).
+struct GpuAnswer {
+    hit: torus_cull::F32Hit,
+    keeps: [bool; GPU_CULLS.len()],
+}
+
+/// One row's answers: the oracle's label, the exact `t`, whether f32 escalated, the
+/// line the culls see, and the GPU's cull verdicts (`--exact gpu`).
 struct Row {
     label: OracleLabel,
     t_hit: Option<String>,
     escalated: Option<bool>,
     line: LocalLine,
+    gpu_keeps: Option<[bool; GPU_CULLS.len()]>,
 }
 
 /// Parses one row in the given precision and answers it.
@@ -266,7 +295,7 @@ fn evaluate(
     columns: &Columns,
     precision: Precision,
     line: &str,
-    gpu_answers: &mut impl Iterator<Item = torus_cull::F32Hit>,
+    gpu_answers: &mut impl Iterator<Item = GpuAnswer>,
 ) -> Result<Row, String> {
     if precision == Precision::F64 {
         let ray = parse_dray(torus, columns, line)?;
@@ -275,19 +304,24 @@ fn evaluate(
             t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
             line: torus.dline_to_local(&ray),
+            gpu_keeps: None,
         });
     }
     let ray = parse_ray(torus, columns, line)?;
-    let (t, escalated) = match precision {
+    let (t, escalated, gpu_keeps) = match precision {
         Precision::CertifiedF32 => {
             let answer = intersect_f32(torus, &ray);
-            (answer.hit.map(|hit| hit.t), Some(answer.escalated))
+            (answer.hit.map(|hit| hit.t), Some(answer.escalated), None)
         }
         Precision::CertifiedGpu => {
             let answer = gpu_answers.next().expect("one GPU answer per row");
-            (answer.hit.map(|hit| hit.t), Some(answer.escalated))
+            (
+                answer.hit.hit.map(|hit| hit.t),
+                Some(answer.hit.escalated),
+                Some(answer.keeps),
+            )
         }
-        _ => (intersect(torus, &ray).map(|hit| hit.t), None),
+        _ => (intersect(torus, &ray).map(|hit| hit.t), None, None),
     };
     Ok(Row {
         label: oracle(torus, &DRay::from(ray)),
@@ -295,6 +329,7 @@ fn evaluate(
         escalated,
         // The culls' own input: far origins go to the foot point, as in a renderer.
         line: torus.line_to_local(&ray),
+        gpu_keeps,
     })
 }
 
@@ -309,7 +344,7 @@ fn oracle(torus: &Torus, ray: &DRay) -> OracleLabel {
     }
 }
 
-/// `index,oracle,margin,t_hit[,escalated],<one 0/1 per cull>`.
+/// `index,oracle,margin,t_hit[,escalated],<one 0/1 per cull>[,<one 0/1 per GPU cull>]`.
 fn write_row(
     output: &mut impl Write,
     torus: &Torus,
@@ -332,22 +367,42 @@ fn write_row(
         let keep = cull.keeps(torus.bounds(), row.line.origin, row.line.dir);
         write!(output, ",{}", u8::from(keep))?;
     }
+    for keep in row.gpu_keeps.iter().flatten() {
+        write!(output, ",{}", u8::from(*keep))?;
+    }
     writeln!(output)
 }
 
-/// The certified f32 answers of the GPU kernel (no cull: `eval` reports the culls itself),
-/// escalated rays finished in f64.
+/// The certified f32 answers of the GPU kernel (no cull in front of the intersection:
+/// `eval` reports the culls apart), escalated rays finished in f64, and each GPU cull's
+/// verdict on every ray.
 #[cfg(feature = "gpu")]
-fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<torus_cull::F32Hit>, EvalError> {
+fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<GpuAnswer>, EvalError> {
     use torus_cull::gpu::{GpuCull, GpuIntersector};
-    let gpu = GpuIntersector::new().map_err(|e| EvalError::Gpu(e.to_string()))?;
-    gpu.intersect_finished(torus, GpuCull::None, rays)
-        .map_err(|e| EvalError::Gpu(e.to_string()))
+    let gpu_error = |e: torus_cull::gpu::GpuError| EvalError::Gpu(e.to_string());
+    let gpu = GpuIntersector::new().map_err(gpu_error)?;
+    let hits = gpu
+        .intersect_finished(torus, GpuCull::None, rays)
+        .map_err(gpu_error)?;
+    let mut keeps = vec![[true; GPU_CULLS.len()]; rays.len()];
+    for (k, cull) in GPU_CULLS.into_iter().enumerate() {
+        let verdicts = gpu
+            .cull_keeps(torus, GpuCull::from(cull), rays)
+            .map_err(gpu_error)?;
+        for (row, keep) in keeps.iter_mut().zip(verdicts) {
+            row[k] = keep;
+        }
+    }
+    Ok(hits
+        .into_iter()
+        .zip(keeps)
+        .map(|(hit, keeps)| GpuAnswer { hit, keeps })
+        .collect())
 }
 
 /// Without the feature `gpu` there is no kernel to ask.
 #[cfg(not(feature = "gpu"))]
-fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<torus_cull::F32Hit>, EvalError> {
+fn gpu_answers(_torus: &Torus, _rays: &[Ray]) -> Result<Vec<GpuAnswer>, EvalError> {
     Err(EvalError::Gpu(
         "this binary was built without the feature gpu (cargo build --release --features gpu)"
             .to_string(),
@@ -558,6 +613,21 @@ mod tests {
         assert_eq!(
             OUTPUT_HEADER,
             format!("index,oracle,margin,t_hit,{}", names.join(","))
+        );
+        let gpu: Vec<String> = GPU_CULLS
+            .iter()
+            .map(|c| format!("gpu_{}", c.name()))
+            .collect();
+        assert_eq!(
+            gpu_output_header(),
+            format!(
+                "index,oracle,margin,t_hit,escalated,{},{}",
+                names.join(","),
+                gpu.join(",")
+            )
+        );
+        assert!(
+            gpu_output_header().ends_with(",gpu_skala,gpu_ellipsoid,gpu_quadric,gpu_discriminant")
         );
     }
 }

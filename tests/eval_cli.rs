@@ -634,3 +634,99 @@ fn on_surface_rows_agree_with_the_oracle_in_every_cpu_mode() {
     println!("on-surface rows: {decided} decided ({hits} hits), {ambiguous} ambiguous");
     assert!(decided > 5_000 && hits > 1_000 && ambiguous * 10 < decided);
 }
+
+/// `eval --exact gpu` adds one column per GPU cull, `gpu_<cull>`, after the CPU's cull
+/// columns: the kernel's own verdict (1 keep, 0 reject). On rays aimed at and around
+/// the torus (the hole, the tube, the bounding box's corners) no GPU cull rejects a row
+/// the oracle calls a hit, `gpu_none` keeps every row, and each GPU cull agrees with the
+/// CPU's cull of the same name on all but a sliver (rows within about 10⁻⁴·(R + r) of
+/// the padded surface may differ: the GPU's margin is wider).
+#[cfg(feature = "gpu")]
+#[test]
+fn exact_gpu_adds_a_column_per_gpu_cull() {
+    use torus_cull::Named;
+    use torus_cull_lab::eval::{GPU_CULLS, gpu_output_header};
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("rays.csv");
+    let mut csv = String::from(
+        "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n0.5,10,0,0,-1,0\n",
+    );
+    // Origins on a sphere of radius 10, aimed at points of the box around the torus
+    // (R = 2, r = 1), from a fixed low-discrepancy sequence.
+    let frac = |x: f64| x - x.floor();
+    for i in 0..600 {
+        let k = f64::from(i);
+        let (a, b) = (
+            std::f64::consts::TAU * frac(k * 0.618_034),
+            std::f64::consts::PI * (frac(k * 0.754_878) - 0.5),
+        );
+        let o = [
+            10.0 * a.cos() * b.cos(),
+            10.0 * b.sin(),
+            10.0 * a.sin() * b.cos(),
+        ];
+        let (c, rho, y) = (
+            std::f64::consts::TAU * frac(k * 0.569_840),
+            3.3 * frac(k * 0.245_122),
+            2.4 * (frac(k * 0.437_016) - 0.5),
+        );
+        let p = [rho * c.cos(), y, rho * c.sin()];
+        csv.push_str(&format!(
+            "{},{},{},{},{},{}\n",
+            o[0],
+            o[1],
+            o[2],
+            p[0] - o[0],
+            p[1] - o[1],
+            p[2] - o[2]
+        ));
+    }
+    std::fs::write(&input, csv).unwrap();
+    let path = input.to_str().unwrap();
+    let out = run(&[
+        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "gpu",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() && stderr.contains("no GPU adapter") {
+        eprintln!("SKIPPED: no GPU adapter ({stderr})");
+        return;
+    }
+    assert!(out.status.success(), "{stderr}");
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(header.join(","), gpu_output_header());
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 604);
+    // The hole ray (row 3) is a miss that skala and discriminant reject on the GPU too.
+    assert_eq!(rows[3][1], "miss");
+    for cull in ["skala", "quadric", "discriminant", "thick_cylinder"] {
+        assert_eq!(rows[3][column(&format!("gpu_{cull}"))], "0", "{cull}");
+    }
+    for cull in GPU_CULLS {
+        let (gpu_col, cpu_col) = (column(&format!("gpu_{}", cull.name())), column(cull.name()));
+        let mut differ = 0;
+        let mut rejected = 0;
+        for (i, row) in rows.iter().enumerate() {
+            assert_eq!(row.len(), header.len(), "row {i}");
+            let keep = row[gpu_col];
+            assert!(keep == "0" || keep == "1", "row {i}: {keep}");
+            rejected += usize::from(keep == "0");
+            if row[1] == "hit" {
+                assert_eq!(keep, "1", "gpu_{} rejects hit row {i}", cull.name());
+            }
+            differ += usize::from(keep != row[cpu_col]);
+        }
+        assert!(
+            differ <= 3,
+            "gpu_{}: {differ} rows differ from the CPU's",
+            cull.name()
+        );
+        if cull.name() == "none" {
+            assert_eq!(rejected, 0);
+        } else if cull.name() != "sphere" {
+            assert!(rejected > 0, "gpu_{} rejected nothing", cull.name());
+        }
+    }
+}

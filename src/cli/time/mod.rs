@@ -56,12 +56,13 @@ pub struct TimeArgs {
     mode: Mode,
     /// `cpu`: the paired ratios above. `gpu` (a binary built with `--features gpu`): the
     /// WGSL kernel (cull and certified f32 intersection) with the rays resident on the
-    /// device, per case × ν and cull: ns per ray from the device's timestamps, each
-    /// cull's paired ratio to none and cychosz, and its time over a copy kernel's (the
-    /// bandwidth floor), `--batch` rays (default 2 097 152, drawn from the workload's generators at that count); upload and read-back are
-    /// timed apart. Written as `ratio` (metric `gpu_kernel_ns`, device `gpu`) and
-    /// `estimates`, with the adapter in `meta.device`. A software adapter (device type
-    /// Cpu, e.g. Mesa's lavapipe) is timed too, but as a CPU proxy, never as GPU speed.
+    /// device, per case × ν and every cull with a batch form: ns per ray from the device's
+    /// timestamps, each cull's paired ratio to none and cychosz, and its time over a copy
+    /// kernel's (the bandwidth floor), `--batch` rays (default 2 097 152, drawn from the
+    /// workload's generators at that count); upload and read-back are timed apart.
+    /// Written as `ratio` (metric `gpu_kernel_ns`, device `gpu`) and `estimates`, with the
+    /// adapter in `meta.device`. A software adapter (device type Cpu, e.g. Mesa's
+    /// lavapipe) is timed too, but as a CPU proxy, never as GPU speed.
     #[arg(long, value_enum, default_value_t = Device::Cpu)]
     device: Device,
     /// Skip the SVG plots (by default the paired ratios, or with `--device gpu` the ns

@@ -48,6 +48,8 @@ pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
 pub use ellipsoid::EllipsoidCull;
 pub use kernel::{Cull, CullVisitor};
 pub use none::NoCull;
+#[cfg(feature = "gpu")]
+pub(crate) use quadric::HORIZONTAL_DY;
 pub use quadric::QuadricCull;
 pub(crate) use registry::KernelVisitor;
 pub use registry::{BATCHED, BatchCull, CullKind};

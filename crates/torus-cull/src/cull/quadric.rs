@@ -55,7 +55,7 @@ impl CullKernel for QuadricCull {
 
 /// |d_y| below this (|d| ≥ 2⁻²⁰ after `moderate`) is treated as horizontal: the slab
 /// interval is then ±(s·r_η + |q_y|)·1e20, far beyond the chord, instead of ±∞ or 0·∞.
-const HORIZONTAL_DY: f32 = 1e-20;
+pub(crate) const HORIZONTAL_DY: f32 = 1e-20;
 
 /// Whether H ≥ 0 somewhere on the chord of E clipped to the slab (all in y-scaled
 /// coordinates, where H is ρ² − c·y′² − (R − r_η)², c = (ν_η − 1)/(ν_η + 1)). The clip

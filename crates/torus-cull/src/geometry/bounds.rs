@@ -61,7 +61,17 @@ impl CullBounds {
     /// Bounds for R = `major_radius`, r = `minor_radius`: only [`crate::Torus::new`]'s
     /// validated radii come here (and the unit tests').
     pub(crate) fn new(major_radius: f32, minor_radius: f32) -> CullBounds {
-        let eta = SAFETY_REL * (major_radius + minor_radius);
+        CullBounds::with_margin(
+            major_radius,
+            minor_radius,
+            SAFETY_REL * (major_radius + minor_radius),
+        )
+    }
+
+    /// Bounds for R, r with the tube padded by `eta` instead of
+    /// [`SAFETY_REL`]·(R + r): the GPU kernel's culls, whose margin also covers the
+    /// kernel's own line error (`crate::gpu`).
+    pub(crate) fn with_margin(major_radius: f32, minor_radius: f32, eta: f32) -> CullBounds {
         let minor_safe = minor_radius + eta;
         let outer_safe = major_radius + minor_safe;
         let inner_safe = major_radius - minor_safe;

@@ -11,7 +11,12 @@
 // What is not proved comes back ESCALATE, and the host asks the f64 solver.
 //
 // Output per ray, two vec4: (t, normal.xyz) and (code, why, 0, 0) with code 0 miss,
-// 1 hit, 2 escalate, and why the step that escalated (see `Verdict`).
+// 1 hit, 2 escalate, and why the step that escalated (see `Verdict`); in the cull-only
+// mode (config.z = 1) code 0 rejected, 3 kept.
+//
+// Every shared number (U, G, SAFETY_REL, the solver's thresholds and fits, the line
+// error's constants, …) is a `const` of the header that src/gpu/source.rs generates from
+// the Rust constants the CPU uses: none is written here.
 
 struct Params {
     // Rows of the world → torus rotation (torus.to_local_rotation()); w: R, r, r/R.
@@ -20,7 +25,15 @@ struct Params {
     rot_z: vec4<f32>,
     // x: 1/R (yzw unused).
     scale: vec4<f32>,
-    // x: rays in this dispatch, y: cull (0 none, 1 cychosz).
+    // The culls' bounds at R = 1, the tube padded by the GPU's margin (src/gpu/bounds.rs):
+    // (R + r_η, (R + r_η)², r_η, r_η²), ((R − r_η)², s, s·r_η, the hyperboloid's
+    // y coefficient), ((r_η/R)², R − r_η, η_gpu, 0).
+    bounds_a: vec4<f32>,
+    bounds_b: vec4<f32>,
+    bounds_c: vec4<f32>,
+    // x: rays in this dispatch, y: cull (the order of GpuCull::ALL: 0 none, 1 sphere,
+    // 2 aabb, 3 cychosz, 4 thick_cylinder, 5 skala, 6 ellipsoid, 7 quadric,
+    // 8 discriminant), z: mode (0 intersect, 1 the cull alone).
     config: vec4<u32>,
 };
 
@@ -29,15 +42,11 @@ struct Params {
 @group(0) @binding(1) var<storage, read> rays: array<vec4<f32>>;
 @group(0) @binding(2) var<storage, read_write> results: array<vec4<f32>>;
 
-const U: f32 = 5.9604645e-8; // 2^-24, the unit roundoff of f32
-const G: f32 = 4.0; // the GPU's factor on every spec term in U
-const SAFETY_REL: f32 = 0.000244140625; // 2^-12, the culls' margin (src/cull/bounds.rs)
-const BIG: f32 = 1e30; // "finite" below this (a check NaN fails too)
-const F64_EPS: f32 = 2.220446e-16; // the f64 solver's EPS, as its f32 lanes splat it
-
-const CODE_MISS: f32 = 0.0;
-const CODE_HIT: f32 = 1.0;
-const CODE_ESCALATE: f32 = 2.0;
+// Result codes (the host's `verdict`): 0 miss (or rejected), 1 hit, 2 escalate, 3 kept.
+fn code_miss() -> f32 { return 0.0; }
+fn code_hit() -> f32 { return 1.0; }
+fn code_escalate() -> f32 { return 2.0; }
+fn code_kept() -> f32 { return 3.0; }
 
 fn finite(x: f32) -> bool {
     return abs(x) < BIG;
@@ -65,7 +74,7 @@ fn cbrt_halley(t: f32, y: f32) -> f32 {
 // ∛y for y in [1e-30, 1e30]: Kahan's bit trick for f32 (within ~6 %), two Halley steps.
 fn cbrt(y: f32) -> f32 {
     let bits = bitcast<u32>(y);
-    var t = bitcast<f32>(bits / 3u + 709921077u);
+    var t = bitcast<f32>(bits / 3u + CBRT_SEED);
     t = cbrt_halley(t, y);
     t = cbrt_halley(t, y);
     return t;
@@ -76,13 +85,13 @@ fn trisect_u(x: f32) -> f32 {
     let rhs = 2.0 * (1.0 + x);
     let s = sqrt(max(rhs * (1.0 / 3.0), 0.0));
     var u = s * poly5(
-        -0.0023725581002014035,
-        0.005384607441641353,
-        -0.011844823329350508,
-        0.03242038506892554,
-        -0.11181286004396555,
-        0.9216062482255146,
-        s - 0.5773502691896257,
+        TRISECT_FIT_0,
+        TRISECT_FIT_1,
+        TRISECT_FIT_2,
+        TRISECT_FIT_3,
+        TRISECT_FIT_4,
+        TRISECT_FIT_5,
+        s - TRISECT_HALF_RANGE,
     );
     let f = u * u * (3.0 + u) - rhs;
     let df = (3.0 * u + 6.0) * u;
@@ -137,11 +146,11 @@ struct Resolvent {
 // The greatest root z = m² ≥ 0 of the resolvent (batch/quartic/resolvent.rs).
 fn greatest_root(p: f32, q: f32, r: f32) -> Resolvent {
     let k = cubic_of(p, q, r);
-    let near_double = !(abs(k.disc) > 1e-9 * k.scale);
+    let near_double = !(abs(k.disc) > DISC_NEAR * k.scale);
     let one_real = k.disc > 0.0;
     // Cardano (one real root).
     let cube = abs(k.half_q) + sqrt(max(k.disc, 0.0));
-    let cube_ok = cube == 0.0 || (cube >= 1e-30 && cube <= 1e30);
+    let cube_ok = cube == 0.0 || (cube >= CBRT_LOW && cube <= CBRT_HIGH);
     let big = select(0.0, cbrt(cube), cube > 0.0 && cube_ok);
     let ratio = -k.third_p / select(1.0, cube, cube > 0.0);
     var cu = big;
@@ -159,7 +168,7 @@ fn greatest_root(p: f32, q: f32, r: f32) -> Resolvent {
     let w = select(trig, cardano, one_real);
     var z = max(w - k.a3, 0.0);
     // A small greatest root from the fixed point z = q²/((z + a)z + b).
-    let tiny = k.b > 0.0 && z * (z + abs(k.a)) <= 1e-3 * k.b;
+    let tiny = k.b > 0.0 && z * (z + abs(k.a)) <= SMALL_ROOT * k.b;
     if (tiny) {
         let z0 = q * q / k.b;
         let den = (z0 + k.a) * z0 + k.b;
@@ -226,7 +235,7 @@ fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
     // clear_factors
     let disc1 = z - 4.0 * n1;
     let disc2 = z - 4.0 * n2;
-    let clear = abs(disc1) > 1e-7 * (z + 4.0 * abs(n1)) && abs(disc2) > 1e-7 * (z + 4.0 * abs(n2));
+    let clear = abs(disc1) > NEAR_DOUBLE * (z + 4.0 * abs(n1)) && abs(disc2) > NEAR_DOUBLE * (z + 4.0 * abs(n2));
     // nearest_of_clear
     let s1 = sqrt(max(disc1, 0.0));
     let s2 = sqrt(max(disc2, 0.0));
@@ -403,6 +412,412 @@ fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
     return true;
 }
 
+// ---------------------------------------------------------------------------------------
+// The culls (src/cull/*.rs): the CPU's math on the kernel's line, q (the foot point, in
+// units of R) and dh (a unit direction), against the torus R = 1, r = rr padded by the
+// GPU's margin η_gpu = SAFETY_REL·(1 + rr) + E (the bounds in Params, made by the host:
+// src/gpu/bounds.rs). E bounds the kernel's line error on every line that meets the
+// torus, so the computed line meets the torus padded by E; what is left of the margin,
+// SAFETY_REL·(1 + rr) = 4096u·(1 + rr), absorbs each cull's own f32 evaluation as on the
+// CPU (docs/math.md, "The GPU's culls"): the kernel's line is a foot point with |q| ≲ 2
+// and a unit direction, so every rounding acts like moving the line (or a radius) by a
+// few G·u·(1 + rr), far below. Two culls compare values whose margin is not of that
+// size, and carry an explicit error bound instead: `quadric` (H's margin is only
+// (R − r)·η) and `discriminant` (Δ has no margin at a tangent: a running error bound).
+// `thick_cylinder`'s hole test bounds its ρ² the same way (margin 2(R − r)·η).
+// WGSL may assume no infinities or NaNs: every division below has a divisor bounded
+// away from 0, where the CPU's divides by 0 and lets ±∞ decide.
+
+struct Bounds {
+    outer: f32,
+    outer_sq: f32,
+    minor: f32,
+    minor_sq: f32,
+    inner_sq: f32,
+    y_scale: f32,
+    slab: f32,
+    hyperboloid: f32,
+    minor_rel_sq: f32,
+};
+
+fn bounds() -> Bounds {
+    var b: Bounds;
+    b.outer = params.bounds_a.x;
+    b.outer_sq = params.bounds_a.y;
+    b.minor = params.bounds_a.z;
+    b.minor_sq = params.bounds_a.w;
+    b.inner_sq = params.bounds_b.x;
+    b.y_scale = params.bounds_b.y;
+    b.slab = params.bounds_b.z;
+    b.hyperboloid = params.bounds_b.w;
+    b.minor_rel_sq = params.bounds_c.x;
+    return b;
+}
+
+// A value and a bound on its distance from the exact value of the same expression on
+// exact inputs: |v − exact| ≤ e. Each operation adds its own rounding, G·u·|result|
+// (+, −, × are correctly rounded in WGSL, G = 4 leaves room), plus FLUSH_FLOOR for a flushed
+// subnormal; a product adds |a|e_b + |b|e_a + e_a·e_b, which is exact, not first
+// order. The bounds are themselves rounded (down by at most ~1 + 200u over a cull):
+// `ev_certain` widens them by 2⁻¹⁰ before a sign is read.
+struct Ev {
+    v: f32,
+    e: f32,
+};
+
+fn ev_exact(v: f32) -> Ev {
+    return Ev(v, 0.0);
+}
+
+fn ev_round(v: f32) -> f32 {
+    return G * U * abs(v) + FLUSH_FLOOR;
+}
+
+fn ev_add(a: Ev, b: Ev) -> Ev {
+    let s = a.v + b.v;
+    return Ev(s, a.e + b.e + ev_round(s));
+}
+
+fn ev_sub(a: Ev, b: Ev) -> Ev {
+    let s = a.v - b.v;
+    return Ev(s, a.e + b.e + ev_round(s));
+}
+
+fn ev_mul(a: Ev, b: Ev) -> Ev {
+    let p = a.v * b.v;
+    return Ev(p, abs(a.v) * b.e + abs(b.v) * a.e + a.e * b.e + ev_round(p));
+}
+
+// k·a for a small integer or power of two k (exact in f32).
+fn ev_scale(k: f32, a: Ev) -> Ev {
+    let p = k * a.v;
+    return Ev(p, abs(k) * a.e + ev_round(p));
+}
+
+// The exact value is > 0.
+fn ev_positive(a: Ev) -> bool {
+    return a.v > a.e * (1.0 + 0.0009765625);
+}
+
+// The exact value may be ≥ 0 (not proved < 0).
+fn ev_maybe_nonnegative(a: Ev) -> bool {
+    return a.v >= -a.e * (1.0 + 0.0009765625);
+}
+
+// How far the computed point q + τ·d (each component one product and one sum, fused or
+// not) can stand from the exact one, in each coordinate.
+fn point_error(q: vec3<f32>, d: vec3<f32>, tau: f32) -> f32 {
+    return G * 2.0 * U * (length(q) + length(d) * abs(tau)) * 1.01 + FLUSH_FLOOR;
+}
+
+// `sphere`: the foot point within the padded bounding sphere.
+fn sphere_keeps(b: Bounds, q: vec3<f32>) -> bool {
+    return dot(q, q) <= b.outer_sq;
+}
+
+// One axis of `aabb`'s slab method: (lo, hi) narrowed to where |q_i + t d_i| ≤ half.
+// A component below PARALLEL_COMPONENT is parallel (over |t| ≤ 4 the line moves by
+// less than 4·10⁻²⁰ along the axis): in the slab or not at all; x = 2 marks "empty".
+fn aabb_axis(range: vec2<f32>, q: f32, d: f32, half: f32) -> vec2<f32> {
+    if (abs(d) < PARALLEL_COMPONENT) {
+        return select(vec2<f32>(2.0, -2.0), range, abs(q) <= half);
+    }
+    let inv = 1.0 / d;
+    let t0 = (-half - q) * inv;
+    let t1 = (half - q) * inv;
+    return vec2<f32>(max(range.x, min(t0, t1)), min(range.y, max(t0, t1)));
+}
+
+// `aabb`: the box [−(R + r_η), R + r_η] × [−r_η, r_η] × [−(R + r_η), R + r_η]. The line's
+// points in the torus are within |t| ≤ 1 + rr + E < 4 of the foot point, so the slabs
+// are intersected with t ∈ [−4, 4] (where the CPU's are unbounded).
+fn aabb_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    var range = vec2<f32>(-4.0, 4.0);
+    range = aabb_axis(range, q.x, d.x, b.outer);
+    range = aabb_axis(range, q.y, d.y, b.minor);
+    range = aabb_axis(range, q.z, d.z, b.outer);
+    return range.x <= range.y;
+}
+
+struct SphereSlab {
+    half_chord_sq: f32,
+    unit_y_sq: f32,
+    keep: bool,
+};
+
+// `cychosz`: the sphere chord and the slab, squared, without a root (src/cull/cychosz.rs).
+fn sphere_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> SphereSlab {
+    var out: SphereSlab;
+    out.half_chord_sq = b.outer_sq - dot(q, q);
+    out.unit_y_sq = d.y * d.y / dot(d, d);
+    let above = abs(q.y) - b.minor;
+    let beyond_slab = above > 0.0 && above * above > out.unit_y_sq * out.half_chord_sq;
+    out.keep = out.half_chord_sq >= 0.0 && !beyond_slab;
+    return out;
+}
+
+// ρ² at the point q + τ·d, proved below the padded hole's (R − r_η)² (the margin of a
+// point in the torus is 2(R − r)η, which G·u·ρ² may not be at ν = 1.01): the point's
+// own error through ρ²'s gradient, and the rounding.
+fn inside_hole(b: Bounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
+    let x = q + tau * d;
+    let delta = point_error(q, d, tau);
+    let rho_sq = ev_add(ev_mul(ev_exact(x.x), ev_exact(x.x)), ev_mul(ev_exact(x.z), ev_exact(x.z)));
+    let moved = 2.0 * (abs(x.x) + abs(x.z)) * delta + 2.0 * delta * delta;
+    return rho_sq.v + (rho_sq.e + moved) * (1.0 + 0.0009765625) < b.inner_sq;
+}
+
+// `thick_cylinder`: clip the line to the slab and the outer cylinder; reject if nothing
+// is left or both ends are in the hole (ρ² is convex along the line).
+fn thick_cylinder_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    let n = d / sqrt(dot(d, d));
+    var lo = -4.0;
+    var hi = 4.0;
+    if (abs(n.y) < PARALLEL_COMPONENT) {
+        if (abs(q.y) > b.minor) {
+            return false;
+        }
+    } else {
+        let inv = 1.0 / n.y;
+        let t0 = (-b.minor - q.y) * inv;
+        let t1 = (b.minor - q.y) * inv;
+        lo = max(lo, min(t0, t1));
+        hi = min(hi, max(t0, t1));
+    }
+    let h2 = n.x * n.x + n.z * n.z;
+    let half_b = q.x * n.x + q.z * n.z;
+    let rho2_foot = q.x * q.x + q.z * q.z;
+    if (h2 < AXIS_PARALLEL_H2) {
+        return rho2_foot <= b.outer_sq && rho2_foot >= b.inner_sq;
+    }
+    let disc = half_b * half_b - h2 * (rho2_foot - b.outer_sq);
+    if (disc < 0.0) {
+        return false;
+    }
+    let root = sqrt(disc);
+    lo = max(lo, (-half_b - root) / h2);
+    hi = min(hi, (-half_b + root) / h2);
+    if (lo > hi) {
+        return false;
+    }
+    return !(inside_hole(b, q, n, lo) && inside_hole(b, q, n, hi));
+}
+
+// `skala` (src/cull/skala.rs): Cychosz's sphere and slab, then in the plane through the
+// line parallel to the axis (distance a from it; A = a·h): the outer band a ≥ R shrinks
+// the slab to the section's height h_c, and the hole a < R − r rejects a line that falls
+// between the circles k, k′. R = 1 here; d is unit, so no rescaling.
+fn skala_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    let ss = sphere_slab(b, q, d);
+    if (!ss.keep) {
+        return false;
+    }
+    let len_sq = dot(d, d);
+    let h_sq = d.x * d.x + d.z * d.z;
+    if (h_sq < AXIS_PARALLEL_H2 * len_sq) {
+        return q.x * q.x + q.z * q.z > b.inner_sq;
+    }
+    let a_h = abs(q.x * d.z - q.z * d.x);
+    let a_h_sq = a_h * a_h;
+    if (a_h_sq >= h_sq) {
+        // Outer band (case c; h_c² < 0 is case d).
+        let reach_sq = ss.unit_y_sq * ss.half_chord_sq;
+        if (q.y * q.y <= reach_sq) {
+            return true;
+        }
+        let lowest = abs(q.y) - sqrt(reach_sq);
+        let h = sqrt(h_sq);
+        let off = a_h - h;
+        return lowest * lowest * h_sq <= b.minor_sq * h * h - off * off;
+    }
+    if (a_h_sq < b.inner_sq * h_sq) {
+        // Hole (case a): reject iff x_B·h·|d_y| ≥ |M| + r·h·(|d| − |d_y|).
+        let moment = (q.x * d.x + q.z * d.z) * d.y - q.y * h_sq;
+        let edge = (b.inner_sq * h_sq - a_h_sq) * (d.y * d.y);
+        if (edge < moment * moment) {
+            return true;
+        }
+        let rhs = abs(moment) + b.minor * sqrt(h_sq) * (sqrt(len_sq) - abs(d.y));
+        return edge < rhs * rhs;
+    }
+    // Case b: sphere and slab keep it.
+    return true;
+}
+
+struct EllipsoidChord {
+    foot: vec3<f32>,
+    dir: vec3<f32>,
+    inv_len_sq: f32,
+    half_chord_sq: f32,
+    keep: bool,
+};
+
+// `ellipsoid` (src/cull/ellipsoid.rs): y scaled by s turns the outer ellipsoid into the
+// sphere R + r_η; Cychosz's chord and slab |y′| ≤ s·r_η on the scaled line.
+fn ellipsoid_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> EllipsoidChord {
+    var out: EllipsoidChord;
+    out.dir = vec3<f32>(d.x, b.y_scale * d.y, d.z);
+    let o = vec3<f32>(q.x, b.y_scale * q.y, q.z);
+    out.inv_len_sq = 1.0 / dot(out.dir, out.dir);
+    out.foot = o - out.dir * (dot(o, out.dir) * out.inv_len_sq);
+    out.half_chord_sq = b.outer_sq - dot(out.foot, out.foot);
+    let unit_y_sq = out.dir.y * out.dir.y * out.inv_len_sq;
+    let above = abs(out.foot.y) - b.slab;
+    let beyond_slab = above > 0.0 && above * above > unit_y_sq * out.half_chord_sq;
+    out.keep = out.half_chord_sq >= 0.0 && !beyond_slab;
+    return out;
+}
+
+// H = ρ² − c·y′² − (R − r_η)² at the computed point q + τ·d may be ≥ 0 at the exact point
+// q + τ·d of the scaled line: the rounding (running bound) and the point's own error
+// through H's gradient (|∂H| ≤ 2|x|, 2c|y′|, 2|z|) and its second order.
+fn hyperboloid_reached(b: Bounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
+    let x = q + tau * d;
+    let c = ev_exact(b.hyperboloid);
+    let h = ev_sub(
+        ev_sub(
+            ev_add(ev_mul(ev_exact(x.x), ev_exact(x.x)), ev_mul(ev_exact(x.z), ev_exact(x.z))),
+            ev_mul(c, ev_mul(ev_exact(x.y), ev_exact(x.y))),
+        ),
+        ev_exact(b.inner_sq),
+    );
+    let delta = point_error(q, d, tau);
+    let moved = 2.0 * (abs(x.x) + abs(x.z) + b.hyperboloid * abs(x.y)) * delta + 3.0 * delta * delta;
+    return ev_maybe_nonnegative(Ev(h.v, h.e + moved));
+}
+
+// `quadric` (src/cull/quadric.rs): the ellipsoid's chord, clipped to the slab, must
+// reach H ≥ 0: at an end, or at the vertex τ* = B/|A| when H(τ) = Aτ² + 2Bτ + C is
+// concave, tested as C·|A| + B² ≥ 0. Each test is widened by its error bound, and the
+// vertex is tried wherever it may be concave and inside (a vertex tried outside the
+// clip only keeps more: its H is H's maximum).
+fn quadric_keeps(b: Bounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
+    let chord = ellipsoid_slab(b, q0, d0);
+    if (!chord.keep) {
+        return false;
+    }
+    let q = chord.foot;
+    let d = chord.dir;
+    let half = sqrt(max(chord.half_chord_sq, 0.0) * chord.inv_len_sq);
+    let dy = select(d.y, select(HORIZONTAL_DY, -HORIZONTAL_DY, d.y < 0.0), abs(d.y) < HORIZONTAL_DY);
+    let inv_dy = 1.0 / dy;
+    let t_bottom = (-b.slab - q.y) * inv_dy;
+    let t_top = (b.slab - q.y) * inv_dy;
+    // Clamped to the chord on both sides: a no-op unless the clip is empty (which no
+    // line through the torus gives: its points there are η inside), where it keeps
+    // q + τ·d finite (WGSL may assume no infinities).
+    let lo = clamp(max(-half, min(t_bottom, t_top)), -half, half);
+    let hi = clamp(min(half, max(t_bottom, t_top)), -half, half);
+    if (hyperboloid_reached(b, q, d, lo) || hyperboloid_reached(b, q, d, hi)) {
+        return true;
+    }
+    let c = ev_exact(b.hyperboloid);
+    let qx = ev_exact(q.x);
+    let qy = ev_exact(q.y);
+    let qz = ev_exact(q.z);
+    let dx = ev_exact(d.x);
+    let dy_ = ev_exact(d.y);
+    let dz = ev_exact(d.z);
+    let neg_a = ev_sub(ev_sub(ev_mul(c, ev_mul(dy_, dy_)), ev_mul(dx, dx)), ev_mul(dz, dz));
+    let half_b = ev_sub(ev_add(ev_mul(qx, dx), ev_mul(qz, dz)), ev_mul(c, ev_mul(qy, dy_)));
+    let h_q = ev_sub(
+        ev_sub(ev_add(ev_mul(qx, qx), ev_mul(qz, qz)), ev_mul(c, ev_mul(qy, qy))),
+        ev_exact(b.inner_sq),
+    );
+    let maybe_concave = !ev_positive(Ev(-neg_a.v, neg_a.e));
+    let after_lo = ev_sub(half_b, ev_mul(ev_exact(lo), neg_a));
+    let before_hi = ev_sub(ev_mul(ev_exact(hi), neg_a), half_b);
+    let maybe_inside = ev_maybe_nonnegative(after_lo) && ev_maybe_nonnegative(before_hi);
+    let vertex = ev_add(ev_mul(h_q, neg_a), ev_mul(half_b, half_b));
+    return maybe_concave && maybe_inside && ev_maybe_nonnegative(vertex);
+}
+
+// `discriminant` (src/cull/discriminant.rs): F(t) = t⁴ + 2P t² + 8Q t + S along the line
+// from its foot point f (unit d, R = 1) has no real root iff Δ′ > 0 and (P > 0 or
+// S > P²), Δ′ = S(S − P²)² − 8Q²(P³ − 9PS + 54Q²). On the CPU that this suffices in f32
+// is measured; here it is proved: the exact line is q + t·dh, whose exact foot point
+// f* and unit direction d* the kernel does not have, so ρ², f_y² and d*_y² carry an
+// error bound (f = q − (q·dh/|dh|²)·dh is within δ_f of f*), the whole evaluation runs
+// on `Ev`, and a rejection needs every sign proved. A rejected line then misses the
+// padded torus exactly, and the true line (within E of it) misses the torus.
+fn discriminant_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    if (!sphere_keeps(b, q)) {
+        return false;
+    }
+    let n2 = dot(d, d);
+    let along = dot(q, d) / n2;
+    let f = q - along * d;
+    let q_len = length(q);
+    // along's error: the dot product's G·3u·|q||d| over |d|² (1 within 16.5u), the
+    // division's; f's: that times |d|, and each component's own rounding.
+    let delta_f = G * 8.0 * U * (q_len + abs(along)) * 1.01 + FLUSH_FLOOR;
+    // |ρ(f) − ρ(f*)| and |f_y − f*_y| are at most δ_f, so the squares move by at most
+    // 2|·|δ_f + δ_f² (|·| of f, plus 1 % for its own rounding).
+    let rho_sq = ev_add(ev_mul(ev_exact(f.x), ev_exact(f.x)), ev_mul(ev_exact(f.z), ev_exact(f.z)));
+    let fy_sq = ev_mul(ev_exact(f.y), ev_exact(f.y));
+    let rho_len = sqrt(rho_sq.v) * 1.01;
+    let rho_sq_in = Ev(rho_sq.v, rho_sq.e + 2.0 * rho_len * delta_f + delta_f * delta_f);
+    let fy_sq_in = Ev(fy_sq.v, fy_sq.e + 2.0 * abs(f.y) * 1.01 * delta_f + delta_f * delta_f);
+    // d*_y² = dh_y²/|dh|²: a product, a sum of three squares and a division (2.5 ulp).
+    let uy = d.y * d.y / n2;
+    let unit_y_sq = Ev(uy, G * 4.0 * U * uy + FLUSH_FLOOR);
+    let one = ev_exact(1.0);
+    let rho_sq_m1 = ev_sub(rho_sq_in, one);
+    let bb = ev_sub(fy_sq_in, ev_exact(b.minor_rel_sq));
+    let p = ev_add(ev_add(rho_sq_m1, bb), ev_scale(2.0, unit_y_sq));
+    let s = ev_add(
+        ev_mul(rho_sq_m1, rho_sq_m1),
+        ev_mul(bb, ev_add(ev_scale(2.0, ev_add(rho_sq_in, one)), bb)),
+    );
+    let q_sq = ev_mul(fy_sq_in, unit_y_sq);
+    let p_sq = ev_mul(p, p);
+    let s_minus_p_sq = ev_sub(s, p_sq);
+    let cubic = ev_add(
+        ev_sub(ev_mul(p_sq, p), ev_scale(9.0, ev_mul(p, s))),
+        ev_scale(54.0, q_sq),
+    );
+    let delta = ev_sub(
+        ev_mul(ev_mul(s, s_minus_p_sq), s_minus_p_sq),
+        ev_scale(8.0, ev_mul(q_sq, cubic)),
+    );
+    let rootless = ev_positive(delta) && (ev_positive(p) || ev_positive(s_minus_p_sq));
+    return !rootless;
+}
+
+// The cull `code` (GpuCull::ALL's order) on the scaled line: true keeps it.
+fn cull_keeps(code: u32, q: vec3<f32>, dh: vec3<f32>) -> bool {
+    let b = bounds();
+    switch code {
+        case 1u: {
+            return sphere_keeps(b, q);
+        }
+        case 2u: {
+            return aabb_keeps(b, q, dh);
+        }
+        case 3u: {
+            return sphere_slab(b, q, dh).keep;
+        }
+        case 4u: {
+            return thick_cylinder_keeps(b, q, dh);
+        }
+        case 5u: {
+            return skala_keeps(b, q, dh);
+        }
+        case 6u: {
+            return ellipsoid_slab(b, q, dh).keep;
+        }
+        case 7u: {
+            return quadric_keeps(b, q, dh);
+        }
+        case 8u: {
+            return discriminant_keeps(b, q, dh);
+        }
+        default: {
+            return true;
+        }
+    }
+}
+
 struct Verdict {
     hit: vec4<f32>,
     code: f32,
@@ -415,7 +830,7 @@ struct Verdict {
 fn escalate(why: u32) -> Verdict {
     var v: Verdict;
     v.hit = vec4<f32>(0.0);
-    v.code = CODE_ESCALATE;
+    v.code = code_escalate();
     v.why = f32(why);
     return v;
 }
@@ -423,7 +838,16 @@ fn escalate(why: u32) -> Verdict {
 fn miss() -> Verdict {
     var v: Verdict;
     v.hit = vec4<f32>(0.0);
-    v.code = CODE_MISS;
+    v.code = code_miss();
+    v.why = 0.0;
+    return v;
+}
+
+// The cull-only mode's answer.
+fn kept(keep: bool) -> Verdict {
+    var v: Verdict;
+    v.hit = vec4<f32>(0.0);
+    v.code = select(code_miss(), code_kept(), keep);
     v.why = 0.0;
     return v;
 }
@@ -465,8 +889,8 @@ fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice. (A foot
     // point the host formed in f64 is within 10⁻⁹·R of the line before its rounding to
     // f32, which the constant 32U ≈ 1.9·10⁻⁶ covers.)
-    let line_abs = 32.0 * U * v_rel + 32.0 * U;
-    let line_rel = 48.0 * U;
+    let line_abs = LINE_ABS_DIST * v_rel + LINE_ABS;
+    let line_rel = LINE_REL;
 
     let q_len_sq = dot(q, q);
     let q_len = sqrt(q_len_sq);
@@ -490,21 +914,19 @@ fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let all_finite = finite(v_rel) && finite(q_len_sq) && finite(lo_raw) && finite(hi_raw)
         && finite(s) && len > 0.0 && finite(len);
     if (!all_finite) {
+        if (params.config.z == 1u) {
+            return kept(true);
+        }
         return escalate(1u);
     }
 
-    // The cull, on the scaled line with its error folded into the margin.
-    if (params.config.y == 1u) {
-        // cychosz: bounding sphere R + r plus slab |y| ≤ r (src/cull/cychosz.rs).
-        let eta = SAFETY_REL * (1.0 + rr) + line_rel * (q_len + 2.0) + line_abs;
-        let outer = 1.0 + rr + eta;
-        let half_chord_sq = outer * outer - q_len_sq;
-        let unit_y_sq = dh.y * dh.y;
-        let above = abs(q.y) - (rr + eta);
-        let beyond_slab = above > 0.0 && above * above > unit_y_sq * half_chord_sq;
-        if (half_chord_sq < 0.0 || beyond_slab) {
-            return miss();
-        }
+    // The cull, on the scaled line: the bounds' margin covers the line's error.
+    let keep = cull_keeps(params.config.y, q, dh);
+    if (params.config.z == 1u) {
+        return kept(keep);
+    }
+    if (!keep) {
+        return miss();
     }
 
     // The quartic (forms that do not cancel, as in src/intersect.rs's reduce).
@@ -566,7 +988,7 @@ fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let along = u_star * major - s;
     let t = ldexp(along / len, -ex);
     let t_extra = s_err * major + 48.0 * U * (abs(along) + abs(u_star * major) + abs(s));
-    let bracket = min(1.9e-4, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * U));
+    let bracket = min(BRACKET, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * U));
     if (!(bracket > 1e-6) || !finite(t)) {
         return escalate(7u);
     }
@@ -592,7 +1014,7 @@ fn trace(v: vec3<f32>, t_min: f32, dir: vec3<f32>, t_max: f32) -> Verdict {
     let n_len = length(n_world);
     var out: Verdict;
     out.hit = vec4<f32>(t, n_world / select(1.0, n_len, n_len > 0.0));
-    out.code = CODE_HIT;
+    out.code = code_hit();
     out.why = 0.0;
     return out;
 }

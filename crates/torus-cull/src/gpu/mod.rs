@@ -30,6 +30,21 @@
 //! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
 //! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
 //!
+//! **The culls.** Every cull with a batch form runs in the kernel ([`GpuCull`], the
+//! CPU's math on the kernel's line, a foot point and a unit direction in units of R),
+//! against the CPU's [`crate::CullBounds`] at R = 1 with the tube padded by the GPU's
+//! margin: the CPU's η = [`crate::cull::SAFETY_REL`]·(R + r) plus the kernel's line error on
+//! any line that meets the torus (at most 2.1·10⁻⁵·R more; `bounds.rs`). `quadric`,
+//! `thick_cylinder`'s hole test and `discriminant` reject only what a running error bound
+//! proves (docs/math.md, "The GPU's culls"). [`GpuIntersector::cull_keeps`] runs a cull
+//! alone.
+//!
+//! **One source for the constants.** The kernel's text is `kernel.wgsl` behind a header
+//! generated from the Rust constants the CPU uses ([`kernel_source`], [`KernelConstants`]):
+//! the cube-root seed, the trisection fit, the solver's thresholds, the bracket,
+//! [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's constants, as exact
+//! hexadecimal floats.
+//!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
 //!
@@ -48,8 +63,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod bounds;
+mod source;
+
+pub use source::{KernelConstants, kernel_source};
+
 use crate::certified::{F32Hit, F32Verdict};
-use crate::{Ray, Torus};
+use crate::cull::BatchCull;
+use crate::{CullKind, Named, Ray, Torus};
 use glam::Vec3;
 use std::fmt;
 use std::sync::{Mutex, mpsc};
@@ -57,40 +78,115 @@ use std::sync::{Mutex, mpsc};
 mod timing;
 pub use timing::{KernelTime, ResidentRays};
 
-/// The kernel's source (WGSL).
-pub const KERNEL_WGSL: &str = include_str!("kernel.wgsl");
-
 /// The Debian package that gives a machine without a GPU a software Vulkan adapter.
 pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
 
-/// The cull the kernel runs before the intersection (a rejected ray is a miss).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// The cull the kernel runs before the intersection (a rejected ray is a miss): every
+/// cull with a batch form ([`BatchCull`]), the CPU's math on the torus padded by the
+/// GPU's margin (the CPU's η plus the kernel's line error; see the module doc and
+/// docs/math.md, "The GPU's culls").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum GpuCull {
     /// No cull: every ray goes to the certified intersection.
     None,
-    /// Cychosz's bounding sphere R + r plus the slab |y| ≤ r ([`crate::CychoszCull`]),
-    /// with the culls' margin 2⁻¹²·(R + r) plus the kernel's line error.
+    /// The bounding sphere R + r ([`crate::SphereCull`]).
+    Sphere,
+    /// The torus's box ([`crate::AabbCull`]).
+    Aabb,
+    /// Cychosz's bounding sphere R + r plus the slab |y| ≤ r ([`crate::CychoszCull`]).
     Cychosz,
+    /// The shell R − r ≤ ρ ≤ R + r, |y| ≤ r ([`crate::ThickCylinderCull`]).
+    ThickCylinder,
+    /// Skala's circle-based test ([`crate::SkalaCull`]).
+    Skala,
+    /// The outer ellipsoid and the slab ([`crate::EllipsoidCull`]).
+    Ellipsoid,
+    /// The outer ellipsoid, the slab and the inner hyperboloid ([`crate::QuadricCull`]),
+    /// with the hyperboloid's test widened by its evaluation error.
+    Quadric,
+    /// The quartic's real-root classification ([`crate::DiscriminantCull`]), rejecting
+    /// only where a running error bound proves the classification.
+    Discriminant,
 }
 
 impl GpuCull {
-    /// Both, in a fixed order.
-    pub const ALL: [GpuCull; 2] = [GpuCull::None, GpuCull::Cychosz];
+    /// Every cull, in [`CullKind::TIMED`] order (the kernel's codes 0 to 8).
+    pub const ALL: [GpuCull; 9] = [
+        GpuCull::None,
+        GpuCull::Sphere,
+        GpuCull::Aabb,
+        GpuCull::Cychosz,
+        GpuCull::ThickCylinder,
+        GpuCull::Skala,
+        GpuCull::Ellipsoid,
+        GpuCull::Quadric,
+        GpuCull::Discriminant,
+    ];
 
-    /// The stable name (as [`crate::CullKind`]'s).
-    pub fn name(self) -> &'static str {
+    /// The same cull in the registry of every cull.
+    pub const fn kind(self) -> CullKind {
+        self.batched().kind()
+    }
+
+    /// The same cull's batch form on the CPU.
+    pub const fn batched(self) -> BatchCull {
         match self {
-            GpuCull::None => "none",
-            GpuCull::Cychosz => "cychosz",
+            GpuCull::None => BatchCull::NoCull,
+            GpuCull::Sphere => BatchCull::Sphere,
+            GpuCull::Aabb => BatchCull::Aabb,
+            GpuCull::Cychosz => BatchCull::Cychosz,
+            GpuCull::ThickCylinder => BatchCull::ThickCylinder,
+            GpuCull::Skala => BatchCull::Skala,
+            GpuCull::Ellipsoid => BatchCull::Ellipsoid,
+            GpuCull::Quadric => BatchCull::Quadric,
+            GpuCull::Discriminant => BatchCull::Discriminant,
         }
     }
 
-    fn code(self) -> u32 {
-        match self {
-            GpuCull::None => 0,
-            GpuCull::Cychosz => 1,
+    /// The stable name (as [`crate::CullKind`]'s).
+    pub fn name(self) -> &'static str {
+        Named::name(self.kind())
+    }
+
+    /// The kernel's code for the cull (`Params.config.y`).
+    pub(crate) fn code(self) -> u32 {
+        GpuCull::ALL
+            .iter()
+            .position(|&c| c == self)
+            .expect("every cull is in ALL") as u32
+    }
+}
+
+/// Every batch cull runs on the GPU.
+impl From<BatchCull> for GpuCull {
+    fn from(cull: BatchCull) -> GpuCull {
+        match cull {
+            BatchCull::NoCull => GpuCull::None,
+            BatchCull::Sphere => GpuCull::Sphere,
+            BatchCull::Aabb => GpuCull::Aabb,
+            BatchCull::Cychosz => GpuCull::Cychosz,
+            BatchCull::ThickCylinder => GpuCull::ThickCylinder,
+            BatchCull::Skala => GpuCull::Skala,
+            BatchCull::Ellipsoid => GpuCull::Ellipsoid,
+            BatchCull::Quadric => GpuCull::Quadric,
+            BatchCull::Discriminant => GpuCull::Discriminant,
         }
+    }
+}
+
+impl From<GpuCull> for CullKind {
+    fn from(cull: GpuCull) -> CullKind {
+        cull.kind()
+    }
+}
+
+/// A [`CullKind`] on the GPU: every one but `discriminant_f64` (no batch form).
+impl TryFrom<CullKind> for GpuCull {
+    type Error = CullKind;
+
+    fn try_from(kind: CullKind) -> Result<GpuCull, CullKind> {
+        kind.batched().map(GpuCull::from).ok_or(kind)
     }
 }
 
@@ -133,16 +229,16 @@ impl std::error::Error for GpuError {}
 
 /// Rays per dispatch: 32 bytes in and 32 out each, 32 MiB per buffer (within WebGPU's
 /// downlevel limit of 128 MiB per storage binding and 65 535 workgroups of 64).
-const CHUNK: usize = 1 << 20;
+pub(crate) const CHUNK: usize = 1 << 20;
 
 /// Threads per workgroup (`@workgroup_size` in the kernel).
-const WORKGROUP: usize = 64;
+pub(crate) const WORKGROUP: usize = 64;
 
 /// Bytes per ray, in and out: two `vec4<f32>` each.
-const RAY_BYTES: u64 = 32;
+pub(crate) const RAY_BYTES: u64 = 32;
 
-/// Size of the uniform block (`Params` in the kernel): five 16-byte rows.
-const PARAMS_BYTES: u64 = 80;
+/// Size of the uniform block (`Params` in the kernel): eight 16-byte rows.
+pub(crate) const PARAMS_BYTES: u64 = 128;
 
 /// Origins farther than this many R from the centre (2²⁰) escalate without the kernel:
 /// beyond, the f64 foot point's own error (about 10⁻¹⁵ of the distance) is no longer
@@ -155,25 +251,25 @@ const REBASE_REL: f64 = 2.0;
 
 /// A wgpu device with the kernel compiled, ready for batches of rays.
 pub struct GpuIntersector {
-    device: wgpu::Device,
-    queue: wgpu::Queue,
-    pipeline: wgpu::ComputePipeline,
-    layout: wgpu::BindGroupLayout,
-    info: wgpu::AdapterInfo,
+    pub(crate) device: wgpu::Device,
+    pub(crate) queue: wgpu::Queue,
+    pub(crate) pipeline: wgpu::ComputePipeline,
+    pub(crate) layout: wgpu::BindGroupLayout,
+    pub(crate) info: wgpu::AdapterInfo,
     /// The buffers of the last batch, kept for the next one (creating them per call would
     /// be four buffer allocations and a bind group per batch); one batch runs at a time.
-    buffers: Mutex<Option<Buffers>>,
+    pub(crate) buffers: Mutex<Option<Buffers>>,
 }
 
 /// The uniform block, the rays, the results and their staging copy, for up to `rays`
 /// rays a dispatch.
-struct Buffers {
-    rays: usize,
-    params: wgpu::Buffer,
-    input: wgpu::Buffer,
-    output: wgpu::Buffer,
-    staging: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+pub(crate) struct Buffers {
+    pub(crate) rays: usize,
+    pub(crate) params: wgpu::Buffer,
+    pub(crate) input: wgpu::Buffer,
+    pub(crate) output: wgpu::Buffer,
+    pub(crate) staging: wgpu::Buffer,
+    pub(crate) bind_group: wgpu::BindGroup,
 }
 
 impl fmt::Debug for GpuIntersector {
@@ -220,7 +316,7 @@ impl GpuIntersector {
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("torus-cull kernel"),
-            source: wgpu::ShaderSource::Wgsl(KERNEL_WGSL.into()),
+            source: wgpu::ShaderSource::Wgsl(kernel_source().into()),
         });
         let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
             binding,
@@ -267,7 +363,7 @@ impl GpuIntersector {
     }
 
     /// Buffers for `rays` rays a dispatch.
-    fn buffers(&self, rays: usize) -> Buffers {
+    pub(crate) fn buffers(&self, rays: usize) -> Buffers {
         let size = rays as u64 * RAY_BYTES;
         let buffer = |label, size, usage| {
             self.device.create_buffer(&wgpu::BufferDescriptor {
@@ -363,8 +459,56 @@ impl GpuIntersector {
         rays: &[Ray],
     ) -> Result<Vec<(F32Verdict, Option<Escalation>)>, GpuError> {
         let mut out = Vec::with_capacity(rays.len());
+        self.run(
+            torus,
+            cull,
+            Mode::Intersect,
+            rays,
+            |batch, packed, records| {
+                for ((ray, p), &w) in batch.iter().zip(packed).zip(records) {
+                    out.push(if !p.sendable {
+                        (F32Verdict::Escalate, Some(Escalation::FarOrigin))
+                    } else if let Some(answer) = host_answer(torus, ray) {
+                        answer
+                    } else {
+                        shifted(verdict(w), p.t0)
+                    });
+                }
+            },
+        )?;
+        Ok(out)
+    }
+
+    /// The cull's verdict alone, per ray's line: `true` keeps it (the intersection would
+    /// run), `false` is a proved miss of the line. The kernel stops after its cull. A ray
+    /// the kernel is not sent (an origin beyond 2²⁰·R) is kept.
+    pub fn cull_keeps(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<bool>, GpuError> {
+        let mut out = Vec::with_capacity(rays.len());
+        self.run(torus, cull, Mode::CullOnly, rays, |_, packed, records| {
+            for (p, w) in packed.iter().zip(records) {
+                out.push(!p.sendable || w[4] != 0.0);
+            }
+        })?;
+        Ok(out)
+    }
+
+    /// Runs the kernel in `mode` over `rays`, in dispatches of up to [`CHUNK`] rays, and
+    /// hands each dispatch's rays, their packing and their result records to `each`.
+    pub(crate) fn run(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        mode: Mode,
+        rays: &[Ray],
+        mut each: impl FnMut(&[Ray], &[Packed], &[[f32; 8]]),
+    ) -> Result<(), GpuError> {
         if rays.is_empty() {
-            return Ok(out);
+            return Ok(());
         }
         let chunk = rays.len().min(CHUNK);
         let mut cache = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
@@ -374,51 +518,47 @@ impl GpuIntersector {
         let buffers = cache.as_ref().expect("just made");
         let frame = Frame::of(torus);
         for batch in rays.chunks(CHUNK) {
-            if let Err(e) = self.dispatch(buffers, &frame, cull, batch, &mut out) {
-                // The staging buffer may be left mapped: the next call makes new ones.
-                *cache = None;
-                return Err(e);
+            // A ray from a surface point goes as its literal ray past the origin's root.
+            let packed: Vec<Packed> = batch
+                .iter()
+                .map(|ray| frame.pack(&frame.kernel_ray(ray).0))
+                .collect();
+            match self.dispatch(
+                buffers,
+                &frame.params(batch.len() as u32, cull, mode),
+                &packed,
+            ) {
+                Ok(records) => each(batch, &packed, &records),
+                Err(e) => {
+                    // The staging buffer may be left mapped: the next call makes new ones.
+                    *cache = None;
+                    return Err(e);
+                }
             }
         }
-        Ok(out)
+        Ok(())
     }
 
-    /// One dispatch of up to [`CHUNK`] rays: pack, upload, run, read back, append to
-    /// `out`.
-    fn dispatch(
+    /// One dispatch of up to [`CHUNK`] packed rays with the uniform block `params`:
+    /// upload, run, read back; one record `(t, n.xyz, code, why, 0, 0)` per ray.
+    pub(crate) fn dispatch(
         &self,
         buffers: &Buffers,
-        frame: &Frame,
-        cull: GpuCull,
-        batch: &[Ray],
-        out: &mut Vec<(F32Verdict, Option<Escalation>)>,
-    ) -> Result<(), GpuError> {
+        params: &[u8],
+        packed: &[Packed],
+    ) -> Result<Vec<[f32; 8]>, GpuError> {
         let Buffers {
-            params,
+            params: params_buffer,
             input,
             output,
             staging,
             bind_group,
             ..
         } = buffers;
-        let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
-        let mut shifts: Vec<f64> = Vec::with_capacity(batch.len());
-        let mut host = Vec::new();
-        for (i, ray) in batch.iter().enumerate() {
-            let (ray, answer) = frame.kernel_ray(ray);
-            let packed_ray = frame.pack(&ray);
-            packed.extend_from_slice(&packed_ray.words);
-            shifts.push(packed_ray.t0);
-            if !packed_ray.sendable {
-                host.push((i, (F32Verdict::Escalate, Some(Escalation::FarOrigin))));
-            } else if let Some(answer) = answer {
-                host.push((i, answer));
-            }
-        }
-        self.queue
-            .write_buffer(params, 0, &frame.params(batch.len() as u32, cull));
-        self.queue.write_buffer(input, 0, &as_bytes(&packed));
-        let bytes = batch.len() as u64 * RAY_BYTES;
+        let words: Vec<f32> = packed.iter().flat_map(|p| p.words).collect();
+        self.queue.write_buffer(params_buffer, 0, params);
+        self.queue.write_buffer(input, 0, &as_bytes(&words));
+        let bytes = packed.len() as u64 * RAY_BYTES;
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -431,7 +571,7 @@ impl GpuIntersector {
             });
             pass.set_pipeline(&self.pipeline);
             pass.set_bind_group(0, bind_group, &[]);
-            pass.dispatch_workgroups(batch.len().div_ceil(WORKGROUP) as u32, 1, 1);
+            pass.dispatch_workgroups(packed.len().div_ceil(WORKGROUP) as u32, 1, 1);
         }
         encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
         self.queue.submit([encoder.finish()]);
@@ -446,23 +586,20 @@ impl GpuIntersector {
         rx.recv()
             .map_err(|e| GpuError::Readback(e.to_string()))?
             .map_err(|e| GpuError::Readback(e.to_string()))?;
-        {
+        let records = {
             let view = slice
                 .get_mapped_range()
                 .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-            let start = out.len();
-            for (record, &t0) in view.chunks_exact(RAY_BYTES as usize).zip(&shifts) {
-                let w: [f32; 8] = std::array::from_fn(|k| {
-                    f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
-                });
-                out.push(shifted(verdict(w), t0));
-            }
-            for (i, answer) in host {
-                out[start + i] = answer;
-            }
-        }
+            view.chunks_exact(RAY_BYTES as usize)
+                .map(|record| {
+                    std::array::from_fn(|k| {
+                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+                    })
+                })
+                .collect()
+        };
         staging.unmap();
-        Ok(())
+        Ok(records)
     }
 
     /// [`GpuIntersector::intersect`], finished on the host: every escalated ray is
@@ -483,9 +620,38 @@ impl GpuIntersector {
     }
 }
 
+/// What the kernel does per ray (`Params.config.z`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Mode {
+    /// The cull, then the certified intersection.
+    Intersect = 0,
+    /// The cull alone: code 0 rejected, 3 kept.
+    CullOnly = 1,
+}
+
+/// The host's own answer for a ray from a surface point that is not sent as a literal ray
+/// ([`Frame::kernel_ray`]): a proved miss, or escalated.
+fn host_answer(torus: &Torus, ray: &Ray) -> Option<(F32Verdict, Option<Escalation>)> {
+    ray.starts_on_surface()
+        .then(|| on_surface_answer(crate::certified::on_surface::start(torus, ray)))
+        .flatten()
+}
+
+/// [`Frame::kernel_ray`]'s host answer for a start.
+fn on_surface_answer(
+    start: crate::certified::on_surface::Start,
+) -> Option<(F32Verdict, Option<Escalation>)> {
+    use crate::certified::on_surface::Start;
+    match start {
+        Start::Literal(_) => None,
+        Start::Miss => Some((F32Verdict::Miss, None)),
+        Start::Escalate => Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
+    }
+}
+
 /// A result record `(t, n.xyz, code, why, 0, 0)` as a verdict and, for an escalated ray,
 /// why; an unknown code escalates.
-fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
+pub(crate) fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
     let normal = Vec3::new(w[1], w[2], w[3]);
     if w[4] == 0.0 {
         (F32Verdict::Miss, None)
@@ -507,7 +673,7 @@ fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
 }
 
 /// A verdict for a ray whose origin the host moved `t0` along it: the ray's own t.
-fn shifted(
+pub(crate) fn shifted(
     (verdict, why): (F32Verdict, Option<Escalation>),
     t0: f64,
 ) -> (F32Verdict, Option<Escalation>) {
@@ -575,9 +741,11 @@ impl Escalation {
 }
 
 /// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
-struct Frame {
+pub(crate) struct Frame {
     torus: Torus,
     rows: [Vec3; 3],
+    /// The culls' bounds at R = 1 with the GPU's margin ([`bounds::kernel_bounds`]).
+    bounds: [[f32; 4]; 3],
     major: f32,
     minor: f32,
     center: glam::DVec3,
@@ -586,22 +754,24 @@ struct Frame {
 }
 
 /// A ray as the kernel reads it, and what the host adds back.
-struct Packed {
+pub(crate) struct Packed {
     /// `(o − c, t_min − t0, d, t_max − t0)`, the range clipped (see [`Frame::pack`]).
-    words: [f32; 8],
+    pub(crate) words: [f32; 8],
     /// How far along the ray the uploaded origin is: the kernel's t plus this is the ray's.
-    t0: f64,
+    pub(crate) t0: f64,
     /// Within [`FAR_REL`]·R of the centre: the kernel may answer.
-    sendable: bool,
+    pub(crate) sendable: bool,
 }
 
 impl Frame {
-    fn of(torus: &Torus) -> Frame {
+    pub(crate) fn of(torus: &Torus) -> Frame {
         let m = torus.to_local_rotation().transpose(); // columns of Mᵀ = rows of M
         let major_f64 = torus.major_radius_f64();
+        let rr = (torus.minor_radius_f64() / major_f64) as f32;
         Frame {
             torus: *torus,
             rows: [m.x_axis, m.y_axis, m.z_axis],
+            bounds: bounds::bounds_rows(&bounds::kernel_bounds(rr)),
             major: torus.major_radius(),
             minor: torus.minor_radius(),
             center: torus.center_f64(),
@@ -614,23 +784,20 @@ impl Frame {
     /// A ray from a surface point goes as the literal ray past its origin's own root
     /// ([`crate::certified::on_surface`]), or is answered here when it has no such start:
     /// a proved miss (its range ends first), or escalated (it goes into the tube).
-    fn kernel_ray(&self, ray: &Ray) -> (Ray, Option<(F32Verdict, Option<Escalation>)>) {
+    pub(crate) fn kernel_ray(&self, ray: &Ray) -> (Ray, Option<(F32Verdict, Option<Escalation>)>) {
         use crate::certified::on_surface::{Start, start};
         if !ray.starts_on_surface() {
             return (*ray, None);
         }
         match start(&self.torus, ray) {
             Start::Literal(literal) => (literal, None),
-            Start::Miss => (*ray, Some((F32Verdict::Miss, None))),
-            Start::Escalate => (
-                *ray,
-                Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
-            ),
+            other => (*ray, on_surface_answer(other)),
         }
     }
 
-    /// The uniform block: rows of M with R, r, r/R; 1/R; the count and the cull.
-    fn params(&self, count: u32, cull: GpuCull) -> Vec<u8> {
+    /// The uniform block: rows of M with R, r, r/R; 1/R; the culls' bounds (three rows);
+    /// the count, the cull and the mode.
+    pub(crate) fn params(&self, count: u32, cull: GpuCull, mode: Mode) -> Vec<u8> {
         let rr = (f64::from(self.minor) / self.major_f64) as f32;
         let inv_major = (1.0 / self.major_f64) as f32;
         let floats: [f32; 16] = [
@@ -652,10 +819,10 @@ impl Frame {
             0.0,
         ];
         let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
-        for f in floats {
+        for f in floats.into_iter().chain(self.bounds.into_iter().flatten()) {
             bytes.extend_from_slice(&f.to_le_bytes());
         }
-        for u in [count, cull.code(), 0, 0] {
+        for u in [count, cull.code(), mode as u32, 0] {
             bytes.extend_from_slice(&u.to_le_bytes());
         }
         bytes
@@ -671,7 +838,7 @@ impl Frame {
     /// The range becomes `[t_min − t0, t_max − t0]`, clipped to `|t| ≤ T`, T = (|foot| +
     /// 4(R + r))/|d| rounded up: no point beyond is within the bounding sphere, so no
     /// root is lost, and the kernel's sums stay finite.
-    fn pack(&self, ray: &Ray) -> Packed {
+    pub(crate) fn pack(&self, ray: &Ray) -> Packed {
         let d = ray.dir().as_dvec3();
         let rel = ray.origin().as_dvec3() - self.center;
         let sendable = rel.length() <= FAR_REL * self.major_f64;
@@ -697,4 +864,39 @@ impl Frame {
 
 fn as_bytes(words: &[f32]) -> Vec<u8> {
     words.iter().flat_map(|w| w.to_le_bytes()).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cull::BATCHED;
+
+    #[test]
+    fn every_batch_cull_is_a_gpu_cull_by_the_same_name() {
+        assert_eq!(GpuCull::ALL.len(), BATCHED.len());
+        for (i, (&gpu, &batch)) in GpuCull::ALL.iter().zip(&BATCHED).enumerate() {
+            assert_eq!(GpuCull::from(batch), gpu);
+            assert_eq!(gpu.batched(), batch);
+            assert_eq!(gpu.kind(), batch.kind());
+            assert_eq!(gpu.name(), Named::name(batch.kind()));
+            assert_eq!(GpuCull::try_from(batch.kind()), Ok(gpu));
+            // The kernel's switch reads the code in this order.
+            assert_eq!(gpu.code(), i as u32);
+        }
+        assert_eq!(
+            GpuCull::try_from(CullKind::DiscriminantF64),
+            Err(CullKind::DiscriminantF64)
+        );
+    }
+
+    #[test]
+    fn the_uniform_block_has_its_size() {
+        let torus = Torus::canonical(4.0, 1.0).unwrap();
+        let frame = Frame::of(&torus);
+        let bytes = frame.params(7, GpuCull::Skala, Mode::CullOnly);
+        assert_eq!(bytes.len() as u64, PARAMS_BYTES);
+        let word = |k: usize| u32::from_le_bytes(bytes[4 * k..4 * k + 4].try_into().unwrap());
+        // config = (count, cull, mode, 0), the last row.
+        assert_eq!([word(28), word(29), word(30), word(31)], [7, 5, 1, 0]);
+    }
 }

@@ -11,7 +11,7 @@
 //! apart).
 
 use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
-use super::{WORKGROUP, as_bytes, shifted, verdict};
+use super::{Mode, WORKGROUP, as_bytes, shifted, verdict};
 use crate::Ray;
 use crate::Torus;
 use crate::certified::F32Verdict;
@@ -173,9 +173,11 @@ impl ResidentRays<'_> {
     /// once), in one submission, and waits for it.
     pub fn run(&self, cull: GpuCull, repeats: usize) -> Result<KernelTime, GpuError> {
         for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
-            self.gpu
-                .queue
-                .write_buffer(&buffers.params, 0, &self.frame.params(count as u32, cull));
+            self.gpu.queue.write_buffer(
+                &buffers.params,
+                0,
+                &self.frame.params(count as u32, cull, Mode::Intersect),
+            );
         }
         self.dispatch(&self.gpu.pipeline, repeats)
     }

@@ -54,7 +54,7 @@ impl<S: Simd> Cbrt for F32s<S> {
         // ⌊w/3⌋ = ⌊w·⌈2³³/3⌉ / 2³³⌋ for every 32-bit w.
         let (_, high) = s.widening_mul_u32s(words, s.splat_u32s(0xAAAA_AAAB));
         let third = s.wrapping_dyn_shr_u32s(high, s.splat_u32s(1));
-        let seed = s.add_u32s(third, s.splat_u32s(709_958_130));
+        let seed = s.add_u32s(third, s.splat_u32s(CBRT_F32_SEED));
         let mut t = F32s {
             s,
             v: pulp::bytemuck::cast(seed),
@@ -65,6 +65,10 @@ impl<S: Simd> Cbrt for F32s<S> {
         t
     }
 }
+
+/// Kahan's seed for the f32 cube root: ∛y ≈ the float whose word is ⌊w/3⌋ + this, w the
+/// word of y (fdlibm's `cbrtf`; within about 6 %). The GPU kernel's seed too.
+pub(crate) const CBRT_F32_SEED: u32 = 709_958_130;
 
 /// One Halley step for `t ≈ ∛y`: `t·(t³ + 2y)/(2t³ + y)`, which cubes the relative error.
 /// `two` is 2 in `t`'s type (one float or a register of lanes).

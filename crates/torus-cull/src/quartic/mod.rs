@@ -53,7 +53,7 @@ pub(crate) use nearest::nearest_root_in_range;
 
 pub use roots::RealRoots;
 
-const EPS: f64 = f64::EPSILON;
+pub(crate) const EPS: f64 = f64::EPSILON;
 
 /// For `x⁴ + p x² + q x + r` with a coefficient beyond 2^±100 in magnitude (where the
 /// resolvent's squares and cubes would overflow or underflow), the power of two s such

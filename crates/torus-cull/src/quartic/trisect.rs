@@ -7,6 +7,20 @@
 
 use crate::num::{Real, poly5};
 
+/// g(1/√3 + d) on [−1/√3, 1/√3]: the degree-5 fit of [`trisect_u`] (also the GPU
+/// kernel's, generated from here: `crate::gpu`'s kernel source).
+pub(crate) const FIT: [f64; 6] = [
+    -0.0023725581002014035,
+    0.005384607441641353,
+    -0.011844823329350508,
+    0.03242038506892554,
+    -0.11181286004396555,
+    0.9216062482255146,
+];
+
+/// The fit's centre, 1/√3.
+pub(crate) const HALF_RANGE: f64 = 0.5773502691896257;
+
 /// `u = 2 cos(arccos(x)/3) − 1` for x ∈ [−1, 1]: with `t = cos(arccos(x)/3)` the largest
 /// root of `4t³ − 3t = x`, `u ∈ [0, 1]` is the root of `u²(3 + u) = 2(1 + x)`.
 ///
@@ -15,16 +29,6 @@ use crate::num::{Real, poly5};
 /// relative error even next to the double root `u = 0` at `x = −1`.
 #[inline(always)]
 pub(crate) fn trisect_u<R: Real>(x: R) -> R {
-    /// g(1/√3 + d) on [−1/√3, 1/√3].
-    const FIT: [f64; 6] = [
-        -0.0023725581002014035,
-        0.005384607441641353,
-        -0.011844823329350508,
-        0.03242038506892554,
-        -0.11181286004396555,
-        0.9216062482255146,
-    ];
-    const HALF_RANGE: f64 = 0.5773502691896257;
     macro_rules! k {
         ($c:expr) => {
             x.splat($c)

@@ -1,0 +1,76 @@
+//! The culls' per-torus constants as the kernel uses them: the CPU's [`CullBounds`] at
+//! R = 1 (the kernel's line is scaled by 1/R), with the tube padded by the GPU's margin
+//! [`gpu_margin`] instead of the CPU's η = [`crate::cull::SAFETY_REL`]·(R + r).
+
+use super::source::{LINE_ABS, LINE_ABS_DIST, LINE_REL};
+use crate::certified::certificate::U32;
+use crate::cull::{CullBounds, SAFETY_REL};
+
+/// The GPU's margin for the culls at R = 1 and tube radius `rr` = r/R (as the kernel
+/// gets it, rounded to f32), rounded up:
+///
+/// η_gpu = SAFETY_REL·(1 + rr) + E + 4u·rr, with E the kernel's line error on any line
+/// that meets the torus: every point of such a line that lies in the torus has |u| ≤ 1 +
+/// rr from the foot point and |q| ≤ 1 + rr + E, so |q| + |u| ≤ 2(1 + rr) + 1/64; its
+/// origin is within 2(1 + rr)·(1 + 2⁻²⁰) of the centre (farther ones were moved to the
+/// foot point by the host, which is then within 1 + rr). Hence
+/// E = LINE_REL·(2(1 + rr) + 1/64) + LINE_ABS_DIST·2(1 + rr)(1 + 2⁻²⁰) + LINE_ABS, and
+/// the kernel's computed line passes within E of every point where the true line is in
+/// the torus: it meets the torus padded by E. The term 4u·rr covers rr's own rounding.
+/// What is left, SAFETY_REL·(1 + rr), absorbs the culls' evaluation in f32 as on the CPU
+/// (docs/math.md, "The GPU's culls").
+pub(crate) fn gpu_margin(rr: f32) -> f32 {
+    let rr = f64::from(rr);
+    let outer = 1.0 + rr;
+    let reach = 2.0 * outer + 1.0 / 64.0;
+    let distance = 2.0 * outer * (1.0 + 1.0 / 1_048_576.0);
+    let line =
+        f64::from(LINE_REL) * reach + f64::from(LINE_ABS_DIST) * distance + f64::from(LINE_ABS);
+    let eta = f64::from(SAFETY_REL) * outer + line + 4.0 * U32 * rr;
+    // Up, past any rounding of the sum.
+    let rounded = (eta * (1.0 + 1.0 / 1_048_576.0)) as f32;
+    f32::from_bits(rounded.to_bits() + 1)
+}
+
+/// The culls' bounds for the kernel: R = 1, tube `rr`, margin [`gpu_margin`].
+pub(crate) fn kernel_bounds(rr: f32) -> CullBounds {
+    CullBounds::with_margin(1.0, rr, gpu_margin(rr))
+}
+
+/// The bounds as three rows of the kernel's uniform block (`Params.bounds_*`).
+pub(crate) fn bounds_rows(b: &CullBounds) -> [[f32; 4]; 3] {
+    [
+        [b.outer_safe, b.outer_safe_sq, b.minor_safe, b.minor_safe_sq],
+        [
+            b.inner_safe_sq,
+            b.ellipsoid_y_scale,
+            b.ellipsoid_slab,
+            b.hyperboloid_y_coef,
+        ],
+        [b.minor_rel_sq, b.inner_safe, gpu_margin_of(b), 0.0],
+    ]
+}
+
+/// The margin the bounds were made with (for the kernel's diagnostics): r_η − r.
+fn gpu_margin_of(b: &CullBounds) -> f32 {
+    b.minor_safe - b.minor_radius
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_margin_is_the_cpus_plus_the_line_error() {
+        for rr in [0.001f32, 0.1, 0.5, 1.0 / 1.01] {
+            let eta = gpu_margin(rr);
+            let cpu = SAFETY_REL * (1.0 + rr);
+            // At most 2·10⁻⁵ more than the CPU's 2.4·10⁻⁴·(1 + rr): the rejection rates
+            // stay the CPU's.
+            assert!(eta > cpu && eta < cpu + 2.5e-5, "rr {rr}: {eta} vs {cpu}");
+            let b = kernel_bounds(rr);
+            assert!(b.minor_safe >= rr + eta * (1.0 - 1e-6));
+            assert_eq!(b.major_radius, 1.0);
+        }
+    }
+}

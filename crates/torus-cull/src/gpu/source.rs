@@ -1,0 +1,307 @@
+//! The kernel's WGSL text: `kernel.wgsl` behind a header of `const` lines generated from
+//! the Rust constants the CPU uses ([`KernelConstants`]), so that the two cannot drift
+//! apart: the cube-root seed and the trisection fit of the f32 solver, the solver's
+//! thresholds, the culls' margin [`crate::cull::SAFETY_REL`] and their thresholds, the
+//! certificate's bracket, and the GPU's own error constants, which the host also uses
+//! for the culls' margin ([`super::bounds`]).
+//!
+//! Every f32 is written as a WGSL hexadecimal float literal (`0x1.8p-3f`), which is
+//! exact, so the kernel's value is the Rust value to the bit; the decimal follows in a
+//! comment.
+
+use crate::certified::certificate::{BRACKET, U32};
+use crate::cull::{AXIS_PARALLEL_H2, HORIZONTAL_DY, SAFETY_REL};
+use crate::num::cube_root::CBRT_F32_SEED;
+use crate::quartic::factor::NEAR_DOUBLE;
+use crate::quartic::resolvent::{DISC_NEAR, SMALL_ROOT};
+use crate::quartic::{EPS, trisect};
+use std::fmt::Write;
+
+/// The kernel's body: every shared number comes from the generated header.
+const KERNEL_BODY: &str = include_str!("kernel.wgsl");
+
+/// The GPU's factor on every rounding term in u = 2⁻²⁴: WGSL may or may not contract
+/// `a·b + c` into an fma, division is good to 2.5 ulp, `sqrt` is not correctly rounded on
+/// every device, and subnormals may flush.
+pub(crate) const GPU_ROUNDING_FACTOR: f32 = 4.0;
+
+/// The kernel's line error, relative part: the computed point q + u·d̂ stands within
+/// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
+/// at u (units of R; derived in `kernel.wgsl`, about twice the first-order bound).
+pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
+
+/// The kernel's line error, per unit of the origin's distance |o − c|/R.
+pub(crate) const LINE_ABS_DIST: f32 = (32.0 * U32) as f32;
+
+/// The kernel's line error, constant part (it covers the host's f64 foot point too).
+pub(crate) const LINE_ABS: f32 = (32.0 * U32) as f32;
+
+/// "Finite" below this magnitude in the kernel (WGSL may assume no infinities or NaNs,
+/// so the kernel never makes one on purpose and tests magnitudes instead).
+pub(crate) const BIG: f32 = 1e30;
+
+/// An absolute error the kernel's running error bounds add per operation: a result or an
+/// operand that is subnormal may be flushed to 0 (2⁻¹⁰⁰, far above 2⁻¹²⁶).
+pub(crate) const FLUSH_FLOOR: f32 = f32::from_bits((127 - 100) << 23);
+
+/// A direction component below this (the direction unit) is parallel to its axis in the
+/// kernel's `aabb` and `thick_cylinder`: over the |t| ≤ 4 where the torus can be, the line
+/// moves by less than 4·10⁻²⁰ along the axis (the CPU divides by 0 instead, which WGSL
+/// may not).
+pub(crate) const PARALLEL_COMPONENT: f32 = 1e-20;
+
+/// The range of the argument of the kernel's f32 cube root (Cardano's case); outside it
+/// the solver escalates.
+pub(crate) const CBRT_RANGE_F32: (f32, f32) = (1e-30, 1e30);
+
+/// Every number the kernel takes from Rust, by name. [`KernelConstants::CPU`] holds the
+/// values the CPU uses; a different value (a test's) gives a different kernel text.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KernelConstants {
+    /// u = 2⁻²⁴, the unit roundoff of f32.
+    pub unit_roundoff: f32,
+    /// The GPU's factor on every rounding term.
+    pub rounding_factor: f32,
+    /// The culls' relative margin, [`crate::cull::SAFETY_REL`].
+    pub safety_rel: f32,
+    /// The kernel's "finite" bound.
+    pub big: f32,
+    /// The f64 solver's ε, as its f32 lanes splat it.
+    pub f64_eps: f32,
+    /// The resolvent's near-double threshold on |Δ|/scale.
+    pub disc_near: f32,
+    /// A factor's near-double threshold.
+    pub near_double: f32,
+    /// The resolvent's small-root threshold.
+    pub small_root: f32,
+    /// The certificate's bracket half-width, in units of R.
+    pub bracket: f32,
+    /// Kahan's seed for the f32 cube root (an integer added to the word over 3).
+    pub cbrt_seed: u32,
+    /// The cube root's argument range.
+    pub cbrt_range: (f32, f32),
+    /// The trisection's degree-5 fit, highest power first.
+    pub trisect_fit: [f32; 6],
+    /// The fit's centre, 1/√3.
+    pub trisect_half_range: f32,
+    /// The culls' "parallel to the axis" threshold on h²/|d|².
+    pub axis_parallel_h2: f32,
+    /// `quadric`'s "horizontal" threshold on |d_y|.
+    pub horizontal_dy: f32,
+    /// The kernel's line error: relative, per unit of |o − c|/R, constant.
+    pub line_error: [f32; 3],
+    /// The running error bounds' absolute floor per operation (flushed subnormals).
+    pub flush_floor: f32,
+    /// The kernel's "parallel to an axis" threshold on a unit direction's component.
+    pub parallel_component: f32,
+}
+
+impl KernelConstants {
+    /// The values the CPU uses (and the host's margin for the culls).
+    pub const CPU: KernelConstants = KernelConstants {
+        unit_roundoff: U32 as f32,
+        rounding_factor: GPU_ROUNDING_FACTOR,
+        safety_rel: SAFETY_REL,
+        big: BIG,
+        f64_eps: EPS as f32,
+        disc_near: DISC_NEAR as f32,
+        near_double: NEAR_DOUBLE as f32,
+        small_root: SMALL_ROOT as f32,
+        bracket: BRACKET as f32,
+        cbrt_seed: CBRT_F32_SEED,
+        cbrt_range: CBRT_RANGE_F32,
+        trisect_fit: [
+            trisect::FIT[0] as f32,
+            trisect::FIT[1] as f32,
+            trisect::FIT[2] as f32,
+            trisect::FIT[3] as f32,
+            trisect::FIT[4] as f32,
+            trisect::FIT[5] as f32,
+        ],
+        trisect_half_range: trisect::HALF_RANGE as f32,
+        axis_parallel_h2: AXIS_PARALLEL_H2,
+        horizontal_dy: HORIZONTAL_DY,
+        line_error: [LINE_REL, LINE_ABS_DIST, LINE_ABS],
+        flush_floor: FLUSH_FLOOR,
+        parallel_component: PARALLEL_COMPONENT,
+    };
+
+    /// The WGSL `const` declarations, one a line.
+    pub fn header(&self) -> String {
+        let mut floats: Vec<(String, f32)> = vec![
+            ("U".into(), self.unit_roundoff),
+            ("G".into(), self.rounding_factor),
+            ("SAFETY_REL".into(), self.safety_rel),
+            ("BIG".into(), self.big),
+            ("F64_EPS".into(), self.f64_eps),
+            ("DISC_NEAR".into(), self.disc_near),
+            ("NEAR_DOUBLE".into(), self.near_double),
+            ("SMALL_ROOT".into(), self.small_root),
+            ("BRACKET".into(), self.bracket),
+            ("CBRT_LOW".into(), self.cbrt_range.0),
+            ("CBRT_HIGH".into(), self.cbrt_range.1),
+            ("TRISECT_HALF_RANGE".into(), self.trisect_half_range),
+            ("AXIS_PARALLEL_H2".into(), self.axis_parallel_h2),
+            ("HORIZONTAL_DY".into(), self.horizontal_dy),
+            ("LINE_REL".into(), self.line_error[0]),
+            ("LINE_ABS_DIST".into(), self.line_error[1]),
+            ("LINE_ABS".into(), self.line_error[2]),
+            ("FLUSH_FLOOR".into(), self.flush_floor),
+            ("PARALLEL_COMPONENT".into(), self.parallel_component),
+        ];
+        for (i, c) in self.trisect_fit.iter().enumerate() {
+            floats.push((format!("TRISECT_FIT_{i}"), *c));
+        }
+        let mut out = String::from(
+            "// Generated from the Rust constants (torus_cull::gpu::KernelConstants::CPU) when\n\
+             // the pipeline is built: exact hexadecimal floats, the decimal in the comment.\n",
+        );
+        for (name, value) in floats {
+            let _ = writeln!(out, "const {name}: f32 = {}; // {value:e}", hex_f32(value));
+        }
+        let _ = writeln!(out, "const CBRT_SEED: u32 = {}u;", self.cbrt_seed);
+        out
+    }
+
+    /// The kernel's full WGSL text: [`KernelConstants::header`] and the body.
+    pub fn source(&self) -> String {
+        format!("{}\n{KERNEL_BODY}", self.header())
+    }
+}
+
+/// The kernel's WGSL text with the CPU's constants: what the pipeline compiles.
+pub fn kernel_source() -> String {
+    KernelConstants::CPU.source()
+}
+
+/// `x` as an exact WGSL hexadecimal float literal: `0x1.hhhhhhp±ef` (a normal f32, or 0).
+fn hex_f32(x: f32) -> String {
+    assert!(
+        x == 0.0 || x.is_normal(),
+        "a kernel constant must be 0 or a normal f32: {x:e}"
+    );
+    if x == 0.0 {
+        return "0.0f".into();
+    }
+    let bits = x.to_bits();
+    let sign = if x < 0.0 { "-" } else { "" };
+    let exp = ((bits >> 23) & 0xff) as i32 - 127;
+    let mantissa = (bits & 0x7f_ffff) << 1; // 24 bits: six hex digits
+    format!("{sign}0x1.{mantissa:06x}p{exp}f")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The hexadecimal literal read back (as WGSL reads it) is the same f32.
+    fn parse_hex(text: &str) -> f32 {
+        let (sign, rest) = match text.strip_prefix('-') {
+            Some(r) => (-1.0, r),
+            None => (1.0, text),
+        };
+        let rest = rest
+            .strip_prefix("0x1.")
+            .unwrap()
+            .strip_suffix('f')
+            .unwrap();
+        let (mantissa, exp) = rest.split_once('p').unwrap();
+        let m = u32::from_str_radix(mantissa, 16).unwrap() as f64 / f64::from(1u32 << 24);
+        (sign * (1.0 + m) * 2f64.powi(exp.parse().unwrap())) as f32
+    }
+
+    #[test]
+    fn hex_literals_are_exact() {
+        for x in [
+            SAFETY_REL,
+            1e-9,
+            -0.002_372_558,
+            0.9216062,
+            1e30,
+            1e-30,
+            f32::MIN_POSITIVE,
+            f32::MAX,
+            -3.5,
+        ] {
+            let text = hex_f32(x);
+            assert_eq!(parse_hex(&text).to_bits(), x.to_bits(), "{x:e} as {text}");
+        }
+        assert_eq!(hex_f32(SAFETY_REL), "0x1.000000p-12f");
+        assert_eq!(hex_f32(0.0), "0.0f");
+    }
+
+    #[test]
+    fn every_shared_constant_comes_from_rust() {
+        let header = KernelConstants::CPU.header();
+        for (name, value) in [
+            ("SAFETY_REL", SAFETY_REL),
+            ("DISC_NEAR", DISC_NEAR as f32),
+            ("NEAR_DOUBLE", NEAR_DOUBLE as f32),
+            ("SMALL_ROOT", SMALL_ROOT as f32),
+            ("BRACKET", BRACKET as f32),
+            ("TRISECT_FIT_0", trisect::FIT[0] as f32),
+            ("TRISECT_FIT_5", trisect::FIT[5] as f32),
+            ("AXIS_PARALLEL_H2", AXIS_PARALLEL_H2),
+        ] {
+            let line = format!("const {name}: f32 = {};", hex_f32(value));
+            assert!(header.contains(&line), "{line} not in\n{header}");
+        }
+        assert!(header.contains(&format!("const CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
+        // The body declares none of them by hand (one source).
+        for line in KERNEL_BODY.lines() {
+            assert!(
+                !line.trim_start().starts_with("const "),
+                "hand-written: {line}"
+            );
+        }
+    }
+
+    /// The generated text parses and validates as WGSL (naga, as wgpu does), with the
+    /// CPU's constants and with a changed one: no adapter needed.
+    #[test]
+    fn the_kernel_validates() {
+        use wgpu::naga;
+        for constants in [
+            KernelConstants::CPU,
+            KernelConstants {
+                safety_rel: 1.0 / 1024.0,
+                ..KernelConstants::CPU
+            },
+        ] {
+            let module = naga::front::wgsl::parse_str(&constants.source())
+                .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&constants.source())));
+            naga::valid::Validator::new(
+                naga::valid::ValidationFlags::all(),
+                naga::valid::Capabilities::default(),
+            )
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{e:?}"));
+        }
+    }
+
+    /// Changing a Rust constant changes the kernel's text, in exactly that line.
+    #[test]
+    fn a_changed_constant_changes_the_kernel() {
+        let cpu = KernelConstants::CPU;
+        let changed = KernelConstants {
+            safety_rel: cpu.safety_rel * 2.0,
+            ..cpu
+        };
+        let (a, b) = (cpu.source(), changed.source());
+        assert_ne!(a, b);
+        let differing: Vec<(&str, &str)> =
+            a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
+        assert_eq!(differing.len(), 1, "{differing:?}");
+        assert!(
+            differing[0]
+                .1
+                .starts_with("const SAFETY_REL: f32 = 0x1.000000p-11f;")
+        );
+        let seed = KernelConstants {
+            cbrt_seed: cpu.cbrt_seed + 1,
+            ..cpu
+        };
+        assert_ne!(seed.source(), a);
+        assert_eq!(kernel_source(), a);
+    }
+}
