@@ -393,3 +393,54 @@ fn mode_both_times_the_f32_wavefront_with_escalation_rates() {
     assert_eq!(o.status.code(), Some(2), "{text}");
     assert!(text.contains("share no record"), "{text}");
 }
+
+/// `--secondary` times the bounces spawned from each batch's hits (issue 26's cost goal):
+/// every record's case is `<case>_bounce`, the f32 wavefront is paired against the f64 one
+/// on the same rays, and a case without hits (the hole) is skipped with a note.
+#[test]
+fn secondary_times_spawned_bounces_in_both_paths() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = dir.path().join("a.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        "quick",
+        "--nu",
+        "2",
+        "--seconds",
+        "1",
+        "--culls",
+        "skala",
+        "--mode",
+        "both",
+        "--secondary",
+        "--no-plots",
+        "--out",
+        a.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("rays of hole at nu = 2 hit the torus"),
+        "{stderr}"
+    );
+    let r = Results::load(&a).unwrap();
+    assert!(!r.ratio.is_empty());
+    assert!(r.ratio.iter().all(|x| x.case.ends_with("_bounce")));
+    assert!(!r.ratio.iter().any(|x| x.case == "hole_bounce"));
+    let f32_vs_f64: Vec<_> = r
+        .ratio
+        .iter()
+        .filter(|x| x.reference == "f64" && x.metric == "batch_f32_total_ns")
+        .collect();
+    // outer_band, grazing, uniform, camera at ν = 2.
+    assert_eq!(f32_vs_f64.len(), 4, "{f32_vs_f64:?}");
+    for x in f32_vs_f64 {
+        let e = x.escalation_rate.expect("f32 records carry their rate");
+        // Bounces leave into the outside: almost all are proved in f32.
+        assert!(e < 0.05, "{x:?}");
+        assert!(x.ratio.is_finite() && x.ratio > 0.0, "{x:?}");
+    }
+    let gpu = torus_cull(&["time", "--secondary", "--device", "gpu"]);
+    assert_eq!(gpu.status.code(), Some(2));
+}

@@ -17,6 +17,7 @@ mod camera;
 mod grazing;
 mod hole;
 mod outer_band;
+pub mod secondary;
 pub mod spec;
 mod uniform;
 

@@ -65,6 +65,13 @@ pub struct TimeArgs {
     /// lavapipe) is timed too, but as a CPU proxy, never as GPU speed.
     #[arg(long, value_enum, default_value_t = Device::Cpu)]
     device: Device,
+    /// Time secondary rays instead of the workload's: for each batch, one diffuse bounce
+    /// (cosine-weighted) spawned from every hit with `Torus::spawn`, so every ray starts
+    /// on the surface (`Ray::from_surface`). The records' case is `<case>_bounce`. With
+    /// `--mode both` this pairs the certified f32 wavefront against the f64 one on the
+    /// rays a path tracer sends after its primary rays. CPU only.
+    #[arg(long)]
+    secondary: bool,
     /// Skip the SVG plots (by default the paired ratios, or with `--device gpu` the ns
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
@@ -109,6 +116,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     }
 
     if args.device == Device::Gpu {
+        if args.secondary {
+            return Err("--secondary times the CPU's paths: not with --device gpu".into());
+        }
         if args.mode == Mode::Both {
             return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
         }
@@ -130,7 +140,11 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             eprintln!("{note}");
         }
     }
-    let records = time_with_progress(&workload, &nus, &culls, &options)?;
+    let records = if args.secondary {
+        time_secondary(&workload, &nus, &culls, &options)?
+    } else {
+        time_with_progress(&workload, &nus, &culls, &options)?
+    };
     let results = ratio_results(&workload, records, &nus, &options);
     out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
     results.save(&path)?;
@@ -260,6 +274,56 @@ fn time_with_progress(
         heartbeat.update(done as u64, all as u64);
     })?;
     bar.finish_and_clear();
+    Ok(records)
+}
+
+/// [`time_with_progress`] on the bounces of each batch's hits
+/// ([`torus_cull_lab::workload::secondary::bounces`]), the records' case renamed
+/// `<case>_bounce`.
+fn time_secondary(
+    workload: &Workload,
+    nus: &[f64],
+    culls: &[CullKind],
+    options: &PairedOptions,
+) -> Result<Vec<RatioRecord>, Box<dyn std::error::Error>> {
+    use torus_cull_lab::workload::generate;
+    use torus_cull_lab::workload::secondary::{BOUNCE_SUFFIX, bounces};
+    let mut batches = Vec::new();
+    for &case in &workload.cases {
+        for &nu in nus {
+            let primary = generate(case, nu, options.batch, workload.seed, workload.pose)?;
+            let batch = bounces(&primary);
+            if batch.rays.len() < MIN_BATCH {
+                // The hole case's rays pass through the hole: no hits, no bounces.
+                eprintln!(
+                    "note: --secondary: {} of {} rays of {} at nu = {nu} hit the torus, too \
+                     few to time (allowed: >= {MIN_BATCH}): skipped",
+                    batch.rays.len(),
+                    primary.rays.len(),
+                    case.name()
+                );
+                continue;
+            }
+            batches.push(batch);
+        }
+    }
+    if batches.is_empty() {
+        return Err("--secondary: no case of the workload has rays that hit the torus".into());
+    }
+    let units: Vec<torus_cull_lab::paired::Unit<'_>> = batches
+        .iter()
+        .map(|b| torus_cull_lab::paired::Unit {
+            case: b.case,
+            nu: b.nu,
+            torus: &b.torus,
+            rays: &b.rays,
+            seed: b.stream_seed,
+        })
+        .collect();
+    let mut records = torus_cull_lab::paired::time_units(&units, culls, options, &mut |_, _| {})?;
+    for r in &mut records {
+        r.case.push_str(BOUNCE_SUFFIX);
+    }
     Ok(records)
 }
 
