@@ -844,3 +844,45 @@ fn every_cull_against_the_oracle_and_the_cpu() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// Issue 26's goal on the GPU: the f32-check's spawned secondary-ray families (bounces,
+/// with t_min = 10⁻⁴·r and 10⁻⁴·(R + r), grazing 10⁻⁴…10⁻¹ rad, aimed across at another
+/// surface point; R 10⁻³…10³, ν 1.01…1000, random pose), labelled by the oracle's
+/// on-surface rule, through the kernel (one torus per ray, so one dispatch each, 100 rays
+/// a family to keep lavapipe's dispatches within CI's time): the certified verdicts miss
+/// no hit, invent none and put no t outside the tolerance (escalated rays are the f64
+/// path's, checked in tests/secondary_rays.rs).
+#[test]
+fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
+    use torus_cull_lab::f32_check::{Answer, Labeled, families, tally};
+    let Some(gpu) = gpu() else { return };
+    for name in [
+        "spawned_bounce",
+        "spawned_bounce_scene_eps",
+        "spawned_grazing",
+        "spawned_across",
+    ] {
+        let family = families::all()
+            .into_iter()
+            .find(|f| f.name == name)
+            .expect("an f32-check family");
+        let labeled: Vec<Labeled> = family
+            .generate(100, 0x6E0_0026)
+            .unwrap()
+            .into_iter()
+            .map(|(torus, ray)| Labeled::new(torus, ray))
+            .collect();
+        let certified = tally(&labeled, |torus, ray| {
+            Answer::from(gpu.intersect(torus, GpuCull::Skala, &[*ray]).unwrap()[0])
+        });
+        eprintln!(
+            "{name}: {} rays, kernel escalated {:.1} %, missed {} spurious {} far {}",
+            labeled.len(),
+            100.0 * certified.escalation_rate,
+            certified.missed,
+            certified.spurious,
+            certified.far
+        );
+        assert!(!certified.failed(), "{name}: {certified:?}");
+    }
+}
