@@ -36,7 +36,7 @@ pub(crate) const GPU_ROUNDING_FACTOR: f32 = 4.0;
 
 /// The kernel's line error, relative part: the computed point q + u·d̂ stands within
 /// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
-/// at u (units of R; derived in `kernel.wgsl`, about twice the first-order bound).
+/// at u (units of R; derived in `module.wgsl`, about twice the first-order bound).
 pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
 
 /// The kernel's line error, per unit of the origin's distance |o − c|/R.
