@@ -152,3 +152,71 @@ impl PreparedRay {
         finish(self.verdict(t, normal, code, why).0, torus, ray)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{CODE_ESCALATE, CODE_HIT, CODE_MISS, GpuCull, Mode};
+    use super::*;
+
+    fn torus() -> Torus {
+        Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, 1.0, 0.1), 4.0, 1.0).unwrap()
+    }
+
+    /// `TorusParams` is the kernel's uniform block less its `config` row.
+    #[test]
+    fn the_params_are_the_kernels_block() {
+        let t = torus();
+        let module = ModuleTorus::new(&t);
+        let block = Frame::of(&t).params(5, GpuCull::Skala, Mode::Intersect);
+        assert_eq!(module.params_bytes().len(), 112);
+        assert_eq!(module.params_bytes()[..], block[..112]);
+        assert_eq!(module.params()[3], 4.0); // rot_x.w = R
+    }
+
+    /// A near ray goes as is (o − c), a far one moves to its foot point, one beyond 2²⁰·R
+    /// and a surface ray into the tube are the host's.
+    #[test]
+    fn the_host_prepares_as_the_kernel_does() {
+        let t = torus();
+        let module = ModuleTorus::new(&t);
+        let c = t.center();
+        let near = Ray::new(c + Vec3::new(0.0, 8.0, 0.5), Vec3::NEG_Y).unwrap();
+        let p = module.prepare(&near);
+        assert_eq!((p.t0, p.host), (0.0, None));
+        assert_eq!(p.words[..3], (near.origin() - c).to_array());
+        assert_eq!(p.words[4..7], near.dir().to_array());
+        let far = Ray::new(c + Vec3::new(0.5, 1e4, 0.0), Vec3::NEG_Y).unwrap();
+        let p = module.prepare(&far);
+        assert!((p.t0 - 1e4).abs() < 1e-2, "{}", p.t0);
+        assert_eq!(p.host, None);
+        // The shader's hit at t = 3 along the prepared ray is the ray's hit at t0 + 3.
+        let (v, _) = p.verdict(3.0, Vec3::Y, CODE_HIT, 0);
+        assert_eq!(
+            v,
+            F32Verdict::Hit {
+                t: (p.t0 + 3.0) as f32,
+                normal: Vec3::Y
+            }
+        );
+        assert_eq!(p.verdict(0.0, Vec3::ZERO, CODE_MISS, 0).0, F32Verdict::Miss);
+        assert_eq!(
+            p.verdict(0.0, Vec3::ZERO, CODE_ESCALATE, 5),
+            (F32Verdict::Escalate, Some(Escalation::NoSignChange))
+        );
+        let beyond = Ray::new(c + Vec3::new(0.0, 1e7, 0.0), Vec3::NEG_Y).unwrap();
+        let p = module.prepare(&beyond);
+        assert_eq!(
+            p.host,
+            Some((F32Verdict::Escalate, Some(Escalation::FarOrigin)))
+        );
+        // Whatever the shader says, the host's answer stands; finished, it is the f64 path's.
+        assert_eq!(p.verdict(1.0, Vec3::Y, CODE_HIT, 0), p.host.unwrap());
+        let finished = p.finish(&t, &beyond, 1.0, Vec3::Y, CODE_HIT, 0);
+        assert!(finished.escalated);
+        assert_eq!(
+            finished.hit.map(|h| h.t),
+            crate::intersect(&t, &beyond).map(|h| h.t)
+        );
+        assert_eq!(p.bytes()[..4], p.words[0].to_le_bytes());
+    }
+}
