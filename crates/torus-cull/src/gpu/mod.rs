@@ -25,7 +25,7 @@
 //! subnormals may flush; so every rounding term of the certificate (in u = 2⁻²⁴) is taken
 //! four times larger than on the CPU, and the line's own error is the one of an f32
 //! rotation and foot point (within 16.9u·|o − c|/R + 16u·|q| + 24.4u·|u| of the true
-//! line, to first order: derived step by step in `kernel.wgsl`, and taken about twice).
+//! line, to first order: derived step by step in `module.wgsl`, and taken about twice).
 //! On the CPU the line is formed in f64 and rounded once. The bracket is what remains of
 //! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
 //! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
@@ -39,11 +39,18 @@
 //! proves (docs/math.md, "The GPU's culls"). [`GpuIntersector::cull_keeps`] runs a cull
 //! alone.
 //!
-//! **One source for the constants.** The kernel's text is `kernel.wgsl` behind a header
-//! generated from the Rust constants the CPU uses ([`kernel_source`], [`KernelConstants`]):
-//! the cube-root seed, the trisection fit, the solver's thresholds, the bracket,
-//! [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's constants, as exact
-//! hexadecimal floats.
+//! **One source for the constants.** The kernel's text is `module.wgsl` and `kernel.wgsl`
+//! behind a header generated from the Rust constants the CPU uses ([`kernel_source`],
+//! [`KernelConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
+//! the bracket, [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's
+//! constants, as exact hexadecimal floats, and the result, cull and escalation codes.
+//!
+//! **A module a renderer includes.** [`wgsl_module`] is the header and `module.wgsl` alone:
+//! `torus_intersect(ray, torus, cull) -> TorusHit` and `torus_cull_keeps`, without the
+//! kernel's bindings and entry point, for a renderer's own shader; the kernel is the same
+//! text plus its bindings. [`ModuleTorus`] packs the torus and the rays as the kernel's
+//! host does, and [`PreparedRay::finish`] reads an answer back, finishing an escalated ray
+//! in f64 (docs/gpu.md, "Using the WGSL module in your renderer").
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -64,9 +71,14 @@
 //! ```
 
 mod bounds;
+mod module;
 mod source;
 
-pub use source::{KernelConstants, kernel_source};
+pub use module::{ModuleTorus, PreparedRay};
+pub use source::{KernelConstants, kernel_source, wgsl_module};
+/// The wgpu this library's kernel runs on (and whose `naga` validates
+/// [`wgsl_module`]): a renderer that includes the module uses the same version.
+pub use wgpu;
 
 use crate::certified::{F32Hit, F32Verdict};
 use crate::cull::BatchCull;
@@ -237,8 +249,19 @@ pub(crate) const WORKGROUP: usize = 64;
 /// Bytes per ray, in and out: two `vec4<f32>` each.
 pub(crate) const RAY_BYTES: u64 = 32;
 
-/// Size of the uniform block (`Params` in the kernel): eight 16-byte rows.
+/// Size of the uniform block (`Params` in the kernel): eight 16-byte rows, the module's
+/// `TorusParams` (seven) and the kernel's `config`.
 pub(crate) const PARAMS_BYTES: u64 = 128;
+
+/// The module's result code (`TorusHit.code`, `TORUS_MISS`): a proved miss, or the cull
+/// rejected the ray.
+pub(crate) const CODE_MISS: u32 = 0;
+/// `TORUS_HIT`: a proved hit.
+pub(crate) const CODE_HIT: u32 = 1;
+/// `TORUS_ESCALATE`: not proved; `why` says which step.
+pub(crate) const CODE_ESCALATE: u32 = 2;
+/// `TORUS_KEPT`: the cull alone kept the ray's line.
+pub(crate) const CODE_KEPT: u32 = 3;
 
 /// Origins farther than this many R from the centre (2²⁰) escalate without the kernel:
 /// beyond, the f64 foot point's own error (about 10⁻¹⁵ of the distance) is no longer
@@ -653,22 +676,15 @@ fn on_surface_answer(
 /// why; an unknown code escalates.
 pub(crate) fn verdict(w: [f32; 8]) -> (F32Verdict, Option<Escalation>) {
     let normal = Vec3::new(w[1], w[2], w[3]);
-    if w[4] == 0.0 {
+    if w[4] == CODE_MISS as f32 {
         (F32Verdict::Miss, None)
-    } else if w[4] == 1.0 && w[0].is_finite() && normal.is_finite() {
+    } else if w[4] == CODE_HIT as f32 && w[0].is_finite() && normal.is_finite() {
         (F32Verdict::Hit { t: w[0], normal }, None)
     } else {
-        let why = match w[5] as u32 {
-            1 => Escalation::NonFiniteLine,
-            2 => Escalation::SolverUnsure,
-            3 => Escalation::MissNotProved,
-            4 => Escalation::EmptyBracket,
-            5 => Escalation::NoSignChange,
-            6 => Escalation::EarlierRootNotRuledOut,
-            7 => Escalation::TErrorTooLarge,
-            _ => Escalation::Unknown,
-        };
-        (F32Verdict::Escalate, Some(why))
+        (
+            F32Verdict::Escalate,
+            Some(Escalation::from_code(w[5] as u32)),
+        )
     }
 }
 
@@ -723,6 +739,37 @@ pub enum Escalation {
 }
 
 impl Escalation {
+    /// The escalations the module reports, in the order of their codes 1 to 7
+    /// (`TorusHit.why`, `TORUS_WHY_<NAME>` with NAME = [`Escalation::name`] in capitals).
+    pub const KERNEL: [Escalation; 7] = [
+        Escalation::NonFiniteLine,
+        Escalation::SolverUnsure,
+        Escalation::MissNotProved,
+        Escalation::EmptyBracket,
+        Escalation::NoSignChange,
+        Escalation::EarlierRootNotRuledOut,
+        Escalation::TErrorTooLarge,
+    ];
+
+    /// The module's code (`TorusHit.why`) for an escalation it reports; `None` for the
+    /// host's own ([`Escalation::FarOrigin`], [`Escalation::OnSurface`],
+    /// [`Escalation::Unknown`]).
+    pub fn code(self) -> Option<u32> {
+        Escalation::KERNEL
+            .iter()
+            .position(|&e| e == self)
+            .map(|i| i as u32 + 1)
+    }
+
+    /// The escalation of a module code (`TorusHit.why`); an unknown code is
+    /// [`Escalation::Unknown`].
+    pub fn from_code(code: u32) -> Escalation {
+        match code {
+            1..=7 => Escalation::KERNEL[code as usize - 1],
+            _ => Escalation::Unknown,
+        }
+    }
+
     /// The stable name.
     pub fn name(self) -> &'static str {
         match self {
@@ -795,9 +842,22 @@ impl Frame {
         }
     }
 
-    /// The uniform block: rows of M with R, r, r/R; 1/R; the culls' bounds (three rows);
-    /// the count, the cull and the mode.
+    /// The uniform block: the torus ([`Frame::torus_params`]); the count, the cull and
+    /// the mode.
     pub(crate) fn params(&self, count: u32, cull: GpuCull, mode: Mode) -> Vec<u8> {
+        let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
+        for f in self.torus_params() {
+            bytes.extend_from_slice(&f.to_le_bytes());
+        }
+        for u in [count, cull.code(), mode as u32, 0] {
+            bytes.extend_from_slice(&u.to_le_bytes());
+        }
+        bytes
+    }
+
+    /// The module's `TorusParams`: rows of M with R, r, r/R; 1/R; the culls' bounds
+    /// (three rows).
+    pub(crate) fn torus_params(&self) -> [f32; 28] {
         let rr = (f64::from(self.minor) / self.major_f64) as f32;
         let inv_major = (1.0 / self.major_f64) as f32;
         let floats: [f32; 16] = [
@@ -818,14 +878,14 @@ impl Frame {
             0.0,
             0.0,
         ];
-        let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
-        for f in floats.into_iter().chain(self.bounds.into_iter().flatten()) {
-            bytes.extend_from_slice(&f.to_le_bytes());
+        let mut out = [0.0; 28];
+        for (o, f) in out
+            .iter_mut()
+            .zip(floats.into_iter().chain(self.bounds.into_iter().flatten()))
+        {
+            *o = f;
         }
-        for u in [count, cull.code(), mode as u32, 0] {
-            bytes.extend_from_slice(&u.to_le_bytes());
-        }
-        bytes
+        out
     }
 
     /// A ray as the kernel reads it.
@@ -887,6 +947,34 @@ mod tests {
             GpuCull::try_from(CullKind::DiscriminantF64),
             Err(CullKind::DiscriminantF64)
         );
+    }
+
+    #[test]
+    fn every_escalation_code_round_trips() {
+        for (i, why) in Escalation::KERNEL.into_iter().enumerate() {
+            assert_eq!(why.code(), Some(i as u32 + 1));
+            assert_eq!(Escalation::from_code(i as u32 + 1), why);
+            let record = [
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                CODE_ESCALATE as f32,
+                (i + 1) as f32,
+                0.0,
+                0.0,
+            ];
+            assert_eq!(verdict(record), (F32Verdict::Escalate, Some(why)));
+        }
+        for host in [
+            Escalation::FarOrigin,
+            Escalation::OnSurface,
+            Escalation::Unknown,
+        ] {
+            assert_eq!(host.code(), None);
+        }
+        assert_eq!(Escalation::from_code(0), Escalation::Unknown);
+        assert_eq!(Escalation::from_code(8), Escalation::Unknown);
     }
 
     #[test]

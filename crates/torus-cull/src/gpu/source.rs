@@ -1,9 +1,12 @@
-//! The kernel's WGSL text: `kernel.wgsl` behind a header of `const` lines generated from
-//! the Rust constants the CPU uses ([`KernelConstants`]), so that the two cannot drift
-//! apart: the cube-root seed and the trisection fit of the f32 solver, the solver's
+//! The kernel's WGSL text: `module.wgsl` (the intersection as functions a renderer can
+//! include, [`wgsl_module`]) and `kernel.wgsl` (the library's bindings and entry point),
+//! behind a header of `const` lines generated from the Rust constants the CPU uses
+//! ([`KernelConstants`]), so that the two cannot drift apart: the cube-root seed and the trisection fit of the f32 solver, the solver's
 //! thresholds, the culls' margin [`crate::cull::SAFETY_REL`] and their thresholds, the
 //! certificate's bracket, and the GPU's own error constants, which the host also uses
-//! for the culls' margin ([`super::bounds`]).
+//! for the culls' margin ([`super::bounds`]). The header also names the module's result
+//! codes, its cull codes ([`super::GpuCull::ALL`]'s order) and its escalation codes
+//! ([`super::Escalation::KERNEL`]), from the Rust values the host decodes them with.
 //!
 //! Every f32 is written as a WGSL hexadecimal float literal (`0x1.8p-3f`), which is
 //! exact, so the kernel's value is the Rust value to the bit; the decimal follows in a
@@ -17,7 +20,13 @@ use crate::quartic::resolvent::{DISC_NEAR, SMALL_ROOT};
 use crate::quartic::{EPS, trisect};
 use std::fmt::Write;
 
-/// The kernel's body: every shared number comes from the generated header.
+use super::{CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Escalation, GpuCull};
+
+/// The module's body (the intersection as WGSL functions, no bindings): every shared
+/// number comes from the generated header.
+const MODULE_BODY: &str = include_str!("module.wgsl");
+
+/// The library kernel's bindings and entry point, around [`MODULE_BODY`].
 const KERNEL_BODY: &str = include_str!("kernel.wgsl");
 
 /// The GPU's factor on every rounding term in u = 2⁻²⁴: WGSL may or may not contract
@@ -27,7 +36,7 @@ pub(crate) const GPU_ROUNDING_FACTOR: f32 = 4.0;
 
 /// The kernel's line error, relative part: the computed point q + u·d̂ stands within
 /// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
-/// at u (units of R; derived in `kernel.wgsl`, about twice the first-order bound).
+/// at u (units of R; derived in `module.wgsl`, about twice the first-order bound).
 pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
 
 /// The kernel's line error, per unit of the origin's distance |o − c|/R.
@@ -160,18 +169,88 @@ impl KernelConstants {
             let _ = writeln!(out, "const {name}: f32 = {}; // {value:e}", hex_f32(value));
         }
         let _ = writeln!(out, "const CBRT_SEED: u32 = {}u;", self.cbrt_seed);
+        out.push_str(&codes());
         out
     }
 
-    /// The kernel's full WGSL text: [`KernelConstants::header`] and the body.
-    pub fn source(&self) -> String {
-        format!("{}\n{KERNEL_BODY}", self.header())
+    /// The module's WGSL text ([`wgsl_module`]) with these constants.
+    pub fn module(&self) -> String {
+        format!("{}\n{MODULE_BODY}", self.header())
     }
+
+    /// The kernel's full WGSL text: the module ([`KernelConstants::module`]) and the
+    /// kernel's bindings and entry point.
+    pub fn source(&self) -> String {
+        format!("{}\n{KERNEL_BODY}", self.module())
+    }
+}
+
+/// The module's codes as WGSL `const u32` lines: the result codes (`TORUS_MISS`,
+/// `TORUS_HIT`, `TORUS_ESCALATE`, `TORUS_KEPT`), the culls (`TORUS_CULL_<NAME>`, the
+/// code the kernel's switch reads) and why a ray escalated (`TORUS_WHY_<NAME>`, as
+/// [`Escalation::name`]); the host decodes the records with the same values.
+fn codes() -> String {
+    let mut out = String::from("// Result, cull and escalation codes (torus_cull::gpu).\n");
+    for (name, code) in [
+        ("MISS", CODE_MISS),
+        ("HIT", CODE_HIT),
+        ("ESCALATE", CODE_ESCALATE),
+        ("KEPT", CODE_KEPT),
+    ] {
+        let _ = writeln!(out, "const TORUS_{name}: u32 = {code}u;");
+    }
+    for cull in GpuCull::ALL {
+        let name = cull.name().to_uppercase();
+        let _ = writeln!(out, "const TORUS_CULL_{name}: u32 = {}u;", cull.code());
+    }
+    for why in Escalation::KERNEL {
+        let name = why.name().to_uppercase();
+        let code = why.code().expect("the kernel's escalations have codes");
+        let _ = writeln!(out, "const TORUS_WHY_{name}: u32 = {code}u;");
+    }
+    out
 }
 
 /// The kernel's WGSL text with the CPU's constants: what the pipeline compiles.
 pub fn kernel_source() -> String {
     KernelConstants::CPU.source()
+}
+
+/// The certified f32 intersection as WGSL a renderer includes in its own shader: the
+/// generated `const` header (the CPU's constants, exact; the result, cull and escalation
+/// codes) and the functions, without the library kernel's bindings and entry point.
+/// The library's kernel is this same text plus its bindings ([`kernel_source`]).
+///
+/// The public entry points (every other name in the text is internal; a shader that
+/// includes it must not declare the same global names):
+///
+/// ```wgsl
+/// fn torus_intersect(ray: TorusRay, torus: TorusParams, cull: u32) -> TorusHit
+/// fn torus_cull_keeps(ray: TorusRay, torus: TorusParams, cull: u32) -> bool
+/// ```
+///
+/// - `TorusParams` (112 bytes, seven `vec4<f32>`): from [`super::ModuleTorus::params`],
+///   once per torus. It holds the rotation into the torus frame, R, r, r/R, 1/R and the
+///   culls' bounds padded by the GPU's margin, which only the Rust side computes.
+/// - `TorusRay` (32 bytes: `origin: vec3<f32>, t_min, direction: vec3<f32>, t_max`):
+///   from [`super::ModuleTorus::prepare`], per ray. The origin is o − c formed in f64 and
+///   rounded once; an origin farther than 2·(R + r) is moved along its line to the foot
+///   point (in f64; add the returned `t0` back to the hit's t); one beyond 2²⁰·R is not
+///   sent; a ray from a surface point goes as its literal ray past the origin's root, or
+///   the host answers it. A ray prepared otherwise is outside what the certificate
+///   proves.
+/// - `cull`: `TORUS_CULL_<NAME>`, [`super::GpuCull::ALL`]'s order.
+/// - `TorusHit`: `code` is `TORUS_HIT` (t within 2·10⁻⁴·(R + r) of the first root in
+///   range along the unit direction, `normal` the unit world normal), `TORUS_MISS` (a
+///   proved miss), or `TORUS_ESCALATE` with `why` = `TORUS_WHY_<NAME>` (the
+///   [`super::Escalation`] of that name): not proved either way, finish it on the host
+///   with the f64 path ([`crate::intersect()`]); [`super::PreparedRay::verdict`] decodes
+///   a record as the library's kernel does.
+///
+/// docs/gpu.md, "Using the WGSL module in your renderer", gives the buffers and an
+/// example (`examples/wgsl_module.rs`).
+pub fn wgsl_module() -> String {
+    KernelConstants::CPU.module()
 }
 
 /// `x` as an exact WGSL hexadecimal float literal: `0x1.hhhhhhp±ef` (a normal f32, or 0).
@@ -247,8 +326,8 @@ mod tests {
             assert!(header.contains(&line), "{line} not in\n{header}");
         }
         assert!(header.contains(&format!("const CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-        // The body declares none of them by hand (one source).
-        for line in KERNEL_BODY.lines() {
+        // The bodies declare none of them by hand (one source).
+        for line in MODULE_BODY.lines().chain(KERNEL_BODY.lines()) {
             assert!(
                 !line.trim_start().starts_with("const "),
                 "hand-written: {line}"
@@ -276,6 +355,56 @@ mod tests {
             )
             .validate(&module)
             .unwrap_or_else(|e| panic!("{e:?}"));
+        }
+    }
+
+    /// The module is the kernel's text less its bindings and entry point (one source): it
+    /// validates alone, declares no binding and no entry point, and names the codes the
+    /// host decodes with.
+    #[test]
+    fn the_kernel_is_the_module_plus_its_bindings() {
+        use wgpu::naga;
+        let module = wgsl_module();
+        let kernel = kernel_source();
+        assert!(kernel.starts_with(&module));
+        assert!(kernel.contains(KERNEL_BODY));
+        for absent in [
+            "@group",
+            "@binding",
+            "@compute",
+            "var<uniform>",
+            "var<storage",
+        ] {
+            assert!(!module.contains(absent), "{absent} in the module");
+        }
+        let parsed = naga::front::wgsl::parse_str(&module)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&module)));
+        assert!(parsed.entry_points.is_empty());
+        assert!(parsed.global_variables.is_empty());
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::default(),
+        )
+        .validate(&parsed)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+        for entry in ["torus_intersect", "torus_cull_keeps"] {
+            assert!(
+                parsed
+                    .functions
+                    .iter()
+                    .any(|(_, f)| f.name.as_deref() == Some(entry)),
+                "{entry}"
+            );
+        }
+        for line in [
+            "const TORUS_HIT: u32 = 1u;",
+            "const TORUS_ESCALATE: u32 = 2u;",
+            "const TORUS_CULL_SKALA: u32 = 5u;",
+            "const TORUS_CULL_DISCRIMINANT: u32 = 8u;",
+            "const TORUS_WHY_NON_FINITE_LINE: u32 = 1u;",
+            "const TORUS_WHY_T_ERROR: u32 = 7u;",
+        ] {
+            assert!(module.contains(line), "{line}");
         }
     }
 
