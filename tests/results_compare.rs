@@ -156,6 +156,9 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
         precision: "f64".into(),
         device: "cpu".into(),
         escalation_rate: None,
+        runs: 1,
+        run_ratios: Vec::new(),
+        ratio_ci_between: None,
     };
     r.ratio = vec![
         ratio.clone(),

@@ -154,6 +154,9 @@ mod tests {
             precision: "f64".into(),
             device: "cpu".into(),
             escalation_rate: None,
+            runs: 1,
+            run_ratios: Vec::new(),
+            ratio_ci_between: None,
         }
     }
 
