@@ -488,3 +488,59 @@ fn mode_both_times_the_f32_wavefront_with_escalation_rates() {
     assert_eq!(o.status.code(), Some(2), "{text}");
     assert!(text.contains("share no record"), "{text}");
 }
+
+/// Issue 29: a worker process that dies fails the whole timing, naming the run and how it
+/// ended, and no results file is written.
+#[test]
+#[cfg(target_os = "linux")]
+fn a_dead_worker_fails_the_timing_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let out = dir.path().join("a.json");
+    let mut parent = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args([
+            "time",
+            "--workload",
+            &workload,
+            "--seconds",
+            "20",
+            "--runs",
+            "2",
+            "--no-plots",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run torus-cull");
+    // The first worker, as soon as it is started.
+    let children = format!("/proc/{0}/task/{0}/children", parent.id());
+    let start = Instant::now();
+    let worker = loop {
+        let text = std::fs::read_to_string(&children).unwrap_or_default();
+        if let Some(pid) = text.split_whitespace().next() {
+            break pid.to_string();
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "no worker started"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let killed = Command::new("kill").args(["-9", &worker]).status().unwrap();
+    assert!(killed.success());
+    let o = parent.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("worker run 1 of 2 failed") && err.contains("no results written"),
+        "{err}"
+    );
+    assert!(
+        start.elapsed() < Duration::from_secs(15),
+        "it went on measuring"
+    );
+    assert!(!out.exists());
+}
