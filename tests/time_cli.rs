@@ -497,7 +497,7 @@ fn a_dead_worker_fails_the_timing_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let workload = tiny_workload(dir.path());
     let out = dir.path().join("a.json");
-    let mut parent = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+    let parent = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
         .args([
             "time",
             "--workload",
