@@ -645,7 +645,8 @@ fn list(c: &mut Criterion, workload: &Workload, timed_nus: &[f64], bvh: Option<&
 }
 
 /// Paired, interleaved ratios of every timed cull against cychosz and none, on the first
-/// rays of each timed batch (the engine `torus-cull time` uses), in both modes.
+/// rays of each timed batch (the engine `torus-cull time` uses), in both modes, over
+/// `config.ratio_runs` independent runs with their between-run intervals.
 fn paired_ratios(
     batches: &[LabeledBatch],
     config: &BenchConfig,
@@ -662,10 +663,20 @@ fn paired_ratios(
             seed: l.batch.stream_seed,
         })
         .collect();
-    let mut options = paired::PairedOptions::total(config.ratio_seconds, rays);
+    // The runs share the seconds; each lays the buffers out afresh in this process (a
+    // bench cannot start itself again as `time --runs` does), so the between-run
+    // interval covers data placement and the machine's drift, not code placement.
+    let runs = config.ratio_runs.max(1);
+    let mut options = paired::PairedOptions::total(config.ratio_seconds / runs as f64, rays);
     options.batch_isa = Some(dispatch.isa());
-    paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
-        .unwrap_or_else(|e| panic!("{e}"))
+    let all: Vec<Vec<RatioRecord>> = (0..runs)
+        .map(|run| {
+            let options = paired::PairedOptions { run, ..options };
+            paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
+                .unwrap_or_else(|e| panic!("{e}"))
+        })
+        .collect();
+    paired::combine_runs(&all).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// Where criterion writes its estimates (its own rule: `$CRITERION_HOME`, else

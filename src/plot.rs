@@ -518,13 +518,16 @@ fn bvh_charts(
     )
 }
 
-/// `torus-cull time`'s paired ratios: one chart per case × metric × reference.
+/// `torus-cull time`'s paired ratios: one chart per case × metric × reference, each ratio
+/// with its between-run interval where it has one (several runs), else its within-run one.
 fn ratio_charts(
     records: &[RatioRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
     for group in ordered(records.iter().map(Record::group)) {
-        let ratios = lines(records, &group, |r| Some((r.ratio, Some(r.ratio_ci))));
+        let ratios = lines(records, &group, |r| {
+            Some((r.ratio, Some(r.ratio_ci_between.unwrap_or(r.ratio_ci))))
+        });
         let Some(first) = records.iter().find(|r| r.group() == group) else {
             continue;
         };

@@ -132,7 +132,8 @@ pub fn bvh_tables(results: &Results) -> String {
 }
 
 /// Paired ratios per case, metric and reference (rows ν, columns culls): the median
-/// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval. Below 1 the cull
+/// per-round `t(cull) / t(reference)` and its bootstrap 95 % interval (of several runs,
+/// their geometric mean and the between-run interval, see [`crate::paired::runs`]). Below 1 the cull
 /// is faster than the reference. The f32 wavefront's ratios against the same cull's f64
 /// wavefront (reference `f64`) are the f32 / f64 speed ratio; after them, the f32
 /// path's escalation rates.
@@ -163,16 +164,23 @@ pub fn ratio_tables(results: &Results) -> String {
             (format!("{}: {what}{device} / {reference}", r.case), r)
         })
         .collect();
+    // Of several runs, the interval shown is the between-run one: how far the next run
+    // may land, not only how well this one's rounds pinned it down.
+    let runs = results.ratio.iter().map(|r| r.runs).max().unwrap_or(1);
     let mut out = table(
         &keyed,
         |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
         |(_, r)| {
-            format!(
-                "{:.3} [{:.3}, {:.3}]",
-                r.ratio, r.ratio_ci[0], r.ratio_ci[1]
-            )
+            let [lo, hi] = r.ratio_ci_between.unwrap_or(r.ratio_ci);
+            format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio)
         },
-        |title| format!("{title}, paired ratio [95% CI]"),
+        |title| {
+            if runs > 1 {
+                format!("{title}, paired ratio [95% CI] between {runs} runs")
+            } else {
+                format!("{title}, paired ratio [95% CI]")
+            }
+        },
     );
     // One escalation rate per cull and (case, ν): the certified records all carry it.
     let escalation: Vec<&RatioRecord> = results

@@ -321,9 +321,15 @@ pub struct RatioRecord {
     /// `batch_f32_total_ns` (certified) and `batch_f32_uncertified_ns` (no proof: what
     /// the proof costs); see [`crate::paired::Metric`].
     pub metric: String,
-    /// Median per-round t(cull) / t(reference): below 1 the cull is faster.
+    /// Median per-round t(cull) / t(reference): below 1 the cull is faster. Of several
+    /// [`runs`](Self::runs), the geometric mean of the runs' medians.
     pub ratio: f64,
-    /// Percentile bootstrap 95 % interval of that median, `[lo, hi]`.
+    /// The within-run interval, `[lo, hi]`: the percentile bootstrap 95 % interval of
+    /// that median. Of several runs, the runs' intervals pooled as if the runs did not
+    /// differ: on the log scale, each side's half-width is √(Σ hₖ²) / K around the
+    /// geometric mean (the standard error of a mean of K independent estimates); it
+    /// says how well the rounds pinned the figure down, not how far the next run may land
+    /// (that is [`ratio_ci_between`](Self::ratio_ci_between)).
     pub ratio_ci: [f64; 2],
     /// Rounds the ratio was taken over: the quietest quarter of those the operating
     /// system did not switch the thread out of (of all, if it did so in most).
@@ -348,6 +354,27 @@ pub struct RatioRecord {
     /// pass on the same (case, ν) batch); absent on f64 records.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub escalation_rate: Option<f64>,
+    /// Independent runs the record combines (`time --runs`: worker processes; `cargo
+    /// bench`: fresh layouts in one process; see [`crate::paired::runs`]); a record
+    /// without it is one run, as every record was before the field existed.
+    #[serde(default = "one_run")]
+    pub runs: u64,
+    /// Each run's own ratio (its median over its rounds), in run order; absent for a
+    /// single run.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub run_ratios: Vec<f64>,
+    /// The between-run 95 % interval, `[lo, hi]`: a Student t interval of the geometric
+    /// mean of [`run_ratios`](Self::run_ratios) (t with runs − 1 degrees of freedom, on
+    /// their logarithms), widened where needed to hold [`ratio_ci`](Self::ratio_ci). It
+    /// covers what moves a whole run (code and data placement, the machine's state) as
+    /// well as round-to-round noise; absent for a single run, whose between-run spread
+    /// is unknown. `compare` judges by it when both files have it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ratio_ci_between: Option<[f64; 2]>,
+}
+
+fn one_run() -> u64 {
+    1
 }
 
 impl RatioRecord {

@@ -156,6 +156,9 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
         precision: "f64".into(),
         device: "cpu".into(),
         escalation_rate: None,
+        runs: 1,
+        run_ratios: Vec::new(),
+        ratio_ci_between: None,
     };
     r.ratio = vec![
         ratio.clone(),
@@ -743,5 +746,101 @@ fn estimate_only_files_are_plotted_and_compared() {
     assert!(
         text.contains("cychosz") && text.contains("ns per element"),
         "{text}"
+    );
+}
+
+/// `sample()` with one `total_ns` ratio record of skala against cychosz.
+fn with_ratio(ratio: f64, ci: [f64; 2], between: Option<[f64; 2]>, runs: u64) -> Results {
+    let mut r = sample();
+    r.ratio = vec![RatioRecord {
+        case: "hole".into(),
+        nu: 8.0,
+        cull: "skala".into(),
+        reference: "cychosz".into(),
+        metric: "total_ns".into(),
+        ratio,
+        ratio_ci: ci,
+        rounds: 300,
+        rounds_measured: 1200,
+        rays: 1024,
+        ns_per_ray: 10.0 * ratio,
+        reference_ns_per_ray: 10.0,
+        precision: "f64".into(),
+        device: "cpu".into(),
+        escalation_rate: None,
+        runs,
+        run_ratios: if runs > 1 {
+            vec![ratio; runs as usize]
+        } else {
+            Vec::new()
+        },
+        ratio_ci_between: between,
+    }];
+    r
+}
+
+/// Issue 29: where both files have between-run intervals, `compare` judges by them. A
+/// ratio 15 % slower whose within-run intervals are disjoint but whose between-run
+/// intervals overlap is noise, not a regression; disjoint between-run intervals are one.
+/// A file without them (one run, or from before `--runs`) falls back to the within-run
+/// intervals, and the report says how many runs stood behind each side.
+#[test]
+fn between_run_intervals_decide_where_both_files_have_them() {
+    let old = with_ratio(1.0, [0.99, 1.01], Some([0.90, 1.11]), 3);
+    let new = with_ratio(1.15, [1.14, 1.16], Some([1.05, 1.26]), 3);
+    let r = compare(&old, &new, 0.1);
+    assert_eq!(r.regressions(), 0, "{r:?}");
+    let row = r.rows.iter().find(|x| x.section == "ratio").unwrap();
+    assert_eq!(row.flags, ["slower, intervals overlap (noise)"], "{row:?}");
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("old file 3 runs, new file 3 runs")
+                && n.contains("by the between-run intervals")),
+        "{:?}",
+        r.notes
+    );
+
+    // The same change with between-run intervals apart: a regression, saying which.
+    let apart = with_ratio(1.15, [1.14, 1.16], Some([1.12, 1.18]), 3);
+    let r = compare(&old, &apart, 0.1);
+    assert_eq!(r.regressions(), 1, "{r:?}");
+    let row = r.rows.iter().find(|x| x.section == "ratio").unwrap();
+    assert!(
+        row.flags[0].contains("between-run intervals disjoint (3 vs 3 runs)"),
+        "{row:?}"
+    );
+
+    // An old file of one run: the within-run intervals decide, and the note says why.
+    let single = with_ratio(1.0, [0.99, 1.01], None, 1);
+    let r = compare(&single, &new, 0.1);
+    assert_eq!(r.regressions(), 1, "{r:?}");
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("old file 1 run, new file 3 runs")
+                && n.contains("the old file lacks between-run intervals")),
+        "{:?}",
+        r.notes
+    );
+
+    // A record written before the fields existed reads as one run with no between-run
+    // interval; a single-run record writes neither the run ratios nor the interval.
+    let mut json = serde_json::to_value(&single.ratio[0]).unwrap();
+    assert!(json.get("run_ratios").is_none() && json.get("ratio_ci_between").is_none());
+    json.as_object_mut().unwrap().remove("runs");
+    let back: RatioRecord = serde_json::from_value(json).unwrap();
+    assert_eq!(back, single.ratio[0]);
+
+    // Through the CLI: the note is printed.
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    old.save(&a).unwrap();
+    new.save(&b).unwrap();
+    let (code, stdout) = cli_compare(&a, &b);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(
+        stdout.contains("old file 3 runs, new file 3 runs"),
+        "{stdout}"
     );
 }

@@ -104,6 +104,9 @@ fn a_short_run_writes_ratios_that_load_and_compare() {
     }) {
         x.ratio *= 1.5;
         x.ratio_ci = [x.ratio_ci[1] * 1.4, x.ratio_ci[1] * 1.6];
+        // The default is several runs: compare judges by the between-run interval.
+        let [_, hi] = x.ratio_ci_between.expect("three runs by default");
+        x.ratio_ci_between = Some([hi * 1.4, hi * 1.6]);
     }
     let b = dir.path().join("b.json");
     worse.save(&b).unwrap();
@@ -112,9 +115,101 @@ fn a_short_run_writes_ratios_that_load_and_compare() {
     assert_eq!(o.status.code(), Some(1), "{stdout}");
     assert!(stdout.contains("2 regressions"), "{stdout}");
     assert!(
-        stdout.contains("REGRESSION: +50.0% against cychosz"),
+        stdout.contains("REGRESSION: +50.0% against cychosz, between-run intervals disjoint"),
         "{stdout}"
     );
+}
+
+/// Issue 29: `--runs 2` times the workload in two worker processes and writes, for every
+/// record, the within-run interval, the between-run interval over the two run ratios,
+/// `runs = 2` and the run ratios themselves; the console says how many runs.
+#[test]
+fn runs_2_writes_both_intervals() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let a = dir.path().join("a.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        &workload,
+        "--seconds",
+        "1",
+        "--culls",
+        "skala,aabb",
+        "--runs",
+        "2",
+        "--no-plots",
+        "--out",
+        a.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert!(
+        err.contains("run 1 of 2") && err.contains("run 2 of 2"),
+        "{err}"
+    );
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        stdout.contains("hole: total (cull + exact intersection) / cychosz, paired ratio [95% CI] between 2 runs"),
+        "{stdout}"
+    );
+    let r = Results::load(&a).unwrap();
+    // Per case × ν (2 × 2) × metric (2): skala and aabb against both references.
+    assert_eq!(r.ratio.len(), 4 * 2 * 2 * 2);
+    for x in &r.ratio {
+        assert_eq!(x.runs, 2, "{x:?}");
+        assert_eq!(x.run_ratios.len(), 2, "{x:?}");
+        assert!(x.run_ratios.iter().all(|q| q.is_finite() && *q > 0.0));
+        // The ratio is the geometric mean of the run ratios.
+        let gm = (x.run_ratios[0] * x.run_ratios[1]).sqrt();
+        assert!((x.ratio - gm).abs() <= 1e-12 * gm, "{x:?}");
+        let [lo, hi] = x.ratio_ci;
+        let [blo, bhi] = x
+            .ratio_ci_between
+            .expect("two runs: a between-run interval");
+        assert!(lo <= x.ratio && x.ratio <= hi, "{x:?}");
+        assert!(
+            blo <= lo && hi <= bhi,
+            "the between-run interval holds the within: {x:?}"
+        );
+        // Two runs: t(0.975, 1) = 12.706 times the half-difference of the logs.
+        let half = 12.706 * (x.run_ratios[0] / x.run_ratios[1]).ln().abs() / 2.0;
+        assert!(
+            bhi.ln() >= x.ratio.ln() + half - 1e-9 && blo.ln() <= x.ratio.ln() - half + 1e-9,
+            "{x:?}"
+        );
+        // Each run took its own rounds (40 at least per (case, ν)).
+        assert!(x.rounds_measured >= 2 * 40, "{x:?}");
+    }
+
+    // Too many runs for the time, or none: exit 2 naming the option, nothing written.
+    let b = dir.path().join("b.json");
+    for (args, want) in [
+        (
+            ["--runs", "3", "--seconds", "0.5"],
+            &["--seconds 0.5 is too short for --runs 3", "0.75"][..],
+        ),
+        (
+            ["--runs", "0", "--seconds", "1"],
+            &["--runs 0", "1 ..= 100"][..],
+        ),
+    ] {
+        let mut all = vec![
+            "time",
+            "--workload",
+            &workload,
+            "--out",
+            b.to_str().unwrap(),
+        ];
+        all.extend_from_slice(&args);
+        let o = torus_cull(&all);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        for w in want {
+            assert!(err.contains(w), "{args:?}: missing '{w}' in: {err}");
+        }
+        assert!(!b.exists());
+    }
 }
 
 #[test]
@@ -443,4 +538,60 @@ fn secondary_times_spawned_bounces_in_both_paths() {
     }
     let gpu = torus_cull(&["time", "--secondary", "--device", "gpu"]);
     assert_eq!(gpu.status.code(), Some(2));
+}
+
+/// Issue 29: a worker process that dies fails the whole timing, naming the run and how it
+/// ended, and no results file is written.
+#[test]
+#[cfg(target_os = "linux")]
+fn a_dead_worker_fails_the_timing_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let out = dir.path().join("a.json");
+    let parent = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args([
+            "time",
+            "--workload",
+            &workload,
+            "--seconds",
+            "20",
+            "--runs",
+            "2",
+            "--no-plots",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run torus-cull");
+    // The first worker, as soon as it is started.
+    let children = format!("/proc/{0}/task/{0}/children", parent.id());
+    let start = Instant::now();
+    let worker = loop {
+        let text = std::fs::read_to_string(&children).unwrap_or_default();
+        if let Some(pid) = text.split_whitespace().next() {
+            break pid.to_string();
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "no worker started"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let killed = Command::new("kill").args(["-9", &worker]).status().unwrap();
+    assert!(killed.success());
+    let o = parent.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("worker run 1 of 2 failed") && err.contains("no results written"),
+        "{err}"
+    );
+    assert!(
+        start.elapsed() < Duration::from_secs(15),
+        "it went on measuring"
+    );
+    assert!(!out.exists());
 }

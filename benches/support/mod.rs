@@ -32,6 +32,9 @@ pub struct BenchConfig {
     pub nu_override: bool,
     /// Seconds for the paired ratios, over all (case, timed ν) together.
     pub ratio_seconds: f64,
+    /// Independent runs sharing those seconds, each in a fresh layout of the ray buffers
+    /// (see `torus_cull_lab::paired::runs`): the ratios get a between-run interval.
+    pub ratio_runs: u64,
 }
 
 /// The default timed ν subset: the full sweep stays in the (cheap) rejection counts.
@@ -63,6 +66,7 @@ impl BenchConfig {
                 small_bvh: true,
                 nu_override: false,
                 ratio_seconds: 2.0,
+                ratio_runs: 2,
             },
             "default" => BenchConfig {
                 name: "default",
@@ -76,6 +80,7 @@ impl BenchConfig {
                 small_bvh: false,
                 nu_override: false,
                 ratio_seconds: 60.0,
+                ratio_runs: 3,
             },
             "full" => BenchConfig {
                 name: "full",
@@ -89,6 +94,7 @@ impl BenchConfig {
                 small_bvh: false,
                 nu_override: false,
                 ratio_seconds: 120.0,
+                ratio_runs: 3,
             },
             other => {
                 return Err(format!(

@@ -1,8 +1,12 @@
 //! `torus-cull compare` on ratio records: the timing verdicts when both files have them.
 //!
 //! A `total_ns` ratio record is a **regression** when the cull's ratio against the same
-//! reference grew by more than the threshold *and* the two bootstrap intervals do not
-//! overlap; it is `faster` in the mirror case. `cull_ns` ratios are shown with the same
+//! reference grew by more than the threshold *and* the two intervals do not overlap; it
+//! is `faster` in the mirror case. The intervals are the between-run ones
+//! (`ratio_ci_between`, over `time --runs`' independent runs) when both records have
+//! them, else the within-run bootstrap intervals, which miss what moves a whole run
+//! (code and data placement, the machine's state; see [`crate::paired::runs`]). A note
+//! says how many runs stood behind each file. `cull_ns` ratios are shown with the same
 //! flags but decide nothing: on a loaded virtual machine a slow spell of the host that
 //! lasts a whole run moves them by 10–20 % (it slows throughput-bound code more than
 //! latency-bound code), while the `total_ns` ratios move by a few percent. A cull that got
@@ -43,8 +47,62 @@ pub(super) fn ratio_rows(old: &Results, new: &Results, threshold: f64, report: &
             }
         }
     }
+    report.notes.push(runs_note(old, new));
     for (key, o, n) in pair_up(&old.ratio, &new.ratio, ratio_key, report, "ratio") {
         report.rows.push(ratio_row(key, o, n, threshold));
+    }
+}
+
+/// How many runs stand behind each file's ratios (`1 run` for a file from before
+/// `--runs`), and which intervals the verdicts use.
+fn runs_note(old: &Results, new: &Results) -> String {
+    let runs = |r: &Results| {
+        let (lo, hi) = r.ratio.iter().fold((u64::MAX, 0), |(lo, hi), x| {
+            (lo.min(x.runs), hi.max(x.runs))
+        });
+        let plural = if hi == 1 { "" } else { "s" };
+        if lo == hi {
+            format!("{hi} run{plural}")
+        } else {
+            format!("{lo}-{hi} runs")
+        }
+    };
+    let between = |r: &Results| r.ratio.iter().all(|x| x.ratio_ci_between.is_some());
+    let how = match (between(old), between(new)) {
+        (true, true) => "timing verdicts by the between-run intervals".to_string(),
+        (o, n) => {
+            let lacking = match (o, n) {
+                (false, false) => "neither file has",
+                (false, true) => "the old file lacks",
+                _ => "the new file lacks",
+            };
+            format!(
+                "timing verdicts by the within-run (bootstrap) intervals, as {lacking} \
+                 between-run intervals (time --runs 2 or more): they miss what moves a whole \
+                 run, so a change of a few percent may be run-to-run noise"
+            )
+        }
+    };
+    format!(
+        "ratio records: old file {}, new file {} per record; {how}",
+        runs(old),
+        runs(new)
+    )
+}
+
+/// The intervals a verdict compares, and what to call them: the between-run intervals
+/// when both records have them (see [`crate::paired::runs`]), else the within-run ones.
+fn verdict_intervals(o: &RatioRecord, n: &RatioRecord) -> ([f64; 2], [f64; 2], String) {
+    match (o.ratio_ci_between, n.ratio_ci_between) {
+        (Some(a), Some(b)) => (
+            a,
+            b,
+            format!(
+                "between-run intervals disjoint ({} vs {} runs)",
+                o.runs, n.runs
+            ),
+        ),
+        _ => (o.ratio_ci, n.ratio_ci, "intervals disjoint".to_string()),
     }
 }
 
@@ -71,8 +129,9 @@ pub(super) fn ratio_key(r: &RatioRecord) -> String {
 
 fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> Row {
     let change = n.ratio / o.ratio - 1.0;
-    let worse_disjoint = n.ratio_ci[0] > o.ratio_ci[1];
-    let better_disjoint = n.ratio_ci[1] < o.ratio_ci[0];
+    let (o_ci, n_ci, disjoint) = verdict_intervals(o, n);
+    let worse_disjoint = n_ci[0] > o_ci[1];
+    let better_disjoint = n_ci[1] < o_ci[0];
     // Ratios of different batches differ by sampling alone.
     let same_batch = o.rays == n.rays;
     // Against `none` the ratio measures the exact intersection as much as the cull.
@@ -84,11 +143,10 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     let mut flags = Vec::new();
     let mut regression = false;
     if change > threshold && worse_disjoint && about_none {
-        flags.push(
-            "slower, intervals disjoint (against none: measures the exact intersection too, \
-             not a verdict)"
-                .to_string(),
-        );
+        flags.push(format!(
+            "slower, {disjoint} (against none: measures the exact intersection too, not a \
+                 verdict)"
+        ));
     } else if change > threshold && worse_disjoint && faster_reference && same_batch {
         flags.push(format!(
             "slower against {0}, but {0} itself got faster ({1:.2} -> {2:.2} ns/ray) and \
@@ -98,18 +156,18 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     } else if change > threshold && worse_disjoint && decides {
         regression = true;
         flags.push(format!(
-            "REGRESSION: {:+.1}% against {}, intervals disjoint",
+            "REGRESSION: {:+.1}% against {}, {disjoint}",
             change * 100.0,
             n.reference
         ));
     } else if change > threshold && worse_disjoint && !same_batch {
         flags.push(format!(
-            "slower, intervals disjoint (batches of {} and {} rays: not a verdict)",
+            "slower, {disjoint} (batches of {} and {} rays: not a verdict)",
             o.rays, n.rays
         ));
     } else if change > threshold && worse_disjoint {
         flags.push(format!(
-            "slower, intervals disjoint ({}: shown, not a verdict)",
+            "slower, {disjoint} ({}: shown, not a verdict)",
             n.metric
         ));
     } else {
@@ -154,6 +212,9 @@ mod tests {
             precision: "f64".into(),
             device: "cpu".into(),
             escalation_rate: None,
+            runs: 1,
+            run_ratios: Vec::new(),
+            ratio_ci_between: None,
         }
     }
 

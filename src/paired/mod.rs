@@ -25,10 +25,12 @@
 //!    bootstrap 95 % interval of that median (2000 seeded resamples), and the per-ray
 //!    median nanoseconds of both sides.
 //!
-//! The interval says how well this run pinned its own figure down. It does not cover a
-//! slow spell that lasts the whole run: on a loaded virtual machine the cull-alone
-//! ratios can then move by 10–20 % from run to run, the `total_ns` ratios by a few
-//! percent. Compare runs made on a quiet machine.
+//! The interval says how well this run pinned its own figure down. It does not cover
+//! what moves a whole run: code and data placement, a slow spell that lasts the whole
+//! run (on a loaded virtual machine the cull-alone ratios can then move by 10–20 % from
+//! run to run, the `total_ns` ratios by a few percent). [`runs`] measures that: K
+//! independent runs, each in a fresh layout, combined into a between-run interval beside
+//! the within-run one.
 //!
 //! A ratio below 1 means the cull is faster than the reference (0.25: four times as
 //! fast); 1/ratio is the median speedup (exactly so for an odd number of rounds).
@@ -41,11 +43,13 @@
 
 pub mod contender;
 pub mod engine;
+pub mod runs;
 pub mod stats;
 pub mod sweep;
 pub mod switches;
 
 pub use contender::Metric;
 pub use engine::{Interleaver, Rounds, Schedule, interleave};
+pub use runs::{between_run_interval, combine_runs};
 pub use stats::{RatioEstimate, bootstrap_median_ci, median, ratio_estimate};
 pub use sweep::{PairedOptions, REFERENCES, Unit, time_batch, time_units, time_workload};

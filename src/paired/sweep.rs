@@ -6,8 +6,8 @@ use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use crate::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord};
 use crate::workload::spec::Workload;
 use crate::workload::{Case, GenerateError, generate};
-use rand::SeedableRng;
 use rand::seq::SliceRandom;
+use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::fmt;
 use std::time::Duration;
@@ -42,6 +42,14 @@ pub struct PairedOptions {
     /// wavefront's `batch_f32_total_ns` and `batch_f32_uncertified_ns`, for the culls
     /// with a batch form) at this instruction set, in the same rounds as the scalar ones.
     pub batch_isa: Option<Isa>,
+    /// Which of several independent runs this is (0 for the first, or the only one). Run
+    /// 0 times the units as given; any other run times them in a fresh layout: its own
+    /// copy of each batch in a new allocation, placed after a padding allocation of
+    /// seeded size (0–256 KiB, so the buffers land at other addresses and cache sets), with
+    /// the rays in a seeded shuffled order, and the round orders and the bootstraps
+    /// seeded apart. The rays are the same, so every run measures the same ratios; what
+    /// differs is what a layout does to them (see [`crate::paired::runs`]).
+    pub run: u64,
 }
 
 /// Rays per batch unless told otherwise: about 0.02–0.2 ms per `total_ns` timing, so a
@@ -60,6 +68,7 @@ impl PairedOptions {
             visit: Duration::from_millis(100),
             min_rounds: 40,
             batch_isa: None,
+            run: 0,
         }
     }
 }
@@ -181,6 +190,8 @@ pub fn time_units(
         None => None,
     };
     let lineup = Lineup::new(culls, dispatch.is_some());
+    let layout = Layout::new(units, options.run);
+    let units = layout.units(units);
     let timed: Vec<Timed<'_>> = units
         .iter()
         .map(|&unit| Timed::new(unit, dispatch))
@@ -191,6 +202,60 @@ pub fn time_units(
         push_unit_records(&mut records, t, r, culls, &lineup)?;
     }
     Ok(records)
+}
+
+/// A run's fresh layout of the units (see [`PairedOptions::run`]): nothing for run 0;
+/// otherwise a padding allocation, then a shuffled copy of every batch.
+struct Layout {
+    run: u64,
+    /// Held while the run lasts, so that the copies below sit after it.
+    _padding: Vec<u8>,
+    rays: Vec<Vec<Ray>>,
+}
+
+impl Layout {
+    fn new(units: &[Unit<'_>], run: u64) -> Layout {
+        if run == 0 {
+            return Layout {
+                run,
+                _padding: Vec::new(),
+                rays: Vec::new(),
+            };
+        }
+        let mut rng = Pcg64::seed_from_u64(run.wrapping_mul(0xA076_1D64_78BD_642F));
+        // A multiple of 64 bytes up to 256 KiB, written so that the pages are really
+        // mapped.
+        let padding = vec![1u8; 64 * rng.random_range(0..4096usize)];
+        let rays = units
+            .iter()
+            .map(|u| {
+                let mut copy = u.rays.to_vec();
+                copy.shuffle(&mut rng);
+                copy
+            })
+            .collect();
+        Layout {
+            run,
+            _padding: std::hint::black_box(padding),
+            rays,
+        }
+    }
+
+    /// `units` in this layout: the copies, and seeds mixed with the run.
+    fn units<'a>(&'a self, units: &[Unit<'a>]) -> Vec<Unit<'a>> {
+        if self.run == 0 {
+            return units.to_vec();
+        }
+        units
+            .iter()
+            .zip(&self.rays)
+            .map(|(u, rays)| Unit {
+                rays,
+                seed: u.seed ^ self.run.wrapping_mul(0x9E37_79B9_7F4A_7C15),
+                ..*u
+            })
+            .collect()
+    }
 }
 
 /// What every round times: the culls asked for with the references, the metrics, and
@@ -349,6 +414,9 @@ fn push_unit_records(
                     precision: metric.precision().to_string(),
                     device: CPU_DEVICE.to_string(),
                     escalation_rate: escalation,
+                    runs: 1,
+                    run_ratios: Vec::new(),
+                    ratio_ci_between: None,
                 });
             }
         }
@@ -435,6 +503,7 @@ mod tests {
             visit: Duration::from_millis(20),
             min_rounds: 30,
             batch_isa: None,
+            run: 0,
         }
     }
 

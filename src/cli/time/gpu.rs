@@ -123,6 +123,9 @@ pub(super) fn run(
                     precision: F32_PRECISION.into(),
                     device: "gpu".into(),
                     escalation_rate: Some(escalated),
+                    runs: 1,
+                    run_ratios: Vec::new(),
+                    ratio_ci_between: None,
                 });
             }
             let ns = median(mine) / rays;

@@ -9,6 +9,7 @@ use torus_cull::CullKind;
 use torus_cull::Named;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::measure::CountedCull;
+use torus_cull_lab::paired::runs::combine_runs;
 use torus_cull_lab::paired::sweep::{
     DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
 };
@@ -76,7 +77,30 @@ pub struct TimeArgs {
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
     no_plots: bool,
+    /// Independent runs sharing `--seconds` (default 3; CPU only): each in a worker
+    /// process of its own (a fresh copy of this binary: its own code and data placement,
+    /// heap, and ray buffers shuffled and laid out afresh). Every ratio then carries,
+    /// besides the within-run interval of its rounds, a between-run interval over the
+    /// runs' ratios (`runs`, `run_ratios`, `ratio_ci_between`), which the console tables
+    /// show and `compare` judges by. More runs give a narrower between-run interval. 1:
+    /// one run in this process, with the within-run interval only.
+    #[arg(long)]
+    runs: Option<u64>,
+    /// Internal: this process is worker run K of a `--runs` timing (writes its records
+    /// to `--out`, prints no tables).
+    #[arg(long, hide = true)]
+    worker_run: Option<u64>,
 }
+
+/// `--runs` unless given.
+const DEFAULT_RUNS: u64 = 3;
+
+/// The most `--runs`.
+const MAX_RUNS: u64 = 100;
+
+/// The least time a run may have: below it a run is mostly its warm-up and its process
+/// start.
+const MIN_RUN_SECONDS: f64 = 0.25;
 
 /// Where `torus-cull time` measures.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -119,6 +143,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         if args.secondary {
             return Err("--secondary times the CPU's paths: not with --device gpu".into());
         }
+        if args.runs.is_some() {
+            return Err("--runs applies to the CPU's paired ratios: not with --device gpu".into());
+        }
         if args.mode == Mode::Both {
             return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
         }
@@ -140,10 +167,35 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             eprintln!("{note}");
         }
     }
-    let records = if args.secondary {
-        time_secondary(&workload, &nus, &culls, &options)?
+    let time_once = |options: &PairedOptions| {
+        if args.secondary {
+            time_secondary(&workload, &nus, &culls, options)
+        } else {
+            Ok(time_with_progress(&workload, &nus, &culls, options)?)
+        }
+    };
+    if let Some(run) = args.worker_run {
+        // A worker: its records only, for the parent to combine.
+        options.run = run;
+        let records = time_once(&options)?;
+        ratio_results(&workload, records, &nus, &options).save(&path)?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    let runs = args.runs.unwrap_or(DEFAULT_RUNS);
+    check_runs(runs, args.seconds)?;
+    let records = if runs == 1 {
+        time_once(&options)?
     } else {
-        time_with_progress(&workload, &nus, &culls, &options)?
+        let plan = WorkerPlan {
+            workload: &args.workload,
+            culls: &culls,
+            nus: &nus,
+            seconds: args.seconds / runs as f64,
+            batch,
+            mode: args.mode,
+            secondary: args.secondary,
+        };
+        time_in_workers(&plan, runs)?
     };
     let results = ratio_results(&workload, records, &nus, &options);
     out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
@@ -181,6 +233,105 @@ fn no_batch_form_note(culls: &[CullKind]) -> Option<String> {
         "note: --mode both: {} has no batch form and is timed one ray at a time only{rest}",
         scalar_only.join(", ")
     ))
+}
+
+/// `--runs`: 1 to [`MAX_RUNS`], each with at least [`MIN_RUN_SECONDS`] of `--seconds`.
+fn check_runs(runs: u64, seconds: f64) -> Result<(), String> {
+    if !(1..=MAX_RUNS).contains(&runs) {
+        return Err(format!(
+            "--runs {runs} is invalid (allowed: 1 ..= {MAX_RUNS})"
+        ));
+    }
+    if seconds / (runs as f64) < MIN_RUN_SECONDS {
+        return Err(format!(
+            "--seconds {seconds} is too short for --runs {runs} (allowed: seconds >= \
+             {MIN_RUN_SECONDS} x runs = {}): give more seconds or fewer runs",
+            MIN_RUN_SECONDS * runs as f64
+        ));
+    }
+    Ok(())
+}
+
+/// What every worker of a `--runs` timing is told to time: the parent's arguments as it
+/// parsed them, with its share of the seconds.
+struct WorkerPlan<'a> {
+    workload: &'a Path,
+    culls: &'a [CullKind],
+    nus: &'a [f64],
+    seconds: f64,
+    batch: usize,
+    mode: Mode,
+    secondary: bool,
+}
+
+impl WorkerPlan<'_> {
+    /// The command line of worker `run`, writing to `out`.
+    fn args(&self, run: u64, out: &Path) -> Vec<std::ffi::OsString> {
+        let mut args: Vec<std::ffi::OsString> = vec!["time".into(), "--workload".into()];
+        args.push(self.workload.as_os_str().to_owned());
+        let culls: Vec<&str> = self.culls.iter().map(|c| c.name()).collect();
+        let nus: Vec<String> = self.nus.iter().map(f64::to_string).collect();
+        for (flag, value) in [
+            ("--culls", culls.join(",")),
+            ("--nu", nus.join(",")),
+            ("--seconds", self.seconds.to_string()),
+            ("--batch", self.batch.to_string()),
+            (
+                "--mode",
+                match self.mode {
+                    Mode::Scalar => "scalar".into(),
+                    Mode::Both => "both".into(),
+                },
+            ),
+            ("--runs", "1".into()),
+            ("--worker-run", run.to_string()),
+        ] {
+            args.push(flag.into());
+            args.push(value.into());
+        }
+        if self.secondary {
+            args.push("--secondary".into());
+        }
+        args.push("--no-plots".into());
+        args.push("--out".into());
+        args.push(out.as_os_str().to_owned());
+        args
+    }
+}
+
+/// The paired ratios of `runs` independent runs, one worker process each (this binary
+/// again, one after the other so that they never share the cores), combined by
+/// [`combine_runs`]. A worker that fails fails the whole timing, with its exit status
+/// (its own message is on stderr above): nothing is written.
+fn time_in_workers(plan: &WorkerPlan<'_>, runs: u64) -> Result<Vec<RatioRecord>, String> {
+    let exe = std::env::current_exe()
+        .map_err(|e| format!("--runs {runs}: cannot find this binary to start workers: {e}"))?;
+    let dir = tempfile::tempdir()
+        .map_err(|e| format!("--runs {runs}: cannot make a directory for the workers: {e}"))?;
+    let mut all = Vec::new();
+    for run in 0..runs {
+        let out = dir.path().join(format!("run-{run}.json"));
+        eprintln!(
+            "run {} of {runs}: {:.1} s in a worker process",
+            run + 1,
+            plan.seconds
+        );
+        let status = std::process::Command::new(&exe)
+            .args(plan.args(run, &out))
+            .stdout(std::process::Stdio::null())
+            .status()
+            .map_err(|e| format!("--runs: cannot start worker run {}: {e}", run + 1))?;
+        if !status.success() {
+            return Err(format!(
+                "--runs: worker run {} of {runs} failed ({status}); no results written",
+                run + 1
+            ));
+        }
+        let results = Results::load(&out)
+            .map_err(|e| format!("--runs: worker run {} wrote no usable file: {e}", run + 1))?;
+        all.push(results.ratio);
+    }
+    combine_runs(&all).map_err(|e| format!("--runs: {e}"))
 }
 
 /// `--seconds`: positive, finite and at most [`MAX_SECONDS`].

@@ -1,0 +1,329 @@
+//! Several independent runs of the same paired ratios, combined: the within-run interval
+//! and the between-run interval side by side.
+//!
+//! One run's bootstrap interval measures round-to-round noise inside one process. It
+//! misses whatever moves a whole run: where the code and the data landed in memory
+//! (cache sets, alignment, physical pages), the machine's frequency and load while it
+//! ran. Two back-to-back runs of the quick workload moved some ratios by 2–5 % with
+//! disjoint intervals (issue 29). The remedy is to measure that effect: K runs, each in a
+//! fresh layout (`torus-cull time`: a worker process each; `cargo bench`: fresh buffers in
+//! one process, see [`crate::paired::sweep::PairedOptions::run`]), and an interval over
+//! the K run ratios.
+//!
+//! For one record with run ratios `rₖ` and run intervals `[loₖ, hiₖ]`, on the log scale
+//! `yₖ = ln rₖ` (a ratio's noise is multiplicative, and ln makes r and 1/r symmetric):
+//!
+//! * ratio: the geometric mean, `exp(ȳ)`, `ȳ = Σ yₖ / K`;
+//! * within-run interval: `exp(ȳ − √(Σ (yₖ − ln loₖ)²) / K)` to
+//!   `exp(ȳ + √(Σ (ln hiₖ − yₖ)²) / K)`: each side's half-width combined as the standard
+//!   error of a mean of K independent estimates, so the interval the rounds alone would
+//!   give if the runs did not differ (for K = 1, the run's own interval);
+//! * between-run interval: `exp(ȳ ± t₀.₉₇₅,K−1 · s / √K)`, `s` the sample standard
+//!   deviation of the `yₖ` (Student's t: the K run ratios are K draws of a run's result,
+//!   which holds within- and between-run noise alike), widened where needed to hold the
+//!   within-run interval: a few runs that happen to agree do not make a figure surer than
+//!   its rounds.
+//!
+//! With K = 3 the t quantile is 4.30, so the between-run interval is wide unless the runs
+//! agree closely: it is what three runs can honestly promise. More runs narrow it.
+
+use crate::results::RatioRecord;
+use std::fmt;
+
+/// The two-sided 95 % quantile of Student's t with `df` degrees of freedom, `t₀.₉₇₅,df`:
+/// tabulated (to 3 decimals) up to 30, and beyond by the Cornish–Fisher expansion
+/// `z + (z³ + z)/(4 df) + (5z⁵ + 16z³ + 3z)/(96 df²)` with `z = 1.959964` (error below
+/// 0.001 there). `NaN` for `df = 0`.
+pub fn t_975(df: usize) -> f64 {
+    const TABLE: [f64; 30] = [
+        12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160,
+        2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056,
+        2.052, 2.048, 2.045, 2.042,
+    ];
+    match df {
+        0 => f64::NAN,
+        1..=30 => TABLE[df - 1],
+        _ => {
+            let z: f64 = 1.959_964;
+            let d = df as f64;
+            z + (z.powi(3) + z) / (4.0 * d)
+                + (5.0 * z.powi(5) + 16.0 * z.powi(3) + 3.0 * z) / (96.0 * d * d)
+        }
+    }
+}
+
+/// The between-run 95 % interval of the geometric mean of `run_ratios` (see the module
+/// text): `exp(ȳ ± t₀.₉₇₅,K−1 · s / √K)` on `yₖ = ln rₖ`. `None` for fewer than two runs
+/// or a ratio that is not a positive finite number.
+pub fn between_run_interval(run_ratios: &[f64]) -> Option<[f64; 2]> {
+    let k = run_ratios.len();
+    if k < 2 || !run_ratios.iter().all(|r| r.is_finite() && *r > 0.0) {
+        return None;
+    }
+    let y: Vec<f64> = run_ratios.iter().map(|r| r.ln()).collect();
+    let mean = y.iter().sum::<f64>() / k as f64;
+    let var = y.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (k - 1) as f64;
+    let half = t_975(k - 1) * (var / k as f64).sqrt();
+    Some([(mean - half).exp(), (mean + half).exp()])
+}
+
+/// The within-run interval of K runs pooled (see the module text), around the geometric
+/// mean of `run_ratios`, from each run's interval `run_cis`; for one run, its own interval.
+pub fn pooled_within_interval(run_ratios: &[f64], run_cis: &[[f64; 2]]) -> [f64; 2] {
+    let k = run_ratios.len() as f64;
+    let mean = run_ratios.iter().map(|r| r.ln()).sum::<f64>() / k;
+    let side = |f: &dyn Fn(f64, [f64; 2]) -> f64| {
+        run_ratios
+            .iter()
+            .zip(run_cis)
+            .map(|(&r, &ci)| f(r.ln(), ci).max(0.0).powi(2))
+            .sum::<f64>()
+            .sqrt()
+            / k
+    };
+    let below = side(&|y, ci| y - ci[0].ln());
+    let above = side(&|y, ci| ci[1].ln() - y);
+    [(mean - below).exp(), (mean + above).exp()]
+}
+
+/// Why runs could not be combined: they do not hold the same records.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunsDiffer {
+    /// The run (from 1) that differs from the first.
+    pub run: usize,
+    /// What differs.
+    pub what: String,
+}
+
+impl fmt::Display for RunsDiffer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "run {} does not hold the same ratio records as run 1: {}",
+            self.run, self.what
+        )
+    }
+}
+
+impl std::error::Error for RunsDiffer {}
+
+/// The identity of a record: what must agree across runs.
+fn identity(r: &RatioRecord) -> (&str, f64, &str, &str, &str, &str, &str, u64) {
+    (
+        &r.case,
+        r.nu,
+        &r.cull,
+        &r.reference,
+        &r.metric,
+        &r.precision,
+        &r.device,
+        r.rays,
+    )
+}
+
+/// The median of `values` (not empty).
+fn median_of(values: impl Iterator<Item = f64>) -> f64 {
+    super::stats::median(&mut values.collect::<Vec<f64>>())
+}
+
+/// One record per record of the runs, combining the K runs' records in the same place
+/// (every run holds the same records, in the same order): the ratio, within-run and
+/// between-run intervals of the module text, `runs = K`, the run ratios, the rounds summed
+/// and the ns per ray the median over the runs. A single run's records come back as they
+/// were. Fails, naming the run and the record, when the runs' records differ.
+pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsDiffer> {
+    let Some(first) = runs.first() else {
+        return Ok(Vec::new());
+    };
+    if runs.len() == 1 {
+        return Ok(first.clone());
+    }
+    for (k, run) in runs.iter().enumerate().skip(1) {
+        if run.len() != first.len() {
+            return Err(RunsDiffer {
+                run: k + 1,
+                what: format!("{} records, not {}", run.len(), first.len()),
+            });
+        }
+        if let Some((a, b)) = first
+            .iter()
+            .zip(run)
+            .find(|(a, b)| identity(a) != identity(b))
+        {
+            return Err(RunsDiffer {
+                run: k + 1,
+                what: format!("{:?} where run 1 has {:?}", identity(b), identity(a)),
+            });
+        }
+    }
+    let combined = (0..first.len())
+        .map(|i| {
+            let of_runs: Vec<&RatioRecord> = runs.iter().map(|run| &run[i]).collect();
+            let ratios: Vec<f64> = of_runs.iter().map(|r| r.ratio).collect();
+            let cis: Vec<[f64; 2]> = of_runs.iter().map(|r| r.ratio_ci).collect();
+            let within = pooled_within_interval(&ratios, &cis);
+            let between = between_run_interval(&ratios)
+                .map(|[lo, hi]| [lo.min(within[0]), hi.max(within[1])]);
+            let mean = ratios.iter().map(|r| r.ln()).sum::<f64>() / ratios.len() as f64;
+            RatioRecord {
+                ratio: mean.exp(),
+                ratio_ci: within,
+                rounds: of_runs.iter().map(|r| r.rounds).sum(),
+                rounds_measured: of_runs.iter().map(|r| r.rounds_measured).sum(),
+                ns_per_ray: median_of(of_runs.iter().map(|r| r.ns_per_ray)),
+                reference_ns_per_ray: median_of(of_runs.iter().map(|r| r.reference_ns_per_ray)),
+                runs: runs.len() as u64,
+                run_ratios: ratios,
+                ratio_ci_between: between,
+                ..first[i].clone()
+            }
+        })
+        .collect();
+    Ok(combined)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::RngExt;
+    use rand::SeedableRng;
+    use rand_pcg::Pcg64;
+
+    fn record(ratio: f64, ci: [f64; 2]) -> RatioRecord {
+        RatioRecord {
+            case: "hole".into(),
+            nu: 8.0,
+            cull: "skala".into(),
+            reference: "cychosz".into(),
+            metric: "total_ns".into(),
+            ratio,
+            ratio_ci: ci,
+            rounds: 100,
+            rounds_measured: 400,
+            rays: 1024,
+            ns_per_ray: 10.0 * ratio,
+            reference_ns_per_ray: 10.0,
+            precision: "f64".into(),
+            device: "cpu".into(),
+            escalation_rate: None,
+            runs: 1,
+            run_ratios: Vec::new(),
+            ratio_ci_between: None,
+        }
+    }
+
+    #[test]
+    fn t_quantiles_match_the_table_and_the_normal_limit() {
+        assert!(t_975(0).is_nan());
+        assert_eq!(t_975(1), 12.706);
+        assert_eq!(t_975(2), 4.303);
+        // The expansion joins the table smoothly and tends to the normal quantile.
+        assert!((t_975(31) - 2.040).abs() < 0.001, "{}", t_975(31));
+        assert!((t_975(60) - 2.000).abs() < 0.001, "{}", t_975(60));
+        assert!((t_975(120) - 1.980).abs() < 0.001, "{}", t_975(120));
+        assert!((t_975(100_000) - 1.960).abs() < 0.001);
+        assert!((1..200).all(|d| t_975(d + 1) < t_975(d)));
+    }
+
+    /// Worked by hand: ratios 1, e^0.1, e^0.2 have ȳ = 0.1, s = 0.1, so the interval is
+    /// exp(0.1 ± 4.303 · 0.1 / √3).
+    #[test]
+    fn between_run_interval_by_hand() {
+        let r = [1.0, 0.1f64.exp(), 0.2f64.exp()];
+        let [lo, hi] = between_run_interval(&r).unwrap();
+        let half = 4.303 * 0.1 / 3f64.sqrt();
+        assert!((lo.ln() - (0.1 - half)).abs() < 1e-12, "{lo}");
+        assert!((hi.ln() - (0.1 + half)).abs() < 1e-12, "{hi}");
+        // Symmetric in r ↔ 1/r: the interval of the inverses is the inverse interval.
+        let inv: Vec<f64> = r.iter().map(|x| 1.0 / x).collect();
+        let [ilo, ihi] = between_run_interval(&inv).unwrap();
+        assert!((ilo - 1.0 / hi).abs() < 1e-12 && (ihi - 1.0 / lo).abs() < 1e-12);
+        // Identical runs: a zero-width interval (combine_runs widens it to the within one).
+        assert_eq!(between_run_interval(&[2.0, 2.0]), Some([2.0, 2.0]));
+        assert_eq!(between_run_interval(&[2.0]), None);
+        assert_eq!(between_run_interval(&[2.0, 0.0]), None);
+        assert_eq!(between_run_interval(&[2.0, f64::NAN]), None);
+    }
+
+    /// Runs whose ratio is shifted by a run-wide effect (σ_b = 2 % on the log scale) plus
+    /// round noise: the between-run interval covers the true ratio about 95 % of the time,
+    /// while the pooled within-run interval, which sees only the round noise (σ_w =
+    /// 0.3 %), covers it far less often: the blind spot of issue 29.
+    #[test]
+    fn between_run_interval_covers_a_run_wide_effect_and_the_within_one_does_not() {
+        let mut rng = Pcg64::seed_from_u64(29);
+        let mut normal = || {
+            let u1: f64 = 1.0 - rng.random::<f64>();
+            let u2: f64 = rng.random();
+            (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+        };
+        let (truth, sigma_b, sigma_w) = (0.8f64, 0.02, 0.003);
+        let trials = 1000;
+        let (mut between, mut within) = (0, 0);
+        for _ in 0..trials {
+            let runs: Vec<Vec<RatioRecord>> = (0..3)
+                .map(|_| {
+                    let y = truth.ln() + sigma_b * normal() + sigma_w * normal();
+                    let h = 1.96 * sigma_w;
+                    vec![record(y.exp(), [(y - h).exp(), (y + h).exp()])]
+                })
+                .collect();
+            let c = &combine_runs(&runs).unwrap()[0];
+            let [lo, hi] = c.ratio_ci_between.unwrap();
+            between += usize::from(lo <= truth && truth <= hi);
+            within += usize::from(c.ratio_ci[0] <= truth && truth <= c.ratio_ci[1]);
+        }
+        // Binomial(1000, 0.95) lies in [925, 975] with probability > 0.999.
+        assert!((925..=975).contains(&between), "between covered {between}");
+        // The within interval (half-width 1.96 · 0.003 / √3) covers a spread of about
+        // 0.02 / √3 ≈ 0.0116 about 23 % of the time.
+        assert!(within < 400, "within covered {within}");
+    }
+
+    #[test]
+    fn combined_record_fields() {
+        let a = record(1.0, [0.99, 1.01]);
+        let b = record(1.1, [1.08, 1.12]);
+        let c = record(1.05, [1.04, 1.06]);
+        let runs = vec![vec![a.clone()], vec![b], vec![c]];
+        let x = &combine_runs(&runs).unwrap()[0];
+        let gm = (1.0f64 * 1.1 * 1.05).powf(1.0 / 3.0);
+        assert!((x.ratio - gm).abs() < 1e-12);
+        assert_eq!(x.runs, 3);
+        assert_eq!(x.run_ratios, [1.0, 1.1, 1.05]);
+        assert_eq!((x.rounds, x.rounds_measured), (300, 1200));
+        assert_eq!(x.ns_per_ray, 10.5);
+        let [lo, hi] = x.ratio_ci;
+        assert!(lo < x.ratio && x.ratio < hi);
+        // Pooled: narrower than every single run's interval (on the log scale; the
+        // narrowest is the third's, ln(1.06 / 1.04)).
+        assert!((hi / lo).ln() < (1.06f64 / 1.04).ln(), "{:?}", x.ratio_ci);
+        let below = ((1.0f64 / 0.99).ln().powi(2)
+            + (1.1f64 / 1.08).ln().powi(2)
+            + (1.05f64 / 1.04).ln().powi(2))
+        .sqrt()
+            / 3.0;
+        assert!((lo.ln() - (gm.ln() - below)).abs() < 1e-12, "{lo}");
+        let [blo, bhi] = x.ratio_ci_between.unwrap();
+        assert!(blo <= lo && hi <= bhi, "between holds within");
+        assert!(
+            blo < 1.0 && 1.1 < bhi,
+            "three runs 10 % apart: a wide interval"
+        );
+        // One run: its records unchanged.
+        assert_eq!(combine_runs(&[vec![a.clone()]]).unwrap(), vec![a.clone()]);
+        // Runs that agree exactly: the between interval is the within one.
+        let same = combine_runs(&[vec![a.clone()], vec![a.clone()]]).unwrap();
+        assert_eq!(same[0].ratio_ci_between, Some(same[0].ratio_ci));
+        // Runs of different records are refused, naming the run.
+        let other = RatioRecord {
+            cull: "aabb".into(),
+            ..a.clone()
+        };
+        let e = combine_runs(&[vec![a.clone()], vec![a.clone()], vec![other]]).unwrap_err();
+        assert_eq!(e.run, 3);
+        assert!(e.to_string().contains("aabb"), "{e}");
+        let e = combine_runs(&[vec![a.clone()], vec![]]).unwrap_err();
+        assert!(e.to_string().contains("0 records, not 1"), "{e}");
+    }
+}
