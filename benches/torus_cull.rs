@@ -656,11 +656,8 @@ fn paired_ratios(
     let units: Vec<paired::Unit<'_>> = batches
         .iter()
         .map(|l| paired::Unit {
-            case: l.batch.case,
-            nu: l.batch.nu,
-            torus: &l.batch.torus,
             rays: &l.batch.rays[..rays.min(l.batch.rays.len())],
-            seed: l.batch.stream_seed,
+            ..paired::Unit::of(&l.batch)
         })
         .collect();
     // The runs share the seconds; each lays the buffers out afresh in this process (a

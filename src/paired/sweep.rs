@@ -5,7 +5,7 @@ use super::engine::Interleaver;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use crate::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord};
 use crate::workload::spec::Workload;
-use crate::workload::{Case, GenerateError, generate};
+use crate::workload::{Batch, Case, GenerateError, generate};
 use rand::seq::SliceRandom;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -125,6 +125,20 @@ pub struct Unit<'a> {
     pub rays: &'a [Ray],
     /// Seeds the round order and the bootstrap.
     pub seed: u64,
+}
+
+impl<'a> Unit<'a> {
+    /// A generated batch as a unit, seeded by its stream seed.
+    #[must_use]
+    pub fn of(batch: &'a Batch) -> Unit<'a> {
+        Unit {
+            case: batch.case,
+            nu: batch.nu,
+            torus: &batch.torus,
+            rays: &batch.rays,
+            seed: batch.stream_seed,
+        }
+    }
 }
 
 /// A unit ready to time: its batch in every form and its cull-alone repetitions.
@@ -477,16 +491,7 @@ pub fn time_workload(
             )?);
         }
     }
-    let units: Vec<Unit<'_>> = batches
-        .iter()
-        .map(|b| Unit {
-            case: b.case,
-            nu: b.nu,
-            torus: &b.torus,
-            rays: &b.rays,
-            seed: b.stream_seed,
-        })
-        .collect();
+    let units: Vec<Unit<'_>> = batches.iter().map(Unit::of).collect();
     time_units(&units, culls, options, progress)
 }
 
@@ -508,13 +513,7 @@ mod tests {
     }
 
     fn unit(b: &crate::workload::Batch) -> Unit<'_> {
-        Unit {
-            case: b.case,
-            nu: b.nu,
-            torus: &b.torus,
-            rays: &b.rays,
-            seed: b.stream_seed,
-        }
+        Unit::of(b)
     }
 
     /// With a batch level: the batch metrics for the culls with a batch form, in the

@@ -463,13 +463,7 @@ fn time_secondary(
     }
     let units: Vec<torus_cull_lab::paired::Unit<'_>> = batches
         .iter()
-        .map(|b| torus_cull_lab::paired::Unit {
-            case: b.case,
-            nu: b.nu,
-            torus: &b.torus,
-            rays: &b.rays,
-            seed: b.stream_seed,
-        })
+        .map(torus_cull_lab::paired::Unit::of)
         .collect();
     let mut records = torus_cull_lab::paired::time_units(&units, culls, options, &mut |_, _| {})?;
     for r in &mut records {

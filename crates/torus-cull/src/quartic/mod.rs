@@ -102,9 +102,10 @@ pub(super) fn eval2(c: &[f64; 5], x: f64) -> (f64, f64, f64) {
     (f, df, d2f)
 }
 
-/// `f(x)` and `f'(x)` for `c = [c4, c3, c2, c1, c0]`, Horner.
+/// `f(x)` and `f'(x)` for the coefficients `c`, highest degree first (`[c4, c3, c2, c1,
+/// c0]` for a quartic), Horner.
 #[inline]
-pub(crate) fn eval(c: &[f64; 5], x: f64) -> (f64, f64) {
+pub(crate) fn eval(c: &[f64], x: f64) -> (f64, f64) {
     let mut f = c[0];
     let mut df = 0.0;
     for &ci in &c[1..] {

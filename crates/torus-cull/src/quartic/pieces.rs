@@ -14,22 +14,10 @@
 //! "High-Performance Polynomial Root Finding for Graphics" (HPG 2022), without its
 //! speed-ups.
 
-use super::{EPS, RealRoots};
+use super::{EPS, RealRoots, eval};
 
 /// Below this multiple of ε·Σ|cᵢ||x|ⁱ, `f` at a critical point is a double root.
 const TOUCH: f64 = 16.0;
-
-/// `f(x)` and `f′(x)` for the coefficients `c` (highest degree first), Horner.
-#[inline]
-fn eval(c: &[f64], x: f64) -> (f64, f64) {
-    let mut f = c[0];
-    let mut df = 0.0;
-    for &ci in &c[1..] {
-        df = df * x + f;
-        f = f * x + ci;
-    }
-    (f, df)
-}
 
 /// `Σ|cᵢ||x|ⁱ`: what `f(x)`'s rounding is measured by.
 #[inline]
