@@ -77,7 +77,8 @@ pub struct TimeArgs {
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
     no_plots: bool,
-    /// Independent runs sharing `--seconds` (default 3; CPU only): each in a worker
+    /// Independent runs sharing `--seconds` (default 3, fewer where `--seconds` is under
+    /// 0.75, each run having at least 0.25 s; CPU only): each in a worker
     /// process of its own (a fresh copy of this binary: its own code and data placement,
     /// heap, and ray buffers shuffled and laid out afresh). Every ratio then carries,
     /// besides the within-run interval of its rounds, a between-run interval over the
@@ -181,7 +182,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         ratio_results(&workload, records, &nus, &options).save(&path)?;
         return Ok(ExitCode::SUCCESS);
     }
-    let runs = args.runs.unwrap_or(DEFAULT_RUNS);
+    // Unless asked for, as many runs as `--seconds` allows, up to the default.
+    let runs = args.runs.unwrap_or_else(|| {
+        ((args.seconds / MIN_RUN_SECONDS).floor() as u64).clamp(1, DEFAULT_RUNS)
+    });
     check_runs(runs, args.seconds)?;
     let records = if runs == 1 {
         time_once(&options)?
