@@ -232,36 +232,30 @@ fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
 }
 
 fn timing_row(key: String, o: &TimingRecord, n: &TimingRecord, threshold: f64) -> Row {
-    let change = n.total_ns / o.total_ns - 1.0;
-    let disjoint = n.total_ns_ci[0] > o.total_ns_ci[1] || n.total_ns_ci[1] < o.total_ns_ci[0];
-    let regression = change > threshold && disjoint;
-    let flags = if regression {
-        vec![format!(
-            "REGRESSION: {:+.1}% slower, intervals disjoint",
-            change * 100.0
-        )]
-    } else {
-        noise_or_faster(change, threshold, disjoint)
-            .into_iter()
-            .collect()
-    };
-    Row {
-        section: "timing",
-        key,
-        metric: "total_ns",
-        old: o.total_ns,
-        new: n.total_ns,
-        flags,
-        regression,
-    }
+    let old = (o.total_ns, o.total_ns_ci);
+    let new = (n.total_ns, n.total_ns_ci);
+    time_row(("timing", "total_ns"), key, old, new, threshold)
 }
 
 /// An estimate (ns per element with its interval): slower by more than the threshold with
 /// disjoint intervals is a regression, as for a criterion timing.
 fn estimate_row(key: String, o: &EstimateRecord, n: &EstimateRecord, threshold: f64) -> Row {
-    let change = n.ns_per_element / o.ns_per_element - 1.0;
-    let (a, b) = (o.ns_per_element_ci, n.ns_per_element_ci);
-    let disjoint = b[0] > a[1] || b[1] < a[0];
+    let old = (o.ns_per_element, o.ns_per_element_ci);
+    let new = (n.ns_per_element, n.ns_per_element_ci);
+    time_row(("estimate", "ns_per_element"), key, old, new, threshold)
+}
+
+/// A time with its interval, old against new: slower by more than the threshold with
+/// disjoint intervals is a regression.
+fn time_row(
+    (section, metric): (&'static str, &'static str),
+    key: String,
+    (old, old_ci): (f64, [f64; 2]),
+    (new, new_ci): (f64, [f64; 2]),
+    threshold: f64,
+) -> Row {
+    let change = new / old - 1.0;
+    let disjoint = new_ci[0] > old_ci[1] || new_ci[1] < old_ci[0];
     let regression = change > threshold && disjoint;
     let flags = if regression {
         vec![format!(
@@ -274,11 +268,11 @@ fn estimate_row(key: String, o: &EstimateRecord, n: &EstimateRecord, threshold: 
             .collect()
     };
     Row {
-        section: "estimate",
+        section,
         key,
-        metric: "ns_per_element",
-        old: o.ns_per_element,
-        new: n.ns_per_element,
+        metric,
+        old,
+        new,
         flags,
         regression,
     }
