@@ -482,23 +482,11 @@ impl GpuIntersector {
         rays: &[Ray],
     ) -> Result<Vec<(F32Verdict, Option<Escalation>)>, GpuError> {
         let mut out = Vec::with_capacity(rays.len());
-        self.run(
-            torus,
-            cull,
-            Mode::Intersect,
-            rays,
-            |batch, packed, records| {
-                for ((ray, p), &w) in batch.iter().zip(packed).zip(records) {
-                    out.push(if !p.sendable {
-                        (F32Verdict::Escalate, Some(Escalation::FarOrigin))
-                    } else if let Some(answer) = host_answer(torus, ray) {
-                        answer
-                    } else {
-                        shifted(verdict(w), p.t0)
-                    });
-                }
-            },
-        )?;
+        self.run(torus, cull, Mode::Intersect, rays, |packed, records| {
+            for (p, &w) in packed.iter().zip(records) {
+                out.push(p.host.unwrap_or_else(|| shifted(verdict(w), p.t0)));
+            }
+        })?;
         Ok(out)
     }
 
@@ -512,7 +500,7 @@ impl GpuIntersector {
         rays: &[Ray],
     ) -> Result<Vec<bool>, GpuError> {
         let mut out = Vec::with_capacity(rays.len());
-        self.run(torus, cull, Mode::CullOnly, rays, |_, packed, records| {
+        self.run(torus, cull, Mode::CullOnly, rays, |packed, records| {
             for (p, w) in packed.iter().zip(records) {
                 out.push(!p.sendable || w[4] != 0.0);
             }
@@ -521,14 +509,15 @@ impl GpuIntersector {
     }
 
     /// Runs the kernel in `mode` over `rays`, in dispatches of up to [`CHUNK`] rays, and
-    /// hands each dispatch's rays, their packing and their result records to `each`.
+    /// hands each dispatch's packed rays ([`Frame::prepare`]) and their result records to
+    /// `each`.
     pub(crate) fn run(
         &self,
         torus: &Torus,
         cull: GpuCull,
         mode: Mode,
         rays: &[Ray],
-        mut each: impl FnMut(&[Ray], &[Packed], &[[f32; 8]]),
+        mut each: impl FnMut(&[Packed], &[[f32; 8]]),
     ) -> Result<(), GpuError> {
         if rays.is_empty() {
             return Ok(());
@@ -542,16 +531,13 @@ impl GpuIntersector {
         let frame = Frame::of(torus);
         for batch in rays.chunks(CHUNK) {
             // A ray from a surface point goes as its literal ray past the origin's root.
-            let packed: Vec<Packed> = batch
-                .iter()
-                .map(|ray| frame.pack(&frame.kernel_ray(ray).0))
-                .collect();
+            let packed: Vec<Packed> = batch.iter().map(|ray| frame.prepare(ray)).collect();
             match self.dispatch(
                 buffers,
                 &frame.params(batch.len() as u32, cull, mode),
                 &packed,
             ) {
-                Ok(records) => each(batch, &packed, &records),
+                Ok(records) => each(&packed, &records),
                 Err(e) => {
                     // The staging buffer may be left mapped: the next call makes new ones.
                     *cache = None;
@@ -599,27 +585,12 @@ impl GpuIntersector {
         encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
         self.queue.submit([encoder.finish()]);
         let slice = staging.slice(..bytes);
-        let (tx, rx) = mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        rx.recv()
-            .map_err(|e| GpuError::Readback(e.to_string()))?
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        self.map_read(&slice)?;
         let records = {
             let view = slice
                 .get_mapped_range()
                 .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-            view.chunks_exact(RAY_BYTES as usize)
-                .map(|record| {
-                    std::array::from_fn(|k| {
-                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
-                    })
-                })
-                .collect()
+            decode_records(&view).collect()
         };
         staging.unmap();
         Ok(records)
@@ -652,24 +623,29 @@ pub(crate) enum Mode {
     CullOnly = 1,
 }
 
-/// The host's own answer for a ray from a surface point that is not sent as a literal ray
-/// ([`Frame::kernel_ray`]): a proved miss, or escalated.
-fn host_answer(torus: &Torus, ray: &Ray) -> Option<(F32Verdict, Option<Escalation>)> {
-    ray.starts_on_surface()
-        .then(|| on_surface_answer(crate::certified::on_surface::start(torus, ray)))
-        .flatten()
+impl GpuIntersector {
+    /// Maps `slice` for reading and waits for it.
+    fn map_read(&self, slice: &wgpu::BufferSlice<'_>) -> Result<(), GpuError> {
+        let (tx, rx) = mpsc::channel();
+        slice.map_async(wgpu::MapMode::Read, move |r| {
+            let _ = tx.send(r);
+        });
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        rx.recv()
+            .map_err(|e| GpuError::Readback(e.to_string()))?
+            .map_err(|e| GpuError::Readback(e.to_string()))
+    }
 }
 
-/// [`Frame::kernel_ray`]'s host answer for a start.
-fn on_surface_answer(
-    start: crate::certified::on_surface::Start,
-) -> Option<(F32Verdict, Option<Escalation>)> {
-    use crate::certified::on_surface::Start;
-    match start {
-        Start::Literal(_) => None,
-        Start::Miss => Some((F32Verdict::Miss, None)),
-        Start::Escalate => Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
-    }
+/// The result records `(t, n.xyz, code, why, 0, 0)` of mapped result bytes.
+fn decode_records(bytes: &[u8]) -> impl Iterator<Item = [f32; 8]> + '_ {
+    bytes.chunks_exact(RAY_BYTES as usize).map(|record| {
+        std::array::from_fn(|k| {
+            f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
+        })
+    })
 }
 
 /// A result record `(t, n.xyz, code, why, 0, 0)` as a verdict and, for an escalated ray,
@@ -808,6 +784,8 @@ pub(crate) struct Packed {
     pub(crate) t0: f64,
     /// Within [`FAR_REL`]·R of the centre: the kernel may answer.
     pub(crate) sendable: bool,
+    /// The host's own answer, whatever the kernel writes ([`Frame::prepare`]).
+    pub(crate) host: Option<(F32Verdict, Option<Escalation>)>,
 }
 
 impl Frame {
@@ -827,19 +805,32 @@ impl Frame {
         }
     }
 
-    /// The ray the kernel is given for `ray`, and the host's own answer where it has one.
-    /// A ray from a surface point goes as the literal ray past its origin's own root
+    /// `ray` packed for the kernel ([`Frame::pack`]), with the host's own answer where it
+    /// has one: an origin beyond [`FAR_REL`]·R escalates ([`Escalation::FarOrigin`]); a ray
+    /// from a surface point goes as the literal ray past its origin's own root
     /// ([`crate::certified::on_surface`]), or is answered here when it has no such start:
     /// a proved miss (its range ends first), or escalated (it goes into the tube).
-    pub(crate) fn kernel_ray(&self, ray: &Ray) -> (Ray, Option<(F32Verdict, Option<Escalation>)>) {
+    pub(crate) fn prepare(&self, ray: &Ray) -> Packed {
         use crate::certified::on_surface::{Start, start};
-        if !ray.starts_on_surface() {
-            return (*ray, None);
-        }
-        match start(&self.torus, ray) {
-            Start::Literal(literal) => (literal, None),
-            other => (*ray, on_surface_answer(other)),
-        }
+        let (sent, on_surface) = if ray.starts_on_surface() {
+            match start(&self.torus, ray) {
+                Start::Literal(literal) => (literal, None),
+                Start::Miss => (*ray, Some((F32Verdict::Miss, None))),
+                Start::Escalate => (
+                    *ray,
+                    Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
+                ),
+            }
+        } else {
+            (*ray, None)
+        };
+        let mut packed = self.pack(&sent);
+        packed.host = if packed.sendable {
+            on_surface
+        } else {
+            Some((F32Verdict::Escalate, Some(Escalation::FarOrigin)))
+        };
+        packed
     }
 
     /// The uniform block: the torus ([`Frame::torus_params`]); the count, the cull and
@@ -918,6 +909,7 @@ impl Frame {
             words: [o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max],
             t0,
             sendable,
+            host: None,
         }
     }
 }

@@ -86,17 +86,11 @@ impl ModuleTorus {
     /// - an origin beyond 2²⁰·R: [`Escalation::FarOrigin`] (the f64 foot point's own error
     ///   would no longer be negligible beside the kernel's line error bound).
     pub fn prepare(&self, ray: &Ray) -> PreparedRay {
-        let (sent, on_surface) = self.frame.kernel_ray(ray);
-        let packed = self.frame.pack(&sent);
-        let host = if !packed.sendable {
-            Some((F32Verdict::Escalate, Some(Escalation::FarOrigin)))
-        } else {
-            on_surface
-        };
+        let packed = self.frame.prepare(ray);
         PreparedRay {
             words: packed.words,
             t0: packed.t0,
-            host,
+            host: packed.host,
         }
     }
 }

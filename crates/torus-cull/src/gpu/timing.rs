@@ -11,11 +11,10 @@
 //! apart).
 
 use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
-use super::{Mode, WORKGROUP, as_bytes, shifted, verdict};
+use super::{Mode, WORKGROUP, as_bytes, decode_records, shifted, verdict};
 use crate::Ray;
 use crate::Torus;
 use crate::certified::F32Verdict;
-use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 /// A batch of rays packed and uploaded once, for timing the kernel alone.
@@ -77,14 +76,10 @@ impl GpuIntersector {
             let buffers = self.buffers(batch.len());
             let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
             for (i, ray) in batch.iter().enumerate() {
-                let (ray, answer) = frame.kernel_ray(ray);
-                let p = frame.pack(&ray);
+                let p = frame.prepare(ray);
                 packed.extend_from_slice(&p.words);
                 shifts.push(p.t0);
-                if !p.sendable {
-                    let far = (F32Verdict::Escalate, Some(Escalation::FarOrigin));
-                    host.push((k * CHUNK + i, far));
-                } else if let Some(answer) = answer {
+                if let Some(answer) = p.host {
                     host.push((k * CHUNK + i, answer));
                 }
             }
@@ -288,15 +283,12 @@ impl ResidentRays<'_> {
         for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
             let bytes = count as u64 * RAY_BYTES;
             let slice = buffers.staging.slice(..bytes);
-            map(gpu, &slice)?;
+            gpu.map_read(&slice)?;
             {
                 let view = slice
                     .get_mapped_range()
                     .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-                for record in view.chunks_exact(RAY_BYTES as usize) {
-                    let w: [f32; 8] = std::array::from_fn(|k| {
-                        f32::from_le_bytes(record[4 * k..4 * k + 4].try_into().expect("4 bytes"))
-                    });
+                for w in decode_records(&view) {
                     let t0 = self.shifts[out.len()];
                     out.push(shifted(verdict(w), t0));
                 }
@@ -310,24 +302,10 @@ impl ResidentRays<'_> {
     }
 }
 
-/// Maps `slice` for reading and waits for it.
-fn map(gpu: &GpuIntersector, slice: &wgpu::BufferSlice<'_>) -> Result<(), GpuError> {
-    let (tx, rx) = mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    gpu.device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| GpuError::Readback(e.to_string()))?;
-    rx.recv()
-        .map_err(|e| GpuError::Readback(e.to_string()))?
-        .map_err(|e| GpuError::Readback(e.to_string()))
-}
-
 /// The u64 words of a mappable buffer.
 fn map_words(gpu: &GpuIntersector, buffer: &wgpu::Buffer) -> Result<Vec<u64>, GpuError> {
     let slice = buffer.slice(..);
-    map(gpu, &slice)?;
+    gpu.map_read(&slice)?;
     let words = {
         let view = slice
             .get_mapped_range()
