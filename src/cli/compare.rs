@@ -5,7 +5,7 @@ use super::CliResult;
 use crate::out;
 use std::path::Path;
 use std::process::ExitCode;
-use torus_cull_lab::compare::{self, Report};
+use torus_cull_lab::compare::{self, Report, coverage};
 use torus_cull_lab::results_file::ResultsFile;
 
 /// `compare`'s options after the two files.
@@ -54,6 +54,33 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
         }
     };
     finish(&report, old, new, options)
+}
+
+/// Runs `intervals`: the run-to-run honesty check of the paired intervals.
+pub fn intervals(runs: &[std::path::PathBuf]) -> CliResult {
+    let mut loaded = Vec::new();
+    for path in runs {
+        match ResultsFile::load(path)? {
+            ResultsFile::Results(r) => loaded.push(r),
+            other => {
+                return Err(format!(
+                    "{}: written by `{}`, which has no paired ratios (allowed: files of \
+                     `torus-cull time`)",
+                    path.display(),
+                    other.tool()
+                )
+                .into());
+            }
+        }
+    }
+    let names: Vec<String> = runs.iter().map(|p| p.display().to_string()).collect();
+    let report = coverage::coverage(&loaded, &names)?;
+    out!("{}", coverage::render(&report))?;
+    Ok(if report.goals_met() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }
 
 /// Prints the report and turns it into the exit code.

@@ -79,6 +79,15 @@ enum Command {
         #[arg(long)]
         across_machines: bool,
     },
+    /// Check that paired-ratio intervals hold from run to run: the share of each run's
+    /// ratios inside the other runs' intervals, and the headline ratios' spread. Exits 1
+    /// when a goal (coverage >= 95 %, worst headline change <= 3 %) is not met.
+    Intervals {
+        /// Two or more `torus-cull time` results files of one workload on one machine,
+        /// written back to back (benches/honest_intervals.sh makes three).
+        #[arg(required = true, num_args = 2..)]
+        runs: Vec<PathBuf>,
+    },
     /// Render a many-torus scene and its cull map (PNG).
     Render {
         /// Scene: ring_field, chain or facing_grid.
@@ -200,6 +209,7 @@ fn main() -> ExitCode {
             tori,
             seed,
         } => render::render(&scene, nu, &out, size, tori, seed),
+        Command::Intervals { runs } => compare::intervals(&runs),
         Command::Compare {
             old,
             new,

@@ -185,12 +185,13 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::compare::compare;
     use crate::results::{Meta, Results, SCHEMA_VERSION, TimingRecord};
 
-    fn record(cull: &str, ratio: f64, ci: [f64; 2]) -> RatioRecord {
+    /// A headline-style f64 record (`uniform 2 CULL/cychosz`), one run.
+    pub(in crate::compare) fn record(cull: &str, ratio: f64, ci: [f64; 2]) -> RatioRecord {
         RatioRecord {
             case: "uniform".into(),
             nu: 2.0,
@@ -238,7 +239,11 @@ mod tests {
         }
     }
 
-    fn results(ratio: Vec<RatioRecord>, timing: Vec<TimingRecord>) -> Results {
+    /// A `time` results file of these records.
+    pub(in crate::compare) fn results(
+        ratio: Vec<RatioRecord>,
+        timing: Vec<TimingRecord>,
+    ) -> Results {
         Results {
             schema_version: SCHEMA_VERSION,
             meta: Meta {
