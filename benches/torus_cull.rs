@@ -37,7 +37,9 @@
 //! And the headline: the paired, interleaved ratios of `torus-cull time --mode both` for
 //! the same cases and ν (each cull against cychosz and none, the scalar and the batch
 //! metrics, the f32 wavefront also against the cull's own f64 wavefront, in shuffled
-//! rounds on the same rays; see [`torus_cull_lab::paired`]).
+//! rounds on the same rays; see [`torus_cull_lab::paired`]). The same again for secondary
+//! rays, as `torus-cull time --secondary` times them: one diffuse bounce spawned from each
+//! hit (`Ray::from_surface`), the records' case named `<case>_bounce`.
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
 //! 2 cores), `full` (every ν of the workload, longer measurements); `TORUS_CULL_BENCH_NU`
@@ -67,7 +69,7 @@ use torus_cull_lab::results::{
 };
 use torus_cull_lab::solver_suite::SolverCase;
 use torus_cull_lab::workload::spec::{BvhSpec, Workload};
-use torus_cull_lab::workload::{Case, generate};
+use torus_cull_lab::workload::{Case, generate, secondary};
 
 /// Times one cull on one batch, both ways.
 struct TimeCull<'a> {
@@ -666,15 +668,55 @@ fn paired_ratios(
     let runs = config.ratio_runs.max(1);
     let mut options = paired::PairedOptions::total(config.ratio_seconds / runs as f64, rays);
     options.batch_isa = Some(dispatch.isa());
+    // Secondary rays: one diffuse bounce spawned from each hit (`Ray::from_surface`), in
+    // their own rounds with the same time per batch, as `time --secondary` times them;
+    // a batch with too few hits to time (the hole's) is left out.
+    let bounce_batches: Vec<_> = batches
+        .iter()
+        .map(|l| secondary::bounces(&l.batch))
+        .filter(|b| b.rays.len() >= MIN_BOUNCES)
+        .collect();
+    let bounce_units: Vec<paired::Unit<'_>> = bounce_batches
+        .iter()
+        .map(|b| paired::Unit {
+            rays: &b.rays[..rays.min(b.rays.len())],
+            ..paired::Unit::of(b)
+        })
+        .collect();
+    let bounce_options = paired::PairedOptions {
+        batch_isa: Some(dispatch.isa()),
+        ..paired::PairedOptions::total(
+            config.ratio_seconds / runs as f64 * bounce_units.len() as f64 / units.len() as f64,
+            rays,
+        )
+    };
     let all: Vec<Vec<RatioRecord>> = (0..runs)
         .map(|run| {
             let options = paired::PairedOptions { run, ..options };
-            paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
-                .unwrap_or_else(|e| panic!("{e}"))
+            let mut records =
+                paired::time_units(&units, &CullKind::TIMED, &options, &mut |_, _| {})
+                    .unwrap_or_else(|e| panic!("{e}"));
+            if !bounce_units.is_empty() {
+                let options = paired::PairedOptions {
+                    run,
+                    ..bounce_options
+                };
+                let mut bounced =
+                    paired::time_units(&bounce_units, &CullKind::TIMED, &options, &mut |_, _| {})
+                        .unwrap_or_else(|e| panic!("{e}"));
+                for r in &mut bounced {
+                    r.case.push_str(secondary::BOUNCE_SUFFIX);
+                }
+                records.extend(bounced);
+            }
+            records
         })
         .collect();
     paired::combine_runs(&all).unwrap_or_else(|e| panic!("{e}"))
 }
+
+/// The fewest bounces a batch must give to be timed (as `time --secondary` asks).
+const MIN_BOUNCES: usize = 16;
 
 /// Where criterion writes its estimates (its own rule: `$CRITERION_HOME`, else
 /// `$CARGO_TARGET_DIR/criterion`, else `target/criterion`).
