@@ -35,6 +35,7 @@
 mod all_roots;
 #[cfg(test)]
 mod corpus;
+mod discriminant;
 mod even;
 pub(crate) mod factor;
 pub(crate) mod lanes;
