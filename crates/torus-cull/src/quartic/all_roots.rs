@@ -211,14 +211,56 @@ const SMALL_STEP: f64 = 1e-6;
 ///
 /// The factors' roots are already accurate to a few ε in relative terms where the root is
 /// well conditioned (see the solver bench's accuracy records), so one step, whose error is
-/// about `e²·|f″/2f′|` from an error `e`, reaches rounding. Such a step is small next to
-/// the roots' separation ([`SMALL_STEP`]) and is taken at once; the four are independent
-/// and overlap. A larger step (an ill-conditioned root, a cluster that the depression
-/// blurred) is checked as [`guarded_newton`] does, and so is every root of a (near-)double
-/// pair that [`refine_close_pairs`] re-derived, where `f′ ≈ 0` lets Newton overshoot.
+/// about `e²·|f″/2f′|` from an error `e`, reaches rounding. Where every step is small next
+/// to the roots' separation ([`SMALL_STEP`]) the steps are taken at once, all four slots
+/// in straight-line code (the empty ones padded and ignored), which the compiler pairs
+/// into vector evaluations and divisions. A larger step (an ill-conditioned root, a
+/// cluster that the depression blurred), or a (near-)double pair that
+/// [`refine_close_pairs`] re-derived, where `f′ ≈ 0` lets Newton overshoot, sends every
+/// root to the checked steps of [`guarded_newton`] instead.
 #[inline]
 fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
     let close = refine_close_pairs(roots, c);
+    let n = roots.len;
+    // Slots past the roots hold +∞: the last root's upper gap is then ∞, and their own
+    // (NaN) steps are never used.
+    let mut x = roots.roots;
+    for (i, v) in x.iter_mut().enumerate() {
+        if i >= n {
+            *v = f64::INFINITY;
+        }
+    }
+    let mut stepped = [0.0; 4];
+    let mut small = [false; 4];
+    for i in 0..4 {
+        let below = if i > 0 {
+            x[i] - x[i - 1]
+        } else {
+            f64::INFINITY
+        };
+        let above = if i < 3 {
+            x[i + 1] - x[i]
+        } else {
+            f64::INFINITY
+        };
+        let lim = 0.5 * below.min(above);
+        let (f, df) = eval(c, x[i]);
+        stepped[i] = x[i] - f / df;
+        // Written so that NaN (f′ = 0) also fails the test.
+        small[i] = (stepped[i] - x[i]).abs() <= SMALL_STEP * lim;
+    }
+    let all_small = (0..4).all(|i| i >= n || small[i]);
+    if all_small && !close {
+        roots.roots[..n].copy_from_slice(&stepped[..n]);
+    } else {
+        polish_guarded(roots, c);
+    }
+}
+
+/// [`guarded_newton`] for every (sorted) root, each step kept within half the distance to
+/// the neighbouring roots. Cold: ill-conditioned and (near-)double roots.
+#[cold]
+fn polish_guarded(roots: &mut RealRoots, c: &[f64; 5]) {
     let n = roots.len;
     let orig = roots.roots;
     for i in 0..n {
@@ -233,23 +275,14 @@ fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
         } else {
             f64::INFINITY
         };
-        let lim = 0.5 * below.min(above);
         let (f, df) = eval(c, x0);
-        let xn = x0 - f / df;
-        // Written so that NaN (f′ = 0) also fails the test.
-        let small = (xn - x0).abs() <= SMALL_STEP * lim;
-        roots.roots[i] = if small && !close {
-            xn
-        } else {
-            guarded_newton(c, x0, f, df, lim)
-        };
+        roots.roots[i] = guarded_newton(c, x0, f, df, 0.5 * below.min(above));
     }
 }
 
 /// Up to two Newton steps on `c` from `x0` (where `f, f′ = f(x0), f′(x0)`), each taken only
-/// if it stays within `lim` of `x0` and reduces |f|. Cold: ill-conditioned and
-/// (near-)double roots.
-#[cold]
+/// if it stays within `lim` of `x0` and reduces |f|.
+#[inline]
 fn guarded_newton(c: &[f64; 5], x0: f64, mut f: f64, mut df: f64, lim: f64) -> f64 {
     let mut x = x0;
     for _ in 0..2 {
