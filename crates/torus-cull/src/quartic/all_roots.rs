@@ -170,7 +170,10 @@ fn times_pow2(mut x: f64, mut n: i32) -> f64 {
 }
 
 /// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
-/// Newton-polished on that quartic. A double root is reported twice.
+/// Newton-polished on that quartic (except an even one's, `q = 0`, already within a few
+/// ulps as the square roots of a quadratic's stable roots). A double root is reported
+/// twice. A quartic whose discriminant's signs prove, beyond rounding, that it has no real
+/// root returns before the resolvent, as in [`super::nearest_root_depressed`].
 ///
 /// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
 /// x/s, s a power of two.
@@ -187,14 +190,18 @@ pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
     if surely_no_real_root(p, q, r) {
         return RealRoots::default();
     }
+    // An even quartic's roots ±√y, from the stable roots y of y² + p y + r, are each within
+    // a few ulps of the exact roots of the given p and r (`even.rs`): Newton on x cannot
+    // improve them, and at a tangent (a double y, or y ≈ 0 for a tangent at the foot
+    // point) it would only blur them with f's rounding, on the guarded path.
+    if q == 0.0 {
+        if let Some(mut roots) = even::real_roots(p, r) {
+            roots.sort();
+            return roots;
+        }
+    }
     let c = [1.0, 0.0, p, q, r];
-    let even = if q == 0.0 {
-        even::real_roots(p, r)
-    } else {
-        None
-    };
-    let mut roots =
-        even.unwrap_or_else(|| factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE));
+    let mut roots = factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE);
     roots.sort();
     polish(&mut roots, &c);
     roots
