@@ -1,6 +1,7 @@
 //! Every real root, sorted and Newton-polished on the caller's polynomial: for CSG, the
 //! oracle's checks and the tests.
 
+use super::discriminant::surely_no_real_root;
 use super::{EPS, RealRoots, eval, eval2, even, factor, pieces};
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
@@ -169,7 +170,10 @@ fn times_pow2(mut x: f64, mut n: i32) -> f64 {
 }
 
 /// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each
-/// Newton-polished on that quartic. A double root is reported twice.
+/// Newton-polished on that quartic (except an even one's, `q = 0`, already within a few
+/// ulps as the square roots of a quadratic's stable roots). A double root is reported
+/// twice. A quartic whose discriminant's signs prove, beyond rounding, that it has no real
+/// root returns before the resolvent, as in [`super::nearest_root_depressed`].
 ///
 /// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
 /// x/s, s a power of two.
@@ -182,70 +186,143 @@ pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
         let (p, q, r) = super::scaled(p, q, r, s);
         return solve_depressed_monic(p, q, r).map_increasing(|y| y * s);
     }
+    // The nearest-root query's early exit: no real root, by signs beyond rounding.
+    if surely_no_real_root(p, q, r) {
+        return RealRoots::default();
+    }
+    // An even quartic's roots ±√y, from the stable roots y of y² + p y + r, are each within
+    // a few ulps of the exact roots of the given p and r (`even.rs`): Newton on x cannot
+    // improve them, and at a tangent (a double y, or y ≈ 0 for a tangent at the foot
+    // point) it would only blur them with f's rounding, on the guarded path.
+    if q == 0.0 {
+        if let Some(mut roots) = even::real_roots(p, r) {
+            roots.sort();
+            return roots;
+        }
+    }
     let c = [1.0, 0.0, p, q, r];
-    let even = if q == 0.0 {
-        even::real_roots(p, r)
-    } else {
-        None
-    };
-    let mut roots =
-        even.unwrap_or_else(|| factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE));
+    let mut roots = factor::real_roots(p, q, r, &c, 0.0, factor::NEAR_DOUBLE);
     roots.sort();
     polish(&mut roots, &c);
     roots
 }
 
-/// Up to two Newton steps per (sorted) root on `c`. A step is taken only if it stays
-/// within half the distance to the neighbouring roots (so two close roots cannot merge; a
-/// double root reported twice does not move) and reduces |f|.
+/// A Newton step below this fraction of the distance to the neighbouring roots is taken
+/// without checking that it lowers |f|: the root is then simple and well separated, and
+/// the step is the correction of a start deep inside Newton's quadratic basin.
+const SMALL_STEP: f64 = 1e-6;
+
+/// Newton steps on `c` for each (sorted) root, kept only where they stay within half the
+/// distance to the neighbouring roots (so two close roots cannot merge; a double root
+/// reported twice does not move).
+///
+/// The factors' roots are already accurate to a few ε in relative terms where the root is
+/// well conditioned (see the solver bench's accuracy records), so one step, whose error is
+/// about `e²·|f″/2f′|` from an error `e`, reaches rounding. Where every step is small next
+/// to the roots' separation ([`SMALL_STEP`]) the steps are taken at once, all four slots
+/// in straight-line code (the empty ones padded and ignored), which the compiler pairs
+/// into vector evaluations and divisions. A larger step (an ill-conditioned root, a
+/// cluster that the depression blurred), or a (near-)double pair that
+/// [`refine_close_pairs`] re-derived, where `f′ ≈ 0` lets Newton overshoot, sends every
+/// root to the checked steps of [`guarded_newton`] instead.
 #[inline]
 fn polish(roots: &mut RealRoots, c: &[f64; 5]) {
+    let close = refine_close_pairs(roots, c);
     let n = roots.len;
-    refine_close_pairs(roots, c);
+    // Slots past the roots hold +∞: the last root's upper gap is then ∞, and their own
+    // (NaN) steps are never used.
+    let mut x = roots.roots;
+    for (i, v) in x.iter_mut().enumerate() {
+        if i >= n {
+            *v = f64::INFINITY;
+        }
+    }
+    let mut stepped = [0.0; 4];
+    let mut small = [false; 4];
+    for i in 0..4 {
+        let below = if i > 0 {
+            x[i] - x[i - 1]
+        } else {
+            f64::INFINITY
+        };
+        let above = if i < 3 {
+            x[i + 1] - x[i]
+        } else {
+            f64::INFINITY
+        };
+        let lim = 0.5 * below.min(above);
+        let (f, df) = eval(c, x[i]);
+        stepped[i] = x[i] - f / df;
+        // Written so that NaN (f′ = 0) also fails the test.
+        small[i] = (stepped[i] - x[i]).abs() <= SMALL_STEP * lim;
+    }
+    let all_small = (0..4).all(|i| i >= n || small[i]);
+    if all_small && !close {
+        roots.roots[..n].copy_from_slice(&stepped[..n]);
+    } else {
+        polish_guarded(roots, c);
+    }
+}
+
+/// [`guarded_newton`] for every (sorted) root, each step kept within half the distance to
+/// the neighbouring roots. Cold: ill-conditioned and (near-)double roots.
+#[cold]
+fn polish_guarded(roots: &mut RealRoots, c: &[f64; 5]) {
+    let n = roots.len;
     let orig = roots.roots;
     for i in 0..n {
         let x0 = orig[i];
-        let mut lim = f64::INFINITY;
-        if i > 0 {
-            lim = lim.min(x0 - orig[i - 1]);
-        }
-        if i + 1 < n {
-            lim = lim.min(orig[i + 1] - x0);
-        }
-        lim *= 0.5;
-        let mut x = x0;
-        let (mut f, mut df) = eval(c, x);
-        for _ in 0..2 {
-            if f == 0.0 || df == 0.0 {
-                break;
-            }
-            let xn = x - f / df;
-            // Written so that NaN also fails the test.
-            let ok = (xn - x0).abs() <= lim;
-            if !ok {
-                break;
-            }
-            let (fnew, dfnew) = eval(c, xn);
-            if fnew.abs() >= f.abs() {
-                break;
-            }
-            x = xn;
-            f = fnew;
-            df = dfnew;
-        }
-        roots.roots[i] = x;
+        let below = if i > 0 {
+            x0 - orig[i - 1]
+        } else {
+            f64::INFINITY
+        };
+        let above = if i + 1 < n {
+            orig[i + 1] - x0
+        } else {
+            f64::INFINITY
+        };
+        let (f, df) = eval(c, x0);
+        roots.roots[i] = guarded_newton(c, x0, f, df, 0.5 * below.min(above));
     }
-    roots.sort();
+}
+
+/// Up to two Newton steps on `c` from `x0` (where `f, f′ = f(x0), f′(x0)`), each taken only
+/// if it stays within `lim` of `x0` and reduces |f|.
+#[inline]
+fn guarded_newton(c: &[f64; 5], x0: f64, mut f: f64, mut df: f64, lim: f64) -> f64 {
+    let mut x = x0;
+    for _ in 0..2 {
+        if f == 0.0 || df == 0.0 {
+            break;
+        }
+        let xn = x - f / df;
+        // Written so that NaN also fails the test.
+        let ok = (xn - x0).abs() <= lim;
+        if !ok {
+            break;
+        }
+        let (fnew, dfnew) = eval(c, xn);
+        if fnew.abs() >= f.abs() {
+            break;
+        }
+        x = xn;
+        f = fnew;
+        df = dfnew;
+    }
+    x
 }
 
 /// A pair of roots much closer to each other than to the rest is a (near-)double root,
 /// which Newton on `f` cannot improve (f' ≈ 0) and which the depression may have blurred by
 /// √(rounding of the shift). Re-derive it from the caller's `c`: Newton on `f'` to the
 /// extremum `x*` between them, then `x* ± √(−2f/f'')` (both `x*` if `f(x*)` has the wrong sign,
-/// which is within rounding since Ferrari found the pair real).
+/// which is within rounding since Ferrari found the pair real). Returns whether it found
+/// such a pair.
 #[inline]
-fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) {
+fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) -> bool {
     let n = roots.len;
+    let mut any = false;
     let mut i = 0;
     while i + 1 < n {
         let (a, b) = (roots.roots[i], roots.roots[i + 1]);
@@ -287,6 +364,8 @@ fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) {
         };
         roots.roots[i] = x - delta;
         roots.roots[i + 1] = x + delta;
+        any = true;
         i += 2;
     }
+    any
 }

@@ -54,6 +54,13 @@ pub(super) fn real_roots(
 /// `shift` and `near` as for [`real_roots`].
 #[inline]
 pub(super) fn roots_of_split(f: &Split<f64>, orig: &[f64; 5], shift: f64, near: f64) -> RealRoots {
+    let (disc1, disc2) = (f.z - 4.0 * f.n1, f.z - 4.0 * f.n2);
+    // Written so that NaN takes the general path, which decides on the quartic.
+    let clear1 = disc1.abs() > near * (f.z + 4.0 * f.n1.abs());
+    let clear2 = disc2.abs() > near * (f.z + 4.0 * f.n2.abs());
+    if clear1 && clear2 {
+        return clear_roots([f.m, -f.m], [f.n1, f.n2], [disc1, disc2]);
+    }
     let mut out = RealRoots::default();
     quadratic_factor(f.m, f.n1, f.z, orig, shift, near, &mut out);
     quadratic_factor(-f.m, f.n2, f.z, orig, shift, near, &mut out);
@@ -136,6 +143,26 @@ pub(crate) fn split_at<R: Real>(p: R, q: R, r: R, root: &Root<R>) -> Split<R> {
     let n1 = R::select(n2_bigger, other, n1_direct);
     let n2 = R::select(n2_bigger, n2_direct, other);
     Split { z, m, n1, n2 }
+}
+
+/// The roots of both factors `x² + bₖ x + cₖ` when both discriminants are clear of
+/// rounding (the common case): each factor's stable pair `t = −(b + sign(b)·√disc)/2` and
+/// `c/t`, as [`quadratic_factor`] gives them, computed for both factors and kept where
+/// `disc > 0`, without a branch (which factors are real is a coin toss from ray to ray).
+#[inline]
+fn clear_roots(b: [f64; 2], c: [f64; 2], disc: [f64; 2]) -> RealRoots {
+    let mut out = RealRoots::default();
+    let mut len = 0;
+    for k in 0..2 {
+        let t = -0.5 * (b[k] + disc[k].max(0.0).sqrt().copysign(b[k]));
+        let real = disc[k] > 0.0;
+        // Slots `len` and `len + 1` exist: at most one factor was kept before.
+        out.roots[len] = if real { t } else { 0.0 };
+        out.roots[len + 1] = if real { c[k] / t } else { 0.0 };
+        len += 2 * usize::from(real);
+    }
+    out.len = len;
+    out
 }
 
 /// Roots of the factor `x² + b x + c` with `b² = z` (passed exactly, so the discriminant

@@ -11,17 +11,21 @@
 //!   and the smaller of `n₁, n₂` as `r` over the larger;
 //! - a factor with a near-zero discriminant is decided on the quartic itself (its value at
 //!   the nearby extremum against a rounding bound), never on the factor;
-//! - roots get guarded Newton steps on the caller's polynomial;
+//! - the all-roots solve gives each root one Newton step on the caller's polynomial, taken
+//!   at once where it is small next to the roots' separation (a well-conditioned root),
+//!   and checked (within half the gap, lowering |f|) everywhere else;
 //! - an even quartic (`q = 0`, a line perpendicular or parallel to the axis) is solved as
 //!   a quadratic in `x²` (`even.rs`), where every tangent is decided by an exact sign;
-//! - the nearest-root query first rejects a quartic whose discriminant's signs, beyond
-//!   rounding, say it has no real root: a missed line costs no resolvent.
+//! - the nearest-root query and the depressed all-roots solve first reject a quartic whose
+//!   discriminant's signs, beyond rounding, say it has no real root (`discriminant.rs`):
+//!   a missed line costs no resolvent.
 //!
 //! Two entry points: [`nearest_root_depressed`], the nearest root in an interval, which is
 //! all a renderer needs (no sort, no final Newton step); and the all-roots [`solve_depressed_monic`]
 //! / [`solve_quartic`] for CSG and the tests.
 //!
-//! Files: `nearest.rs` and `all_roots.rs` (the entry points), `even.rs` (`q = 0`),
+//! Files: `nearest.rs` and `all_roots.rs` (the entry points), `discriminant.rs` (the
+//! early exit), `even.rs` (`q = 0`),
 //! `resolvent.rs` (the cubic in `m²`), `cube_root.rs` (its cube root and trisection without
 //! libm), `factor.rs` (Ferrari's split and near-double factors), `pieces.rs` (every real
 //! root by monotone pieces: `solve_quartic`'s path where the depression cannot be
@@ -35,6 +39,7 @@
 mod all_roots;
 #[cfg(test)]
 mod corpus;
+mod discriminant;
 mod even;
 pub(crate) mod factor;
 pub(crate) mod lanes;

@@ -36,16 +36,37 @@ impl RealRoots {
         }
     }
 
-    /// Insertion sort: at most four elements.
+    /// Ascending, by a sorting network on four slots (the empty ones padded with +∞, which
+    /// every finite root sorts before): five compare-exchanges, each a select rather than
+    /// a branch, since the order of the roots is a coin toss from ray to ray. A NaN is
+    /// never exchanged (every comparison with it is false), as in an insertion sort.
     #[inline]
     pub(super) fn sort(&mut self) {
-        for i in 1..self.len {
-            let mut j = i;
-            while j > 0 && self.roots[j - 1] > self.roots[j] {
-                self.roots.swap(j - 1, j);
-                j -= 1;
+        let n = self.len;
+        let mut a = self.roots;
+        for (i, x) in a.iter_mut().enumerate() {
+            if i >= n {
+                *x = f64::INFINITY;
             }
         }
+        #[inline(always)]
+        fn exchange(a: &mut [f64; 4], i: usize, j: usize) {
+            let (x, y) = (a[i], a[j]);
+            let swap = y < x;
+            a[i] = if swap { y } else { x };
+            a[j] = if swap { x } else { y };
+        }
+        exchange(&mut a, 0, 1);
+        exchange(&mut a, 2, 3);
+        exchange(&mut a, 0, 2);
+        exchange(&mut a, 1, 3);
+        exchange(&mut a, 1, 2);
+        for (i, x) in a.iter_mut().enumerate() {
+            if i >= n {
+                *x = 0.0;
+            }
+        }
+        self.roots = a;
     }
 
     /// Applies an increasing map to every root (order is kept), e.g. a change of variable.
