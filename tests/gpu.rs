@@ -886,3 +886,250 @@ fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
         assert!(!certified.failed(), "{name}: {certified:?}");
     }
 }
+
+/// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between a device-finished hit (its t
+/// rounded to f32, as the CPU's f64 path rounds it) and the oracle's first root, or the
+/// CPU's f64 answer: tests/intersect_vs_oracle.rs's bound for the CPU's f64 path.
+const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
+
+/// One family's device finish: rays by who answered, and what the device's answers were
+/// checked against.
+#[derive(Default)]
+struct FinishTally {
+    rays: usize,
+    counts: [usize; 3],
+    /// Device answers the oracle labels definite hit that came back miss, and definite
+    /// miss that came back hit.
+    missed: usize,
+    invented: usize,
+    /// Device answers whose hit-or-miss differs from the CPU's f64 path (any label).
+    differ_from_cpu: usize,
+    /// Device hits with the same f32 t as the CPU's f64 path, bit for bit.
+    same_t: usize,
+    device_hits: usize,
+    worst_vs_oracle: f64,
+    worst_vs_cpu: f64,
+    failures: Vec<String>,
+}
+
+impl FinishTally {
+    fn run(&mut self, gpu: &GpuIntersector, torus: &Torus, rays: &[Ray]) {
+        use torus_cull::gpu::Finished;
+        let answers = gpu
+            .intersect_finished_where(torus, GpuCull::None, rays)
+            .expect("dispatch");
+        for (ray, (answer, finished)) in rays.iter().zip(answers) {
+            self.rays += 1;
+            self.counts[match finished {
+                Finished::Proved => 0,
+                Finished::Device => 1,
+                _ => 2,
+            }] += 1;
+            if finished != Finished::Device {
+                continue;
+            }
+            let cpu = intersect(torus, ray);
+            let query = Query::ray(torus, ray);
+            let label = query.classify();
+            let mut fail = |text: String| {
+                if self.failures.len() < 10 {
+                    self.failures.push(format!("{text}: {ray:?} on {torus:?}"));
+                }
+            };
+            if answer.hit.is_some() != cpu.is_some() {
+                self.differ_from_cpu += 1;
+                fail(format!(
+                    "device {:?}, CPU f64 {cpu:?} ({label:?})",
+                    answer.hit
+                ));
+            }
+            match (label.class, answer.hit) {
+                (OracleClass::Hit, None) => {
+                    self.missed += 1;
+                    fail(format!("device miss for a definite hit {label:?}"));
+                }
+                (OracleClass::Miss, Some(hit)) => {
+                    self.invented += 1;
+                    fail(format!("device hit {hit:?} for a definite miss {label:?}"));
+                }
+                _ => {}
+            }
+            let Some(hit) = answer.hit else { continue };
+            self.device_hits += 1;
+            let len = f64::from(ray.dir().length());
+            let scale = |t_ref: f64| t_ref.abs().max(f64::from(torus.outer_radius()) / len);
+            if let Some(cpu) = cpu {
+                self.same_t += usize::from(cpu.t.to_bits() == hit.t.to_bits());
+                let rel = f64::from(hit.t - cpu.t).abs() / scale(f64::from(cpu.t));
+                self.worst_vs_cpu = self.worst_vs_cpu.max(rel);
+                if rel > DEVICE_T_TOLERANCE_REL || cpu.front_face != hit.front_face {
+                    fail(format!("device {hit:?} vs CPU f64 {cpu:?}"));
+                }
+                if (hit.normal - cpu.normal).length() > 1e-5 {
+                    fail(format!(
+                        "device normal {} vs CPU {}",
+                        hit.normal, cpu.normal
+                    ));
+                }
+            }
+            if label.class == OracleClass::Hit {
+                let reference = reference_roots(&query)[0];
+                let rel = (f64::from(hit.t) - reference).abs() / scale(reference);
+                self.worst_vs_oracle = self.worst_vs_oracle.max(rel);
+                if rel > DEVICE_T_TOLERANCE_REL {
+                    fail(format!("device t = {} vs oracle {reference}", hit.t));
+                }
+            }
+        }
+    }
+
+    fn report(&self, name: &str) {
+        let [proved, device, host] = self.counts;
+        println!(
+            "{name:<34} {:>6} rays: proved {proved:>6}, finished on the device {device:>5}, \
+             on the host {host:>4}; device: {} hits ({} with the CPU's t to the bit), \
+             missed {}, invented {}, differ from CPU f64 {}, worst t vs oracle {:.1e}, vs \
+             CPU {:.1e}",
+            self.rays,
+            self.device_hits,
+            self.same_t,
+            self.missed,
+            self.invented,
+            self.differ_from_cpu,
+            self.worst_vs_oracle,
+            self.worst_vs_cpu,
+        );
+    }
+}
+
+/// Escalation on the device (issue 27, item 2): on an adapter with f64 every ray of the
+/// families that escalate (the hole at ν = 1.01, grazing rays at every ν, near and 10⁵·(R
+/// + r) away, lines hugging the hole's edge and tangent to the special circles at
+/// ±10⁻⁶·r) is finished on the device (0 on the host), and every device answer is the
+/// CPU's f64 path's: 0 missed and 0 invented against the oracle, the same hit or miss as
+/// the CPU, t within 1.2·10⁻⁷ (relative) of the CPU's and of the oracle's first root.
+/// Rays from a surface point are handed back to the host (their f64 path is not ported)
+/// and counted as such.
+#[test]
+fn escalated_rays_are_finished_on_the_device_in_f64() {
+    let Some(gpu) = gpu() else { return };
+    if !gpu.finishes_on_device() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "SKIPPED device finish: {}",
+            gpu.device_finish_unavailable().unwrap_or_default()
+        );
+        return;
+    }
+    let mut families: Vec<(String, Vec<(Torus, Vec<Ray>)>)> = Vec::new();
+    let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
+        family(case, nu, n, seed)
+            .iter()
+            .map(|batch| {
+                let torus = batch.torus;
+                let rays = pairs(std::slice::from_ref(batch))
+                    .map(|(_, ray)| {
+                        if back == 0.0 {
+                            *ray
+                        } else {
+                            pushed_back(ray, back * torus.outer_radius())
+                        }
+                    })
+                    .collect();
+                (torus, rays)
+            })
+            .collect::<Vec<_>>()
+    };
+    families.push((
+        "hole ν=1.01".into(),
+        batches(Case::Hole, 1.01, 4000, 0xF1, 0.0),
+    ));
+    for nu in NUS {
+        families.push((
+            format!("grazing ν={nu}"),
+            batches(Case::Grazing, nu, 1000, 0xF2 ^ nu.to_bits(), 0.0),
+        ));
+    }
+    families.push((
+        "grazing ν=1.01 back 1e5·(R+r)".into(),
+        batches(Case::Grazing, 1.01, 1000, 0xF3, 1e5),
+    ));
+    let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
+    let mut hole_edge = Vec::new();
+    let mut tangent: Vec<Vec<(Torus, Vec<Ray>)>> =
+        SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
+    for nu in [1.01, 2.0, 100.0] {
+        for major in [1e-3f32, 1.0, 1e3] {
+            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
+            let (big, small) = (
+                f64::from(torus.major_radius()),
+                f64::from(torus.minor_radius()),
+            );
+            let rays: Vec<Ray> = (0..300)
+                .filter_map(|_| {
+                    let (p, d) = hole_edge_line(&mut rng, big, small);
+                    world_ray(&torus, p, d)
+                })
+                .collect();
+            hole_edge.push((torus, rays));
+            for (circle, slot) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
+                let rays: Vec<Ray> = (0..200)
+                    .filter_map(|i| {
+                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
+                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
+                        world_ray(&torus, p, d)
+                    })
+                    .collect();
+                slot.push((torus, rays));
+            }
+        }
+    }
+    families.push(("hole_edge_line".into(), hole_edge));
+    for (circle, sets) in SpecialCircle::ALL.into_iter().zip(tangent) {
+        families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));
+    }
+    let mut failures = Vec::new();
+    for (name, sets) in &families {
+        let mut tally = FinishTally::default();
+        for (torus, rays) in sets {
+            tally.run(gpu, torus, rays);
+        }
+        tally.report(name);
+        let [_, device, host] = tally.counts;
+        if host != 0 || device == 0 || !tally.failures.is_empty() {
+            failures.push(format!(
+                "{name}: {device} finished on the device, {host} on the host\n{}",
+                tally.failures.join("\n")
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Rays from a surface point that the kernel escalates go back to the host (their f64
+/// path divides the origin's root out, which the device pass does not port), counted as
+/// host-finished; their answers are the CPU's.
+#[test]
+fn rays_from_the_surface_are_handed_back_to_the_host_and_counted() {
+    use torus_cull::gpu::{FinishCounts, Finished};
+    let Some(gpu) = gpu() else { return };
+    let torus = Torus::canonical(4.0, 1.0).unwrap();
+    // Into the tube from the top of it (the kernel escalates: into the solid), and out of
+    // it, off the surface.
+    let rays = [
+        Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::NEG_Y).unwrap(),
+        Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::new(0.3, -1.0, 0.1)).unwrap(),
+        Ray::from_surface(Vec3::new(5.0, 0.0, 0.0), Vec3::X).unwrap(),
+    ];
+    let answers = gpu
+        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .expect("dispatch");
+    for (ray, (answer, finished)) in rays.iter().zip(&answers) {
+        assert_ne!(*finished, Finished::Device, "{ray:?}");
+        let cpu = intersect(&torus, ray);
+        assert_eq!(answer.hit.map(|h| h.t), cpu.map(|h| h.t), "{ray:?}");
+    }
+    let counts = FinishCounts::of(answers.iter().map(|(_, f)| f));
+    assert!(counts.host >= 2, "{counts:?}");
+    assert_eq!(counts.device, 0);
+}
