@@ -438,7 +438,7 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
             .skip(1)
             .map(|l| {
                 let f: Vec<&str> = l.split(',').collect();
-                (f[3].parse::<f64>().ok(), f[4] == "1")
+                (f[3].parse::<f64>().ok(), f[4] == "1", f[5].to_string())
             })
             .collect::<Vec<_>>()
     };
@@ -446,7 +446,18 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
     assert_eq!(gpu_rows.len(), 600);
     assert_eq!(gpu_rows.len(), cpu_rows.len());
     let escalated = gpu_rows.iter().filter(|r| r.1).count();
-    for (i, ((g, _), (c, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
+    // `finished`: empty where f32 proved the answer; else who finished it (the device
+    // where the adapter has f64: none of these rays starts on the surface).
+    let finisher = if gpu().is_some_and(|g| g.finishes_on_device()) {
+        "device"
+    } else {
+        "host"
+    };
+    for (i, (_, escalated, finished)) in gpu_rows.iter().enumerate() {
+        let want = if *escalated { finisher } else { "" };
+        assert_eq!(finished, want, "row {i}");
+    }
+    for (i, ((g, _, _), (c, _, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
         assert_eq!(g.is_some(), c.is_some(), "row {i}: gpu {g:?}, f32 {c:?}");
         if let (Some(g), Some(c)) = (g, c) {
             assert!(
@@ -455,7 +466,7 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
             );
         }
     }
-    println!("eval --exact gpu: {escalated} of 600 rows escalated");
+    println!("eval --exact gpu: {escalated} of 600 rows escalated, finished by the {finisher}");
 }
 
 /// `time --device gpu` writes Mrays/s per cull as estimates, with the adapter in
