@@ -898,6 +898,9 @@ fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
     }
 }
 
+/// Rays on their torus.
+type RaySet = (Torus, Vec<Ray>);
+
 /// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between a device-finished hit (its t
 /// rounded to f32, as the CPU's f64 path rounds it) and the oracle's first root, or the
 /// CPU's f64 answer: tests/intersect_vs_oracle.rs's bound for the CPU's f64 path.
@@ -1014,8 +1017,8 @@ impl FinishTally {
 }
 
 /// Escalation on the device (issue 27, item 2): on an adapter with f64 every ray of the
-/// families that escalate (the hole at ν = 1.01, grazing rays at every ν, near and 10⁵·(R
-/// + r) away, lines hugging the hole's edge and tangent to the special circles at
+/// families that escalate (the hole at ν = 1.01, grazing rays at every ν, near and
+/// 10⁵·(R + r) away, lines hugging the hole's edge and tangent to the special circles at
 /// ±10⁻⁶·r) is finished on the device (0 on the host), and every device answer is the
 /// CPU's f64 path's: 0 missed and 0 invented against the oracle, the same hit or miss as
 /// the CPU, t within 1.2·10⁻⁷ (relative) of the CPU's and of the oracle's first root.
@@ -1032,7 +1035,7 @@ fn escalated_rays_are_finished_on_the_device_in_f64() {
         );
         return;
     }
-    let mut families: Vec<(String, Vec<(Torus, Vec<Ray>)>)> = Vec::new();
+    let mut families: Vec<(String, Vec<RaySet>)> = Vec::new();
     let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
         family(case, nu, n, seed)
             .iter()
@@ -1067,8 +1070,7 @@ fn escalated_rays_are_finished_on_the_device_in_f64() {
     ));
     let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
     let mut hole_edge = Vec::new();
-    let mut tangent: Vec<Vec<(Torus, Vec<Ray>)>> =
-        SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
+    let mut tangent: Vec<Vec<RaySet>> = SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
     for nu in [1.01, 2.0, 100.0] {
         for major in [1e-3f32, 1.0, 1e3] {
             let torus = random_pose_torus(&mut rng, major, major / nu as f32);

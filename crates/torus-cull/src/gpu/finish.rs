@@ -176,6 +176,15 @@ pub(crate) struct FinishBuffers {
     pub(crate) bind_group: wgpu::BindGroup,
 }
 
+/// What the f64 pass reads of one dispatch, beside the kernel's own buffers: the torus
+/// in f64 ([`torus_bytes`]) and each ray's world and instruction records
+/// ([`world_record`]).
+pub(crate) struct FinishInput<'a> {
+    pub(crate) torus: &'a [u8],
+    pub(crate) world: &'a [[f32; 8]],
+    pub(crate) instructions: &'a [[f32; 8]],
+}
+
 /// Bytes of the torus in f64: 17 values.
 pub(crate) const TORUS64_BYTES: u64 = 17 * 8;
 
@@ -328,18 +337,16 @@ pub(crate) fn world_record(
         + 4.0 * (torus.major_radius_f64() + torus.minor_radius_f64()))
         / d.as_dvec3().length()
         * (1.0 + 1e-6);
-    let instruction = if ray.starts_on_surface() || !(reach < f64::from(f32::MAX)) {
+    // NaN (no such ray: its parts are finite) would go to the host too.
+    let clippable = reach < f64::from(f32::MAX);
+    let instruction = if ray.starts_on_surface() || !clippable {
         Instruction::Host
     } else if packed.sendable {
         Instruction::Follow
     } else {
         Instruction::Always
     };
-    let limit = if reach < f64::from(f32::MAX) {
-        reach as f32
-    } else {
-        f32::MAX
-    };
+    let limit = if clippable { reach as f32 } else { f32::MAX };
     let t_min = ray.t_min().clamp(-limit, limit);
     let t_max = ray.t_max().clamp(-limit, limit);
     let mut finished = [0.0; 8];

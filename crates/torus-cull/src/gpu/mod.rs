@@ -625,8 +625,8 @@ impl GpuIntersector {
         buffers: &Buffers,
         params: &[u8],
         packed: &[Packed],
-        finish: Option<(&[u8], &[[f32; 8]], &[[f32; 8]])>,
-    ) -> Result<(Vec<[f32; 8]>, Option<Vec<[f32; 8]>>), GpuError> {
+        finish: Option<finish::FinishInput<'_>>,
+    ) -> Result<Dispatched, GpuError> {
         let Buffers {
             params: params_buffer,
             input,
@@ -656,10 +656,10 @@ impl GpuIntersector {
         }
         encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
         let second = match (finish, &buffers.finish, &self.finish) {
-            (Some((torus, world, instructions)), Some(fb), Ok(pass)) => {
-                let world: Vec<f32> = world.iter().flatten().copied().collect();
-                let instructions: Vec<f32> = instructions.iter().flatten().copied().collect();
-                self.queue.write_buffer(&fb.torus, 0, torus);
+            (Some(input), Some(fb), Ok(pass)) => {
+                let world: Vec<f32> = input.world.iter().flatten().copied().collect();
+                let instructions: Vec<f32> = input.instructions.iter().flatten().copied().collect();
+                self.queue.write_buffer(&fb.torus, 0, input.torus);
                 self.queue.write_buffer(&fb.world, 0, &as_bytes(&world));
                 self.queue
                     .write_buffer(&fb.finished, 0, &as_bytes(&instructions));
@@ -745,7 +745,11 @@ impl GpuIntersector {
             } else {
                 (Vec::new(), Vec::new())
             };
-            let second = on_device.then_some((&torus64[..], &world[..], &instructions[..]));
+            let second = on_device.then_some(finish::FinishInput {
+                torus: &torus64,
+                world: &world,
+                instructions: &instructions,
+            });
             let params = frame.params(batch.len() as u32, cull, Mode::Intersect);
             let (records, finished) = match self.dispatch_with(buffers, &params, &packed, second) {
                 Ok(answer) => answer,
@@ -775,6 +779,10 @@ impl GpuIntersector {
         Ok(out)
     }
 }
+
+/// One dispatch's records: the kernel's `(t, n.xyz, code, why, 0, 0)`, and the f64
+/// pass's `(t, n.xyz, point.xyz, status)` where it ran.
+pub(crate) type Dispatched = (Vec<[f32; 8]>, Option<Vec<[f32; 8]>>);
 
 /// What the kernel does per ray (`Params.config.z`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
