@@ -18,13 +18,18 @@
 //! (WGSL may assume there are none). So the answers agree with the CPU's to rounding,
 //! not to the bit; tests/gpu.rs checks them against the CPU's f64 path and the oracle.
 //!
-//! **What goes back to the host** (counted, [`Finished::Host`]): a ray from a surface
-//! point ([`crate::Ray::from_surface`]), whose f64 path divides its origin's root out
-//! (`intersect/from_surface.rs`, not ported); a ray whose range cannot be clipped to
-//! finite f32 (an origin near f32's largest value); a quartic or split that is not
-//! finite; a hit point beyond f32's range. Everything else the f32 kernel escalated,
-//! far origins included (the host does not send those to the f32 kernel), is finished on
-//! the device.
+//! **Rays from a surface point** ([`crate::Ray::from_surface`]) take the CPU's
+//! `intersect/from_surface.rs` path where the origin is within its reach of the surface:
+//! the origin's own root (three guarded Newton steps on the quartic from `u₀`) divided
+//! out, and the nearest root past it of the cubic left, by monotone pieces between its
+//! critical points (a sign change and safeguarded Newton; a double root within rounding
+//! at a critical point). The reach test uses `√(a² + b²)` for the CPU's `hypot`.
+//!
+//! **What goes back to the host** (counted, [`Finished::Host`]): a ray whose range cannot
+//! be clipped to finite f32 (an origin near f32's largest value); a quartic or split that
+//! is not finite; a hit point beyond f32's range. Everything else the f32 kernel
+//! escalated, far origins and rays from surface points included, is finished on the
+//! device.
 //!
 //! **Buffers** (one bind group, four storage buffers and the kernel's uniform block):
 //! the world rays as the caller gave them, `(o, t_min)` and `(d, t_max)` as f32 with the
@@ -38,7 +43,7 @@
 
 use super::{GpuError, Packed};
 use crate::Torus;
-use crate::certified::F32Hit;
+use crate::certified::{F32Hit, F32Verdict};
 use crate::intersect::Hit;
 use glam::Vec3;
 
@@ -50,14 +55,26 @@ pub(crate) enum Instruction {
     Follow = 0,
     /// Finish it whatever the f32 kernel wrote (an origin the host did not send).
     Always = 1,
-    /// The host answers it (a ray from a surface point, or a range f32 cannot clip).
+    /// The host answers it (a range f32 cannot clip, or an answer the host already
+    /// has).
     Host = 2,
+    /// A ray from a surface point ([`crate::Ray::from_surface`]): finish it, its own root
+    /// divided out, where the f32 kernel escalated its literal ray.
+    SurfaceFollow = 3,
+    /// A ray from a surface point the host did not send (it goes into the tube, or its
+    /// origin is far): finish it whatever the kernel wrote.
+    SurfaceAlways = 4,
 }
 
 impl Instruction {
     /// Every instruction, for the generated header (`FIN_<NAME>`).
-    pub(crate) const ALL: [Instruction; 3] =
-        [Instruction::Follow, Instruction::Always, Instruction::Host];
+    pub(crate) const ALL: [Instruction; 5] = [
+        Instruction::Follow,
+        Instruction::Always,
+        Instruction::Host,
+        Instruction::SurfaceFollow,
+        Instruction::SurfaceAlways,
+    ];
 
     /// The header's name.
     pub(crate) fn name(self) -> &'static str {
@@ -65,6 +82,8 @@ impl Instruction {
             Instruction::Follow => "FOLLOW",
             Instruction::Always => "ALWAYS",
             Instruction::Host => "HOST",
+            Instruction::SurfaceFollow => "SURFACE_FOLLOW",
+            Instruction::SurfaceAlways => "SURFACE_ALWAYS",
         }
     }
 }
@@ -339,12 +358,16 @@ pub(crate) fn world_record(
         * (1.0 + 1e-6);
     // NaN (no such ray: its parts are finite) would go to the host too.
     let clippable = reach < f64::from(f32::MAX);
-    let instruction = if ray.starts_on_surface() || !clippable {
-        Instruction::Host
-    } else if packed.sendable {
-        Instruction::Follow
-    } else {
-        Instruction::Always
+    let instruction = match (clippable, ray.starts_on_surface(), packed.host) {
+        (false, _, _) => Instruction::Host,
+        (true, false, _) if packed.sendable => Instruction::Follow,
+        (true, false, _) => Instruction::Always,
+        // The kernel has the literal ray past the origin's root (`Frame::prepare`).
+        (true, true, None) => Instruction::SurfaceFollow,
+        // Into the tube, or a far origin: the host sent nothing the kernel could prove.
+        (true, true, Some((F32Verdict::Escalate, _))) => Instruction::SurfaceAlways,
+        // The host proved it (a range that ends first).
+        (true, true, Some(_)) => Instruction::Host,
     };
     let limit = if clippable { reach as f32 } else { f32::MAX };
     let t_min = ray.t_min().clamp(-limit, limit);

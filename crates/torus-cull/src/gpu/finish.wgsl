@@ -546,6 +546,124 @@ fn nearest_root64(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Nearest64 {
 }
 
 // ---------------------------------------------------------------------------------------
+// A ray from a surface point (intersect/from_surface.rs): the origin's own root divided
+// out of the quartic, the nearest root of the cubic left, past it.
+
+// g(v) = v³ + a v² + b v + c and g′(v).
+fn cubic_g64(a: f64, b: f64, c: f64, v: f64) -> vec2<f64> {
+    return vec2<f64>(((v + a) * v + b) * v + c, (3.0 * v + 2.0 * a) * v + b);
+}
+
+// A bound on g's rounding at v.
+fn cubic_rounding64(a: f64, b: f64, c: f64, v: f64) -> f64 {
+    let x = abs(v);
+    return FIN_EIGHT_EPS * (((x + abs(a)) * x + abs(b)) * x + abs(c));
+}
+
+// The root of g in [x, y], where g is monotone and changes sign (gx of the sign of g(x)):
+// Newton inside the shrinking bracket, bisection where a step would leave it.
+fn bracketed_root64(a: f64, b: f64, c: f64, x0: f64, y0: f64, gx: f64) -> f64 {
+    let rising = gx < 0.0;
+    var x = x0;
+    var y = y0;
+    var v = 0.5 * (x + y);
+    for (var i = 0; i < 200; i++) {
+        let g = cubic_g64(a, b, c, v);
+        if (g.x == 0.0) {
+            return v;
+        }
+        if ((g.x < 0.0) == rising) {
+            x = v;
+        } else {
+            y = v;
+        }
+        var next = 0.5 * (x + y);
+        if (g.y != 0.0) {
+            let newton = v - g.x / g.y;
+            if (newton > x && newton < y) {
+                next = newton;
+            }
+        }
+        if (abs(next - v) <= FIN_TWO_EPS * abs(next) || y - x <= FIN_TWO_EPS * max(abs(y), abs(x))) {
+            return next;
+        }
+        v = next;
+    }
+    return v;
+}
+
+struct CubicRoot64 {
+    v: f64,
+    found: bool,
+};
+
+// The smallest root of g in (lo, hi] (in [lo, hi] for lo > 0) by monotone pieces
+// between the critical points (from_surface.rs, nearest_cubic_root).
+fn nearest_cubic_root64(a: f64, b: f64, c: f64, lo: f64, hi_in: f64) -> CubicRoot64 {
+    let none = CubicRoot64(0.0, false);
+    if (!(lo <= hi_in)) {
+        return none;
+    }
+    let bound = 1.0 + max(abs(a), max(abs(b), abs(c)));
+    let hi = min(hi_in, bound);
+    if (lo > hi) {
+        return none;
+    }
+    var ends = array<f64, 4>(lo, hi, hi, hi);
+    var n = 1;
+    // The critical points (roots of 3v² + 2av + b), ascending, without cancellation.
+    let disc = a * a - 3.0 * b;
+    if (disc > 0.0) {
+        let q = -(a + copysign64(sqrt(disc), a));
+        let x = q / 3.0;
+        var y = 0.0lf;
+        if (q != 0.0) {
+            y = b / q;
+        }
+        let first = min(x, y);
+        let second = max(x, y);
+        if (first > lo && first < hi) {
+            ends[n] = first;
+            n++;
+        }
+        if (second > lo && second < hi) {
+            ends[n] = second;
+            n++;
+        }
+    }
+    ends[n] = hi;
+    let open = lo == 0.0;
+    var x = lo;
+    var gx = cubic_g64(a, b, c, lo).x;
+    if (gx == 0.0 && !open) {
+        return CubicRoot64(lo, true);
+    }
+    for (var k = 1; k <= n; k++) {
+        let y = ends[k];
+        let gy = cubic_g64(a, b, c, y).x;
+        if ((gx < 0.0 && gy > 0.0) || (gx > 0.0 && gy < 0.0)) {
+            return CubicRoot64(bracketed_root64(a, b, c, x, y, gx), true);
+        }
+        let at_end = y == hi;
+        if (gy == 0.0 || (!at_end && abs(gy) <= cubic_rounding64(a, b, c, y))) {
+            return CubicRoot64(y, true);
+        }
+        x = y;
+        gx = gy;
+    }
+    return none;
+}
+
+// The origin at u₀ is on the surface within FIN_OWN_ROOT_REACH (in units of R;
+// from_surface.rs, starts_on_the_surface; √(a² + b²) for the CPU's hypot).
+fn starts_on_the_surface64(o: vec3<f64>, inv_major: f64, minor_rel: f64) -> bool {
+    let x = o * inv_major;
+    let rho = sqrt(x.x * x.x + x.z * x.z);
+    let off = abs(sqrt((rho - 1.0) * (rho - 1.0) + x.y * x.y) - minor_rel);
+    return off <= FIN_OWN_ROOT_REACH;
+}
+
+// ---------------------------------------------------------------------------------------
 // The driver (intersect/mod.rs, exact and intersect_reduced; nearest_hit.rs).
 
 fn write_status(i: u32, status: u32) {
@@ -564,7 +682,10 @@ fn finish_main(@builtin(global_invocation_id) gid: vec3<u32>) {
         write_status(i, FIN_STATUS_HOST);
         return;
     }
-    if (instruction == FIN_FOLLOW) {
+    // A ray from a surface point (Ray::from_surface): its own root divided out, as the
+    // CPU's exact() does.
+    let surface = instruction == FIN_SURFACE_FOLLOW || instruction == FIN_SURFACE_ALWAYS;
+    if (instruction == FIN_FOLLOW || instruction == FIN_SURFACE_FOLLOW) {
         // The host's decode of the f32 record (gpu/mod.rs, verdict): a miss, or a hit with
         // a finite t and normal, is proved; everything else escalated.
         let v0 = verdicts[2u * i];
@@ -600,18 +721,6 @@ fn finish_main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let dh = d * inv_len;
     let s = dot64(o, dh);
     let p = (o - dh * s) * inv_major;
-    let chord_sq = outer * outer * FIN_CHORD_SCALE - dot64(p, p);
-    if (chord_sq < 0.0) {
-        write_status(i, FIN_STATUS_MISS);
-        return;
-    }
-    let len = 1.0 / inv_len;
-    let lo = (t_min * len + s) * inv_major;
-    let hi = (t_max * len + s) * inv_major;
-    if ((lo > 0.0 && lo * lo > chord_sq) || (hi < 0.0 && hi * hi > chord_sq)) {
-        write_status(i, FIN_STATUS_MISS);
-        return;
-    }
     // The depressed quartic (reduce.rs, coefficients).
     let rho = sqrt(p.x * p.x + p.z * p.z);
     let tube = (p.y - minor_rel) * (p.y + minor_rel);
@@ -619,17 +728,65 @@ fn finish_main(@builtin(global_invocation_id) gid: vec3<u32>) {
     let delta = dot64(p, dh);
     let c1 = 8.0 * (p.y - delta * dh.y) * dh.y;
     let c0 = ((rho - 1.0) * (rho - 1.0) + tube) * ((rho + 1.0) * (rho + 1.0) + tube);
-    let found = nearest_root64(c2, c1, c0, lo, hi);
-    if (found.host) {
-        write_status(i, FIN_STATUS_HOST);
-        return;
+    var u: f64;
+    var t: f64;
+    if (surface && starts_on_the_surface64(o, inv_major, minor_rel)) {
+        // The origin's own root (three guarded Newton steps on Q from u₀), the cubic in
+        // v = u − own, its nearest root past the origin (from_surface.rs, SurfaceCubic).
+        let u0 = s * inv_major;
+        var own = u0;
+        var e = eval1_64(c2, c1, c0, u0);
+        for (var it = 0; it < 3; it++) {
+            if (e.x == 0.0 || e.y == 0.0) {
+                break;
+            }
+            let next = own - e.x / e.y;
+            let en = eval1_64(c2, c1, c0, next);
+            if (!(abs(next - u0) <= FIN_OWN_ROOT_REACH && abs(en.x) < abs(e.x))) {
+                break;
+            }
+            own = next;
+            e = en;
+        }
+        let a3 = 4.0 * own;
+        let a2 = 6.0 * own * own + c2;
+        let a1 = e.y;
+        let v_per_t = inv_major / inv_len;
+        let shift = own - u0;
+        let v_lo = max(max(t_min, 0.0) * v_per_t - shift, 0.0);
+        let v_hi = t_max * v_per_t - shift;
+        let root = nearest_cubic_root64(a3, a2, a1, v_lo, v_hi);
+        if (!root.found) {
+            write_status(i, FIN_STATUS_MISS);
+            return;
+        }
+        t = (root.v + shift) / v_per_t;
+        u = own + root.v;
+    } else {
+        let chord_sq = outer * outer * FIN_CHORD_SCALE - dot64(p, p);
+        if (chord_sq < 0.0) {
+            write_status(i, FIN_STATUS_MISS);
+            return;
+        }
+        let len = 1.0 / inv_len;
+        let lo = (t_min * len + s) * inv_major;
+        let hi = (t_max * len + s) * inv_major;
+        if ((lo > 0.0 && lo * lo > chord_sq) || (hi < 0.0 && hi * hi > chord_sq)) {
+            write_status(i, FIN_STATUS_MISS);
+            return;
+        }
+        let found = nearest_root64(c2, c1, c0, lo, hi);
+        if (found.host) {
+            write_status(i, FIN_STATUS_HOST);
+            return;
+        }
+        if (!found.found) {
+            write_status(i, FIN_STATUS_MISS);
+            return;
+        }
+        u = found.u;
+        t = (u * major - s) * inv_len;
     }
-    if (!found.found) {
-        write_status(i, FIN_STATUS_MISS);
-        return;
-    }
-    let u = found.u;
-    let t = (u * major - s) * inv_len;
     // The normal (reduce.rs, normal), then to the world: Mᵀ·n.
     let x = p + dh * u;
     let w = dot64(x, x) + k_normal;

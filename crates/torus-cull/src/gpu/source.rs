@@ -14,6 +14,7 @@
 
 use crate::certified::certificate::{BRACKET, U32};
 use crate::cull::{AXIS_PARALLEL_H2, HORIZONTAL_DY, SAFETY_REL};
+use crate::intersect::from_surface::OWN_ROOT_REACH;
 use crate::intersect::reduce::CHORD_SLACK;
 use crate::num::cube_root::CBRT_F32_SEED;
 use crate::quartic::factor::NEAR_DOUBLE;
@@ -216,6 +217,9 @@ pub struct FinishConstants {
     pub cbrt_seed: u32,
     /// The f32 seed's argument range.
     pub cbrt_range: (f64, f64),
+    /// How far from `u₀` (units of R) a ray from a surface point may find its origin's
+    /// own root (`intersect/from_surface.rs`).
+    pub own_root_reach: f64,
 }
 
 impl FinishConstants {
@@ -231,6 +235,7 @@ impl FinishConstants {
         trisect_half_range: trisect::HALF_RANGE,
         cbrt_seed: CBRT_F32_SEED,
         cbrt_range: (CBRT_RANGE_F32.0 as f64, CBRT_RANGE_F32.1 as f64),
+        own_root_reach: OWN_ROOT_REACH,
     };
 
     /// The pass's WGSL `const` declarations, one a line (f64 literals written in Rust's
@@ -240,6 +245,7 @@ impl FinishConstants {
     pub fn header(&self) -> String {
         let mut floats: Vec<(String, f64)> = vec![
             ("FIN_EPS".into(), self.eps),
+            ("FIN_TWO_EPS".into(), 2.0 * self.eps),
             ("FIN_FOUR_EPS".into(), 4.0 * self.eps),
             ("FIN_EIGHT_EPS".into(), 8.0 * self.eps),
             ("FIN_THIRTY_TWO_EPS".into(), 32.0 * self.eps),
@@ -248,6 +254,7 @@ impl FinishConstants {
             ("FIN_SMALL_ROOT".into(), self.small_root),
             ("FIN_POLISH_BELOW".into(), self.polish_below),
             ("FIN_CHORD_SCALE".into(), 1.0 + self.chord_slack),
+            ("FIN_OWN_ROOT_REACH".into(), self.own_root_reach),
             ("FIN_THIRD".into(), 1.0 / 3.0),
             ("FIN_NINTH".into(), 1.0 / 9.0),
             ("FIN_TWENTY_SEVENTH".into(), 1.0 / 27.0),
@@ -617,6 +624,7 @@ mod tests {
             ("FIN_SMALL_ROOT", SMALL_ROOT),
             ("FIN_POLISH_BELOW", POLISH_BELOW),
             ("FIN_CHORD_SCALE", 1.0 + CHORD_SLACK),
+            ("FIN_OWN_ROOT_REACH", OWN_ROOT_REACH),
             ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
             ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
         ] {
