@@ -8,15 +8,18 @@
 //   src/quartic/nearest.rs                      surely_no_real_root, the even quartic,
 //                                               Ferrari's split, the clear factors and
 //                                               the near-double cold path;
-//   src/quartic/{even,resolvent,trisect,factor}.rs.
+//   src/quartic/{even,resolvent,trisect,factor}.rs;
+//   src/intersect/from_surface.rs               a ray from a surface point: its origin's
+//                                               own root divided out, the cubic's nearest
+//                                               root past it.
 // Every threshold comes from the generated header (FIN_*), written from the Rust
-// constants the CPU uses. Where the pass cannot give the CPU's answer (a ray from a
-// surface point, whose f64 path divides its origin's root out, or a value the pass does
+// constants the CPU uses. Where the pass cannot give the CPU's answer (a value it does
 // not hold finite), it hands the ray back to the host: status FIN_HOST.
 //
 // Per ray, in: the world ray (origin, t_min, dir, t_max as f32, widened exactly) and the
 // host's instruction in word 7 of its output record (FIN_FOLLOW: finish where the f32
-// kernel escalated; FIN_ALWAYS: finish it whatever the kernel wrote; FIN_HOST: the host
+// kernel escalated; FIN_ALWAYS: finish it whatever the kernel wrote; FIN_SURFACE_FOLLOW
+// and FIN_SURFACE_ALWAYS: the same for a ray from a surface point; FIN_HOST: the host
 // answers it). Out: (t, normal.xyz) and (point.xyz, status) as f32, t, the normal and
 // the point rounded once from f64, as the CPU's Hit is.
 

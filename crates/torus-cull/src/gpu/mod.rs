@@ -10,8 +10,8 @@
 //! whole range (or a cull's rejection). Everything else comes back
 //! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] finishes those
 //! rays with the f64 solver's method: on the device, by a second f64 pass in the same
-//! command buffer, where the adapter offers `SHADER_F64` (`gpu/finish.rs`; a ray from a
-//! surface point is handed back to the host, counted), else on the host
+//! command buffer, where the adapter offers `SHADER_F64` (`gpu/finish.rs`; what it
+//! cannot hold finite is handed back to the host, counted), else on the host
 //! ([`crate::intersect()`]). [`GpuIntersector::intersect_finished_where`] says which
 //! answered each ray ([`Finished`]). A proved hit's `t` is within
 //! 2·10⁻⁴·(R + r) of the first root in range (along the unit direction; plus half an ulp
@@ -714,7 +714,8 @@ impl GpuIntersector {
     /// [`GpuIntersector::intersect_finished`] with who answered each ray: the f32 kernel
     /// ([`Finished::Proved`]), the device's f64 pass ([`Finished::Device`]) or the host
     /// ([`Finished::Host`]: no f64 on the adapter, or a ray the pass hands back, such as
-    /// one from a surface point; see `gpu/finish.rs`). [`FinishCounts::of`] counts them.
+    /// one whose range f32 cannot clip; see `gpu/finish.rs`). [`FinishCounts::of`] counts
+    /// them.
     pub fn intersect_finished_where(
         &self,
         torus: &Torus,
