@@ -1220,3 +1220,47 @@ fn rays_from_the_surface_are_finished_on_the_device() {
         assert_eq!(counts.device, 0, "{counts:?}");
     }
 }
+
+/// `set_device_finish(false)` finishes every escalated ray on the host, and the host's
+/// answers are the device's (the same hit or miss, the same f32 t) on the grazing rays.
+#[test]
+fn host_and_device_finishes_agree() {
+    use torus_cull::gpu::{FinishCounts, Finished};
+    let Some(gpu) = gpu() else { return };
+    if !gpu.finishes_on_device() {
+        return;
+    }
+    let mut host = GpuIntersector::new().expect("the same adapter again");
+    host.set_device_finish(false);
+    assert!(!host.finishes_on_device());
+    assert!(host.device_finish_unavailable().is_some());
+    for batch in family(Case::Grazing, 3.0, 500, 0xF4) {
+        let rays: Vec<Ray> = pairs(std::slice::from_ref(&batch))
+            .map(|(_, r)| *r)
+            .collect();
+        let on_device = gpu
+            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .unwrap();
+        let on_host = host
+            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .unwrap();
+        let (d, h) = (
+            FinishCounts::of(on_device.iter().map(|(_, f)| f)),
+            FinishCounts::of(on_host.iter().map(|(_, f)| f)),
+        );
+        assert_eq!(h.device, 0, "{h:?}");
+        assert_eq!(
+            (d.proved, d.device + d.host),
+            (h.proved, h.host),
+            "{d:?} {h:?}"
+        );
+        for (ray, ((a, fa), (b, fb))) in rays.iter().zip(on_device.iter().zip(&on_host)) {
+            assert_eq!(*fb == Finished::Host, *fa == Finished::Device, "{ray:?}");
+            assert_eq!(
+                a.hit.map(|h| h.t.to_bits()),
+                b.hit.map(|h| h.t.to_bits()),
+                "{ray:?}"
+            );
+        }
+    }
+}
