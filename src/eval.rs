@@ -28,7 +28,9 @@
 //! (`eval --exact f32`) rounds the row to an f32 ray too and takes `t_hit` from the
 //! certified f32 path ([`torus_cull::intersect_f32`]), with a column `escalated` after `t_hit`:
 //! 1 where f32 could not prove the answer and the f64 solver gave it.
-//! [`Precision::CertifiedGpu`] (`eval --exact gpu`) is the same on the GPU kernel, and adds
+//! [`Precision::CertifiedGpu`] (`eval --exact gpu`) is the same on the GPU kernel, with a
+//! column `finished` after `escalated` (`device` where the adapter's f64 pass finished an
+//! escalated ray, `host` where the CPU did, empty where f32 proved the answer), and adds
 //! after the CPU's cull columns one column per GPU cull, `gpu_<cull>` ([`GPU_CULLS`]):
 //! the kernel's own verdict for that cull (1 keep, 0 reject), on the same ray, so that any
 //! CSV of rays checks the kernel's culls against the CPU's and the oracle.
@@ -61,10 +63,12 @@ pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cych
 /// The GPU columns' culls, in [`CullKind::TIMED`] order: every cull with a batch form.
 pub const GPU_CULLS: [torus_cull::batch::BatchCull; 9] = torus_cull::batch::BATCHED;
 
-/// The output header of `--exact gpu`: [`OUTPUT_HEADER`] with `escalated` after `t_hit`
-/// and one `gpu_<cull>` column per [`GPU_CULLS`] at the end.
+/// The output header of `--exact gpu`: [`OUTPUT_HEADER`] with `escalated` and `finished`
+/// after `t_hit` and one `gpu_<cull>` column per [`GPU_CULLS`] at the end. `finished` says
+/// who answered an escalated ray: `device` (the adapter's f64 pass), `host` (the f64
+/// path on the CPU), or empty where the f32 kernel proved the answer.
 pub fn gpu_output_header() -> String {
-    let mut header = OUTPUT_HEADER.replace(",t_hit,", ",t_hit,escalated,");
+    let mut header = OUTPUT_HEADER.replace(",t_hit,", ",t_hit,escalated,finished,");
     for cull in GPU_CULLS {
         header.push_str(",gpu_");
         header.push_str(torus_cull::Named::name(cull));
@@ -86,8 +90,9 @@ pub enum Precision {
     CertifiedF32,
     /// As [`Precision::CertifiedF32`], on the GPU kernel (`torus_cull::gpu`, feature `gpu`):
     /// every row is read first and the rays go to the adapter in one batch; escalated
-    /// rays are answered by the f64 solver. The output adds the kernel's cull verdicts,
-    /// `gpu_<cull>` ([`gpu_output_header`]).
+    /// rays are answered by the f64 solver, on the device where the adapter has f64
+    /// (`finished` = `device`) and on the host otherwise (`host`). The output adds the
+    /// kernel's cull verdicts, `gpu_<cull>` ([`gpu_output_header`]).
     CertifiedGpu,
 }
 
@@ -276,6 +281,8 @@ fn read_for_gpu(
 /// of [`GPU_CULLS`]'s verdict (true keeps).
 struct GpuAnswer {
     hit: torus_cull::F32Hit,
+    /// Who answered: `""` (the f32 kernel proved it), `"device"` or `"host"`.
+    finished: &'static str,
     keeps: [bool; GPU_CULLS.len()],
 }
 
@@ -285,6 +292,8 @@ struct Row {
     label: OracleLabel,
     t_hit: Option<String>,
     escalated: Option<bool>,
+    /// `--exact gpu`: who finished the ray (`device`, `host`, or empty).
+    finished: Option<&'static str>,
     line: LocalLine,
     gpu_keeps: Option<[bool; GPU_CULLS.len()]>,
 }
@@ -303,30 +312,38 @@ fn evaluate(
             label: oracle(torus, &ray),
             t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
+            finished: None,
             line: torus.dline_to_local(&ray),
             gpu_keeps: None,
         });
     }
     let ray = parse_ray(torus, columns, line)?;
-    let (t, escalated, gpu_keeps) = match precision {
+    let (t, escalated, finished, gpu_keeps) = match precision {
         Precision::CertifiedF32 => {
             let answer = intersect_f32(torus, &ray);
-            (answer.hit.map(|hit| hit.t), Some(answer.escalated), None)
+            (
+                answer.hit.map(|hit| hit.t),
+                Some(answer.escalated),
+                None,
+                None,
+            )
         }
         Precision::CertifiedGpu => {
             let answer = gpu_answers.next().expect("one GPU answer per row");
             (
                 answer.hit.hit.map(|hit| hit.t),
                 Some(answer.hit.escalated),
+                Some(answer.finished),
                 Some(answer.keeps),
             )
         }
-        _ => (intersect(torus, &ray).map(|hit| hit.t), None, None),
+        _ => (intersect(torus, &ray).map(|hit| hit.t), None, None, None),
     };
     Ok(Row {
         label: oracle(torus, &DRay::from(ray)),
         t_hit: t.map(|t| Num::from(t).to_string()),
         escalated,
+        finished,
         // The culls' own input: far origins go to the foot point, as in a renderer.
         line: torus.line_to_local(&ray),
         gpu_keeps,
@@ -344,7 +361,8 @@ fn oracle(torus: &Torus, ray: &DRay) -> OracleLabel {
     }
 }
 
-/// `index,oracle,margin,t_hit[,escalated],<one 0/1 per cull>[,<one 0/1 per GPU cull>]`.
+/// `index,oracle,margin,t_hit[,escalated][,finished],<one 0/1 per cull>[,<one 0/1 per GPU
+/// cull>]`.
 fn write_row(
     output: &mut impl Write,
     torus: &Torus,
@@ -362,6 +380,9 @@ fn write_row(
     }
     if let Some(escalated) = row.escalated {
         write!(output, ",{}", u8::from(escalated))?;
+    }
+    if let Some(finished) = row.finished {
+        write!(output, ",{finished}")?;
     }
     for cull in CullKind::TIMED {
         let keep = cull.keeps(torus.bounds(), row.line.origin, row.line.dir);
@@ -382,7 +403,7 @@ fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<GpuAnswer>, EvalError>
     let gpu_error = |e: torus_cull::gpu::GpuError| EvalError::Gpu(e.to_string());
     let gpu = GpuIntersector::new().map_err(gpu_error)?;
     let hits = gpu
-        .intersect_finished(torus, GpuCull::None, rays)
+        .intersect_finished_where(torus, GpuCull::None, rays)
         .map_err(gpu_error)?;
     let mut keeps = vec![[true; GPU_CULLS.len()]; rays.len()];
     for (k, cull) in GPU_CULLS.into_iter().enumerate() {
@@ -396,7 +417,11 @@ fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<GpuAnswer>, EvalError>
     Ok(hits
         .into_iter()
         .zip(keeps)
-        .map(|(hit, keeps)| GpuAnswer { hit, keeps })
+        .map(|((hit, finished), keeps)| GpuAnswer {
+            hit,
+            finished: finished.name(),
+            keeps,
+        })
         .collect())
 }
 
@@ -621,7 +646,7 @@ mod tests {
         assert_eq!(
             gpu_output_header(),
             format!(
-                "index,oracle,margin,t_hit,escalated,{},{}",
+                "index,oracle,margin,t_hit,escalated,finished,{},{}",
                 names.join(","),
                 gpu.join(",")
             )

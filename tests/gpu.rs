@@ -438,7 +438,7 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
             .skip(1)
             .map(|l| {
                 let f: Vec<&str> = l.split(',').collect();
-                (f[3].parse::<f64>().ok(), f[4] == "1")
+                (f[3].parse::<f64>().ok(), f[4] == "1", f[5].to_string())
             })
             .collect::<Vec<_>>()
     };
@@ -446,7 +446,18 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
     assert_eq!(gpu_rows.len(), 600);
     assert_eq!(gpu_rows.len(), cpu_rows.len());
     let escalated = gpu_rows.iter().filter(|r| r.1).count();
-    for (i, ((g, _), (c, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
+    // `finished`: empty where f32 proved the answer; else who finished it (the device
+    // where the adapter has f64: none of these rays starts on the surface).
+    let finisher = if gpu().is_some_and(|g| g.finishes_on_device()) {
+        "device"
+    } else {
+        "host"
+    };
+    for (i, (_, escalated, finished)) in gpu_rows.iter().enumerate() {
+        let want = if *escalated { finisher } else { "" };
+        assert_eq!(finished, want, "row {i}");
+    }
+    for (i, ((g, _, _), (c, _, _))) in gpu_rows.iter().zip(&cpu_rows).enumerate() {
         assert_eq!(g.is_some(), c.is_some(), "row {i}: gpu {g:?}, f32 {c:?}");
         if let (Some(g), Some(c)) = (g, c) {
             assert!(
@@ -455,7 +466,7 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
             );
         }
     }
-    println!("eval --exact gpu: {escalated} of 600 rows escalated");
+    println!("eval --exact gpu: {escalated} of 600 rows escalated, finished by the {finisher}");
 }
 
 /// `time --device gpu` writes Mrays/s per cull as estimates, with the adapter in
@@ -564,13 +575,45 @@ fn secondary_rays_from_hits_are_proved_past_their_origin_or_finished_on_the_host
         }
     }
     assert!(rays.len() > 100);
-    let finished = gpu
-        .intersect_finished(&torus, GpuCull::None, &rays)
+    let answers = gpu
+        .intersect_finished_where(&torus, GpuCull::None, &rays)
         .expect("dispatch");
+    // An escalated ray is finished on the device where it has f64, else on the host.
+    let counts = torus_cull::gpu::FinishCounts::of(answers.iter().map(|(_, f)| f));
+    println!(
+        "secondary rays from hits: {} rays, {} proved, {} finished on the host, {} on the device",
+        rays.len(),
+        counts.proved,
+        counts.host,
+        counts.device
+    );
+    if gpu.finishes_on_device() {
+        assert_eq!(counts.host, 0, "{counts:?}");
+    } else {
+        assert_eq!(counts.device, 0, "{counts:?}");
+    }
+    let on_device: Vec<bool> = answers
+        .iter()
+        .map(|(_, f)| *f == torus_cull::gpu::Finished::Device)
+        .collect();
+    let finished: Vec<_> = answers.into_iter().map(|(hit, _)| hit).collect();
+    assert_eq!(
+        counts.host + counts.device,
+        finished.iter().filter(|a| a.escalated).count()
+    );
     let mut proved = 0;
-    for ((ray, answer), &into) in rays.iter().zip(&finished).zip(&into) {
+    for (((ray, answer), &into), &device) in rays.iter().zip(&finished).zip(&into).zip(&on_device) {
         let exact = intersect(&torus, ray);
-        if answer.escalated {
+        if answer.escalated && device {
+            // The device's f64 pass: the CPU's answer to rounding.
+            assert_eq!(answer.hit.is_some(), exact.is_some(), "{ray:?}");
+            if let (Some(h), Some(e)) = (answer.hit, exact) {
+                assert!(
+                    (h.t - e.t).abs() <= 1.2e-7 * e.t.abs().max(5.0),
+                    "{ray:?}: {h:?} vs {e:?}"
+                );
+            }
+        } else if answer.escalated {
             assert_eq!(answer.hit, exact, "{ray:?}");
         } else {
             proved += 1;
@@ -884,5 +927,340 @@ fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
             certified.far
         );
         assert!(!certified.failed(), "{name}: {certified:?}");
+    }
+}
+
+/// Rays on their torus.
+type RaySet = (Torus, Vec<Ray>);
+
+/// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between a device-finished hit (its t
+/// rounded to f32, as the CPU's f64 path rounds it) and the oracle's first root, or the
+/// CPU's f64 answer: tests/intersect_vs_oracle.rs's bound for the CPU's f64 path.
+const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
+
+/// One family's device finish: rays by who answered, and what the device's answers were
+/// checked against.
+#[derive(Default)]
+struct FinishTally {
+    rays: usize,
+    counts: [usize; 3],
+    /// Device answers the oracle labels definite hit that came back miss, and definite
+    /// miss that came back hit.
+    missed: usize,
+    invented: usize,
+    /// Device answers whose hit-or-miss differs from the CPU's f64 path (any label).
+    differ_from_cpu: usize,
+    /// Device hits with the same f32 t as the CPU's f64 path, bit for bit.
+    same_t: usize,
+    device_hits: usize,
+    worst_vs_oracle: f64,
+    worst_vs_cpu: f64,
+    failures: Vec<String>,
+}
+
+impl FinishTally {
+    fn run(&mut self, gpu: &GpuIntersector, torus: &Torus, rays: &[Ray]) {
+        use torus_cull::gpu::Finished;
+        let answers = gpu
+            .intersect_finished_where(torus, GpuCull::None, rays)
+            .expect("dispatch");
+        for (ray, (answer, finished)) in rays.iter().zip(answers) {
+            self.rays += 1;
+            self.counts[match finished {
+                Finished::Proved => 0,
+                Finished::Device => 1,
+                _ => 2,
+            }] += 1;
+            if finished != Finished::Device {
+                continue;
+            }
+            let cpu = intersect(torus, ray);
+            let query = Query::ray(torus, ray);
+            // A ray from a surface point is labelled past its origin's own root.
+            let label = if ray.starts_on_surface() {
+                torus_cull_lab::oracle::classify_from_surface(&query)
+            } else {
+                query.classify()
+            };
+            let mut fail = |text: String| {
+                if self.failures.len() < 10 {
+                    self.failures.push(format!("{text}: {ray:?} on {torus:?}"));
+                }
+            };
+            if answer.hit.is_some() != cpu.is_some() {
+                self.differ_from_cpu += 1;
+                fail(format!(
+                    "device {:?}, CPU f64 {cpu:?} ({label:?})",
+                    answer.hit
+                ));
+            }
+            match (label.class, answer.hit) {
+                (OracleClass::Hit, None) => {
+                    self.missed += 1;
+                    fail(format!("device miss for a definite hit {label:?}"));
+                }
+                (OracleClass::Miss, Some(hit)) => {
+                    self.invented += 1;
+                    fail(format!("device hit {hit:?} for a definite miss {label:?}"));
+                }
+                _ => {}
+            }
+            let Some(hit) = answer.hit else { continue };
+            self.device_hits += 1;
+            let len = f64::from(ray.dir().length());
+            let scale = |t_ref: f64| t_ref.abs().max(f64::from(torus.outer_radius()) / len);
+            if let Some(cpu) = cpu {
+                self.same_t += usize::from(cpu.t.to_bits() == hit.t.to_bits());
+                let rel = f64::from(hit.t - cpu.t).abs() / scale(f64::from(cpu.t));
+                self.worst_vs_cpu = self.worst_vs_cpu.max(rel);
+                if rel > DEVICE_T_TOLERANCE_REL || cpu.front_face != hit.front_face {
+                    fail(format!("device {hit:?} vs CPU f64 {cpu:?}"));
+                }
+                if (hit.normal - cpu.normal).length() > 1e-5 {
+                    fail(format!(
+                        "device normal {} vs CPU {}",
+                        hit.normal, cpu.normal
+                    ));
+                }
+            }
+            if label.class == OracleClass::Hit && !ray.starts_on_surface() {
+                let reference = reference_roots(&query)[0];
+                let rel = (f64::from(hit.t) - reference).abs() / scale(reference);
+                self.worst_vs_oracle = self.worst_vs_oracle.max(rel);
+                if rel > DEVICE_T_TOLERANCE_REL {
+                    fail(format!("device t = {} vs oracle {reference}", hit.t));
+                }
+            }
+        }
+    }
+
+    fn report(&self, name: &str) {
+        let [proved, device, host] = self.counts;
+        println!(
+            "{name:<34} {:>6} rays: proved {proved:>6}, finished on the device {device:>5}, \
+             on the host {host:>4}; device: {} hits ({} with the CPU's t to the bit), \
+             missed {}, invented {}, differ from CPU f64 {}, worst t vs oracle {:.1e}, vs \
+             CPU {:.1e}",
+            self.rays,
+            self.device_hits,
+            self.same_t,
+            self.missed,
+            self.invented,
+            self.differ_from_cpu,
+            self.worst_vs_oracle,
+            self.worst_vs_cpu,
+        );
+    }
+}
+
+/// Escalation on the device (issue 27, item 2): on an adapter with f64 every ray of the
+/// families that escalate (the hole at ν = 1.01, grazing rays at every ν, near and
+/// 10⁵·(R + r) away, lines hugging the hole's edge and tangent to the special circles at
+/// ±10⁻⁶·r) is finished on the device (0 on the host), and every device answer is the
+/// CPU's f64 path's: 0 missed and 0 invented against the oracle, the same hit or miss as
+/// the CPU, t within 1.2·10⁻⁷ (relative) of the CPU's and of the oracle's first root.
+/// The f32-check families of secondary rays from hit points (`Ray::from_surface`, their
+/// own root divided out on the device as on the CPU) are held to the same, their oracle
+/// label taken past the origin.
+#[test]
+fn escalated_rays_are_finished_on_the_device_in_f64() {
+    let Some(gpu) = gpu() else { return };
+    if !gpu.finishes_on_device() {
+        let _ = writeln!(
+            std::io::stderr(),
+            "SKIPPED device finish: {}",
+            gpu.device_finish_unavailable().unwrap_or_default()
+        );
+        return;
+    }
+    let mut families: Vec<(String, Vec<RaySet>)> = Vec::new();
+    let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
+        family(case, nu, n, seed)
+            .iter()
+            .map(|batch| {
+                let torus = batch.torus;
+                let rays = pairs(std::slice::from_ref(batch))
+                    .map(|(_, ray)| {
+                        if back == 0.0 {
+                            *ray
+                        } else {
+                            pushed_back(ray, back * torus.outer_radius())
+                        }
+                    })
+                    .collect();
+                (torus, rays)
+            })
+            .collect::<Vec<_>>()
+    };
+    families.push((
+        "hole ν=1.01".into(),
+        batches(Case::Hole, 1.01, 4000, 0xF1, 0.0),
+    ));
+    for nu in NUS {
+        families.push((
+            format!("grazing ν={nu}"),
+            batches(Case::Grazing, nu, 1000, 0xF2 ^ nu.to_bits(), 0.0),
+        ));
+    }
+    families.push((
+        "grazing ν=1.01 back 1e5·(R+r)".into(),
+        batches(Case::Grazing, 1.01, 1000, 0xF3, 1e5),
+    ));
+    let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
+    let mut hole_edge = Vec::new();
+    let mut tangent: Vec<Vec<RaySet>> = SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
+    for nu in [1.01, 2.0, 100.0] {
+        for major in [1e-3f32, 1.0, 1e3] {
+            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
+            let (big, small) = (
+                f64::from(torus.major_radius()),
+                f64::from(torus.minor_radius()),
+            );
+            let rays: Vec<Ray> = (0..300)
+                .filter_map(|_| {
+                    let (p, d) = hole_edge_line(&mut rng, big, small);
+                    world_ray(&torus, p, d)
+                })
+                .collect();
+            hole_edge.push((torus, rays));
+            for (circle, slot) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
+                let rays: Vec<Ray> = (0..200)
+                    .filter_map(|i| {
+                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
+                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
+                        world_ray(&torus, p, d)
+                    })
+                    .collect();
+                slot.push((torus, rays));
+            }
+        }
+    }
+    families.push(("hole_edge_line".into(), hole_edge));
+    // Secondary rays from hit points (Ray::from_surface): the f32-check families.
+    for name in [
+        "spawned_bounce",
+        "spawned_bounce_scene_eps",
+        "spawned_grazing",
+        "spawned_across",
+    ] {
+        let family = torus_cull_lab::f32_check::families::all()
+            .into_iter()
+            .find(|f| f.name == name)
+            .expect("an f32-check family");
+        let mut sets: Vec<RaySet> = Vec::new();
+        for (torus, ray) in family.generate(100, 0xF1_5E64).unwrap() {
+            match sets.last_mut() {
+                Some((last, rays)) if *last == torus => rays.push(ray),
+                _ => sets.push((torus, vec![ray])),
+            }
+        }
+        families.push((name.into(), sets));
+    }
+    for (circle, sets) in SpecialCircle::ALL.into_iter().zip(tangent) {
+        families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));
+    }
+    let mut failures = Vec::new();
+    let mut total_device = 0;
+    for (name, sets) in &families {
+        let mut tally = FinishTally::default();
+        for (torus, rays) in sets {
+            tally.run(gpu, torus, rays);
+        }
+        tally.report(name);
+        let [_, device, host] = tally.counts;
+        total_device += device;
+        if host != 0 || !tally.failures.is_empty() {
+            failures.push(format!(
+                "{name}: {device} finished on the device, {host} on the host\n{}",
+                tally.failures.join("\n")
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        total_device > 10_000,
+        "{total_device} finished on the device"
+    );
+}
+
+/// Rays from a surface point that the kernel escalates (into the tube: the host does not
+/// send them) are finished on the device where it has f64, with the CPU's answer.
+#[test]
+fn rays_from_the_surface_are_finished_on_the_device() {
+    use torus_cull::gpu::FinishCounts;
+    let Some(gpu) = gpu() else { return };
+    let torus = Torus::canonical(4.0, 1.0).unwrap();
+    // Into the tube from the top of it (the kernel escalates: into the solid), and out of
+    // it, off the surface.
+    let rays = [
+        Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::NEG_Y).unwrap(),
+        Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::new(0.3, -1.0, 0.1)).unwrap(),
+        Ray::from_surface(Vec3::new(5.0, 0.0, 0.0), Vec3::X).unwrap(),
+    ];
+    let answers = gpu
+        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .expect("dispatch");
+    for (ray, (answer, _)) in rays.iter().zip(&answers) {
+        let cpu = intersect(&torus, ray);
+        assert_eq!(answer.hit.is_some(), cpu.is_some(), "{ray:?}");
+        if let (Some(h), Some(c)) = (answer.hit, cpu) {
+            assert!(
+                (h.t - c.t).abs() <= 1e-6 * c.t.abs().max(1.0),
+                "{ray:?}: {h:?} vs {c:?}"
+            );
+            assert_eq!(h.front_face, c.front_face, "{ray:?}");
+        }
+    }
+    let counts = FinishCounts::of(answers.iter().map(|(_, f)| f));
+    let escalated = counts.device + counts.host;
+    assert!(escalated >= 2, "{counts:?}");
+    if gpu.finishes_on_device() {
+        assert_eq!(counts.host, 0, "{counts:?}");
+    } else {
+        assert_eq!(counts.device, 0, "{counts:?}");
+    }
+}
+
+/// `set_device_finish(false)` finishes every escalated ray on the host, and the host's
+/// answers are the device's (the same hit or miss, the same f32 t) on the grazing rays.
+#[test]
+fn host_and_device_finishes_agree() {
+    use torus_cull::gpu::{FinishCounts, Finished};
+    let Some(gpu) = gpu() else { return };
+    if !gpu.finishes_on_device() {
+        return;
+    }
+    let mut host = GpuIntersector::new().expect("the same adapter again");
+    host.set_device_finish(false);
+    assert!(!host.finishes_on_device());
+    assert!(host.device_finish_unavailable().is_some());
+    for batch in family(Case::Grazing, 3.0, 500, 0xF4) {
+        let rays: Vec<Ray> = pairs(std::slice::from_ref(&batch))
+            .map(|(_, r)| *r)
+            .collect();
+        let on_device = gpu
+            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .unwrap();
+        let on_host = host
+            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .unwrap();
+        let (d, h) = (
+            FinishCounts::of(on_device.iter().map(|(_, f)| f)),
+            FinishCounts::of(on_host.iter().map(|(_, f)| f)),
+        );
+        assert_eq!(h.device, 0, "{h:?}");
+        assert_eq!(
+            (d.proved, d.device + d.host),
+            (h.proved, h.host),
+            "{d:?} {h:?}"
+        );
+        for (ray, ((a, fa), (b, fb))) in rays.iter().zip(on_device.iter().zip(&on_host)) {
+            assert_eq!(*fb == Finished::Host, *fa == Finished::Device, "{ray:?}");
+            assert_eq!(
+                a.hit.map(|h| h.t.to_bits()),
+                b.hit.map(|h| h.t.to_bits()),
+                "{ray:?}"
+            );
+        }
     }
 }

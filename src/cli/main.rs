@@ -159,8 +159,10 @@ enum Command {
         /// The exact intersection behind t_hit: `f64` (the default) or `f32`, the
         /// certified f32 path, which adds the column `escalated` (1: f32 could not prove
         /// the answer, the f64 solver gave it) and takes f32 rays; `gpu`, the same on the
-        /// GPU kernel (a binary built with `--features gpu`), plus one column per GPU
-        /// cull, gpu_<cull> (1 keep, 0 reject: the kernel's own verdict).
+        /// GPU kernel (a binary built with `--features gpu`), plus a column `finished`
+        /// (`device`: the adapter's f64 pass finished the escalated ray; `host`: the
+        /// CPU did; empty: f32 proved it) and one column per GPU cull, gpu_<cull> (1
+        /// keep, 0 reject: the kernel's own verdict).
         #[arg(long, value_enum, default_value_t = EvalExact::F64)]
         exact: EvalExact,
     },
@@ -174,7 +176,8 @@ enum EvalExact {
     /// The certified f32 path, escalating to f64.
     F32,
     /// The certified f32 path on the GPU kernel (a binary built with `--features gpu`),
-    /// escalating to f64 on the host, and the kernel's culls (columns gpu_<cull>).
+    /// escalating to f64 on the device where the adapter has f64, else on the host, and
+    /// the kernel's culls (columns gpu_<cull>).
     Gpu,
 }
 

@@ -8,8 +8,12 @@
 //! the signed distance within a bracket around the reported root, with F > 0 proved
 //! before it (convex pieces split at F's lowest point); a miss is F > 0 proved over the
 //! whole range (or a cull's rejection). Everything else comes back
-//! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] hands those rays
-//! to the f64 solver ([`crate::intersect()`]) on the host. A proved hit's `t` is within
+//! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] finishes those
+//! rays with the f64 solver's method: on the device, by a second f64 pass in the same
+//! command buffer, where the adapter offers `SHADER_F64` (`gpu/finish.rs`; what it
+//! cannot hold finite is handed back to the host, counted), else on the host
+//! ([`crate::intersect()`]). [`GpuIntersector::intersect_finished_where`] says which
+//! answered each ray ([`Finished`]). A proved hit's `t` is within
 //! 2·10⁻⁴·(R + r) of the first root in range (along the unit direction; plus half an ulp
 //! of `t` for a rebased origin, below), as on the CPU.
 //!
@@ -41,7 +45,7 @@
 //!
 //! **One source for the constants.** The kernel's text is `module.wgsl` and `kernel.wgsl`
 //! behind a header generated from the Rust constants the CPU uses ([`kernel_source`],
-//! [`KernelConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
+//! [`KernelConstants`]; the f64 pass's, `finish.wgsl`, from [`FinishConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
 //! the bracket, [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's
 //! constants, as exact hexadecimal floats, and the result, cull and escalation codes.
 //!
@@ -71,11 +75,13 @@
 //! ```
 
 mod bounds;
+pub(crate) mod finish;
 mod module;
 mod source;
 
+pub use finish::{FinishCounts, Finished};
 pub use module::{ModuleTorus, PreparedRay};
-pub use source::{KernelConstants, kernel_source, wgsl_module};
+pub use source::{FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_module};
 /// The wgpu this library's kernel runs on (and whose `naga` validates
 /// [`wgsl_module`]): a renderer that includes the module uses the same version.
 pub use wgpu;
@@ -282,6 +288,11 @@ pub struct GpuIntersector {
     /// The buffers of the last batch, kept for the next one (creating them per call would
     /// be four buffer allocations and a bind group per batch); one batch runs at a time.
     pub(crate) buffers: Mutex<Option<Buffers>>,
+    /// The f64 finish pass (`gpu/finish.rs`), where the adapter offers `SHADER_F64`; else why
+    /// not.
+    pub(crate) finish: Result<finish::FinishPipeline, String>,
+    /// Escalated rays go to the f64 pass where there is one (default), else to the host.
+    pub(crate) device_finish: bool,
 }
 
 /// The uniform block, the rays, the results and their staging copy, for up to `rays`
@@ -293,6 +304,8 @@ pub(crate) struct Buffers {
     pub(crate) output: wgpu::Buffer,
     pub(crate) staging: wgpu::Buffer,
     pub(crate) bind_group: wgpu::BindGroup,
+    /// The f64 finish pass's buffers, where the device has the pass.
+    pub(crate) finish: Option<finish::FinishBuffers>,
 }
 
 impl fmt::Debug for GpuIntersector {
@@ -327,8 +340,10 @@ impl GpuIntersector {
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("torus-cull"),
                 // Timestamps only time the kernel (`ResidentRays::run`); an adapter
-                // without them still runs it.
-                required_features: adapter.features() & wgpu::Features::TIMESTAMP_QUERY,
+                // without them still runs it. f64 runs the finish pass (`finish`); an
+                // adapter without it finishes escalated rays on the host.
+                required_features: adapter.features()
+                    & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F64),
                 required_limits: wgpu::Limits::downlevel_defaults(),
                 ..Default::default()
             })
@@ -375,6 +390,14 @@ impl GpuIntersector {
         if let Some(e) = scope.pop().await {
             return Err(GpuError::Kernel(e.to_string()));
         }
+        let finish = if device.features().contains(wgpu::Features::SHADER_F64) {
+            // A driver that refuses the f64 pass leaves the host to finish (and says why).
+            finish::FinishPipeline::new(&device)
+                .await
+                .map_err(|e| e.to_string())
+        } else {
+            Err("the adapter does not offer SHADER_F64".into())
+        };
         Ok(GpuIntersector {
             device,
             queue,
@@ -382,7 +405,33 @@ impl GpuIntersector {
             layout,
             info,
             buffers: Mutex::new(None),
+            finish,
+            device_finish: true,
         })
+    }
+
+    /// Whether escalated rays are finished on the device (`gpu/finish.rs`; the adapter offers
+    /// `SHADER_F64`, the pass compiled, and [`GpuIntersector::set_device_finish`] did not
+    /// turn it off).
+    pub fn finishes_on_device(&self) -> bool {
+        self.device_finish && self.finish.is_ok()
+    }
+
+    /// Why escalated rays are not finished on the device, if they are not.
+    pub fn device_finish_unavailable(&self) -> Option<String> {
+        match &self.finish {
+            Err(why) => Some(why.clone()),
+            Ok(_) if !self.device_finish => Some("turned off (set_device_finish)".into()),
+            Ok(_) => None,
+        }
+    }
+
+    /// Finish escalated rays on the device where it can (`true`, the default) or always
+    /// on the host (`false`: the f64 path of [`crate::intersect()`], as without f64).
+    pub fn set_device_finish(&mut self, on: bool) {
+        self.device_finish = on;
+        // The cached buffers may lack (or hold) the pass's.
+        *self.buffers.get_mut().unwrap_or_else(|e| e.into_inner()) = None;
     }
 
     /// Buffers for `rays` rays a dispatch.
@@ -426,6 +475,12 @@ impl GpuIntersector {
                 },
             ],
         });
+        let finish = match &self.finish {
+            Ok(pass) if self.device_finish => {
+                Some(pass.buffers(&self.device, rays, &params, &output))
+            }
+            _ => None,
+        };
         Buffers {
             rays,
             params,
@@ -433,6 +488,7 @@ impl GpuIntersector {
             output,
             staging,
             bind_group,
+            finish,
         }
     }
 
@@ -556,6 +612,21 @@ impl GpuIntersector {
         params: &[u8],
         packed: &[Packed],
     ) -> Result<Vec<[f32; 8]>, GpuError> {
+        self.dispatch_with(buffers, params, packed, None)
+            .map(|(records, _)| records)
+    }
+
+    /// [`GpuIntersector::dispatch`], followed, when `finish` holds the torus in f64 and
+    /// each ray's world and instruction records ([`finish::world_record`]), by the f64
+    /// finish pass in the same command buffer; its records `(t, n.xyz, point.xyz,
+    /// status)` come back too.
+    pub(crate) fn dispatch_with(
+        &self,
+        buffers: &Buffers,
+        params: &[u8],
+        packed: &[Packed],
+        finish: Option<finish::FinishInput<'_>>,
+    ) -> Result<Dispatched, GpuError> {
         let Buffers {
             params: params_buffer,
             input,
@@ -568,6 +639,7 @@ impl GpuIntersector {
         self.queue.write_buffer(params_buffer, 0, params);
         self.queue.write_buffer(input, 0, &as_bytes(&words));
         let bytes = packed.len() as u64 * RAY_BYTES;
+        let groups = packed.len().div_ceil(WORKGROUP) as u32;
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
@@ -580,39 +652,138 @@ impl GpuIntersector {
             });
             pass.set_pipeline(&self.pipeline);
             pass.set_bind_group(0, bind_group, &[]);
-            pass.dispatch_workgroups(packed.len().div_ceil(WORKGROUP) as u32, 1, 1);
+            pass.dispatch_workgroups(groups, 1, 1);
         }
         encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
-        self.queue.submit([encoder.finish()]);
-        let slice = staging.slice(..bytes);
-        self.map_read(&slice)?;
-        let records = {
-            let view = slice
-                .get_mapped_range()
-                .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-            decode_records(&view).collect()
+        let second = match (finish, &buffers.finish, &self.finish) {
+            (Some(input), Some(fb), Ok(pass)) => {
+                let world: Vec<f32> = input.world.iter().flatten().copied().collect();
+                let instructions: Vec<f32> = input.instructions.iter().flatten().copied().collect();
+                self.queue.write_buffer(&fb.torus, 0, input.torus);
+                self.queue.write_buffer(&fb.world, 0, &as_bytes(&world));
+                self.queue
+                    .write_buffer(&fb.finished, 0, &as_bytes(&instructions));
+                {
+                    let mut second = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                        label: Some("torus-cull f64 finish pass"),
+                        timestamp_writes: None,
+                    });
+                    second.set_pipeline(&pass.pipeline);
+                    second.set_bind_group(0, &fb.bind_group, &[]);
+                    second.dispatch_workgroups(groups, 1, 1);
+                }
+                encoder.copy_buffer_to_buffer(&fb.finished, 0, &fb.staging, 0, bytes);
+                Some(&fb.staging)
+            }
+            _ => None,
         };
-        staging.unmap();
-        Ok(records)
+        self.queue.submit([encoder.finish()]);
+        let read = |staging: &wgpu::Buffer| -> Result<Vec<[f32; 8]>, GpuError> {
+            let slice = staging.slice(..bytes);
+            self.map_read(&slice)?;
+            let records = {
+                let view = slice
+                    .get_mapped_range()
+                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+                decode_records(&view).collect()
+            };
+            staging.unmap();
+            Ok(records)
+        };
+        let records = read(staging)?;
+        let finished = second.map(read).transpose()?;
+        Ok((records, finished))
     }
 
-    /// [`GpuIntersector::intersect`], finished on the host: every escalated ray is
-    /// answered by the f64 solver ([`crate::intersect()`]), so the hits and misses are
-    /// the f64 path's.
+    /// [`GpuIntersector::intersect`], finished: every escalated ray is answered in f64,
+    /// by the device's f64 pass (`gpu/finish.rs`) where the adapter has one, else by the host
+    /// ([`crate::intersect()`]); so the hits and misses are the f64 path's.
     pub fn intersect_finished(
         &self,
         torus: &Torus,
         cull: GpuCull,
         rays: &[Ray],
     ) -> Result<Vec<F32Hit>, GpuError> {
-        let verdicts = self.intersect(torus, cull, rays)?;
-        Ok(verdicts
+        Ok(self
+            .intersect_finished_where(torus, cull, rays)?
             .into_iter()
-            .zip(rays)
-            .map(|(v, ray)| crate::certified::finish(v, torus, ray))
+            .map(|(hit, _)| hit)
             .collect())
     }
+
+    /// [`GpuIntersector::intersect_finished`] with who answered each ray: the f32 kernel
+    /// ([`Finished::Proved`]), the device's f64 pass ([`Finished::Device`]) or the host
+    /// ([`Finished::Host`]: no f64 on the adapter, or a ray the pass hands back, such as
+    /// one whose range f32 cannot clip; see `gpu/finish.rs`). [`FinishCounts::of`] counts
+    /// them.
+    pub fn intersect_finished_where(
+        &self,
+        torus: &Torus,
+        cull: GpuCull,
+        rays: &[Ray],
+    ) -> Result<Vec<(F32Hit, Finished)>, GpuError> {
+        let mut out = Vec::with_capacity(rays.len());
+        if rays.is_empty() {
+            return Ok(out);
+        }
+        let chunk = rays.len().min(CHUNK);
+        let mut cache = self.buffers.lock().unwrap_or_else(|e| e.into_inner());
+        if cache.as_ref().is_none_or(|b| b.rays < chunk) {
+            *cache = Some(self.buffers(chunk));
+        }
+        let buffers = cache.as_ref().expect("just made");
+        let on_device = buffers.finish.is_some();
+        let frame = Frame::of(torus);
+        let torus64 = finish::torus_bytes(torus);
+        for batch in rays.chunks(CHUNK) {
+            let packed: Vec<Packed> = batch.iter().map(|ray| frame.prepare(ray)).collect();
+            let (world, instructions): (Vec<[f32; 8]>, Vec<[f32; 8]>) = if on_device {
+                batch
+                    .iter()
+                    .zip(&packed)
+                    .map(|(ray, p)| finish::world_record(torus, ray, p))
+                    .unzip()
+            } else {
+                (Vec::new(), Vec::new())
+            };
+            let second = on_device.then_some(finish::FinishInput {
+                torus: &torus64,
+                world: &world,
+                instructions: &instructions,
+            });
+            let params = frame.params(batch.len() as u32, cull, Mode::Intersect);
+            let (records, finished) = match self.dispatch_with(buffers, &params, &packed, second) {
+                Ok(answer) => answer,
+                Err(e) => {
+                    *cache = None;
+                    return Err(e);
+                }
+            };
+            for (k, (ray, p)) in batch.iter().zip(&packed).enumerate() {
+                let (verdict, _) = p.host.unwrap_or_else(|| shifted(verdict(records[k]), p.t0));
+                if verdict != F32Verdict::Escalate {
+                    out.push((
+                        crate::certified::finish(verdict, torus, ray),
+                        Finished::Proved,
+                    ));
+                    continue;
+                }
+                match finished.as_ref().and_then(|f| finish::device_answer(f[k])) {
+                    Some(answer) => out.push((answer, Finished::Device)),
+                    None => out.push((
+                        crate::certified::finish(verdict, torus, ray),
+                        Finished::Host,
+                    )),
+                }
+            }
+        }
+        Ok(out)
+    }
 }
+
+/// One dispatch's records: the kernel's `(t, n.xyz, code, why, 0, 0)`, and the f64
+/// pass's `(t, n.xyz, point.xyz, status)` where it ran.
+pub(crate) type Dispatched = (Vec<[f32; 8]>, Option<Vec<[f32; 8]>>);
 
 /// What the kernel does per ray (`Params.config.z`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

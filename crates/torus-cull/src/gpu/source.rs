@@ -14,9 +14,11 @@
 
 use crate::certified::certificate::{BRACKET, U32};
 use crate::cull::{AXIS_PARALLEL_H2, HORIZONTAL_DY, SAFETY_REL};
+use crate::intersect::from_surface::OWN_ROOT_REACH;
+use crate::intersect::reduce::CHORD_SLACK;
 use crate::num::cube_root::CBRT_F32_SEED;
 use crate::quartic::factor::NEAR_DOUBLE;
-use crate::quartic::resolvent::{DISC_NEAR, SMALL_ROOT};
+use crate::quartic::resolvent::{DISC_NEAR, POLISH_BELOW, SMALL_ROOT};
 use crate::quartic::{EPS, trisect};
 use std::fmt::Write;
 
@@ -183,6 +185,136 @@ impl KernelConstants {
     pub fn source(&self) -> String {
         format!("{}\n{KERNEL_BODY}", self.module())
     }
+}
+
+/// The f64 finish pass's body (`finish.wgsl`): its bindings, the CPU's f64 method and
+/// its entry point `finish_main`; every threshold from [`FinishConstants::header`].
+const FINISH_BODY: &str = include_str!("finish.wgsl");
+
+/// Every number the device's f64 finish (`gpu/finish.rs`) takes from Rust, by name:
+/// the f64 solver's thresholds and fits, as the CPU's [`crate::intersect()`] uses them.
+/// [`FinishConstants::CPU`] holds those values; a different value (a test's) gives a
+/// different pass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FinishConstants {
+    /// ε of f64 (the solver's rounding unit).
+    pub eps: f64,
+    /// A factor's near-double threshold ([`crate::quartic`]'s `NEAR_DOUBLE`).
+    pub near_double: f64,
+    /// The resolvent's near-double threshold on |Δ|/scale.
+    pub disc_near: f64,
+    /// The resolvent's small-root threshold.
+    pub small_root: f64,
+    /// Below this |Δ|/scale the resolvent's closed form is Newton-polished.
+    pub polish_below: f64,
+    /// The bounding-sphere chord test's relative slack.
+    pub chord_slack: f64,
+    /// The trisection's degree-5 fit, highest power first.
+    pub trisect_fit: [f64; 6],
+    /// The fit's centre, 1/√3.
+    pub trisect_half_range: f64,
+    /// Kahan's seed for the f32 cube root that seeds the f64 one.
+    pub cbrt_seed: u32,
+    /// The f32 seed's argument range.
+    pub cbrt_range: (f64, f64),
+    /// How far from `u₀` (units of R) a ray from a surface point may find its origin's
+    /// own root (`intersect/from_surface.rs`).
+    pub own_root_reach: f64,
+}
+
+impl FinishConstants {
+    /// The values the CPU's f64 path uses.
+    pub const CPU: FinishConstants = FinishConstants {
+        eps: EPS,
+        near_double: NEAR_DOUBLE,
+        disc_near: DISC_NEAR,
+        small_root: SMALL_ROOT,
+        polish_below: POLISH_BELOW,
+        chord_slack: CHORD_SLACK,
+        trisect_fit: trisect::FIT,
+        trisect_half_range: trisect::HALF_RANGE,
+        cbrt_seed: CBRT_F32_SEED,
+        cbrt_range: (CBRT_RANGE_F32.0 as f64, CBRT_RANGE_F32.1 as f64),
+        own_root_reach: OWN_ROOT_REACH,
+    };
+
+    /// The pass's WGSL `const` declarations, one a line (f64 literals written in Rust's
+    /// shortest round-trip decimal, so the WGSL value is the Rust value to the bit; the
+    /// CPU's products of constants, such as `8.0 * EPS` and `1.0 / 3.0`, computed here in
+    /// Rust as the CPU computes them).
+    pub fn header(&self) -> String {
+        let mut floats: Vec<(String, f64)> = vec![
+            ("FIN_EPS".into(), self.eps),
+            ("FIN_TWO_EPS".into(), 2.0 * self.eps),
+            ("FIN_FOUR_EPS".into(), 4.0 * self.eps),
+            ("FIN_EIGHT_EPS".into(), 8.0 * self.eps),
+            ("FIN_THIRTY_TWO_EPS".into(), 32.0 * self.eps),
+            ("FIN_NEAR_DOUBLE".into(), self.near_double),
+            ("FIN_DISC_NEAR".into(), self.disc_near),
+            ("FIN_SMALL_ROOT".into(), self.small_root),
+            ("FIN_POLISH_BELOW".into(), self.polish_below),
+            ("FIN_CHORD_SCALE".into(), 1.0 + self.chord_slack),
+            ("FIN_OWN_ROOT_REACH".into(), self.own_root_reach),
+            ("FIN_THIRD".into(), 1.0 / 3.0),
+            ("FIN_NINTH".into(), 1.0 / 9.0),
+            ("FIN_TWENTY_SEVENTH".into(), 1.0 / 27.0),
+            ("FIN_FOUR_THIRDS".into(), 4.0 / 3.0),
+            ("FIN_TRISECT_HALF_RANGE".into(), self.trisect_half_range),
+            ("FIN_CBRT_LOW".into(), self.cbrt_range.0),
+            ("FIN_CBRT_HIGH".into(), self.cbrt_range.1),
+            ("FIN_TWO_90".into(), 2f64.powi(90)),
+            ("FIN_TWO_M90".into(), 2f64.powi(-90)),
+            ("FIN_TWO_30".into(), 2f64.powi(30)),
+            ("FIN_TWO_M30".into(), 2f64.powi(-30)),
+            // Round to nearest takes an f64 to f32 infinity from 2¹²⁸ − 2¹⁰³ up.
+            ("FIN_F32_OVERFLOW".into(), 2f64.powi(128) - 2f64.powi(103)),
+            // "No root" (the CPU's ∞; WGSL may assume no infinities) and "finite".
+            ("FIN_NONE".into(), 1e308),
+            ("FIN_HUGE".into(), 1e300),
+        ];
+        for (i, c) in self.trisect_fit.iter().enumerate() {
+            floats.push((format!("FIN_TRISECT_FIT_{i}"), *c));
+        }
+        let mut out = String::from(
+            "// Generated from the Rust constants (torus_cull::gpu::FinishConstants::CPU) when\n\
+             // the pipeline is built: f64 in shortest round-trip decimal, exact.\n",
+        );
+        for (name, value) in floats {
+            let _ = writeln!(out, "const {name}: f64 = {};", literal_f64(value));
+        }
+        let _ = writeln!(out, "const FIN_CBRT_SEED: u32 = {}u;", self.cbrt_seed);
+        let _ = writeln!(out, "const FIN_CODE_MISS: u32 = {CODE_MISS}u;");
+        let _ = writeln!(out, "const FIN_CODE_HIT: u32 = {CODE_HIT}u;");
+        for (name, code) in super::finish::Instruction::ALL
+            .iter()
+            .map(|i| (i.name(), *i as u32))
+            .chain(
+                super::finish::Status::ALL
+                    .iter()
+                    .map(|s| (s.name(), *s as u32)),
+            )
+        {
+            let _ = writeln!(out, "const FIN_{name}: u32 = {code}u;");
+        }
+        out
+    }
+
+    /// The f64 pass's full WGSL text: the header and `finish.wgsl`.
+    pub fn source(&self) -> String {
+        format!("{}\n{FINISH_BODY}", self.header())
+    }
+}
+
+/// The device's f64 finish pass with the CPU's constants: what the second pipeline
+/// compiles where the adapter has `SHADER_F64`.
+pub fn finish_source() -> String {
+    FinishConstants::CPU.source()
+}
+
+/// `x` as an exact WGSL f64 literal: Rust's shortest round-trip decimal and `lf`.
+fn literal_f64(x: f64) -> String {
+    assert!(x.is_finite(), "a pass constant must be finite: {x:e}");
+    format!("{x:?}lf")
 }
 
 /// The module's codes as WGSL `const u32` lines: the result codes (`TORUS_MISS`,
@@ -432,5 +564,95 @@ mod tests {
         };
         assert_ne!(seed.source(), a);
         assert_eq!(kernel_source(), a);
+    }
+    /// The f64 finish pass parses and validates as WGSL with naga's `FLOAT64` capability
+    /// (what `SHADER_F64` enables), with the CPU's constants and with a changed one, and
+    /// every threshold is the Rust value, to the bit.
+    #[test]
+    fn the_f64_finish_pass_validates_and_takes_its_constants_from_rust() {
+        use wgpu::naga;
+        let cpu = FinishConstants::CPU;
+        for constants in [
+            cpu,
+            FinishConstants {
+                near_double: 2e-7,
+                ..cpu
+            },
+        ] {
+            let text = constants.source();
+            let module = naga::front::wgsl::parse_str(&text)
+                .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&text)));
+            naga::valid::Validator::new(
+                naga::valid::ValidationFlags::all(),
+                naga::valid::Capabilities::FLOAT64,
+            )
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{e:?}"));
+            assert!(module.entry_points.iter().any(|e| e.name == "finish_main"));
+            // naga reads every f64 literal as Rust does: its constant table holds the
+            // header's values to the bit.
+            let header = constants.header();
+            let mut seen = 0;
+            for (_, c) in module.constants.iter() {
+                let Some(name) = c.name.as_deref() else {
+                    continue;
+                };
+                let naga::Expression::Literal(naga::Literal::F64(value)) =
+                    module.global_expressions[c.init]
+                else {
+                    continue;
+                };
+                let prefix = format!("const {name}: f64 = ");
+                let line = header
+                    .lines()
+                    .find(|l| l.starts_with(&prefix))
+                    .unwrap_or_else(|| panic!("{name} not in the header"));
+                let literal = line[prefix.len()..].strip_suffix("lf;").expect("lf;");
+                let want: f64 = literal.parse().expect("a decimal");
+                assert_eq!(value.to_bits(), want.to_bits(), "{line}: naga {value:e}");
+                seen += 1;
+            }
+            let declared = header.lines().filter(|l| l.contains(": f64 = ")).count();
+            assert_eq!(seen, declared, "every f64 constant read back");
+        }
+        let header = cpu.header();
+        for (name, value) in [
+            ("FIN_EPS", EPS),
+            ("FIN_EIGHT_EPS", 8.0 * EPS),
+            ("FIN_NEAR_DOUBLE", NEAR_DOUBLE),
+            ("FIN_DISC_NEAR", DISC_NEAR),
+            ("FIN_SMALL_ROOT", SMALL_ROOT),
+            ("FIN_POLISH_BELOW", POLISH_BELOW),
+            ("FIN_CHORD_SCALE", 1.0 + CHORD_SLACK),
+            ("FIN_OWN_ROOT_REACH", OWN_ROOT_REACH),
+            ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
+            ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
+        ] {
+            let line = format!("const {name}: f64 = {};", literal_f64(value));
+            assert!(header.contains(&line), "{line} not in\n{header}");
+        }
+        assert!(header.contains(&format!("const FIN_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
+        for line in FINISH_BODY.lines() {
+            assert!(
+                !line.trim_start().starts_with("const "),
+                "hand-written: {line}"
+            );
+        }
+    }
+
+    /// Changing a Rust constant of the f64 path changes the f64 pass, in exactly that line.
+    #[test]
+    fn a_changed_constant_changes_the_f64_pass() {
+        let cpu = FinishConstants::CPU;
+        let changed = FinishConstants {
+            near_double: cpu.near_double * 2.0,
+            ..cpu
+        };
+        let (a, b) = (cpu.source(), changed.source());
+        let differing: Vec<(&str, &str)> =
+            a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
+        assert_eq!(differing.len(), 1, "{differing:?}");
+        assert_eq!(differing[0].1, "const FIN_NEAR_DOUBLE: f64 = 2e-7lf;");
+        assert_eq!(finish_source(), a);
     }
 }

@@ -109,7 +109,7 @@ pub(crate) fn starts_on_the_surface(tube: &Tube, o: DVec3) -> bool {
 /// How far (in u, units of R) Newton may carry the origin's root from `u₀`: an origin
 /// rounded to f32 at up to 10⁴·R from the world origin is off the surface by about
 /// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.
-const OWN_ROOT_REACH: f64 = 1e-2;
+pub(crate) const OWN_ROOT_REACH: f64 = 1e-2;
 
 /// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`, and
 /// `Q′` there (the cubic's constant): three Newton steps from `u₀` while each stays within

@@ -36,7 +36,7 @@ use crate::num::{Real, RealMask, Sc, sc, sc_mask};
 pub(crate) const DISC_NEAR: f64 = 1e-9;
 
 /// Below this `|Δ| / scale` the closed form is Newton-polished.
-const POLISH_BELOW: f64 = 1e-4;
+pub(crate) const POLISH_BELOW: f64 = 1e-4;
 
 /// A greatest root `z` with `z·(z + |a|) ≤ SMALL_ROOT·b` is out of the closed form's
 /// reach (it has cancelled in `w − a/3`) and is taken from the fixed point
