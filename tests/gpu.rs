@@ -1264,3 +1264,49 @@ fn host_and_device_finishes_agree() {
         }
     }
 }
+
+/// Lines perpendicular to the axis that touch the top of the tube (an even quartic whose
+/// `p² − 4r` is within rounding of 0 at the foot point): the CPU decides them with a fused
+/// multiply-add, which WGSL does not promise, so the device pass hands them to the host,
+/// and the answers are the CPU's f64 path's.
+#[test]
+fn even_tangents_at_the_foot_point_go_to_the_host() {
+    use torus_cull::gpu::Finished;
+    let Some(gpu) = gpu() else { return };
+    if !gpu.finishes_on_device() {
+        return;
+    }
+    let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0).unwrap();
+    // Along x at the height of the tube's top (y = r), through z = 0: the line is tangent
+    // to the tube at x = ±4, and symmetric about its foot point x = 0.
+    let rays: Vec<Ray> = [-20.0f32, -10.0, -6.0]
+        .iter()
+        .flat_map(|&x| {
+            [
+                Ray::new(Vec3::new(x, 1.0, 0.0), Vec3::X).unwrap(),
+                Ray::new(Vec3::new(-x, 1.0, 0.0), Vec3::NEG_X).unwrap(),
+            ]
+        })
+        .collect();
+    let answers = gpu
+        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .unwrap();
+    // The f32 kernel cannot prove an exact tangent: these reach the f64 pass.
+    assert!(
+        answers.iter().all(|(_, f)| *f == Finished::Host),
+        "{:?}",
+        answers.iter().map(|(_, f)| f).collect::<Vec<_>>()
+    );
+    for (ray, (answer, finished)) in rays.iter().zip(&answers) {
+        assert_ne!(
+            *finished,
+            Finished::Device,
+            "{ray:?}: decided on the device"
+        );
+        assert_eq!(
+            answer.hit.map(|h| h.t.to_bits()),
+            torus_cull::intersect(&torus, ray).map(|h| h.t.to_bits()),
+            "{ray:?}"
+        );
+    }
+}

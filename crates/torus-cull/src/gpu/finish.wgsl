@@ -477,15 +477,20 @@ fn surely_no_real_root64(p: f64, q: f64, r: f64) -> bool {
     return disc > FIN_THIRTY_TWO_EPS * disc_abs && (p > 0.0 || -e > FIN_EIGHT_EPS * e_abs);
 }
 
-// The even quartic x⁴ + p x² + r (even.rs, nearest_root): the nearest root in range or
-// FIN_NONE.
-fn even_nearest64(p: f64, r: f64, lo: f64, hi: f64) -> f64 {
-    var disc = p * p - 4.0 * r;
+// Whether the even quartic's p² − 4r lies within rounding of 0 (a tangent at the foot
+// point), where its sign decides hit or miss. The CPU takes it from a fused multiply-add,
+// rounded once; WGSL's `fma` need not be fused on every driver (Vulkan allows a separate
+// multiply and add), so the device does not decide it and hands the ray to the host.
+fn even_near_double64(p: f64, r: f64) -> bool {
+    let disc = p * p - 4.0 * r;
     let scale = p * p + 4.0 * abs(r);
-    if (abs(disc) <= FIN_NEAR_DOUBLE * scale) {
-        // Fused, p² − 4r is rounded once: its sign is exact.
-        disc = fma(p, p, -4.0 * r);
-    }
+    return abs(disc) <= FIN_NEAR_DOUBLE * scale;
+}
+
+// The even quartic x⁴ + p x² + r (even.rs, nearest_root), away from a tangent
+// (`even_near_double64` false): the nearest root in range or FIN_NONE.
+fn even_nearest64(p: f64, r: f64, lo: f64, hi: f64) -> f64 {
+    let disc = p * p - 4.0 * r;
     if (disc < 0.0) {
         return FIN_NONE;
     }
@@ -512,6 +517,9 @@ fn nearest_root64(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Nearest64 {
         return Nearest64(0.0, false, false);
     }
     if (q == 0.0 && p * p + 4.0 * abs(r) < FIN_HUGE) {
+        if (even_near_double64(p, r)) {
+            return Nearest64(0.0, false, true);
+        }
         let best = even_nearest64(p, r, lo, hi);
         return Nearest64(best, best < FIN_NONE, false);
     }
