@@ -47,8 +47,6 @@ pub(crate) struct SurfaceCubic {
     pub(crate) a3: f64,
     pub(crate) a2: f64,
     pub(crate) a1: f64,
-    /// `Q(own)`: the constant the cubic drops (0 up to rounding where Newton converged).
-    pub(crate) residual: f64,
     /// The quartic's coefficients `[c2, c1, c0]`.
     pub(crate) c: [f64; 3],
     /// `v` per unit `t`: `|d|/R`.
@@ -67,14 +65,13 @@ impl SurfaceCubic {
         let u0 = line.s.v * tube.inv_major;
         // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
         // where that root cannot be told apart (a grazing origin).
-        let (own, residual, a1) = own_root(c2, c1, c0, u0);
+        let (own, _residual, a1) = own_root(c2, c1, c0, u0);
         SurfaceCubic {
             line,
             own,
             a3: 4.0 * own,
             a2: 6.0 * own * own + c2,
             a1,
-            residual,
             c: [c2, c1, c0],
             v_per_t: tube.inv_major / line.inv_len.v,
             shift: own - u0,
