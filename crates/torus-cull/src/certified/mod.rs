@@ -157,6 +157,16 @@ fn prove_surface_cubic(torus: &Torus, ray: &Ray) -> Option<Proof> {
     match surface_cubic::prove(torus, line, t_min, t_max) {
         surface_cubic::Verdict::Miss => Some(Proof::Miss),
         surface_cubic::Verdict::Escalate => None,
+        surface_cubic::Verdict::Clear(from) => {
+            // No root but the origin's before `from`: the literal ray from there.
+            let literal =
+                Ray::with_range(ray.origin(), ray.dir(), ray.t_min().max(from), ray.t_max())
+                    .ok()?;
+            match prove(torus, &literal) {
+                Proof::Escalate => None,
+                proof => Some(proof),
+            }
+        }
         surface_cubic::Verdict::Hit { t, u, .. } => {
             // The same foot-point frame as the cubic's: its normal at `u`.
             let (columns, _) = line::of_ray(torus, ray)?;

@@ -51,9 +51,15 @@
 //! past the origin's lies within `B·R` of the reported point, as for a literal ray. Its
 //! face is the side the ray came from: outside (front) for `s > 0`, inside for `s < 0`.
 //!
-//! A ray none of this proves escalates, or goes on to the t* lemma ([`super::on_surface`]),
-//! which the literal certificate's signed distance serves better near a far, near-tangent
-//! crossing (`g` loses digits to cancellation at `|v| ≈ 1`, the signed distance does not).
+//! **Handing over.** Near a far, near-tangent crossing `g` loses digits to cancellation
+//! (`|v| ≈ 1`, terms of size 10 summing to 10⁻⁴), where the literal certificate's signed
+//! distance does not. Where the hit or miss is not proved, `f > 0` on `[v_min, m]`,
+//! `m` halfway to the candidate root (or to the range's end), still proves that no root
+//! past the origin's lies before `t(m)` ([`Verdict::Clear`]), and the literal certificate
+//! proves the literal ray over `[t(m), t_max]` (`t(m)` rounded down; the stretch it adds
+//! back is inside the proved one). That replaces the t* lemma's start, which for a
+//! grazing ray comes too early for f32 to see `F > 0`. A ray none of this proves
+//! escalates, or goes on to the t* lemma ([`super::on_surface`]).
 
 use super::certificate::{BRACKET, U32};
 use crate::Torus;
@@ -72,6 +78,9 @@ pub(crate) enum Verdict {
     Hit { t: f32, u: f32, front_face: bool },
     /// No root in range but the origin's own.
     Miss,
+    /// No root but the origin's before this `t` (f32, at least the range's start): the
+    /// literal certificate may prove the rest of the range.
+    Clear(f32),
     /// Not proved.
     Escalate,
 }
@@ -334,7 +343,9 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
         w_lo: down((-a3 - f64::from(e3)) / 3.0),
         w_hi: up((-a3 + f64::from(e3)) / 3.0),
     };
-    let verdict = match cubic.first_root(alpha, hi_up) {
+    let t_of = |v: f32| (f64::from(v) + g.shift) / g.v_per_t;
+    let first = cubic.first_root(alpha, hi_up);
+    let verdict = match first {
         None => cubic.positive(alpha, hi_up, 0.0).then_some(Verdict::Miss),
         Some(root) => {
             let bracket = BRACKET as f32;
@@ -342,8 +353,7 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
             let right = (root + bracket).min(hi_dn);
             let sign_change =
                 right > left && cubic.below(right, 0.0) && cubic.positive(alpha, left, 0.0);
-            let t = (f64::from(root) + g.shift) / g.v_per_t;
-            let (t32, u) = (t as f32, (p + f64::from(root)) as f32);
+            let (t32, u) = (t_of(root) as f32, (p + f64::from(root)) as f32);
             (sign_change && t32.is_finite() && u.is_finite()).then_some(Verdict::Hit {
                 t: t32,
                 u,
@@ -351,7 +361,22 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
             })
         }
     };
-    verdict.unwrap_or(Verdict::Escalate)
+    verdict.unwrap_or_else(|| {
+        // A far crossing the cubic cannot resolve (near-tangent, where g loses digits to
+        // cancellation): prove the stretch halfway to it clear, for the literal
+        // certificate to go on from.
+        let mid = 0.5 * (alpha + first.unwrap_or(hi_up));
+        let t_mid = down(t_of(mid));
+        let clear = mid > alpha
+            && f64::from(t_mid) >= t_of(alpha)
+            && t_mid >= 0.0
+            && cubic.positive(alpha, mid, 0.0);
+        if clear {
+            Verdict::Clear(t_mid)
+        } else {
+            Verdict::Escalate
+        }
+    })
 }
 
 #[cfg(test)]
@@ -424,6 +449,16 @@ mod tests {
                     let tol = 2e-4 * (big + r) / f64::from(dir.length());
                     match prove(&torus, line, f64::from(t_min), f64::INFINITY) {
                         Verdict::Escalate => {}
+                        Verdict::Clear(from) => {
+                            // No crossing but the origin's before `from`.
+                            if let Some(exact) = exact {
+                                assert!(
+                                    f64::from(exact.t - from) >= -tol,
+                                    "ν {nu} R {major} k {k}: clear to {from}, hit at {}",
+                                    exact.t
+                                );
+                            }
+                        }
                         Verdict::Miss => {
                             proved += 1;
                             assert!(exact.is_none(), "ν {nu} R {major} k {k}: {exact:?}");
