@@ -13,7 +13,7 @@
 use super::certified::{F32Answers, Proof, certify_lanes};
 use super::cull::cull_batch;
 use super::intersect::{Answers, RaysF64, intersect_lanes};
-use super::lines::Lines;
+use super::lines::{BLOCK, Lines};
 use super::mask::{KeepMask, set_bits};
 use crate::cull::BatchCull;
 use crate::intersect::TorusRay;
@@ -264,7 +264,7 @@ impl Wavefront {
         proof: Proof,
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, out);
-        let unproved_on_surface = self.survivors.start_past_origins(torus);
+        let (mut unproved_on_surface, by_cubic) = self.survivors.start_past_origins(torus);
         certify_lanes(
             dispatch,
             torus,
@@ -284,10 +284,22 @@ impl Wavefront {
             );
             out[self.survivors.index[j]] = A::proved(a.t(major, j), normal, o, d);
         }
+        // Rays from a surface point the certified cubic answered (their lanes' answers
+        // are not theirs): a proved hit takes the f64 path's face, `d·n < 0`, as a ray
+        // into the tube is proved where it leaves.
+        let mut answered = vec![0u64; unproved_on_surface.len()];
+        for &(j, hit) in &by_cubic {
+            let (o, d) = self.survivors.world(j);
+            let i = self.survivors.index[j];
+            out[i] = hit.map_or(A::NONE, |(t, normal)| A::exact(t, normal, o, d));
+            answered[j / BLOCK] |= 1 << (j % BLOCK);
+            unproved_on_surface[j / BLOCK] &= !(1 << (j % BLOCK));
+        }
         // Escalated: neither proved, or from a surface point with no proved start past
         // its origin's root. The bits past `len` are padding, never read.
         let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
-            .map(|((h, m), s)| !(h | m) | s)
+            .zip(&answered)
+            .map(|(((h, m), s), done)| (!(h | m) | s) & !done)
             .collect();
         let escalated = self.finish_in_f64(torus, rays, out, &open);
         WavefrontStats {
