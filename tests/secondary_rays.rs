@@ -329,6 +329,14 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
         escalated32[2] * 10 <= spawned32[2],
         "into the tube: {escalated32:?}"
     );
+    // The f32 wavefront: the t* lemma on lanes, then the certified cubic on what is left
+    // (no second lane pass after a stretch the cubic proves clear). Measured [0, 2, 5, 305].
+    for k in 0..4 {
+        assert!(
+            wavefront_escalated[k] * 20 <= spawned32[k],
+            "wavefront: {wavefront_escalated:?} of {spawned32:?}"
+        );
+    }
     let show = |v: &Vec<String>| v[..v.len().min(8)].join("\n");
     assert!(
         tally.self_hits.is_empty(),

@@ -24,10 +24,6 @@ use crate::quartic::lanes::nearest_root;
 use glam::{DMat3, DVec3};
 use pulp::{Simd, WithSimd};
 
-/// A lane the certified cubic answered: its index, and its hit's `t` and world normal (or
-/// `None`, a proved miss).
-pub(crate) type CubicAnswer = (usize, Option<(f64, DVec3)>);
-
 /// World rays in f64, structure of arrays, padded to whole blocks; each remembers its
 /// index in the caller's ray slice.
 #[derive(Debug, Clone, Default)]
@@ -86,51 +82,50 @@ impl RaysF64 {
         self.len
     }
 
-    /// For the certified f32 pass, each ray from a surface point: first the certified cubic
-    /// ([`crate::certified::surface_cubic`], one ray at a time), whose proved answers are
-    /// returned (`(j, hit)`, the hit's `t` and world normal) for the caller to write; where
-    /// it proves a stretch clear, or else where the ray leaves into the outside, the
-    /// lane's t_min is raised past its origin's own root ([`clear_start`], where the only
-    /// root before is the origin's); returns the bits of the other rays from a surface
-    /// point, which the f64 path answers, and the cubic's answers.
-    pub(crate) fn start_past_origins(
-        &mut self,
-        torus: &Torus,
-    ) -> (Vec<u64>, Vec<CubicAnswer>) {
+    /// For the certified f32 pass: each ray from a surface point that leaves into the
+    /// outside starts past its origin's own root (its t_min raised to
+    /// [`clear_start`], where the only root before is the
+    /// origin's); returns the bits of the other rays from a surface point, which the
+    /// f64 path answers.
+    pub(crate) fn start_past_origins(&mut self, torus: &Torus) -> Vec<u64> {
         let mut open = vec![0u64; self.on_surface.len()];
-        let mut decided = Vec::new();
-        let to_local = torus.to_local_rotation_f64();
-        let center = torus.center_f64();
         for j in set_bits(&self.on_surface, self.len) {
             let (o, d) = self.world(j);
-            let local = (to_local * (o - center), to_local * d);
             let [.., lo, hi] = &mut self.columns;
-            let start = match surface_cubic::prove(torus, local, lo[j], hi[j]) {
-                surface_cubic::Verdict::Miss => {
-                    decided.push((j, None));
-                    continue;
-                }
-                surface_cubic::Verdict::Hit { t, .. } => {
-                    let t = f64::from(t);
-                    let x = local.0 + local.1 * t;
-                    let rho = x.x.hypot(x.z);
-                    let core = DVec3::new(x.x, 0.0, x.z) * (torus.major_radius_f64() / rho);
-                    let n = (to_local.transpose() * (x - core)).normalize();
-                    if n.is_finite() {
-                        decided.push((j, Some((t, n))));
-                        continue;
-                    }
-                    None
-                }
-                surface_cubic::Verdict::Clear(from) => Some(f64::from(from)),
-                surface_cubic::Verdict::Escalate => None,
-            };
-            match start.or_else(|| clear_start(torus, o, d)) {
+            match clear_start(torus, o, d) {
                 Some(start) if lo[j].max(start) <= hi[j] => lo[j] = lo[j].max(start),
                 _ => open[j / BLOCK] |= 1 << (j % BLOCK),
             }
         }
-        (open, decided)
+        open
+    }
+
+    /// The certified cubic ([`crate::certified::surface_cubic`]) on ray `j` (from a surface
+    /// point) over `[t_min, t_max]`: `Some(None)` a proved miss, `Some(Some((t, n)))` a
+    /// proved hit with its world normal, `None` not proved.
+    pub(crate) fn by_cubic(
+        &self,
+        torus: &Torus,
+        j: usize,
+        (t_min, t_max): (f64, f64),
+    ) -> Option<Option<(f64, DVec3)>> {
+        let to_local = torus.to_local_rotation_f64();
+        let (o, d) = self.world(j);
+        let (o, d) = (to_local * (o - torus.center_f64()), to_local * d);
+        match surface_cubic::prove(torus, (o, d), t_min, t_max) {
+            surface_cubic::Verdict::Miss => Some(None),
+            surface_cubic::Verdict::Hit { t, .. } => {
+                // The outward normal at the point: away from the core circle.
+                let t = f64::from(t);
+                let x = o + d * t;
+                let rho = x.x.hypot(x.z);
+                let core = DVec3::new(x.x, 0.0, x.z) * (torus.major_radius_f64() / rho);
+                let n = (to_local.transpose() * (x - core)).normalize();
+                n.is_finite().then_some(Some((t, n)))
+            }
+            // A stretch proved clear would need a second lane pass: the f64 path answers.
+            surface_cubic::Verdict::Clear(_) | surface_cubic::Verdict::Escalate => None,
+        }
     }
 
     /// Rays `at..at + F64_LANES` as lanes: origin, direction, t_min, t_max.

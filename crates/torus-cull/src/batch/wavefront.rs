@@ -264,7 +264,7 @@ impl Wavefront {
         proof: Proof,
     ) -> WavefrontStats {
         self.cull_and_compact(dispatch, cull, torus, rays, out);
-        let (mut unproved_on_surface, by_cubic) = self.survivors.start_past_origins(torus);
+        let unproved_on_surface = self.survivors.start_past_origins(torus);
         certify_lanes(
             dispatch,
             torus,
@@ -284,23 +284,25 @@ impl Wavefront {
             );
             out[self.survivors.index[j]] = A::proved(a.t(major, j), normal, o, d);
         }
-        // Rays from a surface point the certified cubic answered (their lanes' answers
-        // are not theirs): a proved hit takes the f64 path's face, `d·n < 0`, as a ray
-        // into the tube is proved where it leaves.
-        let mut answered = vec![0u64; unproved_on_surface.len()];
-        for &(j, hit) in &by_cubic {
-            let (o, d) = self.survivors.world(j);
-            let i = self.survivors.index[j];
-            out[i] = hit.map_or(A::NONE, |(t, normal)| A::exact(t, normal, o, d));
-            answered[j / BLOCK] |= 1 << (j % BLOCK);
-            unproved_on_surface[j / BLOCK] &= !(1 << (j % BLOCK));
-        }
         // Escalated: neither proved, or from a surface point with no proved start past
         // its origin's root. The bits past `len` are padding, never read.
-        let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
-            .zip(&answered)
-            .map(|(((h, m), s), done)| (!(h | m) | s) & !done)
+        let mut open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
+            .map(|((h, m), s)| !(h | m) | s)
             .collect();
+        // Of those, the rays from a surface point get the certified cubic (one at a time,
+        // over their own range) before f64: a proved hit takes the f64 path's face,
+        // `d·n < 0`, as a ray into the tube is proved where it leaves.
+        let on_surface: Vec<u64> = (open.iter().zip(&self.survivors.on_surface))
+            .map(|(o, s)| o & s)
+            .collect();
+        for j in set_bits(&on_surface, len) {
+            let i = self.survivors.index[j];
+            if let Some(hit) = self.survivors.by_cubic(torus, j, rays[i].range_f64()) {
+                let (o, d) = self.survivors.world(j);
+                out[i] = hit.map_or(A::NONE, |(t, normal)| A::exact(t, normal, o, d));
+                open[j / BLOCK] &= !(1 << (j % BLOCK));
+            }
+        }
         let escalated = self.finish_in_f64(torus, rays, out, &open);
         WavefrontStats {
             escalated,
