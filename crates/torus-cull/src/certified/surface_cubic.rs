@@ -353,7 +353,9 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
             let right = (root + bracket).min(hi_dn);
             let sign_change =
                 right > left && cubic.below(right, 0.0) && cubic.positive(alpha, left, 0.0);
-            let (t32, u) = (t_of(root) as f32, (p + f64::from(root)) as f32);
+            // Within the range as the ray states it (the ends were rounded to f32 in v).
+            let t32 = (t_of(root).max(t_min).min(t_max)) as f32;
+            let u = (p + f64::from(root)) as f32;
             (sign_change && t32.is_finite() && u.is_finite()).then_some(Verdict::Hit {
                 t: t32,
                 u,
