@@ -169,15 +169,18 @@ proptest! {
         }
     }
 
-    /// The certified f32 path on any ray the constructor accepts: no panic; a proved hit
+    /// The certified f32 path on any ray the constructors accept: no panic; a proved hit
     /// lies in range with a unit normal, and agrees with the f64 path (a proof is a proof);
     /// what f32 cannot prove comes back escalated with the f64 answer.
     #[test]
     fn certified_f32_path_on_rays_of_any_bits(
-        torus in torus(), o in vec3(), d in vec3(), aim in any::<bool>(),
+        torus in torus(), o in vec3(), d in vec3(), aim in any::<bool>(), surface in any::<bool>(),
     ) {
         let d = if aim { torus.center() - o } else { d };
-        if let Ok(ray) = Ray::new(o, d) {
+        // From a surface point too (the certified cubic; an origin off the surface is
+        // answered as a literal ray).
+        let made = if surface { Ray::from_surface(o, d) } else { Ray::new(o, d) };
+        if let Ok(ray) = made {
             match intersect_f32_certified(&torus, &ray) {
                 F32Verdict::Hit { t, normal } => {
                     prop_assert!(t.is_finite() && t >= ray.t_min() && t <= ray.t_max(), "t = {t}");

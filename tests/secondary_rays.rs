@@ -313,18 +313,30 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
          across rays that leave into the outside: {} spawned, {} escalated",
         across_out.0, across_out.1
     );
-    // Regression guards on docs/math.md §9's figures: bounces escalate 0.06 % (goal
-    // ≤ 1 %), outward across rays 5.0 % (goal ≤ 1 %, unmet); every ray into the tube
-    // escalates (no inside proof).
+    // Regression guards on docs/math.md §9's figures (the cubic certificate, then the t*
+    // lemma): bounces escalate ≤ 1 % (the goal), outward across rays 1.8 % (goal ≤ 1 %,
+    // unmet: far near-tangent crossings, where g loses digits to cancellation), rays into
+    // the tube, whose exit the cubic certificate proves, ≤ 10 %.
     assert!(
         escalated32[0] * 100 <= spawned32[0],
         "bounces: {escalated32:?}"
     );
     assert!(
-        across_out.1 * 100 <= 8 * across_out.0,
+        across_out.1 * 100 <= 2 * across_out.0,
         "across: {across_out:?}"
     );
-    assert_eq!(escalated32[2], spawned32[2], "into the tube");
+    assert!(
+        escalated32[2] * 10 <= spawned32[2],
+        "into the tube: {escalated32:?}"
+    );
+    // The f32 wavefront: the t* lemma on lanes, then the certified cubic on what is left
+    // (no second lane pass after a stretch the cubic proves clear). Measured [0, 2, 5, 305].
+    for k in 0..4 {
+        assert!(
+            wavefront_escalated[k] * 20 <= spawned32[k],
+            "wavefront: {wavefront_escalated:?} of {spawned32:?}"
+        );
+    }
     let show = |v: &Vec<String>| v[..v.len().min(8)].join("\n");
     assert!(
         tally.self_hits.is_empty(),

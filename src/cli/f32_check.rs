@@ -36,6 +36,10 @@ pub struct F32CheckArgs {
     /// per family, next to the results file).
     #[arg(long)]
     no_plots: bool,
+    /// Only the families whose name contains this text (e.g. `spawned` for the secondary
+    /// rays from a surface point); by default every family.
+    #[arg(long)]
+    family: Option<String>,
 }
 
 /// Runs `f32-check`. Exit 1 when ours (the certified verdict or the whole f32 path)
@@ -62,7 +66,13 @@ pub fn run(args: F32CheckArgs) -> CliResult {
     // Before the work, not after it.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
 
-    let families = families::all();
+    let mut families = families::all();
+    if let Some(part) = &args.family {
+        families.retain(|f| f.name.contains(part.as_str()));
+        if families.is_empty() {
+            return Err(format!("--family {part}: no family's name contains it").into());
+        }
+    }
     let bar = ProgressBar::new(families.len() as u64).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} families ({eta})")
             .expect("valid template")

@@ -12,6 +12,7 @@ use super::lines::{BLOCK, size_lane_output};
 use super::mask::set_bits;
 use crate::Torus;
 use crate::certified::on_surface::clear_start;
+use crate::certified::surface_cubic;
 use crate::geometry::Tube;
 use crate::intersect::TorusRay;
 use crate::intersect::nearest_hit::{NearestRoot, nearest_hit};
@@ -97,6 +98,34 @@ impl RaysF64 {
             }
         }
         open
+    }
+
+    /// The certified cubic ([`crate::certified::surface_cubic`]) on ray `j` (from a surface
+    /// point) over `[t_min, t_max]`: `Some(None)` a proved miss, `Some(Some((t, n)))` a
+    /// proved hit with its world normal, `None` not proved.
+    pub(crate) fn by_cubic(
+        &self,
+        torus: &Torus,
+        j: usize,
+        (t_min, t_max): (f64, f64),
+    ) -> Option<Option<(f64, DVec3)>> {
+        let to_local = torus.to_local_rotation_f64();
+        let (o, d) = self.world(j);
+        let (o, d) = (to_local * (o - torus.center_f64()), to_local * d);
+        match surface_cubic::prove(torus, (o, d), t_min, t_max) {
+            surface_cubic::Verdict::Miss => Some(None),
+            surface_cubic::Verdict::Hit { t, .. } => {
+                // The outward normal at the point: away from the core circle.
+                let t = f64::from(t);
+                let x = o + d * t;
+                let rho = x.x.hypot(x.z);
+                let core = DVec3::new(x.x, 0.0, x.z) * (torus.major_radius_f64() / rho);
+                let n = (to_local.transpose() * (x - core)).normalize();
+                n.is_finite().then_some(Some((t, n)))
+            }
+            // A stretch proved clear would need a second lane pass: the f64 path answers.
+            surface_cubic::Verdict::Clear(_) | surface_cubic::Verdict::Escalate => None,
+        }
     }
 
     /// Rays `at..at + F64_LANES` as lanes: origin, direction, t_min, t_max.

@@ -13,7 +13,7 @@
 use super::certified::{F32Answers, Proof, certify_lanes};
 use super::cull::cull_batch;
 use super::intersect::{Answers, RaysF64, intersect_lanes};
-use super::lines::Lines;
+use super::lines::{BLOCK, Lines};
 use super::mask::{KeepMask, set_bits};
 use crate::cull::BatchCull;
 use crate::intersect::TorusRay;
@@ -286,9 +286,23 @@ impl Wavefront {
         }
         // Escalated: neither proved, or from a surface point with no proved start past
         // its origin's root. The bits past `len` are padding, never read.
-        let open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
+        let mut open: Vec<u64> = (a.hit.iter().zip(&a.miss).zip(&unproved_on_surface))
             .map(|((h, m), s)| !(h | m) | s)
             .collect();
+        // Of those, the rays from a surface point get the certified cubic (one at a time,
+        // over their own range) before f64: a proved hit takes the f64 path's face,
+        // `d·n < 0`, as a ray into the tube is proved where it leaves.
+        let on_surface: Vec<u64> = (open.iter().zip(&self.survivors.on_surface))
+            .map(|(o, s)| o & s)
+            .collect();
+        for j in set_bits(&on_surface, len) {
+            let i = self.survivors.index[j];
+            if let Some(hit) = self.survivors.by_cubic(torus, j, rays[i].range_f64()) {
+                let (o, d) = self.survivors.world(j);
+                out[i] = hit.map_or(A::NONE, |(t, normal)| A::exact(t, normal, o, d));
+                open[j / BLOCK] &= !(1 << (j % BLOCK));
+            }
+        }
         let escalated = self.finish_in_f64(torus, rays, out, &open);
         WavefrontStats {
             escalated,

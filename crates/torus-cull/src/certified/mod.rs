@@ -32,6 +32,7 @@ pub(crate) mod certificate;
 pub(crate) mod line;
 mod occlusion;
 pub(crate) mod on_surface;
+pub(crate) mod surface_cubic;
 
 use crate::intersect::Hit;
 use crate::num::F32s;
@@ -112,9 +113,13 @@ pub(crate) enum Proof {
 /// The certificate on one ray.
 #[inline]
 pub(crate) fn prove(torus: &Torus, ray: &Ray) -> Proof {
-    // A ray from a surface point: the literal certificate past its origin's own root
-    // (`on_surface`), where it leaves into the outside.
+    // A ray from a surface point: the cubic left once the origin's root is divided out
+    // (`surface_cubic`); where that proves nothing, the literal certificate past the
+    // origin's own root (`on_surface`), where it leaves into the outside.
     if ray.starts_on_surface() {
+        if let Some(proof) = prove_surface_cubic(torus, ray) {
+            return proof;
+        }
         return match on_surface::start(torus, ray) {
             on_surface::Start::Literal(literal) => prove(torus, &literal),
             on_surface::Start::Miss => Proof::Miss,
@@ -141,6 +146,37 @@ pub(crate) fn prove(torus: &Torus, ray: &Ray) -> Proof {
         t,
         scaled,
         u: decision.u,
+    }
+}
+
+/// The cubic certificate on a ray from a surface point ([`surface_cubic`]); `None` where it
+/// proves nothing.
+fn prove_surface_cubic(torus: &Torus, ray: &Ray) -> Option<Proof> {
+    let line = torus.line_to_local_f64(ray);
+    let (t_min, t_max) = (f64::from(ray.t_min()), f64::from(ray.t_max()));
+    match surface_cubic::prove(torus, line, t_min, t_max) {
+        surface_cubic::Verdict::Miss => Some(Proof::Miss),
+        surface_cubic::Verdict::Escalate => None,
+        surface_cubic::Verdict::Clear(from) => {
+            // No root but the origin's before `from`: the literal ray from there.
+            let literal =
+                Ray::with_range(ray.origin(), ray.dir(), ray.t_min().max(from), ray.t_max())
+                    .ok()?;
+            match prove(torus, &literal) {
+                Proof::Escalate => None,
+                proof => Some(proof),
+            }
+        }
+        surface_cubic::Verdict::Hit { t, u, .. } => {
+            // The same foot-point frame as the cubic's: its normal at `u`.
+            let (columns, _) = line::of_ray(torus, ray)?;
+            let [q, d, rest] = columns.map(|c| c.map(sc32));
+            Some(Proof::Hit {
+                t,
+                scaled: line::lanes(sc32(0.0), q, d, rest),
+                u: sc32(u),
+            })
+        }
     }
 }
 
@@ -189,16 +225,18 @@ pub(crate) fn finish(verdict: F32Verdict, torus: &Torus, ray: &Ray) -> F32Hit {
 }
 
 /// The [`Hit`] of a proved f32 root: the point `o + t·d` formed in f64 at the reported
-/// `t`, and `front_face` true, because the proof is a sign change of the signed distance
-/// from outside (> 0) to inside (< 0) with the distance proved positive before it: the
-/// ray enters the solid there.
+/// `t`. `front_face` is true for a literal ray, because the proof is a sign change of the
+/// signed distance from outside (> 0) to inside (< 0) with the distance proved positive
+/// before it: the ray enters the solid there. A ray from a surface point may be proved to
+/// leave the tube from inside (`surface_cubic`, a ray into the tube): its face is the f64
+/// path's, `d·n < 0`.
 fn proved_hit(t: f32, normal: Vec3, ray: &Ray) -> Hit {
     let point = ray.origin().as_dvec3() + ray.dir().as_dvec3() * f64::from(t);
     Hit {
         t,
         normal,
         point: point.as_vec3(),
-        front_face: true,
+        front_face: !ray.starts_on_surface() || ray.dir().dot(normal) < 0.0,
     }
 }
 

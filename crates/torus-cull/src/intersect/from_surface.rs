@@ -47,10 +47,12 @@ pub(crate) struct SurfaceCubic {
     pub(crate) a3: f64,
     pub(crate) a2: f64,
     pub(crate) a1: f64,
+    /// The quartic's coefficients `[c2, c1, c0]`.
+    pub(crate) c: [f64; 3],
     /// `v` per unit `t`: `|d|/R`.
-    v_per_t: f64,
+    pub(crate) v_per_t: f64,
     /// `own − u₀`: the origin's root sits at `t = shift/v_per_t`.
-    shift: f64,
+    pub(crate) shift: f64,
 }
 
 impl SurfaceCubic {
@@ -63,13 +65,14 @@ impl SurfaceCubic {
         let u0 = line.s.v * tube.inv_major;
         // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
         // where that root cannot be told apart (a grazing origin).
-        let (own, a1) = own_root(c2, c1, c0, u0);
+        let (own, _residual, a1) = own_root(c2, c1, c0, u0);
         SurfaceCubic {
             line,
             own,
             a3: 4.0 * own,
             a2: 6.0 * own * own + c2,
             a1,
+            c: [c2, c1, c0],
             v_per_t: tube.inv_major / line.inv_len.v,
             shift: own - u0,
         }
@@ -111,11 +114,11 @@ pub(crate) fn starts_on_the_surface(tube: &Tube, o: DVec3) -> bool {
 /// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.
 pub(crate) const OWN_ROOT_REACH: f64 = 1e-2;
 
-/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`, and
-/// `Q′` there (the cubic's constant): three Newton steps from `u₀` while each stays within
+/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`, `Q`
+/// there (the residual the cubic drops) and `Q′` there (the cubic's constant): three Newton steps from `u₀` while each stays within
 /// [`OWN_ROOT_REACH`] and lowers |Q|, else `u₀` (then the constant `Q(u₀)` is what is
 /// dropped).
-fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> (f64, f64) {
+fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> (f64, f64, f64) {
     let q = |u: f64| eval(&[1.0, 0.0, c2, c1, c0], u);
     let (mut u, (mut f, mut df)) = (u0, q(u0));
     for _ in 0..3 {
@@ -131,7 +134,7 @@ fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> (f64, f64) {
         }
         (u, f, df) = (next, fn_, dfn);
     }
-    (u, df)
+    (u, f, df)
 }
 
 /// `g(v) = v³ + a v² + b v + c` and `g′(v)`.
