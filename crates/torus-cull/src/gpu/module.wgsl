@@ -14,13 +14,17 @@
 // the origin's distance |o − c|. What is not proved comes back TORUS_ESCALATE, and the
 // host finishes it with the f64 solver (torus_cull::intersect).
 //
-// Every shared number (U, G, SAFETY_REL, the solver's thresholds and fits, the line
-// error's constants, the result, cull and escalation codes) is a `const` of the header
-// that src/gpu/source.rs generates from the Rust constants the CPU uses: none is written
-// here.
+// Every shared number (TC_U, TC_G, TC_SAFETY_REL, the solver's thresholds and fits, the
+// line error's constants, the result, cull and escalation codes) is a `const` of the
+// header that src/gpu/source.rs generates from the Rust constants the CPU uses: none is
+// written here.
 //
-// THE PUBLIC ENTRY POINTS (everything else here is internal; a shader that includes the
-// module must not declare the same global names, which naga reports as a redefinition):
+// NAMES. Every global name the module declares begins with torus_ / Torus / TORUS_ (the
+// API below) or tc_ / Tc / TC_ (internals), so that it can sit in a renderer's shader
+// beside names like `miss`, `Line` or `U` (WGSL has no namespaces, and a repeated global
+// name is an error).
+//
+// THE PUBLIC ENTRY POINTS (everything else here is internal):
 //
 //   fn torus_intersect(ray: TorusRay, torus: TorusParams, cull: u32) -> TorusHit
 //   fn torus_cull_keeps(ray: TorusRay, torus: TorusParams, cull: u32) -> bool
@@ -86,8 +90,8 @@ struct TorusHit {
     why: u32,
 };
 
-fn finite(x: f32) -> bool {
-    return abs(x) < BIG;
+fn tc_finite(x: f32) -> bool {
+    return abs(x) < TC_BIG;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -95,7 +99,7 @@ fn finite(x: f32) -> bool {
 // (src/batch/quartic/{resolvent,nearest}.rs).
 
 // Horner-free degree-5 polynomial, Estrin's scheme (cube_root.rs, poly5).
-fn poly5(c0: f32, c1: f32, c2: f32, c3: f32, c4: f32, c5: f32, x: f32) -> f32 {
+fn tc_poly5(c0: f32, c1: f32, c2: f32, c3: f32, c4: f32, c5: f32, x: f32) -> f32 {
     let x2 = x * x;
     let x4 = x2 * x2;
     let low = c4 * x + c5;
@@ -104,32 +108,32 @@ fn poly5(c0: f32, c1: f32, c2: f32, c3: f32, c4: f32, c5: f32, x: f32) -> f32 {
     return (low + x2 * mid) + x4 * high;
 }
 
-fn cbrt_halley(t: f32, y: f32) -> f32 {
+fn tc_cbrt_halley(t: f32, y: f32) -> f32 {
     let t3 = t * t * t;
     return t * ((t3 + 2.0 * y) / (2.0 * t3 + y));
 }
 
 // ∛y for y in [1e-30, 1e30]: Kahan's bit trick for f32 (within ~6 %), two Halley steps.
-fn cbrt(y: f32) -> f32 {
+fn tc_cbrt(y: f32) -> f32 {
     let bits = bitcast<u32>(y);
-    var t = bitcast<f32>(bits / 3u + CBRT_SEED);
-    t = cbrt_halley(t, y);
-    t = cbrt_halley(t, y);
+    var t = bitcast<f32>(bits / 3u + TC_CBRT_SEED);
+    t = tc_cbrt_halley(t, y);
+    t = tc_cbrt_halley(t, y);
     return t;
 }
 
 // u = 2 cos(arccos(x)/3) − 1 (cube_root.rs, trisect_u).
-fn trisect_u(x: f32) -> f32 {
+fn tc_trisect_u(x: f32) -> f32 {
     let rhs = 2.0 * (1.0 + x);
     let s = sqrt(max(rhs * (1.0 / 3.0), 0.0));
-    var u = s * poly5(
-        TRISECT_FIT_0,
-        TRISECT_FIT_1,
-        TRISECT_FIT_2,
-        TRISECT_FIT_3,
-        TRISECT_FIT_4,
-        TRISECT_FIT_5,
-        s - TRISECT_HALF_RANGE,
+    var u = s * tc_poly5(
+        TC_TRISECT_FIT_0,
+        TC_TRISECT_FIT_1,
+        TC_TRISECT_FIT_2,
+        TC_TRISECT_FIT_3,
+        TC_TRISECT_FIT_4,
+        TC_TRISECT_FIT_5,
+        s - TC_TRISECT_HALF_RANGE,
     );
     let f = u * u * (3.0 + u) - rhs;
     let df = (3.0 * u + 6.0) * u;
@@ -140,7 +144,7 @@ fn trisect_u(x: f32) -> f32 {
     return select(0.0, u - step, ok);
 }
 
-struct Cubic {
+struct TcCubic {
     a: f32,
     b: f32,
     c: f32,
@@ -151,8 +155,8 @@ struct Cubic {
     scale: f32,
 };
 
-fn cubic_of(p: f32, q: f32, r: f32) -> Cubic {
-    var k: Cubic;
+fn tc_cubic_of(p: f32, q: f32, r: f32) -> TcCubic {
+    var k: TcCubic;
     k.a = 2.0 * p;
     k.b = p * p - 4.0 * r;
     k.c = -q * q;
@@ -167,29 +171,29 @@ fn cubic_of(p: f32, q: f32, r: f32) -> Cubic {
     return k;
 }
 
-fn cubic_h(k: Cubic, z: f32) -> f32 {
+fn tc_cubic_h(k: TcCubic, z: f32) -> f32 {
     return ((z + k.a) * z + k.b) * z + k.c;
 }
 
-fn cubic_dh(k: Cubic, z: f32) -> f32 {
+fn tc_cubic_dh(k: TcCubic, z: f32) -> f32 {
     return (3.0 * z + 2.0 * k.a) * z + k.b;
 }
 
-struct Resolvent {
+struct TcResolvent {
     z: f32,
     dh: f32,
     fallback: bool,
 };
 
 // The greatest root z = m² ≥ 0 of the resolvent (batch/quartic/resolvent.rs).
-fn greatest_root(p: f32, q: f32, r: f32) -> Resolvent {
-    let k = cubic_of(p, q, r);
-    let near_double = !(abs(k.disc) > DISC_NEAR * k.scale);
+fn tc_greatest_root(p: f32, q: f32, r: f32) -> TcResolvent {
+    let k = tc_cubic_of(p, q, r);
+    let near_double = !(abs(k.disc) > TC_DISC_NEAR * k.scale);
     let one_real = k.disc > 0.0;
     // Cardano (one real root).
     let cube = abs(k.half_q) + sqrt(max(k.disc, 0.0));
-    let cube_ok = cube == 0.0 || (cube >= CBRT_LOW && cube <= CBRT_HIGH);
-    let big = select(0.0, cbrt(cube), cube > 0.0 && cube_ok);
+    let cube_ok = cube == 0.0 || (cube >= TC_CBRT_LOW && cube <= TC_CBRT_HIGH);
+    let big = select(0.0, tc_cbrt(cube), cube > 0.0 && cube_ok);
     let ratio = -k.third_p / select(1.0, cube, cube > 0.0);
     var cu = big;
     var cv = ratio * big * big;
@@ -202,43 +206,43 @@ fn greatest_root(p: f32, q: f32, r: f32) -> Resolvent {
     let tp = select(-1.0, k.third_p, k.third_p < 0.0);
     let kk = sqrt(max(-k.third_p, 0.0));
     let cos3 = clamp((k.half_q / tp) * sqrt(-1.0 / tp), -1.0, 1.0);
-    let trig = select(0.0, kk + kk * trisect_u(cos3), k.third_p < 0.0);
+    let trig = select(0.0, kk + kk * tc_trisect_u(cos3), k.third_p < 0.0);
     let w = select(trig, cardano, one_real);
     var z = max(w - k.a3, 0.0);
     // A small greatest root from the fixed point z = q²/((z + a)z + b).
-    let tiny = k.b > 0.0 && z * (z + abs(k.a)) <= SMALL_ROOT * k.b;
+    let tiny = k.b > 0.0 && z * (z + abs(k.a)) <= TC_SMALL_ROOT * k.b;
     if (tiny) {
         let z0 = q * q / k.b;
         let den = (z0 + k.a) * z0 + k.b;
         z = select(z, q * q / den, den > 0.0);
     }
     // Two guarded Newton steps.
-    var hz = cubic_h(k, z);
+    var hz = tc_cubic_h(k, z);
     for (var i = 0; i < 2; i++) {
-        let d = cubic_dh(k, z);
+        let d = tc_cubic_dh(k, z);
         let zn = max(z - hz / select(1.0, d, d != 0.0), 0.0);
-        let hn = cubic_h(k, zn);
+        let hn = tc_cubic_h(k, zn);
         let better = d != 0.0 && abs(hn) < abs(hz);
         z = select(z, zn, better);
         hz = select(hz, hn, better);
     }
-    var res: Resolvent;
+    var res: TcResolvent;
     res.z = z;
-    res.dh = cubic_dh(k, z);
-    res.fallback = near_double || (one_real && !cube_ok) || !finite(z) || !finite(res.dh);
+    res.dh = tc_cubic_dh(k, z);
+    res.fallback = near_double || (one_real && !cube_ok) || !tc_finite(z) || !tc_finite(res.dh);
     return res;
 }
 
-fn copysign(x: f32, s: f32) -> f32 {
+fn tc_copysign(x: f32, s: f32) -> f32 {
     return select(abs(x), -abs(x), s < 0.0);
 }
 
 // x if a real root in [lo, hi], else +BIG (no root).
-fn in_range(x: f32, real: bool, lo: f32, hi: f32) -> f32 {
-    return select(BIG, x, real && x >= lo && x <= hi);
+fn tc_in_range(x: f32, real: bool, lo: f32, hi: f32) -> f32 {
+    return select(TC_BIG, x, real && x >= lo && x <= hi);
 }
 
-struct Nearest {
+struct TcNearest {
     // The nearest root in [lo, hi], or BIG for none.
     root: f32,
     // The solver could not settle this quartic (near-double factor, resolvent fallback).
@@ -247,8 +251,8 @@ struct Nearest {
 
 // The nearest root of x⁴ + p x² + q x + r in [lo, hi] (batch/quartic/nearest.rs with
 // quartic/factor.rs's split_at and quartic/nearest.rs's clear_factors, nearest_of_clear).
-fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
-    let res = greatest_root(p, q, r);
+fn tc_nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> TcNearest {
+    let res = tc_greatest_root(p, q, r);
     let z = res.z;
     let dh = res.dh;
     let m = sqrt(z);
@@ -259,10 +263,10 @@ fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
     let b_abs = p * p + 4.0 * abs(r);
     let h_mag = ((z + 2.0 * abs(p)) * z + b_abs) * z + q * q;
     let zdh = z * dh;
-    let err_w_zdh = F64_EPS * ((s * s + 4.0 * abs(r) + 2.0 * abs(s) * abs(p)) * zdh
+    let err_w_zdh = TC_F64_EPS * ((s * s + 4.0 * abs(r) + 2.0 * abs(s) * abs(p)) * zdh
         + 2.0 * abs(s) * h_mag * z);
-    let use_q_over_m = m > 0.0 && zdh > 0.0 && (w2 <= 0.0 || F64_EPS * h_mag * w2 <= err_w_zdh);
-    let d = select(copysign(sqrt(max(w2, 0.0)), q), q_over_m, use_q_over_m);
+    let use_q_over_m = m > 0.0 && zdh > 0.0 && (w2 <= 0.0 || TC_F64_EPS * h_mag * w2 <= err_w_zdh);
+    let d = select(tc_copysign(sqrt(max(w2, 0.0)), q), q_over_m, use_q_over_m);
     let n1d = 0.5 * (s - d);
     let n2d = 0.5 * (s + d);
     let n2_bigger = abs(n2d) >= abs(n1d);
@@ -273,18 +277,18 @@ fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
     // clear_factors
     let disc1 = z - 4.0 * n1;
     let disc2 = z - 4.0 * n2;
-    let clear = abs(disc1) > NEAR_DOUBLE * (z + 4.0 * abs(n1)) && abs(disc2) > NEAR_DOUBLE * (z + 4.0 * abs(n2));
+    let clear = abs(disc1) > TC_NEAR_DOUBLE * (z + 4.0 * abs(n1)) && abs(disc2) > TC_NEAR_DOUBLE * (z + 4.0 * abs(n2));
     // nearest_of_clear
     let s1 = sqrt(max(disc1, 0.0));
     let s2 = sqrt(max(disc2, 0.0));
     let ok1 = disc1 > 0.0;
     let ok2 = disc2 > 0.0;
     let half_m = 0.5 * m;
-    let first = min(in_range(-half_m - 0.5 * s1, ok1, lo, hi), in_range(-half_m + 0.5 * s1, ok1, lo, hi));
-    let second = min(in_range(half_m - 0.5 * s2, ok2, lo, hi), in_range(half_m + 0.5 * s2, ok2, lo, hi));
-    var out: Nearest;
+    let first = min(tc_in_range(-half_m - 0.5 * s1, ok1, lo, hi), tc_in_range(-half_m + 0.5 * s1, ok1, lo, hi));
+    let second = min(tc_in_range(half_m - 0.5 * s2, ok2, lo, hi), tc_in_range(half_m + 0.5 * s2, ok2, lo, hi));
+    var out: TcNearest;
     out.root = min(first, second);
-    let bad_input = !(finite(p) && finite(q) && finite(r));
+    let bad_input = !(tc_finite(p) && tc_finite(q) && tc_finite(r));
     out.careful = res.fallback || !clear || bad_input;
     return out;
 }
@@ -292,7 +296,7 @@ fn nearest_root(p: f32, q: f32, r: f32, lo: f32, hi: f32) -> Nearest {
 // ---------------------------------------------------------------------------------------
 // The certificate (src/certified/certificate.rs; /work/f32-spec.md §3–5), GPU constants.
 
-struct Line {
+struct TcLine {
     q: vec3<f32>,
     d: vec3<f32>,
     rr: f32,
@@ -305,7 +309,7 @@ struct Line {
     c2_err: f32,
 };
 
-struct PointBound {
+struct TcPointBound {
     f_lo: f32,
     slope_lo: f32,
     slope_hi: f32,
@@ -313,10 +317,10 @@ struct PointBound {
     sdf_hi: f32,
 };
 
-fn point_bound(l: Line, u: f32) -> PointBound {
+fn tc_point_bound(l: TcLine, u: f32) -> TcPointBound {
     // Mul then add (an fma, if the compiler contracts, is only more accurate).
     let p = l.q + u * l.d;
-    let eps_p = l.line_rel * (l.q_len + abs(u)) + l.line_abs + G * 3.1 * U * (l.q_len + abs(u));
+    let eps_p = l.line_rel * (l.q_len + abs(u)) + l.line_abs + TC_G * 3.1 * TC_U * (l.q_len + abs(u));
     let rho_sq = p.x * p.x + p.z * p.z;
     let rho = sqrt(rho_sq);
     let e = rho - 1.0;
@@ -324,50 +328,50 @@ fn point_bound(l: Line, u: f32) -> PointBound {
     let sdf = h - l.rr;
     // As the CPU's (3U·(ρ + h) + U·(1 + 2rr) of rounding, bounded by 4U·(ρ + h) +
     // 2U·(1 + rr)), times G: that also covers a sqrt good to 4.5 ulp only.
-    let sdf_err = eps_p + G * 4.0 * U * (rho + h) + G * 2.0 * U * (1.0 + l.rr);
-    var b: PointBound;
+    let sdf_err = eps_p + TC_G * 4.0 * TC_U * (rho + h) + TC_G * 2.0 * TC_U * (1.0 + l.rr);
+    var b: TcPointBound;
     b.sdf_lo = sdf - sdf_err;
     b.sdf_hi = sdf + sdf_err;
     let g_plus_lo = l.k + 2.0 * max(rho - sdf_err, 0.0);
-    let f_lo = b.sdf_lo * (2.0 * l.rr + b.sdf_lo) * g_plus_lo * (1.0 - G * 8.0 * U);
-    b.f_lo = select(-1.0, f_lo, b.sdf_lo > 0.0 && finite(f_lo));
+    let f_lo = b.sdf_lo * (2.0 * l.rr + b.sdf_lo) * g_plus_lo * (1.0 - TC_G * 8.0 * TC_U);
+    b.f_lo = select(-1.0, f_lo, b.sdf_lo > 0.0 && tc_finite(f_lo));
     let p_sq = rho_sq + p.y * p.y;
     let a = p_sq + l.k;
     let bb = dot(p, l.d);
     let c = p.x * l.d.x + p.z * l.d.z;
     let slope = 4.0 * a * bb - 8.0 * c;
     // |p| ≤ (|q| + |u|)·(1 + 17U) (|d̂| = 1 within 16.5U), as on the CPU.
-    let p_len = (l.q_len + abs(u)) * (1.0 + 32.0 * U);
+    let p_len = (l.q_len + abs(u)) * (1.0 + 32.0 * TC_U);
     // Rounding (at most 10 roundings in a monomial), the line's error through F's Hessian
     // (‖H‖ ≤ 12|p|² + 12), and d̂'s error through ‖∇F‖ ≤ 4|p|³ + 12|p|: on the CPU d̂'s
     // rounding (2U), here the f32 transform's 24.4U (line_rel) plus that.
-    let slope_err = G * 10.0 * U * (4.0 * abs(a) * abs(bb) + 8.0 * abs(c))
+    let slope_err = TC_G * 10.0 * TC_U * (4.0 * abs(a) * abs(bb) + 8.0 * abs(c))
         + (12.0 * p_sq + 12.0) * eps_p
-        + (4.0 * p_sq * p_len + 12.0 * p_len) * (l.line_rel + G * 2.0 * U);
+        + (4.0 * p_sq * p_len + 12.0 * p_len) * (l.line_rel + TC_G * 2.0 * TC_U);
     b.slope_lo = slope - slope_err;
     b.slope_hi = slope + slope_err;
     return b;
 }
 
 // F > 0 on the convex piece [alpha, beta].
-fn convex_positive(alpha: f32, beta: f32, at_a: PointBound, at_b: PointBound) -> bool {
+fn tc_convex_positive(alpha: f32, beta: f32, at_a: TcPointBound, at_b: TcPointBound) -> bool {
     let both = at_a.f_lo > 0.0 && at_b.f_lo > 0.0;
     let sa = at_a.slope_lo;
     let sb = at_b.slope_hi;
     let lhs = at_a.f_lo * sb + at_b.f_lo * (-sa);
-    let rhs = (-sa) * sb * (beta - alpha) * (1.0 + G * 8.0 * U);
+    let rhs = (-sa) * sb * (beta - alpha) * (1.0 + TC_G * 8.0 * TC_U);
     return both && (sa >= 0.0 || sb <= 0.0 || lhs > rhs);
 }
 
 // F's lowest point on a convex piece [alpha, beta], approximately (any point is sound, a
 // better one proves more): Newton on F′ = 4u³ + 2c2·u + c1 from the piece's outer end.
-fn lowest(c2: f32, c1: f32, start_at: f32, alpha: f32, beta: f32) -> f32 {
+fn tc_lowest(c2: f32, c1: f32, start_at: f32, alpha: f32, beta: f32) -> f32 {
     var u = start_at;
     for (var i = 0; i < 5; i++) {
         let slope = (4.0 * u * u + 2.0 * c2) * u + c1;
         let curvature = 12.0 * u * u + 2.0 * c2;
         let next = u - slope / select(1.0, curvature, curvature > 0.0);
-        u = select(u, next, curvature > 0.0 && finite(next));
+        u = select(u, next, curvature > 0.0 && tc_finite(next));
     }
     return clamp(u, alpha, beta);
 }
@@ -375,46 +379,46 @@ fn lowest(c2: f32, c1: f32, start_at: f32, alpha: f32, beta: f32) -> f32 {
 // F > 0 on the convex piece [alpha, beta], split at F's lowest point m: sdf(m) > s > 0
 // keeps the line outside the tube on [m − s, m + s] (sdf is 1-Lipschitz, d̂ a unit
 // vector up to the line's error, which sdf_lo includes); the tangents prove each side.
-fn convex_piece_positive(
-    l: Line,
+fn tc_convex_piece_positive(
+    l: TcLine,
     c2: f32,
     c1: f32,
     start_at: f32,
     alpha: f32,
-    at_a: PointBound,
+    at_a: TcPointBound,
     beta: f32,
-    at_b: PointBound,
+    at_b: TcPointBound,
 ) -> bool {
-    let m = lowest(c2, c1, start_at, alpha, beta);
-    let at_m = point_bound(l, m);
+    let m = tc_lowest(c2, c1, start_at, alpha, beta);
+    let at_m = tc_point_bound(l, m);
     if (!(at_m.sdf_lo > 0.0)) {
         return false;
     }
     // |d̂| may exceed 1 by 16.5U: the clearance shrinks by as much (and more).
-    let clear = at_m.sdf_lo * (1.0 - 64.0 * U);
+    let clear = at_m.sdf_lo * (1.0 - 64.0 * TC_U);
     let before = max(m - clear, alpha);
     let after = min(m + clear, beta);
-    return convex_positive(alpha, before, at_a, point_bound(l, before))
-        && convex_positive(after, beta, point_bound(l, after), at_b);
+    return tc_convex_positive(alpha, before, at_a, tc_point_bound(l, before))
+        && tc_convex_positive(after, beta, tc_point_bound(l, after), at_b);
 }
 
 // F > 0 on [lo, hi], proved (true for an empty interval): F″ = 12u² + 2c2 makes F convex
 // left of −w and right of w, concave (at most) between.
-fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
+fn tc_positive(l: TcLine, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
     if (hi < lo) {
         return true;
     }
-    let w = sqrt(max((l.c2_err - c2) * ((1.0 + G * 8.0 * U) / 6.0), 0.0));
-    let at_lo = point_bound(l, lo);
-    let at_hi = point_bound(l, hi);
+    let w = sqrt(max((l.c2_err - c2) * ((1.0 + TC_G * 8.0 * TC_U) / 6.0), 0.0));
+    let at_lo = tc_point_bound(l, lo);
+    let at_hi = tc_point_bound(l, hi);
     // Left convex piece [lo, min(hi, −w)].
     if (lo <= -w) {
         let end = min(hi, -w);
         var at_end = at_hi;
         if (hi > -w) {
-            at_end = point_bound(l, -w);
+            at_end = tc_point_bound(l, -w);
         }
-        if (!convex_piece_positive(l, c2, c1, lo, lo, at_lo, end, at_end)) {
+        if (!tc_convex_piece_positive(l, c2, c1, lo, lo, at_lo, end, at_end)) {
             return false;
         }
     }
@@ -423,9 +427,9 @@ fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
         let start = max(lo, w);
         var at_start = at_lo;
         if (lo < w) {
-            at_start = point_bound(l, w);
+            at_start = tc_point_bound(l, w);
         }
-        if (!convex_piece_positive(l, c2, c1, hi, start, at_start, hi, at_hi)) {
+        if (!tc_convex_piece_positive(l, c2, c1, hi, start, at_start, hi, at_hi)) {
             return false;
         }
     }
@@ -435,14 +439,14 @@ fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
     if (alpha <= beta) {
         var f_alpha = at_lo.f_lo;
         if (lo < -w) {
-            f_alpha = point_bound(l, -w).f_lo;
+            f_alpha = tc_point_bound(l, -w).f_lo;
         }
         var f_beta = at_hi.f_lo;
         if (hi > w) {
-            f_beta = point_bound(l, w).f_lo;
+            f_beta = tc_point_bound(l, w).f_lo;
         }
         let span = beta - alpha;
-        let sag = 0.5 * (1.0 + G * 8.0 * U) * l.c2_err * span * span;
+        let sag = 0.5 * (1.0 + TC_G * 8.0 * TC_U) * l.c2_err * span * span;
         if (!(f_alpha > 0.0 && f_beta > 0.0 && min(f_alpha, f_beta) > sag)) {
             return false;
         }
@@ -466,7 +470,7 @@ fn positive(l: Line, c2: f32, c1: f32, lo: f32, hi: f32) -> bool {
 // WGSL may assume no infinities or NaNs: every division below has a divisor bounded
 // away from 0, where the CPU's divides by 0 and lets ±∞ decide.
 
-struct Bounds {
+struct TcBounds {
     outer: f32,
     outer_sq: f32,
     minor: f32,
@@ -478,8 +482,8 @@ struct Bounds {
     minor_rel_sq: f32,
 };
 
-fn bounds_of(torus: TorusParams) -> Bounds {
-    var b: Bounds;
+fn tc_bounds_of(torus: TorusParams) -> TcBounds {
+    var b: TcBounds;
     b.outer = torus.bounds_a.x;
     b.outer_sq = torus.bounds_a.y;
     b.minor = torus.bounds_a.z;
@@ -498,66 +502,66 @@ fn bounds_of(torus: TorusParams) -> Bounds {
 // subnormal; a product adds |a|e_b + |b|e_a + e_a·e_b, which is exact, not first
 // order. The bounds are themselves rounded (down by at most ~1 + 200u over a cull):
 // `ev_certain` widens them by 2⁻¹⁰ before a sign is read.
-struct Ev {
+struct TcEv {
     v: f32,
     e: f32,
 };
 
-fn ev_exact(v: f32) -> Ev {
-    return Ev(v, 0.0);
+fn tc_ev_exact(v: f32) -> TcEv {
+    return TcEv(v, 0.0);
 }
 
-fn ev_round(v: f32) -> f32 {
-    return G * U * abs(v) + FLUSH_FLOOR;
+fn tc_ev_round(v: f32) -> f32 {
+    return TC_G * TC_U * abs(v) + TC_FLUSH_FLOOR;
 }
 
-fn ev_add(a: Ev, b: Ev) -> Ev {
+fn tc_ev_add(a: TcEv, b: TcEv) -> TcEv {
     let s = a.v + b.v;
-    return Ev(s, a.e + b.e + ev_round(s));
+    return TcEv(s, a.e + b.e + tc_ev_round(s));
 }
 
-fn ev_sub(a: Ev, b: Ev) -> Ev {
+fn tc_ev_sub(a: TcEv, b: TcEv) -> TcEv {
     let s = a.v - b.v;
-    return Ev(s, a.e + b.e + ev_round(s));
+    return TcEv(s, a.e + b.e + tc_ev_round(s));
 }
 
-fn ev_mul(a: Ev, b: Ev) -> Ev {
+fn tc_ev_mul(a: TcEv, b: TcEv) -> TcEv {
     let p = a.v * b.v;
-    return Ev(p, abs(a.v) * b.e + abs(b.v) * a.e + a.e * b.e + ev_round(p));
+    return TcEv(p, abs(a.v) * b.e + abs(b.v) * a.e + a.e * b.e + tc_ev_round(p));
 }
 
 // k·a for a small integer or power of two k (exact in f32).
-fn ev_scale(k: f32, a: Ev) -> Ev {
+fn tc_ev_scale(k: f32, a: TcEv) -> TcEv {
     let p = k * a.v;
-    return Ev(p, abs(k) * a.e + ev_round(p));
+    return TcEv(p, abs(k) * a.e + tc_ev_round(p));
 }
 
 // The exact value is > 0.
-fn ev_positive(a: Ev) -> bool {
+fn tc_ev_positive(a: TcEv) -> bool {
     return a.v > a.e * (1.0 + 0.0009765625);
 }
 
 // The exact value may be ≥ 0 (not proved < 0).
-fn ev_maybe_nonnegative(a: Ev) -> bool {
+fn tc_ev_maybe_nonnegative(a: TcEv) -> bool {
     return a.v >= -a.e * (1.0 + 0.0009765625);
 }
 
 // How far the computed point q + τ·d (each component one product and one sum, fused or
 // not) can stand from the exact one, in each coordinate.
-fn point_error(q: vec3<f32>, d: vec3<f32>, tau: f32) -> f32 {
-    return G * 2.0 * U * (length(q) + length(d) * abs(tau)) * 1.01 + FLUSH_FLOOR;
+fn tc_point_error(q: vec3<f32>, d: vec3<f32>, tau: f32) -> f32 {
+    return TC_G * 2.0 * TC_U * (length(q) + length(d) * abs(tau)) * 1.01 + TC_FLUSH_FLOOR;
 }
 
 // `sphere`: the foot point within the padded bounding sphere.
-fn sphere_keeps(b: Bounds, q: vec3<f32>) -> bool {
+fn tc_sphere_keeps(b: TcBounds, q: vec3<f32>) -> bool {
     return dot(q, q) <= b.outer_sq;
 }
 
 // One axis of `aabb`'s slab method: (lo, hi) narrowed to where |q_i + t d_i| ≤ half.
 // A component below PARALLEL_COMPONENT is parallel (over |t| ≤ 4 the line moves by
 // less than 4·10⁻²⁰ along the axis): in the slab or not at all; x = 2 marks "empty".
-fn aabb_axis(range: vec2<f32>, q: f32, d: f32, half: f32) -> vec2<f32> {
-    if (abs(d) < PARALLEL_COMPONENT) {
+fn tc_aabb_axis(range: vec2<f32>, q: f32, d: f32, half: f32) -> vec2<f32> {
+    if (abs(d) < TC_PARALLEL_COMPONENT) {
         return select(vec2<f32>(2.0, -2.0), range, abs(q) <= half);
     }
     let inv = 1.0 / d;
@@ -569,23 +573,23 @@ fn aabb_axis(range: vec2<f32>, q: f32, d: f32, half: f32) -> vec2<f32> {
 // `aabb`: the box [−(R + r_η), R + r_η] × [−r_η, r_η] × [−(R + r_η), R + r_η]. The line's
 // points in the torus are within |t| ≤ 1 + rr + E < 4 of the foot point, so the slabs
 // are intersected with t ∈ [−4, 4] (where the CPU's are unbounded).
-fn aabb_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+fn tc_aabb_keeps(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     var range = vec2<f32>(-4.0, 4.0);
-    range = aabb_axis(range, q.x, d.x, b.outer);
-    range = aabb_axis(range, q.y, d.y, b.minor);
-    range = aabb_axis(range, q.z, d.z, b.outer);
+    range = tc_aabb_axis(range, q.x, d.x, b.outer);
+    range = tc_aabb_axis(range, q.y, d.y, b.minor);
+    range = tc_aabb_axis(range, q.z, d.z, b.outer);
     return range.x <= range.y;
 }
 
-struct SphereSlab {
+struct TcSphereSlab {
     half_chord_sq: f32,
     unit_y_sq: f32,
     keep: bool,
 };
 
 // `cychosz`: the sphere chord and the slab, squared, without a root (src/cull/cychosz.rs).
-fn sphere_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> SphereSlab {
-    var out: SphereSlab;
+fn tc_sphere_slab(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> TcSphereSlab {
+    var out: TcSphereSlab;
     out.half_chord_sq = b.outer_sq - dot(q, q);
     out.unit_y_sq = d.y * d.y / dot(d, d);
     let above = abs(q.y) - b.minor;
@@ -597,21 +601,21 @@ fn sphere_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> SphereSlab {
 // ρ² at the point q + τ·d, proved below the padded hole's (R − r_η)² (the margin of a
 // point in the torus is 2(R − r)η, which G·u·ρ² may not be at ν = 1.01): the point's
 // own error through ρ²'s gradient, and the rounding.
-fn inside_hole(b: Bounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
+fn tc_inside_hole(b: TcBounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
     let x = q + tau * d;
-    let delta = point_error(q, d, tau);
-    let rho_sq = ev_add(ev_mul(ev_exact(x.x), ev_exact(x.x)), ev_mul(ev_exact(x.z), ev_exact(x.z)));
+    let delta = tc_point_error(q, d, tau);
+    let rho_sq = tc_ev_add(tc_ev_mul(tc_ev_exact(x.x), tc_ev_exact(x.x)), tc_ev_mul(tc_ev_exact(x.z), tc_ev_exact(x.z)));
     let moved = 2.0 * (abs(x.x) + abs(x.z)) * delta + 2.0 * delta * delta;
     return rho_sq.v + (rho_sq.e + moved) * (1.0 + 0.0009765625) < b.inner_sq;
 }
 
 // `thick_cylinder`: clip the line to the slab and the outer cylinder; reject if nothing
 // is left or both ends are in the hole (ρ² is convex along the line).
-fn thick_cylinder_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+fn tc_thick_cylinder_keeps(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     let n = d / sqrt(dot(d, d));
     var lo = -4.0;
     var hi = 4.0;
-    if (abs(n.y) < PARALLEL_COMPONENT) {
+    if (abs(n.y) < TC_PARALLEL_COMPONENT) {
         if (abs(q.y) > b.minor) {
             return false;
         }
@@ -625,7 +629,7 @@ fn thick_cylinder_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     let h2 = n.x * n.x + n.z * n.z;
     let half_b = q.x * n.x + q.z * n.z;
     let rho2_foot = q.x * q.x + q.z * q.z;
-    if (h2 < AXIS_PARALLEL_H2) {
+    if (h2 < TC_AXIS_PARALLEL_H2) {
         return rho2_foot <= b.outer_sq && rho2_foot >= b.inner_sq;
     }
     let disc = half_b * half_b - h2 * (rho2_foot - b.outer_sq);
@@ -638,21 +642,21 @@ fn thick_cylinder_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     if (lo > hi) {
         return false;
     }
-    return !(inside_hole(b, q, n, lo) && inside_hole(b, q, n, hi));
+    return !(tc_inside_hole(b, q, n, lo) && tc_inside_hole(b, q, n, hi));
 }
 
 // `skala` (src/cull/skala.rs): Cychosz's sphere and slab, then in the plane through the
 // line parallel to the axis (distance a from it; A = a·h): the outer band a ≥ R shrinks
 // the slab to the section's height h_c, and the hole a < R − r rejects a line that falls
 // between the circles k, k′. R = 1 here; d is unit, so no rescaling.
-fn skala_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
-    let ss = sphere_slab(b, q, d);
+fn tc_skala_keeps(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    let ss = tc_sphere_slab(b, q, d);
     if (!ss.keep) {
         return false;
     }
     let len_sq = dot(d, d);
     let h_sq = d.x * d.x + d.z * d.z;
-    if (h_sq < AXIS_PARALLEL_H2 * len_sq) {
+    if (h_sq < TC_AXIS_PARALLEL_H2 * len_sq) {
         return q.x * q.x + q.z * q.z > b.inner_sq;
     }
     let a_h = abs(q.x * d.z - q.z * d.x);
@@ -682,7 +686,7 @@ fn skala_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     return true;
 }
 
-struct EllipsoidChord {
+struct TcEllipsoidChord {
     foot: vec3<f32>,
     dir: vec3<f32>,
     inv_len_sq: f32,
@@ -692,8 +696,8 @@ struct EllipsoidChord {
 
 // `ellipsoid` (src/cull/ellipsoid.rs): y scaled by s turns the outer ellipsoid into the
 // sphere R + r_η; Cychosz's chord and slab |y′| ≤ s·r_η on the scaled line.
-fn ellipsoid_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> EllipsoidChord {
-    var out: EllipsoidChord;
+fn tc_ellipsoid_slab(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> TcEllipsoidChord {
+    var out: TcEllipsoidChord;
     out.dir = vec3<f32>(d.x, b.y_scale * d.y, d.z);
     let o = vec3<f32>(q.x, b.y_scale * q.y, q.z);
     out.inv_len_sq = 1.0 / dot(out.dir, out.dir);
@@ -709,19 +713,19 @@ fn ellipsoid_slab(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> EllipsoidChord {
 // H = ρ² − c·y′² − (R − r_η)² at the computed point q + τ·d may be ≥ 0 at the exact point
 // q + τ·d of the scaled line: the rounding (running bound) and the point's own error
 // through H's gradient (|∂H| ≤ 2|x|, 2c|y′|, 2|z|) and its second order.
-fn hyperboloid_reached(b: Bounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
+fn tc_hyperboloid_reached(b: TcBounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool {
     let x = q + tau * d;
-    let c = ev_exact(b.hyperboloid);
-    let h = ev_sub(
-        ev_sub(
-            ev_add(ev_mul(ev_exact(x.x), ev_exact(x.x)), ev_mul(ev_exact(x.z), ev_exact(x.z))),
-            ev_mul(c, ev_mul(ev_exact(x.y), ev_exact(x.y))),
+    let c = tc_ev_exact(b.hyperboloid);
+    let h = tc_ev_sub(
+        tc_ev_sub(
+            tc_ev_add(tc_ev_mul(tc_ev_exact(x.x), tc_ev_exact(x.x)), tc_ev_mul(tc_ev_exact(x.z), tc_ev_exact(x.z))),
+            tc_ev_mul(c, tc_ev_mul(tc_ev_exact(x.y), tc_ev_exact(x.y))),
         ),
-        ev_exact(b.inner_sq),
+        tc_ev_exact(b.inner_sq),
     );
-    let delta = point_error(q, d, tau);
+    let delta = tc_point_error(q, d, tau);
     let moved = 2.0 * (abs(x.x) + abs(x.z) + b.hyperboloid * abs(x.y)) * delta + 3.0 * delta * delta;
-    return ev_maybe_nonnegative(Ev(h.v, h.e + moved));
+    return tc_ev_maybe_nonnegative(TcEv(h.v, h.e + moved));
 }
 
 // `quadric` (src/cull/quadric.rs): the ellipsoid's chord, clipped to the slab, must
@@ -729,15 +733,15 @@ fn hyperboloid_reached(b: Bounds, q: vec3<f32>, d: vec3<f32>, tau: f32) -> bool 
 // concave, tested as C·|A| + B² ≥ 0. Each test is widened by its error bound, and the
 // vertex is tried wherever it may be concave and inside (a vertex tried outside the
 // clip only keeps more: its H is H's maximum).
-fn quadric_keeps(b: Bounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
-    let chord = ellipsoid_slab(b, q0, d0);
+fn tc_quadric_keeps(b: TcBounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
+    let chord = tc_ellipsoid_slab(b, q0, d0);
     if (!chord.keep) {
         return false;
     }
     let q = chord.foot;
     let d = chord.dir;
     let half = sqrt(max(chord.half_chord_sq, 0.0) * chord.inv_len_sq);
-    let dy = select(d.y, select(HORIZONTAL_DY, -HORIZONTAL_DY, d.y < 0.0), abs(d.y) < HORIZONTAL_DY);
+    let dy = select(d.y, select(TC_HORIZONTAL_DY, -TC_HORIZONTAL_DY, d.y < 0.0), abs(d.y) < TC_HORIZONTAL_DY);
     let inv_dy = 1.0 / dy;
     let t_bottom = (-b.slab - q.y) * inv_dy;
     let t_top = (b.slab - q.y) * inv_dy;
@@ -746,28 +750,28 @@ fn quadric_keeps(b: Bounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
     // q + τ·d finite (WGSL may assume no infinities).
     let lo = clamp(max(-half, min(t_bottom, t_top)), -half, half);
     let hi = clamp(min(half, max(t_bottom, t_top)), -half, half);
-    if (hyperboloid_reached(b, q, d, lo) || hyperboloid_reached(b, q, d, hi)) {
+    if (tc_hyperboloid_reached(b, q, d, lo) || tc_hyperboloid_reached(b, q, d, hi)) {
         return true;
     }
-    let c = ev_exact(b.hyperboloid);
-    let qx = ev_exact(q.x);
-    let qy = ev_exact(q.y);
-    let qz = ev_exact(q.z);
-    let dx = ev_exact(d.x);
-    let dy_ = ev_exact(d.y);
-    let dz = ev_exact(d.z);
-    let neg_a = ev_sub(ev_sub(ev_mul(c, ev_mul(dy_, dy_)), ev_mul(dx, dx)), ev_mul(dz, dz));
-    let half_b = ev_sub(ev_add(ev_mul(qx, dx), ev_mul(qz, dz)), ev_mul(c, ev_mul(qy, dy_)));
-    let h_q = ev_sub(
-        ev_sub(ev_add(ev_mul(qx, qx), ev_mul(qz, qz)), ev_mul(c, ev_mul(qy, qy))),
-        ev_exact(b.inner_sq),
+    let c = tc_ev_exact(b.hyperboloid);
+    let qx = tc_ev_exact(q.x);
+    let qy = tc_ev_exact(q.y);
+    let qz = tc_ev_exact(q.z);
+    let dx = tc_ev_exact(d.x);
+    let dy_ = tc_ev_exact(d.y);
+    let dz = tc_ev_exact(d.z);
+    let neg_a = tc_ev_sub(tc_ev_sub(tc_ev_mul(c, tc_ev_mul(dy_, dy_)), tc_ev_mul(dx, dx)), tc_ev_mul(dz, dz));
+    let half_b = tc_ev_sub(tc_ev_add(tc_ev_mul(qx, dx), tc_ev_mul(qz, dz)), tc_ev_mul(c, tc_ev_mul(qy, dy_)));
+    let h_q = tc_ev_sub(
+        tc_ev_sub(tc_ev_add(tc_ev_mul(qx, qx), tc_ev_mul(qz, qz)), tc_ev_mul(c, tc_ev_mul(qy, qy))),
+        tc_ev_exact(b.inner_sq),
     );
-    let maybe_concave = !ev_positive(Ev(-neg_a.v, neg_a.e));
-    let after_lo = ev_sub(half_b, ev_mul(ev_exact(lo), neg_a));
-    let before_hi = ev_sub(ev_mul(ev_exact(hi), neg_a), half_b);
-    let maybe_inside = ev_maybe_nonnegative(after_lo) && ev_maybe_nonnegative(before_hi);
-    let vertex = ev_add(ev_mul(h_q, neg_a), ev_mul(half_b, half_b));
-    return maybe_concave && maybe_inside && ev_maybe_nonnegative(vertex);
+    let maybe_concave = !tc_ev_positive(TcEv(-neg_a.v, neg_a.e));
+    let after_lo = tc_ev_sub(half_b, tc_ev_mul(tc_ev_exact(lo), neg_a));
+    let before_hi = tc_ev_sub(tc_ev_mul(tc_ev_exact(hi), neg_a), half_b);
+    let maybe_inside = tc_ev_maybe_nonnegative(after_lo) && tc_ev_maybe_nonnegative(before_hi);
+    let vertex = tc_ev_add(tc_ev_mul(h_q, neg_a), tc_ev_mul(half_b, half_b));
+    return maybe_concave && maybe_inside && tc_ev_maybe_nonnegative(vertex);
 }
 
 // `discriminant` (src/cull/discriminant.rs): F(t) = t⁴ + 2P t² + 8Q t + S along the line
@@ -778,8 +782,8 @@ fn quadric_keeps(b: Bounds, q0: vec3<f32>, d0: vec3<f32>) -> bool {
 // error bound (f = q − (q·dh/|dh|²)·dh is within δ_f of f*), the whole evaluation runs
 // on `Ev`, and a rejection needs every sign proved. A rejected line then misses the
 // padded torus exactly, and the true line (within E of it) misses the torus.
-fn discriminant_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
-    if (!sphere_keeps(b, q)) {
+fn tc_discriminant_keeps(b: TcBounds, q: vec3<f32>, d: vec3<f32>) -> bool {
+    if (!tc_sphere_keeps(b, q)) {
         return false;
     }
     let n2 = dot(d, d);
@@ -788,66 +792,66 @@ fn discriminant_keeps(b: Bounds, q: vec3<f32>, d: vec3<f32>) -> bool {
     let q_len = length(q);
     // along's error: the dot product's G·3u·|q||d| over |d|² (1 within 16.5u), the
     // division's; f's: that times |d|, and each component's own rounding.
-    let delta_f = G * 8.0 * U * (q_len + abs(along)) * 1.01 + FLUSH_FLOOR;
+    let delta_f = TC_G * 8.0 * TC_U * (q_len + abs(along)) * 1.01 + TC_FLUSH_FLOOR;
     // |ρ(f) − ρ(f*)| and |f_y − f*_y| are at most δ_f, so the squares move by at most
     // 2|·|δ_f + δ_f² (|·| of f, plus 1 % for its own rounding).
-    let rho_sq = ev_add(ev_mul(ev_exact(f.x), ev_exact(f.x)), ev_mul(ev_exact(f.z), ev_exact(f.z)));
-    let fy_sq = ev_mul(ev_exact(f.y), ev_exact(f.y));
+    let rho_sq = tc_ev_add(tc_ev_mul(tc_ev_exact(f.x), tc_ev_exact(f.x)), tc_ev_mul(tc_ev_exact(f.z), tc_ev_exact(f.z)));
+    let fy_sq = tc_ev_mul(tc_ev_exact(f.y), tc_ev_exact(f.y));
     let rho_len = sqrt(rho_sq.v) * 1.01;
-    let rho_sq_in = Ev(rho_sq.v, rho_sq.e + 2.0 * rho_len * delta_f + delta_f * delta_f);
-    let fy_sq_in = Ev(fy_sq.v, fy_sq.e + 2.0 * abs(f.y) * 1.01 * delta_f + delta_f * delta_f);
+    let rho_sq_in = TcEv(rho_sq.v, rho_sq.e + 2.0 * rho_len * delta_f + delta_f * delta_f);
+    let fy_sq_in = TcEv(fy_sq.v, fy_sq.e + 2.0 * abs(f.y) * 1.01 * delta_f + delta_f * delta_f);
     // d*_y² = dh_y²/|dh|²: a product, a sum of three squares and a division (2.5 ulp).
     let uy = d.y * d.y / n2;
-    let unit_y_sq = Ev(uy, G * 4.0 * U * uy + FLUSH_FLOOR);
-    let one = ev_exact(1.0);
-    let rho_sq_m1 = ev_sub(rho_sq_in, one);
-    let bb = ev_sub(fy_sq_in, ev_exact(b.minor_rel_sq));
-    let p = ev_add(ev_add(rho_sq_m1, bb), ev_scale(2.0, unit_y_sq));
-    let s = ev_add(
-        ev_mul(rho_sq_m1, rho_sq_m1),
-        ev_mul(bb, ev_add(ev_scale(2.0, ev_add(rho_sq_in, one)), bb)),
+    let unit_y_sq = TcEv(uy, TC_G * 4.0 * TC_U * uy + TC_FLUSH_FLOOR);
+    let one = tc_ev_exact(1.0);
+    let rho_sq_m1 = tc_ev_sub(rho_sq_in, one);
+    let bb = tc_ev_sub(fy_sq_in, tc_ev_exact(b.minor_rel_sq));
+    let p = tc_ev_add(tc_ev_add(rho_sq_m1, bb), tc_ev_scale(2.0, unit_y_sq));
+    let s = tc_ev_add(
+        tc_ev_mul(rho_sq_m1, rho_sq_m1),
+        tc_ev_mul(bb, tc_ev_add(tc_ev_scale(2.0, tc_ev_add(rho_sq_in, one)), bb)),
     );
-    let q_sq = ev_mul(fy_sq_in, unit_y_sq);
-    let p_sq = ev_mul(p, p);
-    let s_minus_p_sq = ev_sub(s, p_sq);
-    let cubic = ev_add(
-        ev_sub(ev_mul(p_sq, p), ev_scale(9.0, ev_mul(p, s))),
-        ev_scale(54.0, q_sq),
+    let q_sq = tc_ev_mul(fy_sq_in, unit_y_sq);
+    let p_sq = tc_ev_mul(p, p);
+    let s_minus_p_sq = tc_ev_sub(s, p_sq);
+    let cubic = tc_ev_add(
+        tc_ev_sub(tc_ev_mul(p_sq, p), tc_ev_scale(9.0, tc_ev_mul(p, s))),
+        tc_ev_scale(54.0, q_sq),
     );
-    let delta = ev_sub(
-        ev_mul(ev_mul(s, s_minus_p_sq), s_minus_p_sq),
-        ev_scale(8.0, ev_mul(q_sq, cubic)),
+    let delta = tc_ev_sub(
+        tc_ev_mul(tc_ev_mul(s, s_minus_p_sq), s_minus_p_sq),
+        tc_ev_scale(8.0, tc_ev_mul(q_sq, cubic)),
     );
-    let rootless = ev_positive(delta) && (ev_positive(p) || ev_positive(s_minus_p_sq));
+    let rootless = tc_ev_positive(delta) && (tc_ev_positive(p) || tc_ev_positive(s_minus_p_sq));
     return !rootless;
 }
 
 // The cull `code` (GpuCull::ALL's order) on the scaled line: true keeps it.
-fn cull_keeps(code: u32, b: Bounds, q: vec3<f32>, dh: vec3<f32>) -> bool {
+fn tc_cull_keeps(code: u32, b: TcBounds, q: vec3<f32>, dh: vec3<f32>) -> bool {
     switch code {
         case TORUS_CULL_SPHERE: {
-            return sphere_keeps(b, q);
+            return tc_sphere_keeps(b, q);
         }
         case TORUS_CULL_AABB: {
-            return aabb_keeps(b, q, dh);
+            return tc_aabb_keeps(b, q, dh);
         }
         case TORUS_CULL_CYCHOSZ: {
-            return sphere_slab(b, q, dh).keep;
+            return tc_sphere_slab(b, q, dh).keep;
         }
         case TORUS_CULL_THICK_CYLINDER: {
-            return thick_cylinder_keeps(b, q, dh);
+            return tc_thick_cylinder_keeps(b, q, dh);
         }
         case TORUS_CULL_SKALA: {
-            return skala_keeps(b, q, dh);
+            return tc_skala_keeps(b, q, dh);
         }
         case TORUS_CULL_ELLIPSOID: {
-            return ellipsoid_slab(b, q, dh).keep;
+            return tc_ellipsoid_slab(b, q, dh).keep;
         }
         case TORUS_CULL_QUADRIC: {
-            return quadric_keeps(b, q, dh);
+            return tc_quadric_keeps(b, q, dh);
         }
         case TORUS_CULL_DISCRIMINANT: {
-            return discriminant_keeps(b, q, dh);
+            return tc_discriminant_keeps(b, q, dh);
         }
         default: {
             return true;
@@ -855,16 +859,16 @@ fn cull_keeps(code: u32, b: Bounds, q: vec3<f32>, dh: vec3<f32>) -> bool {
     }
 }
 
-fn escalate(why: u32) -> TorusHit {
+fn tc_escalate(why: u32) -> TorusHit {
     return TorusHit(0.0, vec3<f32>(0.0), TORUS_ESCALATE, why);
 }
 
-fn miss() -> TorusHit {
+fn tc_miss() -> TorusHit {
     return TorusHit(0.0, vec3<f32>(0.0), TORUS_MISS, 0u);
 }
 
 // The cull-only answer.
-fn kept(keep: bool) -> TorusHit {
+fn tc_kept(keep: bool) -> TorusHit {
     return TorusHit(0.0, vec3<f32>(0.0), select(TORUS_MISS, TORUS_KEPT, keep), 0u);
 }
 
@@ -910,12 +914,12 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     // Hence ε(u) ≤ 16.9U·|o − c|/R + 16U·|q| + 24.4U·|u|, taken about twice. (A foot
     // point the host formed in f64 is within 10⁻⁹·R of the line before its rounding to
     // f32, which the constant 32U ≈ 1.9·10⁻⁶ covers.)
-    let line_abs = LINE_ABS_DIST * v_rel + LINE_ABS;
-    let line_rel = LINE_REL;
+    let line_abs = TC_LINE_ABS_DIST * v_rel + TC_LINE_ABS;
+    let line_rel = TC_LINE_REL;
 
     let q_len_sq = dot(q, q);
     let q_len = sqrt(q_len_sq);
-    let line_at_foot = line_rel * q_len + line_abs + G * 3.1 * U * q_len;
+    let line_at_foot = line_rel * q_len + line_abs + TC_G * 3.1 * TC_U * q_len;
 
     // The range in u: lo = (t_min·|d| + s)/R, clamped to ±4 (every root has |u| < 2),
     // with its error: s = o_l·d̂ within 35.3U·|o − c| of the true one (o_l's 7.9U·|v|,
@@ -924,30 +928,30 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     let tmax_d = ldexp(t_max, ex) * len;
     let lo_raw = (tmin_d + s) * inv_major;
     let hi_raw = (tmax_d + s) * inv_major;
-    let s_err = 64.0 * U * v_rel;
-    let lo_err = s_err + 40.0 * U * (abs(tmin_d) * inv_major + abs(s) * inv_major);
-    let hi_err = s_err + 40.0 * U * (abs(tmax_d) * inv_major + abs(s) * inv_major);
+    let s_err = 64.0 * TC_U * v_rel;
+    let lo_err = s_err + 40.0 * TC_U * (abs(tmin_d) * inv_major + abs(s) * inv_major);
+    let hi_err = s_err + 40.0 * TC_U * (abs(tmax_d) * inv_major + abs(s) * inv_major);
     let lo_out = clamp(lo_raw - lo_err, -4.0, 4.0);
     let lo_in = clamp(lo_raw + lo_err, -4.0, 4.0);
     let hi_out = clamp(hi_raw + hi_err, -4.0, 4.0);
     let hi_in = clamp(hi_raw - hi_err, -4.0, 4.0);
 
-    let all_finite = finite(v_rel) && finite(q_len_sq) && finite(lo_raw) && finite(hi_raw)
-        && finite(s) && len > 0.0 && finite(len);
+    let all_finite = tc_finite(v_rel) && tc_finite(q_len_sq) && tc_finite(lo_raw) && tc_finite(hi_raw)
+        && tc_finite(s) && len > 0.0 && tc_finite(len);
     if (!all_finite) {
         if (cull_only) {
-            return kept(true);
+            return tc_kept(true);
         }
-        return escalate(TORUS_WHY_NON_FINITE_LINE);
+        return tc_escalate(TORUS_WHY_NON_FINITE_LINE);
     }
 
     // The cull, on the scaled line: the bounds' margin covers the line's error.
-    let keep = cull_keeps(cull, bounds_of(torus), q, dh);
+    let keep = tc_cull_keeps(cull, tc_bounds_of(torus), q, dh);
     if (cull_only) {
-        return kept(keep);
+        return tc_kept(keep);
     }
     if (!keep) {
-        return miss();
+        return tc_miss();
     }
 
     // The quartic (forms that do not cancel, as in src/intersect.rs's reduce).
@@ -958,7 +962,7 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     let c1 = 8.0 * (q.y - delta * dh.y) * dh.y;
     let c0 = ((rho - 1.0) * (rho - 1.0) + tube) * ((rho + 1.0) * (rho + 1.0) + tube);
     let rho_plus = rho + 1.0;
-    var l: Line;
+    var l: TcLine;
     l.q = q;
     l.d = dh;
     l.rr = rr;
@@ -966,15 +970,15 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     l.line_abs = line_abs;
     l.q_len = q_len;
     l.k = 1.0 - rr * rr;
-    l.c2_err = G * 16.0 * U * (2.0 * rho_plus * rho_plus + 2.0 * (q.y * q.y + rr * rr) + 4.0)
-        + 8.0 * line_at_foot + G * 8.0 * U;
+    l.c2_err = TC_G * 16.0 * TC_U * (2.0 * rho_plus * rho_plus + 2.0 * (q.y * q.y + rr * rr) + 4.0)
+        + 8.0 * line_at_foot + TC_G * 8.0 * TC_U;
 
     // The chord: every true root has u² ≤ (1 + rr)² − |q_true|².
     let outer = 1.0 + rr;
-    let chord_sq = outer * outer * (1.0 + G * 16.0 * U) - q_len_sq * (1.0 - G * 16.0 * U)
+    let chord_sq = outer * outer * (1.0 + TC_G * 16.0 * TC_U) - q_len_sq * (1.0 - TC_G * 16.0 * TC_U)
         + 4.0 * line_at_foot * (1.0 + q_len);
     if (chord_sq < 0.0) {
-        return miss();
+        return tc_miss();
     }
     let chord = sqrt(chord_sq);
     // The widest the true range can be (for "no root here" proofs) and the narrowest (where
@@ -982,23 +986,23 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     let lo = max(lo_out, -chord);
     let hi = min(hi_out, chord);
     if (hi < lo) {
-        return miss();
+        return tc_miss();
     }
     let lo_narrow = max(lo_in, -chord);
     let hi_narrow = min(hi_in, chord);
 
     // The solver's "careful" flag is not escalated on its word (as on the CPU): soundness
     // rests on the proof below alone, which fails wherever the f32 root is wrong.
-    let nr = nearest_root(c2, c1, c0, lo, hi);
-    let found = nr.root < BIG;
-    if (!(finite(c2) && finite(c1) && finite(c0))) {
-        return escalate(TORUS_WHY_SOLVER_UNSURE);
+    let nr = tc_nearest_root(c2, c1, c0, lo, hi);
+    let found = nr.root < TC_BIG;
+    if (!(tc_finite(c2) && tc_finite(c1) && tc_finite(c0))) {
+        return tc_escalate(TORUS_WHY_SOLVER_UNSURE);
     }
     if (!found) {
-        if (positive(l, c2, c1, lo, hi)) {
-            return miss();
+        if (tc_positive(l, c2, c1, lo, hi)) {
+            return tc_miss();
         }
-        return escalate(TORUS_WHY_MISS_NOT_PROVED);
+        return tc_escalate(TORUS_WHY_MISS_NOT_PROVED);
     }
     // t = (u·R − s)/|d| (|d| = len·2^ex). Its error, in length units, is the bracket's
     // half-width plus what the kernel adds: s's error (s_err·R), and the relative error of
@@ -1008,24 +1012,24 @@ fn torus_trace(ray: TorusRay, torus: TorusParams, cull: u32, cull_only: bool) ->
     let u_star = nr.root;
     let along = u_star * major - s;
     let t = ldexp(along / len, -ex);
-    let t_extra = s_err * major + 48.0 * U * (abs(along) + abs(u_star * major) + abs(s));
-    let bracket = min(BRACKET, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * U));
-    if (!(bracket > 1e-6) || !finite(t)) {
-        return escalate(TORUS_WHY_T_ERROR);
+    let t_extra = s_err * major + 48.0 * TC_U * (abs(along) + abs(u_star * major) + abs(s));
+    let bracket = min(TC_BRACKET, 1.99e-4 * (1.0 + rr) - t_extra * inv_major * (1.0 + 4.0 * TC_U));
+    if (!(bracket > 1e-6) || !tc_finite(t)) {
+        return tc_escalate(TORUS_WHY_T_ERROR);
     }
     // A hit: sdf > 0 at the bracket's start, < 0 at its end, F > 0 before it.
     let left = max(u_star - bracket, lo_narrow);
     let right = min(u_star + bracket, hi_narrow);
     if (!(left <= right)) {
-        return escalate(TORUS_WHY_EMPTY_BRACKET);
+        return tc_escalate(TORUS_WHY_EMPTY_BRACKET);
     }
-    let at_left = point_bound(l, left);
-    let at_right = point_bound(l, right);
+    let at_left = tc_point_bound(l, left);
+    let at_right = tc_point_bound(l, right);
     if (!(at_left.sdf_lo > 0.0 && at_right.sdf_hi < 0.0)) {
-        return escalate(TORUS_WHY_NO_SIGN_CHANGE);
+        return tc_escalate(TORUS_WHY_NO_SIGN_CHANGE);
     }
-    if (!positive(l, c2, c1, lo, left)) {
-        return escalate(TORUS_WHY_EARLIER_ROOT);
+    if (!tc_positive(l, c2, c1, lo, left)) {
+        return tc_escalate(TORUS_WHY_EARLIER_ROOT);
     }
     // The normal: ∇F ∝ (|p|² + 1 − rr²)·p − 2(px, 0, pz), back to the world.
     let p = q + u_star * dh;

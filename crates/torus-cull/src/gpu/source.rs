@@ -168,9 +168,13 @@ impl KernelConstants {
              // the pipeline is built: exact hexadecimal floats, the decimal in the comment.\n",
         );
         for (name, value) in floats {
-            let _ = writeln!(out, "const {name}: f32 = {}; // {value:e}", hex_f32(value));
+            let _ = writeln!(
+                out,
+                "const TC_{name}: f32 = {}; // {value:e}",
+                hex_f32(value)
+            );
         }
-        let _ = writeln!(out, "const CBRT_SEED: u32 = {}u;", self.cbrt_seed);
+        let _ = writeln!(out, "const TC_CBRT_SEED: u32 = {}u;", self.cbrt_seed);
         out.push_str(&codes());
         out
     }
@@ -353,8 +357,10 @@ pub fn kernel_source() -> String {
 /// codes) and the functions, without the library kernel's bindings and entry point.
 /// The library's kernel is this same text plus its bindings ([`kernel_source`]).
 ///
-/// The public entry points (every other name in the text is internal; a shader that
-/// includes it must not declare the same global names):
+/// The public entry points (every other name in the text is internal, and every global
+/// name begins with `torus_`, `Torus` or `TORUS_` for the API, or `tc_`, `Tc` or `TC_`
+/// for internals, so that a shader that includes it avoids clashes by avoiding those
+/// prefixes):
 ///
 /// ```wgsl
 /// fn torus_intersect(ray: TorusRay, torus: TorusParams, cull: u32) -> TorusHit
@@ -454,10 +460,10 @@ mod tests {
             ("TRISECT_FIT_5", trisect::FIT[5] as f32),
             ("AXIS_PARALLEL_H2", AXIS_PARALLEL_H2),
         ] {
-            let line = format!("const {name}: f32 = {};", hex_f32(value));
+            let line = format!("const TC_{name}: f32 = {};", hex_f32(value));
             assert!(header.contains(&line), "{line} not in\n{header}");
         }
-        assert!(header.contains(&format!("const CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
+        assert!(header.contains(&format!("const TC_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
         // The bodies declare none of them by hand (one source).
         for line in MODULE_BODY.lines().chain(KERNEL_BODY.lines()) {
             assert!(
@@ -538,6 +544,31 @@ mod tests {
         ] {
             assert!(module.contains(line), "{line}");
         }
+        // Every global name is the API's (torus_ / Torus / TORUS_) or an internal one
+        // (tc_ / Tc / TC_), so none clashes with a renderer's own `miss`, `Line` or `U`.
+        let prefixed = |name: &str| {
+            ["torus_", "Torus", "TORUS_", "tc_", "Tc", "TC_"]
+                .iter()
+                .any(|p| name.starts_with(p))
+        };
+        let functions = parsed.functions.iter().filter_map(|(_, f)| f.name.clone());
+        let constants = parsed.constants.iter().filter_map(|(_, c)| c.name.clone());
+        let types = parsed
+            .types
+            .iter()
+            .filter(|(_, t)| matches!(t.inner, naga::TypeInner::Struct { .. }))
+            .filter_map(|(_, t)| t.name.clone());
+        let names: Vec<String> = functions.chain(constants).chain(types).collect();
+        assert!(names.len() > 60, "{names:?}");
+        // `__…` are naga's own predeclared types (frexp's result), not the module's.
+        let bare: Vec<&String> = names
+            .iter()
+            .filter(|n| !prefixed(n) && !n.starts_with("__"))
+            .collect();
+        assert!(
+            bare.is_empty(),
+            "global names without the module's prefix: {bare:?}"
+        );
     }
 
     /// Changing a Rust constant changes the kernel's text, in exactly that line.
@@ -556,7 +587,7 @@ mod tests {
         assert!(
             differing[0]
                 .1
-                .starts_with("const SAFETY_REL: f32 = 0x1.000000p-11f;")
+                .starts_with("const TC_SAFETY_REL: f32 = 0x1.000000p-11f;")
         );
         let seed = KernelConstants {
             cbrt_seed: cpu.cbrt_seed + 1,
