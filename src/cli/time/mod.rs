@@ -44,7 +44,9 @@ pub struct TimeArgs {
     #[arg(long)]
     batch: Option<usize>,
     /// Results JSON (default: results/<short commit>[-dirty]-<workload>-time.json, or
-    /// …-time.json for the workload named `default`). Its directory must exist.
+    /// …-time.json for the workload named `default`; …-secondary-time.json with
+    /// --secondary and …-gpu-time.json with --device gpu, so that neither replaces the
+    /// primary CPU timing). Its directory must exist.
     #[arg(long)]
     out: Option<PathBuf>,
     /// `scalar`: one ray at a time (`total_ns`, `cull_ns`); `both`: also the batch mode
@@ -131,7 +133,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         Device::Cpu => pick_batch(args.batch, &workload, &args.workload)?,
         Device::Gpu => pick_gpu_batch(args.batch)?,
     };
-    let path = out_path(args.out, &workload)?;
+    let path = out_path(args.out, &workload, args.device, args.secondary)?;
     check_writable(&path)?;
     if spec::built_in(&args.workload).is_none() {
         torus_cull_lab::output::check_not_input(
@@ -393,11 +395,19 @@ fn pick_gpu_batch(asked: Option<usize>) -> Result<usize, String> {
 }
 
 /// `--out`, or the default file under `results/` (its directory made if need be).
-fn out_path(out: Option<PathBuf>, workload: &Workload) -> Result<PathBuf, String> {
+fn out_path(
+    out: Option<PathBuf>,
+    workload: &Workload,
+    device: Device,
+    secondary: bool,
+) -> Result<PathBuf, String> {
     if let Some(path) = out {
         return Ok(path);
     }
-    let path = results::default_path(Path::new("results"), &time_suffix(&workload.name));
+    let path = results::default_path(
+        Path::new("results"),
+        &time_suffix(&workload.name, device, secondary),
+    );
     torus_cull_lab::output::create_default_dir(&path)
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     Ok(path)
@@ -567,11 +577,22 @@ fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>,
 
 /// The default file name's suffix: `-time` for the `default` workload, `-<name>-time` for
 /// any other (as `run` names its files), so that timing two workloads keeps both files.
-fn time_suffix(workload: &str) -> String {
-    match workload {
-        "default" => "-time".to_string(),
-        other => format!("-{other}-time"),
+/// The default file's suffix: the workload (unless `default`), `secondary` for
+/// `--secondary`, `gpu` for a GPU timing, then `time`. Each kind has its own name: it
+/// holds other records (bounces, or the kernel's on another device) and must never
+/// replace the primary CPU timing of the same commit.
+fn time_suffix(workload: &str, device: Device, secondary: bool) -> String {
+    let mut suffix = String::new();
+    if workload != "default" {
+        suffix += &format!("-{workload}");
     }
+    if secondary {
+        suffix += "-secondary";
+    }
+    if device == Device::Gpu {
+        suffix += "-gpu";
+    }
+    suffix + "-time"
 }
 
 /// Fails now, not after the measurement, if `path` cannot be written the way every output
@@ -604,5 +625,23 @@ mod gpu {
         Err("--device gpu needs a binary built with the feature gpu: \
              cargo run --release --features gpu -- time --device gpu"
             .into())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Device, time_suffix};
+
+    #[test]
+    fn a_gpu_timing_has_its_own_default_name() {
+        assert_eq!(time_suffix("default", Device::Cpu, false), "-time");
+        assert_eq!(time_suffix("default", Device::Gpu, false), "-gpu-time");
+        assert_eq!(time_suffix("quick", Device::Cpu, false), "-quick-time");
+        assert_eq!(time_suffix("quick", Device::Gpu, false), "-quick-gpu-time");
+        assert_eq!(time_suffix("default", Device::Cpu, true), "-secondary-time");
+        assert_eq!(
+            time_suffix("quick", Device::Cpu, true),
+            "-quick-secondary-time"
+        );
     }
 }
