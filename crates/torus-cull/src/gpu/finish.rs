@@ -211,44 +211,20 @@ impl FinishPipeline {
     /// Compiles the pass; `None` with the reason where the device refuses it.
     pub(crate) async fn new(device: &wgpu::Device) -> Result<FinishPipeline, GpuError> {
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("torus-cull f64 finish"),
-            source: wgpu::ShaderSource::Wgsl(super::finish_source().into()),
-        });
-        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
         use wgpu::BufferBindingType as B;
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("torus-cull f64 finish bindings"),
-            entries: &[
-                entry(0, B::Uniform),
-                entry(1, B::Storage { read_only: true }),
-                entry(2, B::Storage { read_only: true }),
-                entry(3, B::Storage { read_only: true }),
-                entry(4, B::Storage { read_only: false }),
+        let (pipeline, layout) = super::compute_pipeline(
+            device,
+            "torus-cull f64 finish",
+            super::finish_source(),
+            &[
+                B::Uniform,
+                B::Storage { read_only: true },
+                B::Storage { read_only: true },
+                B::Storage { read_only: true },
+                B::Storage { read_only: false },
             ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("torus-cull f64 finish layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some("torus-cull f64 finish pipeline"),
-            layout: Some(&pipeline_layout),
-            module: &module,
-            entry_point: Some("finish_main"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
+            "finish_main",
+        );
         if let Some(e) = scope.pop().await {
             return Err(GpuError::Kernel(format!("the f64 finish pass: {e}")));
         }

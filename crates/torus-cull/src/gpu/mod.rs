@@ -352,41 +352,18 @@ impl GpuIntersector {
         // A kernel that does not compile or validate on this adapter is an error to return,
         // not a panic in wgpu's default handler.
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("torus-cull kernel"),
-            source: wgpu::ShaderSource::Wgsl(kernel_source().into()),
-        });
-        let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
-        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("torus-cull bindings"),
-            entries: &[
-                entry(0, wgpu::BufferBindingType::Uniform),
-                entry(1, wgpu::BufferBindingType::Storage { read_only: true }),
-                entry(2, wgpu::BufferBindingType::Storage { read_only: false }),
+        use wgpu::BufferBindingType as B;
+        let (pipeline, layout) = compute_pipeline(
+            &device,
+            "torus-cull",
+            kernel_source(),
+            &[
+                B::Uniform,
+                B::Storage { read_only: true },
+                B::Storage { read_only: false },
             ],
-        });
-        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("torus-cull layout"),
-            bind_group_layouts: &[Some(&layout)],
-            immediate_size: 0,
-        });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some("torus-cull pipeline"),
-            layout: Some(&pipeline_layout),
-            module: &module,
-            entry_point: Some("main"),
-            compilation_options: Default::default(),
-            cache: None,
-        });
+            "main",
+        );
         if let Some(e) = scope.pop().await {
             return Err(GpuError::Kernel(e.to_string()));
         }
@@ -784,6 +761,55 @@ impl GpuIntersector {
 /// One dispatch's records: the kernel's `(t, n.xyz, code, why, 0, 0)`, and the f64
 /// pass's `(t, n.xyz, point.xyz, status)` where it ran.
 pub(crate) type Dispatched = (Vec<[f32; 8]>, Option<Vec<[f32; 8]>>);
+
+/// A compute pipeline of the WGSL `source` at `entry_point`, and its bind group layout:
+/// binding k is a buffer of type `bindings[k]`, visible to compute. The kernel and the f64
+/// finish pass are built so; a caller wraps this in a validation error scope to get a
+/// shader that does not compile on the adapter back as an error.
+fn compute_pipeline(
+    device: &wgpu::Device,
+    label: &str,
+    source: String,
+    bindings: &[wgpu::BufferBindingType],
+    entry_point: &str,
+) -> (wgpu::ComputePipeline, wgpu::BindGroupLayout) {
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(&format!("{label} module")),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    });
+    let entries: Vec<wgpu::BindGroupLayoutEntry> = bindings
+        .iter()
+        .zip(0..)
+        .map(|(&ty, binding)| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        })
+        .collect();
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some(&format!("{label} bindings")),
+        entries: &entries,
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some(&format!("{label} layout")),
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
+    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+        label: Some(&format!("{label} pipeline")),
+        layout: Some(&pipeline_layout),
+        module: &module,
+        entry_point: Some(entry_point),
+        compilation_options: Default::default(),
+        cache: None,
+    });
+    (pipeline, layout)
+}
 
 /// What the kernel does per ray (`Params.config.z`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
