@@ -2,7 +2,7 @@
 //! oracle's checks and the tests.
 
 use super::discriminant::surely_no_real_root;
-use super::{EPS, RealRoots, eval, eval2, even, factor, pieces};
+use super::{EPS, RealRoots, eval, eval2, even, factor, pieces, scales};
 
 /// All real roots of `c[0]·t⁴ + c[1]·t³ + c[2]·t² + c[3]·t + c[4]`, `c[0] ≠ 0`, sorted.
 ///
@@ -15,8 +15,9 @@ use super::{EPS, RealRoots, eval, eval2, even, factor, pieces};
 /// Returns no roots if `c[0] = 0` or a coefficient is not finite.
 ///
 /// Coefficients of any finite size are taken: where the roots' scale lies beyond 2^±25
-/// or the coefficients beyond 2^±900, the quartic is solved for t/2^m with its
-/// coefficients scaled by powers of two, and a root too large for f64 is left out.
+/// or the coefficients beyond 2^±900, each group of root sizes (from the Newton polygon)
+/// is solved by monotone pieces for t/2^m, its terms scaled by powers of two
+/// (`scales.rs`), and a root too large for f64 is left out.
 ///
 /// ```
 /// use torus_cull::quartic::solve_quartic;
@@ -37,17 +38,14 @@ pub fn solve_quartic(c: [f64; 5]) -> RealRoots {
     if c[0] == 0.0 || !c.iter().all(|v| v.is_finite()) {
         return RealRoots::default();
     }
-    let Some((m, scaled)) = out_of_range_rescale(&c) else {
-        return solve_in_range(c);
-    };
-    let mut roots = RealRoots::default();
-    for &y in solve_in_range(scaled).as_slice() {
-        let x = times_pow2(y, m);
-        if x.is_finite() {
-            roots.push(x);
-        }
+    if out_of_range(&c) {
+        // One power-of-two scale cannot serve roots whose sizes span more than f64's
+        // range (at the large roots' scale the small ones underflow: roots near 1 beside
+        // one near 10²⁹² gave a spurious −1, and a root 2⁻⁵⁷⁵ below the others came out
+        // halved): each group of root sizes is solved at its own.
+        return scales::real_roots(&c);
     }
-    roots
+    solve_in_range(c)
 }
 
 /// [`solve_quartic`] for coefficients that neither overflow nor underflow when made monic
@@ -127,14 +125,12 @@ fn trusted(roots: &RealRoots, c: &[f64; 5], s: f64) -> bool {
     -(inv_exp + 1.0) >= exp(s) + SHIFT_RATIO.log2()
 }
 
-/// For a quartic whose monic form would leave f64's comfortable range, `(m, a)`: the
-/// quartic in `y = t/2^m` with its coefficients scaled by a common power of two, so that
-/// `a[0] ≈ 1` and every `|a[k]| ≤ 2^2.5`; its roots times 2^m are the roots. `None` in
-/// the range the solver always served, which is left untouched, bit for bit: the roots'
-/// scale within 2^±25 (so the monic coefficients within 2^±100, as the depressed solvers
-/// ask; see `out_of_range_scale`) and the largest coefficient within 2^±900 (so that
-/// `1/c[0]` and the polishing stay finite).
-fn out_of_range_rescale(c: &[f64; 5]) -> Option<(i32, [f64; 5])> {
+/// Whether the quartic's monic form would leave f64's comfortable range, so that it is
+/// solved by [`scales::real_roots`]: the roots' scale beyond 2^±25 (the monic
+/// coefficients beyond 2^±100, where the depressed solvers rescale; see
+/// `out_of_range_scale`) or a coefficient beyond 2^±900 (where `1/c[0]` and the polishing
+/// overflow). Within, the solver's own range, its answers are left bit for bit.
+fn out_of_range(c: &[f64; 5]) -> bool {
     const ROOT_EXP: f64 = 25.0;
     const COEFFICIENT_EXP: f64 = 900.0;
     let exp = |x: f64| x.abs().log2();
@@ -148,25 +144,7 @@ fn out_of_range_rescale(c: &[f64; 5]) -> Option<(i32, [f64; 5])> {
     // t⁴ alone: every root is 0 at any scale.
     let root_exp = if root_exp.is_finite() { root_exp } else { 0.0 };
     let largest = c.iter().map(|&x| exp(x)).fold(f64::NEG_INFINITY, f64::max);
-    if root_exp.abs() <= ROOT_EXP && largest.abs() <= COEFFICIENT_EXP {
-        return None;
-    }
-    let m = root_exp.round() as i32;
-    // a[k] = c[k]·2^(m(4 − k))/2^n with n = round(lead) + 4m, so that a[0] = c[0]/2^round(lead).
-    let n = lead.round() as i32 + 4 * m;
-    let a = std::array::from_fn(|k| times_pow2(c[k], m * (4 - k as i32) - n));
-    Some((m, a))
-}
-
-/// `x·2^n` in steps of at most 2^±1000 toward the result: exact unless the result is
-/// subnormal or overflows, since every step lies between `x` and the result.
-fn times_pow2(mut x: f64, mut n: i32) -> f64 {
-    while n != 0 && x != 0.0 && x.is_finite() {
-        let step = n.clamp(-1000, 1000);
-        x *= f64::from_bits(((step + 1023) as u64) << 52);
-        n -= step;
-    }
-    x
+    root_exp.abs() > ROOT_EXP || largest.abs() > COEFFICIENT_EXP
 }
 
 /// All real roots of the depressed monic quartic `x⁴ + p x² + q x + r`, sorted, each

@@ -48,6 +48,7 @@ mod pick;
 mod pieces;
 pub(crate) mod resolvent;
 mod roots;
+mod scales;
 #[cfg(test)]
 mod tests;
 pub(crate) mod trisect;
@@ -79,6 +80,17 @@ pub(crate) fn out_of_range_scale(p: f64, q: f64, r: f64) -> Option<f64> {
         .max(q.abs().cbrt())
         .max(r.abs().sqrt().sqrt());
     Some(2f64.powi(m.log2().round() as i32))
+}
+
+/// `x·2^n` in steps of at most 2^±1000 toward the result: exact unless the result is
+/// subnormal or overflows, since every step lies between `x` and the result.
+pub(super) fn times_pow2(mut x: f64, mut n: i32) -> f64 {
+    while n != 0 && x != 0.0 && x.is_finite() {
+        let step = n.clamp(-1000, 1000);
+        x *= f64::from_bits(((step + 1023) as u64) << 52);
+        n -= step;
+    }
+    x
 }
 
 /// `(p/s², q/s³, r/s⁴)`, each a product of exact power-of-two steps (s⁴ alone may

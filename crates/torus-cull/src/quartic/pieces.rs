@@ -14,7 +14,7 @@
 //! "High-Performance Polynomial Root Finding for Graphics" (HPG 2022), without its
 //! speed-ups.
 
-use super::{EPS, RealRoots, eval};
+use super::{EPS, RealRoots, eval, times_pow2};
 
 /// Below this multiple of ε·Σ|cᵢ||x|ⁱ, `f` at a critical point is a double root.
 const TOUCH: f64 = 16.0;
@@ -25,8 +25,8 @@ fn magnitude(c: &[f64], x: f64) -> f64 {
     c.iter().fold(0.0, |acc, ci| acc * x.abs() + ci.abs())
 }
 
-/// Every real root of `c[0]·t⁴ + … + c[4]` (`c[0] ≠ 0`, all finite), sorted, a double
-/// root twice. A zero constant term is divided out exactly first (each `t = 0` root).
+/// Every real root of `c[0]·t⁴ + … + c[4]` (`c[0] ≠ 0`, all finite, within 2^±900), sorted,
+/// a double root twice. A zero constant term is divided out exactly first (each `t = 0` root).
 pub(super) fn real_roots(c: &[f64; 5]) -> RealRoots {
     let mut out = RealRoots::default();
     let mut degree = 4;
@@ -36,10 +36,24 @@ pub(super) fn real_roots(c: &[f64; 5]) -> RealRoots {
     }
     let mut found = [0.0; 4];
     let n = roots_of(&c[..=degree], &mut found);
-    for &x in &found[..n] {
+    // A root beyond f64's range (a linear `−c₁/c₀` that overflows) is left out, as
+    // `solve_quartic` documents.
+    for &x in found[..n].iter().filter(|x| x.is_finite()) {
         out.push(x);
     }
     out.sort();
+    out
+}
+
+/// The real roots of `c` (degree `c.len() − 1` ≤ 4, `c[0] ≠ 0`, nonzero constant, all
+/// within 2^±900), sorted, a double root twice.
+pub(super) fn roots_of_poly(c: &[f64]) -> RealRoots {
+    let mut found = [0.0; 4];
+    let n = roots_of(c, &mut found);
+    let mut out = RealRoots::default();
+    for &x in found[..n].iter().filter(|x| x.is_finite()) {
+        out.push(x);
+    }
     out
 }
 
@@ -60,7 +74,19 @@ fn roots_of(c: &[f64], out: &mut [f64; 4]) -> usize {
 
 /// The real roots of `a t² + b t + c`, by the cancellation-free form; a discriminant
 /// within rounding of 0 is fused (one rounding, so its sign is exact given a, b, c).
+///
+/// The three are first scaled by one power of two (the roots are unchanged) so that the
+/// larger of `|b|` and `√|ac|` is near 1: `b²` and `4ac` then neither overflow (a `b` of
+/// 2^512 would make the discriminant ∞ and a root −∞) nor lose the terms that decide the
+/// roots. What underflows is below 2⁻¹⁰⁷⁰ of the larger term.
 fn quadratic(a: f64, b: f64, c: f64, out: &mut [f64; 4]) -> usize {
+    let size = b.abs().max(a.abs().sqrt() * c.abs().sqrt());
+    let (a, b, c) = if size == 0.0 {
+        (a, b, c)
+    } else {
+        let n = -(size.log2().round() as i32);
+        (times_pow2(a, n), times_pow2(b, n), times_pow2(c, n))
+    };
     let mut disc = b * b - 4.0 * a * c;
     if disc.abs() <= 1e-7 * (b * b + (4.0 * a * c).abs()) {
         disc = b.mul_add(b, -4.0 * a * c);
@@ -75,9 +101,11 @@ fn quadratic(a: f64, b: f64, c: f64, out: &mut [f64; 4]) -> usize {
     2
 }
 
-/// Degree 3 or 4: pieces between the critical points over `[−B, B]`, B Cauchy's bound
-/// `1 + max|cᵢ/c₀|` (every root lies strictly inside, so `f(±B)` has the sign of its
-/// leading term there).
+/// Degree 3 or 4: pieces between the critical points over `[−B, B]`, B a power of two
+/// above Fujiwara's bound `2·max|cᵢ/c₀|^(1/i)` (every root lies strictly inside, so `f(±B)`
+/// has the sign of its leading term there). Unlike Cauchy's `1 + max|cᵢ/c₀|`, which is
+/// the roots' scale to the fourth power, every term `|cᵢ|·B^(n−i)` stays below `|c₀|·Bⁿ`,
+/// so `f(±B)` is finite and has its sign.
 fn by_pieces(c: &[f64], out: &mut [f64; 4]) -> usize {
     let degree = c.len() - 1;
     let mut derivative = [0.0; 4];
@@ -86,11 +114,19 @@ fn by_pieces(c: &[f64], out: &mut [f64; 4]) -> usize {
     }
     let mut crit = [0.0; 4];
     let n_crit = roots_of(&derivative[..degree], &mut crit);
-    let bound = 1.0
-        + c[1..]
-            .iter()
-            .map(|ci| (ci / c[0]).abs())
-            .fold(0.0, f64::max);
+    let lead = c[0].abs().log2();
+    let root_exp = c[1..]
+        .iter()
+        .enumerate()
+        .filter(|(_, ci)| **ci != 0.0)
+        .map(|(i, ci)| (ci.abs().log2() - lead) / (i + 1) as f64)
+        .fold(f64::NEG_INFINITY, f64::max);
+    // A zero tail (`c₀tⁿ` alone) has every root at 0: any positive bound serves.
+    let bound = if root_exp.is_finite() {
+        times_pow2(1.0, root_exp.ceil() as i32 + 2)
+    } else {
+        1.0
+    };
     let mut n = 0;
     let mut x = -bound;
     // f(−B) has the sign of c₀·(−1)^degree.
@@ -151,9 +187,10 @@ fn split(x: f64, y: f64) -> f64 {
 
 /// The root of `f` in `[x, y]`, where `f` is monotone and changes sign (`f < 0` on the
 /// `x` side iff `negative_at_x`): Newton's steps inside the shrinking bracket, a
-/// [`split`] where a step would leave it.
+/// [`split`] where a step would leave it or is not under a quarter of the last.
 fn bracketed(c: &[f64], mut x: f64, mut y: f64, negative_at_x: bool) -> f64 {
     let mut v = split(x, y);
+    let mut last_step = f64::INFINITY;
     for _ in 0..400 {
         let (f, df) = eval(c, v);
         if f == 0.0 {
@@ -165,11 +202,16 @@ fn bracketed(c: &[f64], mut x: f64, mut y: f64, negative_at_x: bool) -> f64 {
             y = v;
         }
         let newton = v - f / df;
-        let next = if newton > x && newton < y {
+        // Each Newton step must be under a quarter of the last one, as they are once
+        // convergence is quadratic. From far outside a root pair (f ≈ a − bt², a tiny)
+        // they only halve t: 400 of them stopped at 10⁻¹⁴⁰ on the way to 10⁻¹⁵⁶. A split
+        // there crosses up to 64 binades at a time.
+        let next = if newton > x && newton < y && (newton - v).abs() <= 0.25 * last_step {
             newton
         } else {
             split(x, y)
         };
+        last_step = (next - v).abs();
         // Converged, or the bracket is down to adjacent floats (`split` returns an end
         // only then).
         if (next - v).abs() <= 2.0 * EPS * next.abs() || next <= x || next >= y {

@@ -370,3 +370,83 @@ fn pure_powers_with_negative_constant_take_the_quadratic_in_t_squared() {
     assert_eq!(roots.len(), 2, "{roots:?}");
     assert!((roots.as_slice()[1] - x).abs() < 1e-15 && (roots.as_slice()[0] + x).abs() < 1e-15);
 }
+
+#[test]
+fn huge_leading_terms_beside_a_tiny_tail_give_finite_roots() {
+    // A proptest case: t²(c₄t² + c₃t + c₂) with c₃/c₄ ≈ 2^25 (the rescale's border) and
+    // c₃ ≈ 2^837, solved by monotone pieces since c₀ = 0. Their quadratic squared c₃ to ∞
+    // and returned [−∞, 0, 0, −0]. Roots: 0 three times (c₂/c₃ underflows) and −c₃/c₄.
+    let c = [
+        4.7044202022028847e244,
+        1.5785414777425239e252,
+        1.1125369292536007e-308,
+        0.0,
+        0.0,
+    ];
+    let roots = solve_quartic(c);
+    let got = roots.as_slice();
+    assert!(got.iter().all(|t| t.is_finite()), "{roots:?}");
+    let far = -c[1] / c[0];
+    assert!(((got[0] - far) / far).abs() < 1e-15, "{roots:?}");
+    assert!(got[1..].iter().all(|t| *t == 0.0), "{roots:?}");
+    // The same shape at every coefficient size that stays in range, and each side of the
+    // border: the far root to full accuracy, the zero roots exact.
+    for lead_exp in [-900, -500, -100, 0, 100, 500, 800, 870] {
+        for ratio_exp in [-30, -25, 24, 25, 26, 30] {
+            let lead = 1.25 * 2f64.powi(lead_exp);
+            let c3 = lead * 1.75 * 2f64.powi(ratio_exp);
+            let roots = solve_quartic([lead, c3, 0.0, 0.0, 0.0]);
+            let got = roots.as_slice();
+            let far = -c3 / lead;
+            assert_eq!(got.len(), 4, "2^{lead_exp}, 2^{ratio_exp}: {roots:?}");
+            assert!(got.iter().all(|t| t.is_finite()), "{roots:?}");
+            let (zeros, rest): (Vec<f64>, Vec<f64>) = got.iter().partition(|t| **t == 0.0);
+            assert_eq!((zeros.len(), rest.len()), (3, 1), "{roots:?}");
+            assert!(((rest[0] - far) / far).abs() < 1e-15, "{roots:?}");
+        }
+    }
+    // b² beyond f64 in a quadratic piece with real roots: (t − 2^500)(t + 2^-500)·t².
+    let (u, v) = (2f64.powi(500), 2f64.powi(-500));
+    let roots = solve_quartic([1.0, v - u, -u * v, 0.0, 0.0]);
+    let got = roots.as_slice();
+    assert!(got.iter().all(|t| t.is_finite()), "{roots:?}");
+    assert!(got.iter().any(|t| ((t - u) / u).abs() < 1e-15), "{roots:?}");
+    assert!(got.iter().any(|t| ((t + v) / v).abs() < 1e-12), "{roots:?}");
+}
+
+#[test]
+fn structured_coefficient_grid_gives_finite_sorted_backward_stable_roots() {
+    // Every quartic whose coefficients are 0 or ±1.5·2^e, e from tiny to huge: the zero
+    // patterns, exact powers and extreme ratios that bit-pattern fuzzing rarely draws.
+    // Each returned root must be finite, the list sorted, and each root a root within
+    // rounding of the caller's quartic (backward error ≤ 10⁴ε of Σ|cᵢ||t|ⁱ).
+    let mut values = vec![0.0];
+    for e in [-1000, -30, 0, 30, 1000] {
+        let v = 1.5 * 2f64.powi(e);
+        values.extend([v, -v]);
+    }
+    let n = values.len();
+    let mut checked = 0;
+    for code in 0..n.pow(5) {
+        let mut k = code;
+        let c: [f64; 5] = std::array::from_fn(|_| {
+            let v = values[k % n];
+            k /= n;
+            v
+        });
+        let roots = solve_quartic(c);
+        let got = roots.as_slice();
+        assert!(got.iter().all(|t| t.is_finite()), "{c:?}: {roots:?}");
+        assert!(got.windows(2).all(|w| w[0] <= w[1]), "{c:?}: {roots:?}");
+        for &t in got {
+            let f = eval(&c, t).0.abs();
+            let mag = c.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
+            assert!(
+                f <= 1e4 * EPS * mag,
+                "{c:?}: root {t} has |f| = {f:e}, Σ = {mag:e}"
+            );
+        }
+        checked += usize::from(c[0] != 0.0);
+    }
+    assert_eq!(checked, (n - 1) * n.pow(4));
+}
