@@ -128,7 +128,7 @@ fn trusted(roots: &RealRoots, c: &[f64; 5], s: f64) -> bool {
 /// Whether the quartic's monic form would leave f64's comfortable range, so that it is
 /// solved by [`scales::real_roots`]: the roots' scale beyond 2^±25 (the monic
 /// coefficients beyond 2^±100, where the depressed solvers rescale; see
-/// `out_of_range_scale`) or a coefficient beyond 2^±900 (where `1/c[0]` and the polishing
+/// `out_of_range`) or a coefficient beyond 2^±900 (where `1/c[0]` and the polishing
 /// overflow). Within, the solver's own range, its answers are left bit for bit.
 fn out_of_range(c: &[f64; 5]) -> bool {
     const ROOT_EXP: f64 = 25.0;
@@ -153,16 +153,17 @@ fn out_of_range(c: &[f64; 5]) -> bool {
 /// twice. A quartic whose discriminant's signs prove, beyond rounding, that it has no real
 /// root returns before the resolvent, as in [`super::nearest_root_depressed`].
 ///
-/// Coefficients of any finite size are taken: beyond 2^±100 the quartic is solved for
-/// x/s, s a power of two.
+/// Coefficients of any finite size are taken: beyond 2^±100 each group of root sizes is
+/// solved at its own power-of-two scale, by monotone pieces (`scales.rs`).
 #[must_use]
 pub fn solve_depressed_monic(p: f64, q: f64, r: f64) -> RealRoots {
     if !(p.is_finite() && q.is_finite() && r.is_finite()) {
         return RealRoots::default();
     }
-    if let Some(s) = super::out_of_range_scale(p, q, r) {
-        let (p, q, r) = super::scaled(p, q, r, s);
-        return solve_depressed_monic(p, q, r).map_increasing(|y| y * s);
+    if super::out_of_range(p, q, r) {
+        // Each group of root sizes at its own scale: one scale for all took r/s⁴ of
+        // x⁴ + 4.9·10¹⁵⁰x + 4.6·10⁻¹⁵¹ to 0, and its root −9.3·10⁻³⁰² with it.
+        return scales::real_roots(&[1.0, 0.0, p, q, r]);
     }
     // The nearest-root query's early exit: no real root, by signs beyond rounding.
     if surely_no_real_root(p, q, r) {
@@ -294,13 +295,18 @@ fn guarded_newton(c: &[f64; 5], x0: f64, mut f: f64, mut df: f64, lim: f64) -> f
 /// A pair of roots much closer to each other than to the rest is a (near-)double root,
 /// which Newton on `f` cannot improve (f' ≈ 0) and which the depression may have blurred by
 /// √(rounding of the shift). Re-derive it from the caller's `c`: Newton on `f'` to the
-/// extremum `x*` between them, then `x* ± √(−2f/f'')` (both `x*` if `f(x*)` has the wrong sign,
-/// which is within rounding since Ferrari found the pair real). Returns whether it found
-/// such a pair.
+/// extremum `x*` between them, then `x* ± √(−2f/f'')`. Where `f(x*)` has the wrong sign
+/// (a local maximum below 0, a minimum above) within rounding, the pair is double, at
+/// `x*`; beyond rounding, and out of the slope's reach of the pair, it is complex and is
+/// dropped: Ferrari's split of x⁴ − 1.5x² + 10⁻³⁰(x − 1) takes the resolvent's rounded
+/// double root 1.5, whose factors hold a real pair near 10⁻¹⁵ where f < −10⁻³⁰. Returns
+/// whether it found such a pair.
 #[inline]
 fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) -> bool {
     let n = roots.len;
     let mut any = false;
+    let mut dropped = false;
+    let mut keep = [true; 4];
     let mut i = 0;
     while i + 1 < n {
         let (a, b) = (roots.roots[i], roots.roots[i + 1]);
@@ -315,7 +321,9 @@ fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) -> bool {
         }
         // Distance scale: to the other real roots, or |x| if there are none.
         let scale = if other.is_finite() { other } else { mid.abs() };
-        if gap > 1e-4 * scale {
+        // A pair whose smaller root is far below its gap (roots 0 and 1 beside ±4·10⁴) is
+        // no double root in its own terms, and x* ± δ would round the small one to 0.
+        if gap > 1e-4 * scale || a.abs().min(b.abs()) < 1e-3 * gap {
             i += 1;
             continue;
         }
@@ -334,16 +342,28 @@ fn refine_close_pairs(roots: &mut RealRoots, c: &[f64; 5]) -> bool {
             }
             x = xn;
         }
-        let (f, _, d2) = eval2(c, x);
+        let (f, d1, d2) = eval2(c, x);
         let delta = if d2 != 0.0 && f * d2 < 0.0 {
             (-2.0 * f / d2).sqrt()
         } else {
             0.0
         };
+        let rounding = 64.0 * EPS * c.iter().fold(0.0, |acc, ci| acc * x.abs() + ci.abs());
+        let reach = d1.abs() * ((x - a).abs() + (x - b).abs());
+        if f * d2 > 0.0 && f.abs() > rounding && f.abs() > reach {
+            (keep[i], keep[i + 1], dropped) = (false, false, true);
+        }
         roots.roots[i] = x - delta;
         roots.roots[i + 1] = x + delta;
         any = true;
         i += 2;
+    }
+    if dropped {
+        let mut kept = RealRoots::default();
+        for k in (0..n).filter(|&k| keep[k]) {
+            kept.push(roots.roots[k]);
+        }
+        *roots = kept;
     }
     any
 }

@@ -61,25 +61,24 @@ pub use roots::RealRoots;
 
 pub(crate) const EPS: f64 = f64::EPSILON;
 
-/// For `x⁴ + p x² + q x + r` with a coefficient beyond 2^±100 in magnitude (where the
-/// resolvent's squares and cubes would overflow or underflow), the power of two s such
-/// that `y = x/s` has O(1) roots: solve `y⁴ + (p/s²) y² + (q/s³) y + r/s⁴` and multiply
-/// the roots by s (exact). `None` in the range every caller of this crate produces, which
-/// is left untouched, bit for bit.
+/// Whether `x⁴ + p x² + q x + r` leaves the range where Ferrari's split is computed
+/// without overflow or underflow: a coefficient beyond 2^±100 in magnitude (where the
+/// resolvent's squares and cubes leave f64), or a nonzero one below 2⁻³⁰⁰ (where `q²`
+/// and the resolvent's products underflow, and roots near `√(r/p)` beside roots near
+/// `√|p|` span more than its digits). Such a quartic is solved by
+/// [`scales::real_roots`](self::scales::real_roots). The range every caller of this
+/// crate produces is left untouched, bit for bit.
 #[inline]
-pub(crate) fn out_of_range_scale(p: f64, q: f64, r: f64) -> Option<f64> {
+pub(crate) fn out_of_range(p: f64, q: f64, r: f64) -> bool {
     const LOW: f64 = 7.888_609_052_210_118e-31; // 2⁻¹⁰⁰
     const HIGH: f64 = 1.267_650_600_228_229_4e30; // 2¹⁰⁰
+    const TINY: f64 = 4.909_093_465_297_727e-91; // 2⁻³⁰⁰
     let big = p.abs().max(q.abs()).max(r.abs());
-    if (LOW..=HIGH).contains(&big) || big == 0.0 || !big.is_finite() {
-        return None;
+    let tiny = |x: f64| x != 0.0 && x.abs() < TINY;
+    if big == 0.0 || !big.is_finite() {
+        return false;
     }
-    let m = p
-        .abs()
-        .sqrt()
-        .max(q.abs().cbrt())
-        .max(r.abs().sqrt().sqrt());
-    Some(2f64.powi(m.log2().round() as i32))
+    !(LOW..=HIGH).contains(&big) || tiny(p) || tiny(q) || tiny(r)
 }
 
 /// `x·2^n` in steps of at most 2^±1000 toward the result: exact unless the result is
@@ -91,18 +90,6 @@ pub(super) fn times_pow2(mut x: f64, mut n: i32) -> f64 {
         n -= step;
     }
     x
-}
-
-/// `(p/s², q/s³, r/s⁴)`, each a product of exact power-of-two steps (s⁴ alone may
-/// overflow).
-#[inline]
-pub(crate) fn scaled(p: f64, q: f64, r: f64, s: f64) -> (f64, f64, f64) {
-    let inv = 1.0 / s;
-    (
-        p * inv * inv,
-        q * inv * inv * inv,
-        r * inv * inv * inv * inv,
-    )
 }
 
 /// `f(t)`, `f'(t)` and `f''(t)` for `c = [c4, c3, c2, c1, c0]`, Horner.

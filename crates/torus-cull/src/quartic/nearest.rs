@@ -31,21 +31,21 @@ use crate::num::{Real, RealMask, sc};
 /// assert_eq!(nearest_root_depressed(-5.0, 0.0, 4.0, 2.5, 10.0), None);
 /// ```
 ///
-/// Coefficients of any size are taken: beyond 2^±100 the quartic is solved for x/s, s a
-/// power of two (see `out_of_range_scale`), by [`super::solve_depressed_monic`], which
-/// keeps a small root beside a huge one to its own relative accuracy. That range check (three absolute values, two
-/// maxima and a range compare in front of every solve) is skipped by
+/// Coefficients of any size are taken: beyond 2^±100, or a nonzero one below 2⁻³⁰⁰ (see
+/// `out_of_range`), the quartic is solved by [`super::solve_depressed_monic`], which keeps
+/// a small root beside a huge one to its own relative accuracy. That range check (a few
+/// absolute values and compares in front of every solve) is skipped by
 /// [`crate::intersect()`], whose coefficients are O(1).
 #[inline]
 #[must_use]
 pub fn nearest_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<f64> {
-    if super::out_of_range_scale(p, q, r).is_some() {
+    if super::out_of_range(p, q, r) {
         // Coefficients this far apart put roots of very different sizes side by side
         // (±10³⁰ next to 0.25 in the corpus, `corpus/`): the nearest-root path's roots are
         // accurate to ε of the largest in absolute terms, which left the small ones at 0.
-        // The all-roots solve (rescaled by the same power of two, each factor's stable
-        // root pair, Newton-polished) keeps every root to its own relative accuracy; this
-        // path is rare and was already the slow one. The range is checked on the roots
+        // The all-roots solve (each group of root sizes at its own power-of-two scale, by
+        // monotone pieces) keeps every root to its own relative accuracy; this path is
+        // rare and was already the slow one. The range is checked on the roots
         // themselves, so no rounding of lo or hi can move a root in or out.
         return found(nearest_of(&super::solve_depressed_monic(p, q, r), lo, hi));
     }

@@ -132,6 +132,7 @@ fn by_pieces(c: &[f64], out: &mut [f64; 4]) -> usize {
     // f(−B) has the sign of c₀·(−1)^degree.
     let mut negative = (c[0] < 0.0) != (degree % 2 == 1);
     let mut last_crit = f64::NAN;
+    let mut touched = false;
     for (i, &y) in crit[..n_crit].iter().chain([bound].iter()).enumerate() {
         let at_end = i == n_crit;
         // A repeated critical point (a double root of f′), or one outside the bound.
@@ -143,21 +144,27 @@ fn by_pieces(c: &[f64], out: &mut [f64; 4]) -> usize {
         }
         let fy = eval(c, y).0;
         if !at_end && fy.abs() <= TOUCH * EPS * magnitude(c, y) {
-            // A double root at the critical point; f turns back there.
-            if n + 2 <= 4 {
-                out[n] = y;
-                out[n + 1] = y;
-                n += 2;
+            // A double root at the critical point; f turns back there. Right after
+            // another one, with no crossing between, the two are one cluster of three
+            // (a triple root blurred by rounding): one more root, not two, or a quartic's
+            // near-triple root took all four slots and its simple root was lost.
+            let more = if touched { 1 } else { 2 };
+            for _ in 0..more {
+                if n < 4 {
+                    out[n] = y;
+                    n += 1;
+                }
             }
-            (x, last_crit) = (y, y);
+            (x, last_crit, touched) = (y, y, true);
             continue;
         }
         let below = fy < 0.0;
-        if below != negative && n < 4 {
+        // Right of a double root f starts from 0 and is monotone up to y: no crossing.
+        if below != negative && !touched && n < 4 {
             out[n] = bracketed(c, x, y, negative);
             n += 1;
         }
-        (x, negative, last_crit) = (y, below, y);
+        (x, negative, last_crit, touched) = (y, below, y, false);
     }
     n
 }

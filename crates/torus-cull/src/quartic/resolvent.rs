@@ -182,11 +182,13 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root<Sc> {
         z = (u + v - a3).max(0.0);
         // The other roots are a complex pair z₂, z̄₂ with 4|z₂|² = (z + a)² + 3(u − v)²
         // (both squares free of cancellation), and z·|z₂|² = q². When z is small next to
-        // |a|, w − a/3 has cancelled and z = 4q²/pair keeps full relative precision; m and
-        // q/m then follow from √pair without the two divisions. Both are computed and
-        // one is selected: which one applies is a coin toss from ray to ray.
+        // |a| or to |u − v|, u + v − a/3 has cancelled and z = 4q²/pair keeps full
+        // relative precision; m and q/m then follow from √pair without the two divisions.
+        // (With p = 0, a = 0 and only u + v cancels: x⁴ + 10⁻⁷⁶x − 1.5 took z from that
+        // rounding and gave roots ±6.5·10⁷.) Both are computed and one is selected: which
+        // one applies is a coin toss from ray to ray.
         let pair = (z + a) * (z + a) + 3.0 * (u - v) * (u - v);
-        vieta = z < a3.abs() && pair > 0.0;
+        vieta = z < a3.abs().max((u - v).abs()) && pair > 0.0;
         let half_sp = 0.5 * pair.sqrt();
         let (m_direct, m_vieta) = (z.sqrt(), q.abs() / half_sp);
         m = if vieta { m_vieta } else { m_direct };

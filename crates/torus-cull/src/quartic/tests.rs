@@ -441,12 +441,85 @@ fn structured_coefficient_grid_gives_finite_sorted_backward_stable_roots() {
         for &t in got {
             let f = eval(&c, t).0.abs();
             let mag = c.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
+            // Where Σ overflows, f cannot be evaluated in f64: not checked.
             assert!(
-                f <= 1e4 * EPS * mag,
+                !mag.is_finite() || f <= 1e4 * EPS * mag,
                 "{c:?}: root {t} has |f| = {f:e}, Σ = {mag:e}"
             );
         }
         checked += usize::from(c[0] != 0.0);
     }
     assert_eq!(checked, (n - 1) * n.pow(4));
+}
+
+#[test]
+fn structured_depressed_grid_agrees_between_the_solvers() {
+    // x⁴ + p x² + q x + r with p, q, r each 0 or ±1.5·2^e, e from tiny to huge: every
+    // root finite, sorted and a root within rounding; the nearest root in [0, ∞), in
+    // (−∞, 0] and in [−1, 1] is the all-roots solve's first root there, to 10⁻⁹ of the
+    // roots' scale, or differs by a near-double pair within the nearest path's contract.
+    let mut values = vec![0.0];
+    for e in [-1000, -500, -100, -30, 0, 30, 100, 500, 1000] {
+        let v = 1.5 * 2f64.powi(e);
+        values.extend([v, -v]);
+    }
+    for &p in &values {
+        for &q in &values {
+            for &r in &values {
+                let all = solve_depressed_monic(p, q, r);
+                let got = all.as_slice();
+                let c = [1.0, 0.0, p, q, r];
+                assert!(got.iter().all(|x| x.is_finite()), "{c:?}: {all:?}");
+                assert!(got.windows(2).all(|w| w[0] <= w[1]), "{c:?}: {all:?}");
+                for &x in got {
+                    let (f, df) = eval(&c, x);
+                    let mag = c.iter().fold(0.0, |acc, ci| acc * x.abs() + ci.abs());
+                    let f = f.abs() - df.abs() * 2.0 * f64::from_bits(1);
+                    // Where Σ overflows, f cannot be evaluated in f64: not checked.
+                    assert!(
+                        !mag.is_finite() || f <= 1e4 * EPS * mag,
+                        "{c:?}: root {x:e}: |f| = {f:e}, Σ = {mag:e}"
+                    );
+                }
+                let first_in = |lo: f64, hi: f64| got.iter().copied().find(|&x| x >= lo && x <= hi);
+                for (lo, hi) in [(0.0, f64::INFINITY), (f64::NEG_INFINITY, 0.0), (-1.0, 1.0)] {
+                    let want = first_in(lo, hi);
+                    let near = nearest_root_depressed(p, q, r, lo, hi);
+                    // Accurate to a few ε of the roots' scale X, in absolute terms: a root
+                    // within that of the interval's end may fall either side of it.
+                    let x = p
+                        .abs()
+                        .sqrt()
+                        .max(q.abs().cbrt())
+                        .max(r.abs().sqrt().sqrt());
+                    let tol = 1e-9 * x;
+                    let near_end = |b: f64| (b - lo).abs() <= tol || (b - hi).abs() <= tol;
+                    let a_root_at_the_end =
+                        |a: f64| near_end(a) && got.iter().any(|g| (g - a).abs() <= tol);
+                    // The nearest-root path decides near-double pairs at the quartic's scale
+                    // X (its contract: a few ε·X in absolute terms): it may return a root of
+                    // a quartic within ε·X⁴ of this one, or miss a pair that such a change
+                    // makes complex (two roots within 10⁻⁶X).
+                    let phantom = |a: f64| eval(&c, a).0.abs() <= 1e3 * EPS * x.powi(4);
+                    let paired =
+                        |b: f64| got.iter().filter(|g| (*g - b).abs() <= 1e-6 * x).count() >= 2;
+                    let same = match (near, want) {
+                        (Some(a), Some(b)) => {
+                            (a - b).abs() <= tol
+                                || a_root_at_the_end(a)
+                                || (a < b && phantom(a))
+                                || (a > b && (paired(b) || near_end(b)))
+                        }
+                        (Some(a), None) => a_root_at_the_end(a) || phantom(a),
+                        (None, Some(b)) => near_end(b) || paired(b),
+                        (None, None) => true,
+                    };
+                    assert!(
+                        same,
+                        "{c:?} in [{lo}, {hi}]: nearest {near:?}, all roots {all:?}"
+                    );
+                }
+            }
+        }
+    }
 }
