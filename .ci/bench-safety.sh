@@ -10,17 +10,29 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# What the default-named runs below add to results/ is removed however the script ends.
+before=$(ls results)
+cleanup() {
+  for f in $(ls results); do
+    grep -qxF "$f" <<<"$before" || rm -f "results/$f"
+  done
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
 export CARGO_TERM_COLOR=never CRITERION_HOME="$tmp/criterion"
 
 fail() { echo "bench-safety: $*" >&2; exit 1; }
 command -v python3 >/dev/null || fail "python3 is needed to read the results JSON"
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 
-echo "-- a complete smoke run, with a criterion flag the libtest harnesses would reject"
-TORUS_CULL_BENCH=smoke TORUS_CULL_RESULTS="$tmp/complete.json" \
-  cargo bench --quiet -- --save-baseline ci >"$tmp/complete.log" 2>&1 \
+echo "-- [${SECONDS} s] a complete smoke run under its default name, with a criterion flag the libtest harnesses would reject"
+# Its default name (results/<commit>-smoke.json) is checked below against `run`'s; the file
+# then moves to the temporary directory, where the other checks use it.
+TORUS_CULL_BENCH=smoke cargo bench --quiet -- --save-baseline ci >"$tmp/complete.log" 2>&1 \
   || { cat "$tmp/complete.log"; fail "cargo bench -- --save-baseline failed"; }
+bench_file=$(sed -n 's/^wrote \(results\/[^ ]*\.json\)$/\1/p' "$tmp/complete.log")
+[ -n "$bench_file" ] && [ -f "$bench_file" ] || { cat "$tmp/complete.log"; fail "the smoke bench named no file it wrote"; }
+mv "$bench_file" "$tmp/complete.json"
 [ "$(json "$tmp/complete.json" "d['meta']['partial']")" = False ] || fail "complete run marked partial"
 [ "$(json "$tmp/complete.json" "d['meta']['preset']")" = smoke ] || fail "preset not recorded"
 [ "$(json "$tmp/complete.json" "d['meta']['sizes']['timing_rays']")" = 256 ] || fail "batch size not recorded"
@@ -32,7 +44,7 @@ cargo run --release --quiet -- compare "$tmp/complete.json" "$tmp/complete.json"
   | tail -n 1
 sum=$(sha256sum "$tmp/complete.json")
 
-echo "-- a filtered run: the complete file is untouched, a partial file holds what ran"
+echo "-- [${SECONDS} s] a filtered run: the complete file is untouched, a partial file holds what ran"
 # Criterion's filter is a regex matched anywhere in the name: anchored, so that
 # `batch_cull_ns-hole` is not selected too.
 TORUS_CULL_BENCH=smoke TORUS_CULL_RESULTS="$tmp/complete.json" \
@@ -47,7 +59,7 @@ partial="$tmp/complete-partial.json"
 [ "$(json "$partial" "sorted(set(e['benchmark'].split('/')[0] for e in d['estimates']))")" = "['cull_ns-hole']" ] \
   || fail "the partial file does not hold exactly the filtered benchmarks"
 
-echo "-- --list: names only, quick, nothing written (default preset: its setup takes minutes)"
+echo "-- [${SECONDS} s] --list: names only, quick, nothing written (default preset: its setup takes minutes)"
 start=$SECONDS
 TORUS_CULL_RESULTS="$tmp/complete.json" cargo bench --quiet -- --list >"$tmp/list.log" 2>&1 \
   || { cat "$tmp/list.log"; fail "cargo bench -- --list failed"; }
@@ -56,7 +68,7 @@ grep -q "^total_ns-hole/skala/2: benchmark$" "$tmp/list.log" || fail "--list pri
 [ "$(sha256sum "$tmp/complete.json")" = "$sum" ] || fail "--list rewrote the results file"
 [ "$(find "$tmp" -maxdepth 1 -name '*.json' | wc -l)" = 2 ] || fail "--list wrote a file"
 
-echo "-- bad environment values are named errors"
+echo "-- [${SECONDS} s] bad environment values are named errors"
 check_error() { # VAR=VALUE expected-text
   local log="$tmp/env.log"
   if env "$1" cargo bench --quiet >"$log" 2>&1; then fail "$1 was accepted"; fi
@@ -76,17 +88,10 @@ check_error TORUS_CULL_RESULTS="$tmp/complete.json/x.json" 'TORUS_CULL_RESULTS'
 check_error TORUS_CULL_RESULTS="$tmp" 'is a directory'
 check_error TORUS_CULL_RESULTS="$tmp/no/such/r.json" 'does not exist'
 
-echo "-- default names: a smoke bench and run never share a file"
-before=$(ls results)
-TORUS_CULL_BENCH=smoke cargo bench --quiet >"$tmp/named.log" 2>&1 || { cat "$tmp/named.log"; fail "smoke bench failed"; }
-bench_file=$(sed -n 's/^wrote \(results\/[^ ]*\.json\)$/\1/p' "$tmp/named.log")
+echo "-- [${SECONDS} s] default names: a smoke bench and run never share a file"
 cargo run --release --quiet -- run --workload workloads/quick.json --no-plots >"$tmp/run.log" 2>&1 \
   || { cat "$tmp/run.log"; fail "run failed"; }
 run_file=$(sed -n 's/^wrote \(results\/[^ ]*\.json\)$/\1/p' "$tmp/run.log")
-# Remove exactly what these two runs added before any check can stop the script.
-for f in $(ls results); do
-  grep -qxF "$f" <<<"$before" || rm -f "results/$f"
-done
 case "$bench_file" in results/*-smoke.json) ;; *) fail "smoke bench wrote '$bench_file'" ;; esac
 case "$run_file" in results/*-quick-run.json) ;; *) fail "run wrote '$run_file'" ;; esac
 echo "bench-safety: ok"
