@@ -80,8 +80,10 @@ mod module;
 mod source;
 
 pub use finish::{FinishCounts, Finished};
-pub use module::{ModuleTorus, PreparedRay};
-pub use source::{FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_module};
+pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
+pub use source::{
+    FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
+};
 /// The wgpu this library's kernel runs on (and whose `naga` validates
 /// [`wgsl_module`]): a renderer that includes the module uses the same version.
 pub use wgpu;
@@ -718,7 +720,10 @@ impl GpuIntersector {
                 batch
                     .iter()
                     .zip(&packed)
-                    .map(|(ray, p)| finish::world_record(torus, ray, p))
+                    .map(|(ray, p)| {
+                        let (world, instruction) = finish::world_record(torus, ray, p.host);
+                        (world, finish::instruction_record(instruction))
+                    })
                     .unzip()
             } else {
                 (Vec::new(), Vec::new())
