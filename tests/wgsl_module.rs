@@ -6,6 +6,17 @@
 //! spawned from the surface): 0 missed, 0 invented, every proved t within
 //! 2·10⁻⁴·(R + r) (along the unit direction) of the f64 path's. Without an adapter the
 //! second test prints one loud SKIPPED line and passes.
+//!
+//! The f64 module (`torus_cull::gpu::wgsl_finish_module`), in the example's second shader
+//! beside the f32 module: it validates with naga's `FLOAT64` (and not without), and where
+//! the adapter offers `SHADER_F64` (lavapipe does) the shader, which calls
+//! `torus_intersect` and then `torus_finish_f64` on the rays it does not prove, gives on
+//! tests/gpu.rs's adversarial families (the hole at ν = 1.01, grazing rays at every ν,
+//! near and 10⁵·(R + r) away, lines hugging the hole's edge and tangent to the special
+//! circles at ±10⁻⁶·r, secondary rays from hit points) the library's
+//! `intersect_finished_where` answers: the same hit or miss on every ray, 0 missed and 0
+//! invented against the f64 path, device-finished t within 1.2·10⁻⁷ of the CPU's, none
+//! handed to the host.
 
 #![cfg(feature = "gpu")]
 
@@ -13,13 +24,25 @@
 #[allow(dead_code)]
 mod example;
 
-use example::{Renderer, combined_shader, compare, example_rays, example_torus, validate};
-use glam::Vec3;
+mod common;
+
+use common::{family, pairs, pushed_back};
+use example::{
+    Renderer, combined_shader, combined_shader_f64, compare, compare_f64, example_rays,
+    example_torus, prepare_both, validate, validate_f64,
+};
+use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::io::Write;
-use torus_cull::gpu::{GpuCull, GpuIntersector, ModuleTorus, PreparedRay, wgsl_module};
-use torus_cull::{F32Verdict, Ray, Torus};
+use torus_cull::gpu::{
+    Finished, GpuCull, GpuIntersector, ModuleTorus, PreparedRay, wgsl_finish_module, wgsl_module,
+};
+use torus_cull::{F32Verdict, Ray, Torus, intersect};
+use torus_cull_lab::workload::Case;
+use torus_cull_lab::workload::adversarial::{
+    SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
+};
 
 /// The library's own kernel, where an adapter exists.
 fn kernel() -> Option<GpuIntersector> {
@@ -143,4 +166,259 @@ fn the_combined_shader_agrees_with_the_f64_path_on_the_adapter() {
         total += c.rays;
     }
     assert!(total >= 500, "{total} rays");
+}
+
+#[test]
+fn the_f64_shader_validates_with_float64_without_an_adapter() {
+    let source = combined_shader_f64();
+    let module = validate_f64(&source).unwrap_or_else(|e| panic!("{e}"));
+    let entries: Vec<&str> = module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect();
+    assert_eq!(entries, ["shade_f64"]);
+    // The renderer's four bindings, none of the library passes'.
+    assert_eq!(module.global_variables.len(), 4);
+    assert!(source.starts_with(&format!("{}\n{}", wgsl_module(), wgsl_finish_module())));
+    for call in [
+        "torus_intersect(",
+        "torus_finish_wanted(",
+        "torus_finish_f64(",
+    ] {
+        assert!(example::USER_SHADER_F64.contains(call), "{call}");
+    }
+    // f64 needs the capability (SHADER_F64 on the device).
+    assert!(validate(&source).is_err());
+    // The f64 module alone validates; a renderer that redefines one of its names is told.
+    validate_f64(&wgsl_finish_module()).unwrap_or_else(|e| panic!("{e}"));
+    let clash = format!("{}\nfn torus_finish_f64() {{}}\n", wgsl_finish_module());
+    assert!(validate_f64(&clash).is_err());
+}
+
+/// A torus-frame line (point, unit direction, f64) as a world ray starting 3·(R + r)
+/// back along it (tests/gpu.rs).
+fn world_ray(torus: &Torus, point: DVec3, dir: DVec3) -> Option<Ray> {
+    let back = 3.0 * f64::from(torus.outer_radius());
+    let m = torus.to_local_rotation_f64().transpose();
+    let origin = torus.center().as_dvec3() + m * (point - dir * back);
+    Ray::new(origin.as_vec3(), (m * dir).as_vec3()).ok()
+}
+
+type RaySet = (Torus, Vec<Ray>);
+
+/// tests/gpu.rs's families that escalate (`escalated_rays_are_finished_on_the_device_in_f64`),
+/// at half its sizes.
+fn escalating_families() -> Vec<(String, Vec<RaySet>)> {
+    let mut families: Vec<(String, Vec<RaySet>)> = Vec::new();
+    let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
+        family(case, nu, n, seed)
+            .iter()
+            .map(|batch| {
+                let torus = batch.torus;
+                let rays = pairs(std::slice::from_ref(batch))
+                    .map(|(_, ray)| {
+                        if back == 0.0 {
+                            *ray
+                        } else {
+                            pushed_back(ray, back * torus.outer_radius())
+                        }
+                    })
+                    .collect();
+                (torus, rays)
+            })
+            .collect::<Vec<_>>()
+    };
+    families.push((
+        "hole ν=1.01".into(),
+        batches(Case::Hole, 1.01, 2000, 0xF1, 0.0),
+    ));
+    for nu in [1.01, 1.5, 3.0, 10.0, 100.0, 1000.0] {
+        families.push((
+            format!("grazing ν={nu}"),
+            batches(Case::Grazing, nu, 500, 0xF2 ^ f64::to_bits(nu), 0.0),
+        ));
+    }
+    families.push((
+        "grazing ν=1.01 back 1e5·(R+r)".into(),
+        batches(Case::Grazing, 1.01, 500, 0xF3, 1e5),
+    ));
+    let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
+    let mut hole_edge = Vec::new();
+    let mut tangent: Vec<Vec<RaySet>> = SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
+    for nu in [1.01, 2.0, 100.0] {
+        for major in [1e-3f32, 1.0, 1e3] {
+            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
+            let (big, small) = (
+                f64::from(torus.major_radius()),
+                f64::from(torus.minor_radius()),
+            );
+            let rays: Vec<Ray> = (0..150)
+                .filter_map(|_| {
+                    let (p, d) = hole_edge_line(&mut rng, big, small);
+                    world_ray(&torus, p, d)
+                })
+                .collect();
+            hole_edge.push((torus, rays));
+            for (circle, slot) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
+                let rays: Vec<Ray> = (0..100)
+                    .filter_map(|i| {
+                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
+                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
+                        world_ray(&torus, p, d)
+                    })
+                    .collect();
+                slot.push((torus, rays));
+            }
+        }
+    }
+    families.push(("hole_edge_line".into(), hole_edge));
+    for name in [
+        "spawned_bounce",
+        "spawned_bounce_scene_eps",
+        "spawned_grazing",
+        "spawned_across",
+    ] {
+        let family = torus_cull_lab::f32_check::families::all()
+            .into_iter()
+            .find(|f| f.name == name)
+            .expect("an f32-check family");
+        let mut sets: Vec<RaySet> = Vec::new();
+        for (torus, ray) in family.generate(100, 0xF1_5E64).unwrap() {
+            match sets.last_mut() {
+                Some((last, rays)) if *last == torus => rays.push(ray),
+                _ => sets.push((torus, vec![ray])),
+            }
+        }
+        families.push((name.into(), sets));
+    }
+    for (circle, sets) in SpecialCircle::ALL.into_iter().zip(tangent) {
+        families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));
+    }
+    families
+}
+
+/// |t − t_CPU| / max(|t_CPU|, (R + r)/|d|) allowed for a device-finished hit (tests/gpu.rs).
+const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
+
+#[test]
+fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
+    let renderer = match Renderer::new() {
+        Ok(r) => r,
+        Err(why) => {
+            let _ = writeln!(
+                std::io::stderr(),
+                "SKIPPED: {why}; install the Debian package mesa-vulkan-drivers to run it"
+            );
+            return;
+        }
+    };
+    if let Some(why) = renderer.f64_unavailable() {
+        let _ = writeln!(std::io::stderr(), "SKIPPED f64 module: {why}");
+        return;
+    }
+    let kernel = GpuIntersector::new().expect("the library's kernel on the same adapter");
+    let _ = writeln!(
+        std::io::stderr(),
+        "{}; the library finishes on the device: {}",
+        renderer.adapter,
+        kernel.finishes_on_device()
+    );
+    let mut failures = Vec::new();
+    let (mut total, mut total_device) = (0, 0);
+    for (name, sets) in escalating_families() {
+        let (mut rays_n, mut device, mut host, mut lib_device, mut lib_host) = (0, 0, 0, 0, 0);
+        let (mut differ, mut missed, mut invented, mut same_who) = (0, 0, 0, 0);
+        let (mut both_hit, mut same_t) = (0, 0);
+        let (mut worst_vs_cpu, mut worst_vs_library) = (0f64, 0f64);
+        for (torus, rays) in &sets {
+            let module_torus = ModuleTorus::new(torus);
+            let both = prepare_both(&module_torus, rays);
+            let answers = renderer
+                .run_f64(&module_torus, &both)
+                .expect("the shader ran");
+            let c = compare_f64(torus, rays, &both, &answers);
+            let library = kernel
+                .intersect_finished_where(torus, GpuCull::Skala, rays)
+                .expect("the library ran");
+            rays_n += c.rays;
+            device += c.counts.device;
+            host += c.counts.host;
+            missed += c.missed;
+            invented += c.invented;
+            for ((ray, (mine, who)), (theirs, their_who)) in
+                rays.iter().zip(&c.answers).zip(&library)
+            {
+                lib_device += usize::from(*their_who == Finished::Device);
+                lib_host += usize::from(*their_who == Finished::Host);
+                same_who += usize::from(who == their_who);
+                match (mine.hit, theirs.hit) {
+                    (Some(a), Some(b)) => {
+                        both_hit += 1;
+                        same_t += usize::from(a.t.to_bits() == b.t.to_bits());
+                        // Both are the first root's t: f64-finished to rounding, or proved
+                        // within 2·10⁻⁴·(R + r) along the unit direction.
+                        let len = f64::from(ray.dir().length());
+                        let rel =
+                            f64::from(a.t - b.t).abs() * len / f64::from(torus.outer_radius());
+                        worst_vs_library = worst_vs_library.max(rel);
+                        if a.front_face != b.front_face || rel > 4e-4 {
+                            differ += 1;
+                            if failures.len() < 10 {
+                                failures.push(format!(
+                                    "{name}: shader {a:?} ({who:?}), library {b:?} \
+                                     ({their_who:?}): {ray:?} on {torus:?}"
+                                ));
+                            }
+                        }
+                    }
+                    (None, None) => {}
+                    _ => {
+                        differ += 1;
+                        if failures.len() < 10 {
+                            failures.push(format!(
+                                "{name}: shader {mine:?} ({who:?}), library {theirs:?} \
+                                 ({their_who:?}): {ray:?} on {torus:?}"
+                            ));
+                        }
+                    }
+                }
+                if *who != Finished::Device {
+                    continue;
+                }
+                if let (Some(hit), Some(cpu)) = (mine.hit, intersect(torus, ray)) {
+                    let len = f64::from(ray.dir().length());
+                    let scale = f64::from(cpu.t)
+                        .abs()
+                        .max(f64::from(torus.outer_radius()) / len);
+                    let rel = f64::from(hit.t - cpu.t).abs() / scale;
+                    worst_vs_cpu = worst_vs_cpu.max(rel);
+                    if rel > DEVICE_T_TOLERANCE_REL && failures.len() < 10 {
+                        failures.push(format!("{name}: device {hit:?} vs CPU f64 {cpu:?}"));
+                    }
+                }
+            }
+        }
+        println!(
+            "{name:<30} {rays_n:>4} rays: shader device {device:>4} host {host}, library \
+             device {lib_device:>4} host {lib_host}; same who {same_who}, differ {differ}, \
+             both hit {both_hit} (same t bits {same_t}, worst |Δt|·|d| \
+             {worst_vs_library:.1e}·(R+r)); vs f64 path missed {missed} invented \
+             {invented}, worst device t vs CPU {worst_vs_cpu:.1e}"
+        );
+        if differ + missed + invented > 0 || host > lib_host {
+            failures.push(format!(
+                "{name}: {differ} differ from the library, {missed} missed, {invented} \
+                 invented, {host} on the host (library {lib_host})"
+            ));
+        }
+        total += rays_n;
+        total_device += device;
+    }
+    println!("total: {total} rays, {total_device} finished by the shader's f64 module");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        total_device > 3_000,
+        "{total_device} finished by the f64 module"
+    );
 }

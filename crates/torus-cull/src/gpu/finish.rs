@@ -41,7 +41,7 @@
 //! CPU's [`crate::Hit`] is. Both passes go in one command buffer: the host reads back
 //! once.
 
-use super::{GpuError, Packed};
+use super::GpuError;
 use crate::Torus;
 use crate::certified::{F32Hit, F32Verdict};
 use crate::intersect::Hit;
@@ -67,7 +67,7 @@ pub(crate) enum Instruction {
 }
 
 impl Instruction {
-    /// Every instruction, for the generated header (`FIN_<NAME>`).
+    /// Every instruction, for the generated header (`TORUS_F64_<NAME>`).
     pub(crate) const ALL: [Instruction; 5] = [
         Instruction::Follow,
         Instruction::Always,
@@ -105,7 +105,7 @@ pub(crate) enum Status {
 }
 
 impl Status {
-    /// Every status, for the generated header (`FIN_<NAME>`).
+    /// Every status, for the generated header (`TORUS_F64_<NAME>`).
     pub(crate) const ALL: [Status; 5] = [
         Status::Proved,
         Status::Front,
@@ -293,10 +293,18 @@ impl FinishPipeline {
 /// The torus as the pass reads it: centre, the columns of the world → torus rotation,
 /// R, 1/R, r/R, 1 − (r/R)², 1 + r/R (the CPU's `Tube`), as little-endian f64.
 pub(crate) fn torus_bytes(torus: &Torus) -> Vec<u8> {
+    torus_values(torus)
+        .iter()
+        .flat_map(|v| v.to_le_bytes())
+        .collect()
+}
+
+/// [`torus_bytes`]'s 17 values.
+pub(crate) fn torus_values(torus: &Torus) -> [f64; 17] {
     let c = torus.center_f64();
     let m = torus.to_local_rotation_f64();
     let tube = torus.tube();
-    let values = [
+    [
         c.x,
         c.y,
         c.z,
@@ -314,19 +322,18 @@ pub(crate) fn torus_bytes(torus: &Torus) -> Vec<u8> {
         tube.minor_rel,
         tube.k,
         tube.outer,
-    ];
-    values.iter().flat_map(|v| v.to_le_bytes()).collect()
+    ]
 }
 
 /// One ray's world record and the host's instruction: `(o, t_min, d, t_max)` with the
 /// range clipped to `|t| ≤ L = (|o − c| + 4(R + r))/|d|` (no root lies beyond, so no
-/// answer changes, and the pass sees no infinity), and its finished record holding the
-/// instruction.
+/// answer changes, and the pass sees no infinity), and what the pass is to do with it,
+/// from the host's own answer for the f32 kernel ([`super::Frame::prepare`]'s `host`).
 pub(crate) fn world_record(
     torus: &Torus,
     ray: &crate::Ray,
-    packed: &Packed,
-) -> ([f32; 8], [f32; 8]) {
+    host: Option<(F32Verdict, Option<super::Escalation>)>,
+) -> ([f32; 8], Instruction) {
     let (o, d) = (ray.origin(), ray.dir());
     let reach = ((o.as_dvec3() - torus.center_f64()).length()
         + 4.0 * (torus.major_radius_f64() + torus.minor_radius_f64()))
@@ -334,10 +341,12 @@ pub(crate) fn world_record(
         * (1.0 + 1e-6);
     // NaN (no such ray: its parts are finite) would go to the host too.
     let clippable = reach < f64::from(f32::MAX);
-    let instruction = match (clippable, ray.starts_on_surface(), packed.host) {
+    let instruction = match (clippable, ray.starts_on_surface(), host) {
         (false, _, _) => Instruction::Host,
-        (true, false, _) if packed.sendable => Instruction::Follow,
-        (true, false, _) => Instruction::Always,
+        // A ray not from the surface has a host answer only where its origin is too far
+        // for the f32 kernel (`Escalation::FarOrigin`): the kernel proves nothing of it.
+        (true, false, None) => Instruction::Follow,
+        (true, false, Some(_)) => Instruction::Always,
         // The kernel has the literal ray past the origin's root (`Frame::prepare`).
         (true, true, None) => Instruction::SurfaceFollow,
         // Into the tube, or a far origin: the host sent nothing the kernel could prove.
@@ -348,9 +357,14 @@ pub(crate) fn world_record(
     let limit = if clippable { reach as f32 } else { f32::MAX };
     let t_min = ray.t_min().clamp(-limit, limit);
     let t_max = ray.t_max().clamp(-limit, limit);
+    ([o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max], instruction)
+}
+
+/// The finished record the host uploads for one ray: its instruction in word 7.
+pub(crate) fn instruction_record(instruction: Instruction) -> [f32; 8] {
     let mut finished = [0.0; 8];
     finished[7] = instruction as u32 as f32;
-    ([o.x, o.y, o.z, t_min, d.x, d.y, d.z, t_max], finished)
+    finished
 }
 
 /// One escalated ray's answer from its finished record: the device's, or `None` where

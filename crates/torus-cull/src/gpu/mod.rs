@@ -45,7 +45,8 @@
 //!
 //! **One source for the constants.** The kernel's text is `module.wgsl` and `kernel.wgsl`
 //! behind a header generated from the Rust constants the CPU uses ([`kernel_source`],
-//! [`KernelConstants`]; the f64 pass's, `finish.wgsl`, from [`FinishConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
+//! [`KernelConstants`]; the f64 pass's, `finish_module.wgsl` and `finish.wgsl`, from
+//! [`FinishConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
 //! the bracket, [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's
 //! constants, as exact hexadecimal floats, and the result, cull and escalation codes.
 //!
@@ -54,7 +55,12 @@
 //! kernel's bindings and entry point, for a renderer's own shader; the kernel is the same
 //! text plus its bindings. [`ModuleTorus`] packs the torus and the rays as the kernel's
 //! host does, and [`PreparedRay::finish`] reads an answer back, finishing an escalated ray
-//! in f64 (docs/gpu.md, "Using the WGSL module in your renderer").
+//! in f64 (docs/gpu.md, "Using the WGSL module in your renderer"). Where the device has
+//! `SHADER_F64`, [`wgsl_finish_module`] is the f64 pass's method the same way
+//! (`torus_finish_f64(ray, torus64, instruction) -> TorusHit64`, no name in common with
+//! the f32 module, so both go in one shader); [`ModuleTorus::params64`] and
+//! [`ModuleTorus::prepare_f64`] fill its inputs, [`PreparedRay::finish_with_device`]
+//! reads both answers back.
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -80,8 +86,10 @@ mod module;
 mod source;
 
 pub use finish::{FinishCounts, Finished};
-pub use module::{ModuleTorus, PreparedRay};
-pub use source::{FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_module};
+pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
+pub use source::{
+    FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
+};
 /// The wgpu this library's kernel runs on (and whose `naga` validates
 /// [`wgsl_module`]): a renderer that includes the module uses the same version.
 pub use wgpu;
@@ -718,7 +726,10 @@ impl GpuIntersector {
                 batch
                     .iter()
                     .zip(&packed)
-                    .map(|(ray, p)| finish::world_record(torus, ray, p))
+                    .map(|(ray, p)| {
+                        let (world, instruction) = finish::world_record(torus, ray, p.host);
+                        (world, finish::instruction_record(instruction))
+                    })
                     .unzip()
             } else {
                 (Vec::new(), Vec::new())

@@ -13,7 +13,18 @@
 //!   outside).
 //! - [`PreparedRay::verdict`], [`PreparedRay::finish`]: the shader's `TorusHit` as the
 //!   ray's verdict, and finished in f64 on the host where it escalated.
+//!
+//! The f64 module ([`super::wgsl_finish_module`]), where the device has `SHADER_F64`:
+//!
+//! - [`ModuleTorus::params64`]: its `TorusParams64`, once per torus (136 bytes, the
+//!   library's f64 pass's torus buffer);
+//! - [`ModuleTorus::prepare_f64`]: its `TorusWorldRay` and instruction, per ray (the
+//!   library pass's world record and instruction);
+//! - [`PreparedRay::finish_with_device`]: the f32 answer, the device's f64 answer where
+//!   the ray escalated and the device answered ([`ModuleHit64::answer`]), else the host's,
+//!   as [`super::GpuIntersector::intersect_finished_where`] decides.
 
+use super::finish::{self as device, Finished};
 use super::{Escalation, Frame, shifted};
 use crate::certified::{F32Hit, F32Verdict, finish};
 use crate::{Ray, Torus};
@@ -49,6 +60,74 @@ pub struct PreparedRay {
     pub host: Option<(F32Verdict, Option<Escalation>)>,
 }
 
+/// A ray prepared for the f64 module ([`ModuleTorus::prepare_f64`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PreparedRay64 {
+    /// The module's `TorusWorldRay`: `origin`, `t_min`, `direction`, `t_max` of the ray
+    /// as the caller gave it (world space), the range clipped to
+    /// `|t| ≤ (|o − c| + 4(R + r))/|d|`, beyond which no root lies.
+    pub words: [f32; 8],
+    /// The `instruction` argument of `torus_finish_wanted` and `torus_finish_f64`:
+    /// `TORUS_F64_FOLLOW` (finish it where the f32 module escalates), `_ALWAYS` (the host
+    /// sent the f32 module nothing it could prove: an origin beyond 2²⁰·R),
+    /// `_SURFACE_FOLLOW`, `_SURFACE_ALWAYS` (the same for a ray from a surface point, its
+    /// own root divided out), or `_HOST` (the host answers it: a range f32 cannot clip,
+    /// or an answer the host already has).
+    pub instruction: u32,
+}
+
+impl PreparedRay64 {
+    /// [`PreparedRay64::words`] as the 32 little-endian bytes of a `TorusWorldRay`.
+    pub fn bytes(&self) -> [u8; 32] {
+        words_bytes(self.words)
+    }
+}
+
+/// The f32 module's `TorusHit` as a renderer reads it back.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModuleHit {
+    /// t along the prepared ray (add [`PreparedRay::t0`]; [`PreparedRay::verdict`] does).
+    pub t: f32,
+    /// The unit world normal of a hit.
+    pub normal: Vec3,
+    /// `TORUS_MISS`, `TORUS_HIT` or `TORUS_ESCALATE`.
+    pub code: u32,
+    /// `TORUS_WHY_*` of an escalated ray.
+    pub why: u32,
+}
+
+/// The f64 module's `TorusHit64` as a renderer reads it back.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModuleHit64 {
+    /// t along the world ray, rounded once from f64.
+    pub t: f32,
+    /// The unit world normal, rounded once from f64.
+    pub normal: Vec3,
+    /// The hit point `o + t·d`, rounded once from f64.
+    pub point: Vec3,
+    /// `TORUS_F64_STATUS_FRONT`, `_BACK`, `_MISS` or `_HOST` (or `_PROVED`, the library
+    /// pass's word for "not run").
+    pub status: u32,
+}
+
+impl ModuleHit64 {
+    /// The device's answer: a hit from the outside (`FRONT`) or the inside (`BACK`), or a
+    /// miss (`MISS`), marked escalated; `None` where the host must finish the ray with the
+    /// f64 path (`HOST`, `PROVED`, or an unknown status).
+    pub fn answer(&self) -> Option<F32Hit> {
+        let (n, p) = (self.normal, self.point);
+        device::device_answer([self.t, n.x, n.y, n.z, p.x, p.y, p.z, self.status as f32])
+    }
+}
+
+fn words_bytes(words: [f32; 8]) -> [u8; 32] {
+    let mut out = [0; 32];
+    for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
+        chunk.copy_from_slice(&w.to_le_bytes());
+    }
+    out
+}
+
 impl ModuleTorus {
     /// The torus as the module reads it.
     pub fn new(torus: &Torus) -> ModuleTorus {
@@ -72,6 +151,29 @@ impl ModuleTorus {
     /// [`ModuleTorus::params`] as 112 little-endian bytes (a uniform or storage buffer).
     pub fn params_bytes(&self) -> Vec<u8> {
         self.params().iter().flat_map(|f| f.to_le_bytes()).collect()
+    }
+
+    /// The f64 module's `TorusParams64`, 17 `f64` in order: the centre c, the columns of
+    /// the world → torus rotation M (`M·(o − c)` is the origin in the torus frame), R,
+    /// 1/R, r/R, 1 − (r/R)², 1 + r/R, as the CPU's f64 path holds them.
+    pub fn params64(&self) -> [f64; 17] {
+        device::torus_values(&self.torus)
+    }
+
+    /// [`ModuleTorus::params64`] as 136 little-endian bytes (a storage buffer).
+    pub fn params64_bytes(&self) -> Vec<u8> {
+        device::torus_bytes(&self.torus)
+    }
+
+    /// The f64 module's `TorusWorldRay` and instruction for `ray`, given what
+    /// [`ModuleTorus::prepare`] made of it for the f32 module (its host answer decides
+    /// the instruction), as the library's f64 pass gets them.
+    pub fn prepare_f64(&self, ray: &Ray, prepared: &PreparedRay) -> PreparedRay64 {
+        let (words, instruction) = device::world_record(&self.torus, ray, prepared.host);
+        PreparedRay64 {
+            words,
+            instruction: instruction as u32,
+        }
     }
 
     /// The module's `TorusRay` for `ray`, as the library's kernel gets it:
@@ -98,11 +200,7 @@ impl ModuleTorus {
 impl PreparedRay {
     /// [`PreparedRay::words`] as the 32 little-endian bytes of a `TorusRay`.
     pub fn bytes(&self) -> [u8; 32] {
-        let mut out = [0; 32];
-        for (chunk, w) in out.chunks_exact_mut(4).zip(self.words) {
-            chunk.copy_from_slice(&w.to_le_bytes());
-        }
-        out
+        words_bytes(self.words)
     }
 
     /// The ray's verdict from the shader's `TorusHit` (`t`, `normal`, `code`, `why`): the
@@ -144,6 +242,29 @@ impl PreparedRay {
         why: u32,
     ) -> F32Hit {
         finish(self.verdict(t, normal, code, why).0, torus, ray)
+    }
+
+    /// The ray's answer with the device's f64 finish, and who gave it, as
+    /// [`super::GpuIntersector::intersect_finished_where`] decides: the f32 verdict where
+    /// it is proved ([`Finished::Proved`]); where it escalated, the f64 module's answer
+    /// ([`ModuleHit64::answer`], [`Finished::Device`]) if the shader ran
+    /// `torus_finish_f64` and it answered, else the f64 path on the host
+    /// ([`crate::intersect()`], [`Finished::Host`]).
+    pub fn finish_with_device(
+        &self,
+        torus: &Torus,
+        ray: &Ray,
+        hit: &ModuleHit,
+        hit64: Option<&ModuleHit64>,
+    ) -> (F32Hit, Finished) {
+        let (verdict, _) = self.verdict(hit.t, hit.normal, hit.code, hit.why);
+        if verdict != F32Verdict::Escalate {
+            return (finish(verdict, torus, ray), Finished::Proved);
+        }
+        match hit64.and_then(ModuleHit64::answer) {
+            Some(answer) => (answer, Finished::Device),
+            None => (finish(verdict, torus, ray), Finished::Host),
+        }
     }
 }
 
@@ -212,5 +333,75 @@ mod tests {
             crate::intersect(&t, &beyond).map(|h| h.t)
         );
         assert_eq!(p.bytes()[..4], p.words[0].to_le_bytes());
+    }
+
+    /// The f64 module's inputs are the library pass's (torus bytes, world record,
+    /// instruction), and `finish_with_device` decides who answers as the library does.
+    #[test]
+    fn the_f64_inputs_and_the_answer_are_the_library_passes() {
+        use super::super::finish::{Instruction, Status, torus_bytes};
+        let t = torus();
+        let module = ModuleTorus::new(&t);
+        assert_eq!(module.params64_bytes(), torus_bytes(&t));
+        assert_eq!(module.params64_bytes().len(), 136);
+        assert_eq!(module.params64()[12], 4.0); // R
+        let c = t.center();
+        let near = Ray::new(c + Vec3::new(0.0, 8.0, 0.5), Vec3::NEG_Y).unwrap();
+        let p = module.prepare(&near);
+        let p64 = module.prepare_f64(&near, &p);
+        assert_eq!(p64.instruction, Instruction::Follow as u32);
+        // The world ray as given (not o − c), its range clipped to where the torus is.
+        assert_eq!(p64.words[..3], near.origin().to_array());
+        assert_eq!(p64.words[4..7], near.dir().to_array());
+        assert!(p64.words[7].is_finite() && p64.words[7] > 8.0);
+        assert_eq!(p64.bytes()[28..], p64.words[7].to_le_bytes());
+        let beyond = Ray::new(c + Vec3::new(0.0, 1e7, 0.0), Vec3::NEG_Y).unwrap();
+        let pb = module.prepare(&beyond);
+        assert_eq!(
+            module.prepare_f64(&beyond, &pb).instruction,
+            Instruction::Always as u32
+        );
+        // Proved by f32: the f64 answer is not read.
+        let miss = ModuleHit {
+            t: 0.0,
+            normal: Vec3::ZERO,
+            code: CODE_MISS,
+            why: 0,
+        };
+        let device_hit = ModuleHit64 {
+            t: 7.0,
+            normal: Vec3::Y,
+            point: Vec3::ONE,
+            status: Status::Front as u32,
+        };
+        let (answer, who) = p.finish_with_device(&t, &near, &miss, Some(&device_hit));
+        assert_eq!((answer.hit, who), (None, Finished::Proved));
+        // Escalated: the device's answer, or the host's where the device handed it back.
+        let escalated = ModuleHit {
+            code: CODE_ESCALATE,
+            why: 5,
+            ..miss
+        };
+        let (answer, who) = p.finish_with_device(&t, &near, &escalated, Some(&device_hit));
+        assert_eq!(who, Finished::Device);
+        assert_eq!(answer.hit.map(|h| (h.t, h.front_face)), Some((7.0, true)));
+        for back in [
+            None,
+            Some(ModuleHit64 {
+                status: Status::Host as u32,
+                ..device_hit
+            }),
+            Some(ModuleHit64 {
+                status: Status::Proved as u32,
+                ..device_hit
+            }),
+        ] {
+            let (answer, who) = p.finish_with_device(&t, &near, &escalated, back.as_ref());
+            assert_eq!(who, Finished::Host);
+            assert_eq!(
+                answer.hit.map(|h| h.t),
+                crate::intersect(&t, &near).map(|h| h.t)
+            );
+        }
     }
 }

@@ -191,8 +191,12 @@ impl KernelConstants {
     }
 }
 
-/// The f64 finish pass's body (`finish.wgsl`): its bindings, the CPU's f64 method and
-/// its entry point `finish_main`; every threshold from [`FinishConstants::header`].
+/// The f64 finish as WGSL functions (`finish_module.wgsl`, no bindings): the CPU's f64
+/// method for one ray; every threshold from [`FinishConstants::header`].
+const FINISH_MODULE_BODY: &str = include_str!("finish_module.wgsl");
+
+/// The library's f64 finish pass's bindings and entry point `finish_main`
+/// (`finish.wgsl`), around [`FINISH_MODULE_BODY`].
 const FINISH_BODY: &str = include_str!("finish.wgsl");
 
 /// Every number the device's f64 finish (`gpu/finish.rs`) takes from Rust, by name:
@@ -284,11 +288,14 @@ impl FinishConstants {
              // the pipeline is built: f64 in shortest round-trip decimal, exact.\n",
         );
         for (name, value) in floats {
-            let _ = writeln!(out, "const {name}: f64 = {};", literal_f64(value));
+            let _ = writeln!(out, "const TC_{name}: f64 = {};", literal_f64(value));
         }
-        let _ = writeln!(out, "const FIN_CBRT_SEED: u32 = {}u;", self.cbrt_seed);
-        let _ = writeln!(out, "const FIN_CODE_MISS: u32 = {CODE_MISS}u;");
-        let _ = writeln!(out, "const FIN_CODE_HIT: u32 = {CODE_HIT}u;");
+        let _ = writeln!(out, "const TC_FIN_CBRT_SEED: u32 = {}u;", self.cbrt_seed);
+        // The f32 module's codes under the f64 module's own names, so that the two can be
+        // included together or apart.
+        let _ = writeln!(out, "const TC_FIN_CODE_MISS: u32 = {CODE_MISS}u;");
+        let _ = writeln!(out, "const TC_FIN_CODE_HIT: u32 = {CODE_HIT}u;");
+        out.push_str("// The host's instructions and the answer's status (torus_cull::gpu).\n");
         for (name, code) in super::finish::Instruction::ALL
             .iter()
             .map(|i| (i.name(), *i as u32))
@@ -298,14 +305,21 @@ impl FinishConstants {
                     .map(|s| (s.name(), *s as u32)),
             )
         {
-            let _ = writeln!(out, "const FIN_{name}: u32 = {code}u;");
+            let _ = writeln!(out, "const TORUS_F64_{name}: u32 = {code}u;");
         }
         out
     }
 
-    /// The f64 pass's full WGSL text: the header and `finish.wgsl`.
+    /// The f64 module's WGSL text ([`wgsl_finish_module`]) with these constants: the
+    /// header and `finish_module.wgsl`.
+    pub fn module(&self) -> String {
+        format!("{}\n{FINISH_MODULE_BODY}", self.header())
+    }
+
+    /// The library's f64 pass's full WGSL text: the module ([`FinishConstants::module`])
+    /// and the pass's bindings and entry point (`finish.wgsl`).
     pub fn source(&self) -> String {
-        format!("{}\n{FINISH_BODY}", self.header())
+        format!("{}\n{FINISH_BODY}", self.module())
     }
 }
 
@@ -313,6 +327,46 @@ impl FinishConstants {
 /// compiles where the adapter has `SHADER_F64`.
 pub fn finish_source() -> String {
     FinishConstants::CPU.source()
+}
+
+/// The device's f64 finish as WGSL a renderer includes in its own shader, beside the f32
+/// module ([`wgsl_module`]) or alone: the generated `const` header (the f64 path's
+/// constants, exact; the instruction and status codes) and the functions of
+/// `finish_module.wgsl`, without the library pass's bindings and entry point. The
+/// library's f64 pass is this same text plus its bindings ([`finish_source`]). It needs
+/// `wgpu::Features::SHADER_F64` on the device (naga's `FLOAT64`); without it, finish the
+/// escalated rays on the host ([`super::PreparedRay::finish`]).
+///
+/// Every global name begins with `torus_`, `Torus` or `TORUS_` (the API) or `tc_`, `Tc`
+/// or `TC_` (internals), and none is one the f32 module declares: the two can be
+/// included in one shader, in either order, or apart. The entry points:
+///
+/// ```wgsl
+/// fn torus_finish_wanted(instruction: u32, code: u32, t: f32, normal: vec3<f32>) -> bool
+/// fn torus_finish_f64(ray: TorusWorldRay, torus: TorusParams64, instruction: u32) -> TorusHit64
+/// ```
+///
+/// - `TorusParams64` (136 bytes, 17 `f64`): from [`super::ModuleTorus::params64`], once
+///   per torus: the centre, the columns of the world → torus rotation, R, 1/R, r/R,
+///   1 − (r/R)², 1 + r/R, in f64 (the f32 `TorusParams` is rounded; the f64 path needs
+///   the torus as the CPU holds it).
+/// - `TorusWorldRay` (32 bytes, the layout of `TorusRay`) and the `instruction` (a
+///   `u32`, `TORUS_F64_FOLLOW`, `_ALWAYS`, `_SURFACE_FOLLOW`, `_SURFACE_ALWAYS` or
+///   `_HOST`): from [`super::ModuleTorus::prepare_f64`], per ray. The ray is the world
+///   ray as the caller gave it (not `o − c`, not moved to its foot point), its range
+///   clipped to where the torus can be.
+/// - `torus_finish_wanted(instruction, hit.code, hit.t, hit.normal)` on the f32 module's
+///   `TorusHit` says whether the ray needs the f64 finish (the f32 answer is not proved,
+///   or the host sent the f32 module nothing it could prove).
+/// - `TorusHit64`: `t` along the world ray, the unit world `normal`, the `point`, each
+///   rounded once from f64, and `status`: `TORUS_F64_STATUS_FRONT` or `_BACK` (a hit
+///   from the outside or the inside), `_MISS`, or `_HOST` (the method cannot give the
+///   CPU's answer: finish it on the host). [`super::ModuleHit64::answer`] decodes it.
+///
+/// docs/gpu.md, "Using the WGSL module in your renderer", gives the buffers and an
+/// example (`examples/wgsl_module.rs`).
+pub fn wgsl_finish_module() -> String {
+    FinishConstants::CPU.module()
 }
 
 /// `x` as an exact WGSL f64 literal: Rust's shortest round-trip decimal and `lf`.
@@ -544,22 +598,32 @@ mod tests {
         ] {
             assert!(module.contains(line), "{line}");
         }
-        // Every global name is the API's (torus_ / Torus / TORUS_) or an internal one
-        // (tc_ / Tc / TC_), so none clashes with a renderer's own `miss`, `Line` or `U`.
+        assert_prefixed(&parsed, 60);
+    }
+
+    /// The global names of `module`: its functions, constants and structs.
+    fn global_names(module: &wgpu::naga::Module) -> Vec<String> {
+        let functions = module.functions.iter().filter_map(|(_, f)| f.name.clone());
+        let constants = module.constants.iter().filter_map(|(_, c)| c.name.clone());
+        let types = module
+            .types
+            .iter()
+            .filter(|(_, t)| matches!(t.inner, wgpu::naga::TypeInner::Struct { .. }))
+            .filter_map(|(_, t)| t.name.clone());
+        functions.chain(constants).chain(types).collect()
+    }
+
+    /// Every global name is the API's (torus_ / Torus / TORUS_) or an internal one
+    /// (tc_ / Tc / TC_), so none clashes with a renderer's own `miss`, `Line` or `U`; and
+    /// there are more than `at_least` of them (the check saw the module).
+    fn assert_prefixed(module: &wgpu::naga::Module, at_least: usize) {
         let prefixed = |name: &str| {
             ["torus_", "Torus", "TORUS_", "tc_", "Tc", "TC_"]
                 .iter()
                 .any(|p| name.starts_with(p))
         };
-        let functions = parsed.functions.iter().filter_map(|(_, f)| f.name.clone());
-        let constants = parsed.constants.iter().filter_map(|(_, c)| c.name.clone());
-        let types = parsed
-            .types
-            .iter()
-            .filter(|(_, t)| matches!(t.inner, naga::TypeInner::Struct { .. }))
-            .filter_map(|(_, t)| t.name.clone());
-        let names: Vec<String> = functions.chain(constants).chain(types).collect();
-        assert!(names.len() > 60, "{names:?}");
+        let names = global_names(module);
+        assert!(names.len() > at_least, "{names:?}");
         // `__…` are naga's own predeclared types (frexp's result), not the module's.
         let bare: Vec<&String> = names
             .iter()
@@ -569,6 +633,79 @@ mod tests {
             bare.is_empty(),
             "global names without the module's prefix: {bare:?}"
         );
+    }
+
+    fn validate_f64(text: &str) -> Result<wgpu::naga::Module, String> {
+        use wgpu::naga;
+        let module = naga::front::wgsl::parse_str(text).map_err(|e| e.emit_to_string(text))?;
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::FLOAT64,
+        )
+        .validate(&module)
+        .map_err(|e| format!("{e:?}"))?;
+        Ok(module)
+    }
+
+    /// The f64 module is the library's f64 pass less its bindings and entry point (one
+    /// source): it validates alone (with `FLOAT64`), declares no binding and no entry
+    /// point, names its API with the module's prefixes, and shares no global name with
+    /// the f32 module, so that both go in one shader in either order.
+    #[test]
+    fn the_f64_pass_is_the_f64_module_plus_its_bindings() {
+        let module = wgsl_finish_module();
+        let pass = finish_source();
+        assert!(pass.starts_with(&module));
+        assert!(pass.ends_with(FINISH_BODY));
+        for absent in [
+            "@group",
+            "@binding",
+            "@compute",
+            "var<uniform>",
+            "var<storage",
+        ] {
+            assert!(!module.contains(absent), "{absent} in the f64 module");
+        }
+        let parsed = validate_f64(&module).unwrap_or_else(|e| panic!("{e}"));
+        assert!(parsed.entry_points.is_empty());
+        assert!(parsed.global_variables.is_empty());
+        for entry in ["torus_finish_f64", "torus_finish_wanted"] {
+            assert!(
+                parsed
+                    .functions
+                    .iter()
+                    .any(|(_, f)| f.name.as_deref() == Some(entry)),
+                "{entry}"
+            );
+        }
+        for line in [
+            "const TORUS_F64_FOLLOW: u32 = 0u;",
+            "const TORUS_F64_HOST: u32 = 2u;",
+            "const TORUS_F64_SURFACE_ALWAYS: u32 = 4u;",
+            "const TORUS_F64_STATUS_FRONT: u32 = 1u;",
+            "const TORUS_F64_STATUS_HOST: u32 = 4u;",
+        ] {
+            assert!(module.contains(line), "{line}");
+        }
+        assert_prefixed(&parsed, 40);
+        // No name in common with the f32 module (`__…` are naga's own).
+        let f32_module = wgpu::naga::front::wgsl::parse_str(&wgsl_module()).expect("parses");
+        let f32_names = global_names(&f32_module);
+        let common: Vec<String> = global_names(&parsed)
+            .into_iter()
+            .filter(|n| f32_names.contains(n) && !n.starts_with("__"))
+            .collect();
+        assert!(common.is_empty(), "declared by both modules: {common:?}");
+        // Both, in either order, validate as one shader; a second copy of either clashes.
+        let f32_text = wgsl_module();
+        for both in [
+            format!("{f32_text}\n{module}"),
+            format!("{module}\n{f32_text}"),
+        ] {
+            let parsed = validate_f64(&both).unwrap_or_else(|e| panic!("{e}"));
+            assert_prefixed(&parsed, 100);
+        }
+        assert!(validate_f64(&format!("{module}\n{module}")).is_err());
     }
 
     /// Changing a Rust constant changes the kernel's text, in exactly that line.
@@ -659,11 +796,11 @@ mod tests {
             ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
             ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
         ] {
-            let line = format!("const {name}: f64 = {};", literal_f64(value));
+            let line = format!("const TC_{name}: f64 = {};", literal_f64(value));
             assert!(header.contains(&line), "{line} not in\n{header}");
         }
-        assert!(header.contains(&format!("const FIN_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-        for line in FINISH_BODY.lines() {
+        assert!(header.contains(&format!("const TC_FIN_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
+        for line in FINISH_MODULE_BODY.lines().chain(FINISH_BODY.lines()) {
             assert!(
                 !line.trim_start().starts_with("const "),
                 "hand-written: {line}"
@@ -683,7 +820,7 @@ mod tests {
         let differing: Vec<(&str, &str)> =
             a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
         assert_eq!(differing.len(), 1, "{differing:?}");
-        assert_eq!(differing[0].1, "const FIN_NEAR_DOUBLE: f64 = 2e-7lf;");
+        assert_eq!(differing[0].1, "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;");
         assert_eq!(finish_source(), a);
     }
 }
