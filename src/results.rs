@@ -359,7 +359,12 @@ pub struct RatioRecord {
     /// without it is one run, as every record was before the field existed.
     #[serde(default = "one_run")]
     pub runs: u64,
-    /// Each run's own ratio (its median over its rounds), in run order; absent for a
+    /// Runs set aside as run in a slow state of the machine (their time per ray for the
+    /// pair more than [`crate::paired::runs::SLOW_STATE`] above the fastest run's); `runs`
+    /// counts those kept. Absent when none was.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub runs_set_aside: u64,
+    /// Each kept run's own ratio (its median over its rounds), in run order; absent for a
     /// single run.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub run_ratios: Vec<f64>,
@@ -371,6 +376,11 @@ pub struct RatioRecord {
     /// is unknown. `compare` judges by it when both files have it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ratio_ci_between: Option<[f64; 2]>,
+}
+
+/// Serde: leave a zero count out.
+fn is_zero(n: &u64) -> bool {
+    *n == 0
 }
 
 fn one_run() -> u64 {

@@ -157,6 +157,7 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
         device: "cpu".into(),
         escalation_rate: None,
         runs: 1,
+        runs_set_aside: 0,
         run_ratios: Vec::new(),
         ratio_ci_between: None,
     };
@@ -769,6 +770,7 @@ fn with_ratio(ratio: f64, ci: [f64; 2], between: Option<[f64; 2]>, runs: u64) ->
         device: "cpu".into(),
         escalation_rate: None,
         runs,
+        runs_set_aside: 0,
         run_ratios: if runs > 1 {
             vec![ratio; runs as usize]
         } else {

@@ -104,9 +104,11 @@ fn a_short_run_writes_ratios_that_load_and_compare() {
     }) {
         x.ratio *= 1.5;
         x.ratio_ci = [x.ratio_ci[1] * 1.4, x.ratio_ci[1] * 1.6];
-        // The default is several runs: compare judges by the between-run interval.
-        let [_, hi] = x.ratio_ci_between.expect("three runs by default");
-        x.ratio_ci_between = Some([hi * 1.4, hi * 1.6]);
+        // The default is several runs: compare judges by the between-run interval (none
+        // where all runs but one were set aside as slow: then by the within-run one).
+        if let Some([_, hi]) = x.ratio_ci_between {
+            x.ratio_ci_between = Some([hi * 1.4, hi * 1.6]);
+        }
     }
     let b = dir.path().join("b.json");
     worse.save(&b).unwrap();
@@ -115,7 +117,7 @@ fn a_short_run_writes_ratios_that_load_and_compare() {
     assert_eq!(o.status.code(), Some(1), "{stdout}");
     assert!(stdout.contains("2 regressions"), "{stdout}");
     assert!(
-        stdout.contains("REGRESSION: +50.0% against cychosz, between-run intervals disjoint"),
+        stdout.contains("REGRESSION: +50.0% against cychosz"),
         "{stdout}"
     );
 }
@@ -157,7 +159,19 @@ fn runs_2_writes_both_intervals() {
     // Per case × ν (2 × 2) × metric (2): skala and aabb against both references.
     assert_eq!(r.ratio.len(), 4 * 2 * 2 * 2);
     for x in &r.ratio {
-        assert_eq!(x.runs, 2, "{x:?}");
+        // A run in a slow state of the machine is set aside (paired::runs::SLOW_STATE).
+        assert_eq!(x.runs + x.runs_set_aside, 2, "{x:?}");
+        if x.runs == 1 {
+            assert!(
+                x.run_ratios.is_empty() && x.ratio_ci_between.is_none(),
+                "{x:?}"
+            );
+            assert!(
+                x.ratio_ci[0] <= x.ratio && x.ratio <= x.ratio_ci[1],
+                "{x:?}"
+            );
+            continue;
+        }
         assert_eq!(x.run_ratios.len(), 2, "{x:?}");
         assert!(x.run_ratios.iter().all(|q| q.is_finite() && *q > 0.0));
         // The ratio is the geometric mean of the run ratios.

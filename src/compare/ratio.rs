@@ -214,6 +214,7 @@ pub(super) mod tests {
             device: "cpu".into(),
             escalation_rate: None,
             runs: 1,
+            runs_set_aside: 0,
             run_ratios: Vec::new(),
             ratio_ci_between: None,
         }

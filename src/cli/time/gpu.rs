@@ -124,6 +124,7 @@ pub(super) fn run(
                     device: "gpu".into(),
                     escalation_rate: Some(escalated),
                     runs: 1,
+                    runs_set_aside: 0,
                     run_ratios: Vec::new(),
                     ratio_ci_between: None,
                 });

@@ -96,7 +96,7 @@ pub struct TimeArgs {
 }
 
 /// `--runs` unless given.
-const DEFAULT_RUNS: u64 = 3;
+const DEFAULT_RUNS: u64 = 5;
 
 /// The most `--runs`.
 const MAX_RUNS: u64 = 100;
