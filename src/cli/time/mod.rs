@@ -79,8 +79,9 @@ pub struct TimeArgs {
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
     no_plots: bool,
-    /// Independent runs sharing `--seconds` (default 3, fewer where `--seconds` is under
-    /// 0.75, each run having at least 0.25 s; CPU only): each in a worker
+    /// Independent runs sharing `--seconds` (default 5, fewer where `--seconds` is under
+    /// 1.25, each run having at least 0.25 s; CPU only; runs in a slow state of the machine
+    /// are set aside, see `runs_set_aside`): each in a worker
     /// process of its own (a fresh copy of this binary: its own code and data placement,
     /// heap, and ray buffers shuffled and laid out afresh). Every ratio then carries,
     /// besides the within-run interval of its rounds, a between-run interval over the
