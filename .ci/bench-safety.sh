@@ -22,6 +22,10 @@ trap cleanup EXIT
 export CARGO_TERM_COLOR=never CRITERION_HOME="$tmp/criterion"
 
 fail() { echo "bench-safety: $*" >&2; exit 1; }
+# The torus-cull command: the binary CI's `cargo test` built (TORUS_CULL_BIN), or cargo run.
+tc() {
+  if [ -n "${TORUS_CULL_BIN:-}" ]; then "$TORUS_CULL_BIN" "$@"; else cargo run --release --quiet -- "$@"; fi
+}
 command -v python3 >/dev/null || fail "python3 is needed to read the results JSON"
 json() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 
@@ -40,7 +44,7 @@ mv "$bench_file" "$tmp/complete.json"
 for section in rejection timing bvh solver estimates ratio; do
   [ "$(json "$tmp/complete.json" "len(d['$section']) > 0")" = True ] || fail "no $section records"
 done
-cargo run --release --quiet -- compare "$tmp/complete.json" "$tmp/complete.json" --only-changes \
+tc compare "$tmp/complete.json" "$tmp/complete.json" --only-changes \
   | tail -n 1
 sum=$(sha256sum "$tmp/complete.json")
 
@@ -89,7 +93,7 @@ check_error TORUS_CULL_RESULTS="$tmp" 'is a directory'
 check_error TORUS_CULL_RESULTS="$tmp/no/such/r.json" 'does not exist'
 
 echo "-- [${SECONDS} s] default names: a smoke bench and run never share a file"
-cargo run --release --quiet -- run --workload workloads/quick.json --no-plots >"$tmp/run.log" 2>&1 \
+tc run --workload workloads/quick.json --no-plots >"$tmp/run.log" 2>&1 \
   || { cat "$tmp/run.log"; fail "run failed"; }
 run_file=$(sed -n 's/^wrote \(results\/[^ ]*\.json\)$/\1/p' "$tmp/run.log")
 case "$bench_file" in results/*-smoke.json) ;; *) fail "smoke bench wrote '$bench_file'" ;; esac
