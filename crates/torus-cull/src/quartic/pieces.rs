@@ -28,21 +28,24 @@ fn magnitude(c: &[f64], x: f64) -> f64 {
 /// Every real root of `c[0]·t⁴ + … + c[4]` (`c[0] ≠ 0`, all finite, within 2^±900), sorted,
 /// a double root twice. A zero constant term is divided out exactly first (each `t = 0` root).
 pub(super) fn real_roots(c: &[f64; 5]) -> RealRoots {
+    let (mut out, degree) = zero_roots(c);
+    for &x in roots_of_poly(&c[..=degree]).as_slice() {
+        out.push(x);
+    }
+    out.sort();
+    out
+}
+
+/// The roots `t = 0` of `c` (`c[0] ≠ 0`), one per zero trailing coefficient, exactly, and
+/// the degree of what is left once they are divided out: `c[..=degree]`.
+pub(super) fn zero_roots(c: &[f64; 5]) -> (RealRoots, usize) {
     let mut out = RealRoots::default();
     let mut degree = 4;
     while degree > 0 && c[degree] == 0.0 {
         out.push(0.0);
         degree -= 1;
     }
-    let mut found = [0.0; 4];
-    let n = roots_of(&c[..=degree], &mut found);
-    // A root beyond f64's range (a linear `−c₁/c₀` that overflows) is left out, as
-    // `solve_quartic` documents.
-    for &x in found[..n].iter().filter(|x| x.is_finite()) {
-        out.push(x);
-    }
-    out.sort();
-    out
+    (out, degree)
 }
 
 /// The real roots of `c` (degree `c.len() − 1` ≤ 4, `c[0] ≠ 0`, nonzero constant, all
@@ -51,6 +54,8 @@ pub(super) fn roots_of_poly(c: &[f64]) -> RealRoots {
     let mut found = [0.0; 4];
     let n = roots_of(c, &mut found);
     let mut out = RealRoots::default();
+    // A root beyond f64's range (a linear `−c₁/c₀` that overflows) is left out, as
+    // `solve_quartic` documents.
     for &x in found[..n].iter().filter(|x| x.is_finite()) {
         out.push(x);
     }

@@ -23,13 +23,7 @@ const GROUP: f64 = 100.0;
 /// monotone pieces at its own power-of-two scale, on the terms that group's roots are
 /// made of. A root too large for f64, or too small to be told from 0, is left out.
 pub(super) fn real_roots(c: &[f64; 5]) -> RealRoots {
-    let mut out = RealRoots::default();
-    // Zero trailing coefficients: roots exactly 0.
-    let mut degree = 4;
-    while degree > 0 && c[degree] == 0.0 {
-        out.push(0.0);
-        degree -= 1;
-    }
+    let (mut out, degree) = pieces::zero_roots(c);
     let poly = &c[..=degree];
     // Points (j, log₂|coefficient of tʲ|), j ascending; the hull's ends are nonzero.
     let mut hull: [(f64, f64); 5] = [(0.0, 0.0); 5];
