@@ -376,6 +376,27 @@ pub struct RatioRecord {
     /// is unknown. `compare` judges by it when both files have it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ratio_ci_between: Option<[f64; 2]>,
+    /// The run-to-run spread behind [`ratio_ci_between`](Self::ratio_ci_between): the
+    /// standard deviation of ln(run ratio), this record's own or the one pooled over every
+    /// batch of the same comparison, whichever gives the wider interval (see
+    /// [`crate::paired::runs`]).
+    /// Absent where no spread is known (a single run, or files written before it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub run_spread: Option<RunSpread>,
+}
+
+/// The standard deviation of ln(run ratio) behind a between-run interval, and what it
+/// rests on: a spread estimated from few runs is itself uncertain, which the t quantile
+/// of its degrees of freedom carries.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct RunSpread {
+    /// Standard deviation of the logarithms of the run ratios.
+    pub log_sd: f64,
+    /// Its degrees of freedom: runs − 1 for the record's own, the sum of (runs − 1) over
+    /// the records pooled.
+    pub df: u64,
+    /// Whether the pooled spread gave the wider interval, and so is the one used.
+    pub pooled: bool,
 }
 
 /// Serde: leave a zero count out.

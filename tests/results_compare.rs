@@ -160,6 +160,7 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
         runs_set_aside: 0,
         run_ratios: Vec::new(),
         ratio_ci_between: None,
+        run_spread: None,
     };
     r.ratio = vec![
         ratio.clone(),
@@ -777,6 +778,7 @@ fn with_ratio(ratio: f64, ci: [f64; 2], between: Option<[f64; 2]>, runs: u64) ->
             Vec::new()
         },
         ratio_ci_between: between,
+        run_spread: None,
     }];
     r
 }

@@ -10,8 +10,8 @@
 //! * the between-run interval (`ratio_ci_between`, `time --runs K`, K ≥ 2): the mean's
 //!   interval over K runs. Even when it is honest, a repeat's mean, uncertain itself,
 //!   lands inside it only about 83 % of the time (Cumming & Maillardet, 2006);
-//! * the next-run interval ([`next_run_interval`], from run j's `run_ratios`, for a
-//!   repeat of run i's K): the prediction interval, which is the one that promises 95 %.
+//! * the next-run interval ([`next_run_interval_of`], from run j's spread, for a repeat
+//!   of run i's K): the prediction interval, which is the one that promises 95 %.
 //!
 //! It also gives the headline ratios' spread, `|ratioᵢ/ratioⱼ − 1|` over the pairs: the
 //! headline is `total_ns` against `cychosz`, f64, on the CPU (the README's table).
@@ -22,7 +22,7 @@
 //! machine are checked: across machines a ratio moves for reasons no interval describes.
 
 use super::{check_unique, comparable, machine, ratio::ratio_key};
-use crate::paired::runs::next_run_interval;
+use crate::paired::runs::next_run_interval_of;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord, Results};
 use std::collections::BTreeMap;
 
@@ -191,7 +191,8 @@ pub fn coverage(runs: &[Results], names: &[String]) -> Result<Coverage, String> 
         ));
     }
     // Timed in K ≥ 2 runs. A record whose runs but one were set aside as slow
-    // (`runs_set_aside`) has no between-run interval: its within-run one stands in.
+    // (`runs_set_aside`) takes the spread pooled over its comparison; in a file written
+    // before the pool, it has no between-run interval and its within-run one stands in.
     let between_known = runs.iter().all(|r| {
         r.ratio
             .iter()
@@ -219,7 +220,7 @@ pub fn coverage(runs: &[Results], names: &[String]) -> Result<Coverage, String> 
                 let between = inside(a.ratio, between_ci);
                 let next = inside(
                     a.ratio,
-                    next_run_interval(&b.run_ratios, a.runs as usize).unwrap_or(between_ci),
+                    next_run_interval_of(b, a.runs as usize).unwrap_or(between_ci),
                 );
                 for tally in [
                     Some(&mut report.all),

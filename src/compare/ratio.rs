@@ -229,6 +229,7 @@ pub(super) mod tests {
             runs_set_aside: 0,
             run_ratios: Vec::new(),
             ratio_ci_between: None,
+            run_spread: None,
         }
     }
 

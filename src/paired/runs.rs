@@ -18,16 +18,19 @@
 //!   `exp(ȳ + √(Σ (ln hiₖ − yₖ)²) / K)`: each side's half-width combined as the standard
 //!   error of a mean of K independent estimates, so the interval the rounds alone would
 //!   give if the runs did not differ (for K = 1, the run's own interval);
-//! * between-run interval: `exp(ȳ ± t₀.₉₇₅,K−1 · s / √K)`, `s` the sample standard
-//!   deviation of the `yₖ` (Student's t: the K run ratios are K draws of a run's result,
-//!   which holds within- and between-run noise alike), widened where needed to hold the
-//!   within-run interval: a few runs that happen to agree do not make a figure surer than
-//!   its rounds.
+//! * between-run interval: `exp(ȳ ± t₀.₉₇₅,df · s / √K)`, `s` the run-to-run standard
+//!   deviation of the `yₖ` ([`RunSpread`]): the record's own sample one (df = K − 1) or
+//!   the one pooled over every batch of the same comparison ([`pooled_spreads`]; df the
+//!   pool's), whichever gives the wider interval. Widened where needed to hold the within-run
+//!   interval: a few runs that happen to agree do not make a figure surer than its rounds.
 //!
-//! With K = 3 the t quantile is 4.30, so the between-run interval is wide unless the runs
-//! agree closely: it is what three runs can honestly promise. More runs narrow it.
+//! A record's own spread from 2 to 5 runs is a poor estimate (with K = 3 the t quantile
+//! is 4.30, and two runs that agree by chance give a zero spread); the pool over the
+//! workload's batches is a good one, and what moves a whole run moves every batch alike.
+//!
+//! Runs in a slow state of the machine are set aside first ([`SLOW_STATE`]).
 
-use crate::results::RatioRecord;
+use crate::results::{RatioRecord, RunSpread};
 use std::fmt;
 
 /// The two-sided 95 % quantile of Student's t with `df` degrees of freedom, `t₀.₉₇₅,df`:
@@ -144,24 +147,29 @@ fn median_of(values: impl Iterator<Item = f64>) -> f64 {
     super::stats::median(&mut values.collect::<Vec<f64>>())
 }
 
-/// A run whose time per ray for the pair, the cull's plus the reference's, exceeds the
-/// fastest run's by more than this fraction ran in a slow state of the machine and is set
-/// aside. On the 2-core VM of docs/results.md about a third of the processes (and now and
-/// then one batch within a process) land in a state where the quartic costs about 19 ns
-/// more per ray, whatever the address layout (ASLR off) and the core (pinned); rounds
-/// inside a run agree to 0.1 %, the fast-state runs to about 1 %, so 8 % separates them.
-/// The ratio a cull saves differs between the states (0.785 against 0.92 for `none` over
-/// `cychosz` on hole rays), so a mean over runs inherits the draw of states; the
-/// fast-state ratio is what the code does when the machine lets it.
+/// A run in which a batch's exact intersection, timed alone (the `none` contender's
+/// `total_ns`), took more than this fraction longer per ray than in the batch's fastest
+/// run ran in a slow state of the machine, and is set aside for that batch.
+///
+/// On the 2-core VM of docs/results.md the machine switches, for spells of a fraction of
+/// a second to seconds, into a state where the quartic costs about 20 ns (some 35 %) more
+/// per ray and a cull in front of it less than that: a temporal state, not a placement
+/// (the same buffers, timed over and over, switch between the two). It shifts the ratios
+/// themselves (`none` over `cychosz` on hole rays: 0.787 fast, about 0.92 slow), so a mean
+/// over runs would inherit each run's draw of states. The intersection's own time is the
+/// state's clearest sign: rounds inside a run agree to 0.1 %, fast-state runs to about
+/// 2 %, so 8 % separates them. The fast-state ratio is what the code does when the
+/// machine lets it.
 pub const SLOW_STATE: f64 = 0.08;
 
 /// One record per record of the runs, combining the K runs' records in the same place
 /// (every run holds the same records, in the same order). Runs in a slow state
-/// ([`SLOW_STATE`]) are set aside and counted (`runs_set_aside`); of the others, the
-/// ratio, within-run and between-run intervals of the module text, `runs` (those kept), the
-/// run ratios, the rounds summed and the ns per ray the median over them. A single run's
-/// records come back as they were. Fails, naming the run and the record, when the runs'
-/// records differ.
+/// ([`SLOW_STATE`]) are set aside per batch and counted (`runs_set_aside`). Of the
+/// others: the ratio, the within-run interval, and the between-run interval of the
+/// module text with the spread [`RunSpread`] of [`pooled_spreads`]; `runs` (those kept),
+/// the run ratios, the rounds summed and the ns per ray the median over them. A single
+/// run's records come back as they were. Fails, naming the run and the record, when the
+/// runs' records differ.
 pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsDiffer> {
     let Some(first) = runs.first() else {
         return Ok(Vec::new());
@@ -188,7 +196,7 @@ pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsD
         }
     }
     let kept = fast_state_runs(runs);
-    let combined = (0..first.len())
+    let mut combined: Vec<RatioRecord> = (0..first.len())
         .map(|i| {
             let all: Vec<&RatioRecord> = runs.iter().map(|run| &run[i]).collect();
             let keep = &kept[&unit_of(&first[i])];
@@ -200,30 +208,134 @@ pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsD
                 .collect();
             let ratios: Vec<f64> = of_runs.iter().map(|r| r.ratio).collect();
             let cis: Vec<[f64; 2]> = of_runs.iter().map(|r| r.ratio_ci).collect();
-            let within = pooled_within_interval(&ratios, &cis);
-            let between = between_run_interval(&ratios)
-                .map(|[lo, hi]| [lo.min(within[0]), hi.max(within[1])]);
             let mean = ratios.iter().map(|r| r.ln()).sum::<f64>() / ratios.len() as f64;
             RatioRecord {
                 ratio: mean.exp(),
-                ratio_ci: within,
+                ratio_ci: pooled_within_interval(&ratios, &cis),
                 rounds: of_runs.iter().map(|r| r.rounds).sum(),
                 rounds_measured: all.iter().map(|r| r.rounds_measured).sum(),
                 ns_per_ray: median_of(of_runs.iter().map(|r| r.ns_per_ray)),
                 reference_ns_per_ray: median_of(of_runs.iter().map(|r| r.reference_ns_per_ray)),
                 runs: of_runs.len() as u64,
                 runs_set_aside: (all.len() - of_runs.len()) as u64,
-                run_ratios: if of_runs.len() > 1 {
-                    ratios
-                } else {
-                    Vec::new()
-                },
-                ratio_ci_between: between,
+                run_ratios: ratios,
                 ..first[i].clone()
             }
         })
         .collect();
+    let pooled = pooled_spreads(&combined);
+    for r in &mut combined {
+        let own = own_spread(&r.run_ratios);
+        let pool = pooled.get(&comparison_of(r)).copied();
+        // The wider interval of the two: t₀.₉₇₅ of each one's degrees of freedom times
+        // its spread.
+        let width = |s: &RunSpread| t_975(s.df as usize) * s.log_sd;
+        r.run_spread = match (own, pool) {
+            (Some(o), Some(p)) if width(&p) > width(&o) => Some(p),
+            (Some(o), _) => Some(o),
+            (None, p) => p,
+        };
+        r.ratio_ci_between = r.run_spread.map(|s| {
+            let half = t_975(s.df as usize) * s.log_sd / (r.runs as f64).sqrt();
+            let y = r.ratio.ln();
+            [
+                ((y - half).exp()).min(r.ratio_ci[0]),
+                ((y + half).exp()).max(r.ratio_ci[1]),
+            ]
+        });
+        if r.runs < 2 {
+            r.run_ratios.clear();
+        }
+    }
     Ok(combined)
+}
+
+/// The spread of one record's run ratios: the sample standard deviation of their
+/// logarithms, with runs − 1 degrees of freedom; `None` for fewer than two runs or a
+/// ratio that is not a positive finite number.
+fn own_spread(run_ratios: &[f64]) -> Option<RunSpread> {
+    let k = run_ratios.len();
+    if k < 2 || !run_ratios.iter().all(|r| r.is_finite() && *r > 0.0) {
+        return None;
+    }
+    let y: Vec<f64> = run_ratios.iter().map(|r| r.ln()).collect();
+    let mean = y.iter().sum::<f64>() / k as f64;
+    let var = y.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (k - 1) as f64;
+    Some(RunSpread {
+        log_sd: var.sqrt(),
+        df: (k - 1) as u64,
+        pooled: false,
+    })
+}
+
+/// The comparison a record makes, whatever the batch: (metric, reference, precision,
+/// device). Its run-to-run spread is pooled over the batches.
+fn comparison_of(r: &RatioRecord) -> (String, String, String, String) {
+    (
+        r.metric.clone(),
+        r.reference.clone(),
+        r.precision.clone(),
+        r.device.clone(),
+    )
+}
+
+/// Per comparison ([`comparison_of`]), the run-to-run spread pooled over every record
+/// (each cull, case and ν) with two runs or more: `s² = Σ Σₖ (yₖ − ȳ)² / Σ (K − 1)` on
+/// `yₖ = ln rₖ`, with `Σ (K − 1)` degrees of freedom (`pooled: true`).
+///
+/// One record's 2 to 5 runs estimate its spread poorly: two runs that happen to agree
+/// promise a precision no run gave, and a record with one run kept has none at all. The
+/// run-wide effects (the machine's state, placement) move every batch of a comparison
+/// alike, so the pool is the better estimate, and a record's interval takes whichever of
+/// its own spread and the pooled one gives the wider interval (`t₀.₉₇₅,df · s`): widened by
+/// the pool, never narrowed by it.
+#[must_use]
+pub fn pooled_spreads(
+    records: &[RatioRecord],
+) -> std::collections::BTreeMap<(String, String, String, String), RunSpread> {
+    let mut sums: std::collections::BTreeMap<_, (f64, u64)> = std::collections::BTreeMap::new();
+    for r in records {
+        let Some(own) = own_spread(&r.run_ratios) else {
+            continue;
+        };
+        let sum = sums.entry(comparison_of(r)).or_insert((0.0, 0));
+        sum.0 += own.log_sd.powi(2) * own.df as f64;
+        sum.1 += own.df;
+    }
+    sums.into_iter()
+        .map(|(c, (ss, df))| {
+            (
+                c,
+                RunSpread {
+                    log_sd: (ss / df as f64).sqrt(),
+                    df,
+                    pooled: true,
+                },
+            )
+        })
+        .collect()
+}
+
+/// Where the geometric mean of `next` further runs of `record` should land, 95 %:
+/// [`next_run_interval`]'s prediction interval with the record's own [`RunSpread`]
+/// (`exp(ln r ± t₀.₉₇₅,df · s · √(1/K + 1/next))`), widened to hold the within-run
+/// interval; for a record written before the spread was kept, [`next_run_interval`] of
+/// its run ratios. `None` where neither is known.
+#[must_use]
+pub fn next_run_interval_of(record: &RatioRecord, next: usize) -> Option<[f64; 2]> {
+    let Some(s) = record.run_spread else {
+        return next_run_interval(&record.run_ratios, next);
+    };
+    if next == 0 || record.runs == 0 || !(record.ratio.is_finite() && record.ratio > 0.0) {
+        return None;
+    }
+    let half =
+        t_975(s.df as usize) * s.log_sd * (1.0 / record.runs as f64 + 1.0 / next as f64).sqrt();
+    let y = record.ratio.ln();
+    Some([
+        (y - half).exp().min(record.ratio_ci[0]),
+        (y + half).exp().max(record.ratio_ci[1]),
+    ])
 }
 
 /// The batch a record was timed on: every record of one (case, ν, device, batch) comes
@@ -233,24 +345,50 @@ fn unit_of(r: &RatioRecord) -> (String, u64, String, u64) {
     (r.case.clone(), r.nu.to_bits(), r.device.clone(), r.rays)
 }
 
+/// The time per ray of the exact intersection alone (the `none` contender, `total_ns`)
+/// in a record that holds it, as the cull or as the reference.
+fn intersection_ns(r: &RatioRecord) -> Option<f64> {
+    if r.metric != "total_ns" {
+        return None;
+    }
+    if r.reference == "none" {
+        Some(r.reference_ns_per_ray)
+    } else if r.cull == "none" {
+        Some(r.ns_per_ray)
+    } else {
+        None
+    }
+}
+
 /// For each batch ([`unit_of`]), which runs ran in the machine's fast state: those whose
-/// ns per ray summed over the batch's records (each cull's and its reference's) is within
-/// [`SLOW_STATE`] of the fastest run's. At least one run is kept; a run without positive
-/// finite times is kept (nothing to judge it by).
+/// time per ray of the exact intersection alone ([`intersection_ns`]) is within
+/// [`SLOW_STATE`] of the fastest run's. A batch without that record (no `none`
+/// contender, e.g. a GPU or a hand-made file) is judged by the ns per ray summed over its
+/// records instead. At least one run is kept; a run without positive finite times is
+/// kept (nothing to judge it by).
 fn fast_state_runs(
     runs: &[Vec<RatioRecord>],
 ) -> std::collections::BTreeMap<(String, u64, String, u64), Vec<bool>> {
-    let mut cost: std::collections::BTreeMap<_, Vec<f64>> = std::collections::BTreeMap::new();
+    let mut cost: std::collections::BTreeMap<_, (Vec<f64>, Vec<Option<f64>>)> =
+        std::collections::BTreeMap::new();
     for (k, run) in runs.iter().enumerate() {
         for r in run {
-            let c = cost
+            let (summed, alone) = cost
                 .entry(unit_of(r))
-                .or_insert_with(|| vec![0.0; runs.len()]);
-            c[k] += r.ns_per_ray + r.reference_ns_per_ray;
+                .or_insert_with(|| (vec![0.0; runs.len()], vec![None; runs.len()]));
+            summed[k] += r.ns_per_ray + r.reference_ns_per_ray;
+            if alone[k].is_none() {
+                alone[k] = intersection_ns(r);
+            }
         }
     }
     cost.into_iter()
-        .map(|(unit, c)| {
+        .map(|(unit, (summed, alone))| {
+            let c: Vec<f64> = if alone.iter().all(Option::is_some) {
+                alone.into_iter().flatten().collect()
+            } else {
+                summed
+            };
             let fastest = c
                 .iter()
                 .copied()
@@ -293,6 +431,7 @@ mod tests {
             runs_set_aside: 0,
             run_ratios: Vec::new(),
             ratio_ci_between: None,
+            run_spread: None,
         }
     }
 
@@ -422,6 +561,83 @@ mod tests {
         assert!(e.to_string().contains("aabb"), "{e}");
         let e = combine_runs(&[vec![a.clone()], vec![]]).unwrap_err();
         assert!(e.to_string().contains("0 records, not 1"), "{e}");
+    }
+
+    /// The state is judged by the exact intersection's own time when the batch has it:
+    /// here the quartic (`none`) took 20 % longer in run 2 while the cull in front of it
+    /// barely moved, so the pair's summed time stayed within 8 %; run 2 is set aside for
+    /// every record of the batch all the same.
+    #[test]
+    fn the_intersection_alone_judges_the_state() {
+        let at =
+            |cull: &str, reference: &str, ratio: f64, ns: f64, reference_ns: f64| RatioRecord {
+                cull: cull.into(),
+                reference: reference.into(),
+                ns_per_ray: ns,
+                reference_ns_per_ray: reference_ns,
+                ..record(ratio, [ratio * 0.999, ratio * 1.001])
+            };
+        let run = |quartic: f64, cychosz: f64| {
+            vec![
+                at("cychosz", "none", cychosz / quartic, cychosz, quartic),
+                at("skala", "cychosz", 0.5, 0.5 * cychosz, cychosz),
+            ]
+        };
+        let runs = [run(52.0, 66.0), run(62.4, 67.0), run(52.3, 66.2)];
+        // Summed, run 2 is only 6 % above run 1: the old rule kept it.
+        let summed = |r: &[RatioRecord]| -> f64 {
+            r.iter()
+                .map(|x| x.ns_per_ray + x.reference_ns_per_ray)
+                .sum()
+        };
+        assert!(summed(&runs[1]) < 1.08 * summed(&runs[0]));
+        let c = combine_runs(&runs).unwrap();
+        for x in &c {
+            assert_eq!((x.runs, x.runs_set_aside), (2, 1), "{x:?}");
+        }
+        assert!((c[0].ratio - (66.0f64 / 52.0 * 66.2 / 52.3).sqrt()).abs() < 1e-12);
+    }
+
+    /// Two runs that agree exactly promise nothing about a third: the spread pooled over
+    /// the comparison's other batches widens their interval, and gives a record with one
+    /// run kept an interval at all. A record whose own spread gives the wider interval keeps
+    /// it.
+    #[test]
+    fn the_pooled_spread_widens_intervals_that_agree_by_chance() {
+        let at = |case: &str, ratio: f64| RatioRecord {
+            case: case.into(),
+            ..record(ratio, [ratio * 0.999, ratio * 1.001])
+        };
+        // Batches a, b: ±1 % between the runs; c: identical runs; d: ±3 %.
+        let runs = vec![
+            vec![at("a", 1.01), at("b", 0.99), at("c", 1.0), at("d", 1.03)],
+            vec![at("a", 0.99), at("b", 1.01), at("c", 1.0), at("d", 0.97)],
+        ];
+        let c = combine_runs(&runs).unwrap();
+        let own = |hi: f64, lo: f64| (hi / lo).ln() / 2f64.sqrt();
+        let pooled = ((2.0 * own(1.01, 0.99).powi(2) + own(1.03, 0.97).powi(2)) / 4.0).sqrt();
+        let spread = |i: usize| c[i].run_spread.expect("a spread");
+        assert!((spread(2).log_sd - pooled).abs() < 1e-12, "{:?}", spread(2));
+        assert_eq!((spread(2).df, spread(2).pooled), (4, true));
+        let [lo, hi] = c[2].ratio_ci_between.unwrap();
+        let half = t_975(4) * pooled / 2f64.sqrt();
+        assert!((hi.ln() - half).abs() < 1e-12 && (lo.ln() + half).abs() < 1e-12);
+        // Batch d's own spread gives the wider interval: kept, with its own degree of freedom.
+        assert!(!spread(3).pooled && spread(3).df == 1);
+        assert!((spread(3).log_sd - own(1.03, 0.97)).abs() < 1e-12);
+        // One run kept: the pool's spread gives it a between-run interval.
+        let mut slow = runs.clone();
+        slow[1][2].reference_ns_per_ray = 20.0;
+        let c = combine_runs(&slow).unwrap();
+        assert_eq!((c[2].runs, c[2].runs_set_aside), (1, 1));
+        assert!(c[2].run_ratios.is_empty());
+        let [lo, hi] = c[2].ratio_ci_between.expect("the pool's interval");
+        assert!(lo < 0.99 && 1.01 < hi, "{lo} {hi}");
+        let [plo, phi] = next_run_interval_of(&c[2], 1).unwrap();
+        // A next single run: √(1/1 + 1/1) times the spread, against √(1/1) for the mean.
+        let ratio = (phi / plo).ln() / (hi / lo).ln();
+        assert!((ratio - 2f64.sqrt()).abs() < 1e-9, "{ratio}");
+        assert_eq!(next_run_interval_of(&c[2], 0), None);
     }
 
     /// A run whose batch took 20 % longer per ray ran in a slow state: set aside, counted,

@@ -127,6 +127,7 @@ pub(super) fn run(
                     runs_set_aside: 0,
                     run_ratios: Vec::new(),
                     ratio_ci_between: None,
+                    run_spread: None,
                 });
             }
             let ns = median(mine) / rays;
