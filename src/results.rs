@@ -359,9 +359,9 @@ pub struct RatioRecord {
     /// without it is one run, as every record was before the field existed.
     #[serde(default = "one_run")]
     pub runs: u64,
-    /// Runs set aside as run in a slow state of the machine (their time per ray for the
-    /// pair more than [`crate::paired::runs::SLOW_STATE`] above the fastest run's); `runs`
-    /// counts those kept. Absent when none was.
+    /// Runs set aside as run in a slow state of the machine (the batch's exact
+    /// intersection alone took more than [`crate::paired::runs::SLOW_STATE`] longer per
+    /// ray than in its fastest run); `runs` counts those kept. Absent when none was.
     #[serde(default, skip_serializing_if = "is_zero")]
     pub runs_set_aside: u64,
     /// Each kept run's own ratio (its median over its rounds), in run order; absent for a

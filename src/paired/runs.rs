@@ -279,7 +279,7 @@ fn comparison_of(r: &RatioRecord) -> (String, String, String, String) {
     )
 }
 
-/// Per comparison ([`comparison_of`]), the run-to-run spread pooled over every record
+/// Per comparison (metric, reference, precision, device), the run-to-run spread pooled over every record
 /// (each cull, case and ν) with two runs or more: `s² = Σ Σₖ (yₖ − ȳ)² / Σ (K − 1)` on
 /// `yₖ = ln rₖ`, with `Σ (K − 1)` degrees of freedom (`pooled: true`).
 ///

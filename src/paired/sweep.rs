@@ -58,14 +58,16 @@ pub const DEFAULT_BATCH: usize = 1024;
 
 impl PairedOptions {
     /// `seconds` in all: 5 % (at most 1 s) warms up, the rest is measured in visits of
-    /// about 0.1 s.
+    /// about 25 ms: the machine's slow state comes in spells of milliseconds to seconds
+    /// (docs/results.md), and short visits spread each batch's rounds over both states,
+    /// so that its quietest rounds can come from the fast one.
     pub fn total(seconds: f64, batch: usize) -> PairedOptions {
         let warm_up = (0.05 * seconds).min(1.0);
         PairedOptions {
             batch,
             warm_up: Duration::from_secs_f64(warm_up),
             budget: Duration::from_secs_f64(seconds - warm_up),
-            visit: Duration::from_millis(100),
+            visit: Duration::from_millis(25),
             min_rounds: 40,
             batch_isa: None,
             run: 0,
