@@ -59,15 +59,12 @@ pub fn t_975(df: usize) -> f64 {
 /// text): `exp(ȳ ± t₀.₉₇₅,K−1 · s / √K)` on `yₖ = ln rₖ`. `None` for fewer than two runs
 /// or a ratio that is not a positive finite number.
 pub fn between_run_interval(run_ratios: &[f64]) -> Option<[f64; 2]> {
-    let k = run_ratios.len();
-    if k < 2 || !run_ratios.iter().all(|r| r.is_finite() && *r > 0.0) {
-        return None;
-    }
-    let y: Vec<f64> = run_ratios.iter().map(|r| r.ln()).collect();
-    let mean = y.iter().sum::<f64>() / k as f64;
-    let var = y.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (k - 1) as f64;
-    let half = t_975(k - 1) * (var / k as f64).sqrt();
-    Some([(mean - half).exp(), (mean + half).exp()])
+    let s = own_spread(run_ratios)?;
+    let k = run_ratios.len() as f64;
+    Some(around(
+        log_mean(run_ratios),
+        t_975(k as usize - 1) * s.log_sd / k.sqrt(),
+    ))
 }
 
 /// Where the geometric mean of `next` further runs should land, 95 %: the prediction
@@ -77,22 +74,33 @@ pub fn between_run_interval(run_ratios: &[f64]) -> Option<[f64; 2]> {
 /// 2006): a promise about the next run needs the `1/next` term. `None` as for
 /// [`between_run_interval`], or for `next = 0`.
 pub fn next_run_interval(run_ratios: &[f64], next: usize) -> Option<[f64; 2]> {
-    let k = run_ratios.len();
-    if k < 2 || next == 0 || !run_ratios.iter().all(|r| r.is_finite() && *r > 0.0) {
-        return None;
-    }
-    let y: Vec<f64> = run_ratios.iter().map(|r| r.ln()).collect();
-    let mean = y.iter().sum::<f64>() / k as f64;
-    let var = y.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (k - 1) as f64;
-    let half = t_975(k - 1) * (var * (1.0 / k as f64 + 1.0 / next as f64)).sqrt();
-    Some([(mean - half).exp(), (mean + half).exp()])
+    let s = own_spread(run_ratios).filter(|_| next > 0)?;
+    let k = run_ratios.len() as f64;
+    let half = t_975(k as usize - 1) * s.log_sd * (1.0 / k + 1.0 / next as f64).sqrt();
+    Some(around(log_mean(run_ratios), half))
+}
+
+/// `[exp(y − half), exp(y + half)]`: an interval on the log scale, back in ratios.
+fn around(y: f64, half: f64) -> [f64; 2] {
+    [(y - half).exp(), (y + half).exp()]
+}
+
+/// `interval` widened where needed to hold `within`: a spread between runs never makes a
+/// figure surer than its rounds.
+fn holding(interval: [f64; 2], within: [f64; 2]) -> [f64; 2] {
+    [interval[0].min(within[0]), interval[1].max(within[1])]
+}
+
+/// The mean of the logarithms of `ratios`, `ȳ`.
+fn log_mean(ratios: &[f64]) -> f64 {
+    ratios.iter().map(|r| r.ln()).sum::<f64>() / ratios.len() as f64
 }
 
 /// The within-run interval of K runs pooled (see the module text), around the geometric
 /// mean of `run_ratios`, from each run's interval `run_cis`; for one run, its own interval.
 pub fn pooled_within_interval(run_ratios: &[f64], run_cis: &[[f64; 2]]) -> [f64; 2] {
     let k = run_ratios.len() as f64;
-    let mean = run_ratios.iter().map(|r| r.ln()).sum::<f64>() / k;
+    let mean = log_mean(run_ratios);
     let side = |f: &dyn Fn(f64, [f64; 2]) -> f64| {
         run_ratios
             .iter()
@@ -208,9 +216,8 @@ pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsD
                 .collect();
             let ratios: Vec<f64> = of_runs.iter().map(|r| r.ratio).collect();
             let cis: Vec<[f64; 2]> = of_runs.iter().map(|r| r.ratio_ci).collect();
-            let mean = ratios.iter().map(|r| r.ln()).sum::<f64>() / ratios.len() as f64;
             RatioRecord {
-                ratio: mean.exp(),
+                ratio: log_mean(&ratios).exp(),
                 ratio_ci: pooled_within_interval(&ratios, &cis),
                 rounds: of_runs.iter().map(|r| r.rounds).sum(),
                 rounds_measured: all.iter().map(|r| r.rounds_measured).sum(),
@@ -237,11 +244,7 @@ pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsD
         };
         r.ratio_ci_between = r.run_spread.map(|s| {
             let half = t_975(s.df as usize) * s.log_sd / (r.runs as f64).sqrt();
-            let y = r.ratio.ln();
-            [
-                ((y - half).exp()).min(r.ratio_ci[0]),
-                ((y + half).exp()).max(r.ratio_ci[1]),
-            ]
+            holding(around(r.ratio.ln(), half), r.ratio_ci)
         });
         if r.runs < 2 {
             r.run_ratios.clear();
@@ -258,9 +261,12 @@ fn own_spread(run_ratios: &[f64]) -> Option<RunSpread> {
     if k < 2 || !run_ratios.iter().all(|r| r.is_finite() && *r > 0.0) {
         return None;
     }
-    let y: Vec<f64> = run_ratios.iter().map(|r| r.ln()).collect();
-    let mean = y.iter().sum::<f64>() / k as f64;
-    let var = y.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (k - 1) as f64;
+    let mean = log_mean(run_ratios);
+    let var = run_ratios
+        .iter()
+        .map(|r| (r.ln() - mean).powi(2))
+        .sum::<f64>()
+        / (k - 1) as f64;
     Some(RunSpread {
         log_sd: var.sqrt(),
         df: (k - 1) as u64,
@@ -331,11 +337,7 @@ pub fn next_run_interval_of(record: &RatioRecord, next: usize) -> Option<[f64; 2
     }
     let half =
         t_975(s.df as usize) * s.log_sd * (1.0 / record.runs as f64 + 1.0 / next as f64).sqrt();
-    let y = record.ratio.ln();
-    Some([
-        (y - half).exp().min(record.ratio_ci[0]),
-        (y + half).exp().max(record.ratio_ci[1]),
-    ])
+    Some(holding(around(record.ratio.ln(), half), record.ratio_ci))
 }
 
 /// The batch a record was timed on: every record of one (case, ν, device, batch) comes
