@@ -15,8 +15,9 @@
 
 mod common;
 
+use common::adversarial::{DEVICE_T_TOLERANCE_REL, WIDE_NUS, edge_sets, escalating_families};
 use common::{family, pairs, pushed_back};
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use std::io::Write;
@@ -26,9 +27,7 @@ use torus_cull::gpu::{GpuCull, GpuError, GpuIntersector};
 use torus_cull::{F32Verdict, Ray, Torus, intersect, intersect_f32_certified};
 use torus_cull_lab::oracle::{OracleClass, Query, reference_roots};
 use torus_cull_lab::workload::Case;
-use torus_cull_lab::workload::adversarial::{
-    SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
-};
+use torus_cull_lab::workload::adversarial::SpecialCircle;
 
 /// The adapter, opened once for every test; `None` (after one loud line) without one.
 fn gpu() -> Option<&'static GpuIntersector> {
@@ -228,7 +227,6 @@ impl Tally {
 }
 
 /// ν of the generator families (the hole needs ν ≥ 1.01).
-const NUS: [f64; 6] = [1.01, 1.5, 3.0, 10.0, 100.0, 1000.0];
 
 #[test]
 fn generators_near_and_far() {
@@ -240,7 +238,7 @@ fn generators_near_and_far() {
             .map(|_| Case::ALL.iter().map(|_| Tally::default()).collect())
             .collect();
         for (c, &case) in Case::ALL.iter().enumerate() {
-            for nu in NUS {
+            for nu in WIDE_NUS {
                 if nu < case.min_nu() {
                     continue;
                 }
@@ -292,15 +290,6 @@ fn generators_near_and_far() {
     }
 }
 
-/// A torus-frame line (point, unit direction, f64) as a world ray starting 3·(R + r)
-/// back along it.
-fn world_ray(torus: &Torus, point: DVec3, dir: DVec3) -> Option<Ray> {
-    let back = 3.0 * f64::from(torus.outer_radius());
-    let m = torus.to_local_rotation_f64().transpose();
-    let origin = torus.center().as_dvec3() + m * (point - dir * back);
-    Ray::new(origin.as_vec3(), (m * dir).as_vec3()).ok()
-}
-
 #[test]
 fn adversarial_lines() {
     let Some(gpu) = gpu() else { return };
@@ -321,30 +310,13 @@ fn adversarial_lines() {
             tallies[k][slot].check(gpu, cull, torus, rays, &answers);
         }
     };
-    for nu in [1.01, 1.1, 2.0, 8.0, 100.0, 1000.0] {
-        for major in [1e-3f32, 1.0, 1e3] {
-            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
-            let (big, small) = (
-                f64::from(torus.major_radius()),
-                f64::from(torus.minor_radius()),
-            );
-            let rays: Vec<Ray> = (0..400)
-                .filter_map(|_| {
-                    let (p, d) = hole_edge_line(&mut rng, big, small);
-                    world_ray(&torus, p, d)
-                })
-                .collect();
-            check(0, &torus, &rays);
-            for (i, circle) in SpecialCircle::ALL.into_iter().enumerate() {
-                let rays: Vec<Ray> = (0..200)
-                    .filter_map(|i| {
-                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
-                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
-                        world_ray(&torus, p, d)
-                    })
-                    .collect();
-                check(1 + i, &torus, &rays);
-            }
+    let edges = edge_sets(&mut rng, &[1.01, 1.1, 2.0, 8.0, 100.0, 1000.0], 400, 200);
+    for (torus, rays) in &edges.hole_edge {
+        check(0, torus, rays);
+    }
+    for (i, per_torus) in edges.tangent.iter().enumerate() {
+        for (torus, rays) in per_torus {
+            check(1 + i, torus, rays);
         }
     }
     for (cull, per_family) in GpuCull::ALL.into_iter().zip(&tallies) {
@@ -793,7 +765,7 @@ fn every_cull_against_the_oracle_and_the_cpu() {
     for &case in Case::ALL {
         for back in [0.0f32, 1e3] {
             let mut set = CullFamily::new(format!("{case} back {back:e}"));
-            for nu in NUS {
+            for nu in WIDE_NUS {
                 if nu < case.min_nu() {
                     continue;
                 }
@@ -820,35 +792,18 @@ fn every_cull_against_the_oracle_and_the_cpu() {
         }
     }
     let mut rng = Pcg64::seed_from_u64(0x0C01_1ADD);
+    let edges = edge_sets(&mut rng, &[1.01, 1.1, 2.0, 8.0, 100.0, 1000.0], 300, 150);
     let mut hole = CullFamily::new("hole_edge_line".into());
+    for (torus, rays) in edges.hole_edge {
+        hole.push(torus, rays);
+    }
     let mut tangent: Vec<CullFamily> = SpecialCircle::ALL
         .iter()
         .map(|c| CullFamily::new(format!("tangent ±1e-6 r {}", c.name())))
         .collect();
-    for nu in [1.01, 1.1, 2.0, 8.0, 100.0, 1000.0] {
-        for major in [1e-3f32, 1.0, 1e3] {
-            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
-            let (big, small) = (
-                f64::from(torus.major_radius()),
-                f64::from(torus.minor_radius()),
-            );
-            let rays: Vec<Ray> = (0..300)
-                .filter_map(|_| {
-                    let (p, d) = hole_edge_line(&mut rng, big, small);
-                    world_ray(&torus, p, d)
-                })
-                .collect();
-            hole.push(torus, rays);
-            for (circle, family) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
-                let rays: Vec<Ray> = (0..150)
-                    .filter_map(|i| {
-                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
-                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
-                        world_ray(&torus, p, d)
-                    })
-                    .collect();
-                family.push(torus, rays);
-            }
+    for (family, per_torus) in tangent.iter_mut().zip(edges.tangent) {
+        for (torus, rays) in per_torus {
+            family.push(torus, rays);
         }
     }
     families.push(hole);
@@ -929,14 +884,6 @@ fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
         assert!(!certified.failed(), "{name}: {certified:?}");
     }
 }
-
-/// Rays on their torus.
-type RaySet = (Torus, Vec<Ray>);
-
-/// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between a device-finished hit (its t
-/// rounded to f32, as the CPU's f64 path rounds it) and the oracle's first root, or the
-/// CPU's f64 answer: tests/intersect_vs_oracle.rs's bound for the CPU's f64 path.
-const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
 
 /// One family's device finish: rays by who answered, and what the device's answers were
 /// checked against.
@@ -1073,92 +1020,7 @@ fn escalated_rays_are_finished_on_the_device_in_f64() {
         );
         return;
     }
-    let mut families: Vec<(String, Vec<RaySet>)> = Vec::new();
-    let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
-        family(case, nu, n, seed)
-            .iter()
-            .map(|batch| {
-                let torus = batch.torus;
-                let rays = pairs(std::slice::from_ref(batch))
-                    .map(|(_, ray)| {
-                        if back == 0.0 {
-                            *ray
-                        } else {
-                            pushed_back(ray, back * torus.outer_radius())
-                        }
-                    })
-                    .collect();
-                (torus, rays)
-            })
-            .collect::<Vec<_>>()
-    };
-    families.push((
-        "hole ν=1.01".into(),
-        batches(Case::Hole, 1.01, 4000, 0xF1, 0.0),
-    ));
-    for nu in NUS {
-        families.push((
-            format!("grazing ν={nu}"),
-            batches(Case::Grazing, nu, 1000, 0xF2 ^ nu.to_bits(), 0.0),
-        ));
-    }
-    families.push((
-        "grazing ν=1.01 back 1e5·(R+r)".into(),
-        batches(Case::Grazing, 1.01, 1000, 0xF3, 1e5),
-    ));
-    let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
-    let mut hole_edge = Vec::new();
-    let mut tangent: Vec<Vec<RaySet>> = SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
-    for nu in [1.01, 2.0, 100.0] {
-        for major in [1e-3f32, 1.0, 1e3] {
-            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
-            let (big, small) = (
-                f64::from(torus.major_radius()),
-                f64::from(torus.minor_radius()),
-            );
-            let rays: Vec<Ray> = (0..300)
-                .filter_map(|_| {
-                    let (p, d) = hole_edge_line(&mut rng, big, small);
-                    world_ray(&torus, p, d)
-                })
-                .collect();
-            hole_edge.push((torus, rays));
-            for (circle, slot) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
-                let rays: Vec<Ray> = (0..200)
-                    .filter_map(|i| {
-                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
-                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
-                        world_ray(&torus, p, d)
-                    })
-                    .collect();
-                slot.push((torus, rays));
-            }
-        }
-    }
-    families.push(("hole_edge_line".into(), hole_edge));
-    // Secondary rays from hit points (Ray::from_surface): the f32-check families.
-    for name in [
-        "spawned_bounce",
-        "spawned_bounce_scene_eps",
-        "spawned_grazing",
-        "spawned_across",
-    ] {
-        let family = torus_cull_lab::f32_check::families::all()
-            .into_iter()
-            .find(|f| f.name == name)
-            .expect("an f32-check family");
-        let mut sets: Vec<RaySet> = Vec::new();
-        for (torus, ray) in family.generate(100, 0xF1_5E64).unwrap() {
-            match sets.last_mut() {
-                Some((last, rays)) if *last == torus => rays.push(ray),
-                _ => sets.push((torus, vec![ray])),
-            }
-        }
-        families.push((name.into(), sets));
-    }
-    for (circle, sets) in SpecialCircle::ALL.into_iter().zip(tangent) {
-        families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));
-    }
+    let families = escalating_families(1);
     let mut failures = Vec::new();
     let mut total_device = 0;
     for (name, sets) in &families {

@@ -26,12 +26,12 @@ mod example;
 
 mod common;
 
-use common::{family, pairs, pushed_back};
+use common::adversarial::{DEVICE_T_TOLERANCE_REL, escalating_families};
 use example::{
     Renderer, combined_shader, combined_shader_f64, compare, compare_f64, example_rays,
     example_torus, prepare_both, validate, validate_f64,
 };
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::io::Write;
@@ -39,10 +39,6 @@ use torus_cull::gpu::{
     Finished, GpuCull, GpuIntersector, ModuleTorus, PreparedRay, wgsl_finish_module, wgsl_module,
 };
 use torus_cull::{F32Verdict, Ray, Torus, intersect};
-use torus_cull_lab::workload::Case;
-use torus_cull_lab::workload::adversarial::{
-    SpecialCircle, hole_edge_line, random_pose_torus, tangent_line,
-};
 
 /// The library's own kernel, where an adapter exists.
 fn kernel() -> Option<GpuIntersector> {
@@ -196,111 +192,6 @@ fn the_f64_shader_validates_with_float64_without_an_adapter() {
     assert!(validate_f64(&clash).is_err());
 }
 
-/// A torus-frame line (point, unit direction, f64) as a world ray starting 3·(R + r)
-/// back along it (tests/gpu.rs).
-fn world_ray(torus: &Torus, point: DVec3, dir: DVec3) -> Option<Ray> {
-    let back = 3.0 * f64::from(torus.outer_radius());
-    let m = torus.to_local_rotation_f64().transpose();
-    let origin = torus.center().as_dvec3() + m * (point - dir * back);
-    Ray::new(origin.as_vec3(), (m * dir).as_vec3()).ok()
-}
-
-type RaySet = (Torus, Vec<Ray>);
-
-/// tests/gpu.rs's families that escalate (`escalated_rays_are_finished_on_the_device_in_f64`),
-/// at half its sizes.
-fn escalating_families() -> Vec<(String, Vec<RaySet>)> {
-    let mut families: Vec<(String, Vec<RaySet>)> = Vec::new();
-    let batches = |case: Case, nu: f64, n: usize, seed: u64, back: f32| {
-        family(case, nu, n, seed)
-            .iter()
-            .map(|batch| {
-                let torus = batch.torus;
-                let rays = pairs(std::slice::from_ref(batch))
-                    .map(|(_, ray)| {
-                        if back == 0.0 {
-                            *ray
-                        } else {
-                            pushed_back(ray, back * torus.outer_radius())
-                        }
-                    })
-                    .collect();
-                (torus, rays)
-            })
-            .collect::<Vec<_>>()
-    };
-    families.push((
-        "hole ν=1.01".into(),
-        batches(Case::Hole, 1.01, 2000, 0xF1, 0.0),
-    ));
-    for nu in [1.01, 1.5, 3.0, 10.0, 100.0, 1000.0] {
-        families.push((
-            format!("grazing ν={nu}"),
-            batches(Case::Grazing, nu, 500, 0xF2 ^ f64::to_bits(nu), 0.0),
-        ));
-    }
-    families.push((
-        "grazing ν=1.01 back 1e5·(R+r)".into(),
-        batches(Case::Grazing, 1.01, 500, 0xF3, 1e5),
-    ));
-    let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
-    let mut hole_edge = Vec::new();
-    let mut tangent: Vec<Vec<RaySet>> = SpecialCircle::ALL.iter().map(|_| Vec::new()).collect();
-    for nu in [1.01, 2.0, 100.0] {
-        for major in [1e-3f32, 1.0, 1e3] {
-            let torus = random_pose_torus(&mut rng, major, major / nu as f32);
-            let (big, small) = (
-                f64::from(torus.major_radius()),
-                f64::from(torus.minor_radius()),
-            );
-            let rays: Vec<Ray> = (0..150)
-                .filter_map(|_| {
-                    let (p, d) = hole_edge_line(&mut rng, big, small);
-                    world_ray(&torus, p, d)
-                })
-                .collect();
-            hole_edge.push((torus, rays));
-            for (circle, slot) in SpecialCircle::ALL.into_iter().zip(&mut tangent) {
-                let rays: Vec<Ray> = (0..100)
-                    .filter_map(|i| {
-                        let delta = if i % 2 == 0 { 1e-6 } else { -1e-6 };
-                        let (p, d) = tangent_line(&mut rng, big, small, circle, delta);
-                        world_ray(&torus, p, d)
-                    })
-                    .collect();
-                slot.push((torus, rays));
-            }
-        }
-    }
-    families.push(("hole_edge_line".into(), hole_edge));
-    for name in [
-        "spawned_bounce",
-        "spawned_bounce_scene_eps",
-        "spawned_grazing",
-        "spawned_across",
-    ] {
-        let family = torus_cull_lab::f32_check::families::all()
-            .into_iter()
-            .find(|f| f.name == name)
-            .expect("an f32-check family");
-        let mut sets: Vec<RaySet> = Vec::new();
-        for (torus, ray) in family.generate(100, 0xF1_5E64).unwrap() {
-            match sets.last_mut() {
-                Some((last, rays)) if *last == torus => rays.push(ray),
-                _ => sets.push((torus, vec![ray])),
-            }
-        }
-        families.push((name.into(), sets));
-    }
-    for (circle, sets) in SpecialCircle::ALL.into_iter().zip(tangent) {
-        families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));
-    }
-    families
-}
-
-/// |t − t_CPU| / max(|t_CPU|, (R + r)/|d|) allowed for a device-finished hit (tests/gpu.rs).
-const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
-
 #[test]
 fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
     let renderer = match Renderer::new() {
@@ -326,7 +217,7 @@ fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
     );
     let mut failures = Vec::new();
     let (mut total, mut total_device) = (0, 0);
-    for (name, sets) in escalating_families() {
+    for (name, sets) in escalating_families(2) {
         let (mut rays_n, mut device, mut host, mut lib_device, mut lib_host) = (0, 0, 0, 0, 0);
         let (mut differ, mut missed, mut invented, mut same_who) = (0, 0, 0, 0);
         let (mut both_hit, mut same_t) = (0, 0);

@@ -4,6 +4,8 @@
 use torus_cull::{Ray, Torus};
 use torus_cull_lab::workload::{Batch, Case, Pose, generate};
 
+pub mod adversarial;
+
 /// The ν values the conservativeness claims are tested at.
 pub const NUS: [f64; 7] = [1.1, 1.5, 2.0, 3.0, 5.0, 10.0, 32.0];
 
