@@ -560,6 +560,39 @@ mod tests {
         let kernel = kernel_source();
         assert!(kernel.starts_with(&module));
         assert!(kernel.contains(KERNEL_BODY));
+        let parsed = naga::front::wgsl::parse_str(&module)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&module)));
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::default(),
+        )
+        .validate(&parsed)
+        .unwrap_or_else(|e| panic!("{e:?}"));
+        assert_includable(
+            &module,
+            &parsed,
+            &["torus_intersect", "torus_cull_keeps"],
+            &[
+                "const TORUS_HIT: u32 = 1u;",
+                "const TORUS_ESCALATE: u32 = 2u;",
+                "const TORUS_CULL_SKALA: u32 = 5u;",
+                "const TORUS_CULL_DISCRIMINANT: u32 = 8u;",
+                "const TORUS_WHY_NON_FINITE_LINE: u32 = 1u;",
+                "const TORUS_WHY_T_ERROR: u32 = 7u;",
+            ],
+        );
+        assert_prefixed(&parsed, 60);
+    }
+
+    /// What a module a renderer includes must be: no binding and no entry point (the
+    /// renderer declares its own), the documented `entries` among its functions, and the
+    /// documented constant `lines` in its text.
+    fn assert_includable(
+        text: &str,
+        parsed: &wgpu::naga::Module,
+        entries: &[&str],
+        lines: &[&str],
+    ) {
         for absent in [
             "@group",
             "@binding",
@@ -567,38 +600,22 @@ mod tests {
             "var<uniform>",
             "var<storage",
         ] {
-            assert!(!module.contains(absent), "{absent} in the module");
+            assert!(!text.contains(absent), "{absent} in the module");
         }
-        let parsed = naga::front::wgsl::parse_str(&module)
-            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&module)));
         assert!(parsed.entry_points.is_empty());
         assert!(parsed.global_variables.is_empty());
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::default(),
-        )
-        .validate(&parsed)
-        .unwrap_or_else(|e| panic!("{e:?}"));
-        for entry in ["torus_intersect", "torus_cull_keeps"] {
+        for entry in entries {
             assert!(
                 parsed
                     .functions
                     .iter()
-                    .any(|(_, f)| f.name.as_deref() == Some(entry)),
+                    .any(|(_, f)| f.name.as_deref() == Some(*entry)),
                 "{entry}"
             );
         }
-        for line in [
-            "const TORUS_HIT: u32 = 1u;",
-            "const TORUS_ESCALATE: u32 = 2u;",
-            "const TORUS_CULL_SKALA: u32 = 5u;",
-            "const TORUS_CULL_DISCRIMINANT: u32 = 8u;",
-            "const TORUS_WHY_NON_FINITE_LINE: u32 = 1u;",
-            "const TORUS_WHY_T_ERROR: u32 = 7u;",
-        ] {
-            assert!(module.contains(line), "{line}");
+        for line in lines {
+            assert!(text.contains(line), "{line}");
         }
-        assert_prefixed(&parsed, 60);
     }
 
     /// The global names of `module`: its functions, constants and structs.
@@ -657,36 +674,19 @@ mod tests {
         let pass = finish_source();
         assert!(pass.starts_with(&module));
         assert!(pass.ends_with(FINISH_BODY));
-        for absent in [
-            "@group",
-            "@binding",
-            "@compute",
-            "var<uniform>",
-            "var<storage",
-        ] {
-            assert!(!module.contains(absent), "{absent} in the f64 module");
-        }
         let parsed = validate_f64(&module).unwrap_or_else(|e| panic!("{e}"));
-        assert!(parsed.entry_points.is_empty());
-        assert!(parsed.global_variables.is_empty());
-        for entry in ["torus_finish_f64", "torus_finish_wanted"] {
-            assert!(
-                parsed
-                    .functions
-                    .iter()
-                    .any(|(_, f)| f.name.as_deref() == Some(entry)),
-                "{entry}"
-            );
-        }
-        for line in [
-            "const TORUS_F64_FOLLOW: u32 = 0u;",
-            "const TORUS_F64_HOST: u32 = 2u;",
-            "const TORUS_F64_SURFACE_ALWAYS: u32 = 4u;",
-            "const TORUS_F64_STATUS_FRONT: u32 = 1u;",
-            "const TORUS_F64_STATUS_HOST: u32 = 4u;",
-        ] {
-            assert!(module.contains(line), "{line}");
-        }
+        assert_includable(
+            &module,
+            &parsed,
+            &["torus_finish_f64", "torus_finish_wanted"],
+            &[
+                "const TORUS_F64_FOLLOW: u32 = 0u;",
+                "const TORUS_F64_HOST: u32 = 2u;",
+                "const TORUS_F64_SURFACE_ALWAYS: u32 = 4u;",
+                "const TORUS_F64_STATUS_FRONT: u32 = 1u;",
+                "const TORUS_F64_STATUS_HOST: u32 = 4u;",
+            ],
+        );
         assert_prefixed(&parsed, 40);
         // No name in common with the f32 module (`__…` are naga's own).
         let f32_module = wgpu::naga::front::wgsl::parse_str(&wgsl_module()).expect("parses");
