@@ -378,8 +378,8 @@ pub struct RatioRecord {
     pub ratio_ci_between: Option<[f64; 2]>,
     /// The run-to-run spread behind [`ratio_ci_between`](Self::ratio_ci_between): the
     /// standard deviation of ln(run ratio), this record's own or the one pooled over every
-    /// batch of the same comparison, whichever gives the wider interval (see
-    /// [`crate::paired::runs`]).
+    /// cull and ν of the same comparison on the same case, whichever gives the wider
+    /// interval (see [`crate::paired::runs`]).
     /// Absent where no spread is known (a single run, or files written before it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub run_spread: Option<RunSpread>,

@@ -20,9 +20,10 @@
 //!   give if the runs did not differ (for K = 1, the run's own interval);
 //! * between-run interval: `exp(ȳ ± t₀.₉₇₅,df · s / √K)`, `s` the run-to-run standard
 //!   deviation of the `yₖ` ([`RunSpread`]): the record's own sample one (df = K − 1) or
-//!   the one pooled over every batch of the same comparison ([`pooled_spreads`]; df the
-//!   pool's), whichever gives the wider interval. Widened where needed to hold the within-run
-//!   interval: a few runs that happen to agree do not make a figure surer than its rounds.
+//!   the one pooled over every cull and ν of the same comparison on the same case
+//!   ([`pooled_spreads`]; df the pool's), whichever gives the wider interval. Widened
+//!   where needed to hold the within-run interval: a few runs that happen to agree do
+//!   not make a figure surer than its rounds.
 //!
 //! A record's own spread from 2 to 5 runs is a poor estimate (with K = 3 the t quantile
 //! is 4.30, and two runs that agree by chance give a zero spread); the pool over the
@@ -274,20 +275,29 @@ fn own_spread(run_ratios: &[f64]) -> Option<RunSpread> {
     })
 }
 
-/// The comparison a record makes, whatever the batch: (metric, reference, precision,
-/// device). Its run-to-run spread is pooled over the batches.
-fn comparison_of(r: &RatioRecord) -> (String, String, String, String) {
+/// The comparison a record makes on one kind of rays, whatever the cull and ν: (metric,
+/// reference, precision, device, case). Its run-to-run spread is pooled over those.
+///
+/// The case is part of it because the spread differs by kind of rays: in the bench of
+/// d0e47f6 the f32 / f64 wavefront ratios spread 0.4–1.5 % from run to run on primary
+/// rays and 3.2–4.0 % on secondary ones, and one pool over both gave every primary record
+/// the secondary rays' spread.
+pub type Comparison = (String, String, String, String, String);
+
+fn comparison_of(r: &RatioRecord) -> Comparison {
     (
         r.metric.clone(),
         r.reference.clone(),
         r.precision.clone(),
         r.device.clone(),
+        r.case.clone(),
     )
 }
 
-/// Per comparison (metric, reference, precision, device), the run-to-run spread pooled over every record
-/// (each cull, case and ν) with two runs or more: `s² = Σ Σₖ (yₖ − ȳ)² / Σ (K − 1)` on
-/// `yₖ = ln rₖ`, with `Σ (K − 1)` degrees of freedom (`pooled: true`).
+/// Per comparison (metric, reference, precision, device, case), the run-to-run spread
+/// pooled over every record (each cull and ν) with two runs or more:
+/// `s² = Σ Σₖ (yₖ − ȳ)² / Σ (K − 1)` on `yₖ = ln rₖ`, with `Σ (K − 1)` degrees of freedom
+/// (`pooled: true`).
 ///
 /// One record's 2 to 5 runs estimate its spread poorly: two runs that happen to agree
 /// promise a precision no run gave, and a record with one run kept has none at all. The
@@ -298,7 +308,7 @@ fn comparison_of(r: &RatioRecord) -> (String, String, String, String) {
 #[must_use]
 pub fn pooled_spreads(
     records: &[RatioRecord],
-) -> std::collections::BTreeMap<(String, String, String, String), RunSpread> {
+) -> std::collections::BTreeMap<Comparison, RunSpread> {
     let mut sums: std::collections::BTreeMap<_, (f64, u64)> = std::collections::BTreeMap::new();
     for r in records {
         let Some(own) = own_spread(&r.run_ratios) else {
@@ -606,14 +616,31 @@ mod tests {
     /// it.
     #[test]
     fn the_pooled_spread_widens_intervals_that_agree_by_chance() {
-        let at = |case: &str, ratio: f64| RatioRecord {
-            case: case.into(),
+        let at = |nu: f64, ratio: f64| RatioRecord {
+            nu,
             ..record(ratio, [ratio * 0.999, ratio * 1.001])
         };
-        // Batches a, b: ±1 % between the runs; c: identical runs; d: ±3 %.
+        // Batches of one case at ν = 1, 2: ±1 % between the runs; 3: identical runs;
+        // 4: ±3 %. A batch of another case has its own pool.
+        let other = |ratio: f64| RatioRecord {
+            case: "uniform".into(),
+            ..record(ratio, [ratio * 0.999, ratio * 1.001])
+        };
         let runs = vec![
-            vec![at("a", 1.01), at("b", 0.99), at("c", 1.0), at("d", 1.03)],
-            vec![at("a", 0.99), at("b", 1.01), at("c", 1.0), at("d", 0.97)],
+            vec![
+                at(1.0, 1.01),
+                at(2.0, 0.99),
+                at(3.0, 1.0),
+                at(4.0, 1.03),
+                other(1.02),
+            ],
+            vec![
+                at(1.0, 0.99),
+                at(2.0, 1.01),
+                at(3.0, 1.0),
+                at(4.0, 0.97),
+                other(1.0),
+            ],
         ];
         let c = combine_runs(&runs).unwrap();
         let own = |hi: f64, lo: f64| (hi / lo).ln() / 2f64.sqrt();
@@ -624,9 +651,11 @@ mod tests {
         let [lo, hi] = c[2].ratio_ci_between.unwrap();
         let half = t_975(4) * pooled / 2f64.sqrt();
         assert!((hi.ln() - half).abs() < 1e-12 && (lo.ln() + half).abs() < 1e-12);
-        // Batch d's own spread gives the wider interval: kept, with its own degree of freedom.
+        // ν = 4's own spread gives the wider interval: kept, with its own degree of freedom.
         assert!(!spread(3).pooled && spread(3).df == 1);
         assert!((spread(3).log_sd - own(1.03, 0.97)).abs() < 1e-12);
+        // The other case is in a pool of its own (the value above left it out).
+        assert!((spread(4).log_sd - own(1.02, 1.0)).abs() < 1e-12);
         // One run kept: the pool's spread gives it a between-run interval.
         let mut slow = runs.clone();
         slow[1][2].reference_ns_per_ray = 20.0;
