@@ -1,10 +1,12 @@
-//! Is the machine's slow state a placement or a time? (docs/results.md, "The slow state")
+//! Is the machine's slow state a placement or a time? (docs/results.md, "The slow state
+//! is a time, not a place")
 //!
-//! Times the exact intersection alone (`none`, `total_ns`) of one hole batch, ν = 2, on
-//! every pairing of 8 copies of the torus (rows) with 8 copies of the rays (columns),
-//! row after row: the median ns per ray of 40 passes each. If the slow state followed
-//! where the data landed, whole rows or columns would be slow; if it is a state of the
-//! machine in time, the table switches level part-way through, row-major.
+//! Times the exact intersection alone (`none`, `total_ns`) of one hole batch, ν = 2, for
+//! 8 copies of the torus and the rays, each copy in its own allocation: copy 0, 1, …, 7,
+//! then again, 24 cycles in all, each cell the median ns per ray of 40 passes (about
+//! 5 ms). If the slow state followed where the data landed, some columns (copies) would
+//! be slow in every cycle; if it is a state of the machine in time, whole rows (stretches
+//! of time) switch level together.
 //!
 //!     cargo run --release --example slow_state_probe
 
@@ -28,13 +30,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .collect();
         torus_cull_lab::paired::median(&mut ns)
     };
-    println!("ns per ray of the intersection alone; rows: torus copy, columns: rays copy");
-    for (i, torus) in tori.iter().enumerate() {
-        let row: Vec<String> = rays
+    println!("ns per ray of the intersection alone; rows: cycles in time, columns: copies");
+    for cycle in 0..24 {
+        let row: Vec<String> = tori
             .iter()
-            .map(|r| format!("{:5.1}", median_ns(torus, r)))
+            .zip(&rays)
+            .map(|(torus, r)| format!("{:5.1}", median_ns(torus, r)))
             .collect();
-        println!("t{i} {}", row.join(" "));
+        println!("c{cycle:02} {}", row.join(" "));
     }
     Ok(())
 }
