@@ -31,8 +31,10 @@
 //!
 //! Runs in a slow state of the machine are set aside first ([`SLOW_STATE`]).
 
+use super::contender::Metric;
 use crate::results::{RatioRecord, RunSpread};
 use std::fmt;
+use torus_cull::{CullKind, Named};
 
 /// The two-sided 95 % quantile of Student's t with `df` degrees of freedom, `t₀.₉₇₅,df`:
 /// tabulated (to 3 decimals) up to 30, and beyond by the Cornish–Fisher expansion
@@ -243,10 +245,9 @@ pub fn combine_runs(runs: &[Vec<RatioRecord>]) -> Result<Vec<RatioRecord>, RunsD
             (Some(o), _) => Some(o),
             (None, p) => p,
         };
-        r.ratio_ci_between = r.run_spread.map(|s| {
-            let half = t_975(s.df as usize) * s.log_sd / (r.runs as f64).sqrt();
-            holding(around(r.ratio.ln(), half), r.ratio_ci)
-        });
+        r.ratio_ci_between = r
+            .run_spread
+            .map(|s| spread_interval(r, s, 1.0 / r.runs as f64));
         if r.runs < 2 {
             r.run_ratios.clear();
         }
@@ -345,9 +346,19 @@ pub fn next_run_interval_of(record: &RatioRecord, next: usize) -> Option<[f64; 2
     if next == 0 || record.runs == 0 || !(record.ratio.is_finite() && record.ratio > 0.0) {
         return None;
     }
-    let half =
-        t_975(s.df as usize) * s.log_sd * (1.0 / record.runs as f64 + 1.0 / next as f64).sqrt();
-    Some(holding(around(record.ratio.ln(), half), record.ratio_ci))
+    Some(spread_interval(
+        record,
+        s,
+        1.0 / record.runs as f64 + 1.0 / next as f64,
+    ))
+}
+
+/// `exp(ln r ± t₀.₉₇₅,df · s · √variance_factor)` around `record`'s ratio, with the spread
+/// `s`, widened to hold the within-run interval: the between-run interval for
+/// `variance_factor = 1/K`, the next-run one for `1/K + 1/next`.
+fn spread_interval(record: &RatioRecord, s: RunSpread, variance_factor: f64) -> [f64; 2] {
+    let half = t_975(s.df as usize) * s.log_sd * variance_factor.sqrt();
+    holding(around(record.ratio.ln(), half), record.ratio_ci)
 }
 
 /// The batch a record was timed on: every record of one (case, ν, device, batch) comes
@@ -360,12 +371,13 @@ fn unit_of(r: &RatioRecord) -> (String, u64, String, u64) {
 /// The time per ray of the exact intersection alone (the `none` contender, `total_ns`)
 /// in a record that holds it, as the cull or as the reference.
 fn intersection_ns(r: &RatioRecord) -> Option<f64> {
-    if r.metric != "total_ns" {
+    if r.metric != Metric::TotalNs.name() {
         return None;
     }
-    if r.reference == "none" {
+    let none = CullKind::NoCull.name();
+    if r.reference == none {
         Some(r.reference_ns_per_ray)
-    } else if r.cull == "none" {
+    } else if r.cull == none {
         Some(r.ns_per_ray)
     } else {
         None
