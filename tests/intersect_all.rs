@@ -23,7 +23,7 @@ use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::{Crossings, DRay, Passage, Precision, Ray, Torus, intersect, intersect_all};
-use torus_cull_lab::oracle::{AMBIGUITY_REL, OracleClass, Query, reference_roots};
+use torus_cull_lab::oracle::{AMBIGUITY_REL, OracleClass, Query, on_surface_line, reference_roots};
 use torus_cull_lab::workload::adversarial::{LineFamily, SpecialCircle, family_rays, tangent_line};
 use torus_cull_lab::workload::{Case, Pose, generate, unit_vector};
 
@@ -546,15 +546,16 @@ fn rays_from_a_surface_point() {
                         let Ok(ray) = torus.spawn(&p32, h32.t, d.as_vec3()) else {
                             continue;
                         };
-                        let q = Query::ray(&torus, &ray);
-                        let own = own_window(&torus, &DRay::from(ray));
+                        // The on-surface rule: the line through the surface point.
+                        let q = on_surface_line(&Query::ray(&torus, &ray));
+                        let own = own_window(&torus, &q);
                         tally.check(&what, &q, &answer(&torus, &ray, f64::from), Some(own));
                     } else {
                         let Ok(ray) = torus.spawn(&primary, hit.t, d) else {
                             continue;
                         };
-                        let q = Query::dray(&torus, &ray);
-                        let own = own_window(&torus, &ray);
+                        let q = on_surface_line(&Query::dray(&torus, &ray));
+                        let own = own_window(&torus, &q);
                         tally.check(&what, &q, &answer(&torus, &ray, |t| t), Some(own));
                     }
                 }
@@ -566,19 +567,19 @@ fn rays_from_a_surface_point() {
 }
 
 /// The window around `t = 0` in which the origin's own root lies: δ/|cos θ₀| (δ the
-/// origin's distance from the surface), with 1e-11·(R + r) for the oracle, and the band a
-/// tangency needs to clear (as tests/secondary_rays.rs).
-fn own_window(torus: &Torus, ray: &DRay) -> f64 {
+/// distance from the surface of the query's origin, moved onto it), with 1e-11·(R + r) for
+/// the oracle, and the band a tangency needs to clear (as tests/secondary_rays.rs).
+fn own_window(torus: &Torus, q: &Query) -> f64 {
     let size = torus.outer_radius() as f64;
-    let len = ray.dir().length();
+    let len = q.d.length();
     let to_local = torus.to_local_rotation_f64();
-    let local = to_local * (ray.origin() - torus.center_f64());
+    let local = to_local * (q.o - torus.center_f64());
     let rho = local.x.hypot(local.z);
     let core = DVec3::new(local.x, 0.0, local.z) * (torus.major_radius_f64() / rho);
     let off = local - core;
     let delta = (off.length() - torus.minor_radius_f64()).abs();
     let n = to_local.transpose() * off.normalize();
-    let cos0 = n.dot(ray.dir() / len).abs().max(1e-12);
+    let cos0 = n.dot(q.d / len).abs().max(1e-12);
     4.0 * (delta + 1e-11 * size) / cos0 / len + 10.0 * AMBIGUITY_REL * size / cos0 / len
 }
 

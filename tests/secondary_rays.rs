@@ -20,7 +20,9 @@ use torus_cull::{
     CullKind, DRay, Ray, RayCast, SkalaCull, Torus, intersect, intersect_f32, intersect_f32_culled,
     occluded, occluded_f32, occluded_f32_culled,
 };
-use torus_cull_lab::oracle::{AMBIGUITY_REL, OracleClass, Query, reference_roots};
+use torus_cull_lab::oracle::{
+    OracleClass, Query, classify_from_surface, first_crossing_from_surface,
+};
 use torus_cull_lab::workload::unit_vector;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -108,45 +110,18 @@ fn shift_bound(torus: &Torus, ray: &DRay, t: f64) -> f64 {
     4.0 * delta * (rho0 / rho) / cos / len
 }
 
-/// What the oracle expects of a ray from a surface point: `Some(next)` (the first crossing
-/// after the origin's own, or `None`), or `None` where the answer is not decidable at f64's
-/// resolution (another crossing within the origin's own window, or a tangent).
+/// What the oracle expects of a ray from a surface point (its on-surface rule,
+/// `classify_from_surface`: the origin moved onto the surface, its own crossing
+/// excluded): `Some(next)` (the first crossing after the origin's own, or `None`), or
+/// `None` where the input cannot decide (a tangent at the origin, a crossing not
+/// separable from it, a graze within the origin's own offset).
 fn expected(torus: &Torus, ray: &DRay) -> Option<Option<f64>> {
-    let size = torus.outer_radius() as f64;
-    let len = ray.dir().length();
-    let line = Query::dray(torus, ray).over(f64::NEG_INFINITY, f64::INFINITY);
-    let roots = reference_roots(&line);
-    // The origin's own root lies within δ/|cos θ₀| of 0 (δ its distance from the surface,
-    // θ₀ the angle to the normal there), with 1e-11·(R + r) for the oracle's own error.
-    let (delta, _, n0) = near_surface(torus, ray.origin());
-    let cos0 = n0.dot(ray.dir() / len).abs().max(1e-12);
-    let window = 4.0 * (delta + 1e-11 * size) / cos0 / len;
-    let own = roots
-        .iter()
-        .copied()
-        .min_by(|a, b| a.abs().total_cmp(&b.abs()))?;
-    if own.abs() > window {
-        return None;
+    let query = Query::dray(torus, ray);
+    match classify_from_surface(&query).class {
+        OracleClass::Ambiguous => None,
+        OracleClass::Miss => Some(None),
+        OracleClass::Hit => Some(Some(first_crossing_from_surface(&query)?)),
     }
-    let mut rest = roots.iter().copied().filter(|&t| t != own);
-    if rest.clone().any(|t| t.abs() <= window) {
-        return None;
-    }
-    // A tangent (a double root) is decided outside the oracle's ambiguity band only; the
-    // ray is within the band of the surface near its origin, so the check starts where it
-    // has left the band (and a crossing before that point is undecidable too).
-    let clear = window + 10.0 * AMBIGUITY_REL * size / cos0 / len;
-    if rest.clone().any(|t| t.abs() <= clear) {
-        return None;
-    }
-    let next = rest.find(|&t| t > 0.0);
-    let after = Query::dray(torus, ray)
-        .over(clear, f64::INFINITY)
-        .classify();
-    if after.class == OracleClass::Ambiguous {
-        return None;
-    }
-    Some(next)
 }
 
 #[derive(Default, Debug)]

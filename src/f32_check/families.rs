@@ -103,7 +103,18 @@ pub enum SpawnAim {
     /// At another surface point (area-uniform): across the hole, over or through the
     /// tube, where re-hits are common; about half go into the tube.
     Across,
+    /// From the inner half of the tube (the saddle, where the surface curves toward the
+    /// hole along the ring), within [`SADDLE_TURN`] of the ring's direction, at an angle to
+    /// the tangent plane log-uniform in [`SADDLE_ANGLES`], outward: the surface comes back
+    /// to meet such a ray after an excursion that can be below an f32 origin's rounding.
+    Saddle,
 }
+
+/// The angles above the tangent plane (rad) of the `spawned_saddle` family.
+pub const SADDLE_ANGLES: [f64; 2] = [1e-5, 1e-2];
+/// How far (rad) a `spawned_saddle` ray turns from the ring's direction in the tangent
+/// plane.
+pub const SADDLE_TURN: f64 = 0.05;
 
 /// One family: a name (stable, for the JSON) and what it draws.
 #[derive(Debug, Clone, PartialEq)]
@@ -277,6 +288,13 @@ pub fn all() -> Vec<Family> {
                 scene_eps: false,
             },
         ),
+        (
+            "spawned_saddle",
+            FamilyKind::Spawned {
+                aim: SpawnAim::Saddle,
+                scene_eps: false,
+            },
+        ),
     ] {
         out.push(Family {
             name: name.into(),
@@ -366,12 +384,27 @@ fn surface_point(rng: &mut Pcg64, big: f64, r: f64) -> (DVec3, DVec3) {
     )
 }
 
+/// A point of the inner half of the tube (cos θ < 0, θ uniform) and its outward normal.
+fn saddle_point(rng: &mut Pcg64, big: f64, r: f64) -> (DVec3, DVec3) {
+    let theta = rng.random_range(0.5..1.5) * std::f64::consts::PI;
+    let (radial, _) = random_azimuth(rng);
+    let (st, ct) = theta.sin_cos();
+    (
+        radial * (big + r * ct) + DVec3::Y * (r * st),
+        radial * ct + DVec3::Y * st,
+    )
+}
+
 /// A spawned secondary ray ([`Ray::from_surface`]) from a surface point of `torus`
 /// (posed), aimed by `aim`, over `t ≥ eps` (|d| = 1 but for `Across`, whose `eps` is
 /// divided by |d|).
 fn spawned_ray(rng: &mut Pcg64, torus: &Torus, aim: SpawnAim, eps: f64) -> Option<Ray> {
     let (big, r) = (f64::from(torus.major_radius()), minor(torus));
-    let (p, n) = surface_point(rng, big, r);
+    let (p, n) = if aim == SpawnAim::Saddle {
+        saddle_point(rng, big, r)
+    } else {
+        surface_point(rng, big, r)
+    };
     let t1 = n.any_orthonormal_vector();
     let t2 = n.cross(t1);
     let d = match aim {
@@ -384,6 +417,18 @@ fn spawned_ray(rng: &mut Pcg64, torus: &Torus, aim: SpawnAim, eps: f64) -> Optio
             let sin_out = (1.0 - cos_out * cos_out).sqrt();
             let beta = rng.random_range(0.0..std::f64::consts::TAU);
             n * cos_out + (t1 * beta.cos() + t2 * beta.sin()) * sin_out
+        }
+        SpawnAim::Saddle => {
+            let alpha = log_uniform(rng, SADDLE_ANGLES[0], SADDLE_ANGLES[1]);
+            let turn = rng.random_range(-SADDLE_TURN..SADDLE_TURN);
+            let sign = if rng.random_range(0.0..1.0f64) < 0.5 {
+                -1.0
+            } else {
+                1.0
+            };
+            let ring = DVec3::Y.cross(DVec3::new(p.x, 0.0, p.z)).normalize() * sign;
+            let meridian = n.cross(ring);
+            (ring * turn.cos() + meridian * turn.sin()) * alpha.cos() + n * alpha.sin()
         }
         SpawnAim::Across => {
             let (q, _) = surface_point(rng, big, r);

@@ -1,107 +1,188 @@
 //! The oracle's label for a ray whose origin is a surface point (`Ray::from_surface`),
-//! by the rule of docs/math.md §9: the origin's own crossing is excluded, the rest of the
-//! ray is labelled as any ray is. Computed from the line's reference crossings and
-//! [`Query::classify`] alone (no code of the crate's solver).
+//! by the rule of docs/math.md §9: the origin is the surface point it rounds, its own
+//! crossing is excluded, and the rest of the ray is labelled as any ray is. Computed from
+//! the line's reference crossings and distances alone (no code of the crate's solver).
 //!
-//! **The rule.** Let δ be the origin's distance from the surface and θ₀ the angle between
-//! the direction and the surface's normal at the nearest surface point. The origin's own
-//! crossing lies within the window `w = 4·(δ + 10⁻¹¹·(R + r))/(|cos θ₀|·|d|)` of `t = 0`
-//! (in units of `t`; the 10⁻¹¹ covers the oracle's own error); past
-//! `w′ = w + 10·ε·(R + r)/(|cos θ₀|·|d|)` (ε the ambiguity band) the ray has left the
-//! band around the surface near its origin. Then:
-//! - **ambiguous** when no crossing of the whole line lies within `w` (no own root to
-//!   exclude: the ray leaves the surface tangentially), when a second crossing lies within
-//!   `w′` (not decidable at f64's resolution: as for the literal ray), or when the range
-//!   ends before `w′`;
+//! **The surface point.** The origin `o` is moved onto the surface in f64 (the closed-form
+//! nearest point `p′`, computed here independently of the crate), and the line through
+//! `p′` is labelled: the offset `|o − p′|` is the rounding of a surface point, not
+//! information, so the origin's own crossing is known to f64 rounding. A re-hit close to
+//! the origin (at the saddle, where the surface curves back to meet a ray that leaves it
+//! nearly along the ring) is then found wherever f64 can separate it from the origin: its
+//! existence depends on the angle and the curvature, not on the rounding of the origin
+//! along the normal.
+//!
+//! **The rule.** With θ₀ the angle between the direction and the normal at `p′`, the own
+//! crossing lies within `w = 4·(δ′ + 10⁻¹¹·(R + r))/(|cos θ₀|·|d|)` of `t = 0` (δ′ the
+//! distance of `p′` from the surface, f64 rounding; the 10⁻¹¹ covers the oracle's own
+//! error). The roots within `w` are the origin's. Then:
+//! - **ambiguous** when a crossing lies in `(w, 2w]` (not separable from the origin's),
+//!   or when the line rises (or, into the tube, sinks) by no more than the oracle's error
+//!   `4·10⁻¹¹·(R + r)` before its next crossing (a re-hit that cannot be told from a
+//!   touch at the origin);
 //! - otherwise, for a ray that leaves into the outside, the label, with its margin, of the
-//!   ray over `[max(t_min, w′), t_max]`; for a ray that goes into the tube (inside at
-//!   `w′`), whether its next crossing (where it leaves the tube) lies in the range: hit or
-//!   miss, ambiguous within the band of `t_max`; the margin is still that of the range,
-//!   negative (the ray runs inside the tube).
+//!   line over `[max(t_min, t_a), t_max]`, `t_a` its highest point before its next
+//!   crossing (none: it never comes back, a miss); ambiguous where `|margin| ≤
+//!   ε·(R + r) + 2·|o − p′|`, since the input locates its surface point only to within its
+//!   own offset, and a graze that close is not determined by it;
+//! - for a ray into the tube, whether its next crossing (where it leaves the tube) lies in
+//!   the range: hit or miss, ambiguous within the band of `t_max`; the margin is that of
+//!   the range, negative (the ray runs inside the tube).
 
+use super::frame::LineFrame;
 use super::{AMBIGUITY_REL, OracleClass, OracleLabel, Query, reference_roots};
 use glam::DVec3;
+
+/// The oracle's own error on a distance, × (R + r).
+const OWN_ERROR: f64 = 1e-11;
 
 /// [`Query::classify`] for a ray from a surface point: the rule of the module docs.
 ///
 /// # Panics
 /// As [`Query`].
 pub fn classify_from_surface(query: &Query) -> OracleLabel {
-    let size = query.major + query.minor;
-    let ambiguous = OracleLabel {
-        class: OracleClass::Ambiguous,
-        margin: 0.0,
-    };
-    let len = query.d.length();
-    let (window, clear) = windows(query);
-    let roots = reference_roots(&query.over(f64::NEG_INFINITY, f64::INFINITY));
-    let Some(own) = roots
-        .iter()
-        .copied()
-        .min_by(|a, b| a.abs().total_cmp(&b.abs()))
-    else {
-        return ambiguous;
-    };
-    let second = roots.iter().any(|&t| t != own && t.abs() <= clear);
-    if own.abs() > window || second {
-        return ambiguous;
-    }
-    let lo = query.t_min.max(clear);
-    if lo > query.t_max {
-        return ambiguous;
-    }
-    let outside = query.over(lo, query.t_max).classify();
-    // Into the tube: the next crossing is where the ray leaves it.
-    let (depth, _) = off_surface_at(query, query.o + query.d * clear);
-    if depth >= 0.0 {
-        return outside;
-    }
-    let Some(exit) = roots.iter().copied().find(|&t| t > clear) else {
-        return ambiguous;
-    };
-    if exit < lo {
-        return outside;
-    }
-    if (exit - query.t_max).abs() * len <= 10.0 * AMBIGUITY_REL * size {
-        return ambiguous;
-    }
-    OracleLabel {
-        class: if exit <= query.t_max {
-            OracleClass::Hit
-        } else {
-            OracleClass::Miss
+    match decide(query) {
+        Some((label, _)) => label,
+        None => OracleLabel {
+            class: OracleClass::Ambiguous,
+            margin: 0.0,
         },
-        margin: outside.margin,
     }
-}
-
-/// The origin's own window `w` and the distance `w′` past which the ray has left the
-/// band around the surface near its origin (the module docs), in units of `t`.
-fn windows(query: &Query) -> (f64, f64) {
-    let size = query.major + query.minor;
-    let (delta, normal) = off_surface(query);
-    let len = query.d.length();
-    let cos0 = normal.dot(query.d / len).abs().max(1e-12);
-    let window = 4.0 * (delta + 1e-11 * size) / cos0 / len;
-    (window, window + 10.0 * AMBIGUITY_REL * size / cos0 / len)
 }
 
 /// For a ray that [`classify_from_surface`] labels a hit: its first crossing after the
-/// origin's own, the first reference root in `[max(t_min, w′), t_max]` (units of `t`).
+/// origin's own (units of `t`, from the surface point).
 pub fn first_crossing_from_surface(query: &Query) -> Option<f64> {
-    let (_, clear) = windows(query);
-    let lo = query.t_min.max(clear);
-    reference_roots(&query.over(f64::NEG_INFINITY, f64::INFINITY))
-        .into_iter()
-        .find(|&t| t >= lo && t <= query.t_max)
+    decide(query).and_then(|(label, first)| (label.class == OracleClass::Hit).then_some(first)?)
 }
 
-/// The origin's distance from the surface and the unit outward normal at its nearest
-/// surface point (for an origin on the axis or the core circle, the direction has no
-/// nearest point: the normal is taken as the axis, and δ is still exact).
-fn off_surface(query: &Query) -> (f64, DVec3) {
-    let (signed, normal) = off_surface_at(query, query.o);
-    (signed.abs(), normal)
+/// The line of a ray from a surface point as the on-surface rule reads it: its origin
+/// moved onto the surface (the oracle's own closed form; an origin on the axis or the
+/// core circle stays), the direction and range unchanged.
+pub fn on_surface_line(query: &Query) -> Query {
+    Query {
+        o: moved_onto_surface(query).0,
+        ..*query
+    }
+}
+
+/// The label and the first crossing in range past the origin's own; `None` ambiguous.
+fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
+    let size = query.major + query.minor;
+    let (on, offset) = moved_onto_surface(query);
+    let line = Query { o: on, ..*query };
+    let (delta, normal) = off_surface_at(&line, on);
+    let len = line.d.length();
+    let cos0 = normal.dot(line.d / len);
+    if cos0.abs() <= 1e-12 {
+        // Tangent at the origin: nothing past it can be told.
+        return None;
+    }
+    let window = 4.0 * (delta.abs() + OWN_ERROR * size) / cos0.abs() / len;
+    let roots = reference_roots(&line.over(f64::NEG_INFINITY, f64::INFINITY));
+    let next = roots.iter().copied().find(|&t| t > window);
+    if next.is_some_and(|t| t <= 2.0 * window) {
+        return None;
+    }
+    let frame = LineFrame::new(&line);
+    let g = |t: f64| frame.dist(frame.s_of_t(t)) - line.minor;
+    // The line's extreme point between the origin's window and its next crossing (the
+    // ray's end where there is none): the highest out of the tube, the deepest into it.
+    let outward = cos0 > 0.0;
+    let end = next.unwrap_or(f64::INFINITY);
+    let (lo_s, hi_s) = (frame.s_of_t(window), frame.s_of_t(end));
+    let mut extreme: Option<(f64, f64)> = None;
+    for s in frame.d_candidates(lo_s, hi_s) {
+        let t = frame.t_of_s(s);
+        let v = g(t);
+        let better = extreme.is_none_or(|(_, e)| if outward { v > e } else { v < e });
+        if better {
+            extreme = Some((t, v));
+        }
+    }
+    let first = roots
+        .iter()
+        .copied()
+        .find(|&t| t > window && t >= query.t_min && t <= query.t_max);
+    if outward {
+        let Some(t_next) = next else {
+            // Never comes back: a miss, by the distance at the range's start.
+            let lo = query.t_min.max(window);
+            let margin = if lo <= query.t_max { g(lo) } else { 0.0 };
+            let label = OracleLabel {
+                class: OracleClass::Miss,
+                margin: margin.max(0.0),
+            };
+            return Some((label, None));
+        };
+        let (t_a, height) =
+            extreme.unwrap_or((0.5 * (window + t_next), g(0.5 * (window + t_next))));
+        if height <= 4.0 * OWN_ERROR * size {
+            return None;
+        }
+        let lo = query.t_min.max(t_a);
+        if lo > query.t_max {
+            let label = OracleLabel {
+                class: OracleClass::Miss,
+                margin: g(query.t_max).max(0.0),
+            };
+            return Some((label, None));
+        }
+        let label = line.over(lo, query.t_max).classify();
+        let band = AMBIGUITY_REL * size + 2.0 * offset;
+        if label.margin.abs() <= band {
+            return None;
+        }
+        return Some((label, first));
+    }
+    // Into the tube: the next crossing is where the ray leaves it.
+    let exit = next?;
+    if extreme.is_some_and(|(_, depth)| depth >= -4.0 * OWN_ERROR * size) {
+        return None;
+    }
+    let lo = query.t_min.max(2.0 * window);
+    if lo > query.t_max {
+        return None;
+    }
+    let outside = line.over(lo, query.t_max).classify();
+    if exit < lo {
+        return Some((outside, first));
+    }
+    if (exit - query.t_max).abs() * len <= 10.0 * AMBIGUITY_REL * size {
+        return None;
+    }
+    let class = if exit <= query.t_max {
+        OracleClass::Hit
+    } else {
+        OracleClass::Miss
+    };
+    let label = OracleLabel {
+        class,
+        margin: outside.margin,
+    };
+    Some((label, first))
+}
+
+/// The surface point nearest to the query's origin (f64, closed form: the nearest point
+/// of the core circle, then `r` along the way to the origin) and the origin's distance
+/// from it. An origin on the axis or the core circle (no unique nearest point) stays.
+fn moved_onto_surface(query: &Query) -> (DVec3, f64) {
+    let axis = query.axis.normalize();
+    let rel = query.o - query.center;
+    let y = rel.dot(axis);
+    let radial = rel - axis * y;
+    let rho = radial.length();
+    if rho.is_nan() || rho <= 0.0 {
+        return (query.o, 0.0);
+    }
+    let core = radial * (query.major / rho);
+    let off = rel - core;
+    let dist = off.length();
+    if dist.is_nan() || dist <= 0.0 {
+        return (query.o, 0.0);
+    }
+    let on = query.center + core + off * (query.minor / dist);
+    (on, (on - query.o).length())
 }
 
 /// A point's signed distance from the surface (negative inside the tube) and the unit

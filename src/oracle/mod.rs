@@ -38,7 +38,7 @@ mod sampling;
 #[cfg(test)]
 mod tests;
 
-pub use from_surface::{classify_from_surface, first_crossing_from_surface};
+pub use from_surface::{classify_from_surface, first_crossing_from_surface, on_surface_line};
 pub use roots::reference_roots;
 pub use sampling::margin_by_sampling;
 

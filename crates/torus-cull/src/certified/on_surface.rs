@@ -12,6 +12,15 @@
 //! increasing there, so `[0, t*]` holds at most one root, the origin's own (an
 //! inside-to-outside crossing, or none if the origin lies just outside).
 //!
+//! **The literal origin must agree with the surface point.** The f64 path solves from the
+//! origin moved onto the surface (`intersect::from_surface`); the literal line is that
+//! line moved by the origin's offset `e = g(o)` along the normal. On `[0, t*]`,
+//! `G′ ≥ c − c/(3 − c) ≥ c/2`, so the moved line is at least `c²m/6` outside at `t*`; where
+//! that exceeds `|e|` (with the margin), the literal line is outside there too, and both
+//! have left the origin: no crossing near the origin (a saddle's re-hit, which the literal
+//! line misses when its excursion is below `|e|`) is lost. Closer to the tangent plane
+//! there is no such start: the cubic or f64 answers.
+//!
 //! Hence the first crossing after the origin's own, in the range, is the literal ray's
 //! first root in `[max(t_min, t*), t_max]`, and the literal certificate proves it (with
 //! `F > 0` from the start of that range, which also proves that the origin's own root lies
@@ -69,6 +78,11 @@ pub(crate) fn clear_start(torus: &Torus, origin: DVec3, dir: DVec3) -> Option<f6
     let c = off.dot(d) / (h * len) - MARGIN;
     let m = h.min(rho) * (1.0 - MARGIN);
     if !(c > MARGIN && c <= 1.0 + MARGIN) {
+        return None;
+    }
+    // The literal origin's offset from the surface, below what the line rises by t*.
+    let offset = (h - torus.minor_radius_f64()).abs() + MARGIN * (h + rho);
+    if c * c * m / 6.0 <= offset {
         return None;
     }
     let t_star = c.min(1.0) * m / 3.0 / len;

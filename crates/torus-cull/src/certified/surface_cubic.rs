@@ -4,18 +4,17 @@
 //! cubic").
 //!
 //! **What is proved.** In the foot-point frame (u in units of R along the unit direction)
-//! the line's quartic is `Q(u) = u⁴ + c2 u² + c1 u + c0`. With `p` the f64 path's
-//! origin root ([`SurfaceCubic`]: Newton from the origin's `u₀`, or `u₀` itself where
-//! Newton cannot tell it), exactly for any `p`,
+//! the line's quartic is `Q(u) = u⁴ + c2 u² + c1 u + c0`, formed (as on the f64 path,
+//! [`SurfaceCubic`]) through the origin moved onto the surface, whose own root is `p = u₀`.
+//! Exactly,
 //!
 //! `Q(p + v) − Q(p) = v·g(v)`, `g(v) = v³ + a3 v² + a2 v + a1`.
 //!
-//! The on-surface rule (docs/math.md §9) takes the origin to lie on the surface at `p`:
-//! the answer is the smallest root of `g` with `v > 0` in the range, which is what the
-//! f64 path computes. The certificate proves exactly that statement, so it agrees with
-//! the f64 path by construction; how far the dropped `δ = Q(p)` (the origin's rounding,
-//! 0 to f64 rounding where Newton converged) moves a root is the f64 path's documented
-//! `|δ|/|v·g′(v)|`, not an error of this proof.
+//! The on-surface rule (docs/math.md §9) takes the origin to be that surface point: the
+//! answer is the smallest root of `g` with `v > 0` in the range, which is what the f64
+//! path computes. The certificate proves exactly that statement, so it agrees with the
+//! f64 path by construction; the dropped `δ = Q(p)` is f64 rounding, which moves a root
+//! by the f64 path's documented `|δ|/|v·g′(v)|`, not an error of this proof.
 //!
 //! **The bounds.** f64 forms `a3, a2, a1` within `Δ = 8·10⁻¹²·S`, `S = 1 + p⁴ +
 //! |c2|p² + |c1||p| + |c0|` (a few dozen f64 roundings of 2⁻⁵³·S each, and the line's own f64
@@ -57,7 +56,9 @@
 //! `m` halfway to the candidate root (or to the range's end), still proves that no root
 //! past the origin's lies before `t(m)` ([`Verdict::Clear`]), and the literal certificate
 //! proves the literal ray over `[t(m), t_max]` (`t(m)` rounded down; the stretch it adds
-//! back is inside the proved one). That replaces the t* lemma's start, which for a
+//! back is inside the proved one). Only for a ray that leaves into the outside: the
+//! literal line, off the surface point by the origin's rounding, may be outside where a
+//! ray into the tube is inside. That replaces the t* lemma's start, which for a
 //! grazing ray comes too early for f32 to see `F > 0`. A ray none of this proves
 //! escalates, or goes on to the t* lemma ([`super::on_surface`]).
 
@@ -312,9 +313,9 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
     }
     let s: f32 = if a1 > 0.0 { 1.0 } else { -1.0 };
     // The range in v (from p), past the origin's root: (0, v_max] ∩ [v_min, v_max].
-    let v_min = (t_min.max(0.0) * g.v_per_t - g.shift).max(0.0);
+    let v_min = (t_min.max(0.0) * g.v_per_t).max(0.0);
     let v_cap = (1.0 + tube.minor_rel) * (1.0 + 1e-9) - p;
-    let v_end = t_max * g.v_per_t - g.shift;
+    let v_end = t_max * g.v_per_t;
     let v_max = v_end.min(v_cap);
     if !(v_min.is_finite() && v_cap.is_finite()) || v_max.is_nan() {
         return Verdict::Escalate;
@@ -343,7 +344,7 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
         w_lo: down((-a3 - f64::from(e3)) / 3.0),
         w_hi: up((-a3 + f64::from(e3)) / 3.0),
     };
-    let t_of = |v: f32| (f64::from(v) + g.shift) / g.v_per_t;
+    let t_of = |v: f32| f64::from(v) / g.v_per_t;
     let first = cubic.first_root(alpha, hi_up);
     let verdict = match first {
         None => cubic.positive(alpha, hi_up, 0.0).then_some(Verdict::Miss),
@@ -369,7 +370,11 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
         // certificate to go on from.
         let mid = 0.5 * (alpha + first.unwrap_or(hi_up));
         let t_mid = down(t_of(mid));
-        let clear = mid > alpha
+        // Only out of the tube: the literal ray, off the surface point by the origin's
+        // rounding, is inside where this one is (or its certificate escalates) only
+        // when both leave into the outside.
+        let clear = s > 0.0
+            && mid > alpha
             && f64::from(t_mid) >= t_of(alpha)
             && t_mid >= 0.0
             && cubic.positive(alpha, mid, 0.0);

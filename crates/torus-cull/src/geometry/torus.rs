@@ -533,19 +533,10 @@ impl Torus {
     #[must_use]
     pub fn nearest_surface_point(&self, p: DVec3) -> DVec3 {
         let local = self.to_local_f64 * (p - self.center_f64);
-        let rho = local.x.hypot(local.z);
-        if rho == 0.0 {
-            return p;
+        match self.tube().nearest_surface_point(local) {
+            Some(on) => self.to_local_f64.transpose() * on + self.center_f64,
+            None => p,
         }
-        let (major, minor) = (self.major_radius_f64(), self.minor_radius_f64());
-        let core = DVec3::new(local.x, 0.0, local.z) * (major / rho);
-        let off = local - core;
-        let len = off.length();
-        if len == 0.0 || !len.is_finite() {
-            return p;
-        }
-        let on = core + off * (minor / len);
-        self.to_local_f64.transpose() * on + self.center_f64
     }
 
     /// The secondary ray that leaves the hit at `t` on `ray` (its `Hit::t`) in direction

@@ -703,6 +703,23 @@ fn tc_starts_on_the_surface64(o: vec3<f64>, inv_major: f64, minor_rel: f64) -> b
     return off <= TC_FIN_OWN_ROOT_REACH;
 }
 
+// The surface point nearest to o (torus frame): the core circle's nearest point, then r
+// along the way to o (tube.rs, Tube::nearest_surface_point); o itself on the axis or the
+// core circle, or where the result is not finite.
+fn tc_nearest_surface_point64(o: vec3<f64>, major: f64, minor: f64) -> vec3<f64> {
+    let rho = sqrt(o.x * o.x + o.z * o.z);
+    if (!(rho > 0.0)) {
+        return o;
+    }
+    let core = vec3<f64>(o.x, 0.0, o.z) * (major / rho);
+    let off = o - core;
+    let len = sqrt(tc_dot64(off, off));
+    if (!(len > 0.0)) {
+        return o;
+    }
+    return core + off * (minor / len);
+}
+
 // ---------------------------------------------------------------------------------------
 // The driver (intersect/mod.rs, exact and intersect_reduced; nearest_hit.rs).
 
@@ -753,8 +770,15 @@ fn torus_finish_f64(ray: TorusWorldRay, torus: TorusParams64, instruction: u32) 
     let k_normal = torus.k_normal;
     let outer = torus.outer;
     let rel = origin - c;
-    let o = (m0 * rel.x + m1 * rel.y) + m2 * rel.z;
+    let literal = (m0 * rel.x + m1 * rel.y) + m2 * rel.z;
     let d = (m0 * dir.x + m1 * dir.y) + m2 * dir.z;
+    // A ray from a surface point is solved from its origin moved onto the surface
+    // (from_surface.rs, SurfaceCubic::new; tube.rs, nearest_surface_point).
+    let on_surface = surface && tc_starts_on_the_surface64(literal, inv_major, minor_rel);
+    var o = literal;
+    if (on_surface) {
+        o = tc_nearest_surface_point64(literal, major, minor_rel * major);
+    }
     // The foot point scaled by 1/R (reduce.rs, foot_line).
     let inv_len = 1.0 / sqrt(tc_dot64(d, d));
     let dh = d * inv_len;
@@ -769,36 +793,22 @@ fn torus_finish_f64(ray: TorusWorldRay, torus: TorusParams64, instruction: u32) 
     let c0 = ((rho - 1.0) * (rho - 1.0) + tube) * ((rho + 1.0) * (rho + 1.0) + tube);
     var u: f64;
     var t: f64;
-    if (surface && tc_starts_on_the_surface64(o, inv_major, minor_rel)) {
-        // The origin's own root (three guarded Newton steps on Q from u₀), the cubic in
-        // v = u − own, its nearest root past the origin (from_surface.rs, SurfaceCubic).
-        let u0 = s * inv_major;
-        var own = u0;
-        var e = tc_eval1_64(c2, c1, c0, u0);
-        for (var it = 0; it < 3; it++) {
-            if (e.x == 0.0 || e.y == 0.0) {
-                break;
-            }
-            let next = own - e.x / e.y;
-            let en = tc_eval1_64(c2, c1, c0, next);
-            if (!(abs(next - u0) <= TC_FIN_OWN_ROOT_REACH && abs(en.x) < abs(e.x))) {
-                break;
-            }
-            own = next;
-            e = en;
-        }
+    if (on_surface) {
+        // The origin's own root u₀ (Q(u₀) is f64 rounding, dropped), the cubic in
+        // v = u − u₀, its nearest root past the origin (from_surface.rs, SurfaceCubic).
+        let own = s * inv_major;
+        let e = tc_eval1_64(c2, c1, c0, own);
         let a3 = 4.0 * own;
         let a2 = 6.0 * own * own + c2;
         let a1 = e.y;
         let v_per_t = inv_major / inv_len;
-        let shift = own - u0;
-        let v_lo = max(max(t_min, 0.0) * v_per_t - shift, 0.0);
-        let v_hi = t_max * v_per_t - shift;
+        let v_lo = max(max(t_min, 0.0) * v_per_t, 0.0);
+        let v_hi = t_max * v_per_t;
         let root = tc_nearest_cubic_root64(a3, a2, a1, v_lo, v_hi);
         if (!root.found) {
             return tc_fin_status(TORUS_F64_STATUS_MISS);
         }
-        t = (root.v + shift) / v_per_t;
+        t = root.v / v_per_t;
         u = own + root.v;
     } else {
         let chord_sq = outer * outer * TC_FIN_CHORD_SCALE - tc_dot64(p, p);

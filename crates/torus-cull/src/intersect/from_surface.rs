@@ -8,14 +8,23 @@
 //! `a3 = 4u₀`, `a2 = 6u₀² + c2`, `a1 = Q′(u₀) = (4u₀² + 2c2)·u₀ + c1`.
 //!
 //! An origin on the surface has `Q(u₀) = 0`, so `v = 0` is a root (the origin's) and the
-//! others are the roots of the cubic `g(v) = v³ + a3 v² + a2 v + a1`. The stored origin is
-//! off the surface by its rounding δ, so the origin's root sits near, not at, `u₀`: Newton
-//! on `Q` from `u₀` finds it (`own_root`), and the expansion is taken about it instead, so
-//! the other roots are the literal ray's, untouched. Where that root cannot be told from
-//! `u₀` (a grazing origin), `Q(u₀)` is dropped instead, which moves the other roots by
-//! `|Q(u₀)|/|Q′|` there, as δ moves any hit. Either way the origin's root is removed
-//! exactly, so no rounding can turn the origin into a hit. The nearest root of `g` past it,
-//! in range, is the hit (docs/math.md §9).
+//! others are the roots of the cubic `g(v) = v³ + a3 v² + a2 v + a1`.
+//!
+//! **Solved from the surface point.** The stored origin is the surface point the caller
+//! meant, rounded (to f32, say): off the surface by its rounding δ along the normal. That
+//! offset is not information: solved literally, a ray leaving the saddle (the inner half
+//! of the tube, nearly along the ring) at an angle α above the tangent plane rises only
+//! α²/(2κ) before the surface comes back to meet it at s ≈ 2α/κ (κ the surface's
+//! curvature along the ray), which is below an f32 origin's δ at α ≈ 10⁻⁴, so the literal
+//! ray starts inside the tube and the re-hit is lost. The origin is therefore first
+//! moved onto the surface in f64 ([`Tube::nearest_surface_point`], a few ulps of |o| off
+//! it), the line is formed from that point, and `Q(u₀)`, now f64 rounding, is dropped:
+//! the origin's root is removed exactly, no rounding can turn the origin into a hit, and
+//! a re-hit is found wherever f64 separates it from `v = 0`. Whether it exists depends on
+//! α and κ, which the rounding of the origin along the normal does not change (moving
+//! the point by δ along the surface changes α by about δ/r only). `t` is measured from
+//! the moved origin, within δ/|d| of the literal one. The nearest root of `g` in `(0,
+//! hi]`, in range, is the hit (docs/math.md §9).
 
 use super::reduce::{FootLine, coefficients, foot_line, normal};
 use crate::geometry::Tube;
@@ -40,9 +49,9 @@ pub(crate) fn intersect_from_surface(
 /// the quartic of a line from a surface point (module docs), with what maps its roots `v`
 /// back to the ray.
 pub(crate) struct SurfaceCubic {
-    /// The foot-point line (scaled by 1/R).
+    /// The foot-point line (scaled by 1/R) through the origin moved onto the surface.
     pub(crate) line: FootLine<Sc>,
-    /// The origin's own root `u` (v = 0).
+    /// The origin's own root `u₀` (v = 0).
     pub(crate) own: f64,
     pub(crate) a3: f64,
     pub(crate) a2: f64,
@@ -51,21 +60,21 @@ pub(crate) struct SurfaceCubic {
     pub(crate) c: [f64; 3],
     /// `v` per unit `t`: `|d|/R`.
     pub(crate) v_per_t: f64,
-    /// `own − u₀`: the origin's root sits at `t = shift/v_per_t`.
-    pub(crate) shift: f64,
 }
 
 impl SurfaceCubic {
-    /// The cubic of the torus-frame line `o + t·d` whose origin lies on the surface.
+    /// The cubic of the torus-frame line `o + t·d` whose origin lies on the surface: `o` is
+    /// moved onto the surface first (module docs); an origin with no unique nearest
+    /// surface point (the axis, the core circle) is taken as it is.
     pub(crate) fn new(tube: &Tube, (o, d): (DVec3, DVec3)) -> SurfaceCubic {
+        let o = tube.nearest_surface_point(o).unwrap_or(o);
         let inv_major = sc(tube.inv_major);
         let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), inv_major);
         let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
         let (c2, c1, c0) = (c2.v, c1.v, c0.v);
-        let u0 = line.s.v * tube.inv_major;
-        // The origin's own root: Newton on Q from u₀, or u₀ itself (its constant dropped)
-        // where that root cannot be told apart (a grazing origin).
-        let (own, _residual, a1) = own_root(c2, c1, c0, u0);
+        let own = line.s.v * tube.inv_major;
+        // Q(u₀) is f64 rounding on a surface point: dropped; Q′(u₀) is the cubic's constant.
+        let (_residual, a1) = eval(&[1.0, 0.0, c2, c1, c0], own);
         SurfaceCubic {
             line,
             own,
@@ -74,20 +83,19 @@ impl SurfaceCubic {
             a1,
             c: [c2, c1, c0],
             v_per_t: tube.inv_major / line.inv_len.v,
-            shift: own - u0,
         }
     }
 
     /// The ray's range in `v`, its lower end at least 0 (only crossings past the origin
     /// count; [`nearest_cubic_root`] takes `(0, hi]` open at 0).
     pub(crate) fn v_range(&self, t_min: f64, t_max: f64) -> (f64, f64) {
-        let lo = (t_min.max(0.0) * self.v_per_t - self.shift).max(0.0);
-        (lo, t_max * self.v_per_t - self.shift)
+        let lo = (t_min.max(0.0) * self.v_per_t).max(0.0);
+        (lo, t_max * self.v_per_t)
     }
 
     /// The ray parameter of the root `v`.
     pub(crate) fn t_at(&self, v: f64) -> f64 {
-        (v + self.shift) / self.v_per_t
+        v / self.v_per_t
     }
 
     /// The unit outward normal (torus frame) at the root `v`.
@@ -109,33 +117,10 @@ pub(crate) fn starts_on_the_surface(tube: &Tube, o: DVec3) -> bool {
     off <= OWN_ROOT_REACH
 }
 
-/// How far (in u, units of R) Newton may carry the origin's root from `u₀`: an origin
-/// rounded to f32 at up to 10⁴·R from the world origin is off the surface by about
-/// 10⁻³·R·|cos θ|; beyond this reach the root is not the origin's to claim.
+/// How far from the surface (in units of R) an origin marked as on it may lie and still be
+/// moved onto it: an origin rounded to f32 at up to 10⁴·R from the world origin is off the
+/// surface by about 10⁻³·R; beyond this reach it is not a rounded surface point.
 pub(crate) const OWN_ROOT_REACH: f64 = 1e-2;
-
-/// The root of `Q(u) = u⁴ + c2 u² + c1 u + c0` that belongs to the origin at `u₀`, `Q`
-/// there (the residual the cubic drops) and `Q′` there (the cubic's constant): three Newton steps from `u₀` while each stays within
-/// [`OWN_ROOT_REACH`] and lowers |Q|, else `u₀` (then the constant `Q(u₀)` is what is
-/// dropped).
-fn own_root(c2: f64, c1: f64, c0: f64, u0: f64) -> (f64, f64, f64) {
-    let q = |u: f64| eval(&[1.0, 0.0, c2, c1, c0], u);
-    let (mut u, (mut f, mut df)) = (u0, q(u0));
-    for _ in 0..3 {
-        if f == 0.0 || df == 0.0 {
-            break;
-        }
-        let next = u - f / df;
-        let (fn_, dfn) = q(next);
-        // Written so that NaN also stops.
-        let within = (next - u0).abs() <= OWN_ROOT_REACH && fn_.abs() < f.abs();
-        if !within {
-            break;
-        }
-        (u, f, df) = (next, fn_, dfn);
-    }
-    (u, f, df)
-}
 
 /// `g(v) = v³ + a v² + b v + c` and `g′(v)`.
 #[inline]
