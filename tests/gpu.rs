@@ -859,6 +859,7 @@ fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
         "spawned_bounce_scene_eps",
         "spawned_grazing",
         "spawned_across",
+        "spawned_saddle",
     ] {
         let family = families::all()
             .into_iter()

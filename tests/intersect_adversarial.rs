@@ -311,3 +311,29 @@ fn generator_families_at_extreme_nu_and_scale() {
     }
     tally.assert_clean("generators", 100_000);
 }
+
+/// Celeritas PR 2451: its Ferrari solver returned 32 235.538 instead of 103.849 on a fat
+/// circular toroid (R = 143, r = 113.2, axis z), the ray starting inside the tube. The
+/// exact path must answer the exit at 103.849, in f64 and from the f32 ray, and agree
+/// with the oracle's first root.
+#[test]
+fn celeritas_fat_toroid_exit_from_inside() {
+    let torus = Torus::new_f64(DVec3::ZERO, DVec3::Z, 143.0, 113.2).unwrap();
+    let (o, d) = (
+        DVec3::new(160.371250, -6.351337, -0.000241),
+        DVec3::new(0.852793, -0.522249, -0.000020),
+    );
+    let ray = torus_cull::DRay::new(o, d).unwrap();
+    let hit = intersect(&torus, &ray).expect("the exit from the tube");
+    assert!((hit.t - 103.849).abs() < 1e-3, "{hit:?}");
+    assert!(!hit.front_face, "leaves the solid: {hit:?}");
+    let oracle = reference_roots(&Query::dray(&torus, &ray))[0];
+    assert!(
+        (hit.t - oracle).abs() < 1e-9 * 256.2,
+        "{} vs {oracle}",
+        hit.t
+    );
+    let ray32 = Ray::new(o.as_vec3(), d.as_vec3()).unwrap();
+    let hit32 = intersect(&torus, &ray32).expect("the exit, f32 ray");
+    assert!((f64::from(hit32.t) - 103.849).abs() < 1e-3, "{hit32:?}");
+}

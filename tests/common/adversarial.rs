@@ -129,6 +129,7 @@ pub fn escalating_families(size: usize) -> Vec<(String, Vec<RaySet>)> {
         "spawned_bounce_scene_eps",
         "spawned_grazing",
         "spawned_across",
+        "spawned_saddle",
     ] {
         let family = torus_cull_lab::f32_check::families::all()
             .into_iter()
