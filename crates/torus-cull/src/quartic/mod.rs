@@ -38,6 +38,8 @@
 
 mod all_roots;
 #[cfg(test)]
+mod close_pairs;
+#[cfg(test)]
 mod corpus;
 mod discriminant;
 mod even;
