@@ -11,9 +11,9 @@
 //! reference root a sign change of `f`, evaluated in double-double).
 //!
 //! **Tolerance, from conditioning.** f64's Horner evaluation of `f` at `x` is off by at
-//! most `γ₈·Σ|cᵢ||x|ⁱ ≈ 4ε·Σ|cᵢ||x|ⁱ`, so no f64 method that decides on `f` can place a
-//! simple root closer than `4κε|x|`, `κ = Σ|cᵢ||x|ⁱ/(|x|·|f′(x)|)`; the tolerance is four
-//! times that, `16κε|x|`, plus `8ε·X` (the nearest-root query's absolute accuracy at the
+//! most `γ₈·Σ|cᵢ||x|ⁱ ≈ 4ε·Σ|cᵢ||x|ⁱ`, so an f64 method that decides on `f` can only
+//! be sure of a simple root to `4κε|x|`, `κ = Σ|cᵢ||x|ⁱ/(|x|·|f′(x)|)`; the tolerance is
+//! four times that, `16κε|x|`, plus `8ε·X` (the nearest-root query's absolute accuracy at the
 //! roots' scale `X = max(√|p|, ∛|q|, ∜|r|)`). A root whose tolerance reaches half-way to
 //! its neighbour is **unresolved** (the f64 evaluation cannot tell the pair from a double
 //! root or a complex pair) and is not scored. The example of the issue (`p, q, r =
@@ -24,6 +24,12 @@
 //! `xᵢ`, the nearest root in `[lo, ∞)` with `lo` half-way from `xᵢ₋₁` (`−∞` for the
 //! first). *Missed*: none, or one beyond `xᵢ + tol`; *spurious*: one below `xᵢ − tol`
 //! (there is no root in `[lo, xᵢ)`). The all-roots solvers are scored on the same roots.
+//!
+//! **Counts** (docs/solver.md): before the fix of issue 36 (23698ab),
+//! `nearest_root_depressed` missed 64 of the 926 scored roots and returned 22 spurious
+//! ones, all at `δ/X = 10⁻⁷` or the example, at every `X` from 1 to 10⁶ (the failure was
+//! the near-double decision, not the coefficients' size); now 0 and 0, as the all-roots
+//! solvers were before and are now.
 
 use super::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 
@@ -84,7 +90,7 @@ fn eval_dd(p: f64, q: f64, r: f64, x: Dd) -> (Dd, Dd) {
     (f, df)
 }
 
-/// `Σ|cᵢ||x|ⁱ` and `|f′(x)|` in f64 (for the tolerance only).
+/// `Σ|cᵢ||x|ⁱ` in f64 (for the tolerance only).
 fn magnitude(p: f64, q: f64, r: f64, x: f64) -> f64 {
     let ax = x.abs();
     ((ax * ax + p.abs()) * ax + q.abs()) * ax + r.abs()
