@@ -425,12 +425,13 @@ fn tc_near_double_root64(p: f64, q: f64, r: f64, x0: f64, spread: f64, lo: f64, 
     }
     let e = tc_eval2_64(p, q, r, t);
     let mag = tc_magnitude64(p, q, r, t);
-    let zero = abs(e.f) <= TC_FIN_THIRTY_TWO_EPS * mag;
-    if (!(zero || e.f * e.d2f < 0.0)) {
+    let real = e.f * e.d2f < 0.0;
+    if (!(real || abs(e.f) <= TC_FIN_TOUCH_EPS * mag)) {
         return TC_FIN_NONE;
     }
+    // Split where the sign of f(t*) is beyond the evaluation's rounding (SIGN_SURE).
     var delta = 0.0lf;
-    if (!(zero || e.d2f == 0.0)) {
+    if (real && abs(e.f) > TC_FIN_SIGN_SURE_EPS * mag) {
         delta = sqrt(-2.0 * e.f / e.d2f);
     }
     if (delta == 0.0) {

@@ -17,7 +17,7 @@ use crate::cull::{AXIS_PARALLEL_H2, HORIZONTAL_DY, SAFETY_REL};
 use crate::intersect::from_surface::OWN_ROOT_REACH;
 use crate::intersect::reduce::CHORD_SLACK;
 use crate::num::cube_root::CBRT_F32_SEED;
-use crate::quartic::factor::NEAR_DOUBLE;
+use crate::quartic::factor::{NEAR_DOUBLE, SIGN_SURE, TOUCH};
 use crate::quartic::resolvent::{DISC_NEAR, POLISH_BELOW, SMALL_ROOT};
 use crate::quartic::{EPS, trisect};
 use std::fmt::Write;
@@ -257,6 +257,9 @@ impl FinishConstants {
             ("FIN_FOUR_EPS".into(), 4.0 * self.eps),
             ("FIN_EIGHT_EPS".into(), 8.0 * self.eps),
             ("FIN_THIRTY_TWO_EPS".into(), 32.0 * self.eps),
+            // The near-double factor's decisions on f(t*) (quartic/factor.rs).
+            ("FIN_SIGN_SURE_EPS".into(), SIGN_SURE * self.eps),
+            ("FIN_TOUCH_EPS".into(), TOUCH * self.eps),
             ("FIN_NEAR_DOUBLE".into(), self.near_double),
             ("FIN_DISC_NEAR".into(), self.disc_near),
             ("FIN_SMALL_ROOT".into(), self.small_root),
@@ -787,6 +790,8 @@ mod tests {
         for (name, value) in [
             ("FIN_EPS", EPS),
             ("FIN_EIGHT_EPS", 8.0 * EPS),
+            ("FIN_SIGN_SURE_EPS", SIGN_SURE * EPS),
+            ("FIN_TOUCH_EPS", TOUCH * EPS),
             ("FIN_NEAR_DOUBLE", NEAR_DOUBLE),
             ("FIN_DISC_NEAR", DISC_NEAR),
             ("FIN_SMALL_ROOT", SMALL_ROOT),

@@ -18,6 +18,18 @@ use crate::num::{Real, sc};
 /// see [`near_double_threshold`]).
 pub(crate) const NEAR_DOUBLE: f64 = 1e-7;
 
+/// Beyond this multiple of `ε·Σ|cᵢ||t|ⁱ`, the sign of `f(t)` computed by Horner is the
+/// sign of the quartic's exact value at `t`: Horner's error bound is `γ₈·Σ|cᵢ||t|ⁱ`,
+/// `γ₈ = 8u/(1 − 8u) ≈ 4ε` (degree 4, `u = ε/2`), doubled to cover the rounding of the
+/// monic coefficients after a depression and of `Σ` itself. A near-double pair whose
+/// extremum is beyond it on the real side is split ([`near_double_root`]).
+pub(crate) const SIGN_SURE: f64 = 8.0;
+
+/// Within this multiple of `ε·Σ|cᵢ||t|ⁱ` of zero, a near-double pair whose extremum says
+/// complex is still taken as a double root: a tangent hit for a line that misses by
+/// rounding, on the safe side for a renderer ([`near_double_root`]).
+pub(crate) const TOUCH: f64 = 32.0;
+
 /// The near-double threshold for a quartic depressed from `orig` by `t = x − shift`: the
 /// depression rounds `p, q, r` by about `ε·Σ|cᵢ||shift|ⁱ`, which, next to the depressed
 /// quartic's own size `X⁴` (`X² = max(|p|, √|r|, |q|^⅔)`), is the relative uncertainty of
@@ -195,11 +207,13 @@ fn quadratic_factor(
 /// A near-double pair of roots around `x0`: find the quartic's extremum `t*` near it
 /// (Newton on `f'`, within `spread` plus how far the rounding of `f` itself can move a
 /// double root, `√(8ε·Σ|cᵢtⁱ|/|f''|)`, which covers the depression's rounding when the
-/// shift is large), and decide on `f(t*)`. A local minimum at or below
-/// zero (or a local maximum at or above zero: a line touching the tube from inside) holds
-/// two real roots `t* ± √(−2f/f'')`, each then refined by Newton on `f` on its own side;
-/// otherwise the pair is complex. `f(t*)` within its rounding bound of zero is a double
-/// root. Cold: only tangent and near-tangent lines come here.
+/// shift is large), and decide on `f(t*)`. A local minimum below zero (or a local
+/// maximum above zero: a line touching the tube from inside) by more than the
+/// evaluation's rounding ([`SIGN_SURE`]) holds two real roots `t* ± √(−2f/f'')`, each
+/// then refined by Newton on `f` on its own side. `f(t*)` within that of zero is a double
+/// root, and so is a pair of the other sign within [`TOUCH`]'s wider bound (a line that
+/// misses by a hair is counted a tangent hit); beyond that the pair is complex. Cold:
+/// only tangent and near-tangent lines come here.
 #[cold]
 fn near_double_root(x0: f64, spread: f64, orig: &[f64; 5], shift: f64, out: &mut RealRoots) {
     let t0 = x0 - shift;
@@ -227,14 +241,18 @@ fn near_double_root(x0: f64, spread: f64, orig: &[f64; 5], shift: f64, out: &mut
     }
     let (f, _, d2) = eval2(orig, t);
     let mag = orig.iter().fold(0.0, |acc, ci| acc * t.abs() + ci.abs());
-    let zero = f.abs() <= 32.0 * EPS * mag;
-    if !(zero || f * d2 < 0.0) {
+    let real = f * d2 < 0.0;
+    if !(real || f.abs() <= TOUCH * EPS * mag) {
         return;
     }
-    let delta = if zero || d2 == 0.0 {
-        0.0
-    } else {
+    // The sign of f(t*) says real wherever it is beyond the evaluation's rounding. Until
+    // issue 36 a real pair within TOUCH's bound was also made double: the roots
+    // 192 889.337 and 192 889.364 of x⁴ − 5.9·10¹⁰x² − 5.8·10¹⁵x + 1.9·10²¹ (f(t*) =
+    // 20ε·Σ|cᵢtⁱ|, and the same at any scale) came back as one double root between them.
+    let delta = if real && f.abs() > SIGN_SURE * EPS * mag {
         (-2.0 * f / d2).sqrt()
+    } else {
+        0.0
     };
     if delta == 0.0 {
         out.push(t + shift);

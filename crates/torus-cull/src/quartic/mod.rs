@@ -30,13 +30,16 @@
 //! libm), `factor.rs` (Ferrari's split and near-double factors), `pieces.rs` (every real
 //! root by monotone pieces: `solve_quartic`'s path where the depression cannot be
 //! trusted), `roots.rs` ([`RealRoots`]); `corpus/` (tests: the published quartic corpus,
-//! its reference roots derived exactly by `corpus/cases.py`).
+//! its reference roots derived exactly by `corpus/cases.py`); `close_pairs.rs` (tests: a
+//! grid of close pairs of large roots, issue 36).
 //!
 //! References: L. Ferrari's method as in Abramowitz & Stegun 3.8.3; the resolvent in `m²`
 //! is Descartes'. Peers measured in the bench: the `roots` crate (Ferrari) and
 //! `kurbo::common::solve_quartic` (Orellana & De Michele, ACM TOMS 46(2), 2020, Alg. 1010).
 
 mod all_roots;
+#[cfg(test)]
+mod close_pairs;
 #[cfg(test)]
 mod corpus;
 mod discriminant;

@@ -23,6 +23,16 @@ use crate::num::{Real, RealMask, sc};
 /// the solver bench's accuracy records), and near-double factors are refined on the
 /// quartic itself on a cold path.
 ///
+/// **Near-double pairs**, at any scale: a pair is decided by `f` at the quartic's
+/// extremum `t*` between its roots. Where the sign of `f(t*)` is sure (beyond Horner's
+/// rounding, 8ε·Σ|cᵢ||t*|ⁱ) it is followed: a real pair is split and each root refined,
+/// to within `16κε|x|` (`κ = Σ|cᵢ||x|ⁱ/(|x|·|f′(x)|)`, the root's condition number) and
+/// usually far closer. Within that rounding the pair is one double root at `t*`, which
+/// then lies within `16κε|x|` of both roots; and a pair on the complex side within
+/// 32ε·Σ is returned as that double root too (a tangent hit). Issue 36's close pairs of
+/// large roots (`quartic/close_pairs.rs`: roots `X`, `X + δ` with `δ/X` down to 10⁻⁷ and
+/// `|p|` up to 10¹⁴) are held to this.
+///
 /// ```
 /// use torus_cull::quartic::nearest_root_depressed;
 /// // (x² − 1)(x² − 4) = x⁴ − 5x² + 4: roots ±1, ±2.

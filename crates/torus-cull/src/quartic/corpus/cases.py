@@ -259,6 +259,13 @@ case("near_double_complex_1+-1e-7i", ["3", "-2"], [("1", "1e-7")])
 case("huge_+-1e30_1_2", ["1e30", "-1e30", "1", "2"])
 case("huge_1e30_1e30+1e23", ["1e30", "1.00000001e30", "-3", "7"])
 case("tiny_+-1e-30_1_2", ["1e-30", "-1e-30", "1", "2"])
+# Issue 36: a depressed quartic from a larger published corpus, with a close pair of large
+# roots (192 889.337 and 192 889.364, beside a complex pair) that the nearest-root query
+# returned as one double root between them. Its coefficients as stored, exactly.
+case(
+    "issue36_close_pair_1.9e5",
+    coeffs=[F(1), F(0), F(-59369260987.89166), F(-5803400893965144.0), F(1.9440159814205568e21)],
+)
 
 
 def f64(x):
