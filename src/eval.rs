@@ -403,7 +403,7 @@ fn gpu_answers(torus: &Torus, rays: &[Ray]) -> Result<Vec<GpuAnswer>, EvalError>
     let gpu_error = |e: torus_cull::gpu::GpuError| EvalError::Gpu(e.to_string());
     let gpu = GpuIntersector::new().map_err(gpu_error)?;
     let hits = gpu
-        .intersect_finished_where(torus, GpuCull::None, rays)
+        .intersect_finished_where(torus, GpuCull::NoCull, rays)
         .map_err(gpu_error)?;
     let mut keeps = vec![[true; GPU_CULLS.len()]; rays.len()];
     for (k, cull) in GPU_CULLS.into_iter().enumerate() {

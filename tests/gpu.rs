@@ -332,7 +332,7 @@ fn an_empty_batch_and_a_clear_hit() {
     let Some(gpu) = gpu() else { return };
     let torus = Torus::new(glam::Vec3::ZERO, glam::Vec3::Y, 4.0, 1.0).unwrap();
     assert!(
-        gpu.intersect(&torus, GpuCull::None, &[])
+        gpu.intersect(&torus, GpuCull::NoCull, &[])
             .unwrap()
             .is_empty()
     );
@@ -548,7 +548,7 @@ fn secondary_rays_from_hits_are_proved_past_their_origin_or_finished_on_the_host
     }
     assert!(rays.len() > 100);
     let answers = gpu
-        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .intersect_finished_where(&torus, GpuCull::NoCull, &rays)
         .expect("dispatch");
     // An escalated ray is finished on the device where it has f64, else on the host.
     let counts = torus_cull::gpu::FinishCounts::of(answers.iter().map(|(_, f)| f));
@@ -910,7 +910,7 @@ impl FinishTally {
     fn run(&mut self, gpu: &GpuIntersector, torus: &Torus, rays: &[Ray]) {
         use torus_cull::gpu::Finished;
         let answers = gpu
-            .intersect_finished_where(torus, GpuCull::None, rays)
+            .intersect_finished_where(torus, GpuCull::NoCull, rays)
             .expect("dispatch");
         for (ray, (answer, finished)) in rays.iter().zip(answers) {
             self.rays += 1;
@@ -1061,7 +1061,7 @@ fn rays_from_the_surface_are_finished_on_the_device() {
         Ray::from_surface(Vec3::new(5.0, 0.0, 0.0), Vec3::X).unwrap(),
     ];
     let answers = gpu
-        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .intersect_finished_where(&torus, GpuCull::NoCull, &rays)
         .expect("dispatch");
     for (ray, (answer, _)) in rays.iter().zip(&answers) {
         let cpu = intersect(&torus, ray);
@@ -1102,10 +1102,10 @@ fn host_and_device_finishes_agree() {
             .map(|(_, r)| *r)
             .collect();
         let on_device = gpu
-            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .intersect_finished_where(&batch.torus, GpuCull::NoCull, &rays)
             .unwrap();
         let on_host = host
-            .intersect_finished_where(&batch.torus, GpuCull::None, &rays)
+            .intersect_finished_where(&batch.torus, GpuCull::NoCull, &rays)
             .unwrap();
         let (d, h) = (
             FinishCounts::of(on_device.iter().map(|(_, f)| f)),
@@ -1152,7 +1152,7 @@ fn even_tangents_at_the_foot_point_go_to_the_host() {
         })
         .collect();
     let answers = gpu
-        .intersect_finished_where(&torus, GpuCull::None, &rays)
+        .intersect_finished_where(&torus, GpuCull::NoCull, &rays)
         .unwrap();
     // The f32 kernel cannot prove an exact tangent: these reach the f64 pass.
     assert!(

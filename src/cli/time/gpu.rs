@@ -43,7 +43,7 @@ pub(super) fn run(
     path: &Path,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut culls = gpu_culls(culls)?;
-    for reference in [GpuCull::None, GpuCull::Cychosz] {
+    for reference in [GpuCull::NoCull, GpuCull::Cychosz] {
         if !culls.contains(&reference) {
             culls.insert(0, reference);
         }
@@ -95,7 +95,7 @@ pub(super) fn run(
                 rays,
             ));
             let mut cells = Vec::new();
-            for reference in [GpuCull::None, GpuCull::Cychosz] {
+            for reference in [GpuCull::NoCull, GpuCull::Cychosz] {
                 if reference == cull {
                     cells.push("-".into());
                     continue;
@@ -231,7 +231,7 @@ fn time_unit(
                 .count(),
         );
     }
-    let once = resident.run(GpuCull::None, 1)?.wall;
+    let once = resident.run(GpuCull::NoCull, 1)?.wall;
     let repeats = (SUBMISSION.as_secs_f64() / once.as_secs_f64().max(1e-9)).ceil() as usize;
     let repeats = repeats.clamp(1, 1000);
     let contenders = culls.len() + 1;

@@ -39,6 +39,7 @@ mod registry;
 mod skala;
 mod sphere;
 mod steps;
+pub(crate) mod table;
 mod thick_cylinder;
 
 pub use crate::geometry::{CullBounds, SAFETY_REL};
@@ -56,6 +57,7 @@ pub use registry::{BATCHED, BatchCull, CullKind};
 pub use skala::SkalaCull;
 pub use steps::foot_point;
 pub(crate) use steps::{AXIS_PARALLEL_H2, moderate, rescaled};
+pub use table::Shape;
 // The paper-as-printed fixtures (the lab's `errata`) reuse the section formulas; not
 // renderer API.
 #[doc(hidden)]

@@ -1,0 +1,305 @@
+//! **The one table of culls.** Every list of culls in the crate comes from these rows:
+//! [`super::CullKind`] (every cull, its stable name, [`super::CullKind::TIMED`]),
+//! [`super::BatchCull`] and [`super::BATCHED`] (the culls with a lane form), the GPU's
+//! `GpuCull` (the culls with a WGSL function), the conversions between them and the
+//! dispatch from an enum to the cull's type.
+//!
+//! A row is `Variant "name" Type [forms] [shapes], "doc"`; each enum names the cull by
+//! the same variant:
+//! - `lanes`: the type is also a [`super::kernel::CullKernel`] and runs in the batch
+//!   paths;
+//! - `gpu`: the WGSL module has its function (a test checks that every GPU row has one);
+//! - `shapes`: the tori the cull accepts (today the ring torus only); a shape issue adds
+//!   to this column, not a second table.
+//!
+//! Adding a cull: a row here, its kernel (its own file in `cull/`), and, where it has a
+//! GPU form, its WGSL function (docs/layout.md, "Adding a cull").
+
+/// Calls `$then! { rows }` with the table's rows (module docs).
+macro_rules! cull_table {
+    ($then:ident) => {
+        $then! {
+            NoCull "none" NoCull [lanes gpu] [Ring],
+                "No test: always run the quartic (the baseline), [`NoCull`]; named `none`.";
+            Sphere "sphere" SphereCull [lanes gpu] [Ring],
+                "Bounding sphere of radius R + r.";
+            Aabb "aabb" AabbCull [lanes gpu] [Ring],
+                "The torus's box [−(R+r), R+r] × [−r, r] × [−(R+r), R+r].";
+            Cychosz "cychosz" CychoszCull [lanes gpu] [Ring],
+                "Cychosz (Graphics Gems II, 1991): sphere R + r, then the slab |y| ≤ r at the chord ends.";
+            ThickCylinder "thick_cylinder" ThickCylinderCull [lanes gpu] [Ring],
+                "The shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's `Test_Thick_Cylinder`).";
+            Skala "skala" SkalaCull [lanes gpu] [Ring],
+                "Skala's circle-based test, with the paper's misprints corrected.";
+            Ellipsoid "ellipsoid" EllipsoidCull [lanes gpu] [Ring],
+                "Cychosz with the sphere replaced by the outer ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².";
+            Quadric "quadric" QuadricCull [lanes gpu] [Ring],
+                "The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².";
+            Discriminant "discriminant" DiscriminantCull [lanes gpu] [Ring],
+                "The quartic's real-root classification (no root, no branch), in f32.";
+            DiscriminantF64 "discriminant_f64" DiscriminantF64Cull [] [Ring],
+                "The same classification evaluated in f64.";
+        }
+    };
+}
+pub(crate) use cull_table;
+
+/// The shapes of the torus family a cull may accept (the table's `shapes` column).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Shape {
+    /// The ring torus: a circular tube, R > r.
+    Ring,
+}
+
+/// `CullKind` and `BatchCull`, their lists, names, conversions and dispatch, from the
+/// rows of [`cull_table`].
+macro_rules! define_culls {
+    ($(
+        $kind:ident $name:literal $ty:ident
+        [$($lanes:ident $($gpu:ident)?)?] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        /// Every cull by name: the registry.
+        ///
+        /// A cull chosen at run time (from a results file, the command line, a setting)
+        /// is a `CullKind`; it is a [`Cull`] itself, and [`CullKind::visit`] hands
+        /// generic code the concrete cull type instead. The names are stable
+        /// ([`Named`]): they are what results files record.
+        ///
+        /// ```
+        /// use torus_cull::{CullKind, Named, Ray, Torus, intersect_culled};
+        /// use glam::Vec3;
+        ///
+        /// let kind: CullKind = "skala".parse()?;
+        /// assert_eq!(kind, CullKind::Skala);
+        /// assert_eq!(kind.to_string(), "skala");
+        /// assert_eq!(CullKind::NoCull.name(), "none"); // the baseline: no test at all
+        /// assert!("donut".parse::<CullKind>().is_err());
+        ///
+        /// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
+        /// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::NEG_Y)?; // down the hole
+        /// let line = torus.line_to_local(&hole);
+        /// assert!(!kind.keeps(torus.bounds(), line.origin, line.dir)); // a proven miss
+        /// assert!(CullKind::NoCull.keeps(torus.bounds(), line.origin, line.dir)); // keeps all
+        ///
+        /// // Every cull gives the same answer; they differ in how many quartics they spare.
+        /// for kind in CullKind::TIMED {
+        ///     assert_eq!(intersect_culled(&kind, &torus, &hole), None, "{kind}");
+        /// }
+        /// # Ok::<(), Box<dyn std::error::Error>>(())
+        /// ```
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum CullKind {
+            $(#[doc = $doc] $kind,)*
+        }
+
+        impl CullKind {
+            /// Every cull, in table order (the order of results and plots).
+            pub const TIMED: [CullKind; [$($name),*].len()] = [$(CullKind::$kind),*];
+
+            /// Hands the concrete cull to `visitor`, so generic code is monomorphized per
+            /// cull.
+            pub fn visit<V: CullVisitor>(self, visitor: V) -> V::Output {
+                match self {
+                    $(CullKind::$kind => visitor.visit(crate::cull::$ty),)*
+                }
+            }
+
+            /// This cull's batch form, or `None` for a cull without one
+            /// (`discriminant_f64`).
+            pub const fn batched(self) -> Option<BatchCull> {
+                match self {
+                    $(CullKind::$kind => define_culls!(@some $(BatchCull::$kind, $lanes)?),)*
+                }
+            }
+
+            /// The shapes of the torus family this cull accepts.
+            pub const fn shapes(self) -> &'static [Shape] {
+                match self {
+                    $(CullKind::$kind => &[$(Shape::$shape),*],)*
+                }
+            }
+
+            /// Whether this cull has a function in the GPU kernel.
+            pub const fn has_gpu_form(self) -> bool {
+                match self {
+                    $(CullKind::$kind => define_culls!(@has $($($gpu)?)?),)*
+                }
+            }
+        }
+
+        /// The registry by stable name: `"skala".parse::<CullKind>()`, `format!("{kind}")`.
+        impl Named for CullKind {
+            const KIND: &'static str = "cull";
+            const ALL: &'static [CullKind] = &CullKind::TIMED;
+
+            fn name(self) -> &'static str {
+                match self {
+                    $(CullKind::$kind => $name,)*
+                }
+            }
+        }
+
+        /// The culls with a batch form ([`crate::batch::cull_batch`], the
+        /// [`crate::batch::Wavefront`]): every [`CullKind`] but `discriminant_f64`, whose
+        /// point is the f64 evaluation, which the f32 `discriminant` already makes
+        /// unnecessary at this padding. The batch API takes a `BatchCull`, so a cull
+        /// without a batch form is refused when the program is compiled, not when it
+        /// runs; [`CullKind::batched`] converts a cull chosen at run time.
+        ///
+        /// ```
+        /// use torus_cull::batch::{BATCHED, BatchCull};
+        /// use torus_cull::{CullKind, Named};
+        ///
+        /// assert_eq!(CullKind::Skala.batched(), Some(BatchCull::Skala));
+        /// assert_eq!(CullKind::DiscriminantF64.batched(), None);
+        /// assert_eq!(CullKind::from(BatchCull::Skala), CullKind::Skala);
+        /// // The same stable names as the scalar culls, in the same table order.
+        /// assert_eq!(BatchCull::Quadric.name(), "quadric");
+        /// assert_eq!(BATCHED.len(), CullKind::TIMED.len() - 1);
+        /// let err = BatchCull::parse("discriminant_f64").unwrap_err().to_string();
+        /// assert!(err.starts_with("unknown batched cull 'discriminant_f64' (allowed: none, "));
+        /// ```
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum BatchCull {
+            $($(#[doc = $doc] #[cfg_attr(any(), doc = stringify!($lanes))] $kind,)?)*
+        }
+
+        /// Every [`BatchCull`], in [`CullKind::TIMED`] order.
+        pub const BATCHED: [BatchCull; [$($(stringify!($lanes),)?)*].len()] =
+            [$($(define_culls!(@pick BatchCull::$kind, $lanes),)?)*];
+
+        impl BatchCull {
+            /// The same cull in the registry of every cull.
+            pub const fn kind(self) -> CullKind {
+                match self {
+                    $($(define_culls!(@pick BatchCull::$kind, $lanes) => CullKind::$kind,)?)*
+                }
+            }
+
+            /// Hands the cull's one-source kernel to `visitor`.
+            pub(crate) fn visit_kernel<V: KernelVisitor>(self, visitor: V) -> V::Output {
+                match self {
+                    $($(define_culls!(@pick BatchCull::$kind, $lanes) => visitor.visit(crate::cull::$ty),)?)*
+                }
+            }
+        }
+    };
+    (@some $value:path, $flag:ident) => { Some($value) };
+    (@some) => { None };
+    // A variant of a row that has the form `$flag`: the flag only selects the row.
+    (@pick $value:path, $flag:ident) => { $value };
+    (@has $gpu:ident) => { true };
+    (@has) => { false };
+}
+pub(crate) use define_culls;
+
+/// The GPU kernel's `GpuCull` from the rows of [`cull_table`] that have a `gpu` form.
+#[cfg(feature = "gpu")]
+macro_rules! define_gpu_culls {
+    ($(
+        $kind:ident $name:literal $ty:ident
+        [$($lanes:ident $($gpu:ident)?)?] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        /// The cull the kernel runs before the intersection (a rejected ray is a miss):
+        /// every cull with a GPU form in the table of culls, the CPU's math on the torus
+        /// padded by the GPU's margin (the CPU's η plus the kernel's line error; see the
+        /// module doc and docs/math.md, "The GPU's culls").
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        #[non_exhaustive]
+        pub enum GpuCull {
+            $($($(#[doc = $doc] #[cfg_attr(any(), doc = stringify!($gpu))] $kind,)?)?)*
+        }
+
+        impl GpuCull {
+            /// Every cull, in [`CullKind::TIMED`] order (the kernel's codes 0, 1, …).
+            pub const ALL: [GpuCull; [$($($(stringify!($gpu),)?)?)*].len()] =
+                [$($($(define_gpu_culls!(@pick GpuCull::$kind, $gpu),)?)?)*];
+
+            /// The same cull in the registry of every cull.
+            pub const fn kind(self) -> CullKind {
+                match self {
+                    $($($(define_gpu_culls!(@pick GpuCull::$kind, $gpu) => CullKind::$kind,)?)?)*
+                }
+            }
+
+            /// The same cull's batch form on the CPU.
+            pub const fn batched(self) -> BatchCull {
+                match self.kind().batched() {
+                    Some(cull) => cull,
+                    None => panic!("every GPU cull has a batch form"),
+                }
+            }
+        }
+
+        /// A [`CullKind`] on the GPU: every one with a GPU form.
+        impl TryFrom<CullKind> for GpuCull {
+            type Error = CullKind;
+
+            fn try_from(kind: CullKind) -> Result<GpuCull, CullKind> {
+                match kind {
+                    $($($(CullKind::$kind => Ok(define_gpu_culls!(@pick GpuCull::$kind, $gpu)),)?)?)*
+                    #[allow(unreachable_patterns)]
+                    other => Err(other),
+                }
+            }
+        }
+    };
+    (@pick $value:path, $flag:ident) => { $value };
+}
+#[cfg(feature = "gpu")]
+pub(crate) use define_gpu_culls;
+
+#[cfg(test)]
+mod tests {
+    use super::Shape;
+    use crate::CullKind;
+    use crate::batch::BATCHED;
+
+    #[test]
+    fn the_lists_follow_the_table() {
+        let batched: Vec<CullKind> = CullKind::TIMED
+            .iter()
+            .filter_map(|c| c.batched())
+            .map(CullKind::from)
+            .collect();
+        assert_eq!(batched, BATCHED.map(CullKind::from));
+        for kind in CullKind::TIMED {
+            assert_eq!(kind.shapes(), &[Shape::Ring], "{kind}");
+            // Today every cull with a lane form has a GPU form, and only those.
+            assert_eq!(kind.has_gpu_form(), kind.batched().is_some(), "{kind}");
+        }
+    }
+
+    /// A cull marked as having a GPU form has its case in the WGSL module's cull switch
+    /// (`none` is the switch's default: no test), and no other cull has one.
+    #[cfg(feature = "gpu")]
+    #[test]
+    fn every_gpu_row_has_its_wgsl_function() {
+        use crate::gpu::GpuCull;
+        let source = crate::gpu::wgsl_module();
+        let switch = &source[source.find("fn tc_cull_keeps(").expect("the cull switch")..];
+        let switch = &switch[..switch.find("\n}\n").expect("its end")];
+        for kind in CullKind::TIMED {
+            let case = format!("case TORUS_CULL_{}:", kind.to_string().to_uppercase());
+            let has_case = switch.contains(&case);
+            match kind {
+                CullKind::NoCull => {
+                    assert!(kind.has_gpu_form() && !has_case && switch.contains("default:"))
+                }
+                _ => assert_eq!(has_case, kind.has_gpu_form(), "{kind}: {case}"),
+            }
+            assert_eq!(
+                GpuCull::try_from(kind).is_ok(),
+                kind.has_gpu_form(),
+                "{kind}"
+            );
+        }
+        let order: Vec<CullKind> = GpuCull::ALL.iter().map(|c| c.kind()).collect();
+        let want: Vec<CullKind> = CullKind::TIMED
+            .into_iter()
+            .filter(|c| c.has_gpu_form())
+            .collect();
+        assert_eq!(order, want);
+    }
+}
