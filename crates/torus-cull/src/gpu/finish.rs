@@ -130,56 +130,6 @@ impl Status {
     }
 }
 
-/// Who answered a ray ([`super::GpuIntersector::intersect_finished_where`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum Finished {
-    /// The certified f32 kernel proved the answer: nothing to finish.
-    Proved,
-    /// Escalated, and finished by the device's f64 pass.
-    Device,
-    /// Escalated, and finished on the host in f64 ([`crate::intersect()`]): the adapter
-    /// has no f64, or the pass handed the ray back (module docs).
-    Host,
-}
-
-impl Finished {
-    /// The `finished` column of `eval --exact gpu`: empty where f32 proved the answer.
-    pub fn name(self) -> &'static str {
-        match self {
-            Finished::Proved => "",
-            Finished::Device => "device",
-            Finished::Host => "host",
-        }
-    }
-}
-
-/// How many rays each of [`Finished`]'s answered.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct FinishCounts {
-    /// Proved by the f32 kernel.
-    pub proved: usize,
-    /// Escalated and finished on the device (f64 pass).
-    pub device: usize,
-    /// Escalated and finished on the host.
-    pub host: usize,
-}
-
-impl FinishCounts {
-    /// The counts of a list of answers.
-    pub fn of<'a>(answers: impl IntoIterator<Item = &'a Finished>) -> FinishCounts {
-        let mut counts = FinishCounts::default();
-        for f in answers {
-            match f {
-                Finished::Proved => counts.proved += 1,
-                Finished::Device => counts.device += 1,
-                Finished::Host => counts.host += 1,
-            }
-        }
-        counts
-    }
-}
-
 /// The f64 pass compiled on a device with `SHADER_F64`.
 pub(crate) struct FinishPipeline {
     pub(crate) pipeline: wgpu::ComputePipeline,
