@@ -1,7 +1,7 @@
 //! Escalation on the device: a second compute pass, in f64, that finishes the rays the
 //! certified f32 kernel escalated, where the adapter offers `wgpu::Features::SHADER_F64`.
 //!
-//! **Method.** The pass (`finish.wgsl`, behind the header [`super::FinishConstants`]
+//! **Method.** The pass (`wgsl/finish_module/*.wgsl` and `wgsl/finish.wgsl`, behind the header [`super::FinishConstants`]
 //! generates from the Rust constants) is the CPU's f64 path ([`crate::intersect()`] on a
 //! ray that does not start on the surface) step for step, in the same operation order:
 //! the line to the torus frame in f64 (`M·(o − c)`, `M·d`), the foot point scaled by

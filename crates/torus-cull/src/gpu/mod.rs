@@ -29,7 +29,7 @@
 //! subnormals may flush; so every rounding term of the certificate (in u = 2⁻²⁴) is taken
 //! four times larger than on the CPU, and the line's own error is the one of an f32
 //! rotation and foot point (within 16.9u·|o − c|/R + 16u·|q| + 24.4u·|u| of the true
-//! line, to first order: derived step by step in `module.wgsl`, and taken about twice).
+//! line, to first order: derived step by step in `wgsl/module/trace.wgsl`, and taken about twice).
 //! On the CPU the line is formed in f64 and rounded once. The bracket is what remains of
 //! 2·10⁻⁴·(R + r) after the kernel's own error in `t` (the foot point's `s = o·d̂` and the
 //! division by |d|): at most the CPU's 1.9·10⁻⁴·R.
@@ -43,14 +43,17 @@
 //! proves (docs/math.md, "The GPU's culls"). [`GpuIntersector::cull_keeps`] runs a cull
 //! alone.
 //!
-//! **One source for the constants.** The kernel's text is `module.wgsl` and `kernel.wgsl`
-//! behind a header generated from the Rust constants the CPU uses ([`kernel_source`],
-//! [`KernelConstants`]; the f64 pass's, `finish_module.wgsl` and `finish.wgsl`, from
-//! [`FinishConstants`]): the cube-root seed, the trisection fit, the solver's thresholds,
-//! the bracket, [`crate::cull::SAFETY_REL`], the culls' thresholds and the line error's
-//! constants, as exact hexadecimal floats, and the result, cull and escalation codes.
+//! **One source for the constants.** The kernel's text is `wgsl/module/*.wgsl` and
+//! `wgsl/kernel.wgsl` behind a header generated from the Rust constants the CPU uses
+//! ([`kernel_source`], [`KernelConstants`]; the f64 pass's, `wgsl/finish_module/*.wgsl`
+//! and `wgsl/finish.wgsl`, from [`FinishConstants`]): the cube-root seed, the trisection
+//! fit, the solver's thresholds, the bracket, [`crate::cull::SAFETY_REL`], the culls'
+//! thresholds and the line error's constants, as exact hexadecimal floats, and the result,
+//! cull and escalation codes. Each WGSL file's header names the Rust function behind each
+//! of its functions (`// mirrors:` lines, checked by a test).
 //!
-//! **A module a renderer includes.** [`wgsl_module`] is the header and `module.wgsl` alone:
+//! **A module a renderer includes.** [`wgsl_module`] is the header and
+//! `wgsl/module/*.wgsl` alone:
 //! `torus_intersect(ray, torus, cull) -> TorusHit` and `torus_cull_keeps`, without the
 //! kernel's bindings and entry point, for a renderer's own shader; the kernel is the same
 //! text plus its bindings. [`ModuleTorus`] packs the torus and the rays as the kernel's
