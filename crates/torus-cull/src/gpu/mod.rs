@@ -8,10 +8,11 @@
 //! the signed distance within a bracket around the reported root, with F > 0 proved
 //! before it (convex pieces split at F's lowest point); a miss is F > 0 proved over the
 //! whole range (or a cull's rejection). Everything else comes back
-//! [`F32Verdict::Escalate`], and [`GpuIntersector::intersect_finished`] finishes those
-//! rays with the f64 solver's method: on the device, by a second f64 pass in the same
-//! command buffer, where the adapter offers `SHADER_F64` (`gpu/finish.rs`; what it
-//! cannot hold finite is handed back to the host, counted), else on the host
+//! [`F32Verdict::Escalate`](crate::certified::F32Verdict::Escalate), and
+//! [`GpuIntersector::intersect_finished`] finishes those rays with the f64 solver's
+//! method: on the device, by a second f64 pass in the same command buffer, where the
+//! adapter offers `SHADER_F64` (`gpu/finish.rs`; what it cannot hold finite is handed
+//! back to the host, counted), else on the host
 //! ([`crate::intersect()`]). [`GpuIntersector::intersect_finished_where`] says which
 //! answered each ray ([`Finished`]). A proved hit's `t` is within
 //! 2·10⁻⁴·(R + r) of the first root in range (along the unit direction; plus half an ulp
