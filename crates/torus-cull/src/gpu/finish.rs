@@ -1,7 +1,7 @@
 //! Escalation on the device: a second compute pass, in f64, that finishes the rays the
 //! certified f32 kernel escalated, where the adapter offers `wgpu::Features::SHADER_F64`.
 //!
-//! **Method.** The pass (`finish.wgsl`, behind the header [`super::FinishConstants`]
+//! **Method.** The pass (`wgsl/finish_module/*.wgsl` and `wgsl/finish.wgsl`, behind the header [`super::FinishConstants`]
 //! generates from the Rust constants) is the CPU's f64 path ([`crate::intersect()`] on a
 //! ray that does not start on the surface) step for step, in the same operation order:
 //! the line to the torus frame in f64 (`M·(o − c)`, `M·d`), the foot point scaled by
@@ -127,56 +127,6 @@ impl Status {
 
     fn of(word: f32) -> Option<Status> {
         Status::ALL.into_iter().find(|s| *s as u32 as f32 == word)
-    }
-}
-
-/// Who answered a ray ([`super::GpuIntersector::intersect_finished_where`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum Finished {
-    /// The certified f32 kernel proved the answer: nothing to finish.
-    Proved,
-    /// Escalated, and finished by the device's f64 pass.
-    Device,
-    /// Escalated, and finished on the host in f64 ([`crate::intersect()`]): the adapter
-    /// has no f64, or the pass handed the ray back (module docs).
-    Host,
-}
-
-impl Finished {
-    /// The `finished` column of `eval --exact gpu`: empty where f32 proved the answer.
-    pub fn name(self) -> &'static str {
-        match self {
-            Finished::Proved => "",
-            Finished::Device => "device",
-            Finished::Host => "host",
-        }
-    }
-}
-
-/// How many rays each of [`Finished`]'s answered.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct FinishCounts {
-    /// Proved by the f32 kernel.
-    pub proved: usize,
-    /// Escalated and finished on the device (f64 pass).
-    pub device: usize,
-    /// Escalated and finished on the host.
-    pub host: usize,
-}
-
-impl FinishCounts {
-    /// The counts of a list of answers.
-    pub fn of<'a>(answers: impl IntoIterator<Item = &'a Finished>) -> FinishCounts {
-        let mut counts = FinishCounts::default();
-        for f in answers {
-            match f {
-                Finished::Proved => counts.proved += 1,
-                Finished::Device => counts.device += 1,
-                Finished::Host => counts.host += 1,
-            }
-        }
-        counts
     }
 }
 

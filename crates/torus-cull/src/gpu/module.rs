@@ -24,7 +24,8 @@
 //!   the ray escalated and the device answered ([`ModuleHit64::answer`]), else the host's,
 //!   as [`super::GpuIntersector::intersect_finished_where`] decides.
 
-use super::finish::{self as device, Finished};
+use super::Finished;
+use super::finish as device;
 use super::{Escalation, Frame, shifted};
 use crate::certified::{F32Hit, F32Verdict, finish};
 use crate::{Ray, Torus};

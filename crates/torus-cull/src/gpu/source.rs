@@ -1,5 +1,6 @@
-//! The kernel's WGSL text: `module.wgsl` (the intersection as functions a renderer can
-//! include, [`wgsl_module`]) and `kernel.wgsl` (the library's bindings and entry point),
+//! The kernel's WGSL text: `wgsl/module/*.wgsl` (the intersection as functions a renderer
+//! can include, [`wgsl_module`]) and `wgsl/kernel.wgsl` (the library's bindings and entry
+//! point), concatenated in order,
 //! behind a header of `const` lines generated from the Rust constants the CPU uses
 //! ([`KernelConstants`]), so that the two cannot drift apart: the cube-root seed and the trisection fit of the f32 solver, the solver's
 //! thresholds, the culls' margin [`crate::cull::SAFETY_REL`] and their thresholds, the
@@ -24,12 +25,31 @@ use std::fmt::Write;
 
 use super::{CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Escalation, GpuCull};
 
+/// The files of one WGSL text, in order: the text they make, concatenated as they are, and
+/// each `(path under src/gpu, text)` (for the test of their `mirrors:` headers).
+macro_rules! wgsl_files {
+    ($($path:literal),+ $(,)?) => {
+        (concat!($(include_str!($path)),+), &[$(($path, include_str!($path))),+])
+    };
+}
+
+/// The module's files (`wgsl/module/*.wgsl`), in the order of [`MODULE_BODY`]: each the
+/// WGSL side of the Rust modules its header's `mirrors:` lines name.
+const MODULE_FILES: (&str, &[(&str, &str)]) = wgsl_files!(
+    "wgsl/module/api.wgsl",
+    "wgsl/module/solver.wgsl",
+    "wgsl/module/certificate.wgsl",
+    "wgsl/module/culls.wgsl",
+    "wgsl/module/trace.wgsl",
+);
+
 /// The module's body (the intersection as WGSL functions, no bindings): every shared
 /// number comes from the generated header.
-const MODULE_BODY: &str = include_str!("module.wgsl");
+const MODULE_BODY: &str = MODULE_FILES.0;
 
-/// The library kernel's bindings and entry point, around [`MODULE_BODY`].
-const KERNEL_BODY: &str = include_str!("kernel.wgsl");
+/// The library kernel's bindings and entry point (`wgsl/kernel.wgsl`), around
+/// [`MODULE_BODY`].
+const KERNEL_BODY: &str = include_str!("wgsl/kernel.wgsl");
 
 /// The GPU's factor on every rounding term in u = 2⁻²⁴: WGSL may or may not contract
 /// `a·b + c` into an fma, division is good to 2.5 ulp, `sqrt` is not correctly rounded on
@@ -38,7 +58,7 @@ pub(crate) const GPU_ROUNDING_FACTOR: f32 = 4.0;
 
 /// The kernel's line error, relative part: the computed point q + u·d̂ stands within
 /// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
-/// at u (units of R; derived in `module.wgsl`, about twice the first-order bound).
+/// at u (units of R; derived in `wgsl/module/trace.wgsl`, about twice the first-order bound).
 pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
 
 /// The kernel's line error, per unit of the origin's distance |o − c|/R.
@@ -191,13 +211,22 @@ impl KernelConstants {
     }
 }
 
-/// The f64 finish as WGSL functions (`finish_module.wgsl`, no bindings): the CPU's f64
-/// method for one ray; every threshold from [`FinishConstants::header`].
-const FINISH_MODULE_BODY: &str = include_str!("finish_module.wgsl");
+/// The f64 finish module's files (`wgsl/finish_module/*.wgsl`), in the order of
+/// [`FINISH_MODULE_BODY`].
+const FINISH_MODULE_FILES: (&str, &[(&str, &str)]) = wgsl_files!(
+    "wgsl/finish_module/api.wgsl",
+    "wgsl/finish_module/solver.wgsl",
+    "wgsl/finish_module/surface.wgsl",
+    "wgsl/finish_module/intersect.wgsl",
+);
+
+/// The f64 finish as WGSL functions (`wgsl/finish_module/*.wgsl`, no bindings): the CPU's
+/// f64 method for one ray; every threshold from [`FinishConstants::header`].
+const FINISH_MODULE_BODY: &str = FINISH_MODULE_FILES.0;
 
 /// The library's f64 finish pass's bindings and entry point `finish_main`
-/// (`finish.wgsl`), around [`FINISH_MODULE_BODY`].
-const FINISH_BODY: &str = include_str!("finish.wgsl");
+/// (`wgsl/finish.wgsl`), around [`FINISH_MODULE_BODY`].
+const FINISH_BODY: &str = include_str!("wgsl/finish.wgsl");
 
 /// Every number the device's f64 finish (`gpu/finish.rs`) takes from Rust, by name:
 /// the f64 solver's thresholds and fits, as the CPU's [`crate::intersect()`] uses them.
@@ -314,13 +343,13 @@ impl FinishConstants {
     }
 
     /// The f64 module's WGSL text ([`wgsl_finish_module`]) with these constants: the
-    /// header and `finish_module.wgsl`.
+    /// header and `wgsl/finish_module/*.wgsl`.
     pub fn module(&self) -> String {
         format!("{}\n{FINISH_MODULE_BODY}", self.header())
     }
 
     /// The library's f64 pass's full WGSL text: the module ([`FinishConstants::module`])
-    /// and the pass's bindings and entry point (`finish.wgsl`).
+    /// and the pass's bindings and entry point (`wgsl/finish.wgsl`).
     pub fn source(&self) -> String {
         format!("{}\n{FINISH_BODY}", self.module())
     }
@@ -335,7 +364,7 @@ pub fn finish_source() -> String {
 /// The device's f64 finish as WGSL a renderer includes in its own shader, beside the f32
 /// module ([`wgsl_module`]) or alone: the generated `const` header (the f64 path's
 /// constants, exact; the instruction and status codes) and the functions of
-/// `finish_module.wgsl`, without the library pass's bindings and entry point. The
+/// `wgsl/finish_module/*.wgsl`, without the library pass's bindings and entry point. The
 /// library's f64 pass is this same text plus its bindings ([`finish_source`]). It needs
 /// `wgpu::Features::SHADER_F64` on the device (naga's `FLOAT64`); without it, finish the
 /// escalated rays on the host ([`super::PreparedRay::finish`]).
@@ -465,367 +494,4 @@ fn hex_f32(x: f32) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The hexadecimal literal read back (as WGSL reads it) is the same f32.
-    fn parse_hex(text: &str) -> f32 {
-        let (sign, rest) = match text.strip_prefix('-') {
-            Some(r) => (-1.0, r),
-            None => (1.0, text),
-        };
-        let rest = rest
-            .strip_prefix("0x1.")
-            .unwrap()
-            .strip_suffix('f')
-            .unwrap();
-        let (mantissa, exp) = rest.split_once('p').unwrap();
-        let m = u32::from_str_radix(mantissa, 16).unwrap() as f64 / f64::from(1u32 << 24);
-        (sign * (1.0 + m) * 2f64.powi(exp.parse().unwrap())) as f32
-    }
-
-    #[test]
-    fn hex_literals_are_exact() {
-        for x in [
-            SAFETY_REL,
-            1e-9,
-            -0.002_372_558,
-            0.9216062,
-            1e30,
-            1e-30,
-            f32::MIN_POSITIVE,
-            f32::MAX,
-            -3.5,
-        ] {
-            let text = hex_f32(x);
-            assert_eq!(parse_hex(&text).to_bits(), x.to_bits(), "{x:e} as {text}");
-        }
-        assert_eq!(hex_f32(SAFETY_REL), "0x1.000000p-12f");
-        assert_eq!(hex_f32(0.0), "0.0f");
-    }
-
-    #[test]
-    fn every_shared_constant_comes_from_rust() {
-        let header = KernelConstants::CPU.header();
-        for (name, value) in [
-            ("SAFETY_REL", SAFETY_REL),
-            ("DISC_NEAR", DISC_NEAR as f32),
-            ("NEAR_DOUBLE", NEAR_DOUBLE as f32),
-            ("SMALL_ROOT", SMALL_ROOT as f32),
-            ("BRACKET", BRACKET as f32),
-            ("TRISECT_FIT_0", trisect::FIT[0] as f32),
-            ("TRISECT_FIT_5", trisect::FIT[5] as f32),
-            ("AXIS_PARALLEL_H2", AXIS_PARALLEL_H2),
-        ] {
-            let line = format!("const TC_{name}: f32 = {};", hex_f32(value));
-            assert!(header.contains(&line), "{line} not in\n{header}");
-        }
-        assert!(header.contains(&format!("const TC_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-        // The bodies declare none of them by hand (one source).
-        for line in MODULE_BODY.lines().chain(KERNEL_BODY.lines()) {
-            assert!(
-                !line.trim_start().starts_with("const "),
-                "hand-written: {line}"
-            );
-        }
-    }
-
-    /// The generated text parses and validates as WGSL (naga, as wgpu does), with the
-    /// CPU's constants and with a changed one: no adapter needed.
-    #[test]
-    fn the_kernel_validates() {
-        use wgpu::naga;
-        for constants in [
-            KernelConstants::CPU,
-            KernelConstants {
-                safety_rel: 1.0 / 1024.0,
-                ..KernelConstants::CPU
-            },
-        ] {
-            let module = naga::front::wgsl::parse_str(&constants.source())
-                .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&constants.source())));
-            naga::valid::Validator::new(
-                naga::valid::ValidationFlags::all(),
-                naga::valid::Capabilities::default(),
-            )
-            .validate(&module)
-            .unwrap_or_else(|e| panic!("{e:?}"));
-        }
-    }
-
-    /// The module is the kernel's text less its bindings and entry point (one source): it
-    /// validates alone, declares no binding and no entry point, and names the codes the
-    /// host decodes with.
-    #[test]
-    fn the_kernel_is_the_module_plus_its_bindings() {
-        use wgpu::naga;
-        let module = wgsl_module();
-        let kernel = kernel_source();
-        assert!(kernel.starts_with(&module));
-        assert!(kernel.contains(KERNEL_BODY));
-        let parsed = naga::front::wgsl::parse_str(&module)
-            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&module)));
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::default(),
-        )
-        .validate(&parsed)
-        .unwrap_or_else(|e| panic!("{e:?}"));
-        assert_includable(
-            &module,
-            &parsed,
-            &["torus_intersect", "torus_cull_keeps"],
-            &[
-                "const TORUS_HIT: u32 = 1u;",
-                "const TORUS_ESCALATE: u32 = 2u;",
-                "const TORUS_CULL_SKALA: u32 = 5u;",
-                "const TORUS_CULL_DISCRIMINANT: u32 = 8u;",
-                "const TORUS_WHY_NON_FINITE_LINE: u32 = 1u;",
-                "const TORUS_WHY_T_ERROR: u32 = 7u;",
-            ],
-        );
-        assert_prefixed(&parsed, 60);
-    }
-
-    /// What a module a renderer includes must be: no binding and no entry point (the
-    /// renderer declares its own), the documented `entries` among its functions, and the
-    /// documented constant `lines` in its text.
-    fn assert_includable(
-        text: &str,
-        parsed: &wgpu::naga::Module,
-        entries: &[&str],
-        lines: &[&str],
-    ) {
-        for absent in [
-            "@group",
-            "@binding",
-            "@compute",
-            "var<uniform>",
-            "var<storage",
-        ] {
-            assert!(!text.contains(absent), "{absent} in the module");
-        }
-        assert!(parsed.entry_points.is_empty());
-        assert!(parsed.global_variables.is_empty());
-        for entry in entries {
-            assert!(
-                parsed
-                    .functions
-                    .iter()
-                    .any(|(_, f)| f.name.as_deref() == Some(*entry)),
-                "{entry}"
-            );
-        }
-        for line in lines {
-            assert!(text.contains(line), "{line}");
-        }
-    }
-
-    /// The global names of `module`: its functions, constants and structs.
-    fn global_names(module: &wgpu::naga::Module) -> Vec<String> {
-        let functions = module.functions.iter().filter_map(|(_, f)| f.name.clone());
-        let constants = module.constants.iter().filter_map(|(_, c)| c.name.clone());
-        let types = module
-            .types
-            .iter()
-            .filter(|(_, t)| matches!(t.inner, wgpu::naga::TypeInner::Struct { .. }))
-            .filter_map(|(_, t)| t.name.clone());
-        functions.chain(constants).chain(types).collect()
-    }
-
-    /// Every global name is the API's (torus_ / Torus / TORUS_) or an internal one
-    /// (tc_ / Tc / TC_), so none clashes with a renderer's own `miss`, `Line` or `U`; and
-    /// there are more than `at_least` of them (the check saw the module).
-    fn assert_prefixed(module: &wgpu::naga::Module, at_least: usize) {
-        let prefixed = |name: &str| {
-            ["torus_", "Torus", "TORUS_", "tc_", "Tc", "TC_"]
-                .iter()
-                .any(|p| name.starts_with(p))
-        };
-        let names = global_names(module);
-        assert!(names.len() > at_least, "{names:?}");
-        // `__…` are naga's own predeclared types (frexp's result), not the module's.
-        let bare: Vec<&String> = names
-            .iter()
-            .filter(|n| !prefixed(n) && !n.starts_with("__"))
-            .collect();
-        assert!(
-            bare.is_empty(),
-            "global names without the module's prefix: {bare:?}"
-        );
-    }
-
-    fn validate_f64(text: &str) -> Result<wgpu::naga::Module, String> {
-        use wgpu::naga;
-        let module = naga::front::wgsl::parse_str(text).map_err(|e| e.emit_to_string(text))?;
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::FLOAT64,
-        )
-        .validate(&module)
-        .map_err(|e| format!("{e:?}"))?;
-        Ok(module)
-    }
-
-    /// The f64 module is the library's f64 pass less its bindings and entry point (one
-    /// source): it validates alone (with `FLOAT64`), declares no binding and no entry
-    /// point, names its API with the module's prefixes, and shares no global name with
-    /// the f32 module, so that both go in one shader in either order.
-    #[test]
-    fn the_f64_pass_is_the_f64_module_plus_its_bindings() {
-        let module = wgsl_finish_module();
-        let pass = finish_source();
-        assert!(pass.starts_with(&module));
-        assert!(pass.ends_with(FINISH_BODY));
-        let parsed = validate_f64(&module).unwrap_or_else(|e| panic!("{e}"));
-        assert_includable(
-            &module,
-            &parsed,
-            &["torus_finish_f64", "torus_finish_wanted"],
-            &[
-                "const TORUS_F64_FOLLOW: u32 = 0u;",
-                "const TORUS_F64_HOST: u32 = 2u;",
-                "const TORUS_F64_SURFACE_ALWAYS: u32 = 4u;",
-                "const TORUS_F64_STATUS_FRONT: u32 = 1u;",
-                "const TORUS_F64_STATUS_HOST: u32 = 4u;",
-            ],
-        );
-        assert_prefixed(&parsed, 40);
-        // No name in common with the f32 module (`__…` are naga's own).
-        let f32_module = wgpu::naga::front::wgsl::parse_str(&wgsl_module()).expect("parses");
-        let f32_names = global_names(&f32_module);
-        let common: Vec<String> = global_names(&parsed)
-            .into_iter()
-            .filter(|n| f32_names.contains(n) && !n.starts_with("__"))
-            .collect();
-        assert!(common.is_empty(), "declared by both modules: {common:?}");
-        // Both, in either order, validate as one shader; a second copy of either clashes.
-        let f32_text = wgsl_module();
-        for both in [
-            format!("{f32_text}\n{module}"),
-            format!("{module}\n{f32_text}"),
-        ] {
-            let parsed = validate_f64(&both).unwrap_or_else(|e| panic!("{e}"));
-            assert_prefixed(&parsed, 100);
-        }
-        assert!(validate_f64(&format!("{module}\n{module}")).is_err());
-    }
-
-    /// Changing a Rust constant changes the kernel's text, in exactly that line.
-    #[test]
-    fn a_changed_constant_changes_the_kernel() {
-        let cpu = KernelConstants::CPU;
-        let changed = KernelConstants {
-            safety_rel: cpu.safety_rel * 2.0,
-            ..cpu
-        };
-        let (a, b) = (cpu.source(), changed.source());
-        assert_ne!(a, b);
-        let differing: Vec<(&str, &str)> =
-            a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
-        assert_eq!(differing.len(), 1, "{differing:?}");
-        assert!(
-            differing[0]
-                .1
-                .starts_with("const TC_SAFETY_REL: f32 = 0x1.000000p-11f;")
-        );
-        let seed = KernelConstants {
-            cbrt_seed: cpu.cbrt_seed + 1,
-            ..cpu
-        };
-        assert_ne!(seed.source(), a);
-        assert_eq!(kernel_source(), a);
-    }
-    /// The f64 finish pass parses and validates as WGSL with naga's `FLOAT64` capability
-    /// (what `SHADER_F64` enables), with the CPU's constants and with a changed one, and
-    /// every threshold is the Rust value, to the bit.
-    #[test]
-    fn the_f64_finish_pass_validates_and_takes_its_constants_from_rust() {
-        use wgpu::naga;
-        let cpu = FinishConstants::CPU;
-        for constants in [
-            cpu,
-            FinishConstants {
-                near_double: 2e-7,
-                ..cpu
-            },
-        ] {
-            let text = constants.source();
-            let module = naga::front::wgsl::parse_str(&text)
-                .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&text)));
-            naga::valid::Validator::new(
-                naga::valid::ValidationFlags::all(),
-                naga::valid::Capabilities::FLOAT64,
-            )
-            .validate(&module)
-            .unwrap_or_else(|e| panic!("{e:?}"));
-            assert!(module.entry_points.iter().any(|e| e.name == "finish_main"));
-            // naga reads every f64 literal as Rust does: its constant table holds the
-            // header's values to the bit.
-            let header = constants.header();
-            let mut seen = 0;
-            for (_, c) in module.constants.iter() {
-                let Some(name) = c.name.as_deref() else {
-                    continue;
-                };
-                let naga::Expression::Literal(naga::Literal::F64(value)) =
-                    module.global_expressions[c.init]
-                else {
-                    continue;
-                };
-                let prefix = format!("const {name}: f64 = ");
-                let line = header
-                    .lines()
-                    .find(|l| l.starts_with(&prefix))
-                    .unwrap_or_else(|| panic!("{name} not in the header"));
-                let literal = line[prefix.len()..].strip_suffix("lf;").expect("lf;");
-                let want: f64 = literal.parse().expect("a decimal");
-                assert_eq!(value.to_bits(), want.to_bits(), "{line}: naga {value:e}");
-                seen += 1;
-            }
-            let declared = header.lines().filter(|l| l.contains(": f64 = ")).count();
-            assert_eq!(seen, declared, "every f64 constant read back");
-        }
-        let header = cpu.header();
-        for (name, value) in [
-            ("FIN_EPS", EPS),
-            ("FIN_EIGHT_EPS", 8.0 * EPS),
-            ("FIN_SIGN_SURE_EPS", SIGN_SURE * EPS),
-            ("FIN_TOUCH_EPS", TOUCH * EPS),
-            ("FIN_NEAR_DOUBLE", NEAR_DOUBLE),
-            ("FIN_DISC_NEAR", DISC_NEAR),
-            ("FIN_SMALL_ROOT", SMALL_ROOT),
-            ("FIN_POLISH_BELOW", POLISH_BELOW),
-            ("FIN_CHORD_SCALE", 1.0 + CHORD_SLACK),
-            ("FIN_OWN_ROOT_REACH", OWN_ROOT_REACH),
-            ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
-            ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
-        ] {
-            let line = format!("const TC_{name}: f64 = {};", literal_f64(value));
-            assert!(header.contains(&line), "{line} not in\n{header}");
-        }
-        assert!(header.contains(&format!("const TC_FIN_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-        for line in FINISH_MODULE_BODY.lines().chain(FINISH_BODY.lines()) {
-            assert!(
-                !line.trim_start().starts_with("const "),
-                "hand-written: {line}"
-            );
-        }
-    }
-
-    /// Changing a Rust constant of the f64 path changes the f64 pass, in exactly that line.
-    #[test]
-    fn a_changed_constant_changes_the_f64_pass() {
-        let cpu = FinishConstants::CPU;
-        let changed = FinishConstants {
-            near_double: cpu.near_double * 2.0,
-            ..cpu
-        };
-        let (a, b) = (cpu.source(), changed.source());
-        let differing: Vec<(&str, &str)> =
-            a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
-        assert_eq!(differing.len(), 1, "{differing:?}");
-        assert_eq!(differing[0].1, "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;");
-        assert_eq!(finish_source(), a);
-    }
-}
+mod tests;

@@ -1,8 +1,10 @@
-// The library's compute kernel (src/gpu/mod.rs runs it): module.wgsl's functions behind
-// their generated header, with the bindings and the entry point below. One ray per
+// The library's compute kernel (src/gpu/intersector.rs runs it): module/*.wgsl's functions
+// behind their generated header, with the bindings and the entry point below. One ray per
 // invocation; the output per ray is two vec4: (t, normal.xyz) and (code, why, 0, 0) as
 // f32 (TORUS_MISS, TORUS_HIT, TORUS_ESCALATE; in the cull-only mode, config.z = 1,
 // TORUS_MISS rejected and TORUS_KEPT kept).
+//
+// mirrors: main -> crate::gpu::intersector::GpuIntersector::dispatch_with (the kernel's pass)
 
 struct Params {
     // The torus (112 bytes).

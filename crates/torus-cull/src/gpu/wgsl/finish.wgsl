@@ -1,5 +1,5 @@
 // The library's f64 finish pass (src/gpu/finish.rs runs it, on an adapter with
-// SHADER_F64): finish_module.wgsl's functions behind their generated header, with the
+// SHADER_F64): finish_module/*.wgsl's functions behind their generated header, with the
 // bindings and the entry point below. One ray per invocation.
 //
 // Per ray, in: the world ray (TorusWorldRay) and the host's instruction in word 7 of its
@@ -8,6 +8,9 @@
 // TORUS_F64_SURFACE_ALWAYS: the same for a ray from a surface point; TORUS_F64_HOST: the
 // host answers it). Out: (t, normal.xyz) and (point.xyz, status) as f32 (TorusHit64);
 // status TORUS_F64_STATUS_PROVED where the f32 kernel proved the answer.
+//
+// mirrors: write_answer -> none (a record; the host reads it with crate::gpu::finish::device_answer)
+// mirrors: finish_main -> crate::gpu::intersector::GpuIntersector::dispatch_with (the f64 pass)
 
 struct Params {
     // The f32 kernel's uniform block: only config.x (rays in this dispatch) is read.
@@ -38,7 +41,7 @@ fn finish_main(@builtin(global_invocation_id) gid: vec3<u32>) {
         write_answer(i, tc_fin_status(TORUS_F64_STATUS_HOST));
         return;
     }
-    // The host's decode of the f32 record (gpu/mod.rs, verdict): a miss, or a hit with a
+    // The host's decode of the f32 record (gpu/escalation.rs, verdict): a miss, or a hit with a
     // finite t and normal, is proved; everything else escalated.
     let v0 = verdicts[2u * i];
     let code = u32(verdicts[2u * i + 1u].x);

@@ -1,0 +1,71 @@
+//! The cull the kernel runs before the intersection ([`GpuCull`]): every cull with a GPU
+//! form in the table of culls (`cull/table.rs`), by the kernel's code, and its
+//! conversions to and from the CPU's culls.
+
+use crate::cull::BatchCull;
+use crate::cull::table::{cull_table, define_gpu_culls};
+use crate::{CullKind, Named};
+use std::fmt;
+
+cull_table!(define_gpu_culls);
+
+impl GpuCull {
+    /// The stable name (as [`crate::CullKind`]'s).
+    pub fn name(self) -> &'static str {
+        Named::name(self.kind())
+    }
+
+    /// The kernel's code for the cull (`Params.config.y`).
+    pub(crate) fn code(self) -> u32 {
+        GpuCull::ALL
+            .iter()
+            .position(|&c| c == self)
+            .expect("every cull is in ALL") as u32
+    }
+}
+
+/// Every batch cull runs on the GPU (the table's rows with a lane form have a GPU form).
+impl From<BatchCull> for GpuCull {
+    fn from(cull: BatchCull) -> GpuCull {
+        match GpuCull::try_from(cull.kind()) {
+            Ok(gpu) => gpu,
+            Err(_) => unreachable!("every batch cull has a GPU form"),
+        }
+    }
+}
+
+impl From<GpuCull> for CullKind {
+    fn from(cull: GpuCull) -> CullKind {
+        cull.kind()
+    }
+}
+
+impl fmt::Display for GpuCull {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cull::BATCHED;
+
+    #[test]
+    fn every_batch_cull_is_a_gpu_cull_by_the_same_name() {
+        assert_eq!(GpuCull::ALL.len(), BATCHED.len());
+        for (i, (&gpu, &batch)) in GpuCull::ALL.iter().zip(&BATCHED).enumerate() {
+            assert_eq!(GpuCull::from(batch), gpu);
+            assert_eq!(gpu.batched(), batch);
+            assert_eq!(gpu.kind(), batch.kind());
+            assert_eq!(gpu.name(), Named::name(batch.kind()));
+            assert_eq!(GpuCull::try_from(batch.kind()), Ok(gpu));
+            // The kernel's switch reads the code in this order.
+            assert_eq!(gpu.code(), i as u32);
+        }
+        assert_eq!(
+            GpuCull::try_from(CullKind::DiscriminantF64),
+            Err(CullKind::DiscriminantF64)
+        );
+    }
+}
