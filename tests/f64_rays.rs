@@ -6,7 +6,7 @@
 //! grid (so the f64 ray is not an f32 ray), pushed back to 10⁴ and 10⁸·(R + r), with the
 //! direction scaled by 10⁻¹⁰⁰ … 10¹⁰⁰ (beyond any f32); and, in the torus frame, lines
 //! hugging the hole edge and tangents to the four special circles at ±10⁻⁶·r and
-//! ±10⁻⁷·r, built in f64 (`harness::workload::adversarial`), at ν from 1.01 to 1000.
+//! ±10⁻⁷·r, built in f64 (`torus_cull_lab::workload::adversarial`), at ν from 1.01 to 1000.
 
 // Every check here runs against the harness's oracle.
 
