@@ -106,8 +106,8 @@ fn split(src: &str) -> (String, String) {
                 hashes += 1;
                 j += 1;
             }
-            for k in i..=j.min(c.len() - 1) {
-                blank_both(&mut code, &mut comments, c[k]);
+            for &ch in &c[i..=j.min(c.len() - 1)] {
+                blank_both(&mut code, &mut comments, ch);
             }
             i = j + 1;
             while i < c.len() {
