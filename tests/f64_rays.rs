@@ -1,6 +1,6 @@
 //! f64 rays ([`DRay`]) end to end, against the oracle on the same f64 line: the exact
 //! intersection finds every definite hit at the oracle's first root and invents none, and
-//! no cull, seeing the line rounded to f32 through `Torus::dline_to_local`, rejects a hit.
+//! no cull, seeing the line rounded to f32 through `Torus::line_to_local`, rejects a hit.
 //!
 //! Families: the five workload generators at random poses, their lines nudged off the f32
 //! grid (so the f64 ray is not an f32 ray), pushed back to 10⁴ and 10⁸·(R + r), with the

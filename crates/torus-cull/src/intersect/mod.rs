@@ -14,7 +14,7 @@
 //! Far origins cost nothing in accuracy: `u` is O(1) for every hit wherever the ray starts.
 
 use crate::cull::Cull;
-use crate::geometry::{CullLine, Tube};
+use crate::geometry::Tube;
 use crate::num::V3;
 use crate::num::{Sc, sc};
 use crate::quartic::{RealRoots, solve_depressed_monic};
@@ -91,7 +91,6 @@ pub trait TorusRay: sealed::Sealed {
 /// What the crate needs of a [`TorusRay`], out of the public docs.
 pub(crate) mod sealed {
     use super::Hit;
-    use crate::geometry::CullLine;
     use crate::geometry::ray::sealed::Internals;
     use crate::geometry::ray::sealed::Scalar;
     use crate::{LocalLine, Precision, Ray, Torus};
@@ -135,7 +134,7 @@ pub(crate) mod sealed {
 
     pub trait Sealed {
         /// The ray as a `Ray` of its precision.
-        type Precision: Precision + CullLine;
+        type Precision: Precision;
         fn as_ray(&self) -> &Ray<Self::Precision>;
         /// Whether an f64 `t` is finite once rounded to the ray's float (a hit the ray
         /// can report).
@@ -147,7 +146,7 @@ pub(crate) mod sealed {
             Self: Sized;
     }
 
-    impl<P: Precision + CullLine> Sealed for Ray<P> {
+    impl<P: Precision> Sealed for Ray<P> {
         type Precision = P;
         #[inline(always)]
         fn as_ray(&self) -> &Ray<P> {
@@ -168,7 +167,7 @@ pub(crate) mod sealed {
         /// The line in the torus frame in f32, as the culls see it.
         #[inline(always)]
         fn cull_line(&self, torus: &Torus) -> LocalLine {
-            <Self::Precision as CullLine>::cull_line(torus, self.as_ray())
+            torus.line_to_local(self.as_ray())
         }
         /// Origin and direction in the torus frame, in f64.
         #[inline(always)]
@@ -196,7 +195,7 @@ pub(crate) mod sealed {
     impl<R: Sealed + ?Sized> Steps for R {}
 }
 
-impl<P: Precision + CullLine> TorusRay for Ray<P> {
+impl<P: Precision> TorusRay for Ray<P> {
     type Hit = Hit<P>;
     type Float = P::Float;
     #[inline(always)]
