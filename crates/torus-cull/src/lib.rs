@@ -111,3 +111,8 @@ pub use intersect::{
     intersect_all, intersect_culled, occluded,
 };
 pub use names::{Named, UnknownName};
+
+/// The README's examples, compiled and run by `cargo test --doc`.
+#[cfg(doctest)]
+#[doc = include_str!("../../../README.md")]
+struct ReadmeExamples;

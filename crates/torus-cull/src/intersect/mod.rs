@@ -388,11 +388,6 @@ pub(crate) fn kept_by<C: Cull + ?Sized, R: TorusRay>(cull: &C, torus: &Torus, ra
     cull.keeps(torus.bounds(), line.origin, line.dir)
 }
 
-/// The README's examples, compiled and run by `cargo test --doc`.
-#[cfg(doctest)]
-#[doc = include_str!("../../../README.md")]
-struct ReadmeExamples;
-
 #[cfg(test)]
 mod tests {
     use super::*;
