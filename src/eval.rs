@@ -313,7 +313,7 @@ fn evaluate(
             t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
             finished: None,
-            line: torus.dline_to_local(&ray),
+            line: torus.line_to_local(&ray),
             gpu_keeps: None,
         });
     }

@@ -34,5 +34,6 @@ pub mod report;
 pub mod results;
 pub mod results_file;
 pub mod scene;
+pub mod scene_kind;
 pub mod solver_suite;
 pub mod workload;

@@ -1,12 +1,12 @@
 //! f64 rays ([`DRay`]) end to end, against the oracle on the same f64 line: the exact
 //! intersection finds every definite hit at the oracle's first root and invents none, and
-//! no cull, seeing the line rounded to f32 through `Torus::dline_to_local`, rejects a hit.
+//! no cull, seeing the line rounded to f32 through `Torus::line_to_local`, rejects a hit.
 //!
 //! Families: the five workload generators at random poses, their lines nudged off the f32
 //! grid (so the f64 ray is not an f32 ray), pushed back to 10⁴ and 10⁸·(R + r), with the
 //! direction scaled by 10⁻¹⁰⁰ … 10¹⁰⁰ (beyond any f32); and, in the torus frame, lines
 //! hugging the hole edge and tangents to the four special circles at ±10⁻⁶·r and
-//! ±10⁻⁷·r, built in f64 (`harness::workload::adversarial`), at ν from 1.01 to 1000.
+//! ±10⁻⁷·r, built in f64 (`torus_cull_lab::workload::adversarial`), at ν from 1.01 to 1000.
 
 // Every check here runs against the harness's oracle.
 

@@ -2,7 +2,7 @@
 //! exit 1 on a regression.
 
 use super::CliResult;
-use crate::out;
+use crate::console::out;
 use std::path::Path;
 use std::process::ExitCode;
 use torus_cull_lab::compare::{self, Report, coverage};

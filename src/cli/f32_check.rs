@@ -2,7 +2,7 @@
 //! plain f32 closed form of shaders, counted against the oracle family by family.
 
 use super::CliResult;
-use crate::{out, outln};
+use crate::console::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -84,7 +84,7 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         args.rays
     );
     bar.set_message(message.clone());
-    let heartbeat = crate::Heartbeat::new(message, "families");
+    let heartbeat = crate::console::Heartbeat::new(message, "families");
     heartbeat.update(0, families.len() as u64);
     let records = f32_check::check(
         &families,

@@ -12,6 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 mod compare;
+mod console;
 mod eval;
 mod f32_check;
 mod plot;
@@ -264,102 +265,6 @@ fn main() -> ExitCode {
 }
 
 type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
-
-/// Progress where the bar cannot be seen: with stderr not a terminal (a CI log, `2> log`)
-/// indicatif draws nothing, so this prints a line when the work starts, then at most one
-/// every [`Heartbeat::EVERY`], and one at the end.
-pub(crate) struct Heartbeat {
-    label: String,
-    unit: &'static str,
-    start: std::time::Instant,
-    last: std::sync::Mutex<Option<std::time::Instant>>,
-    active: bool,
-}
-
-impl Heartbeat {
-    /// The longest silence between two lines.
-    const EVERY: std::time::Duration = std::time::Duration::from_secs(5);
-
-    /// Active only when stderr is not a terminal.
-    pub(crate) fn new(label: String, unit: &'static str) -> Heartbeat {
-        use std::io::IsTerminal;
-        Heartbeat {
-            label,
-            unit,
-            start: std::time::Instant::now(),
-            last: std::sync::Mutex::new(None),
-            active: !std::io::stderr().is_terminal(),
-        }
-    }
-
-    /// `done` of `total` units finished.
-    pub(crate) fn update(&self, done: u64, total: u64) {
-        if !self.active {
-            return;
-        }
-        let now = std::time::Instant::now();
-        let Ok(mut last) = self.last.lock() else {
-            return;
-        };
-        let due = last.is_none_or(|t| now - t >= Self::EVERY) || (total > 0 && done >= total);
-        if due && *last != Some(now) {
-            let pct = if total > 0 {
-                100.0 * done as f64 / total as f64
-            } else {
-                0.0
-            };
-            eprintln!(
-                "{}: {done}/{total} {} ({pct:.0}%), {:.0} s",
-                self.label,
-                self.unit,
-                (now - self.start).as_secs_f64()
-            );
-            *last = Some(now);
-        }
-    }
-}
-
-/// Set once stdout's reader has gone (`torus-cull run … | head -1`): later output is
-/// dropped, and the command finishes its files and exits as it would have.
-static STDOUT_CLOSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
-
-/// Writes to stdout like `print!`, but a closed pipe is not an error (nor a panic): the
-/// output is dropped from then on. Other write errors (`/dev/full`) are returned, naming
-/// stdout.
-fn write_stdout(args: std::fmt::Arguments) -> std::io::Result<()> {
-    use std::io::Write;
-    use std::sync::atomic::Ordering;
-    if STDOUT_CLOSED.load(Ordering::Relaxed) {
-        return Ok(());
-    }
-    let mut out = std::io::stdout().lock();
-    match out.write_fmt(args).and_then(|()| out.flush()) {
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
-            STDOUT_CLOSED.store(true, Ordering::Relaxed);
-            Ok(())
-        }
-        Err(e) => Err(std::io::Error::new(e.kind(), format!("stdout: {e}"))),
-        Ok(()) => Ok(()),
-    }
-}
-
-/// `print!` through [`write_stdout`]: `out!(...)?`.
-macro_rules! out {
-    ($($arg:tt)*) => {
-        $crate::write_stdout(format_args!($($arg)*))
-    };
-}
-
-/// `println!` through [`write_stdout`]: `outln!(...)?`.
-macro_rules! outln {
-    () => {
-        $crate::write_stdout(format_args!("\n"))
-    };
-    ($($arg:tt)*) => {
-        $crate::write_stdout(format_args!("{}\n", format_args!($($arg)*)))
-    };
-}
-pub(crate) use {out, outln};
 
 /// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, say so in
 /// one line on stderr, then die of the signal as if there were no handler (so the caller

@@ -1,9 +1,10 @@
 //! `torus-cull plot`: the SVG figures of a results file or an f32-check file.
 
 use super::CliResult;
-use crate::outln;
+use crate::console::outln;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use torus_cull_lab::results::Results;
 use torus_cull_lab::results_file::ResultsFile;
 
 /// Runs `plot`.
@@ -56,4 +57,24 @@ fn check_out_dir(dir: &Path) -> Result<(), String> {
         )),
         Err(e) => Err(format!("--out-dir {}: {e}", dir.display())),
     }
+}
+
+/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+pub(crate) fn write_plots(
+    results: &Results,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let dir = path
+        .parent()
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+    let stem = path
+        .file_stem()
+        .map_or("results".into(), |s| s.to_string_lossy());
+    let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
+    outln!(
+        "wrote {} plots to {}/{stem}-*.svg",
+        written.len(),
+        dir.display()
+    )?;
+    Ok(())
 }

@@ -1,7 +1,7 @@
 //! `torus-cull render`: a scene's picture and cull map (PNG).
 
 use super::CliResult;
-use crate::outln;
+use crate::console::outln;
 use std::path::Path;
 use std::process::ExitCode;
 

@@ -1,7 +1,7 @@
 //! `torus-cull run`: the rejection sweep of a workload, its tables, JSON and plots.
 
 use super::CliResult;
-use crate::{out, outln};
+use crate::console::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -41,7 +41,7 @@ pub fn run(
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
     if !no_plots {
-        write_plots(&results, &path)?;
+        crate::plot::write_plots(&results, &path)?;
     }
     if !false_rejects.is_empty() {
         report_false_rejects(&false_rejects, workload.seed);
@@ -94,7 +94,7 @@ fn sweep(
     );
     let message = format!("{}: {} case x nu", workload.name, units);
     bar.set_message(message.clone());
-    let heartbeat = crate::Heartbeat::new(format!("run {message}"), "rays");
+    let heartbeat = crate::console::Heartbeat::new(format!("run {message}"), "rays");
     let total = units * workload.rays as u64;
     heartbeat.update(0, total);
     let swept = measure::rejection_sweep(workload, culls, threads, &|n| {
@@ -123,26 +123,6 @@ fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io
          rays the oracle calls ambiguous are not counted)",
         culls.len()
     )
-}
-
-/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
-pub(crate) fn write_plots(
-    results: &Results,
-    path: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let dir = path
-        .parent()
-        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-    let stem = path
-        .file_stem()
-        .map_or("results".into(), |s| s.to_string_lossy());
-    let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
-    outln!(
-        "wrote {} plots to {}/{stem}-*.svg",
-        written.len(),
-        dir.display()
-    )?;
-    Ok(())
 }
 
 /// The first 20 false rejects on stderr, each with what it takes to replay it, and their

@@ -7,6 +7,7 @@
 
 pub mod batched;
 
+pub use crate::scene_kind::SceneKind;
 pub use batched::{LeafBatchStats, trace_leaves_batched};
 
 use crate::workload::CameraView;
@@ -17,43 +18,8 @@ use obvhs::cwbvh::CwBvh;
 use obvhs::ray::RayHit;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use serde::{Deserialize, Serialize};
 use std::fmt;
-use torus_cull::{Cull, Named, Ray, Torus, intersect};
-
-/// A many-torus scene layout.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SceneKind {
-    /// Tori at random centres in a cube, with random axes.
-    RingField,
-    /// Rows of interlocked links; the camera looks down on them, so every other link is
-    /// seen face-on and rays fall through its hole.
-    Chain,
-    /// A square grid of tori whose axes all point at the camera: the hole-heavy case the
-    /// paper targets.
-    FacingGrid,
-}
-
-/// Every scene by its stable name, in table order.
-impl Named for SceneKind {
-    const KIND: &'static str = "scene";
-    const ALL: &'static [SceneKind] = &[
-        SceneKind::RingField,
-        SceneKind::Chain,
-        SceneKind::FacingGrid,
-    ];
-
-    fn name(self) -> &'static str {
-        match self {
-            SceneKind::RingField => "ring_field",
-            SceneKind::Chain => "chain",
-            SceneKind::FacingGrid => "facing_grid",
-        }
-    }
-}
-
-torus_cull::named_display_and_from_str!(SceneKind);
+use torus_cull::{Cull, Ray, Torus, intersect};
 
 /// Per-ray work counters of a traversal.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -239,7 +205,7 @@ impl Scene {
         found.then(|| (indices[hit.primitive_id as usize], hit.t))
     }
 
-    /// The BVH, for the batch traversal of [`torus_cull::batch::trace_leaves_batched`].
+    /// The BVH, for the batch traversal of [`trace_leaves_batched`].
     pub(crate) fn bvh(&self) -> &CwBvh {
         &self.bvh
     }

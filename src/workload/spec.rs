@@ -7,7 +7,7 @@
 //! Unknown fields are errors. Every error names the file, the field and what is allowed.
 
 use super::{Case, Pose};
-use crate::scene::SceneKind;
+use crate::scene_kind::SceneKind;
 use serde::Deserialize;
 use sha2::{Digest, Sha256};
 use std::fmt;

@@ -108,45 +108,9 @@ pub use geometry::{
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
-    intersect_all, occluded,
+    intersect_all, intersect_culled, occluded,
 };
 pub use names::{Named, UnknownName};
-
-/// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
-/// intersection only if the cull keeps the ray. This is the timed `total_ns` path.
-///
-/// ```
-/// use torus_cull::{CychoszCull, NoCull, Ray, SkalaCull, Torus, intersect_culled};
-/// use glam::Vec3;
-/// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?; // its cull bounds, once
-/// let hole = Ray::new(Vec3::new(0.5, 10.0, 0.0), Vec3::new(0.1, -1.0, 0.0))?;
-/// // Every conservative cull gives the same answer; skala just gets there without the quartic.
-/// assert_eq!(intersect_culled(&SkalaCull, &torus, &hole), None);
-/// assert_eq!(intersect_culled(&CychoszCull, &torus, &hole), None);
-/// assert_eq!(intersect_culled(&NoCull, &torus, &hole), None);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-#[inline(always)]
-#[must_use]
-pub fn intersect_culled<C: Cull + ?Sized, R: TorusRay>(
-    cull: &C,
-    torus: &Torus,
-    ray: &R,
-) -> Option<R::Hit> {
-    if kept_by(cull, torus, ray) {
-        intersect(torus, ray)
-    } else {
-        None
-    }
-}
-
-/// The cull step of [`intersect_culled`] (and of [`Culled`]'s queries): the ray's line in
-/// the torus frame, as the culls see it, against the torus's own bounds.
-#[inline(always)]
-fn kept_by<C: Cull + ?Sized, R: TorusRay>(cull: &C, torus: &Torus, ray: &R) -> bool {
-    let line = intersect::sealed::Steps::cull_line(ray, torus);
-    cull.keeps(torus.bounds(), line.origin, line.dir)
-}
 
 /// The README's examples, compiled and run by `cargo test --doc`.
 #[cfg(doctest)]

@@ -8,7 +8,7 @@
 //! the adapter has none). Upload and read-back are timed once per case × ν and reported
 //! apart.
 
-use crate::outln;
+use crate::console::outln;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};

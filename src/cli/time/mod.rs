@@ -1,7 +1,7 @@
 //! `torus-cull time`: paired, interleaved timing ratios of the culls on a workload, in
 //! about half a minute, written as the `ratio` section of a results file.
 
-use crate::{out, outln};
+use crate::console::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -156,7 +156,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         let code = gpu::run(&workload, &nus, &culls, args.seconds, batch, &path)?;
         if !args.no_plots {
             // Drawn from the file as written: its estimates, ns per ray against ν.
-            crate::run::write_plots(&Results::load(&path)?, &path)?;
+            crate::plot::write_plots(&Results::load(&path)?, &path)?;
         }
         return Ok(code);
     }
@@ -209,7 +209,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
     if !args.no_plots {
-        crate::run::write_plots(&results, &path)?;
+        crate::plot::write_plots(&results, &path)?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -433,7 +433,7 @@ fn time_with_progress(
         workload.name, options.batch
     );
     bar.set_message(message.clone());
-    let heartbeat = crate::Heartbeat::new(format!("time {message}"), "visits");
+    let heartbeat = crate::console::Heartbeat::new(format!("time {message}"), "visits");
     let records = time_workload(workload, nus, culls, options, &mut |done, all| {
         bar.set_length(all as u64);
         bar.set_position(done as u64);

@@ -23,7 +23,7 @@
 //! * [`Wavefront`]: the two together for a batch of world rays: cull, compact the
 //!   survivors, batch-solve, hits; the `"mode": "batch"` timings of `cargo bench`.
 //!
-//! The harness's BVH scenes use the wavefront at their leaves (`harness::scene::batched`).
+//! The lab's BVH scenes use the wavefront at their leaves (`torus_cull_lab::scene::batched`).
 //!
 //! ```
 //! use torus_cull::batch::{BatchCull, Dispatch, KeepMask, Lines, Wavefront, cull_batch};

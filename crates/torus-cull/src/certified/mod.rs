@@ -255,7 +255,7 @@ fn proved_hit(t: f32, normal: Vec3, ray: &Ray) -> Hit {
 /// ```
 #[must_use]
 pub fn intersect_f32_culled<C: Cull + ?Sized>(cull: &C, torus: &Torus, ray: &Ray) -> F32Hit {
-    if crate::kept_by(cull, torus, ray) {
+    if crate::intersect::kept_by(cull, torus, ray) {
         intersect_f32(torus, ray)
     } else {
         F32Hit {

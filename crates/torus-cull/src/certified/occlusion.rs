@@ -56,7 +56,7 @@ pub fn occluded_f32(torus: &Torus, ray: &Ray) -> F32Occluded {
 /// cull, not escalated).
 #[must_use]
 pub fn occluded_f32_culled<C: Cull + ?Sized>(cull: &C, torus: &Torus, ray: &Ray) -> F32Occluded {
-    if crate::kept_by(cull, torus, ray) {
+    if crate::intersect::kept_by(cull, torus, ray) {
         occluded_f32(torus, ray)
     } else {
         F32Occluded {

@@ -7,7 +7,7 @@
 //! cull ([`keeps_scalar`], what every [`Cull::keeps`] calls), and instantiated at AVX2,
 //! AVX-512 or NEON it is the batch cull of [`crate::batch::cull_batch`]. The two agree bit
 //! for bit by construction: the same operations in the same order, no fused multiply-add
-//! (see `src/batch/lanes.rs`); `tests/batch.rs` checks it at every dispatch level.
+//! (see `src/num/lanes.rs`); `tests/batch.rs` checks it at every dispatch level.
 
 use super::CullBounds;
 use crate::num::M32s;
@@ -21,7 +21,7 @@ use pulp::{Scalar, Simd};
 /// of any length. `false` means the line provably misses the torus.
 ///
 /// It is the low-level form, in the torus frame: the line from
-/// [`crate::Torus::line_to_local`] (or [`crate::Torus::dline_to_local`]) and the bounds
+/// [`crate::Torus::line_to_local`] (of a `Ray` or a `DRay`) and the bounds
 /// from [`crate::Torus::bounds`] of the same torus. Bounds come only from a validated
 /// [`crate::Torus`], so a torus without a hole (R ≤ r) cannot reach a cull.
 /// [`crate::intersect_culled`] and [`crate::Torus::with_cull`] do both steps for a world

@@ -7,7 +7,6 @@ mod torus;
 mod tube;
 
 pub use bounds::{CullBounds, SAFETY_REL};
-pub(crate) use torus::CullLine;
 pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};

@@ -34,6 +34,7 @@ impl Precision for DVec3 {
 
 pub(crate) mod sealed {
     use super::Precision;
+    use crate::geometry::torus::{LocalLine, Torus};
     use glam::{DVec3, Vec3};
 
     /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
@@ -116,6 +117,10 @@ pub(crate) mod sealed {
         fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
         where
             Self: Precision;
+        /// [`crate::Torus::line_to_local`] of a ray of this precision.
+        fn cull_line(torus: &Torus, ray: &super::Ray<Self>) -> LocalLine
+        where
+            Self: Precision;
     }
 
     impl Internals for Vec3 {
@@ -145,6 +150,10 @@ pub(crate) mod sealed {
         fn as_f32_rays(rays: &[super::Ray]) -> Option<&[super::Ray]> {
             Some(rays)
         }
+        #[inline(always)]
+        fn cull_line(torus: &Torus, ray: &super::Ray) -> LocalLine {
+            torus.ray_line(ray)
+        }
     }
 
     impl Internals for DVec3 {
@@ -173,6 +182,10 @@ pub(crate) mod sealed {
         }
         fn as_f32_rays(_: &[super::DRay]) -> Option<&[super::Ray]> {
             None
+        }
+        #[inline]
+        fn cull_line(torus: &Torus, ray: &super::DRay) -> LocalLine {
+            torus.dray_line(ray)
         }
     }
 }

@@ -464,9 +464,24 @@ impl Torus {
     /// to the centre, computed in f64: the same line, now with an origin the margin
     /// covers, whatever the distance. The near case, which is every ray a camera near
     /// the torus shoots, costs one compare.
-    #[inline]
+    ///
+    /// For a [`DRay`] the line is formed in f64 with a unit direction (the culls' verdicts
+    /// do not depend on its length, and f32 holds a unit vector whatever the ray's
+    /// scale), a far origin moves to the foot point the same way, and rounding the origin
+    /// (then within 64·(R + r)) and the direction to f32 moves the line by at most about
+    /// 2⁻¹⁷·(R + r) inside the bounding sphere, below the culls' margin η = 2⁻¹²·(R + r).
+    /// A foot point farther than 4·(R + r) (a line that misses the torus by far, and
+    /// whose foot f32 may not even hold) is pulled in to 4·(R + r) along itself: still a
+    /// line that misses.
+    #[inline(always)]
     #[must_use]
-    pub fn line_to_local(&self, ray: &Ray) -> LocalLine {
+    pub fn line_to_local<P: Precision>(&self, ray: &Ray<P>) -> LocalLine {
+        P::cull_line(self, ray)
+    }
+
+    /// [`Torus::line_to_local`] of an f32 [`Ray`].
+    #[inline]
+    pub(super) fn ray_line(&self, ray: &Ray) -> LocalLine {
         let relative = ray.origin() - self.center;
         // An overflowed (infinite) square fails the test too and takes the f64 path.
         if relative.length_squared() <= self.near_origin_sq {
@@ -475,14 +490,14 @@ impl Torus {
                 dir: self.to_local * ray.dir(),
             }
         } else {
-            self.far_line_to_local(ray)
+            self.far_ray_line(ray)
         }
     }
 
     /// [`Torus::line_to_local`] for a far origin: the foot point, in f64.
     #[cold]
     #[inline(never)]
-    fn far_line_to_local(&self, ray: &Ray) -> LocalLine {
+    fn far_ray_line(&self, ray: &Ray) -> LocalLine {
         let (o, d) = self.line_to_local_f64(ray);
         if !self.placeable(o) {
             return self.unplaceable(d);
@@ -583,27 +598,9 @@ impl Torus {
         Ray::from_surface(P::from_dvec3(self.nearest_surface_point(at)), dir)
     }
 
-    /// An f64 ray's origin and direction in the torus frame, in f64 (for the exact path):
-    /// [`Torus::line_to_local_f64`] of a [`DRay`].
-    #[inline]
-    #[must_use]
-    pub fn dline_to_local_f64(&self, ray: &DRay) -> (DVec3, DVec3) {
-        self.line_to_local_f64(ray)
-    }
-
-    /// An f64 ray's line in the torus frame, rounded to f32 for the culls.
-    ///
-    /// The line is formed in f64 with a unit direction (the culls' verdicts do not depend
-    /// on its length, and f32 holds a unit vector whatever the ray's scale); an origin
-    /// farther than [`NEAR_ORIGIN_REL`]·(R + r) moves to the foot point, as in
-    /// [`Torus::line_to_local`]. Rounding the origin (then within 64·(R + r)) and the
-    /// direction to f32 moves the line by at most about 2⁻¹⁷·(R + r) inside the bounding
-    /// sphere, below the culls' margin η = 2⁻¹²·(R + r). A foot point farther than
-    /// 4·(R + r) (a line that misses the torus by far, and whose foot f32 may not even
-    /// hold) is pulled in to 4·(R + r) along itself: still a line that misses.
-    #[must_use]
-    pub fn dline_to_local(&self, ray: &DRay) -> LocalLine {
-        let (o, d) = self.dline_to_local_f64(ray);
+    /// [`Torus::line_to_local`] of an f64 [`DRay`].
+    pub(super) fn dray_line(&self, ray: &DRay) -> LocalLine {
+        let (o, d) = self.line_to_local_f64(ray);
         if !self.placeable(o) {
             return self.unplaceable(d);
         }
@@ -709,27 +706,6 @@ fn rotation_axis_to_y(axis: DVec3) -> DMat3 {
     let (x_hat, _) = axis.any_orthonormal_pair();
     let z_hat = x_hat.cross(axis);
     DMat3::from_cols(x_hat, axis, z_hat).transpose()
-}
-
-/// The torus-frame line of a ray of either precision, as the culls see it (in f32):
-/// [`Torus::line_to_local`] for a [`Ray`], [`Torus::dline_to_local`] for a [`DRay`].
-pub trait CullLine: Precision {
-    /// `ray`'s line in `torus`'s frame.
-    fn cull_line(torus: &Torus, ray: &Ray<Self>) -> LocalLine;
-}
-
-impl CullLine for Vec3 {
-    #[inline(always)]
-    fn cull_line(torus: &Torus, ray: &Ray) -> LocalLine {
-        torus.line_to_local(ray)
-    }
-}
-
-impl CullLine for DVec3 {
-    #[inline]
-    fn cull_line(torus: &Torus, ray: &DRay) -> LocalLine {
-        torus.dline_to_local(ray)
-    }
 }
 
 #[cfg(test)]

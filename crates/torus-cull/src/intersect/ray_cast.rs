@@ -118,6 +118,6 @@ impl<C: Cull, R: TorusRay> RayCast<R> for Culled<'_, C> {
 
     #[inline]
     fn intersects_ray(&self, ray: &R) -> bool {
-        crate::kept_by(&self.cull, self.torus, ray) && occluded(self.torus, ray)
+        crate::intersect::kept_by(&self.cull, self.torus, ray) && occluded(self.torus, ray)
     }
 }

@@ -1,5 +1,5 @@
 //! [`Real`]: the thin number trait that lets a solver step be written once for the scalar
-//! solver and for every lane width (DESIGN.md §15).
+//! solver and for every lane width (docs/layout.md, "One source for scalar and lanes").
 //!
 //! One source for scalar and lane steps: a solver step is written once, generic over
 //! [`Real`], and is the scalar step at width 1 and the lane step at every other width.
