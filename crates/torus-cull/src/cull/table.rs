@@ -254,7 +254,7 @@ pub(crate) use define_gpu_culls;
 mod tests {
     use super::Shape;
     use crate::CullKind;
-    use crate::batch::BATCHED;
+    use crate::cull::BATCHED;
 
     #[test]
     fn the_lists_follow_the_table() {
@@ -269,37 +269,5 @@ mod tests {
             // Today every cull with a lane form has a GPU form, and only those.
             assert_eq!(kind.has_gpu_form(), kind.batched().is_some(), "{kind}");
         }
-    }
-
-    /// A cull marked as having a GPU form has its case in the WGSL module's cull switch
-    /// (`none` is the switch's default: no test), and no other cull has one.
-    #[cfg(feature = "gpu")]
-    #[test]
-    fn every_gpu_row_has_its_wgsl_function() {
-        use crate::gpu::GpuCull;
-        let source = crate::gpu::wgsl_module();
-        let switch = &source[source.find("fn tc_cull_keeps(").expect("the cull switch")..];
-        let switch = &switch[..switch.find("\n}\n").expect("its end")];
-        for kind in CullKind::TIMED {
-            let case = format!("case TORUS_CULL_{}:", kind.to_string().to_uppercase());
-            let has_case = switch.contains(&case);
-            match kind {
-                CullKind::NoCull => {
-                    assert!(kind.has_gpu_form() && !has_case && switch.contains("default:"))
-                }
-                _ => assert_eq!(has_case, kind.has_gpu_form(), "{kind}: {case}"),
-            }
-            assert_eq!(
-                GpuCull::try_from(kind).is_ok(),
-                kind.has_gpu_form(),
-                "{kind}"
-            );
-        }
-        let order: Vec<CullKind> = GpuCull::ALL.iter().map(|c| c.kind()).collect();
-        let want: Vec<CullKind> = CullKind::TIMED
-            .into_iter()
-            .filter(|c| c.has_gpu_form())
-            .collect();
-        assert_eq!(order, want);
     }
 }
