@@ -102,7 +102,7 @@ use std::fmt;
 use std::sync::{Mutex, mpsc};
 
 mod timing;
-pub use timing::{KernelTime, ResidentRays};
+pub use timing::{FinishTime, KernelTime, ResidentRays};
 
 /// The Debian package that gives a machine without a GPU a software Vulkan adapter.
 pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
