@@ -54,7 +54,7 @@
 #   - the kernel on lavapipe: ~400-450 ns/ray at 2^20 rays, 4-8 us/ray at 2^12 (there
 #     the dispatch dominates); `time --device gpu --cases uniform,grazing --nu 4 --culls
 #     none --batch 2^20 --seconds 0.1` took 38 s in all
-#   - the smoke run (every step at 2^10-2^12 rays): 27 s; 104 s with a cargo build beside it
+#   - the smoke run (every step at 2^10-2^12 rays): 27-32 s; 104 s beside a cargo build
 # On the H100 (docs/gpu.md) one kernel pass over 2^20 rays is ~0.3-0.5 ms, so a round of
 # the grid (copy + 9 culls, each ~4 ms of repeats) is ~40 ms and 7 rounds ~0.3 s: the
 # share, not the minimum rounds, sets each unit's time. Planned for an H100 (16 cores):
@@ -207,6 +207,12 @@ fi
 export WGPU_BACKEND=${WGPU_BACKEND:-vulkan}
 info=$("$bin" gpu-info 2> "$out/gpu-info.err")
 code=$?
+if [ $code -ne 0 ] && grep -q 'feature gpu' "$out/gpu-info.err"; then
+  die 2 "$bin was built without the feature gpu: cargo build --release --features gpu --bin torus-cull"
+fi
+if [ $code -ne 0 ] && grep -q "unrecognized subcommand" "$out/gpu-info.err"; then
+  die 2 "$bin has no gpu-info: build it from this commit (docs/gpu.md)"
+fi
 if [ $code -ne 0 ]; then
   die 4 "no GPU adapter (WGPU_BACKEND=$WGPU_BACKEND): $(tail -n 1 "$out/gpu-info.err")"
 fi
