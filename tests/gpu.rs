@@ -526,6 +526,100 @@ fn time_device_gpu_names_the_adapter() {
     );
 }
 
+/// `gpu-info` describes the adapter wgpu picks, one `key: value` a line, as
+/// benches/gpu_device.sh reads it.
+#[test]
+fn gpu_info_describes_the_adapter() {
+    let Some(gpu) = gpu() else { return };
+    let out = torus_cull(&["gpu-info"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let field = |key: &str| {
+        stdout
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("{key}: ")))
+            .unwrap_or_else(|| panic!("no {key}: in {stdout}"))
+            .to_string()
+    };
+    let yes = |b: bool| if b { "yes" } else { "no" };
+    assert_eq!(field("adapter"), gpu.adapter_name());
+    assert_eq!(field("device_type"), format!("{:?}", gpu.device_type()));
+    assert_eq!(field("backend"), format!("{:?}", gpu.backend()));
+    assert_eq!(field("software"), yes(gpu.is_software()));
+    assert_eq!(field("shader_f64"), yes(gpu.has_shader_f64()));
+    assert_eq!(field("timestamps"), yes(gpu.has_timestamps()));
+    let finish = field("f64_finish_pass");
+    assert_eq!(finish == "yes", gpu.finishes_on_device(), "{finish}");
+    assert!(finish == "yes" || finish.starts_with("no ("), "{finish}");
+    field("driver");
+}
+
+/// `time --device gpu --finish --cases`: the f64 pass timed after the kernel, per case ×
+/// ν × cull, only on the cases asked for, with who answered the escalated rays.
+#[test]
+fn time_device_gpu_times_the_finish_pass() {
+    let Some(gpu) = gpu() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("finish.json");
+    let args = [
+        "time",
+        "--device",
+        "gpu",
+        "--finish",
+        "--workload",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/workloads/quick.json"),
+        "--cases",
+        "grazing,hole",
+        "--culls",
+        "none",
+        "--nu",
+        "1.1",
+        "--seconds",
+        "0.2",
+        "--batch",
+        "2048",
+        "--no-plots",
+        "--out",
+        out_path.to_str().unwrap(),
+    ];
+    let out = torus_cull(&args);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if !gpu.finishes_on_device() {
+        assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+        assert!(stderr.contains("--finish"), "{stderr}");
+        return;
+    }
+    assert!(out.status.success(), "{stdout}{stderr}");
+    let results = torus_cull_lab::results::Results::load(&out_path).unwrap();
+    let names: Vec<&str> = results
+        .estimates
+        .iter()
+        .map(|e| e.benchmark.as_str())
+        .collect();
+    // The references none and cychosz, on the two cases asked for (in the workload's
+    // order), and nothing else.
+    for case in ["hole", "grazing"] {
+        for cull in ["none", "cychosz"] {
+            let name = format!("gpu_finish_ns-{case}/{cull}/1.1");
+            assert!(names.contains(&name.as_str()), "{name} in {names:?}");
+        }
+    }
+    assert!(!names.iter().any(|n| n.contains("uniform")), "{names:?}");
+    // Grazing rays escalate: their finish pass has a time per escalated ray.
+    assert!(
+        names.contains(&"gpu_finish_per_escalated_ns-grazing/none/1.1"),
+        "{names:?}"
+    );
+    assert!(stdout.contains("f64 finish pass:"), "{stdout}");
+    assert!(stdout.contains("finished on the device"), "{stdout}");
+    assert!(results.estimates.iter().all(|e| e.ns_per_element > 0.0));
+}
+
 /// Rays from surface points (`Torus::spawn`): those that leave into the outside go to the
 /// kernel as the literal ray past their origin's own root and are proved there, within
 /// 2·10⁻⁴·(R + r) of the f64 path's answer; those into the tube go to the host, which

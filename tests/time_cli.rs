@@ -619,3 +619,56 @@ fn a_dead_worker_fails_the_timing_and_writes_nothing() {
     );
     assert!(!out.exists());
 }
+
+/// `--cases` keeps the workload's cases named and refuses any other, naming the allowed
+/// ones; `--finish` is for `--device gpu` only.
+#[test]
+fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let bad = torus_cull(&["time", "--workload", &workload, "--cases", "camera"]);
+    assert_eq!(bad.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        stderr.contains("--cases camera") && stderr.contains("allowed: hole, uniform"),
+        "{stderr}"
+    );
+    let finish = torus_cull(&["time", "--workload", &workload, "--finish"]);
+    assert_eq!(finish.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&finish.stderr);
+    assert!(
+        stderr.contains("--finish") && stderr.contains("--device gpu"),
+        "{stderr}"
+    );
+    let out = dir.path().join("a.json");
+    let o = torus_cull(&[
+        "time",
+        "--workload",
+        &workload,
+        "--cases",
+        "uniform",
+        "--culls",
+        "cychosz",
+        "--seconds",
+        "0.3",
+        "--runs",
+        "1",
+        "--no-plots",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = Results::load(&out).unwrap();
+    assert!(!r.ratio.is_empty());
+    assert!(r.ratio.iter().all(|x| x.case == "uniform"), "{:?}", r.ratio);
+}
+
+/// `gpu-info` in a binary without the feature says how to build one, exit 2.
+#[test]
+#[cfg(not(feature = "gpu"))]
+fn gpu_info_needs_the_feature() {
+    let o = torus_cull(&["gpu-info"]);
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(stderr.contains("--features gpu"), "{stderr}");
+}

@@ -15,6 +15,7 @@ mod compare;
 mod console;
 mod eval;
 mod f32_check;
+mod gpu_info;
 mod plot;
 mod render;
 mod run;
@@ -123,6 +124,11 @@ enum Command {
     /// peer) against the oracle, per ray family: missed and spurious hits, escalations, t
     /// error. Exits 1 if ours missed a hit or gave a spurious or inaccurate one.
     F32Check(f32_check::F32CheckArgs),
+    /// The GPU adapter wgpu picks (a binary built with `--features gpu`), one `key: value`
+    /// a line: adapter, device_type, backend, driver, software (a CPU rasteriser such as
+    /// lavapipe), shader_f64, f64_finish_pass (and why not), timestamps. Exits 2 with one
+    /// line where there is no adapter.
+    GpuInfo,
     /// Check every cull and the oracle on your own rays (CSV in the torus frame).
     Eval {
         /// Major radius R.
@@ -204,6 +210,7 @@ fn main() -> ExitCode {
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
         Command::F32Check(args) => f32_check::run(args),
+        Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
         Command::Render {
             scene,

@@ -12,7 +12,7 @@ use crate::console::outln;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
-use torus_cull::gpu::{GpuCull, GpuIntersector, KernelTime, ResidentRays};
+use torus_cull::gpu::{FinishCounts, GpuCull, GpuIntersector, KernelTime, ResidentRays};
 use torus_cull::{CullKind, F32Verdict, Named};
 use torus_cull_lab::paired::ratio_estimate;
 use torus_cull_lab::results::{EstimateRecord, F32_PRECISION, RatioRecord, Results};
@@ -40,6 +40,7 @@ pub(super) fn run(
     culls: &[CullKind],
     seconds: f64,
     batch: usize,
+    finish: bool,
     path: &Path,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut culls = gpu_culls(culls)?;
@@ -50,6 +51,11 @@ pub(super) fn run(
     }
     let gpu = GpuIntersector::new()?;
     let device = announce_adapter(&gpu)?;
+    if finish {
+        if let Some(why) = gpu.device_finish_unavailable() {
+            return Err(format!("--finish: the adapter has no f64 finish pass: {why}").into());
+        }
+    }
     let share = seconds / (workload.cases.len() * nus.len()) as f64;
     outln!(
         "{:<11} {:>6} {:<15} {:>8} {:>9} {:>21} {:>21} {:>7} {:>6}",
@@ -65,15 +71,25 @@ pub(super) fn run(
     )?;
     let mut results = Results::new(workload, "time");
     for (case, nu, b) in generate_all(workload, nus, batch)? {
-        let resident = gpu.upload(&b.torus, &b.rays)?;
-        let unit = time_unit(&resident, &culls, share)?;
+        let mut resident = gpu.upload(&b.torus, &b.rays)?;
+        let finish_upload = if finish {
+            Some(resident.upload_finish(&b.torus, &b.rays)?)
+        } else {
+            None
+        };
+        let unit = time_unit(&resident, &culls, share, finish)?;
         let rays = resident.len() as f64;
         let tag = format!("{}/{nu}", case.name());
         let per_ray = |d: Duration| d.as_nanos() as f64 / rays;
-        for (name, d) in [
-            ("upload", resident.upload_time()),
-            ("readback", unit.read_back),
-        ] {
+        let uploads = [
+            ("upload", Some(resident.upload_time())),
+            ("readback", Some(unit.read_back)),
+            ("finish_upload", finish_upload),
+        ];
+        for (name, d) in uploads
+            .into_iter()
+            .filter_map(|(name, d)| d.map(|d| (name, d)))
+        {
             results.estimates.push(EstimateRecord {
                 benchmark: format!("gpu_{name}_ns-{tag}"),
                 elements: rays as u64,
@@ -155,6 +171,41 @@ pub(super) fn run(
             per_ray(resident.upload_time()),
             per_ray(unit.read_back),
         )?;
+        for (k, f) in unit.finish.iter().enumerate() {
+            let cull = culls[k];
+            let name = |what: &str| format!("gpu_{what}-{}/{}/{nu}", case.name(), cull.name());
+            results
+                .estimates
+                .push(estimate(&name("finish_ns"), &f.ns, rays));
+            let escalated = f.counts.device + f.counts.host;
+            if escalated > 0 {
+                results.estimates.push(estimate(
+                    &name("finish_per_escalated_ns"),
+                    &f.ns,
+                    escalated as f64,
+                ));
+            }
+            let per_escalated = if escalated > 0 {
+                format!("{:.3}", median(&f.ns) / escalated as f64)
+            } else {
+                "-".into()
+            };
+            outln!(
+                "{:<11} {:>6} {:<15} f64 finish pass: {:.4} ns/ray of the batch, {per_escalated} ns per escalated ray ({} escalated: {} finished on the device, {} handed to the host){}",
+                case.name(),
+                nu,
+                cull.name(),
+                median(&f.ns) / rays,
+                escalated,
+                f.counts.device,
+                f.counts.host,
+                if f.wall {
+                    "; no timestamps: wall clock of both passes less the kernel's median"
+                } else {
+                    ""
+                },
+            )?;
+        }
     }
     results.meta.device = Some(device);
     results.meta.threads = Some(1);
@@ -165,7 +216,9 @@ pub(super) fn run(
 }
 
 /// Every case × ν's batch, drawn on all cores (the generators are the slow part of a
-/// GPU run: a few µs per ray), in the workload's order.
+/// GPU run: a few µs per ray, the grazing one the slowest), in the workload's order. The
+/// units are dealt to the threads round-robin, so that one case's units (all slow or all
+/// fast) are spread over the threads rather than given to a few.
 fn generate_all(
     workload: &Workload,
     nus: &[f64],
@@ -176,18 +229,22 @@ fn generate_all(
         .iter()
         .flat_map(|&case| nus.iter().map(move |&nu| (case, nu)))
         .collect();
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let per_thread = units.len().div_ceil(threads.max(1)).max(1);
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, units.len().max(1));
     std::thread::scope(|scope| {
-        let handles: Vec<_> = units
-            .chunks(per_thread)
-            .map(|chunk| {
+        let handles: Vec<_> = (0..threads)
+            .map(|t| {
+                let units = &units;
                 scope.spawn(move || {
-                    chunk
+                    units
                         .iter()
-                        .map(|&(case, nu)| {
+                        .enumerate()
+                        .skip(t)
+                        .step_by(threads)
+                        .map(|(k, &(case, nu))| {
                             generate(case, nu, batch, workload.seed, workload.pose)
-                                .map(|b| (case, nu, b))
+                                .map(|b| (k, (case, nu, b)))
                         })
                         .collect::<Result<Vec<_>, _>>()
                 })
@@ -197,7 +254,8 @@ fn generate_all(
         for h in handles {
             all.extend(h.join().expect("a generator thread panicked")?);
         }
-        Ok(all)
+        all.sort_by_key(|(k, _)| *k);
+        Ok(all.into_iter().map(|(_, unit)| unit).collect())
     })
 }
 
@@ -209,12 +267,24 @@ struct UnitTimes {
     escalated: Vec<usize>,
     read_back: Duration,
     rounds: usize,
+    /// With `--finish`, per cull in order: the f64 pass's times.
+    finish: Vec<FinishTimes>,
+}
+
+/// The f64 finish pass after one cull's kernel: ns of one pass over the batch per round,
+/// who answered the rays, and whether the times are the wall clock's (no timestamps:
+/// both passes' wall time per repeat less the kernel's median).
+struct FinishTimes {
+    ns: Vec<f64>,
+    counts: FinishCounts,
+    wall: bool,
 }
 
 fn time_unit(
     resident: &ResidentRays<'_>,
     culls: &[GpuCull],
     share: f64,
+    finish: bool,
 ) -> Result<UnitTimes, Box<dyn std::error::Error>> {
     // Warm-up: every contender once, each cull's verdicts counted.
     let mut escalated = Vec::with_capacity(culls.len());
@@ -231,17 +301,41 @@ fn time_unit(
                 .count(),
         );
     }
+    let mut counts = Vec::new();
+    if finish {
+        for &cull in culls {
+            resident.run_finished(cull, 1)?;
+            counts.push(resident.finish_counts()?);
+        }
+    }
     let once = resident.run(GpuCull::NoCull, 1)?.wall;
     let repeats = (SUBMISSION.as_secs_f64() / once.as_secs_f64().max(1e-9)).ceil() as usize;
     let repeats = repeats.clamp(1, 1000);
     let contenders = culls.len() + 1;
+    let finishers = if finish { culls.len() } else { 0 };
     let mut ns = vec![Vec::new(); contenders];
+    // Per cull: the f64 pass's ns per round, and whether it is the wall clock's (both
+    // passes, to be less the kernel's median).
+    let mut finish_ns = vec![Vec::new(); finishers];
+    let mut finish_wall = false;
     let start = Instant::now();
     let mut round = 0;
     while round < MIN_ROUNDS || start.elapsed().as_secs_f64() < share {
-        for j in 0..contenders {
+        for j in 0..contenders + finishers {
             // Rotated order: no contender always follows the same one.
-            let k = (j + round) % contenders;
+            let k = (j + round) % (contenders + finishers);
+            if k >= contenders {
+                let f = k - contenders;
+                let time = resident.run_finished(culls[f], repeats)?;
+                if time.finish.is_empty() {
+                    finish_wall = true;
+                    finish_ns[f].push(time.wall.as_nanos() as f64 / repeats as f64);
+                } else {
+                    let total: Duration = time.finish.iter().sum();
+                    finish_ns[f].push(total.as_nanos() as f64 / time.finish.len() as f64);
+                }
+                continue;
+            }
             let time = if k == 0 {
                 resident.run_copy(repeats)?
             } else {
@@ -251,11 +345,30 @@ fn time_unit(
         }
         round += 1;
     }
+    let finish = finish_ns
+        .into_iter()
+        .zip(counts)
+        .enumerate()
+        .map(|(f, (mut times, counts))| {
+            if finish_wall {
+                let kernel = median(&ns[f + 1]);
+                for t in &mut times {
+                    *t = (*t - kernel).max(1.0);
+                }
+            }
+            FinishTimes {
+                ns: times,
+                counts,
+                wall: finish_wall,
+            }
+        })
+        .collect();
     Ok(UnitTimes {
         ns,
         escalated,
         read_back,
         rounds: round,
+        finish,
     })
 }
 

@@ -36,6 +36,17 @@ pub struct TimeArgs {
     /// ν values to time, comma-separated, each one of the workload's (default: all).
     #[arg(long, value_delimiter = ',')]
     nu: Vec<f64>,
+    /// Cases to time, comma-separated, each one of the workload's (default: all), in the
+    /// workload's order.
+    #[arg(long, value_delimiter = ',')]
+    cases: Vec<String>,
+    /// With `--device gpu` (on an adapter with `SHADER_F64`): also time the f64 finish
+    /// pass after the kernel, per case × ν × cull, as the library runs it
+    /// (`intersect_finished`): its device time per ray of the batch and per escalated
+    /// ray, as estimates `gpu_finish_ns-<case>/<cull>/<ν>` and
+    /// `gpu_finish_per_escalated_ns-…`, in the same rounds as the kernel.
+    #[arg(long)]
+    finish: bool,
     /// Total measuring time in seconds, shared evenly by every case × ν.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
@@ -126,7 +137,8 @@ enum Mode {
 
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let workload = Workload::open(&args.workload)?;
+    let mut workload = Workload::open(&args.workload)?;
+    pick_cases(&args.cases, &mut workload, &args.workload)?;
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
@@ -153,7 +165,15 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         if args.mode == Mode::Both {
             return Err("--mode both times the CPU's batch mode: not with --device gpu".into());
         }
-        let code = gpu::run(&workload, &nus, &culls, args.seconds, batch, &path)?;
+        let code = gpu::run(
+            &workload,
+            &nus,
+            &culls,
+            args.seconds,
+            batch,
+            args.finish,
+            &path,
+        )?;
         if !args.no_plots {
             // Drawn from the file as written: its estimates, ns per ray against ν.
             crate::plot::write_plots(&Results::load(&path)?, &path)?;
@@ -161,6 +181,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         return Ok(code);
     }
 
+    if args.finish {
+        return Err("--finish times the GPU's f64 finish pass: only with --device gpu".into());
+    }
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
     // only `--mode both` uses it.
     let dispatch = Dispatch::from_env()?;
@@ -195,6 +218,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     } else {
         let plan = WorkerPlan {
             workload: &args.workload,
+            cases: &args.cases,
             culls: &culls,
             nus: &nus,
             seconds: args.seconds / runs as f64,
@@ -263,6 +287,7 @@ fn check_runs(runs: u64, seconds: f64) -> Result<(), String> {
 /// parsed them, with its share of the seconds.
 struct WorkerPlan<'a> {
     workload: &'a Path,
+    cases: &'a [String],
     culls: &'a [CullKind],
     nus: &'a [f64],
     seconds: f64,
@@ -295,6 +320,10 @@ impl WorkerPlan<'_> {
         ] {
             args.push(flag.into());
             args.push(value.into());
+        }
+        if !self.cases.is_empty() {
+            args.push("--cases".into());
+            args.push(self.cases.join(",").into());
         }
         if self.secondary {
             args.push("--secondary".into());
@@ -552,6 +581,29 @@ fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
     Ok(culls)
 }
 
+/// `--cases`: keeps the workload's cases named (each must be one of them), in the
+/// workload's order; all of them where none is named.
+fn pick_cases(asked: &[String], workload: &mut Workload, file: &Path) -> Result<(), String> {
+    if asked.is_empty() {
+        return Ok(());
+    }
+    use torus_cull::Named;
+    for name in asked {
+        if !workload.cases.iter().any(|c| c.name() == name) {
+            let have: Vec<&str> = workload.cases.iter().map(|c| c.name()).collect();
+            return Err(format!(
+                "--cases {name} is not in workload {} (allowed: {})",
+                file.display(),
+                have.join(", ")
+            ));
+        }
+    }
+    workload
+        .cases
+        .retain(|c| asked.iter().any(|name| name == c.name()));
+    Ok(())
+}
+
 /// `--nu`: each value must be one of the workload's (its rays are defined there); default
 /// all of them.
 fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>, String> {
@@ -621,6 +673,7 @@ mod gpu {
         _culls: &[CullKind],
         _seconds: f64,
         _batch: usize,
+        _finish: bool,
         _path: &Path,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
         Err("--device gpu needs a binary built with the feature gpu: \

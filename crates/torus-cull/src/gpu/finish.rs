@@ -125,7 +125,7 @@ impl Status {
         }
     }
 
-    fn of(word: f32) -> Option<Status> {
+    pub(crate) fn of(word: f32) -> Option<Status> {
         Status::ALL.into_iter().find(|s| *s as u32 as f32 == word)
     }
 }

@@ -109,7 +109,7 @@ pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
 };
-pub use timing::{KernelTime, ResidentRays};
+pub use timing::{FinishTime, KernelTime, ResidentRays};
 /// The wgpu this library's kernel runs on (and whose `naga` validates
 /// [`wgsl_module`]): a renderer that includes the module uses the same version.
 pub use wgpu;

@@ -10,6 +10,8 @@
 //! [`ResidentRays::read_back`] copies the last run's records back (its wall time kept
 //! apart).
 
+use super::escalation::FinishCounts;
+use super::finish::{self, Status};
 use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
 use super::{Mode, WORKGROUP, as_bytes, decode_records, shifted, verdict};
 use crate::Ray;
@@ -33,6 +35,10 @@ pub struct ResidentRays<'g> {
     upload: Duration,
     /// [`COPY_WGSL`] on the kernel's bindings.
     copy: wgpu::ComputePipeline,
+    /// Per chunk, the f64 pass's instruction records as uploaded
+    /// ([`ResidentRays::upload_finish`]; empty before): the pass overwrites its records
+    /// in place, so each timed pass starts from a copy of these.
+    instructions: Vec<wgpu::Buffer>,
 }
 
 /// The memory-bound floor of the kernel's access pattern: each thread reads its ray's
@@ -50,6 +56,20 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     }
 }
 ";
+
+/// One [`ResidentRays::run_finished`]: `repeats` times the kernel's pass, then the f64
+/// finish pass over the same rays.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FinishTime {
+    /// Wall time from submission to completion, over all repeats of both passes (and the
+    /// copies that restore the pass's instruction records before each repeat).
+    pub wall: Duration,
+    /// The device's time of each repeat's kernel pass; empty without timestamp queries.
+    pub kernel: Vec<Duration>,
+    /// The device's time of each repeat's f64 finish pass; empty without timestamp
+    /// queries.
+    pub finish: Vec<Duration>,
+}
 
 /// One [`ResidentRays::run`]: `repeats` dispatches over every resident ray.
 #[derive(Debug, Clone, PartialEq)]
@@ -102,6 +122,7 @@ impl GpuIntersector {
             host,
             upload: start.elapsed(),
             copy,
+            instructions: Vec::new(),
         })
     }
 
@@ -135,6 +156,20 @@ impl GpuIntersector {
             return Err(GpuError::Kernel(e.to_string()));
         }
         Ok(pipeline)
+    }
+
+    /// Whether the adapter offers `SHADER_F64` (the device was opened with it where it
+    /// does); [`GpuIntersector::finishes_on_device`] says whether the f64 pass also
+    /// compiled and is on.
+    pub fn has_shader_f64(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SHADER_F64)
+    }
+
+    /// The adapter's driver and its version string, as wgpu reports them (may be empty).
+    pub fn driver(&self) -> String {
+        format!("{} {}", self.info.driver, self.info.driver_info)
+            .trim()
+            .to_string()
     }
 
     /// Whether [`ResidentRays::run`] reports the device's own timestamps.
@@ -184,15 +219,156 @@ impl ResidentRays<'_> {
         self.dispatch(&self.copy, repeats)
     }
 
+    /// Uploads what the f64 finish pass reads of these rays (`rays` and `torus` must be
+    /// the ones [`GpuIntersector::upload`] was given): the torus in f64, each ray's world
+    /// record and the host's instruction, as
+    /// [`GpuIntersector::intersect_finished_where`] sends them. Returns the wall time of
+    /// preparing and uploading them (not in [`ResidentRays::upload_time`]). An error where
+    /// the device has no f64 pass ([`GpuIntersector::finishes_on_device`]).
+    pub fn upload_finish(&mut self, torus: &Torus, rays: &[Ray]) -> Result<Duration, GpuError> {
+        let start = Instant::now();
+        if let Some(why) = self.gpu.device_finish_unavailable() {
+            return Err(GpuError::Kernel(format!(
+                "no f64 finish pass on the device: {why}"
+            )));
+        }
+        assert_eq!(rays.len(), self.len(), "the rays that were uploaded");
+        let torus64 = finish::torus_bytes(torus);
+        let mut instructions = Vec::with_capacity(self.chunks.len());
+        for (buffers, batch) in self.chunks.iter().zip(rays.chunks(CHUNK)) {
+            let fb = buffers
+                .finish
+                .as_ref()
+                .ok_or_else(|| GpuError::Kernel("the f64 pass's buffers are missing".into()))?;
+            let mut world: Vec<f32> = Vec::with_capacity(batch.len() * 8);
+            let mut orders: Vec<f32> = Vec::with_capacity(batch.len() * 8);
+            for ray in batch {
+                let p = self.frame.prepare(ray);
+                let (w, instruction) = finish::world_record(torus, ray, p.host);
+                world.extend_from_slice(&w);
+                orders.extend_from_slice(&finish::instruction_record(instruction));
+            }
+            let pristine = self.gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("torus-cull finish instructions"),
+                size: batch.len() as u64 * RAY_BYTES,
+                usage: wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            self.gpu.queue.write_buffer(&fb.torus, 0, &torus64);
+            self.gpu.queue.write_buffer(&fb.world, 0, &as_bytes(&world));
+            self.gpu
+                .queue
+                .write_buffer(&pristine, 0, &as_bytes(&orders));
+            instructions.push(pristine);
+        }
+        self.gpu.queue.submit([]);
+        self.gpu
+            .device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| GpuError::Readback(e.to_string()))?;
+        self.instructions = instructions;
+        Ok(start.elapsed())
+    }
+
+    /// Runs, `repeats` times (at least once) in one submission, the kernel with `cull`
+    /// over every resident ray and then the f64 finish pass over its records, as
+    /// [`GpuIntersector::intersect_finished_where`] does; each repeat's finish pass starts
+    /// from the instructions [`ResidentRays::upload_finish`] uploaded (restored by a copy
+    /// outside both timed passes). Needs [`ResidentRays::upload_finish`] first.
+    pub fn run_finished(&self, cull: GpuCull, repeats: usize) -> Result<FinishTime, GpuError> {
+        let Ok(pass) = &self.gpu.finish else {
+            return Err(GpuError::Kernel("no f64 finish pass on the device".into()));
+        };
+        if self.instructions.len() != self.chunks.len() {
+            return Err(GpuError::Kernel(
+                "run_finished before upload_finish: the f64 pass has no input".into(),
+            ));
+        }
+        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+            self.gpu.queue.write_buffer(
+                &buffers.params,
+                0,
+                &self.frame.params(count as u32, cull, Mode::Intersect),
+            );
+        }
+        let (wall, mut device) = self.submit(&self.gpu.pipeline, Some(&pass.pipeline), repeats)?;
+        let finish = device.pop().unwrap_or_default();
+        let kernel = device.pop().unwrap_or_default();
+        Ok(FinishTime {
+            wall,
+            kernel,
+            finish,
+        })
+    }
+
+    /// Who answered each ray in the last [`ResidentRays::run_finished`], from the f64
+    /// pass's records: proved by the f32 kernel, finished by the pass, or handed back to
+    /// the host (the host's own answers, far origins and such, are counted where the pass
+    /// put them).
+    pub fn finish_counts(&self) -> Result<FinishCounts, GpuError> {
+        let gpu = self.gpu;
+        let mut counts = FinishCounts::default();
+        let mut encoder = gpu
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
+                label: Some("torus-cull read back finished"),
+            });
+        let mut staged = Vec::new();
+        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+            if let Some(fb) = &buffers.finish {
+                let bytes = count as u64 * RAY_BYTES;
+                encoder.copy_buffer_to_buffer(&fb.finished, 0, &fb.staging, 0, bytes);
+                staged.push((&fb.staging, bytes));
+            }
+        }
+        gpu.queue.submit([encoder.finish()]);
+        for (staging, bytes) in staged {
+            let slice = staging.slice(..bytes);
+            gpu.map_read(&slice)?;
+            {
+                let view = slice
+                    .get_mapped_range()
+                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
+                for w in decode_records(&view) {
+                    match Status::of(w[7]) {
+                        Some(Status::Proved) => counts.proved += 1,
+                        Some(Status::Front | Status::Back | Status::Miss) => counts.device += 1,
+                        Some(Status::Host) | None => counts.host += 1,
+                    }
+                }
+            }
+            staging.unmap();
+        }
+        Ok(counts)
+    }
+
     fn dispatch(
         &self,
         pipeline: &wgpu::ComputePipeline,
         repeats: usize,
     ) -> Result<KernelTime, GpuError> {
+        let (wall, mut device) = self.submit(pipeline, None, repeats)?;
+        Ok(KernelTime {
+            wall,
+            device: device.pop().unwrap_or_default(),
+        })
+    }
+
+    /// `repeats` times `pipeline`'s pass over every chunk, each followed by the f64
+    /// finish pass where `finish` is given (its instruction records restored first), in
+    /// one submission; the wall time, and per pass (the kernel's, then the finish pass's)
+    /// the device time of each repeat (empty lists without timestamp queries).
+    fn submit(
+        &self,
+        pipeline: &wgpu::ComputePipeline,
+        finish: Option<&wgpu::ComputePipeline>,
+        repeats: usize,
+    ) -> Result<(Duration, Vec<Vec<Duration>>), GpuError> {
         let gpu = self.gpu;
         let repeats = repeats.max(1);
+        let passes = 1 + usize::from(finish.is_some());
         let queries = gpu.has_timestamps().then(|| {
-            let n = 2 * repeats as u32;
+            let n = 2 * (passes * repeats) as u32;
             let set = gpu.device.create_query_set(&wgpu::QuerySetDescriptor {
                 label: Some("torus-cull timestamps"),
                 ty: wgpu::QueryType::Timestamp,
@@ -218,23 +394,49 @@ impl ResidentRays<'_> {
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                 label: Some("torus-cull timed dispatch"),
             });
-        for rep in 0..repeats as u32 {
-            let timestamp_writes =
+        for rep in 0..repeats {
+            let writes = |p: usize| {
+                let k = 2 * (rep * passes + p) as u32;
                 queries
                     .as_ref()
                     .map(|(set, ..)| wgpu::ComputePassTimestampWrites {
                         query_set: set,
-                        beginning_of_pass_write_index: Some(2 * rep),
-                        end_of_pass_write_index: Some(2 * rep + 1),
-                    });
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("torus-cull timed pass"),
-                timestamp_writes,
-            });
-            pass.set_pipeline(pipeline);
-            for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
-                pass.set_bind_group(0, &buffers.bind_group, &[]);
-                pass.dispatch_workgroups(count.div_ceil(WORKGROUP) as u32, 1, 1);
+                        beginning_of_pass_write_index: Some(k),
+                        end_of_pass_write_index: Some(k + 1),
+                    })
+            };
+            {
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("torus-cull timed pass"),
+                    timestamp_writes: writes(0),
+                });
+                pass.set_pipeline(pipeline);
+                for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+                    pass.set_bind_group(0, &buffers.bind_group, &[]);
+                    pass.dispatch_workgroups(count.div_ceil(WORKGROUP) as u32, 1, 1);
+                }
+            }
+            if let Some(finish) = finish {
+                let mut targets = Vec::with_capacity(self.chunks.len());
+                for ((buffers, &count), pristine) in
+                    self.chunks.iter().zip(&self.counts).zip(&self.instructions)
+                {
+                    let fb = buffers.finish.as_ref().ok_or_else(|| {
+                        GpuError::Kernel("the f64 pass's buffers are missing".into())
+                    })?;
+                    let bytes = count as u64 * RAY_BYTES;
+                    encoder.copy_buffer_to_buffer(pristine, 0, &fb.finished, 0, bytes);
+                    targets.push((fb, count));
+                }
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                    label: Some("torus-cull timed f64 finish pass"),
+                    timestamp_writes: writes(1),
+                });
+                pass.set_pipeline(finish);
+                for (fb, count) in targets {
+                    pass.set_bind_group(0, &fb.bind_group, &[]);
+                    pass.dispatch_workgroups(count.div_ceil(WORKGROUP) as u32, 1, 1);
+                }
             }
         }
         if let Some((set, resolve, read, n)) = &queries {
@@ -247,20 +449,16 @@ impl ResidentRays<'_> {
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| GpuError::Readback(e.to_string()))?;
         let wall = start.elapsed();
-        let device = match &queries {
-            None => Vec::new(),
-            Some((_, _, read, _)) => {
-                let ticks = map_words(gpu, read)?;
-                let period = f64::from(gpu.queue.get_timestamp_period());
-                ticks
-                    .chunks_exact(2)
-                    .map(|p| {
-                        Duration::from_nanos((p[1].saturating_sub(p[0]) as f64 * period) as u64)
-                    })
-                    .collect()
+        let mut device = vec![Vec::new(); passes];
+        if let Some((_, _, read, _)) = &queries {
+            let ticks = map_words(gpu, read)?;
+            let period = f64::from(gpu.queue.get_timestamp_period());
+            for (k, p) in ticks.chunks_exact(2).enumerate() {
+                let d = Duration::from_nanos((p[1].saturating_sub(p[0]) as f64 * period) as u64);
+                device[k % passes].push(d);
             }
-        };
-        Ok(KernelTime { wall, device })
+        }
+        Ok((wall, device))
     }
 
     /// The verdicts of the last [`ResidentRays::run`] (as [`GpuIntersector::explain`]
@@ -360,5 +558,51 @@ mod tests {
                     .any(|(v, _)| matches!(v, F32Verdict::Hit { .. }))
             );
         }
+    }
+
+    /// The timed kernel-and-finish run gives the answers the one-call path gives: as many
+    /// rays finished on the device, handed to the host and proved by f32, repeat after
+    /// repeat (each repeat's pass starts from the uploaded instructions).
+    #[test]
+    fn timed_finish_pass_counts_the_answers_of_intersect_finished() {
+        let Ok(gpu) = GpuIntersector::new() else {
+            eprintln!("no GPU adapter: skipped");
+            return;
+        };
+        if !gpu.finishes_on_device() {
+            eprintln!("no f64 pass on this adapter: skipped");
+            return;
+        }
+        let torus = Torus::new(Vec3::ZERO, Vec3::Y, 3.0, 1.0).expect("valid torus");
+        // Lines grazing the outer equator at ±1e-6, and some plain ones.
+        let rays: Vec<Ray> = (0..600)
+            .map(|i| {
+                let b = i as f32 * 0.61;
+                let tangent = Vec3::new(-b.sin(), 0.0, b.cos());
+                let y = if i % 3 == 0 {
+                    0.3
+                } else {
+                    1e-6 * (i % 2) as f32
+                };
+                let touch = Vec3::new(4.0 * b.cos(), y, 4.0 * b.sin());
+                Ray::new(touch - 10.0 * tangent, tangent).expect("valid ray")
+            })
+            .collect();
+        let want = FinishCounts::of(
+            gpu.intersect_finished_where(&torus, GpuCull::NoCull, &rays)
+                .expect("dispatch")
+                .iter()
+                .map(|(_, f)| f),
+        );
+        assert!(want.device > 0, "{want:?}");
+        let mut resident = gpu.upload(&torus, &rays).expect("upload");
+        assert!(resident.run_finished(GpuCull::NoCull, 1).is_err());
+        resident
+            .upload_finish(&torus, &rays)
+            .expect("upload finish");
+        let time = resident.run_finished(GpuCull::NoCull, 3).expect("run");
+        assert!(time.finish.is_empty() || time.finish.len() == 3);
+        assert_eq!(time.kernel.len(), time.finish.len());
+        assert_eq!(resident.finish_counts().expect("read back"), want);
     }
 }

@@ -1,0 +1,311 @@
+#!/usr/bin/env bash
+# The whole GPU measurement in one go, for a machine with a GPU but no Rust toolchain and
+# no network (docs/gpu.md, "Measuring on a real GPU"): it takes a prebuilt, stripped
+# `--features gpu` release binary and runs, within a wall-clock budget (default 450 s, so
+# that an 8-minute lease keeps a margin):
+#
+#   0. checks: the binary runs; the Vulkan loader (libvulkan.so.1) is there; wgpu finds an
+#      adapter (`torus-cull gpu-info`: name, device type, backend, driver, SHADER_F64, the
+#      f64 finish pass, timestamps). Missing loader or adapter: one line, exit 3 or 4. A
+#      software adapter (lavapipe, device type Cpu) is refused outside --smoke (exit 5)
+#      unless --allow-software: its figures are a CPU's.
+#   1. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 2^20 rays
+#              per case × ν                                   -> grid.json, grid.txt
+#   2. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
+#              uniform and hole, ν = 4                         -> sweep-2pK.json, .txt
+#   3. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
+#              escalating cases (hole, grazing) at the workload's smallest ν, 4 and its
+#              largest, culls none, cychosz, skala, 2^20 rays  -> finish.json, finish.txt
+#              (skipped, and said so, where the adapter has no SHADER_F64)
+#
+# Every file is written under a temporary name and renamed when complete (the JSON files
+# by torus-cull itself); summary.log is summary.log.partial until the script ends (a run
+# killed from outside leaves the .partial, never a file that looks finished). A step that
+# fails or runs out of budget is logged and the next step still runs; the exit code is
+# then 1. Where $OUT is set (the device machine returns at most 8 files from it), the
+# results folder is also packed into $OUT/gpu-device.tar.gz after every step, and the log
+# copied to $OUT/summary.log(.partial): what a killed run had finished still comes back.
+#
+#   bash benches/gpu_device.sh [--smoke] [--bin PATH] [--workload FILE|default|quick]
+#                              [--out DIR] [--budget SECONDS] [--allow-software]
+#                              [--debs DIR]
+#
+#   --bin       the binary (default $TORUS_CULL_BIN, else target/release/torus-cull, else
+#               .gpubin/torus-cull, where docs/gpu.md has it carried)
+#   --workload  default: the binary's embedded `default` (5 cases x 12 nu, seed 20261121);
+#               it must have nu = 4 and the cases hole, uniform, grazing
+#   --out       results folder (default results/gpu-device-<UTC time>; where $OUT is
+#               set, /tmp/gpu-device-<UTC time>, packed into $OUT as above)
+#   --budget    wall-clock seconds for the whole run (default 450; --smoke: 240)
+#   --smoke     every step at tiny sizes (under a minute on lavapipe): checks the script
+#   --debs      where no libvulkan.so.1 is installed and this runs as root: the folder of
+#               Debian packages (libvulkan1_*.deb and friends) to unpack into / first
+#               (default .gl, as the device machine's README has it)
+#   env WGPU_BACKEND (default vulkan), VK_DRIVER_FILES (set to the NVIDIA driver's ICD
+#   under /usr/local/nvidia where the loader would not find it), SCALE (below).
+#
+# Sizing of --seconds (the `time` commands' paired-round time; each case x nu gets an
+# equal share, and at least 7 rounds). Measured here, 2026-11-27, on lavapipe (llvmpipe,
+# LLVM 15.0.6, Mesa 22.3.6; 2 cores of a Xeon shared with other builds, load 6-9):
+#   - `torus-cull gpu-info` (process, adapter, device, kernel and f64 pass compiled): 1.4 s
+#   - drawing the rays: the grazing generator is the slow one, ~17 s for 2^20 rays on one
+#     loaded core (~5 us/ray of a free core); uniform and hole are far cheaper
+#   - packing and uploading: 250-450 ns/ray here (the H100's host, 2026-11-25: 59-123)
+#   - the kernel on lavapipe: ~400-450 ns/ray at 2^20 rays, 4-8 us/ray at 2^12 (there
+#     the dispatch dominates); `time --device gpu --cases uniform,grazing --nu 4 --culls
+#     none --batch 2^20 --seconds 0.1` took 38 s in all
+#   - the smoke run (every step at 2^10-2^12 rays): 27-32 s; 104 s beside a cargo build
+# On the H100 (docs/gpu.md) one kernel pass over 2^20 rays is ~0.3-0.5 ms, so a round of
+# the grid (copy + 9 culls, each ~4 ms of repeats) is ~40 ms and 7 rounds ~0.3 s: the
+# share, not the minimum rounds, sets each unit's time. Planned for an H100 (16 cores):
+#   grid    60 units x 2^20 rays: --seconds 150 (2.5 s a unit) + start ~2 s + drawing
+#           ~8 s (12 grazing units dealt round-robin) + packing/upload ~6 s + warm-up
+#           and read-backs ~0.25 s a unit ~15 s                     => ~180 s
+#   sweep   7 commands x 2 units (uniform, hole: cheap to draw): --seconds 8 each (4 s a
+#           unit) + start ~2 s + drawing/upload of 2 x 2^22 rays at most ~2 s  => ~85 s
+#   finish  2 cases x 3 nu x 2^20 rays, culls none, cychosz, skala (6 contenders with
+#           the pass): --seconds 30 (5 s a unit) + start, drawing, uploads ~10 s => ~40 s
+#   total ~310 s of the 450 s budget. Every command also runs under `timeout` with what
+#   is left of the budget, so the script ends within it whatever the GPU does; the
+#   summary log has each step's time, to resize these from.
+# Scale: SCALE=0.5 halves every --seconds (not the batches), e.g. for a shorter lease.
+#
+set -uo pipefail
+cd "$(dirname "$0")/.." || exit 2
+
+bin=${TORUS_CULL_BIN:-target/release/torus-cull}
+# The carried binary (docs/gpu.md) where there is no target/ (the device machine).
+[ -n "${TORUS_CULL_BIN:-}" ] || [ -e "$bin" ] || bin=.gpubin/torus-cull
+workload=default
+out=""
+smoke=0
+budget=""
+allow_software=0
+debs=.gl
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --bin) bin=$2; shift 2 ;;
+    --workload) workload=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --budget) budget=$2; shift 2 ;;
+    --smoke) smoke=1; shift ;;
+    --allow-software) allow_software=1; shift ;;
+    --debs) debs=$2; shift 2 ;;
+    -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) echo "gpu_device.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
+  esac
+done
+
+if [ "$smoke" = 1 ]; then
+  budget=${budget:-240}
+  # Tiny: every step and every flag as in the real run, seconds of work on lavapipe.
+  grid_batch=4096; grid_seconds=4; grid_nu=(--nu 4)
+  sweep_pows=(10 11 12); sweep_seconds=1
+  finish_batch=4096; finish_seconds=2
+else
+  budget=${budget:-450}
+  grid_batch=1048576; grid_seconds=150; grid_nu=()
+  sweep_pows=(16 17 18 19 20 21 22); sweep_seconds=8
+  finish_batch=1048576; finish_seconds=30
+fi
+scale=${SCALE:-1}
+scaled() { awk -v s="$1" -v k="$scale" 'BEGIN { printf "%g", s * k }'; }
+grid_seconds=$(scaled "$grid_seconds")
+sweep_seconds=$(scaled "$sweep_seconds")
+finish_seconds=$(scaled "$finish_seconds")
+
+start=$(date +%s)
+deadline=$((start + budget))
+stamp=$(date -u +%Y%m%dT%H%M%SZ)
+if [ -z "$out" ]; then
+  if [ -n "${OUT:-}" ]; then
+    out=${TMPDIR:-/tmp}/gpu-device-$stamp
+  else
+    out=results/gpu-device-$stamp
+  fi
+fi
+mkdir -p "$out" || { echo "gpu_device.sh: cannot make $out" >&2; exit 2; }
+log=$out/summary.log
+partial=$log.partial
+: > "$partial"
+failed=0
+
+say() { echo "$*" | tee -a "$partial" >&2; }
+# Writes stdin to FILE through FILE.partial, renamed when complete.
+write_file() { cat > "$1.partial" && mv -f "$1.partial" "$1"; }
+# Where $OUT is set (the device machine, whose $OUT returns at most 8 files): the results
+# folder as one archive, $OUT/gpu-device.tar.gz, remade after every step, and the log so
+# far as $OUT/summary.log.partial (summary.log at the end). Each through a temp name.
+publish() {
+  [ -n "${OUT:-}" ] && [ -d "$OUT" ] || return 0
+  local parent base
+  parent=$(dirname "$out"); base=$(basename "$out")
+  tar -czf "$OUT/.gpu-device.tar.gz.tmp" -C "$parent" --exclude='*.partial' "$base" \
+    && mv -f "$OUT/.gpu-device.tar.gz.tmp" "$OUT/gpu-device.tar.gz"
+  if [ -f "$log" ]; then
+    cp "$log" "$OUT/.summary.log.tmp" && mv -f "$OUT/.summary.log.tmp" "$OUT/summary.log"
+    rm -f "$OUT/summary.log.partial"
+  else
+    cp "$partial" "$OUT/.summary.log.tmp" && mv -f "$OUT/.summary.log.tmp" "$OUT/summary.log.partial"
+  fi
+}
+# summary.log is renamed from its .partial when the script ends, however it ends (but a
+# SIGKILL); the exit status of a failed check (2 to 5) is kept, a failed step makes it 1.
+finish_log() {
+  local code=$?
+  [ "$code" != 0 ] || [ "$failed" = 0 ] || code=1
+  echo "== end: $(date -u +%FT%TZ), $(( $(date +%s) - start )) s, exit $code" >> "$partial"
+  mv -f "$partial" "$log"
+  publish
+  exit "$code"
+}
+trap finish_log EXIT
+trap 'say "== interrupted"; exit 130' INT TERM HUP
+
+# One line on stderr (and in the log), then exit CODE.
+die() { say "gpu_device.sh: $2"; exit "$1"; }
+
+say "== gpu_device.sh $([ "$smoke" = 1 ] && echo --smoke) $(date -u +%FT%TZ): binary $bin, workload $workload, budget ${budget} s, out $out"
+
+# 0. Checks.
+[ -x "$bin" ] || die 2 "no executable binary at $bin: build it with \`cargo build --release --features gpu --bin torus-cull\` (docs/gpu.md), or pass --bin"
+version=$("$bin" --version 2>&1) || die 2 "$bin does not run: $version"
+say "binary: $version, sha256 $(sha256sum "$bin" | cut -d' ' -f1)"
+
+loader=""
+if command -v ldconfig >/dev/null 2>&1; then
+  loader=$(ldconfig -p 2>/dev/null | awk '/libvulkan\.so\.1 /{print $NF; exit}')
+fi
+if [ -z "$loader" ]; then
+  for d in /usr/lib/x86_64-linux-gnu /usr/lib/aarch64-linux-gnu /usr/lib64 /usr/lib /usr/local/lib ${LD_LIBRARY_PATH//:/ }; do
+    if [ -e "$d/libvulkan.so.1" ]; then loader=$d/libvulkan.so.1; break; fi
+  done
+fi
+# The device machine's image has no loader: the session carries the Debian packages in
+# .gl/ (docs/gpu.md; /work/.library/device/README.md) and, as root, they are unpacked here.
+if [ -z "$loader" ] && [ -n "$debs" ] && ls "$debs"/libvulkan1_*.deb >/dev/null 2>&1 && [ "$(id -u)" = 0 ]; then
+  for f in "$debs"/*.deb; do dpkg -x "$f" / || die 3 "cannot unpack $f"; done
+  ldconfig
+  loader=$(ldconfig -p 2>/dev/null | awk '/libvulkan\.so\.1 /{print $NF; exit}')
+  say "unpacked $(ls "$debs"/*.deb | wc -l) packages from $debs into /: loader ${loader:-still missing}"
+fi
+[ -n "$loader" ] || die 3 "no Vulkan loader (libvulkan.so.1) on this machine: install libvulkan1, or carry its .deb in ${debs:-.gl}/ (docs/gpu.md)"
+icds=$(ls /usr/share/vulkan/icd.d/ /etc/vulkan/icd.d/ 2>/dev/null | grep '\.json$' | tr '\n' ' ')
+# The NVIDIA driver's ICD where the image mounts it outside the loader's search path.
+nv_icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ] && ! echo "$icds" | grep -q nvidia && [ -f "$nv_icd" ]; then
+  export VK_DRIVER_FILES=$nv_icd
+  icds="$icds(VK_DRIVER_FILES=$nv_icd)"
+fi
+say "vulkan loader: $loader; ICDs: ${icds:-none found}"
+if command -v nvidia-smi >/dev/null 2>&1; then
+  nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm --format=csv,noheader 2>&1 \
+    | sed 's/^/nvidia-smi: /' | tee -a "$partial" >&2
+fi
+
+# wgpu on Vulkan only: no silent fallback to GL (which would find llvmpipe through EGL).
+export WGPU_BACKEND=${WGPU_BACKEND:-vulkan}
+info=$("$bin" gpu-info 2> "$out/gpu-info.err")
+code=$?
+if [ $code -ne 0 ] && grep -q 'feature gpu' "$out/gpu-info.err"; then
+  die 2 "$bin was built without the feature gpu: cargo build --release --features gpu --bin torus-cull"
+fi
+if [ $code -ne 0 ] && grep -q "unrecognized subcommand" "$out/gpu-info.err"; then
+  die 2 "$bin has no gpu-info: build it from this commit (docs/gpu.md)"
+fi
+if [ $code -ne 0 ]; then
+  die 4 "no GPU adapter (WGPU_BACKEND=$WGPU_BACKEND): $(tail -n 1 "$out/gpu-info.err")"
+fi
+rm -f "$out/gpu-info.err"
+echo "$info" | write_file "$out/gpu-info.txt"
+field() { echo "$info" | sed -n "s/^$1: //p"; }
+say "adapter: $(field adapter) ($(field device_type), $(field backend), driver $(field driver)); shader_f64 $(field shader_f64); f64 finish pass $(field f64_finish_pass); timestamps $(field timestamps)"
+if [ "$(field software)" = yes ]; then
+  if [ "$smoke" = 0 ] && [ "$allow_software" = 0 ]; then
+    die 5 "the adapter is a CPU rasteriser ($(field adapter)): no GPU to time; --smoke checks the script on it, --allow-software times it anyway"
+  fi
+  say "note: a software adapter: every figure below is this CPU's, no GPU speed"
+fi
+
+# Runs one `torus-cull time --device gpu` step under what is left of the budget: its
+# JSON at NAME.json (torus-cull writes it through a temp name), its table at NAME.txt.
+step() {
+  local name=$1; shift
+  local left=$((deadline - $(date +%s)))
+  if [ "$left" -lt 5 ]; then
+    failed=1; say "== $name: skipped, the budget is spent"; return
+  fi
+  say "== $name: torus-cull $* (timeout ${left} s)"
+  local t0=$(date +%s)
+  timeout --signal=TERM --kill-after=10 "$left" \
+    "$bin" time --device gpu --no-plots --out "$out/$name.json" "$@" \
+    > "$out/$name.txt.partial" 2> "$out/$name.err"
+  local rc=$?
+  local took=$(( $(date +%s) - t0 ))
+  if [ $rc -eq 0 ]; then
+    mv -f "$out/$name.txt.partial" "$out/$name.txt"
+    rm -f "$out/$name.err"
+    say "   $name: done in ${took} s"
+  else
+    failed=1
+    mv -f "$out/$name.txt.partial" "$out/$name.failed.txt"
+    if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
+      say "   $name: FAILED, out of budget after ${took} s (no JSON written); its output so far: $out/$name.failed.txt"
+    else
+      say "   $name: FAILED (exit $rc) after ${took} s: $(tail -n 1 "$out/$name.err")"
+    fi
+  fi
+  publish
+}
+
+# The workload's smallest and largest ν, for the finish step (from the file, or the
+# embedded default's).
+case "$workload" in
+  default) wl_nu="1.1 1.25 1.5 2 3 4 6 8 12 16 24 32" ;;
+  quick) wl_nu="1.1 2 8 32" ;;
+  *) wl_nu=$(tr -d '\n' < "$workload" | sed -n 's/.*"nu" *: *\[\([^]]*\)\].*/\1/p' | head -n 1 | tr ',' ' ') ;;
+esac
+lo=$(echo $wl_nu | awk '{print $1}')
+hi=$(echo $wl_nu | awk '{print $NF}')
+
+# 1. The grid.
+step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" "${grid_nu[@]}"
+
+# 2. The batch sweep.
+if ! echo " $wl_nu " | grep -q ' 4 '; then
+  failed=1; say "== sweep: skipped, workload $workload has no nu = 4 (it has: $wl_nu)"
+  sweep_pows=()
+fi
+for p in "${sweep_pows[@]}"; do
+  step "sweep-2p$p" --workload "$workload" --cases uniform,hole --nu 4 \
+    --culls none,cychosz,skala,discriminant --batch $((1 << p)) --seconds "$sweep_seconds"
+done
+
+# 3. The f64 finish pass.
+if [ "$(field f64_finish_pass)" = yes ]; then
+  finish_nu=$(printf '%s\n' "$lo" 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)
+  [ "$smoke" = 1 ] && finish_nu=4
+  step finish --finish --workload "$workload" --cases hole,grazing --nu "$finish_nu" \
+    --culls none,cychosz,skala --batch "$finish_batch" --seconds "$finish_seconds"
+else
+  say "== finish: skipped, the adapter has no f64 finish pass ($(field f64_finish_pass))"
+fi
+
+# The headline lines, in the log and on stderr.
+if [ -f "$out/grid.txt" ]; then
+  gmax=$(awk '$4 ~ /^[0-9.]+$/ && $2 + 0 > m { m = $2 + 0 } END { print m }' "$out/grid.txt")
+  say "== grid at nu = $gmax, per case: none, and the fastest cull (ns/ray):"
+  awk -v nu="$gmax" '$2 + 0 == nu && $3 != "copy" && $4 ~ /^[0-9.]+$/ { print $1, $3, $4 }' "$out/grid.txt" \
+    | awk '{ if ($2 == "none") none[$1] = $3; if (!($1 in best) || $3 < best[$1]) { best[$1] = $3; who[$1] = $2 }; if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } }
+           END { for (i = 1; i <= n; i++) { c = order[i]; printf "   %-11s none %s, fastest %s %s\n", c, none[c], who[c], best[c] } }' \
+    | tee -a "$partial" >&2
+fi
+for f in "$out"/sweep-2p*.txt; do
+  [ -f "$f" ] || continue
+  awk -v f="$(basename "$f" .txt)" '$3 == "none" && $4 ~ /^[0-9.]+$/ { print "   " f ": " $1 " none " $4 " ns/ray" }' "$f" \
+    | tee -a "$partial" >&2
+done
+if [ -f "$out/finish.txt" ]; then
+  grep 'f64 finish pass' "$out/finish.txt" | sed 's/^/   /' | tee -a "$partial" >&2
+fi
+say "== files in $out: $(cd "$out" && ls | grep -v '\.partial$' | tr '\n' ' ')"
