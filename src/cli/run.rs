@@ -31,6 +31,9 @@ pub fn run(
     if spec::built_in(workload_path).is_none() {
         output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
     }
+    if !no_plots {
+        check_plot_paths(&path)?;
+    }
     let (records, false_rejects) = sweep(&workload, &culls, threads)?;
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
@@ -51,18 +54,23 @@ pub fn run(
 }
 
 /// `--culls`: timed culls and paper-as-printed variants by name; default every timed cull.
+/// A cull named twice is counted once, in the place it was first named (as `time` does):
+/// the records are keyed by cull, so a second copy would only repeat every record.
 fn parse_culls(names: &[String]) -> Result<Vec<CountedCull>, String> {
     if names.is_empty() {
         return Ok(torus_cull::CullKind::TIMED.map(CountedCull::Timed).to_vec());
     }
-    names
-        .iter()
-        .map(|c| {
-            c.trim()
-                .parse::<CountedCull>()
-                .map_err(|e| format!("--culls: {e}"))
-        })
-        .collect()
+    let mut culls: Vec<CountedCull> = Vec::new();
+    for name in names {
+        let cull = name
+            .trim()
+            .parse::<CountedCull>()
+            .map_err(|e| format!("--culls: {e}"))?;
+        if !culls.iter().any(|c| c.name() == cull.name()) {
+            culls.push(cull);
+        }
+    }
+    Ok(culls)
 }
 
 /// `--out`, or the default file under `results/` (its directory made if need be).
@@ -125,17 +133,37 @@ fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io
     )
 }
 
-/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
-pub(crate) fn write_plots(
-    results: &Results,
-    path: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
+/// The directory and file-name stem of the SVG charts of the results file `path`.
+fn plot_place(path: &Path) -> (PathBuf, String) {
     let dir = path
         .parent()
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
     let stem = path
         .file_stem()
-        .map_or("results".into(), |s| s.to_string_lossy());
+        .map_or("results".into(), |s| s.to_string_lossy().into_owned());
+    (dir, stem)
+}
+
+/// Before any work (`run` and `time`, unless `--no-plots`): every chart [`write_plots`]
+/// may write next to `path` (`<stem>-*.svg`) that exists already must be a file that can
+/// be replaced, not a directory, as docs/results.md promises for every output.
+pub(crate) fn check_plot_paths(path: &Path) -> Result<(), String> {
+    let (dir, stem) = plot_place(path);
+    let dir = if dir.as_os_str().is_empty() {
+        PathBuf::from(".")
+    } else {
+        dir
+    };
+    torus_cull_lab::plot::check_chart_paths(&dir, &stem)
+        .map_err(|e| format!("{e} (a plot of --out {}; or --no-plots)", path.display()))
+}
+
+/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+pub(crate) fn write_plots(
+    results: &Results,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (dir, stem) = plot_place(path);
     let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",
