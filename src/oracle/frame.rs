@@ -125,7 +125,8 @@ impl LineFrame {
     /// distance from the centre of the range's point closest to it (x·u = e + s|u|² = 0
     /// at s ≈ −e), computed without squaring |p| or s.
     pub(super) fn far_min_dist(&self, lo: f64, hi: f64) -> f64 {
-        let s = (-self.e).clamp(lo, hi);
+        // max/min, not clamp: no panic whatever the ends.
+        let s = (-self.e).max(lo).min(hi);
         let big = self.p.abs().max_element();
         let pn = big * (self.p / big).length();
         pn.hypot(s + self.e)
