@@ -5,6 +5,11 @@ use super::Query;
 use super::interval::{bisect, cubic_real_roots};
 use glam::DVec3;
 
+/// Up to how far from the foot point, in units of R + r, the origin may be for the plain
+/// foot point `q − (q·u) u` (error about 1e-16·|q|, a fifth of the ambiguity band there);
+/// beyond, [`foot_point`].
+const NEAR: f64 = 1e6;
+
 /// How far from the centre, in units of R + r, a line's foot point makes it a far line
 /// ([`LineFrame::is_far`]).
 pub(super) const FAR: f64 = 1e100;
@@ -87,7 +92,14 @@ impl LineFrame {
         let u = d / len;
         let q = o - center;
         let s_origin = q.dot(u);
-        let p = foot_point(q, d);
+        // The plain foot point is off by about 1e-16·|q|: well inside the ambiguity band
+        // up to |q| = NEAR·(R + r), and what every test of the oracle's tangencies was
+        // calibrated on; beyond, the exact cross products.
+        let p = if s_origin.abs() <= NEAR * (major + minor) {
+            q - s_origin * u
+        } else {
+            foot_point(q, d)
+        };
         let uh = u - u.dot(axis) * axis;
         let ph = p - p.dot(axis) * axis;
         let a_h = uh.length_squared();
