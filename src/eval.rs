@@ -155,8 +155,21 @@ pub fn eval_csv(
         line,
         message,
     };
+    // A line that is not UTF-8 text is a row error, named by input and line, not a bare
+    // i/o error.
+    let not_text = |line: usize, e: std::io::Error| {
+        if e.kind() == std::io::ErrorKind::InvalidData {
+            row_error(
+                line,
+                format!("not UTF-8 text ({e}): the input must be a UTF-8 CSV file"),
+            )
+        } else {
+            EvalError::Io(e)
+        }
+    };
     let mut lines = input.lines();
-    let columns = check_header(lines.next().transpose()?, &row_error)?;
+    let header = lines.next().transpose().map_err(|e| not_text(1, e))?;
+    let columns = check_header(header, &row_error)?;
     let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
         let (lines, answers) = read_for_gpu(&torus, &columns, lines, &row_error)?;
         (
@@ -183,7 +196,7 @@ pub fn eval_csv(
     let mut index = 0usize;
     for (i, line) in lines.enumerate() {
         let line_no = i + 2;
-        let line = line?;
+        let line = line.map_err(|e| not_text(line_no, e))?;
         if line.trim().is_empty() {
             continue;
         }
@@ -309,7 +322,7 @@ fn evaluate(
     if precision == Precision::F64 {
         let ray = parse_dray(torus, columns, line)?;
         return Ok(Row {
-            label: oracle(torus, &ray),
+            label: oracle(torus, &ray)?,
             t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
             escalated: None,
             finished: None,
@@ -340,7 +353,7 @@ fn evaluate(
         _ => (intersect(torus, &ray).map(|hit| hit.t), None, None, None),
     };
     Ok(Row {
-        label: oracle(torus, &DRay::from(ray)),
+        label: oracle(torus, &DRay::from(ray))?,
         t_hit: t.map(|t| Num::from(t).to_string()),
         escalated,
         finished,
@@ -352,13 +365,15 @@ fn evaluate(
 
 /// The oracle's label of a ray over its range (an f32 ray widened exactly): the literal
 /// ray's, or by the on-surface rule ([`classify_from_surface`]).
-fn oracle(torus: &Torus, ray: &DRay) -> OracleLabel {
+/// A line the oracle cannot answer ([`Query::check_reach`]) is an error for its row.
+fn oracle(torus: &Torus, ray: &DRay) -> Result<OracleLabel, String> {
     let query = Query::dray(torus, ray);
-    if ray.starts_on_surface() {
+    query.check_reach()?;
+    Ok(if ray.starts_on_surface() {
         classify_from_surface(&query)
     } else {
         query.classify()
-    }
+    })
 }
 
 /// `index,oracle,margin,t_hit[,escalated][,finished],<one 0/1 per cull>[,<one 0/1 per GPU
@@ -550,9 +565,18 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
         }
     }
     if fields.t_min > fields.t_max {
+        // As typed (`1e200`, not its 201 digits): both columns are there, as neither
+        // default (0, inf) can make the range empty.
+        let typed_of = |column: &str| {
+            names
+                .iter()
+                .position(|n| *n == column)
+                .map_or("?", |k| typed[k].trim())
+        };
         return Err(format!(
             "columns t_min, t_max: t_min = {} > t_max = {} (allowed: 0 ≤ t_min ≤ t_max)",
-            fields.t_min, fields.t_max
+            typed_of("t_min"),
+            typed_of("t_max")
         ));
     }
     fields.typed = typed;

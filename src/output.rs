@@ -201,16 +201,30 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 /// For a default output path (one the user did not type, such as `results/<commit>.json`):
 /// create its directory if it is missing, one level only, as the tool's own place for
 /// results. A path the user typed never gets a directory created.
+///
+/// A directory made here is remembered: [`remove_pending`] (an interrupted run) removes
+/// it again if it is still empty, so that a run stopped before it wrote anything leaves
+/// no trace.
 pub fn create_default_dir(path: &Path) -> io::Result<()> {
     let dir = parent_of(path);
     match fs::create_dir(dir) {
+        Ok(()) => {
+            if let Ok(mut made) = MADE_DIRS.lock() {
+                made.push(dir.to_path_buf());
+            }
+            Ok(())
+        }
         Err(e) if e.kind() != io::ErrorKind::AlreadyExists => Err(e),
         _ => Ok(()),
     }
 }
 
-/// Delete every temp file not yet renamed into place. For signal handlers: the process
-/// is about to die and its [`Output`]s will never be dropped.
+/// Directories [`create_default_dir`] made in this process.
+static MADE_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Delete every temp file not yet renamed into place, then every directory this process
+/// made for a default output ([`create_default_dir`]) that is still empty. For signal
+/// handlers: the process is about to die and its [`Output`]s will never be dropped.
 pub fn remove_pending() {
     let pending = match PENDING.lock() {
         Ok(p) => p,
@@ -218,6 +232,14 @@ pub fn remove_pending() {
     };
     for path in pending.iter() {
         let _ = fs::remove_file(path);
+    }
+    let made = match MADE_DIRS.lock() {
+        Ok(m) => m,
+        Err(poisoned) => poisoned.into_inner(),
+    };
+    for dir in made.iter() {
+        // remove_dir removes only an empty directory: one holding a file stays.
+        let _ = fs::remove_dir(dir);
     }
 }
 
@@ -262,7 +284,18 @@ fn temp_in(dir: &Path) -> io::Result<NamedTempFile> {
         // Passed to open(2), which applies the umask: the mode a plain create would get.
         builder.permissions(fs::Permissions::from_mode(0o666));
     }
-    builder.tempfile_in(dir)
+    // tempfile's error names the temp file it tried, which the user never typed: name the
+    // directory instead.
+    builder.tempfile_in(dir).map_err(|e| {
+        let mut why = e.to_string();
+        if let Some(at) = why.find(" at path ") {
+            why.truncate(at);
+        }
+        io::Error::new(
+            e.kind(),
+            format!("cannot create a file in directory {}: {why}", dir.display()),
+        )
+    })
 }
 
 fn parent_of(path: &Path) -> &Path {

@@ -283,6 +283,28 @@ fn legend_marker(
     Ok(())
 }
 
+/// Before any work: every existing entry of `out_dir` that a chart of [`plot_results`]
+/// with this `stem` could be written to (`<stem>-*.svg`) must be replaceable
+/// ([`crate::output::check_writable`]: not a directory, its directory writable). The
+/// error names the path.
+pub fn check_chart_paths(out_dir: &Path, stem: &str) -> Result<(), String> {
+    let Ok(entries) = std::fs::read_dir(out_dir) else {
+        // A missing or unreadable directory is the results file's own check to report.
+        return Ok(());
+    };
+    let prefix = format!("{stem}-");
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        if name.starts_with(&prefix) && name.ends_with(".svg") {
+            let path = entry.path();
+            crate::output::check_writable(&path)
+                .map_err(|e| format!("plot {}: {e}", path.display()))?;
+        }
+    }
+    Ok(())
+}
+
 /// Every chart a results file supports, written to `out_dir` (which must exist) with file names starting
 /// with `stem`; returns the paths written. Titles name the workload and the commit;
 /// timings and paired ratios carry their 95 % intervals as error bars.

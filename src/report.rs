@@ -165,8 +165,30 @@ pub fn ratio_tables(results: &Results) -> String {
         })
         .collect();
     // Of several runs, the interval shown is the between-run one: how far the next run
-    // may land, not only how well this one's rounds pinned it down.
-    let runs = results.ratio.iter().map(|r| r.runs).max().unwrap_or(1);
+    // may land, not only how well this one's rounds pinned it down. The title says how
+    // many runs were made, whether or not some were set aside as run in a slow state of
+    // the machine (`runs_set_aside`, see `paired::runs::SLOW_STATE`), and, per ν, how
+    // many were: the header's shape does not depend on the machine's state.
+    let runs_of = |title: &str| {
+        let of: Vec<&RatioRecord> = keyed
+            .iter()
+            .filter(|(k, _)| k == title)
+            .map(|(_, r)| *r)
+            .collect();
+        let made = of
+            .iter()
+            .map(|r| r.runs + r.runs_set_aside)
+            .max()
+            .unwrap_or(1);
+        let mut aside: Vec<(f64, u64)> = of
+            .iter()
+            .filter(|r| r.runs_set_aside > 0)
+            .map(|r| (r.nu, r.runs_set_aside))
+            .collect();
+        aside.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        aside.dedup();
+        (made, aside)
+    };
     let mut out = table(
         &keyed,
         |(k, r)| (k.as_str(), r.nu, r.cull.as_str()),
@@ -175,11 +197,23 @@ pub fn ratio_tables(results: &Results) -> String {
             format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio)
         },
         |title| {
-            if runs > 1 {
-                format!("{title}, paired ratio [95% CI] between {runs} runs")
-            } else {
-                format!("{title}, paired ratio [95% CI]")
+            let (made, aside) = runs_of(title);
+            let mut head = format!("{title}, paired ratio [95% CI]");
+            if made > 1 {
+                let _ = write!(head, " between {made} runs");
             }
+            if !aside.is_empty() {
+                let at: Vec<String> = aside
+                    .iter()
+                    .map(|(nu, n)| format!("{n} at ν = {}", crate::number::Num(*nu)))
+                    .collect();
+                let _ = write!(
+                    head,
+                    " (set aside as run in a slow state of the machine: {})",
+                    at.join(", ")
+                );
+            }
+            head
         },
     );
     // One escalation rate per cull and (case, ν): the certified records all carry it.
@@ -239,4 +273,76 @@ pub fn scalar_vs_batch_tables(results: &Results) -> String {
             )
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::workload::spec::Workload;
+
+    /// A `hole` total-time record of skala against cychosz at ν, of `runs` kept and
+    /// `aside` set aside.
+    fn record(nu: f64, runs: u64, aside: u64) -> RatioRecord {
+        RatioRecord {
+            case: "hole".into(),
+            nu,
+            cull: "skala".into(),
+            reference: "cychosz".into(),
+            metric: "total_ns".into(),
+            ratio: 0.2,
+            ratio_ci: [0.19, 0.21],
+            rounds: 40,
+            rounds_measured: 80,
+            rays: 200,
+            ns_per_ray: 20.0,
+            reference_ns_per_ray: 100.0,
+            precision: "f64".into(),
+            device: CPU_DEVICE.into(),
+            escalation_rate: None,
+            runs,
+            runs_set_aside: aside,
+            run_ratios: Vec::new(),
+            ratio_ci_between: None,
+            run_spread: None,
+        }
+    }
+
+    fn tables(records: Vec<RatioRecord>) -> String {
+        let workload = Workload::open(std::path::Path::new("quick")).unwrap();
+        let mut results = Results::new(&workload, "time");
+        results.ratio = records;
+        ratio_tables(&results)
+    }
+
+    /// Issue 36: a run set aside as slow no longer drops "between 2 runs" from the header
+    /// (which made `time_cli` fail by chance); the header says where runs were set aside.
+    #[test]
+    fn the_header_counts_the_runs_made_whether_or_not_one_was_set_aside() {
+        let title = "hole: total (cull + exact intersection) / cychosz, paired ratio [95% CI]";
+        let kept = tables(vec![record(2.0, 2, 0), record(8.0, 2, 0)]);
+        assert!(
+            kept.contains(&format!("{title} between 2 runs\n")),
+            "{kept}"
+        );
+        // Every batch lost a run: the header still says two were made.
+        let aside = tables(vec![record(2.0, 1, 1), record(8.0, 1, 1)]);
+        assert!(
+            aside.contains(&format!(
+                "{title} between 2 runs (set aside as run in a slow state of the machine: \
+                 1 at ν = 2, 1 at ν = 8)\n"
+            )),
+            "{aside}"
+        );
+        let one = tables(vec![record(2.0, 2, 0), record(8.0, 1, 1)]);
+        assert!(
+            one.contains(&format!(
+                "{title} between 2 runs (set aside as run in a slow state of the machine: \
+                 1 at ν = 8)\n"
+            )),
+            "{one}"
+        );
+        // One run (--runs 1): no count.
+        let single = tables(vec![record(2.0, 1, 0)]);
+        assert!(single.contains(&format!("{title}\n")), "{single}");
+    }
 }

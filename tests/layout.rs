@@ -592,6 +592,10 @@ const ALLOWED: &[(&str, &str)] = &[
         "removed; restored by the git show beside it",
     ),
     (
+        "results/gpu-device-<UTC",
+        "the folder benches/gpu_device.sh writes, named by the time of the run",
+    ),
+    (
         "src/<path>.rs",
         "a pattern in a doc comment: a module's file",
     ),

@@ -58,6 +58,26 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
 
 /// Runs `intervals`: the run-to-run honesty check of the paired intervals.
 pub fn intervals(runs: &[std::path::PathBuf]) -> CliResult {
+    // The same run twice would agree with itself and pass every goal: refuse it, by path
+    // (links followed) and by contents (a copy).
+    for (i, a) in runs.iter().enumerate() {
+        for b in &runs[..i] {
+            let same = torus_cull_lab::output::same_file(a, b)
+                || matches!(
+                    (std::fs::read(a), std::fs::read(b)),
+                    (Ok(x), Ok(y)) if x == y
+                );
+            if same {
+                return Err(format!(
+                    "{} and {} are the same run (the same file or identical contents): \
+                     intervals needs independent runs (benches/honest_intervals.sh)",
+                    b.display(),
+                    a.display()
+                )
+                .into());
+            }
+        }
+    }
     let mut loaded = Vec::new();
     for path in runs {
         match ResultsFile::load(path)? {

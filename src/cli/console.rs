@@ -97,3 +97,6 @@ macro_rules! outln {
     };
 }
 pub(crate) use {out, outln};
+
+/// What every command returns: its exit code, or an error `main` prints.
+pub(crate) type CliResult = Result<std::process::ExitCode, Box<dyn std::error::Error>>;

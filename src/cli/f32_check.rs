@@ -12,6 +12,9 @@ use torus_cull_lab::{output, results};
 /// The most rays per family.
 const MAX_RAYS: usize = 1_000_000;
 
+/// The most timing rounds per family: 1000 rounds of 20 000 rays are already hours.
+const MAX_ROUNDS: u32 = 1000;
+
 /// `torus-cull f32-check`'s arguments.
 #[derive(clap::Args)]
 pub struct F32CheckArgs {
@@ -29,7 +32,7 @@ pub struct F32CheckArgs {
     /// run on one.
     #[arg(long)]
     threads: Option<usize>,
-    /// Timing rounds per family (0: no timings).
+    /// Timing rounds per family, 0 ..= 1000 (0: no timings).
     #[arg(long, default_value_t = 5)]
     rounds: u32,
     /// Skip the SVG plots (by default escalation, wrong answers, t error and ns per ray
@@ -53,6 +56,13 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         )
         .into());
     }
+    if args.rounds > MAX_ROUNDS {
+        return Err(format!(
+            "--rounds {} is invalid (allowed: 0 ..= {MAX_ROUNDS})",
+            args.rounds
+        )
+        .into());
+    }
     let threads = crate::threads::pick(args.threads)?;
     let path = match args.out {
         Some(path) => path,
@@ -65,6 +75,9 @@ pub fn run(args: F32CheckArgs) -> CliResult {
     };
     // Before the work, not after it.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    if !args.no_plots {
+        crate::plot::check_plot_paths(&path)?;
+    }
 
     let mut families = families::all();
     if let Some(part) = &args.family {

@@ -1,7 +1,7 @@
 //! `torus-cull gpu-info`: the adapter wgpu picks, as `key: value` lines a script can read
 //! (benches/gpu_device.sh checks it before timing anything).
 
-use crate::CliResult;
+use crate::console::CliResult;
 
 /// Prints the adapter (name, device type, backend, driver, whether it is a CPU), whether
 /// it has `SHADER_F64` and the f64 finish pass, and timestamp queries. Exit 2 with one

@@ -271,7 +271,7 @@ fn main() -> ExitCode {
     }
 }
 
-type CliResult = Result<ExitCode, Box<dyn std::error::Error>>;
+use console::CliResult;
 
 /// On SIGINT, SIGTERM or SIGHUP, delete the temp files of unfinished outputs, say so in
 /// one line on stderr, then die of the signal as if there were no handler (so the caller

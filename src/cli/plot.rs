@@ -59,17 +59,37 @@ fn check_out_dir(dir: &Path) -> Result<(), String> {
     }
 }
 
-/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
-pub(crate) fn write_plots(
-    results: &Results,
-    path: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
+/// The directory and file-name stem of the SVG charts of the results file `path`.
+fn plot_place(path: &Path) -> (PathBuf, String) {
     let dir = path
         .parent()
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
     let stem = path
         .file_stem()
-        .map_or("results".into(), |s| s.to_string_lossy());
+        .map_or("results".into(), |s| s.to_string_lossy().into_owned());
+    (dir, stem)
+}
+
+/// Before any work (`run` and `time`, unless `--no-plots`): every chart [`write_plots`]
+/// may write next to `path` (`<stem>-*.svg`) that exists already must be a file that can
+/// be replaced, not a directory, as docs/results.md promises for every output.
+pub(crate) fn check_plot_paths(path: &Path) -> Result<(), String> {
+    let (dir, stem) = plot_place(path);
+    let dir = if dir.as_os_str().is_empty() {
+        PathBuf::from(".")
+    } else {
+        dir
+    };
+    torus_cull_lab::plot::check_chart_paths(&dir, &stem)
+        .map_err(|e| format!("{e} (a plot of --out {}; or --no-plots)", path.display()))
+}
+
+/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+pub(crate) fn write_plots(
+    results: &Results,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (dir, stem) = plot_place(path);
     let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",

@@ -31,6 +31,9 @@ pub fn run(
     if spec::built_in(workload_path).is_none() {
         output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
     }
+    if !no_plots {
+        crate::plot::check_plot_paths(&path)?;
+    }
     let (records, false_rejects) = sweep(&workload, &culls, threads)?;
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
@@ -51,18 +54,23 @@ pub fn run(
 }
 
 /// `--culls`: timed culls and paper-as-printed variants by name; default every timed cull.
+/// A cull named twice is counted once, in the place it was first named (as `time` does):
+/// the records are keyed by cull, so a second copy would only repeat every record.
 fn parse_culls(names: &[String]) -> Result<Vec<CountedCull>, String> {
     if names.is_empty() {
         return Ok(torus_cull::CullKind::TIMED.map(CountedCull::Timed).to_vec());
     }
-    names
-        .iter()
-        .map(|c| {
-            c.trim()
-                .parse::<CountedCull>()
-                .map_err(|e| format!("--culls: {e}"))
-        })
-        .collect()
+    let mut culls: Vec<CountedCull> = Vec::new();
+    for name in names {
+        let cull = name
+            .trim()
+            .parse::<CountedCull>()
+            .map_err(|e| format!("--culls: {e}"))?;
+        if !culls.iter().any(|c| c.name() == cull.name()) {
+            culls.push(cull);
+        }
+    }
+    Ok(culls)
 }
 
 /// `--out`, or the default file under `results/` (its directory made if need be).

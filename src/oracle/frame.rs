@@ -5,6 +5,15 @@ use super::Query;
 use super::interval::{bisect, cubic_real_roots};
 use glam::DVec3;
 
+/// Up to how far from the foot point, in units of R + r, the origin may be for the plain
+/// foot point `q − (q·u) u` (error about 1e-16·|q|, a fifth of the ambiguity band there);
+/// beyond, [`foot_point`].
+const NEAR: f64 = 1e6;
+
+/// How far from the centre, in units of R + r, a line's foot point makes it a far line
+/// ([`LineFrame::is_far`]).
+pub(super) const FAR: f64 = 1e100;
+
 /// The line in the torus's own terms, parametrized by unit arc length `s` from the foot
 /// point: `x(s) − c = p + s u`, `s = s0 + t |d|`.
 ///
@@ -32,6 +41,40 @@ pub(super) struct LineFrame {
     pub(super) m2: f64,
 }
 
+/// a·b − c·d to about one rounding of the result (Kahan's algorithm with a fused
+/// multiply-add), however much the two products cancel.
+fn diff_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let w = c * d;
+    let err = (-c).mul_add(d, w);
+    a.mul_add(b, -w) + err
+}
+
+/// a × b, each component to about one rounding of itself.
+fn cross(a: DVec3, b: DVec3) -> DVec3 {
+    DVec3::new(
+        diff_of_products(a.y, b.z, a.z, b.y),
+        diff_of_products(a.z, b.x, a.x, b.z),
+        diff_of_products(a.x, b.y, a.y, b.x),
+    )
+}
+
+/// The foot point of the line `q + t d` (the point closest to the origin of q's frame):
+/// `d × (q × d) / |d|²`, the part of q perpendicular to d, with d first scaled by a power
+/// of two (exactly) to a largest component in [1, 2).
+///
+/// Removing the along-line part first keeps |p| ≤ |q| and makes every later quantity
+/// O(R) for lines near the torus, however far the origin. Both cross products are exact
+/// to rounding of their own components, so p is accurate to rounding of |p| itself, not
+/// of |q|: the plain `q − (q·u) u` is off by about 1e-16·|q|, which for an origin at
+/// 1e200 is 1e184, far more than the torus (issue 36: such a line through the centre
+/// came out a miss, or made the oracle's cubic overflow).
+pub(super) fn foot_point(q: DVec3, d: DVec3) -> DVec3 {
+    let big = d.abs().max_element();
+    let k = big.log2().floor().clamp(-1000.0, 1000.0) as i32;
+    let d = d * 2f64.powi(-k);
+    cross(d, cross(q, d)) / d.length_squared()
+}
+
 impl LineFrame {
     pub(super) fn new(query: &Query) -> LineFrame {
         query.check_line();
@@ -49,9 +92,14 @@ impl LineFrame {
         let u = d / len;
         let q = o - center;
         let s_origin = q.dot(u);
-        // The foot point: removing the along-line part first keeps |p| ≤ |q| and makes
-        // every later quantity O(R) for lines near the torus, however far the origin.
-        let p = q - s_origin * u;
+        // The plain foot point is off by about 1e-16·|q|: well inside the ambiguity band
+        // up to |q| = NEAR·(R + r), and what every test of the oracle's tangencies was
+        // calibrated on; beyond, the exact cross products.
+        let p = if s_origin.abs() <= NEAR * (major + minor) {
+            q - s_origin * u
+        } else {
+            foot_point(q, d)
+        };
         let uh = u - u.dot(axis) * axis;
         let ph = p - p.dot(axis) * axis;
         let a_h = uh.length_squared();
@@ -74,6 +122,32 @@ impl LineFrame {
             s_m,
             m2,
         }
+    }
+
+    /// Whether the line passes so far from the torus (its foot point beyond
+    /// [`FAR`]·(R + r) from the centre) that D along it equals the distance from the centre
+    /// to rounding: D differs from |x| by at most R, a relative 1e-100. Such lines are
+    /// answered by [`LineFrame::far_min_dist`]; the cubic and the squares of the general
+    /// method would overflow for them.
+    pub(super) fn is_far(&self) -> bool {
+        self.p.abs().max_element() > FAR * (self.major + self.minor)
+    }
+
+    /// For a line with [`LineFrame::is_far`]: the minimum of D over [lo, hi], as the
+    /// distance from the centre of the range's point closest to it (x·u = e + s|u|² = 0
+    /// at s ≈ −e), computed without squaring |p| or s.
+    pub(super) fn far_min_dist(&self, lo: f64, hi: f64) -> f64 {
+        // max/min, not clamp: no panic whatever the ends.
+        let s = (-self.e).max(lo).min(hi);
+        let big = self.p.abs().max_element();
+        let pn = big * (self.p / big).length();
+        pn.hypot(s + self.e)
+    }
+
+    /// Whether every number the oracle derives from the line is finite: false where the
+    /// origin or the direction is so large that they overflow f64 (|o − c| near 1e308).
+    pub(super) fn is_finite(&self) -> bool {
+        self.p.is_finite() && self.s0.is_finite() && self.u.is_finite() && self.len.is_finite()
     }
 
     pub(super) fn s_of_t(&self, t: f64) -> f64 {
@@ -157,7 +231,7 @@ impl LineFrame {
             }
             if (ha < 0.0) != (hb < 0.0) && ha != 0.0 && hb != 0.0 {
                 // Inside the open piece ρ > 0 (or m2 > 0), so the plain formula is fine.
-                out.push(bisect(&|s| self.half_slope(s, 0.0), a, b, ha));
+                out.extend(bisect(&|s| self.half_slope(s, 0.0), a, b, ha));
             }
         }
         out.retain(|&s| s >= lo && s <= hi);

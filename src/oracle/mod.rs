@@ -158,9 +158,22 @@ impl Query {
     }
 
     /// The oracle's class and margin: [`classify`] for any [`Query`].
+    ///
+    /// A line whose numbers overflow f64 ([`Query::check_reach`] fails) gets a NaN margin
+    /// and the class [`OracleClass::Ambiguous`]: call `check_reach` first to refuse it.
     pub fn classify(&self) -> OracleLabel {
         let frame = LineFrame::new(self);
         let (lo, hi) = frame.s_range(self.t_min, self.t_max);
+        if !frame.is_finite() {
+            return OracleLabel {
+                class: OracleClass::Ambiguous,
+                margin: f64::NAN,
+            };
+        }
+        if frame.is_far() {
+            let margin = frame.far_min_dist(lo, hi) - self.minor;
+            return OracleLabel::from_margin(margin, self.major, self.minor);
+        }
         let mut best = f64::INFINITY;
         for s in frame
             .d_candidates(lo, hi)
@@ -177,6 +190,28 @@ impl Query {
             }
         }
         OracleLabel::from_margin(best - self.minor, self.major, self.minor)
+    }
+
+    /// Whether the oracle can answer this line: `Err`, saying why, where the origin or the
+    /// direction is so large (|o − c| or |d| near f64's largest value, 1.8e308) that the
+    /// numbers the oracle derives from them overflow. Any finite line short of that is
+    /// answered, however far: its foot point is computed to rounding of itself, and a line
+    /// that passes farther than 1e100·(R + r) from the centre by the distance alone.
+    ///
+    /// # Panics
+    /// As [`Query`], for an invalid torus or line.
+    pub fn check_reach(&self) -> Result<(), String> {
+        let frame = LineFrame::new(self);
+        if frame.is_finite() {
+            Ok(())
+        } else {
+            Err(format!(
+                "the oracle cannot answer this line: its numbers overflow f64 (origin \
+                 components up to {:e} from the centre's, direction components up to {:e})",
+                (self.o - self.center).abs().max_element(),
+                self.d.abs().max_element()
+            ))
+        }
     }
 
     /// The torus and the line are valid (the range is checked where it is used).

@@ -23,6 +23,11 @@ use super::interval::bisect;
 /// As [`Query`].
 pub fn reference_roots(query: &Query) -> Vec<f64> {
     let frame = LineFrame::new(query);
+    // Farther than 1e100·(R + r) from the centre the line never reaches the tube; a line
+    // whose numbers overflow has no roots the oracle can find.
+    if frame.is_far() || !frame.is_finite() {
+        return Vec::new();
+    }
     let Query {
         major,
         minor,
@@ -47,8 +52,9 @@ pub fn reference_roots(query: &Query) -> Vec<f64> {
         let (a, b) = (w[0], w[1]);
         let (ga, gb) = (g(a), g(b));
         if (ga < 0.0) != (gb < 0.0) {
-            let s = bisect(&g, a, b, ga);
-            roots.push(frame.t_of_s(s));
+            if let Some(s) = bisect(&g, a, b, ga) {
+                roots.push(frame.t_of_s(s));
+            }
         }
     }
     roots.retain(|&t| t >= t_min && t <= t_max);

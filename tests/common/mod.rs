@@ -6,6 +6,27 @@ use torus_cull_lab::workload::{Batch, Case, Pose, generate};
 
 pub mod adversarial;
 
+/// Whether this is a CI run: the environment variable `CI` is `true` (or `1`), as CI
+/// services set it.
+pub fn under_ci() -> bool {
+    std::env::var("CI").is_ok_and(|v| v.eq_ignore_ascii_case("true") || v == "1")
+}
+
+/// A GPU test found no adapter (`why`): on a developer's machine it prints one loud
+/// SKIPPED line and the test passes; under CI (`CI=true`, see [`under_ci`]) it panics, so
+/// that a CI machine that lost its adapter (a failed `mesa-vulkan-drivers` install) fails
+/// instead of passing without running the kernel.
+pub fn no_adapter(why: &str) {
+    let hint = "install the Debian package mesa-vulkan-drivers (Mesa's software Vulkan) to \
+                run the GPU tests";
+    if under_ci() {
+        panic!("no GPU adapter under CI=true ({why}): {hint}");
+    }
+    use std::io::Write;
+    // To stderr directly: libtest captures println! of a passing test.
+    let _ = writeln!(std::io::stderr(), "SKIPPED: no GPU adapter ({why}); {hint}");
+}
+
 /// The ν values the conservativeness claims are tested at.
 pub const NUS: [f64; 7] = [1.1, 1.5, 2.0, 3.0, 5.0, 10.0, 32.0];
 

@@ -11,7 +11,7 @@ use std::fmt;
 
 /// An enum whose values have stable string names.
 ///
-/// [`named_display_and_from_str!`](crate::named_display_and_from_str) gives an implementor
+/// The crate's internal macro `named_display_and_from_str!` gives an implementor
 /// [`fmt::Display`] (its name) and [`std::str::FromStr`] ([`Named::parse`]), so that
 /// `format!("{value}")` and `s.parse()` work too.
 ///
@@ -104,6 +104,10 @@ impl std::error::Error for UnknownName {}
 /// assert_eq!(Isa::Scalar.to_string(), "scalar");
 /// assert_eq!("scalar".parse::<Isa>(), Ok(Isa::Scalar));
 /// ```
+///
+/// Internal: exported only because the lab crate of this workspace uses it for its own
+/// names, and hidden from the docs; not part of the public API.
+#[doc(hidden)]
 #[macro_export]
 macro_rules! named_display_and_from_str {
     ($($named:ty),+ $(,)?) => {$(

@@ -148,6 +148,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     };
     let path = out_path(args.out, &workload, args.device, args.secondary)?;
     check_writable(&path)?;
+    if !args.no_plots && args.worker_run.is_none() {
+        crate::plot::check_plot_paths(&path)?;
+    }
     if spec::built_in(&args.workload).is_none() {
         torus_cull_lab::output::check_not_input(
             ("--out", &path),

@@ -262,12 +262,33 @@ pub enum RayError<P: Precision = Vec3> {
 /// Why a [`DRay`] was refused: [`RayError`]'s cases, in f64.
 pub type DRayError = RayError<DVec3>;
 
+/// A number in an error message, compact: its shortest round-trip text in positional
+/// notation when `1e-5 <= |v| < 1e16` (or 0, or not finite), in scientific notation
+/// otherwise, so that `1e200` is `1e200`, not 201 digits.
+pub(crate) fn compact<T: fmt::Display + fmt::LowerExp>(v: T, as_f64: f64) -> String {
+    if as_f64 == 0.0 || !as_f64.is_finite() || (1e-5..1e16).contains(&as_f64.abs()) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// A vector in an error message, `[x, y, z]`, each component [`compact`].
+pub(crate) fn compact3<P: Precision>(v: P) -> String {
+    let [x, y, z] = v.components().map(|c| compact(c, c.to_f64()));
+    format!("[{x}, {y}, {z}]")
+}
+
 impl<P: Precision> fmt::Display for RayError<P> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let name = P::NAME;
         match self {
-            RayError::NonFiniteOrigin(o) => write!(f, "ray origin {o} is not finite"),
-            RayError::NonFiniteDirection(d) => write!(f, "ray direction {d} is not finite"),
+            RayError::NonFiniteOrigin(o) => {
+                write!(f, "ray origin {} is not finite", compact3(*o))
+            }
+            RayError::NonFiniteDirection(d) => {
+                write!(f, "ray direction {} is not finite", compact3(*d))
+            }
             RayError::ZeroDirection(d) if *d == P::ZERO => {
                 write!(
                     f,
@@ -285,10 +306,21 @@ impl<P: Precision> fmt::Display for RayError<P> {
                 )
             }
             RayError::HugeDirection(d) => {
-                write!(f, "ray direction {d} is too long ({})", P::HUGE)
+                write!(
+                    f,
+                    "ray direction {} is too long ({})",
+                    compact3(*d),
+                    P::HUGE
+                )
             }
             RayError::BadRange { t_min, t_max } => {
-                write!(f, "ray range [{t_min}, {t_max}] is invalid ({})", P::RANGE)
+                write!(
+                    f,
+                    "ray range [{}, {}] is invalid ({})",
+                    compact(*t_min, t_min.to_f64()),
+                    compact(*t_max, t_max.to_f64()),
+                    P::RANGE
+                )
             }
         }
     }
@@ -505,7 +537,16 @@ mod tests {
         );
         let huge = DRay::new(DVec3::ZERO, DVec3::splat(1e300)).unwrap_err();
         assert!(matches!(huge, DRayError::HugeDirection(_)));
-        assert!(msg(&huge).ends_with("is too long (|d|² overflows f64)"));
+        // Issue 36: compact numbers, not 301 digits each.
+        assert_eq!(
+            msg(&huge),
+            "ray direction [1e300, 1e300, 1e300] is too long (|d|² overflows f64)"
+        );
+        let range = DRay::with_range(DVec3::ZERO, DVec3::X, 1e200, 1.0).unwrap_err();
+        assert!(
+            msg(&range).starts_with("ray range [1e200, 1] is invalid"),
+            "{range}"
+        );
         let huge = Ray::new(Vec3::ZERO, Vec3::splat(1e20)).unwrap_err();
         assert!(msg(&huge).ends_with("(|d|² must be finite in f32: |d| < 1.8e19)"));
         let tiny = Ray::new(Vec3::ZERO, Vec3::new(1e-20, 0.0, 0.0)).unwrap_err();

@@ -176,8 +176,14 @@ impl fmt::Display for TorusError {
                  intersection and the culls are tested; scale r up or split the scene)",
                 *major_radius as f64 / *minor_radius as f64
             ),
-            TorusError::NonFiniteCenter(c) => write!(f, "torus centre {c} is not finite"),
-            TorusError::BadAxis(a) => write!(f, "torus axis {a} must be finite and non-zero"),
+            TorusError::NonFiniteCenter(c) => {
+                write!(f, "torus centre {} is not finite", super::ray::compact3(*c))
+            }
+            TorusError::BadAxis(a) => write!(
+                f,
+                "torus axis {} must be finite and non-zero",
+                super::ray::compact3(*a)
+            ),
             TorusError::OutOfRange {
                 major_radius,
                 minor_radius,
