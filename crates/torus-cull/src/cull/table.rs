@@ -20,7 +20,7 @@ macro_rules! cull_table {
     ($then:ident) => {
         $then! {
             NoCull "none" NoCull [lanes gpu] [Ring],
-                "No test: always run the quartic (the baseline), [`NoCull`]; named `none`.";
+                "No test: always run the quartic (the baseline), [`crate::NoCull`]; named `none`.";
             Sphere "sphere" SphereCull [lanes gpu] [Ring],
                 "Bounding sphere of radius R + r.";
             Aabb "aabb" AabbCull [lanes gpu] [Ring],
