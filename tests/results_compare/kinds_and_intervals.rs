@@ -1,0 +1,248 @@
+//! `compare` on other kinds of files (f32-check, estimate-only, mixed) and on records
+//! with between-run intervals.
+
+use super::*;
+
+#[test]
+fn first_line_is_not_blank_and_long_keys_stay_aligned() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    let mut r = sample();
+    r.rejection[1].case = "a_case_with_a_very_long_name_indeed".into();
+    r.rejection[1].cull = "discriminant_f64".into();
+    r.save(&a).unwrap();
+    r.save(&b).unwrap();
+    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.lines().next().is_some_and(|l| !l.trim().is_empty()),
+        "{out}"
+    );
+    let rejection: Vec<&str> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("rejection"))
+        .take(3)
+        .collect();
+    // The `change` column ends at the same place on every line of the section.
+    let ends: Vec<usize> = rejection
+        .iter()
+        .map(|l| {
+            l.find("  flags")
+                .or_else(|| l.rfind('%').map(|i| i + 1))
+                .or_else(|| l.rfind('-').map(|i| i + 1))
+                .unwrap()
+        })
+        .collect();
+    assert!(ends.windows(2).all(|w| w[0] == w[1]), "{rejection:#?}");
+}
+
+/// Issue 29: two f32-check files compare family by family; more missed hits is a
+/// regression; an f32-check file against a results file is refused, naming both tools.
+#[test]
+fn f32_check_files_compare_and_mixed_kinds_are_refused() {
+    use torus_cull_lab::f32_check::{CheckFile, FamilyRecord, Tally};
+    let tally = |missed: u64| Tally {
+        escalated: 1,
+        escalation_rate: 0.01,
+        missed,
+        spurious: 0,
+        hits_answered: 50,
+        far: 0,
+        t_error: None,
+    };
+    let family = |missed: u64| FamilyRecord {
+        family: "hole".into(),
+        nu: Some(2.0),
+        nu_range: [2.0, 2.0],
+        rays: 100,
+        hits: 50,
+        misses: 50,
+        ambiguous: 0,
+        certified: tally(missed),
+        f32_path: tally(missed),
+        peer: tally(3),
+        ns_per_ray: None,
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b, c) = (
+        dir.path().join("a.json"),
+        dir.path().join("b.json"),
+        dir.path().join("c.json"),
+    );
+    let write = |path: &Path, f: &CheckFile| {
+        write_atomic(path, serde_json::to_string(f).unwrap().as_bytes()).unwrap();
+    };
+    let good = CheckFile::new(vec![family(0)], 100, 1, 1);
+    write(&a, &good);
+    let mut bad = good.clone();
+    bad.families[0] = family(2);
+    write(&b, &bad);
+    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), a.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("hole 2 cert"), "{out}");
+    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("REGRESSION: missed/spurious/far 0/0/0 -> 2/0/0"),
+        "{out}"
+    );
+    sample().save(&c).unwrap();
+    let (code, _, err) = compare_cli(&[a.to_str().unwrap(), c.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("`f32-check`") && err.contains("`run`"),
+        "{err}"
+    );
+}
+
+/// Issue 29: a file with only `estimates` (`time --device gpu`, a filtered bench) is
+/// plotted and compared by them (it was "nothing to plot" and "share no record"); an
+/// adapter change is a machine change.
+#[test]
+fn estimate_only_files_are_plotted_and_compared() {
+    use torus_cull_lab::results::EstimateRecord;
+    let gpu = |ns: f64, device: &str| {
+        let mut r = sample();
+        r.rejection.clear();
+        r.timing.clear();
+        r.bvh.clear();
+        r.meta.tool = Some("time".into());
+        r.meta.device = Some(device.into());
+        r.estimates = [2.0, 8.0]
+            .iter()
+            .flat_map(|nu| {
+                ["none", "cychosz"].map(|cull| EstimateRecord {
+                    benchmark: format!("gpu_ns-hole/{cull}/{nu}"),
+                    elements: 1024,
+                    ns_per_element: ns,
+                    ns_per_element_ci: [ns * 0.99, ns * 1.01],
+                })
+            })
+            .collect();
+        r
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    gpu(2.0, "RTX").save(&a).unwrap();
+    gpu(3.0, "RTX").save(&b).unwrap();
+    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("gpu_ns-hole/cychosz/2") && out.contains("4 regressions"),
+        "{out}"
+    );
+    gpu(3.0, "lavapipe").save(Path::new(b)).unwrap();
+    let (code, out, _) = compare_cli(&[a, b]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("meta.device: RTX vs lavapipe"), "{out}");
+    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
+        .args(["plot", a])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = dir.path().join("a-estimates-gpu_ns-hole.svg");
+    let text = std::fs::read_to_string(&svg).expect("an estimates chart");
+    assert!(
+        text.contains("cychosz") && text.contains("ns per element"),
+        "{text}"
+    );
+}
+
+/// `sample()` with one `total_ns` ratio record of skala against cychosz.
+fn with_ratio(ratio: f64, ci: [f64; 2], between: Option<[f64; 2]>, runs: u64) -> Results {
+    let mut r = sample();
+    r.ratio = vec![RatioRecord {
+        case: "hole".into(),
+        nu: 8.0,
+        cull: "skala".into(),
+        reference: "cychosz".into(),
+        metric: "total_ns".into(),
+        ratio,
+        ratio_ci: ci,
+        rounds: 300,
+        rounds_measured: 1200,
+        rays: 1024,
+        ns_per_ray: 10.0 * ratio,
+        reference_ns_per_ray: 10.0,
+        precision: "f64".into(),
+        device: "cpu".into(),
+        escalation_rate: None,
+        runs,
+        runs_set_aside: 0,
+        run_ratios: if runs > 1 {
+            vec![ratio; runs as usize]
+        } else {
+            Vec::new()
+        },
+        ratio_ci_between: between,
+        run_spread: None,
+    }];
+    r
+}
+
+/// Issue 29: where both files have between-run intervals, `compare` judges by them. A
+/// ratio 15 % slower whose within-run intervals are disjoint but whose between-run
+/// intervals overlap is noise, not a regression; disjoint between-run intervals are one.
+/// A file without them (one run, or from before `--runs`) falls back to the within-run
+/// intervals, and the report says how many runs stood behind each side.
+#[test]
+fn between_run_intervals_decide_where_both_files_have_them() {
+    let old = with_ratio(1.0, [0.99, 1.01], Some([0.90, 1.11]), 3);
+    let new = with_ratio(1.15, [1.14, 1.16], Some([1.05, 1.26]), 3);
+    let r = compare(&old, &new, 0.1);
+    assert_eq!(r.regressions(), 0, "{r:?}");
+    let row = r.rows.iter().find(|x| x.section == "ratio").unwrap();
+    assert_eq!(row.flags, ["slower, intervals overlap (noise)"], "{row:?}");
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("old file 3 runs, new file 3 runs")
+                && n.contains("by the between-run intervals")),
+        "{:?}",
+        r.notes
+    );
+
+    // The same change with between-run intervals apart: a regression, saying which.
+    let apart = with_ratio(1.15, [1.14, 1.16], Some([1.12, 1.18]), 3);
+    let r = compare(&old, &apart, 0.1);
+    assert_eq!(r.regressions(), 1, "{r:?}");
+    let row = r.rows.iter().find(|x| x.section == "ratio").unwrap();
+    assert!(
+        row.flags[0].contains("between-run intervals disjoint (3 vs 3 runs)"),
+        "{row:?}"
+    );
+
+    // An old file of one run: the within-run intervals decide, and the note says why.
+    let single = with_ratio(1.0, [0.99, 1.01], None, 1);
+    let r = compare(&single, &new, 0.1);
+    assert_eq!(r.regressions(), 1, "{r:?}");
+    assert!(
+        r.notes
+            .iter()
+            .any(|n| n.contains("old file 1 run, new file 3 runs")
+                && n.contains("the old file lacks between-run intervals")),
+        "{:?}",
+        r.notes
+    );
+
+    // A record written before the fields existed reads as one run with no between-run
+    // interval; a single-run record writes neither the run ratios nor the interval.
+    let mut json = serde_json::to_value(&single.ratio[0]).unwrap();
+    assert!(json.get("run_ratios").is_none() && json.get("ratio_ci_between").is_none());
+    json.as_object_mut().unwrap().remove("runs");
+    let back: RatioRecord = serde_json::from_value(json).unwrap();
+    assert_eq!(back, single.ratio[0]);
+
+    // Through the CLI: the note is printed.
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    old.save(&a).unwrap();
+    new.save(&b).unwrap();
+    let (code, stdout) = cli_compare(&a, &b);
+    assert_eq!(code, 0, "{stdout}");
+    assert!(
+        stdout.contains("old file 3 runs, new file 3 runs"),
+        "{stdout}"
+    );
+}
