@@ -603,9 +603,6 @@ fn different_machines_are_said_first_and_their_timings_decide_nothing() {
     assert!(!out.contains("WARNING"), "{out}");
 }
 
-/// Issue 29: the report's first line is never blank (`compare | head -1`), and a key longer
-/// than the default column keeps the columns aligned.
-
 /// The comparison of other kinds of files (f32-check, estimate-only) and of between-run
 /// intervals: in a module of its own, to keep each file short.
 #[path = "results_compare/kinds_and_intervals.rs"]

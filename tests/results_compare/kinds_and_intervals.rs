@@ -3,6 +3,8 @@
 
 use super::*;
 
+/// Issue 29: the report's first line is never blank (`compare | head -1`), and a key longer
+/// than the default column keeps the columns aligned.
 #[test]
 fn first_line_is_not_blank_and_long_keys_stay_aligned() {
     let dir = tempfile::tempdir().unwrap();
