@@ -56,9 +56,10 @@ use std::hint::black_box;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::SystemTime;
+use support::batch::{BATCH_GROUPS, BATCH_TIMED, BatchCase, time_batch_cull};
 use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
 use torus_cull::Named;
-use torus_cull::batch::{BatchCull, Dispatch, KeepMask, Lines, Wavefront, cull_batch};
+use torus_cull::batch::{Dispatch, Lines, Wavefront};
 use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
 use torus_cull_lab::measure::{self, LabeledBatch};
 use torus_cull_lab::oracle::OracleClass;
@@ -105,75 +106,6 @@ impl CullVisitor for TimeCull<'_> {
                 })
             });
     }
-}
-
-/// The culls timed in batch mode: the baseline and the five the wavefront model is
-/// about (the branch-free classics and the three new quadric/discriminant culls).
-const BATCH_TIMED: [BatchCull; 6] = [
-    BatchCull::NoCull,
-    BatchCull::Cychosz,
-    BatchCull::Skala,
-    BatchCull::Ellipsoid,
-    BatchCull::Quadric,
-    BatchCull::Discriminant,
-];
-
-/// The criterion groups of batch mode, each `<group>-<case>`, per cull of [`BATCH_TIMED`].
-const BATCH_GROUPS: [&str; 3] = ["batch_cull_ns", "batch_total_ns", "batch_f32_total_ns"];
-
-/// One case's batch at one ν, for batch mode.
-struct BatchCase<'a> {
-    case: Case,
-    nu: f64,
-    torus: &'a Torus,
-    rays: &'a [Ray],
-    lines: &'a Lines,
-}
-
-/// Times one cull on one batch in batch mode: `batch_cull_ns` (the SIMD cull over the
-/// structure-of-arrays lines, into a keep mask), `batch_total_ns` (the wavefront on
-/// world rays: lines, cull, compaction, exact intersection on lanes, hits) and
-/// `batch_f32_total_ns` (the same through the certified f32 path).
-fn time_batch_cull(c: &mut Criterion, dispatch: &Dispatch, cull: BatchCull, on: &BatchCase) {
-    let BatchCase {
-        case,
-        nu,
-        torus,
-        rays,
-        lines,
-    } = *on;
-    let bounds = torus.bounds();
-    let id = BenchmarkId::new(cull.name(), nu);
-    let mut keep = KeepMask::new();
-    c.benchmark_group(format!("batch_cull_ns-{case}"))
-        .bench_with_input(id.clone(), lines, |b, lines| {
-            b.iter(|| {
-                cull_batch(dispatch, cull, bounds, black_box(lines), &mut keep);
-                black_box(&keep);
-            })
-        });
-    let mut wavefront = Wavefront::new();
-    let mut hits = Vec::new();
-    c.benchmark_group(format!("batch_total_ns-{case}"))
-        .bench_with_input(id.clone(), rays, |b, rays| {
-            b.iter(|| {
-                black_box(wavefront.intersect(dispatch, cull, torus, black_box(rays), &mut hits));
-                black_box(&hits);
-            })
-        });
-    c.benchmark_group(format!("batch_f32_total_ns-{case}"))
-        .bench_with_input(id, rays, |b, rays| {
-            b.iter(|| {
-                black_box(wavefront.intersect_f32(
-                    dispatch,
-                    cull,
-                    torus,
-                    black_box(rays),
-                    &mut hits,
-                ));
-                black_box(&hits);
-            })
-        });
 }
 
 fn main() -> ExitCode {

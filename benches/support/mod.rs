@@ -1,6 +1,7 @@
 //! Shared bench plumbing: size presets, reading criterion's estimates, the solver duel.
 #![allow(dead_code, reason = "shared by the bench targets, each using a part")]
 
+pub mod batch;
 pub mod bvh;
 pub mod solver;
 
