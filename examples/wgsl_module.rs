@@ -16,7 +16,7 @@
 //! (`torus_cull::gpu::wgsl_finish_module`) and finishes the escalated rays in the same
 //! dispatch: `torus_intersect`, then `torus_finish_f64` where `torus_finish_wanted` says
 //! so; the host reads both answers (`PreparedRay::finish_with_device`) and finishes only
-//! what the device handed back. tests/wgsl_module.rs runs this file's functions.
+//! what the device handed back. tests/gpu/wgsl_module.rs runs this file's functions.
 
 use glam::Vec3;
 use std::sync::mpsc;

@@ -1,6 +1,6 @@
 //! The solver suite: each line family's torus quartics with the oracle's reference roots,
 //! and how a solver's nearest root is scored against them. `cargo bench` (speed and
-//! accuracy per solver) and `tests/batch_solve.rs` (the lane solver) use the same cases
+//! accuracy per solver) and `tests/batch/batch_solve.rs` (the lane solver) use the same cases
 //! and the same count.
 
 use crate::oracle::{OracleClass, Query, classify_line, reference_roots};

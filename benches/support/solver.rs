@@ -7,7 +7,7 @@
 //! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking, and
 //! `polycool` 0.4 (Yuksel's monotone pieces) by its roots in `[lo, B]`.
 //! Accuracy is counted on that nearest root by [`NearestScore`], the count
-//! `tests/batch_solve.rs` uses too.
+//! `tests/batch/batch_solve.rs` uses too.
 
 use super::{BenchConfig, read_estimate};
 use criterion::{BenchmarkId, Criterion};

@@ -16,7 +16,7 @@ pub type RaySet = (Torus, Vec<Ray>);
 
 /// |t − t_ref| / max(|t_ref|, (R + r)/|d|) allowed between a device-finished hit (its t
 /// rounded to f32, as the CPU's f64 path rounds it) and the oracle's first root, or the
-/// CPU's f64 answer: tests/intersect_vs_oracle.rs's bound for the CPU's f64 path.
+/// CPU's f64 answer: tests/oracle/intersect_vs_oracle.rs's bound for the CPU's f64 path.
 pub const DEVICE_T_TOLERANCE_REL: f64 = 1.2e-7;
 
 /// The major radii every adversarial torus is drawn at: tiny, unit and large.

@@ -9,7 +9,7 @@ use super::*;
 /// on-surface rule, through the kernel (one torus per ray, so one dispatch each, 100 rays
 /// a family to keep lavapipe's dispatches within CI's time): the certified verdicts miss
 /// no hit, invent none and put no t outside the tolerance (escalated rays are the f64
-/// path's, checked in tests/secondary_rays.rs).
+/// path's, checked in tests/oracle/secondary_rays.rs).
 #[test]
 fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
     use torus_cull_lab::f32_check::{Answer, Labeled, families, tally};

@@ -3,7 +3,7 @@
 //! There is nothing to mirror here any more: the kernel that [`crate::Cull::keeps`] runs
 //! at `pulp::Scalar` is the kernel this module runs at the dispatch level, so each batch
 //! verdict is the scalar verdict, bit for bit (see `src/num/lanes.rs` for why the
-//! arithmetic agrees, and `tests/batch.rs` for the check at every dispatch level). What
+//! arithmetic agrees, and `tests/batch/batch.rs` for the check at every dispatch level). What
 //! is left is the loop over blocks of lines, inside pulp's `#[target_feature]` context.
 
 use super::lines::{BLOCK, Lines};

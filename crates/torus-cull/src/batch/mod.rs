@@ -11,7 +11,7 @@
 //! * [`cull_batch`]: one cull over every line, into a [`KeepMask`]. The culls with a batch
 //!   form are [`BatchCull`] ([`crate::CullKind::batched`] converts). Each cull is written
 //!   once in [`crate::cull`], generic over the lane width; the scalar cull is the same
-//!   kernel at width 1, so the verdicts are bit-identical (`tests/batch.rs` checks it at
+//!   kernel at width 1, so the verdicts are bit-identical (`tests/batch/batch.rs` checks it at
 //!   every dispatch level).
 //! * [`Dispatch`] and [`Isa`]: the instruction set, detected at run time (AVX-512, AVX2,
 //!   NEON, or the scalar fallback) and recorded in `meta.isa`; `TORUS_CULL_ISA` forces a

@@ -10,7 +10,7 @@
 //! careful paths (a near-double root of the resolvent, or a factor whose discriminant is
 //! within rounding of zero: tangent lines) are flagged and solved by the scalar solver
 //! afterwards, so the accuracy is the scalar solver's: 0 missed and 0 spurious roots
-//! against the oracle on the solver families (checked in `tests/batch_solve.rs`).
+//! against the oracle on the solver families (checked in `tests/batch/batch_solve.rs`).
 //!
 //! The roots are not bit-identical to the scalar solver's, because the driver differs
 //! where a lane cannot branch: every lane's resolvent root gets the two Newton steps

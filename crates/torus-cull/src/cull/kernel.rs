@@ -7,7 +7,7 @@
 //! cull ([`keeps_scalar`], what every [`Cull::keeps`] calls), and instantiated at AVX2,
 //! AVX-512 or NEON it is the batch cull of [`crate::batch::cull_batch`]. The two agree bit
 //! for bit by construction: the same operations in the same order, no fused multiply-add
-//! (see `src/num/lanes.rs`); `tests/batch.rs` checks it at every dispatch level.
+//! (see `src/num/lanes.rs`); `tests/batch/batch.rs` checks it at every dispatch level.
 
 use super::CullBounds;
 use crate::num::M32s;

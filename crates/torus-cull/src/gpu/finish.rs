@@ -16,7 +16,7 @@
 //! rounding; the CPU's is a fit and one Halley step, also below rounding); the device
 //! may contract `a·b + c` into an fma; infinities are replaced by finite sentinels
 //! (WGSL may assume there are none). So the answers agree with the CPU's to rounding,
-//! not to the bit; tests/gpu.rs checks them against the CPU's f64 path and the oracle.
+//! not to the bit; tests/gpu/gpu.rs checks them against the CPU's f64 path and the oracle.
 //!
 //! **Rays from a surface point** ([`crate::Ray::from_surface`]) take the CPU's
 //! `intersect/from_surface.rs` path where the origin is within its reach of the surface:

@@ -297,7 +297,7 @@ fn intersect_reduced<const CHECKED: bool>(
 /// origin rounded to the inside): the nearest root at or after `t_min` is where the ray
 /// *leaves* the solid, and that is the hit, with the outward normal there (pointing along
 /// the ray). A renderer that wants to skip the surface its ray starts on sets `t_min` to a
-/// small ε. `tests/intersect_vs_oracle.rs` checks it.
+/// small ε. `tests/oracle/intersect_vs_oracle.rs` checks it.
 ///
 /// ```
 /// use glam::DVec3;

@@ -7,7 +7,7 @@
 //! multiply and an add behind the programmer's back, and neither does pulp unless asked
 //! (`mul_add`), which these wrappers never do. So a lane that evaluates the scalar cull's
 //! expression tree in the same order gets the same bits, and the same verdict; the tests
-//! in `tests/batch.rs` check it on every line at every dispatch level.
+//! in `tests/batch/batch.rs` check it on every line at every dispatch level.
 //!
 //! Two kinds of `min`/`max` appear in the scalar culls and are kept apart here:
 //! glam's `Vec3::min`/`max`/`min_element`/`max_element` are `if a < b { a } else { b }`

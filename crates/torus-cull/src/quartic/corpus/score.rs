@@ -1,6 +1,6 @@
 //! How a solver's roots are scored against a corpus case's reference roots (see the
 //! module docs of `super`). Self-contained (its own Horner), so that the lab's
-//! `tests/quartic_corpus_peers.rs` scores the peer crates with the same rules.
+//! `tests/solver/quartic_corpus_peers.rs` scores the peer crates with the same rules.
 
 #![allow(
     dead_code,

@@ -11,7 +11,7 @@
 //! beside the f32 module: it validates with naga's `FLOAT64` (and not without), and where
 //! the adapter offers `SHADER_F64` (lavapipe does) the shader, which calls
 //! `torus_intersect` and then `torus_finish_f64` on the rays it does not prove, gives on
-//! tests/gpu.rs's adversarial families (the hole at ν = 1.01, grazing rays at every ν,
+//! tests/gpu/gpu.rs's adversarial families (the hole at ν = 1.01, grazing rays at every ν,
 //! near and 10⁵·(R + r) away, lines hugging the hole's edge and tangent to the special
 //! circles at ±10⁻⁶·r, secondary rays from hit points) the library's
 //! `intersect_finished_where` answers: the same hit or miss on every ray, 0 missed and 0
@@ -20,13 +20,11 @@
 
 #![cfg(feature = "gpu")]
 
-#[path = "../examples/wgsl_module.rs"]
+#[path = "../../examples/wgsl_module.rs"]
 #[allow(dead_code)]
 mod example;
 
-mod common;
-
-use common::adversarial::{DEVICE_T_TOLERANCE_REL, escalating_families};
+use crate::common::adversarial::{DEVICE_T_TOLERANCE_REL, escalating_families};
 use example::{
     Renderer, combined_shader, combined_shader_f64, compare, compare_f64, example_rays,
     example_torus, prepare_both, validate, validate_f64,
@@ -45,7 +43,7 @@ fn kernel() -> Option<GpuIntersector> {
     match GpuIntersector::new() {
         Ok(kernel) => Some(kernel),
         Err(e) => {
-            common::no_adapter(&e.to_string());
+            crate::common::no_adapter(&e.to_string());
             None
         }
     }
@@ -97,7 +95,7 @@ fn the_combined_shader_agrees_with_the_f64_path_on_the_adapter() {
         Ok(r) => r,
         Err(why) => {
             // Panics under CI=true: CI must run the shader.
-            common::no_adapter(&why);
+            crate::common::no_adapter(&why);
             return;
         }
     };
@@ -202,7 +200,7 @@ fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
         Ok(r) => r,
         Err(why) => {
             // Panics under CI=true: CI must run the shader.
-            common::no_adapter(&why);
+            crate::common::no_adapter(&why);
             return;
         }
     };

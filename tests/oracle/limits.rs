@@ -5,9 +5,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{family, pairs, pushed_back};
+use crate::common::{family, pairs, pushed_back};
 use glam::Vec3;
 use torus_cull::{
     CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus, TorusError,

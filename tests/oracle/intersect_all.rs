@@ -16,9 +16,7 @@
 //! comes within the band of a tangency (the oracle's class over its neighbourhood is
 //! ambiguous, or an oracle root there is not robust): f64 cannot decide those.
 
-mod common;
-
-use common::{pairs, pushed_back};
+use crate::common::{pairs, pushed_back};
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -297,7 +295,7 @@ impl Tally {
             (None, None) => true,
             // intersect skips the last Newton step: on a line with a tangency elsewhere
             // (a near-double resolvent root) its root is off by up to 2e-9·size, within
-            // its own stated accuracy (tests/intersect_vs_oracle.rs); the all-roots path
+            // its own stated accuracy (tests/oracle/intersect_vs_oracle.rs); the all-roots path
             // polishes it.
             (Some(a), Some(b)) => {
                 self.worst_vs_intersect = self.worst_vs_intersect.max((a - b).abs() / size);
@@ -568,7 +566,7 @@ fn rays_from_a_surface_point() {
 
 /// The window around `t = 0` in which the origin's own root lies: δ/|cos θ₀| (δ the
 /// distance from the surface of the query's origin, moved onto it), with 1e-11·(R + r) for
-/// the oracle, and the band a tangency needs to clear (as tests/secondary_rays.rs).
+/// the oracle, and the band a tangency needs to clear (as tests/oracle/secondary_rays.rs).
 fn own_window(torus: &Torus, q: &Query) -> f64 {
     let size = torus.outer_radius() as f64;
     let len = q.d.length();

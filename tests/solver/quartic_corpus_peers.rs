@@ -5,9 +5,9 @@
 //! stand beside ours. Printed with `--nocapture`; ours must be clean (as the library's
 //! tests assert), the peers' counts are reported, not asserted.
 
-#[path = "../crates/torus-cull/src/quartic/corpus/cases.rs"]
+#[path = "../../crates/torus-cull/src/quartic/corpus/cases.rs"]
 mod cases;
-#[path = "../crates/torus-cull/src/quartic/corpus/score.rs"]
+#[path = "../../crates/torus-cull/src/quartic/corpus/score.rs"]
 mod score;
 
 use cases::CASES;

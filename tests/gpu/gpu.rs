@@ -14,10 +14,10 @@
 
 #![cfg(feature = "gpu")]
 
-mod common;
-
-use common::adversarial::{DEVICE_T_TOLERANCE_REL, WIDE_NUS, edge_sets, escalating_families};
-use common::{family, pairs, pushed_back};
+use crate::common::adversarial::{
+    DEVICE_T_TOLERANCE_REL, WIDE_NUS, edge_sets, escalating_families,
+};
+use crate::common::{family, pairs, pushed_back};
 use glam::Vec3;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
@@ -52,7 +52,7 @@ fn gpu() -> Option<&'static GpuIntersector> {
         }
         Err(GpuError::NoAdapter(why)) => {
             // Panics under CI=true: CI must run the kernel.
-            common::no_adapter(&why.to_string());
+            crate::common::no_adapter(&why.to_string());
             None
         }
         Err(e) => panic!("GPU adapter found but unusable: {e}"),
@@ -698,7 +698,7 @@ fn secondary_rays_from_hits_are_proved_past_their_origin_or_finished_on_the_host
 }
 
 /// `eval --exact gpu` takes the optional columns t_min, t_max, on_surface as the CPU
-/// modes do (tests/eval_cli.rs): the same labels and answers, every on-surface row
+/// modes do (tests/cli/eval_cli.rs): the same labels and answers, every on-surface row
 /// escalated to the host, and a bad value named by row and column before the adapter runs.
 #[test]
 fn eval_exact_gpu_takes_range_and_on_surface_columns() {
@@ -752,7 +752,7 @@ fn eval_exact_gpu_takes_range_and_on_surface_columns() {
     );
 }
 
-#[path = "gpu/culls.rs"]
+#[path = "culls.rs"]
 mod culls;
-#[path = "gpu/finish.rs"]
+#[path = "finish.rs"]
 mod finish;

@@ -4,9 +4,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{NUS, family, pairs};
+use crate::common::{NUS, family, pairs};
 use glam::Vec3;
 use torus_cull::Named;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray, Torus};

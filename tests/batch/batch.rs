@@ -21,9 +21,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{NUS, family, pushed_back};
+use crate::common::{NUS, family, pushed_back};
 use glam::{DMat3, DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;

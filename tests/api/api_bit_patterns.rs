@@ -236,7 +236,7 @@ proptest! {
 
     /// Every cull's raw `keeps` on any bit patterns of origin and direction (not through a
     /// validated ray: a renderer may pass a raw `Vec3`): no panic, in release or debug
-    /// (`RUST_MIN_STACK=268435456 cargo test --test api_bit_patterns raw_cull`: the
+    /// (`RUST_MIN_STACK=268435456 cargo test --test api raw_cull`: the
     /// unoptimized lane code needs a large stack). pulp's integer lanes wrap rather than
     /// panic, so the rescaling's exponent is clamped in the code (an infinite component
     /// used to make the factor 2^(254 − 255 wrapped) = −∞); a non-finite line is then

@@ -8,9 +8,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{family, pushed_back};
+use crate::common::{family, pushed_back};
 use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Isa, Wavefront};
 use torus_cull::{CullKind, CullVisitor, Hit, Named, Ray, Torus, intersect_culled};
 use torus_cull_lab::oracle::{OracleClass, classify};

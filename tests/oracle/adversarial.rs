@@ -14,8 +14,6 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
 use glam::{DMat3, DVec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;

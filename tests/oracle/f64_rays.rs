@@ -10,9 +10,7 @@
 
 // Every check here runs against the harness's oracle.
 
-mod common;
-
-use common::{NUS, family, pairs};
+use crate::common::{NUS, family, pairs};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;

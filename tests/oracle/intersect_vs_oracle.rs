@@ -2,9 +2,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{NUS, family, pairs, pushed_back};
+use crate::common::{NUS, family, pairs, pushed_back};
 use torus_cull::Named;
 use torus_cull::intersect;
 use torus_cull_lab::oracle::{OracleClass, Query, classify, margin_by_sampling, reference_roots};
@@ -103,7 +101,7 @@ fn oracle_methods_agree_outside_the_band() {
 /// once made the closed form return the wrong one, giving spurious double roots (the BVH
 /// bench's brute force found 3 in 16 million pairs). These lines land within f32 rounding
 /// of that set, not on it, so they cover the region rather than pin the bug: the rays that
-/// failed are pinned in `tests/bvh.rs`, the coefficients in `quartic.rs`'s tests.
+/// failed are pinned in `tests/batch/bvh.rs`, the coefficients in `quartic.rs`'s tests.
 #[test]
 fn degenerate_far_lines_never_hit() {
     use glam::DVec3;

@@ -9,9 +9,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-mod common;
-
-use common::{NUS, family, pairs, pushed_back};
+use crate::common::{NUS, family, pairs, pushed_back};
 use torus_cull::{CullKind, Ray, Torus};
 use torus_cull_lab::oracle::{OracleClass, classify_line};
 use torus_cull_lab::workload::Case;

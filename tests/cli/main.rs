@@ -1,0 +1,17 @@
+//! The `torus-cull` command end to end: run, time, eval, f32-check, compare, intervals,
+//! their files and their errors.
+//!
+//! One test crate (one link step); each module was its own crate before.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod eval_cli;
+mod f32_check;
+mod issue36_cli;
+mod nothing_lost_cli;
+mod outputs_cli;
+mod results_compare;
+mod results_index;
+mod run_cli;
+mod time_cli;
