@@ -377,6 +377,12 @@ fn surface_point(rng: &mut Pcg64, big: f64, r: f64) -> (DVec3, DVec3) {
         }
     };
     let (radial, _) = random_azimuth(rng);
+    tube_point(radial, theta, big, r)
+}
+
+/// The canonical-frame surface point at angle θ around the tube (0 on the outer equator)
+/// in the meridian plane of the unit horizontal `radial`, and the outward normal there.
+pub fn tube_point(radial: DVec3, theta: f64, big: f64, r: f64) -> (DVec3, DVec3) {
     let (st, ct) = theta.sin_cos();
     (
         radial * (big + r * ct) + DVec3::Y * (r * st),
@@ -384,15 +390,20 @@ fn surface_point(rng: &mut Pcg64, big: f64, r: f64) -> (DVec3, DVec3) {
     )
 }
 
+/// A saddle ray's direction from the canonical-frame surface point `p` with outward
+/// normal `n`: along the ring (`sign` picks the way), turned by `turn` toward the
+/// meridian in the tangent plane, then `alpha` above it.
+pub fn saddle_direction(p: DVec3, n: DVec3, alpha: f64, turn: f64, sign: f64) -> DVec3 {
+    let ring = DVec3::Y.cross(DVec3::new(p.x, 0.0, p.z)).normalize() * sign;
+    let meridian = n.cross(ring);
+    (ring * turn.cos() + meridian * turn.sin()) * alpha.cos() + n * alpha.sin()
+}
+
 /// A point of the inner half of the tube (cos θ < 0, θ uniform) and its outward normal.
 fn saddle_point(rng: &mut Pcg64, big: f64, r: f64) -> (DVec3, DVec3) {
     let theta = rng.random_range(0.5..1.5) * std::f64::consts::PI;
     let (radial, _) = random_azimuth(rng);
-    let (st, ct) = theta.sin_cos();
-    (
-        radial * (big + r * ct) + DVec3::Y * (r * st),
-        radial * ct + DVec3::Y * st,
-    )
+    tube_point(radial, theta, big, r)
 }
 
 /// A spawned secondary ray ([`Ray::from_surface`]) from a surface point of `torus`
@@ -426,9 +437,7 @@ fn spawned_ray(rng: &mut Pcg64, torus: &Torus, aim: SpawnAim, eps: f64) -> Optio
             } else {
                 1.0
             };
-            let ring = DVec3::Y.cross(DVec3::new(p.x, 0.0, p.z)).normalize() * sign;
-            let meridian = n.cross(ring);
-            (ring * turn.cos() + meridian * turn.sin()) * alpha.cos() + n * alpha.sin()
+            saddle_direction(p, n, alpha, turn, sign)
         }
         SpawnAim::Across => {
             let (q, _) = surface_point(rng, big, r);

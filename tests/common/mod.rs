@@ -1,7 +1,10 @@
 //! Line families shared by the integration tests.
 #![allow(dead_code, reason = "shared by several test crates, each using a part")]
 
-use torus_cull::{Ray, Torus};
+use torus_cull::{DRay, Ray, Torus};
+use torus_cull_lab::oracle::{
+    OracleClass, Query, classify_from_surface, first_crossing_from_surface,
+};
 use torus_cull_lab::workload::{Batch, Case, Pose, generate};
 
 pub mod adversarial;
@@ -55,4 +58,18 @@ pub fn pairs(batches: &[Batch]) -> impl Iterator<Item = (&Torus, &Ray)> {
     batches
         .iter()
         .flat_map(|b| b.rays.iter().map(move |r| (&b.torus, r)))
+}
+
+/// What the oracle expects of a ray from a surface point (its on-surface rule,
+/// `classify_from_surface`: the origin moved onto the surface, its own crossing
+/// excluded): `Some(next)` (the first crossing after the origin's own, or `None`), or
+/// `None` where the input cannot decide (a tangent at the origin, a crossing not
+/// separable from it, a graze within the origin's own offset).
+pub fn from_surface_reference(torus: &Torus, ray: &DRay) -> Option<Option<f64>> {
+    let query = Query::dray(torus, ray);
+    match classify_from_surface(&query).class {
+        OracleClass::Ambiguous => None,
+        OracleClass::Miss => Some(None),
+        OracleClass::Hit => Some(Some(first_crossing_from_surface(&query)?)),
+    }
 }

@@ -17,12 +17,11 @@
 //! directions agree (the class, and `t` within their spread); the others are counted as
 //! undecided, never as right.
 
+use crate::common::from_surface_reference;
 use glam::{DVec3, Vec3};
 use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 use torus_cull::{DRay, Ray, Torus, intersect, intersect_all, intersect_f32, occluded};
-use torus_cull_lab::oracle::{
-    OracleClass, Query, classify_from_surface, first_crossing_from_surface,
-};
+use torus_cull_lab::f32_check::families::{saddle_direction, tube_point};
 
 const NUS: [f64; 5] = [1.01, 1.5, 4.0, 32.0, 1000.0];
 const MAJORS: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -46,12 +45,8 @@ fn saddle_ray(
     alpha: f64,
 ) -> (DVec3, DVec3, DVec3) {
     let (big, r) = (torus.major_radius_f64(), torus.minor_radius_f64());
-    let radial = DVec3::new(phi.cos(), 0.0, phi.sin());
-    let n = radial * theta.cos() + DVec3::Y * theta.sin();
-    let p = radial * (big + r * theta.cos()) + DVec3::Y * (r * theta.sin());
-    let ring = DVec3::Y.cross(radial) * sign;
-    let meridian = n.cross(ring);
-    let d = (ring * turn.cos() + meridian * turn.sin()) * alpha.cos() + n * alpha.sin();
+    let (p, n) = tube_point(DVec3::new(phi.cos(), 0.0, phi.sin()), theta, big, r);
+    let d = saddle_direction(p, n, alpha, turn, sign);
     let world = torus.to_local_rotation_f64().transpose();
     (world * p + torus.center_f64(), world * d, world * n)
 }
@@ -59,13 +54,7 @@ fn saddle_ray(
 /// The reference from a surface point `p` along `d`: `Some(t of the next crossing)` or
 /// `Some(None)` for none, `None` undecided.
 fn reference(torus: &Torus, p: DVec3, d: DVec3) -> Option<Option<f64>> {
-    let ray = DRay::from_surface(p, d).ok()?;
-    let query = Query::dray(torus, &ray);
-    match classify_from_surface(&query).class {
-        OracleClass::Ambiguous => None,
-        OracleClass::Miss => Some(None),
-        OracleClass::Hit => Some(Some(first_crossing_from_surface(&query)?)),
-    }
+    from_surface_reference(torus, &DRay::from_surface(p, d).ok()?)
 }
 
 /// The references from `p` and from `p` moved by ±τ along both tangent directions: the

@@ -12,6 +12,7 @@
 //! before and just after the next crossing, and literal rays from the same points with
 //! `t_min = 10⁻⁴·r`.
 
+use crate::common::from_surface_reference;
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -20,9 +21,7 @@ use torus_cull::{
     CullKind, DRay, Ray, RayCast, SkalaCull, Torus, intersect, intersect_f32, intersect_f32_culled,
     occluded, occluded_f32, occluded_f32_culled,
 };
-use torus_cull_lab::oracle::{
-    OracleClass, Query, classify_from_surface, first_crossing_from_surface,
-};
+use torus_cull_lab::oracle::{OracleClass, Query};
 use torus_cull_lab::workload::unit_vector;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -110,20 +109,6 @@ fn shift_bound(torus: &Torus, ray: &DRay, t: f64) -> f64 {
     4.0 * delta * (rho0 / rho) / cos / len
 }
 
-/// What the oracle expects of a ray from a surface point (its on-surface rule,
-/// `classify_from_surface`: the origin moved onto the surface, its own crossing
-/// excluded): `Some(next)` (the first crossing after the origin's own, or `None`), or
-/// `None` where the input cannot decide (a tangent at the origin, a crossing not
-/// separable from it, a graze within the origin's own offset).
-fn expected(torus: &Torus, ray: &DRay) -> Option<Option<f64>> {
-    let query = Query::dray(torus, ray);
-    match classify_from_surface(&query).class {
-        OracleClass::Ambiguous => None,
-        OracleClass::Miss => Some(None),
-        OracleClass::Hit => Some(Some(first_crossing_from_surface(&query)?)),
-    }
-}
-
 #[derive(Default, Debug)]
 struct Tally {
     checked: usize,
@@ -187,7 +172,7 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
                         continue;
                     };
                     tally.checked += 1;
-                    let Some(want) = expected(&torus, &secondary) else {
+                    let Some(want) = from_surface_reference(&torus, &secondary) else {
                         tally.undecidable += 1;
                         continue;
                     };
@@ -212,7 +197,8 @@ fn secondary_rays_never_hit_their_origin_and_never_miss_a_rehit() {
                     let Ok(secondary32) = torus.spawn(&primary32, hit32.t, d.as_vec3()) else {
                         continue;
                     };
-                    let Some(want32) = expected(&torus, &DRay::from(secondary32)) else {
+                    let Some(want32) = from_surface_reference(&torus, &DRay::from(secondary32))
+                    else {
                         tally.undecidable += 1;
                         continue;
                     };
@@ -379,7 +365,7 @@ fn cases(rng: &mut Pcg64, torus: &Torus, family: Family, count: usize) -> Vec<Ca
         let Ok(wide) = torus.spawn(&primary, hit.t, d) else {
             continue;
         };
-        let want = expected(torus, &wide);
+        let want = from_surface_reference(torus, &wide);
         let len = d.length();
         let bound = |ray: &DRay, want: Option<Option<f64>>| {
             want.flatten().map_or(0.0, |t| shift_bound(torus, ray, t))
@@ -388,7 +374,7 @@ fn cases(rng: &mut Pcg64, torus: &Torus, family: Family, count: usize) -> Vec<Ca
         let primary32 = Ray::new(from.as_vec3(), (p - from).as_vec3()).unwrap();
         let narrow = intersect(torus, &primary32).and_then(|hit32| {
             let ray = torus.spawn(&primary32, hit32.t, d.as_vec3()).ok()?;
-            let want32 = expected(torus, &DRay::from(ray));
+            let want32 = from_surface_reference(torus, &DRay::from(ray));
             let tol32 = 1e-9 * size / len
                 + want32.flatten().unwrap_or(0.0) * 1.2e-7
                 + bound(&DRay::from(ray), want32);
