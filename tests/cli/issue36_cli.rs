@@ -8,25 +8,11 @@
 // Every check here runs against the harness's CLI.
 #![cfg(unix)]
 
+use crate::support::{BIN, ROOT, stderr, torus_cull};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
-
-const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
-const ROOT: &str = env!("CARGO_MANIFEST_DIR");
-
-fn torus_cull(args: &[&str]) -> Output {
-    Command::new(BIN)
-        .args(args)
-        .current_dir(ROOT)
-        .output()
-        .expect("run torus-cull")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// Two cases at two ν, `rays` rays each.
 fn workload(dir: &Path, name: &str, rays: usize) -> PathBuf {

@@ -14,4 +14,5 @@ mod outputs_cli;
 mod results_compare;
 mod results_index;
 mod run_cli;
+mod support;
 mod time_cli;

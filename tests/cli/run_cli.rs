@@ -3,16 +3,9 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use std::process::{Command, Output};
+use crate::support::torus_cull as run;
+use std::process::Command;
 use torus_cull_lab::results::Results;
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run torus-cull")
-}
 
 #[test]
 fn quick_workload_writes_results_and_plots() {

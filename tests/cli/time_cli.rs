@@ -4,18 +4,11 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::support::torus_cull;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Command;
 use std::time::{Duration, Instant};
 use torus_cull_lab::results::Results;
-
-fn torus_cull(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run torus-cull")
-}
 
 /// Two cases at two ν, 200 rays each: seconds to time.
 fn tiny_workload(dir: &Path) -> String {
