@@ -75,6 +75,7 @@ pub use glam;
 pub mod batch;
 pub mod certified;
 pub mod cull;
+pub mod family;
 mod geometry;
 pub mod intersect;
 mod names;

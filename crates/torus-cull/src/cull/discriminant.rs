@@ -85,6 +85,10 @@ impl Cull for DiscriminantF64Cull {
         "discriminant_f64"
     }
 
+    fn shapes(&self) -> &'static [crate::cull::Shape] {
+        DiscriminantF64Cull::SHAPES
+    }
+
     #[inline(always)]
     fn keeps(&self, b: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
         let (o, d) = (origin.as_dvec3(), dir.as_dvec3());

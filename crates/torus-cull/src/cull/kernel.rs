@@ -9,7 +9,7 @@
 //! for bit by construction: the same operations in the same order, no fused multiply-add
 //! (see `src/num/lanes.rs`); `tests/batch/batch.rs` checks it at every dispatch level.
 
-use super::CullBounds;
+use super::{CullBounds, Shape};
 use crate::num::M32s;
 use crate::num::Vec3s;
 use glam::Vec3;
@@ -49,6 +49,15 @@ pub trait Cull {
     /// `true` to keep the line (run the quartic), `false` to reject it.
     #[must_use]
     fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool;
+
+    /// The shapes of the torus family this cull is proved conservative for (the table's
+    /// `shapes` column, [`crate::CullKind::shapes`]). A family member of another shape
+    /// ([`crate::family::Toroid`]) declines the cull and runs its exact intersection
+    /// alone. A cull outside the table accepts the ring torus only.
+    #[must_use]
+    fn shapes(&self) -> &'static [Shape] {
+        &[Shape::Ring]
+    }
 }
 
 /// Generic code that runs with a concrete cull type; see [`super::CullKind::visit`].
@@ -95,6 +104,10 @@ macro_rules! scalar_cull {
         impl $crate::cull::Cull for $cull {
             fn name(&self) -> &'static str {
                 $name
+            }
+
+            fn shapes(&self) -> &'static [$crate::cull::Shape] {
+                $cull::SHAPES
             }
 
             #[inline(always)]

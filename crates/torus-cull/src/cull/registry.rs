@@ -32,6 +32,10 @@ impl Cull for CullKind {
         Named::name(*self)
     }
 
+    fn shapes(&self) -> &'static [super::Shape] {
+        CullKind::shapes(*self)
+    }
+
     #[inline]
     fn keeps(&self, bounds: &CullBounds, origin: Vec3, dir: Vec3) -> bool {
         CullKind::keeps(*self, bounds, origin, dir)

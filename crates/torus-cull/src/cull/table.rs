@@ -19,25 +19,25 @@
 macro_rules! cull_table {
     ($then:ident) => {
         $then! {
-            NoCull "none" NoCull [lanes gpu] [Ring],
+            NoCull "none" NoCull [lanes gpu] [Ring Elliptic Spindle],
                 "No test: always run the quartic (the baseline), [`crate::NoCull`]; named `none`.";
-            Sphere "sphere" SphereCull [lanes gpu] [Ring],
+            Sphere "sphere" SphereCull [lanes gpu] [Ring Elliptic Spindle],
                 "Bounding sphere of radius R + r.";
-            Aabb "aabb" AabbCull [lanes gpu] [Ring],
+            Aabb "aabb" AabbCull [lanes gpu] [Ring Elliptic Spindle],
                 "The torus's box [−(R+r), R+r] × [−r, r] × [−(R+r), R+r].";
-            Cychosz "cychosz" CychoszCull [lanes gpu] [Ring],
+            Cychosz "cychosz" CychoszCull [lanes gpu] [Ring Elliptic Spindle],
                 "Cychosz (Graphics Gems II, 1991): sphere R + r, then the slab |y| ≤ r at the chord ends.";
-            ThickCylinder "thick_cylinder" ThickCylinderCull [lanes gpu] [Ring],
+            ThickCylinder "thick_cylinder" ThickCylinderCull [lanes gpu] [Ring Elliptic Spindle],
                 "The shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's `Test_Thick_Cylinder`).";
-            Skala "skala" SkalaCull [lanes gpu] [Ring],
+            Skala "skala" SkalaCull [lanes gpu] [Ring Elliptic Spindle],
                 "Skala's circle-based test, with the paper's misprints corrected.";
-            Ellipsoid "ellipsoid" EllipsoidCull [lanes gpu] [Ring],
+            Ellipsoid "ellipsoid" EllipsoidCull [lanes gpu] [Ring Elliptic Spindle],
                 "Cychosz with the sphere replaced by the outer ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².";
-            Quadric "quadric" QuadricCull [lanes gpu] [Ring],
+            Quadric "quadric" QuadricCull [lanes gpu] [Ring Elliptic Spindle],
                 "The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².";
-            Discriminant "discriminant" DiscriminantCull [lanes gpu] [Ring],
+            Discriminant "discriminant" DiscriminantCull [lanes gpu] [Ring Elliptic Spindle],
                 "The quartic's real-root classification (no root, no branch), in f32.";
-            DiscriminantF64 "discriminant_f64" DiscriminantF64Cull [] [Ring],
+            DiscriminantF64 "discriminant_f64" DiscriminantF64Cull [] [Ring Elliptic Spindle],
                 "The same classification evaluated in f64.";
         }
     };
@@ -50,6 +50,12 @@ pub(crate) use cull_table;
 pub enum Shape {
     /// The ring torus: a circular tube, R > r.
     Ring,
+    /// A ring torus with an elliptical tube (semi-axes a ≠ b, R > a): culled as the
+    /// circular torus (R, a) on the line with y scaled by a/b (`crate::family`).
+    Elliptic,
+    /// A horn or spindle torus (R ≤ a, either tube): the apple, culled as its circular
+    /// image (R, a), whose padded bounds hold the apple.
+    Spindle,
 }
 
 /// `CullKind` and `BatchCull`, their lists, names, conversions and dispatch, from the
@@ -120,6 +126,11 @@ macro_rules! define_culls {
                 }
             }
 
+            /// Whether this cull is proved conservative for `shape` ([`CullKind::shapes`]).
+            pub fn accepts(self, shape: Shape) -> bool {
+                self.shapes().contains(&shape)
+            }
+
             /// Whether this cull has a function in the GPU kernel.
             pub const fn has_gpu_form(self) -> bool {
                 match self {
@@ -127,6 +138,13 @@ macro_rules! define_culls {
                 }
             }
         }
+
+        $(
+            impl crate::cull::$ty {
+                /// The shapes of the torus family this cull accepts (its row's `shapes`).
+                pub const SHAPES: &'static [Shape] = &[$(Shape::$shape),*];
+            }
+        )*
 
         /// The registry by stable name: `"skala".parse::<CullKind>()`, `format!("{kind}")`.
         impl Named for CullKind {
@@ -265,7 +283,11 @@ mod tests {
             .collect();
         assert_eq!(batched, BATCHED.map(CullKind::from));
         for kind in CullKind::TIMED {
-            assert_eq!(kind.shapes(), &[Shape::Ring], "{kind}");
+            // Every cull runs on the elliptical tube's image line (crate::family).
+            assert!(
+                kind.accepts(Shape::Ring) && kind.accepts(Shape::Elliptic),
+                "{kind}"
+            );
             // Today every cull with a lane form has a GPU form, and only those.
             assert_eq!(kind.has_gpu_form(), kind.batched().is_some(), "{kind}");
         }

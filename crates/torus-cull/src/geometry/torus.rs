@@ -295,6 +295,46 @@ impl Torus {
         ))
     }
 
+    /// The circular image of a torus-family member (`crate::family::Toroid`): the same
+    /// construction as [`Torus::new`] (`f64_geometry` false) or [`Torus::new_f64`], without
+    /// the hole's rule, so R ≤ r (a horn or spindle) is built too. Only the family, which
+    /// answers R ≤ r with the apple's roots alone, may hold such a torus.
+    pub(crate) fn image(
+        center: DVec3,
+        axis: DVec3,
+        major_radius: f64,
+        minor_radius: f64,
+        f64_geometry: bool,
+    ) -> Result<Torus, TorusError> {
+        validate_image(center, axis, major_radius, minor_radius)?;
+        if !f64_geometry {
+            let (center, axis) = (center.as_vec3(), axis.as_vec3());
+            let axis = axis.as_dvec3().normalize().as_vec3();
+            let (major, minor) = (major_radius as f32, minor_radius as f32);
+            return Ok(Torus::build(
+                (center, center.as_dvec3()),
+                (axis, axis.as_dvec3().normalize()),
+                (major, f64::from(major)),
+                (minor, f64::from(minor)),
+                minor,
+            ));
+        }
+        let center_f32 = center.as_vec3();
+        if !center_f32.is_finite() {
+            return Err(TorusError::NonFiniteCenter(center_f32));
+        }
+        let unit = (axis / axis.abs().max_element()).normalize();
+        let major_f32 = major_radius as f32;
+        let minor_cull = round_up(minor_radius + (major_radius - f64::from(major_f32)).abs());
+        Ok(Torus::build(
+            (center_f32, center),
+            (unit.as_vec3(), unit),
+            (major_f32, major_radius),
+            (minor_radius as f32, minor_radius),
+            minor_cull,
+        ))
+    }
+
     /// The torus of validated values, each given as (f32 view, f64 value); `minor_cull`
     /// is the r the culls' bounds are built for.
     fn build(
@@ -657,6 +697,19 @@ impl Torus {
 
 /// Checks [`Torus::new`]'s rules on f64 values (f32 ones widened exactly).
 fn validate(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
+    let positive = |v: f64| v.is_finite() && v > 0.0;
+    if positive(major) && positive(minor) && major <= minor {
+        return Err(TorusError::NoHole {
+            major_radius: major as f32,
+            minor_radius: minor as f32,
+        });
+    }
+    validate_image(center, axis, major, minor)
+}
+
+/// [`validate`] without the hole: the rules of a torus-family member's circular image
+/// (`crate::family`), which refuses its own ratios.
+fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
     for (name, value) in [("major_radius", major), ("minor_radius", minor)] {
         if !(value.is_finite() && value > 0.0) {
             return Err(TorusError::BadRadius {
@@ -666,12 +719,6 @@ fn validate(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), To
         }
     }
     let (major_radius, minor_radius) = (major as f32, minor as f32);
-    if major <= minor {
-        return Err(TorusError::NoHole {
-            major_radius,
-            minor_radius,
-        });
-    }
     // In f64: R + r may overflow f32 while both radii are finite.
     if !(f64::from(MIN_OUTER_RADIUS)..=f64::from(MAX_OUTER_RADIUS)).contains(&(major + minor)) {
         return Err(TorusError::OutOfRange {

@@ -18,8 +18,9 @@
 
 use super::from_surface::{SurfaceCubic, cubic_roots, starts_on_the_surface};
 use super::reduce::{coefficients, foot_line, normal};
+use crate::geometry::Tube;
 use crate::geometry::ray::sealed::Scalar;
-use crate::num::{V3, sc};
+use crate::num::{Sc, V3, sc};
 use crate::quartic::solve_depressed_monic;
 use crate::{Precision, Ray, Torus};
 use glam::{DVec3, Vec3};
@@ -274,23 +275,69 @@ struct LineRoot {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> {
-    let tube = torus.tube();
-    let line = torus.line_to_local_f64(ray);
-    let (t_min, t_max) = ray.range_f64();
     let to_world = torus.to_local_rotation_f64().transpose();
+    let line = torus.line_to_local_f64(ray);
+    crossings_in_frame(ray, torus.tube(), line, Roots::All, |n| to_world * n)
+}
+
+/// Which of the quartic's roots are crossings of the surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Roots {
+    /// Every root: a ring torus (R > r), whose quartic is its surface.
+    All,
+    /// The apple's roots alone: a horn or spindle (R ≤ r), whose quartic also holds the
+    /// inner lemon `(ρ + R)² + y² = r²`, no surface of the solid ([`apple`]).
+    Apple,
+}
+
+/// [`intersect_all`] of `ray` on the torus-frame line `line` (f64) of the circular torus
+/// `tube`, its range the ray's; `to_world` takes a torus-frame outward normal to the
+/// world (a family member's image frame adds its y scale there: `crate::family`).
+pub(crate) fn crossings_in_frame<P: Precision>(
+    ray: &Ray<P>,
+    tube: &Tube,
+    line: (DVec3, DVec3),
+    roots_kept: Roots,
+    to_world: impl Fn(DVec3) -> DVec3,
+) -> Crossings<P> {
+    let (t_min, t_max) = ray.range_f64();
     let mut out = Crossings::none(ray);
     let mut emit = |t: f64, n: DVec3, passage: Passage| {
         let t = <P::Float as Scalar>::from_f64(t);
         if t.finite() && out.len < 4 {
             out.crossings[out.len] = Crossing {
                 t,
-                normal: P::from_dvec3(to_world * n),
+                normal: P::from_dvec3(to_world(n)),
                 passage,
             };
             out.len += 1;
         }
     };
-    let starts_inside = if ray.starts_on_surface() && starts_on_the_surface(tube, line.0) {
+    out.starts_inside = line_crossings(
+        tube,
+        line,
+        (t_min, t_max),
+        ray.starts_on_surface(),
+        roots_kept,
+        &mut emit,
+    );
+    out
+}
+
+/// The crossings of the torus-frame line `line` (f64) of the circular torus `tube` within
+/// `(t_min, t_max)`, in order, each handed to `emit` with its `t`, its torus-frame outward
+/// normal and its passage; returns whether the range starts inside the solid.
+/// `on_surface`: the ray is marked as starting on the surface (its own root divided out
+/// where its origin is one).
+pub(crate) fn line_crossings(
+    tube: &Tube,
+    line: (DVec3, DVec3),
+    (t_min, t_max): (f64, f64),
+    on_surface: bool,
+    roots_kept: Roots,
+    mut emit: impl FnMut(f64, DVec3, Passage),
+) -> bool {
+    if on_surface && starts_on_the_surface(tube, line.0) {
         let g = SurfaceCubic::new(tube, line);
         let (lo, hi) = g.v_range(t_min, t_max);
         let (cubic, n) = cubic_roots(g.a3, g.a2, g.a1);
@@ -306,8 +353,14 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
                 origin: false,
             };
         }
-        let roots = &mut roots[..=n];
+        let mut n = n + 1;
+        if roots_kept == Roots::Apple {
+            let at = |v: f64| g.line.p + g.line.dh * sc(g.own + v);
+            n = keep_apple(&mut roots[..n], |r| at(r.key), tube.k);
+        }
+        let roots = &mut roots[..n];
         roots.sort_by(|a, b| a.key.total_cmp(&b.key));
+        let point = |v: f64| g.line.p + g.line.dh * sc(g.own + v);
         // Past the origin only: v > 0, and v ≥ lo.
         let range = |v: f64| {
             if v <= 0.0 || v < lo {
@@ -318,21 +371,26 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
                 Place::After
             }
         };
-        walk(roots, range, |r, passage| {
-            emit(g.t_at(r.key), g.normal(tube, r.key), passage);
-        })
+        let emit = |r: &LineRoot, passage| emit(g.t_at(r.key), g.normal(tube, r.key), passage);
+        match roots_kept {
+            Roots::All => walk(roots, range, emit),
+            Roots::Apple => walk_by_side(roots, range, |v| in_apple(point(v), tube), emit),
+        }
     } else {
         let (o, d) = line;
         let line = foot_line(V3::from_dvec3(o), V3::from_dvec3(d), sc(tube.inv_major));
         // A line that misses the bounding sphere has no root: no solve.
         if line.chord_sq(sc(tube.outer)).v < 0.0 {
-            return Crossings::none(ray);
+            return false;
         }
         let (lo, hi) = line.u_range(sc(t_min), sc(t_max), sc(tube.inv_major));
         let (lo, hi) = (lo.v, hi.v);
         let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
         let found = solve_depressed_monic(c2.v, c1.v, c0.v);
-        let (roots, n) = pair_doubles(found.as_slice());
+        let (mut roots, mut n) = pair_doubles(found.as_slice());
+        if roots_kept == Roots::Apple {
+            n = keep_apple(&mut roots[..n], |r| line.p + line.dh * sc(r.key), tube.k);
+        }
         let range = |u: f64| {
             if u < lo {
                 Place::Before
@@ -342,7 +400,7 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
                 Place::After
             }
         };
-        walk(&roots[..n], range, |r, passage| {
+        let emit = |r: &LineRoot, passage| {
             let u = sc(r.key);
             let t = line.t_at(u, sc(tube.major)).v;
             emit(
@@ -350,10 +408,17 @@ pub fn intersect_all<P: Precision>(torus: &Torus, ray: &Ray<P>) -> Crossings<P> 
                 normal(line.p, line.dh, u, sc(tube.k)).to_dvec3(),
                 passage,
             );
-        })
-    };
-    out.starts_inside = starts_inside;
-    out
+        };
+        match roots_kept {
+            Roots::All => walk(&roots[..n], range, emit),
+            Roots::Apple => walk_by_side(
+                &roots[..n],
+                range,
+                |u| in_apple(line.p + line.dh * sc(u), tube),
+                emit,
+            ),
+        }
+    }
 }
 
 /// The sorted roots of the whole line (a double root given twice, as the solver gives
@@ -378,6 +443,87 @@ fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
     }
     (out, n)
 }
+
+/// Keeps the apple's roots of `roots` in place, in order, and returns how many: a root at
+/// the scaled point `x` (units of R) is the apple's where `s = |x|² + 1 − (r/R)² ≥ 0`.
+///
+/// On the quartic `s² = 4ρ²` (R = 1), and `s = 2ρ` on the apple `(ρ − 1)² + y² = rr²`,
+/// `s = −2ρ` on the lemon `(ρ + 1)² + y² = rr²`: the two meet only on the axis (ρ = 0),
+/// at the spindle's cusps. A double root there (`|s|` within [`CUSP`]) is an apple root
+/// and a lemon root merged: it is kept as one simple root, the apple's crossing.
+/// (OpenMC's sign test on its squared side is this `s`: docs/math.md §10.)
+fn keep_apple(roots: &mut [LineRoot], at: impl Fn(&LineRoot) -> V3<Sc>, k: f64) -> usize {
+    let mut n = 0;
+    for i in 0..roots.len() {
+        let mut r = roots[i];
+        let s = at(&r).to_dvec3().length_squared() + k;
+        if r.double && s.abs() <= CUSP {
+            r.double = false;
+        } else if s < 0.0 && !r.origin {
+            continue;
+        }
+        roots[n] = r;
+        n += 1;
+    }
+    n
+}
+
+/// [`walk`] for the apple's roots: the side between two consecutive roots is read off the
+/// solid itself, at the midpoint (`inside(key)`), not off the roots' parity, which the
+/// apple's singular points break (the horn's centre and the spindle's cusps are roots of
+/// any multiplicity the solver happens to resolve). A root with the same side on both
+/// hands is a touch. The line is outside before its first root (beyond the bounding
+/// sphere) and after its last.
+fn walk_by_side(
+    roots: &[LineRoot],
+    place: impl Fn(f64) -> Place,
+    inside: impl Fn(f64) -> bool,
+    mut emit: impl FnMut(&LineRoot, Passage),
+) -> bool {
+    let mut side = false;
+    let mut at_start = None;
+    for (i, r) in roots.iter().enumerate() {
+        // A root repeated exactly (a singular point's multiple root) is one root.
+        if i > 0 && roots[i - 1].key == r.key {
+            continue;
+        }
+        let after = roots
+            .get(i + 1)
+            .is_some_and(|next| inside(0.5 * (r.key + next.key)));
+        let at = if r.origin {
+            Place::Before
+        } else {
+            place(r.key)
+        };
+        if at != Place::Before {
+            at_start.get_or_insert(side);
+        }
+        if at == Place::Within {
+            let passage = match (side, after) {
+                (false, true) => Passage::Enter,
+                (true, false) => Passage::Exit,
+                _ => Passage::Touch,
+            };
+            emit(r, passage);
+        }
+        side = after;
+    }
+    at_start.unwrap_or(side)
+}
+
+/// The scaled image point `x` (units of R) lies inside the apple: `(ρ − 1)² + y² < (r/R)²`
+/// (strictly: between two roots that rounding left apart at a singular point, the
+/// midpoint is on the surface, and the pair is a touch).
+fn in_apple(x: V3<Sc>, tube: &Tube) -> bool {
+    let x = x.to_dvec3();
+    (x.x.hypot(x.z) - 1.0).powi(2) + x.y * x.y < tube.minor_rel * tube.minor_rel
+}
+
+/// How close to 0 `s` of a double root must be for the root to be a spindle's cusp
+/// ([`keep_apple`]), in units of R²: `|s| = 2ρ`, and a double root's point is found to
+/// about √ε of its line, so 10⁻⁶ keeps every cusp and no tangent farther than 5·10⁻⁷·R
+/// from the axis.
+const CUSP: f64 = 1e-6;
 
 /// Where a root lies against the ray's range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

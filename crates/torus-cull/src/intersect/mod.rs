@@ -29,6 +29,7 @@ pub(crate) mod nearest_hit;
 mod ray_cast;
 pub(crate) mod reduce;
 pub use all::{Crossing, Crossings, Passage, Span, Spans, intersect_all};
+pub(crate) use all::{Roots, crossings_in_frame, line_crossings};
 use glam::{DVec3, Vec3};
 pub use ray_cast::{Culled, RayCast};
 
@@ -343,13 +344,29 @@ pub fn occluded<R: TorusRay>(torus: &Torus, ray: &R) -> bool {
 /// ([`from_surface`]).
 #[inline(always)]
 fn exact<R: TorusRay>(torus: &Torus, ray: &R) -> Option<(f64, DVec3)> {
-    let line = ray.local_f64(torus);
-    let range = ray.range_f64();
-    if ray.on_surface() && from_surface::starts_on_the_surface(torus.tube(), line.0) {
-        return from_surface::intersect_from_surface(torus.tube(), line, range);
+    exact_in_frame(
+        torus.tube(),
+        ray.local_f64(torus),
+        ray.range_f64(),
+        ray.on_surface(),
+    )
+}
+
+/// [`exact`] on the torus-frame line `line` (f64) of the ring torus `tube`, over `range`;
+/// `on_surface`: the ray is marked as starting on the surface. The family's elliptical
+/// ring tori come here with their image line (`crate::family`).
+#[inline(always)]
+pub(crate) fn exact_in_frame(
+    tube: &Tube,
+    line: (DVec3, DVec3),
+    range: (f64, f64),
+    on_surface: bool,
+) -> Option<(f64, DVec3)> {
+    if on_surface && from_surface::starts_on_the_surface(tube, line.0) {
+        return from_surface::intersect_from_surface(tube, line, range);
     }
     let ((o, d), (t_min, t_max)) = (line, range);
-    intersect_reduced::<false>(torus.tube(), o, d, t_min, t_max)
+    intersect_reduced::<false>(tube, o, d, t_min, t_max)
 }
 
 /// What a renderer does per torus: `cull` in the torus frame (f32), then the exact
