@@ -43,6 +43,7 @@
 
 pub mod contender;
 pub mod engine;
+pub mod family;
 pub mod runs;
 pub mod stats;
 pub mod sweep;

@@ -21,7 +21,7 @@
 //! revolution, whose points have ρ ≥ 0: the outer "apple". The quartic of the image also
 //! vanishes on the inner "lemon" `(ρ + R)² + y² = a²`, which bounds nothing (it lies inside
 //! the apple); its roots are dropped by the sign of `s = |x|² + R² − a²` at the root
-//! (`s = 2Rρ` on the apple, `−2Rρ` on the lemon), OpenMC's sign test (docs/math.md §10).
+//! (`s = 2Rρ` on the apple, `−2Rρ` on the lemon), OpenMC's sign test (docs/family.md).
 //!
 //! **Scope.** Everything here runs in f64, scalar. The SIMD lanes, the certified f32 path
 //! and the GPU take a [`crate::Torus`]: a circular ring member hands them its own

@@ -451,7 +451,7 @@ fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
 /// `s = −2ρ` on the lemon `(ρ + 1)² + y² = rr²`: the two meet only on the axis (ρ = 0),
 /// at the spindle's cusps. A double root there (`|s|` within [`CUSP`]) is an apple root
 /// and a lemon root merged: it is kept as one simple root, the apple's crossing.
-/// (OpenMC's sign test on its squared side is this `s`: docs/math.md §10.)
+/// (OpenMC's sign test on its squared side is this `s`: docs/family.md.)
 fn keep_apple(roots: &mut [LineRoot], at: impl Fn(&LineRoot) -> V3<Sc>, k: f64) -> usize {
     let mut n = 0;
     for i in 0..roots.len() {
