@@ -3,8 +3,10 @@
 //! `cychosz` on the member, in the module's interleaved rounds (docs of [`super`]).
 //!
 //! Contenders, one pass each over the same rays per round, in a shuffled order:
-//! the circular reference member's exact intersection (R, a, a), the member's exact
-//! intersection, and the member behind each cull of the table ([`CullKind::TIMED`]; a
+//! the circular member (R, a, a)'s exact intersection on the same rays, the same on the
+//! rays' images (y scaled by a/b: the lines the member's own solve sees, so the ratio
+//! to it is the family path's overhead alone, the geometry factored out), the member's
+//! exact intersection, and the member behind each cull of the table ([`CullKind::TIMED`]; a
 //! cull that does not accept the member's shape is declined, so it costs the exact
 //! intersection alone). Each of `runs` runs keeps its quietest quarter of rounds
 //! ([`super::stats::quiet_rounds`]) and gives a median ratio with its bootstrap interval;
@@ -23,7 +25,8 @@ use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 pub struct FamilyRatio {
     /// What is timed: `exact` (the member, no cull) or a cull's name (its `total_ns`).
     pub contender: String,
-    /// Against what: `circular_exact` (the circular torus (R, a)) or `cychosz`.
+    /// Against what: `circular_exact` (the circular torus (R, a) on the same rays),
+    /// `circular_exact_on_images` (the same on the rays' images) or `cychosz`.
     pub reference: String,
     /// The geometric mean of the runs' median ratios.
     pub ratio: f64,
@@ -37,9 +40,10 @@ pub struct FamilyRatio {
     pub ns_per_ray: f64,
 }
 
-/// The family's ratios for `member` on `rays`: its exact intersection over the circular
-/// member (R, a, a)'s, and each cull's total over `cychosz`'s, from `runs` runs of about
-/// `seconds` each. `None` for an empty ray set or a run without rounds.
+/// The family's ratios for `member` (in its own frame: centre 0, axis +y) on `rays`:
+/// its exact intersection over the circular member (R, a, a)'s on the same rays and on
+/// their images, and each cull's total over `cychosz`'s, from `runs` runs of about
+/// `seconds` each. `None` for an empty ray set, a posed member or a run without rounds.
 pub fn time_family(
     member: &Toroid,
     rays: &[Ray],
@@ -47,25 +51,34 @@ pub fn time_family(
     seconds: f64,
     seed: u64,
 ) -> Option<Vec<FamilyRatio>> {
-    if rays.is_empty() || runs == 0 {
+    let own_frame = member.center_f64() == glam::DVec3::ZERO && member.axis_f64() == glam::DVec3::Y;
+    if rays.is_empty() || runs == 0 || !own_frame {
         return None;
     }
-    let circular = Toroid::new_f64(
-        member.center_f64(),
-        member.axis_f64(),
-        member.major_radius_f64(),
-        member.radial_semi_axis_f64(),
-        member.radial_semi_axis_f64(),
-    )
-    .ok()?;
-    // Contender 0: the circular exact; 1: the member's exact; 2..: each cull's total.
+    let a = member.radial_semi_axis_f64();
+    let circular = Toroid::canonical(member.major_radius_f64(), a, a).ok()?;
+    let scale = glam::Vec3::new(1.0, (a / member.axial_semi_axis_f64()) as f32, 1.0);
+    let images: Vec<Ray> = rays
+        .iter()
+        .map(|r| Ray::with_range(r.origin() * scale, r.dir() * scale, r.t_min(), r.t_max()))
+        .collect::<Result<_, _>>()
+        .ok()?;
+    // Contenders 0: the circular exact; 1: the same on the images; 2: the member's
+    // exact; 3..: each cull's total on the member.
     let culls = CullKind::TIMED;
-    let cychosz = 2 + culls.iter().position(|&k| k == CullKind::Cychosz)?;
-    let mut pairs: Vec<(usize, usize, String, String)> =
-        vec![(1, 0, "exact".to_string(), "circular_exact".to_string())];
+    let cychosz = 3 + culls.iter().position(|&k| k == CullKind::Cychosz)?;
+    let mut pairs: Vec<(usize, usize, String, String)> = vec![
+        (2, 0, "exact".to_string(), "circular_exact".to_string()),
+        (
+            2,
+            1,
+            "exact".to_string(),
+            "circular_exact_on_images".to_string(),
+        ),
+    ];
     for (i, kind) in culls.iter().enumerate() {
         pairs.push((
-            2 + i,
+            3 + i,
             cychosz,
             kind.name().to_string(),
             "cychosz".to_string(),
@@ -74,7 +87,7 @@ pub fn time_family(
     let mut per_run: Vec<Vec<(f64, [f64; 2], f64)>> = vec![Vec::new(); pairs.len()];
     for run in 0..runs {
         // A fresh copy per run: a run's layout is its own (module docs of `super::runs`).
-        let rays: Vec<Ray> = rays.to_vec();
+        let (rays, images): (Vec<Ray>, Vec<Ray>) = (rays.to_vec(), images.clone());
         let schedule = Schedule {
             warm_up: Duration::from_secs_f64(0.1 * seconds),
             budget: Duration::from_secs_f64(0.9 * seconds),
@@ -82,10 +95,11 @@ pub fn time_family(
             max_rounds: 100_000,
             seed: seed.wrapping_add(run as u64),
         };
-        let rounds = interleave(2 + culls.len(), &schedule, |i| match i {
+        let rounds = interleave(3 + culls.len(), &schedule, |i| match i {
             0 => exact_pass(&circular, &rays),
-            1 => exact_pass(member, &rays),
-            _ => culls[i - 2].visit(CulledPass {
+            1 => exact_pass(&circular, &images),
+            2 => exact_pass(member, &rays),
+            _ => culls[i - 3].visit(CulledPass {
                 member,
                 rays: &rays,
             }),
@@ -173,7 +187,7 @@ mod tests {
             })
             .collect();
         let got = time_family(&member, &rays, 2, 0.05, 7).unwrap();
-        assert_eq!(got.len(), 1 + CullKind::TIMED.len());
+        assert_eq!(got.len(), 2 + CullKind::TIMED.len());
         assert_eq!(
             (got[0].contender.as_str(), got[0].reference.as_str()),
             ("exact", "circular_exact")

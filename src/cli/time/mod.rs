@@ -1,6 +1,8 @@
 //! `torus-cull time`: paired, interleaved timing ratios of the culls on a workload, in
 //! about half a minute, written as the `ratio` section of a results file.
 
+mod family;
+
 use crate::console::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
@@ -86,6 +88,14 @@ pub struct TimeArgs {
     /// rays a path tracer sends after its primary rays. CPU only.
     #[arg(long)]
     secondary: bool,
+    /// Time the torus family instead of the workload's cases (`torus_cull::family`,
+    /// docs/family.md): on uniform rays (`--batch`, default 1024), the exact intersection
+    /// of elliptical tubes (ν = 4, b/a = 1/4 … 4), the horn and two spindles over the
+    /// circular torus (R, a), and each cull's total over `cychosz`'s on each member, three
+    /// runs each with within- and between-run intervals; written to
+    /// `results/<commit>-family-time.json` (or `--out`). CPU, scalar.
+    #[arg(long)]
+    family: bool,
     /// Skip the SVG plots (by default the paired ratios, or with `--device gpu` the ns
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
@@ -142,6 +152,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
+    if args.family {
+        let batch = pick_batch(args.batch, &workload, &args.workload)?;
+        return family::run(&workload, args.seconds, batch, args.out.as_deref());
+    }
     let batch = match args.device {
         Device::Cpu => pick_batch(args.batch, &workload, &args.workload)?,
         Device::Gpu => pick_gpu_batch(args.batch)?,

@@ -1,0 +1,147 @@
+//! `torus-cull time --family`: the torus family's paired ratios
+//! ([`torus_cull_lab::paired::family`]) on uniform rays, at ν = R/a = 4 for the elliptical
+//! tubes (b/a = 1/4, 1/2, 1, 2, 4) and at the horn and two spindles, written as one JSON.
+
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64;
+use std::path::Path;
+use std::process::ExitCode;
+use torus_cull::Ray;
+use torus_cull::family::Toroid;
+use torus_cull_lab::paired::family::{FamilyRatio, time_family};
+use torus_cull_lab::results::{Meta, Results, default_path, write_atomic};
+use torus_cull_lab::workload::spec::Workload;
+
+/// The members timed: (R, a, b), a = 1.
+const MEMBERS: [(f64, f64, f64); 8] = [
+    (4.0, 1.0, 0.25),
+    (4.0, 1.0, 0.5),
+    (4.0, 1.0, 1.0),
+    (4.0, 1.0, 2.0),
+    (4.0, 1.0, 4.0),
+    (1.0, 1.0, 1.0),
+    (0.75, 1.0, 1.0),
+    (0.75, 1.0, 2.0),
+];
+
+/// Runs per member, in this process (fresh ray buffers each).
+const RUNS: usize = 3;
+
+/// One member's ratios.
+#[derive(serde::Serialize)]
+struct MemberRecord {
+    major_radius: f64,
+    radial_semi_axis: f64,
+    axial_semi_axis: f64,
+    kind: String,
+    rays: usize,
+    ratios: Vec<FamilyRatio>,
+}
+
+/// The file: the usual meta block, and the members.
+#[derive(serde::Serialize)]
+struct FamilyFile {
+    schema_version: u32,
+    meta: Meta,
+    family: Vec<MemberRecord>,
+}
+
+/// Uniform rays for a member: origins uniform on the sphere of radius 4·(R + max(a, b))
+/// about the centre, each aimed at a uniform point of the member's box.
+pub(crate) fn uniform_rays(member: &Toroid, count: usize, seed: u64) -> Vec<Ray> {
+    let mut rng = Pcg64::seed_from_u64(seed);
+    let (big, a, b) = (
+        member.major_radius_f64(),
+        member.radial_semi_axis_f64(),
+        member.axial_semi_axis_f64(),
+    );
+    let reach = 4.0 * (big + a.max(b));
+    (0..count)
+        .map(|_| {
+            loop {
+                let y: f64 = rng.random_range(-1.0..1.0);
+                let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+                let s = (1.0 - y * y).sqrt();
+                let o = glam::DVec3::new(s * phi.cos(), y, s * phi.sin()) * reach;
+                let aim = glam::DVec3::new(
+                    rng.random_range(-1.0..1.0) * (big + a),
+                    rng.random_range(-1.0..1.0) * b,
+                    rng.random_range(-1.0..1.0) * (big + a),
+                );
+                if let Ok(ray) = Ray::new(o.as_vec3(), (aim - o).as_vec3()) {
+                    break ray;
+                }
+            }
+        })
+        .collect()
+}
+
+/// Times every member for `seconds` in all, writes `out` (or the default
+/// `results/<commit>-family-time.json`) and prints a table.
+pub(super) fn run(
+    workload: &Workload,
+    seconds: f64,
+    batch: usize,
+    out: Option<&Path>,
+) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    let per_member = seconds / (MEMBERS.len() * RUNS) as f64;
+    let mut family = Vec::new();
+    for (i, &(big, a, b)) in MEMBERS.iter().enumerate() {
+        let member = Toroid::canonical(big, a, b)?;
+        let rays = uniform_rays(&member, batch, workload.seed.wrapping_add(i as u64));
+        let ratios = time_family(&member, &rays, RUNS, per_member, workload.seed)
+            .ok_or("time --family: a member gave no rounds (raise --seconds)")?;
+        println!(
+            "R = {big}, a = {a}, b = {b} ({:?}): exact / circular exact = {}, on the images {}",
+            member.kind(),
+            show(&ratios[0]),
+            show(&ratios[1])
+        );
+        let best = ratios[2..]
+            .iter()
+            .min_by(|x, y| x.ratio.total_cmp(&y.ratio))
+            .expect("every cull is timed");
+        println!(
+            "  fastest cull: {} / cychosz = {}",
+            best.contender,
+            show(best)
+        );
+        family.push(MemberRecord {
+            major_radius: big,
+            radial_semi_axis: a,
+            axial_semi_axis: b,
+            kind: format!("{:?}", member.kind()).to_lowercase(),
+            rays: rays.len(),
+            ratios,
+        });
+    }
+    let mut meta = Results::new(workload, "time-family").meta;
+    meta.threads = Some(1);
+    let file = FamilyFile {
+        schema_version: torus_cull_lab::results::SCHEMA_VERSION,
+        meta,
+        family,
+    };
+    let path = match out {
+        Some(p) => p.to_path_buf(),
+        None => {
+            let p = default_path(Path::new("results"), "-family-time");
+            torus_cull_lab::output::create_default_dir(&p)
+                .map_err(|e| format!("--out {}: {e}", p.display()))?;
+            p
+        }
+    };
+    let mut text = serde_json::to_string_pretty(&file)?;
+    text.push('\n');
+    write_atomic(&path, text.as_bytes()).map_err(|e| format!("{}: {e}", path.display()))?;
+    println!("wrote {}", path.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `ratio [between-run interval]`.
+fn show(r: &FamilyRatio) -> String {
+    match r.between {
+        Some([lo, hi]) => format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio),
+        None => format!("{:.3}", r.ratio),
+    }
+}
