@@ -73,6 +73,7 @@
 pub use glam;
 
 pub mod batch;
+pub mod bend;
 pub mod certified;
 pub mod cull;
 pub mod family;
