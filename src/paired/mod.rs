@@ -43,7 +43,9 @@
 
 pub mod contender;
 pub mod engine;
+pub mod bend;
 pub mod family;
+pub mod shapes;
 pub mod runs;
 pub mod stats;
 pub mod sweep;

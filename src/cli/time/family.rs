@@ -2,14 +2,13 @@
 //! ([`torus_cull_lab::paired::family`]) on uniform rays, at ν = R/a = 4 for the elliptical
 //! tubes (b/a = 1/4, 1/2, 1, 2, 4) and at the horn and two spindles, written as one JSON.
 
-use rand::{RngExt, SeedableRng};
-use rand_pcg::Pcg64;
 use std::path::Path;
 use std::process::ExitCode;
-use torus_cull::Ray;
 use torus_cull::family::Toroid;
-use torus_cull_lab::paired::family::{FamilyRatio, time_family};
+use torus_cull_lab::paired::family::time_family;
+use torus_cull_lab::paired::shapes::ShapeRatio;
 use torus_cull_lab::results::{Meta, Results, default_path, write_atomic};
+use torus_cull_lab::workload::box_rays::box_rays;
 use torus_cull_lab::workload::spec::Workload;
 
 /// The members timed: (R, a, b), a = 1.
@@ -35,7 +34,7 @@ struct MemberRecord {
     axial_semi_axis: f64,
     kind: String,
     rays: usize,
-    ratios: Vec<FamilyRatio>,
+    ratios: Vec<ShapeRatio>,
 }
 
 /// The file: the usual meta block, and the members.
@@ -44,36 +43,6 @@ struct FamilyFile {
     schema_version: u32,
     meta: Meta,
     family: Vec<MemberRecord>,
-}
-
-/// Uniform rays for a member: origins uniform on the sphere of radius 4·(R + max(a, b))
-/// about the centre, each aimed at a uniform point of the member's box.
-pub(crate) fn uniform_rays(member: &Toroid, count: usize, seed: u64) -> Vec<Ray> {
-    let mut rng = Pcg64::seed_from_u64(seed);
-    let (big, a, b) = (
-        member.major_radius_f64(),
-        member.radial_semi_axis_f64(),
-        member.axial_semi_axis_f64(),
-    );
-    let reach = 4.0 * (big + a.max(b));
-    (0..count)
-        .map(|_| {
-            loop {
-                let y: f64 = rng.random_range(-1.0..1.0);
-                let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-                let s = (1.0 - y * y).sqrt();
-                let o = glam::DVec3::new(s * phi.cos(), y, s * phi.sin()) * reach;
-                let aim = glam::DVec3::new(
-                    rng.random_range(-1.0..1.0) * (big + a),
-                    rng.random_range(-1.0..1.0) * b,
-                    rng.random_range(-1.0..1.0) * (big + a),
-                );
-                if let Ok(ray) = Ray::new(o.as_vec3(), (aim - o).as_vec3()) {
-                    break ray;
-                }
-            }
-        })
-        .collect()
 }
 
 /// Times every member for `seconds` in all, writes `out` (or the default
@@ -88,7 +57,7 @@ pub(super) fn run(
     let mut family = Vec::new();
     for (i, &(big, a, b)) in MEMBERS.iter().enumerate() {
         let member = Toroid::canonical(big, a, b)?;
-        let rays = uniform_rays(&member, batch, workload.seed.wrapping_add(i as u64));
+        let rays = box_rays(big, a, b, batch, workload.seed.wrapping_add(i as u64));
         let ratios = time_family(&member, &rays, RUNS, per_member, workload.seed)
             .ok_or("time --family: a member gave no rounds (raise --seconds)")?;
         println!(
@@ -139,7 +108,7 @@ pub(super) fn run(
 }
 
 /// `ratio [between-run interval]`.
-fn show(r: &FamilyRatio) -> String {
+fn show(r: &ShapeRatio) -> String {
     match r.between {
         Some([lo, hi]) => format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio),
         None => format!("{:.3}", r.ratio),
