@@ -26,8 +26,7 @@ pub fn time_family(
     seconds: f64,
     seed: u64,
 ) -> Option<Vec<ShapeRatio>> {
-    let own_frame =
-        member.center_f64() == glam::DVec3::ZERO && member.axis_f64() == glam::DVec3::Y;
+    let own_frame = member.center_f64() == glam::DVec3::ZERO && member.axis_f64() == glam::DVec3::Y;
     if !own_frame {
         return None;
     }

@@ -41,12 +41,12 @@
 //! [`RatioRecord`](crate::results::RatioRecord)s; the verdicts of `torus-cull compare` on
 //! them are [`crate::compare`]'s.
 
+pub mod bend;
 pub mod contender;
 pub mod engine;
-pub mod bend;
 pub mod family;
-pub mod shapes;
 pub mod runs;
+pub mod shapes;
 pub mod stats;
 pub mod sweep;
 pub mod switches;

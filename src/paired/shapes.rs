@@ -8,6 +8,7 @@
 use super::engine::{Schedule, interleave};
 use super::runs::between_run_interval;
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
+use super::sweep::undisturbed;
 use std::time::Duration;
 
 /// One paired ratio of a shape's timing.
@@ -58,8 +59,7 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
             seed: seed.wrapping_add(run as u64),
         };
         let rounds = interleave(contenders, &schedule, fresh(run));
-        let eligible: Vec<bool> = rounds.disturbed.iter().map(|d| !d).collect();
-        let kept = quiet_rounds(&rounds.ns, &eligible, QUIET_FRACTION);
+        let kept = quiet_rounds(&rounds.ns, &undisturbed(&rounds.disturbed), QUIET_FRACTION);
         let pick = |c: usize| -> Vec<f64> { kept.iter().map(|&k| rounds.ns[c][k]).collect() };
         for (slot, &(c, r, _, _)) in per_run.iter_mut().zip(&pairs) {
             let est = ratio_estimate(&pick(c), &pick(r), work as f64, seed ^ c as u64)?;
@@ -87,4 +87,3 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
             .collect(),
     )
 }
-

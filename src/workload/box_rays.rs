@@ -15,18 +15,20 @@ pub fn box_rays(major: f64, radial: f64, axial: f64, count: usize, seed: u64) ->
     let mut rng = Pcg64::seed_from_u64(seed);
     let reach = 4.0 * (major + radial.max(axial));
     (0..count)
-        .map(|_| loop {
-            let y: f64 = rng.random_range(-1.0..1.0);
-            let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-            let s = (1.0 - y * y).sqrt();
-            let o = DVec3::new(s * phi.cos(), y, s * phi.sin()) * reach;
-            let aim = DVec3::new(
-                rng.random_range(-1.0..1.0) * (major + radial),
-                rng.random_range(-1.0..1.0) * axial,
-                rng.random_range(-1.0..1.0) * (major + radial),
-            );
-            if let Ok(ray) = Ray::new(o.as_vec3(), (aim - o).as_vec3()) {
-                break ray;
+        .map(|_| {
+            loop {
+                let y: f64 = rng.random_range(-1.0..1.0);
+                let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+                let s = (1.0 - y * y).sqrt();
+                let o = DVec3::new(s * phi.cos(), y, s * phi.sin()) * reach;
+                let aim = DVec3::new(
+                    rng.random_range(-1.0..1.0) * (major + radial),
+                    rng.random_range(-1.0..1.0) * axial,
+                    rng.random_range(-1.0..1.0) * (major + radial),
+                );
+                if let Ok(ray) = Ray::new(o.as_vec3(), (aim - o).as_vec3()) {
+                    break ray;
+                }
             }
         })
         .collect()

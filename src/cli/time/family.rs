@@ -2,12 +2,12 @@
 //! ([`torus_cull_lab::paired::family`]) on uniform rays, at ν = R/a = 4 for the elliptical
 //! tubes (b/a = 1/4, 1/2, 1, 2, 4) and at the horn and two spindles, written as one JSON.
 
+use super::shapes::show;
 use std::path::Path;
 use std::process::ExitCode;
 use torus_cull::family::Toroid;
 use torus_cull_lab::paired::family::time_family;
 use torus_cull_lab::paired::shapes::ShapeRatio;
-use torus_cull_lab::results::{Meta, Results, default_path, write_atomic};
 use torus_cull_lab::workload::box_rays::box_rays;
 use torus_cull_lab::workload::spec::Workload;
 
@@ -35,14 +35,6 @@ struct MemberRecord {
     kind: String,
     rays: usize,
     ratios: Vec<ShapeRatio>,
-}
-
-/// The file: the usual meta block, and the members.
-#[derive(serde::Serialize)]
-struct FamilyFile {
-    schema_version: u32,
-    meta: Meta,
-    family: Vec<MemberRecord>,
 }
 
 /// Times every member for `seconds` in all, writes `out` (or the default
@@ -84,33 +76,12 @@ pub(super) fn run(
             ratios,
         });
     }
-    let mut meta = Results::new(workload, "time-family").meta;
-    meta.threads = Some(1);
-    let file = FamilyFile {
-        schema_version: torus_cull_lab::results::SCHEMA_VERSION,
-        meta,
+    super::shapes::write(
+        workload,
+        "time-family",
+        ("family", "-family-time"),
         family,
-    };
-    let path = match out {
-        Some(p) => p.to_path_buf(),
-        None => {
-            let p = default_path(Path::new("results"), "-family-time");
-            torus_cull_lab::output::create_default_dir(&p)
-                .map_err(|e| format!("--out {}: {e}", p.display()))?;
-            p
-        }
-    };
-    let mut text = serde_json::to_string_pretty(&file)?;
-    text.push('\n');
-    write_atomic(&path, text.as_bytes()).map_err(|e| format!("{}: {e}", path.display()))?;
-    println!("wrote {}", path.display());
+        out,
+    )?;
     Ok(ExitCode::SUCCESS)
-}
-
-/// `ratio [between-run interval]`.
-fn show(r: &ShapeRatio) -> String {
-    match r.between {
-        Some([lo, hi]) => format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio),
-        None => format!("{:.3}", r.ratio),
-    }
 }

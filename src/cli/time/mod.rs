@@ -1,7 +1,9 @@
 //! `torus-cull time`: paired, interleaved timing ratios of the culls on a workload, in
 //! about half a minute, written as the `ratio` section of a results file.
 
+mod bend;
 mod family;
+mod shapes;
 
 use crate::console::{out, outln};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -96,6 +98,12 @@ pub struct TimeArgs {
     /// `results/<commit>-family-time.json` (or `--out`). CPU, scalar.
     #[arg(long)]
     family: bool,
+    /// Time pipe bends instead (`torus_cull::bend`, docs/bend.md): on uniform rays at the
+    /// outer torus's box, each cull and each cull with the segment's wedge against
+    /// `cychosz` and against no cull, at Δφ = 2π … π/6 and r_min/r_max = 0, 0.5, 0.9;
+    /// three runs each; written to `results/<commit>-bend-time.json` (or `--out`).
+    #[arg(long, conflicts_with = "family")]
+    bend: bool,
     /// Skip the SVG plots (by default the paired ratios, or with `--device gpu` the ns
     /// per ray, are drawn against ν with their intervals, next to the results file).
     #[arg(long)]
@@ -155,6 +163,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     if args.family {
         let batch = pick_batch(args.batch, &workload, &args.workload)?;
         return family::run(&workload, args.seconds, batch, args.out.as_deref());
+    }
+    if args.bend {
+        let batch = pick_batch(args.batch, &workload, &args.workload)?;
+        return bend::run(&workload, args.seconds, batch, args.out.as_deref());
     }
     let batch = match args.device {
         Device::Cpu => pick_batch(args.batch, &workload, &args.workload)?,
