@@ -12,6 +12,7 @@ mod capture;
 mod conservative;
 mod errata;
 mod f64_rays;
+mod family;
 mod generators;
 mod intersect_adversarial;
 mod intersect_all;
