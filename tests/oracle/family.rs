@@ -139,7 +139,7 @@ fn the_family_exact_intersection_and_every_cull_against_the_oracle() {
     let (mut judged, mut ambiguous, mut hits, mut missed, mut invented, mut far) =
         (0, 0, 0, 0, 0, 0);
     let mut false_rejects = Vec::new();
-    let mut worst = 0.0f64;
+    let (mut worst, mut grazing_judged) = (0.0f64, 0usize);
     for &member in &MEMBERS {
         for scale in [1e-3, 1.0, 1e3] {
             let toroid = posed(&mut rng, member, scale);
@@ -152,6 +152,7 @@ fn the_family_exact_intersection_and_every_cull_against_the_oracle() {
                     continue;
                 }
                 judged += 1;
+                grazing_judged += usize::from(grazing);
                 let got = toroid.intersect(&ray);
                 match (label.class, got) {
                     (OracleClass::Hit, None) => missed += 1,
@@ -187,7 +188,7 @@ fn the_family_exact_intersection_and_every_cull_against_the_oracle() {
         }
     }
     eprintln!(
-        "family: {judged} judged ({hits} hits), {ambiguous} ambiguous; missed {missed}, \
+        "family: {judged} judged ({hits} hits, {grazing_judged} grazing), {ambiguous} ambiguous; missed {missed}, \
          invented {invented}, far {far}; worst t error {worst:.2e} of the size"
     );
     assert!(judged > 20_000, "{judged}");
