@@ -318,3 +318,76 @@ fn rays_spawned_on_the_family_against_the_oracle() {
     assert!(judged > 3_000, "{judged}");
     assert_eq!((missed, invented, far), (0, 0, 0));
 }
+
+/// OpenMC's filter for R < r (its PR 2589), in its own notation, on every root of the
+/// image's quartic: a root at the point s (relative to the centre, s₃ along the axis) is
+/// kept when `D·s₃² + s₁² + s₂² + A² − C² ≥ 0`, D = C²/B² (A = R, B = b, C = a). The
+/// library's apple test is the same sign (docs/family.md); both against the oracle.
+#[test]
+fn openmc_s_sign_test_keeps_the_apple_s_roots_alone() {
+    let mut rng = Pcg64::seed_from_u64(38_003);
+    let (mut roots_seen, mut lemon_dropped, mut compared) = (0, 0, 0);
+    for &(big, a, b) in MEMBERS.iter().filter(|m| m.0 <= m.1) {
+        let toroid = Toroid::canonical(big, a, b).unwrap();
+        for (ray, _) in rays(&toroid, &mut rng, 150) {
+            let (o, d) = (ray.origin(), ray.dir());
+            let q = query(&toroid, o, d, f64::NEG_INFINITY, f64::INFINITY);
+            if q.classify().class == OracleClass::Ambiguous {
+                continue;
+            }
+            // The image line (y scaled by a/b) and its quartic's every root.
+            let scale = DVec3::new(1.0, a / b, 1.0);
+            let all = torus_cull::intersect::line_roots_local(big, a, o * scale, d * scale);
+            let dd = (a * a) / (b * b);
+            let kept: Vec<f64> = all
+                .as_slice()
+                .iter()
+                .copied()
+                .filter(|&t| {
+                    let s = o + d * t;
+                    dd * s.y * s.y + s.x * s.x + s.z * s.z + big * big - a * a >= 0.0
+                })
+                .collect();
+            roots_seen += all.len();
+            lemon_dropped += all.len() - kept.len();
+            let want: Vec<f64> = q.crossings().iter().map(|c| c.t).collect();
+            // Roots of a near-tangent pair or a cusp may come back merged or split: compare
+            // rays whose oracle crossings are well apart.
+            let s = size(&toroid);
+            let apart = want
+                .windows(2)
+                .all(|w| (w[1] - w[0]) * d.length() > 1e-6 * s);
+            let distinct: Vec<f64> = kept.iter().fold(Vec::new(), |mut v, &t| {
+                if v.last()
+                    .is_none_or(|&l: &f64| (t - l) * d.length() > 1e-6 * s)
+                {
+                    v.push(t);
+                }
+                v
+            });
+            if !apart {
+                continue;
+            }
+            compared += 1;
+            assert_eq!(
+                distinct.len(),
+                want.len(),
+                "({big}, {a}, {b}) {ray:?}: {kept:?} vs {want:?}"
+            );
+            for (g, w) in distinct.iter().zip(&want) {
+                assert!(
+                    (g - w).abs() * d.length() < 1e-8 * s,
+                    "{ray:?}: {kept:?} vs {want:?}"
+                );
+            }
+        }
+    }
+    eprintln!(
+        "OpenMC's sign test: {compared} rays, {roots_seen} quartic roots, {lemon_dropped} \
+         lemon roots dropped, the rest equal to the oracle's crossings"
+    );
+    assert!(
+        compared > 1_000 && lemon_dropped > 100,
+        "{compared} {lemon_dropped}"
+    );
+}
