@@ -19,6 +19,7 @@ mod intersect_all;
 mod intersect_vs_oracle;
 mod limits;
 mod nu_limit;
+mod point_queries;
 mod properties;
 mod saddle_rays;
 mod secondary_rays;

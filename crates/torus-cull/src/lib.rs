@@ -106,7 +106,8 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, ON_SURFACE_REL, Precision, Ray, RayError, Torus, TorusError,
+    NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,
+    Torus, TorusError,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,

@@ -2,11 +2,13 @@
 //! torus computes once for its culls ([`CullBounds`]) and its exact path ([`Tube`]).
 
 mod bounds;
+mod point_query;
 pub(crate) mod ray;
 mod torus;
 mod tube;
 
 pub use bounds::{CullBounds, SAFETY_REL};
+pub use point_query::{NonFinitePoint, SurfaceProjection};
 pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};

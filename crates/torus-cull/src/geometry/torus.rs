@@ -673,7 +673,9 @@ impl Torus {
 
     /// The world-space axis-aligned bounding box of the torus, `(min, max)`.
     ///
-    /// Exact for any axis: along world axis i the half-extent is `R·√(1 − a_i²) + r`.
+    /// Exact for any axis: along world axis i the half-extent is `R·√(1 − a_i²) + r`,
+    /// computed in f64 from the torus's f64 geometry and rounded outward to f32, so the
+    /// box holds the torus.
     ///
     /// ```
     /// use glam::Vec3;
@@ -688,10 +690,16 @@ impl Torus {
     /// ```
     #[must_use]
     pub fn world_aabb(&self) -> (Vec3, Vec3) {
-        let a = self.axis;
-        let ring = (Vec3::ONE - a * a).max(Vec3::ZERO).sqrt() * self.major_radius;
-        let half = ring + Vec3::splat(self.minor_radius);
-        (self.center - half, self.center + half)
+        let a = self.to_local_f64.row(1);
+        let ring = (DVec3::ONE - a * a).max(DVec3::ZERO).sqrt() * self.major_f64;
+        let half = ring + DVec3::splat(self.minor_f64);
+        let (lo, hi) = (self.center_f64 - half, self.center_f64 + half);
+        let down = |x: f64| -round_up(-x);
+        let up = |x: f64| round_up(x);
+        (
+            Vec3::new(down(lo.x), down(lo.y), down(lo.z)),
+            Vec3::new(up(hi.x), up(hi.y), up(hi.z)),
+        )
     }
 }
 
@@ -742,13 +750,17 @@ fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<
     Ok(())
 }
 
-/// The smallest f32 ≥ `x` (for a positive finite `x` within f32's range).
+/// The smallest f32 ≥ `x` (for a finite `x` within f32's range).
 fn round_up(x: f64) -> f32 {
     let y = x as f32;
-    if f64::from(y) < x {
-        f32::from_bits(y.to_bits() + 1)
-    } else {
+    if f64::from(y) >= x {
         y
+    } else if y > 0.0 {
+        f32::from_bits(y.to_bits() + 1)
+    } else if y < 0.0 {
+        f32::from_bits(y.to_bits() - 1)
+    } else {
+        f32::from_bits(1)
     }
 }
 

@@ -1,0 +1,134 @@
+//! The ring torus's point queries (`Torus::signed_distance`, `project_point`,
+//! `surface_coords`, `point_at`, `contains`, `world_aabb`) against an independent
+//! reference: the surface sampled densely over (θ, φ) through `point_at`'s own formula
+//! written out here, then refined by coordinate search. Adversarial points: the axis, the
+//! core circle, the equators, the top circle, the saddle, far away, at R from 10⁻³ to 10³.
+
+use glam::DVec3;
+use rand::{RngExt, SeedableRng};
+use rand_pcg::Pcg64;
+use std::f64::consts::{PI, TAU};
+use torus_cull::Torus;
+
+/// The reference distance from the torus-frame point `x` to the surface of (R, r): the
+/// minimum of |x − S(θ, φ)| over a 96 × 96 grid, refined by shrinking steps in θ and φ.
+fn reference_distance(big: f64, small: f64, x: DVec3) -> f64 {
+    let s = |t: f64, f: f64| {
+        let rho = big + small * t.cos();
+        (x - DVec3::new(rho * f.cos(), small * t.sin(), rho * f.sin())).length()
+    };
+    let n = 96;
+    let (mut best, mut bt, mut bf) = (f64::INFINITY, 0.0, 0.0);
+    for i in 0..n {
+        for j in 0..n {
+            let (t, f) = (TAU * i as f64 / n as f64, TAU * j as f64 / n as f64);
+            let d = s(t, f);
+            if d < best {
+                (best, bt, bf) = (d, t, f);
+            }
+        }
+    }
+    let mut step = TAU / n as f64;
+    while step > 1e-15 {
+        let mut moved = false;
+        for (dt, df) in [(step, 0.0), (-step, 0.0), (0.0, step), (0.0, -step)] {
+            let d = s(bt + dt, bf + df);
+            if d < best {
+                (best, bt, bf, moved) = (d, bt + dt, bf + df, true);
+            }
+        }
+        if !moved {
+            step *= 0.5;
+        }
+    }
+    best
+}
+
+#[test]
+fn point_queries_against_dense_sampling_at_adversarial_points() {
+    let mut rng = Pcg64::seed_from_u64(41);
+    let (mut checked, mut worst) = (0, 0.0f64);
+    for scale in [1e-3, 1.0, 1e3] {
+        for nu in [1.25, 4.0, 32.0] {
+            let (big, small) = (scale, scale / nu);
+            let center = DVec3::new(0.3, -1.1, 2.0) * scale;
+            let torus = Torus::new_f64(center, DVec3::new(0.2, 1.0, -0.4), big, small).unwrap();
+            let size = big + small;
+            // Torus-frame points: the axis, the core circle, both equators, the top, the
+            // saddle's neighbourhood, far away, and random ones.
+            let mut points = vec![
+                DVec3::ZERO,
+                DVec3::Y * 0.5 * small,
+                DVec3::Y * 7.0 * size,
+                DVec3::new(big, 0.0, 0.0),
+                DVec3::new(0.0, 0.0, -big),
+                DVec3::new(big + small, 0.0, 0.0),
+                DVec3::new(big - small, 0.0, 0.0),
+                DVec3::new(big, small, 0.0),
+                DVec3::new(big - small * 0.999, 1e-6 * small, 0.0),
+                DVec3::new(1e4 * size, 3e3 * size, -2e4 * size),
+            ];
+            for _ in 0..60 {
+                points.push(
+                    DVec3::new(
+                        rng.random_range(-2.0..2.0),
+                        rng.random_range(-1.0..1.0),
+                        rng.random_range(-2.0..2.0),
+                    ) * size,
+                );
+            }
+            for x in points {
+                let p = torus.point_to_world_f64(x);
+                let got = torus.project_point(p).unwrap();
+                let want = reference_distance(big, small, torus.point_to_local_f64(p).unwrap());
+                let inside = torus.contains(p).unwrap();
+                let err = (got.signed_distance.abs() - want).abs() / size;
+                worst = worst.max(err);
+                assert!(err < 1e-9, "R {big}, r {small}, x {x}: {got:?} vs {want}");
+                // The closest point is on the surface, at that distance, with a unit normal
+                // pointing from it toward the point (outward where the point is outside).
+                let on = torus.signed_distance(got.point).unwrap();
+                assert!(
+                    on.abs() < 1e-12 * (size + (p - center).length()),
+                    "{x}: {on}"
+                );
+                let gap = ((p - got.point).length() - want).abs() / size;
+                assert!(gap < 1e-9, "{x}: {gap}");
+                assert!((got.normal.length() - 1.0).abs() < 1e-12);
+                let toward = (p - got.point).dot(got.normal);
+                assert!(toward * got.signed_distance >= -1e-12 * size, "{x}");
+                if want > 1e-9 * size {
+                    assert_eq!(inside, got.signed_distance < 0.0, "{x}");
+                }
+                // (θ, φ) of the closest point give it back.
+                let (theta, phi) = torus.surface_coords(p).unwrap();
+                assert!(theta > -PI && theta <= PI && phi > -PI && phi <= PI);
+                let back = torus.point_at(theta, phi);
+                assert!(
+                    (back - got.point).length() < 1e-9 * size,
+                    "{x}: {back} {:?}",
+                    got.point
+                );
+                checked += 1;
+            }
+            // The box holds the torus: sampled surface points in it.
+            let (lo, hi) = torus.world_aabb();
+            for _ in 0..500 {
+                let q = torus.point_at(rng.random_range(0.0..TAU), rng.random_range(0.0..TAU));
+                let q32 = q.as_vec3();
+                assert!(
+                    q.cmpge(lo.as_dvec3()).all() && q.cmple(hi.as_dvec3()).all(),
+                    "{q}"
+                );
+                assert!(q32.cmpge(lo).all() && q32.cmple(hi).all());
+            }
+        }
+    }
+    eprintln!("point queries: {checked} points, worst distance error {worst:.2e} of the size");
+    assert!(
+        Torus::canonical(4.0, 1.0)
+            .unwrap()
+            .signed_distance(DVec3::NAN)
+            .is_err()
+    );
+}
