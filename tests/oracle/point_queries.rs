@@ -9,13 +9,22 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::f64::consts::{PI, TAU};
 use torus_cull::Torus;
+use torus_cull::family::Toroid;
 
 /// The reference distance from the torus-frame point `x` to the surface of (R, r): the
 /// minimum of |x − S(θ, φ)| over a 96 × 96 grid, refined by shrinking steps in θ and φ.
 fn reference_distance(big: f64, small: f64, x: DVec3) -> f64 {
+    reference_distance_family(big, small, small, x)
+}
+
+/// The same for a family member (R, a, b): the apple's points alone (ρ = R + a cos θ ≥ 0).
+fn reference_distance_family(big: f64, a: f64, b: f64, x: DVec3) -> f64 {
     let s = |t: f64, f: f64| {
-        let rho = big + small * t.cos();
-        (x - DVec3::new(rho * f.cos(), small * t.sin(), rho * f.sin())).length()
+        let rho = big + a * t.cos();
+        if rho < 0.0 {
+            return f64::INFINITY;
+        }
+        (x - DVec3::new(rho * f.cos(), b * t.sin(), rho * f.sin())).length()
     };
     let n = 96;
     let (mut best, mut bt, mut bf) = (f64::INFINITY, 0.0, 0.0);
@@ -131,4 +140,63 @@ fn point_queries_against_dense_sampling_at_adversarial_points() {
             .signed_distance(DVec3::NAN)
             .is_err()
     );
+}
+
+#[test]
+fn family_point_queries_against_dense_sampling() {
+    let mut rng = Pcg64::seed_from_u64(4101);
+    let (mut checked, mut worst) = (0, 0.0f64);
+    for (big, a, b) in [
+        (4.0, 1.0, 0.25),
+        (4.0, 1.0, 4.0),
+        (1.25, 1.0, 2.0),
+        (16.0, 1.0, 0.5),
+        (1.0, 1.0, 1.0),
+        (0.75, 1.0, 1.0),
+        (0.5, 1.0, 1.0),
+    ] {
+        for scale in [1e-3, 1.0, 1e3] {
+            let (big, a, b) = (big * scale, a * scale, b * scale);
+            let member = Toroid::canonical(big, a, b).unwrap();
+            let size = big + a.max(b);
+            let mut points = vec![
+                DVec3::ZERO,
+                DVec3::Y * 0.3 * b,
+                DVec3::Y * 5.0 * size,
+                DVec3::new(big, 0.0, 0.0),
+                DVec3::new(big + a, 0.0, 0.0),
+                DVec3::new(big, b, 0.0),
+                DVec3::new(big + 0.5 * a, 0.2 * b, 0.0),
+                DVec3::new(1e3 * size, -2e2 * size, 0.0),
+            ];
+            for _ in 0..40 {
+                points.push(
+                    DVec3::new(
+                        rng.random_range(-2.0..2.0),
+                        rng.random_range(-1.5..1.5),
+                        rng.random_range(-2.0..2.0),
+                    ) * size,
+                );
+            }
+            for x in points {
+                let got = member.project_point(x).unwrap();
+                let want = reference_distance_family(big, a, b, x);
+                let err = (got.signed_distance.abs() - want).abs() / size;
+                worst = worst.max(err);
+                assert!(err < 1e-9, "({big}, {a}, {b}) {x}: {got:?} vs {want}");
+                assert!(((x - got.point).length() - want).abs() < 1e-9 * size, "{x}");
+                if want > 1e-9 * size {
+                    assert_eq!(
+                        member.contains(x).unwrap(),
+                        got.signed_distance < 0.0,
+                        "{x}"
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    eprintln!("family point queries: {checked} points, worst {worst:.2e} of the size");
+    let spindle = Toroid::canonical(0.75, 1.0, 2.0).unwrap();
+    assert!(spindle.project_point(DVec3::ZERO).is_err());
 }

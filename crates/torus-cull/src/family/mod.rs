@@ -30,8 +30,10 @@
 //! counted as escalated.
 
 mod intersect;
+mod point_query;
 mod toroid;
 
+pub use point_query::FamilyPointError;
 pub use toroid::{MAX_ASPECT, MIN_ASPECT, MIN_FAMILY_NU, Toroid, ToroidError, ToroidKind};
 
 #[cfg(test)]
