@@ -119,3 +119,8 @@ pub use names::{Named, UnknownName};
 #[cfg(doctest)]
 #[doc = include_str!("../../../README.md")]
 struct ReadmeExamples;
+
+/// The crate's own README (the package's, for crates.io), compiled and run too.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct CrateReadmeExamples;

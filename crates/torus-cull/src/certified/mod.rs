@@ -71,6 +71,14 @@ pub struct F32Hit {
     pub escalated: bool,
 }
 
+/// The hit alone, as [`crate::intersect()`] answers: `intersect_f32(…).into()` is a drop-in
+/// for `intersect(…)` where the escalation count does not matter.
+impl From<F32Hit> for Option<Hit> {
+    fn from(answer: F32Hit) -> Option<Hit> {
+        answer.hit
+    }
+}
+
 #[inline(always)]
 fn sc32(x: f32) -> F32s<Scalar> {
     F32s {

@@ -109,6 +109,9 @@ pub enum TorusError {
     },
     /// The centre has a NaN or infinite component.
     NonFiniteCenter(Vec3),
+    /// [`Torus::from_affine`]: the transform is not a rotation with a uniform positive
+    /// scale (a shear, a non-uniform scale or a reflection does not keep a torus a torus).
+    NotSimilarity,
     /// The axis is zero, NaN or infinite.
     BadAxis(Vec3),
     /// R + r is outside [`MIN_OUTER_RADIUS`, `MAX_OUTER_RADIUS`], where the f32 culls are no
@@ -175,6 +178,12 @@ impl fmt::Display for TorusError {
                  is above the supported range (allowed: 1 < nu <= {MAX_NU}, where the \
                  intersection and the culls are tested; scale r up or split the scene)",
                 *major_radius as f64 / *minor_radius as f64
+            ),
+            TorusError::NotSimilarity => write!(
+                f,
+                "the transform is not a rotation with a uniform positive scale (allowed: rigid \
+                 motion times a uniform scale; a shear, a non-uniform scale or a reflection \
+                 does not keep a torus a torus)"
             ),
             TorusError::NonFiniteCenter(c) => {
                 write!(f, "torus centre {} is not finite", super::ray::compact3(*c))
@@ -642,6 +651,110 @@ impl Torus {
     ) -> Result<Ray<P>, RayError<P>> {
         let at = ray.origin().to_dvec3() + ray.dir().to_dvec3() * t.to_f64();
         Ray::from_surface(P::from_dvec3(self.nearest_surface_point(at)), dir)
+    }
+
+    /// [`Torus::spawn`] from a hit's point (`Hit::point`, in the ray's precision), for a
+    /// renderer that kept the hit and not the ray: the point is moved onto the surface in
+    /// f64 and the ray marked as starting there.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::{Ray, Torus, intersect};
+    /// let torus = Torus::canonical(4.0, 1.0)?;
+    /// let ray = Ray::new(Vec3::new(10.0, 0.0, 0.0), Vec3::NEG_X)?;
+    /// let hit = intersect(&torus, &ray).unwrap();
+    /// let through = torus.spawn_from_point(hit.point, Vec3::NEG_X)?;
+    /// assert!((intersect(&torus, &through).unwrap().t - 2.0).abs() < 1e-5);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// A [`RayError`], as [`Torus::spawn`]'s.
+    pub fn spawn_from_point<P: Precision>(&self, point: P, dir: P) -> Result<Ray<P>, RayError<P>> {
+        Ray::from_surface(
+            P::from_dvec3(self.nearest_surface_point(point.to_dvec3())),
+            dir,
+        )
+    }
+
+    /// The torus in its own frame (centre 0, axis +y, radii R = `major_radius`, r =
+    /// `minor_radius`) placed by an instance transform: its centre is the translation, its
+    /// axis the image of +y, its radii scaled by the transform's scale. Only a rigid motion
+    /// with a uniform scale keeps a torus a torus; any other linear part (shear, a
+    /// non-uniform scale, a reflection) is refused.
+    ///
+    /// ```
+    /// use glam::{DAffine3, DQuat, DVec3};
+    /// use torus_cull::Torus;
+    /// let placed = DAffine3::from_scale_rotation_translation(
+    ///     DVec3::splat(2.0),
+    ///     DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2),
+    ///     DVec3::new(1.0, 2.0, 3.0),
+    /// );
+    /// let torus = Torus::from_affine(placed, 4.0, 1.0)?;
+    /// assert_eq!(torus.major_radius_f64(), 8.0);
+    /// assert!((torus.axis_f64() - DVec3::Z).length() < 1e-15);
+    /// let squashed = DAffine3::from_scale(DVec3::new(1.0, 0.5, 1.0));
+    /// assert!(Torus::from_affine(squashed, 4.0, 1.0).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    ///
+    /// [`TorusError::NotSimilarity`] for a transform that is not a rotation with a uniform
+    /// positive scale (to 10⁻⁹ relative), or the errors of [`Torus::new_f64`].
+    pub fn from_affine(
+        transform: glam::DAffine3,
+        major_radius: f64,
+        minor_radius: f64,
+    ) -> Result<Torus, TorusError> {
+        let m = transform.matrix3;
+        let scale = m.determinant().cbrt();
+        let rigid = m * (1.0 / scale);
+        let off = (rigid.transpose() * rigid - DMat3::IDENTITY).to_cols_array();
+        let similar = scale.is_finite() && scale > 0.0 && off.iter().all(|e| e.abs() <= 1e-9);
+        if !similar {
+            return Err(TorusError::NotSimilarity);
+        }
+        Torus::new_f64(
+            transform.translation,
+            rigid * DVec3::Y,
+            major_radius * scale,
+            minor_radius * scale,
+        )
+    }
+
+    /// [`Torus::from_affine`] from glam's f32 `Affine3A`, widened exactly.
+    ///
+    /// # Errors
+    ///
+    /// As [`Torus::from_affine`].
+    pub fn from_affine_f32(
+        transform: glam::Affine3A,
+        major_radius: f32,
+        minor_radius: f32,
+    ) -> Result<Torus, TorusError> {
+        let m = glam::DMat3::from_cols(
+            transform.matrix3.x_axis.as_dvec3(),
+            transform.matrix3.y_axis.as_dvec3(),
+            transform.matrix3.z_axis.as_dvec3(),
+        );
+        let t = glam::DAffine3::from_mat3_translation(m, transform.translation.as_dvec3());
+        // f32 entries are off by 2⁻²⁴ relative: allow that, not more.
+        let scale = m.determinant().cbrt();
+        let rigid = m * (1.0 / scale);
+        let off = (rigid.transpose() * rigid - DMat3::IDENTITY).to_cols_array();
+        if !(scale.is_finite() && scale > 0.0 && off.iter().all(|e| e.abs() <= 1e-6)) {
+            return Err(TorusError::NotSimilarity);
+        }
+        let unit = rigid * DVec3::Y;
+        Torus::new(
+            t.translation.as_vec3(),
+            unit.as_vec3(),
+            (f64::from(major_radius) * scale) as f32,
+            (f64::from(minor_radius) * scale) as f32,
+        )
     }
 
     /// [`Torus::line_to_local`] of an f64 [`DRay`].

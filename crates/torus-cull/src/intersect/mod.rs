@@ -63,8 +63,9 @@ pub struct Hit<P: Precision = Vec3> {
     pub normal: P,
     /// The hit point `o + t·d`, world space, formed in f64 from the solver's f64 `t` and
     /// rounded once to the ray's precision (so more accurate than `ray.at(hit.t)` in f32).
-    /// To start a secondary ray here, hand the hit to [`Torus::spawn`], which projects
-    /// this point onto the surface and marks the ray as starting on it.
+    /// To start a secondary ray here, call [`Torus::spawn`] with the ray and `t`, or
+    /// [`Torus::spawn_from_point`] with this point: each projects it onto the surface and
+    /// marks the ray as starting on it.
     pub point: P,
     /// The ray struck the outside of the tube: `d·n < 0` with `n` the outward normal (it
     /// enters the solid torus here). `false` where it leaves the solid (an origin inside
