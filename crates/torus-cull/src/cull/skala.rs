@@ -144,7 +144,9 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     let h_sq = d.x * d.x + d.z * d.z;
     // Parallel to the axis: ρ is constant; the sphere already bounds it from outside.
     let axis_parallel = h_sq.lt(c!(AXIS_PARALLEL_H2) * len_sq);
-    let axis_keep = (p.x * p.x + p.z * p.z).gt(c!(b.inner_safe_sq));
+    // ≥: where the padded hole closes (R ≤ r_η, a horn or spindle image) inner_safe_sq is
+    // 0, and the axis itself (ρ = 0) crosses the solid.
+    let axis_keep = (p.x * p.x + p.z * p.z).ge(c!(b.inner_safe_sq));
     // a·h, with h = |(d_x, d_z)| unnormalized.
     let a_h = (p.x * d.z - p.z * d.x).abs();
     let a_h_sq = a_h * a_h;

@@ -278,6 +278,21 @@ fn the_culls_keep_every_hit_of_the_shapes_they_accept() {
             }
         }
     }
+    // Exactly along the axis, through a spindle's cusps or the horn's centre (skala once
+    // rejected these: its test of lines parallel to the axis kept only ρ² > the padded
+    // hole's, which is 0 once the hole closes).
+    for &(major, a, b) in shapes.iter().filter(|s| s.0 <= s.1) {
+        let toroid = Toroid::canonical(major, a, b).unwrap();
+        for dir in [Vec3::NEG_Y, Vec3::Y * 1e3] {
+            let ray = Ray::new(-dir.normalize() * 10.0, dir).unwrap();
+            assert!(toroid.intersect(&ray).is_some(), "{major} {a} {b}");
+            for kind in CullKind::TIMED {
+                if !toroid.kept_by(&kind, &ray) {
+                    wrong.push(format!("{kind} ({major}, {a}, {b}) along the axis"));
+                }
+            }
+        }
+    }
     assert!(
         wrong.is_empty(),
         "{} false rejects, first: {:?}",
