@@ -29,7 +29,12 @@
 //!
 //! [`margin_by_sampling`] is the second, independent method (dense samples in world
 //! coordinates + golden-section refinement) that the tests compare against.
+//!
+//! [`family`] is the oracle for the whole torus family (ring, horn and spindle, elliptical
+//! tube), by its own method on `E = √(((ρ − R)/a)² + (y/b)²)`, with its own second method
+//! and on-surface rule.
 
+pub mod family;
 mod frame;
 mod from_surface;
 mod interval;
