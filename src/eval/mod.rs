@@ -39,9 +39,9 @@
 //! R ≤ r (a horn or spindle torus, whose surface is the outer "apple"), the rows are
 //! answered for the member (R, a = r, b) of `torus_cull::family`: `t_hit` from
 //! `Toroid::intersect`, the culls from `Toroid::kept_by` (a cull that does not accept the
-//! member's shape keeps every ray), the oracle column from [`crate::family_label`] (its
-//! margin in the image torus's units), and an `on_surface` origin must lie within
-//! `ON_SURFACE_REL`·(R + max(a, b)) of the member's surface. `--exact f32` and
+//! member's shape keeps every ray), the oracle column from the family oracle
+//! ([`crate::family_label`]; its margin `(E − 1)·min(a, b)`), and an `on_surface` origin
+//! must lie within `ON_SURFACE_REL`·(R + max(a, b)) of the member's surface. `--exact f32` and
 //! `--exact gpu` take the circular ring torus only and refuse any other member. The
 //! circular ring torus (no `--axial`, or `--axial` = `--minor`, with R > r) answers
 //! exactly as it always has.

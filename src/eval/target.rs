@@ -6,8 +6,8 @@
 //! precision): its rows are byte for byte those of a binary without the family. A family
 //! member is answered by [`Toroid::intersect`] (f64 and f32 rays), its culls by
 //! [`Toroid::kept_by`] (a cull that does not accept its shape keeps every ray), its
-//! oracle column by [`crate::family_label`], and its `on_surface` origins are checked
-//! against its own surface. The certified f32 path and the GPU take a [`Torus`]: a family
+//! oracle column by the family oracle ([`crate::family_label`]), and its `on_surface`
+//! origins are checked against its own surface (the family oracle's nearest point). The certified f32 path and the GPU take a [`Torus`]: a family
 //! member is refused there ([`Toroid::as_torus`]), the error naming the mode and the shape.
 
 use super::EvalError;
@@ -117,7 +117,14 @@ impl Target {
                 (off, ON_SURFACE_REL * (major + minor), "(R + r)")
             }
             Target::Family(toroid) => {
-                let off = (toroid.surface_point_near(origin) - origin).length();
+                // The family oracle's own nearest surface point, and (E − 1)·min(a, b) for
+                // a point it leaves where it is (on the axis, at a cusp).
+                let query = crate::family_label::query(
+                    toroid,
+                    &DRay::new(origin, DVec3::Y).map_err(|e| e.to_string())?,
+                );
+                let moved = (query.on_surface().origin - origin).length();
+                let off = moved.max(query.g(0.0).abs());
                 (off, ON_SURFACE_REL * size(toroid), "(R + max(a, b))")
             }
         };

@@ -100,8 +100,7 @@ impl OracleLabel {
 /// all in f64, world frame.
 ///
 /// Every method panics if `d` or `axis` is zero or not finite, if `o` or `center` is not
-/// finite, if the radii are not `major ≥ minor/2 > 0` (R ≤ r: the apple, for the torus
-/// family's horn and spindle), or if `t_min > t_max` or either is NaN.
+/// finite, if the radii are not `major > minor > 0`, or if `t_min > t_max` or either is NaN.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Query {
     /// The torus's centre.
@@ -237,11 +236,9 @@ impl Query {
             "bad axis {axis}"
         );
         assert!(d.is_finite() && d.length_squared() > 0.0, "bad dir {d}");
-        // R ≤ r (horn, spindle): D uses ρ ≥ 0, so D < r exactly inside the solid of
-        // revolution, the apple; the lemon bounds nothing and is never a crossing of D = r.
         assert!(
-            minor > 0.0 && major >= 0.5 * minor && major.is_finite(),
-            "need R >= r/2 > 0, got R = {major}, r = {minor}"
+            minor > 0.0 && major > minor && major.is_finite(),
+            "need R > r > 0, got R = {major}, r = {minor}"
         );
     }
 
