@@ -22,6 +22,8 @@ pub mod compare;
 pub mod errata;
 pub mod eval;
 pub mod f32_check;
+pub mod family_check;
+pub mod family_label;
 pub mod measure;
 pub mod number;
 pub mod oracle;

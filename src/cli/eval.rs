@@ -7,8 +7,7 @@ use std::process::ExitCode;
 
 /// Runs `eval`.
 pub fn eval(
-    major: f32,
-    minor: f32,
+    radii: (f32, f32, Option<f32>),
     precision: torus_cull_lab::eval::Precision,
     rays: &std::path::Path,
     out: Option<&std::path::Path>,
@@ -33,9 +32,8 @@ pub fn eval(
         Some(path) => {
             let named = |e: std::io::Error| format!("--out {}: {e}", path.display());
             let mut file = torus_cull_lab::output::Output::create(path).map_err(named)?;
-            let rows = torus_cull_lab::eval::eval_csv(
-                major,
-                minor,
+            let rows = torus_cull_lab::eval::eval_family_csv(
+                radii,
                 precision,
                 input,
                 &name,
@@ -46,9 +44,8 @@ pub fn eval(
                 Err(e) => Err(e.into()),
             }
         }
-        None => torus_cull_lab::eval::eval_csv(
-            major,
-            minor,
+        None => torus_cull_lab::eval::eval_family_csv(
+            radii,
             precision,
             input,
             &name,

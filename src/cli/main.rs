@@ -15,6 +15,7 @@ mod compare;
 mod console;
 mod eval;
 mod f32_check;
+mod family;
 mod gpu_info;
 mod plot;
 mod render;
@@ -124,6 +125,11 @@ enum Command {
     /// peer) against the oracle, per ray family: missed and spurious hits, escalations, t
     /// error. Exits 1 if ours missed a hit or gave a spurious or inaccurate one.
     F32Check(f32_check::F32CheckArgs),
+    /// Check every cull and the exact intersection of the torus family (elliptical ring
+    /// tori, horn and spindle tori) against the oracle, member class by member class:
+    /// false rejects, rejection rate, capture of far misses, missed and invented hits.
+    /// Exits 1 on a false reject or a missed or invented hit.
+    Family(family::FamilyArgs),
     /// The GPU adapter wgpu picks (a binary built with `--features gpu`), one `key: value`
     /// a line: adapter, device_type, backend, driver, software (a CPU rasteriser such as
     /// lavapipe), shader_f64, f64_finish_pass (and why not), timestamps. Exits 2 with one
@@ -134,9 +140,16 @@ enum Command {
         /// Major radius R.
         #[arg(long = "major", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         major: f32,
-        /// Minor radius r (R > r > 0).
+        /// Minor radius r > 0: the tube's semi-axis in the equatorial plane (a). R > r is
+        /// a ring torus; R = r the horn and R < r the spindle (down to R/r = 0.5), whose
+        /// surface is the outer "apple".
         #[arg(long = "minor", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         minor: f32,
+        /// The tube's semi-axis along the axis, b (default: b = r, a circular tube), with
+        /// 0.25 <= b/r <= 4. With b != r the rows are answered for the elliptical member
+        /// of the torus family (--exact f64 only).
+        #[arg(long = "axial", allow_hyphen_values = true, value_parser = eval::parse_radius)]
+        axial: Option<f32>,
         /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin), optionally followed
         /// by t_min, t_max, on_surface (any subset, in this order).
         ///
@@ -210,6 +223,7 @@ fn main() -> ExitCode {
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
         Command::F32Check(args) => f32_check::run(args),
+        Command::Family(args) => family::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
         Command::Render {
@@ -241,6 +255,7 @@ fn main() -> ExitCode {
         Command::Eval {
             major,
             minor,
+            axial,
             rays,
             out,
             precision,
@@ -259,7 +274,7 @@ fn main() -> ExitCode {
                     "--exact gpu takes f32 rays: drop --precision f64, or use --exact f64".into(),
                 ),
             };
-            precision.and_then(|p| eval::eval(major, minor, p, &rays, out.as_deref()))
+            precision.and_then(|p| eval::eval((major, minor, axial), p, &rays, out.as_deref()))
         }
     };
     match result {

@@ -53,10 +53,20 @@ fn bad_rows_stop_with_the_line_number() {
     let out = eval_file(dir.path(), "x,y,z\n1,2,3\n", "2", "1");
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("rays.csv:1: header"));
-    // r ≥ R: no hole.
+    // r ≥ R is a horn or spindle torus (the apple), down to R/r = 0.5; fatter is refused.
     let out = eval_file(dir.path(), &format!("{header}{good}"), "1", "2");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out = eval_file(dir.path(), &format!("{header}{good}"), "0.9", "2");
     assert!(!out.status.success());
-    assert!(String::from_utf8_lossy(&out.stderr).contains("must be > 1"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--major 0.9") && err.contains("0.5 <= --major / --minor"),
+        "{err}"
+    );
     // --out is written atomically: a bad row leaves no partial output behind.
     let input = dir.path().join("rays.csv");
     std::fs::write(&input, format!("{header}{good}{good}1,2\n")).unwrap();

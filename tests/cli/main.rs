@@ -8,6 +8,7 @@ mod common;
 
 mod eval_cli;
 mod f32_check;
+mod family_cli;
 mod issue36_cli;
 mod nothing_lost_cli;
 mod outputs_cli;

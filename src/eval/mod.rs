@@ -35,20 +35,34 @@
 //! the kernel's own verdict for that cull (1 keep, 0 reject), on the same ray, so that any
 //! CSV of rays checks the kernel's culls against the CPU's and the oracle.
 //!
+//! **The torus family** ([`Target`], `eval --axial b`). With `--axial b ≠ r`, or with
+//! R ≤ r (a horn or spindle torus, whose surface is the outer "apple"), the rows are
+//! answered for the member (R, a = r, b) of `torus_cull::family`: `t_hit` from
+//! `Toroid::intersect`, the culls from `Toroid::kept_by` (a cull that does not accept the
+//! member's shape keeps every ray), the oracle column from the family oracle
+//! ([`crate::family_label`]; its margin `(E − 1)·min(a, b)`), and an `on_surface` origin
+//! must lie within `ON_SURFACE_REL`·(R + max(a, b)) of the member's surface. `--exact f32` and
+//! `--exact gpu` take the circular ring torus only and refuse any other member. The
+//! circular ring torus (no `--axial`, or `--axial` = `--minor`, with R > r) answers
+//! exactly as it always has.
+//!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
 //! an `on_surface` other than 0 or 1, an `on_surface` origin off the surface) ends it with
 //! an error naming the input, the line number and the column, and the command exits
 //! non-zero: no answer is ever silently wrong or skipped.
 
+mod target;
+
 use crate::number::Num;
-use crate::oracle::{OracleClass, OracleLabel, Query, classify_from_surface};
+use crate::oracle::{OracleClass, OracleLabel};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
-use torus_cull::{
-    CullKind, DRay, LocalLine, ON_SURFACE_REL, Ray, Torus, TorusError, intersect, intersect_f32,
-};
+use torus_cull::family::ToroidError;
+use torus_cull::{DRay, Ray, Torus, TorusError, intersect_f32};
+
+pub use target::{Target, size};
 
 /// The input header's six required columns.
 pub const INPUT_HEADER: &str = "ox,oy,oz,dx,dy,dz";
@@ -60,7 +74,7 @@ pub const OPTIONAL_COLUMNS: [&str; 3] = ["t_min", "t_max", "on_surface"];
 pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
     thick_cylinder,skala,ellipsoid,quadric,discriminant,discriminant_f64";
 
-/// The GPU columns' culls, in [`CullKind::TIMED`] order: every cull with a batch form.
+/// The GPU columns' culls, in [`torus_cull::CullKind::TIMED`] order: every cull with a batch form.
 pub const GPU_CULLS: [torus_cull::batch::BatchCull; 9] = torus_cull::batch::BATCHED;
 
 /// The output header of `--exact gpu`: [`OUTPUT_HEADER`] with `escalated` and `finished`
@@ -101,6 +115,15 @@ pub enum Precision {
 pub enum EvalError {
     /// The torus parameters are invalid.
     Torus(TorusError),
+    /// The family member's parameters are invalid (`--axial`, or a horn or spindle).
+    Toroid(ToroidError),
+    /// The mode (`--exact f32`, `--exact gpu`) takes a circular ring torus only.
+    Mode {
+        /// The flag as typed.
+        mode: &'static str,
+        /// Why, naming the shape.
+        message: String,
+    },
     /// A row could not be used.
     Row {
         /// The input's name (file path or `<stdin>`).
@@ -121,6 +144,8 @@ impl fmt::Display for EvalError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             EvalError::Torus(e) => write!(f, "--major/--minor: {e}"),
+            EvalError::Toroid(e) => write!(f, "{}", target::flag_error(e)),
+            EvalError::Mode { mode, message } => write!(f, "{mode}: {message}"),
             EvalError::Row {
                 input,
                 line,
@@ -147,9 +172,33 @@ pub fn eval_csv(
     precision: Precision,
     input: impl BufRead,
     input_name: &str,
+    output: impl Write,
+) -> Result<usize, EvalError> {
+    eval_family_csv(
+        (major_radius, minor_radius, None),
+        precision,
+        input,
+        input_name,
+        output,
+    )
+}
+
+/// [`eval_csv`] for a member of the torus family: `(R, r, b)`, b the tube's semi-axis
+/// along the axis (`None`: b = r). The circular ring torus answers as [`eval_csv`]'s;
+/// any other member through [`Target::Family`].
+pub fn eval_family_csv(
+    (major_radius, minor_radius, axial): (f32, f32, Option<f32>),
+    precision: Precision,
+    input: impl BufRead,
+    input_name: &str,
     mut output: impl Write,
 ) -> Result<usize, EvalError> {
-    let torus = Torus::canonical(major_radius, minor_radius).map_err(EvalError::Torus)?;
+    let target = Target::new(major_radius, minor_radius, axial)?;
+    match precision {
+        Precision::CertifiedF32 => _ = target.as_torus("--exact f32")?,
+        Precision::CertifiedGpu => _ = target.as_torus("--exact gpu")?,
+        _ => {}
+    }
     let row_error = |line: usize, message: String| EvalError::Row {
         input: input_name.to_string(),
         line,
@@ -171,7 +220,7 @@ pub fn eval_csv(
     let header = lines.next().transpose().map_err(|e| not_text(1, e))?;
     let columns = check_header(header, &row_error)?;
     let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
-        let (lines, answers) = read_for_gpu(&torus, &columns, lines, &row_error)?;
+        let (lines, answers) = read_for_gpu(&target, &columns, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
             answers.into_iter(),
@@ -200,9 +249,9 @@ pub fn eval_csv(
         if line.trim().is_empty() {
             continue;
         }
-        let row = evaluate(&torus, &columns, precision, &line, &mut gpu_answers)
+        let row = evaluate(&target, &columns, precision, &line, &mut gpu_answers)
             .map_err(|m| row_error(line_no, m))?;
-        write_row(&mut output, &torus, index, &row)?;
+        write_row(&mut output, index, &row)?;
         index += 1;
     }
     output.flush()?;
@@ -273,7 +322,7 @@ impl Columns {
 /// The GPU answers every row at once: all rows are read first (a malformed row still
 /// stops the run with its line number, before the adapter is opened).
 fn read_for_gpu(
-    torus: &Torus,
+    target: &Target,
     columns: &Columns,
     lines: impl Iterator<Item = std::io::Result<String>>,
     row_error: &impl Fn(usize, String) -> EvalError,
@@ -283,10 +332,10 @@ fn read_for_gpu(
     for (i, line) in lines.iter().enumerate() {
         let Ok(line) = line else { break };
         if !line.trim().is_empty() {
-            rays.push(parse_ray(torus, columns, line).map_err(|m| row_error(i + 2, m))?);
+            rays.push(parse_ray(target, columns, line).map_err(|m| row_error(i + 2, m))?);
         }
     }
-    let answers = gpu_answers(torus, &rays)?;
+    let answers = gpu_answers(target.as_torus("--exact gpu")?, &rays)?;
     Ok((lines, answers))
 }
 
@@ -300,39 +349,41 @@ struct GpuAnswer {
 }
 
 /// One row's answers: the oracle's label, the exact `t`, whether f32 escalated, the
-/// line the culls see, and the GPU's cull verdicts (`--exact gpu`).
+/// culls' verdicts, and the GPU's cull verdicts (`--exact gpu`).
 struct Row {
     label: OracleLabel,
     t_hit: Option<String>,
     escalated: Option<bool>,
     /// `--exact gpu`: who finished the ray (`device`, `host`, or empty).
     finished: Option<&'static str>,
-    line: LocalLine,
+    /// [`torus_cull::CullKind::TIMED`]'s verdicts, in order (true keeps).
+    keeps: Vec<bool>,
     gpu_keeps: Option<[bool; GPU_CULLS.len()]>,
 }
 
 /// Parses one row in the given precision and answers it.
 fn evaluate(
-    torus: &Torus,
+    target: &Target,
     columns: &Columns,
     precision: Precision,
     line: &str,
     gpu_answers: &mut impl Iterator<Item = GpuAnswer>,
 ) -> Result<Row, String> {
     if precision == Precision::F64 {
-        let ray = parse_dray(torus, columns, line)?;
+        let ray = parse_dray(target, columns, line)?;
         return Ok(Row {
-            label: oracle(torus, &ray)?,
-            t_hit: intersect(torus, &ray).map(|hit| Num(hit.t).to_string()),
+            label: target.oracle(&ray)?,
+            t_hit: target.t_hit(&ray).map(|t| Num(t).to_string()),
             escalated: None,
             finished: None,
-            line: torus.line_to_local(&ray),
+            keeps: target.keeps(&ray),
             gpu_keeps: None,
         });
     }
-    let ray = parse_ray(torus, columns, line)?;
+    let ray = parse_ray(target, columns, line)?;
     let (t, escalated, finished, gpu_keeps) = match precision {
         Precision::CertifiedF32 => {
+            let torus = target.as_torus("--exact f32").map_err(|e| e.to_string())?;
             let answer = intersect_f32(torus, &ray);
             (
                 answer.hit.map(|hit| hit.t),
@@ -350,40 +401,21 @@ fn evaluate(
                 Some(answer.keeps),
             )
         }
-        _ => (intersect(torus, &ray).map(|hit| hit.t), None, None, None),
+        _ => (target.t_hit(&ray), None, None, None),
     };
     Ok(Row {
-        label: oracle(torus, &DRay::from(ray))?,
+        label: target.oracle(&DRay::from(ray))?,
         t_hit: t.map(|t| Num::from(t).to_string()),
         escalated,
         finished,
-        // The culls' own input: far origins go to the foot point, as in a renderer.
-        line: torus.line_to_local(&ray),
+        keeps: target.keeps(&ray),
         gpu_keeps,
-    })
-}
-
-/// The oracle's label of a ray over its range (an f32 ray widened exactly): the literal
-/// ray's, or by the on-surface rule ([`classify_from_surface`]).
-/// A line the oracle cannot answer ([`Query::check_reach`]) is an error for its row.
-fn oracle(torus: &Torus, ray: &DRay) -> Result<OracleLabel, String> {
-    let query = Query::dray(torus, ray);
-    query.check_reach()?;
-    Ok(if ray.starts_on_surface() {
-        classify_from_surface(&query)
-    } else {
-        query.classify()
     })
 }
 
 /// `index,oracle,margin,t_hit[,escalated][,finished],<one 0/1 per cull>[,<one 0/1 per GPU
 /// cull>]`.
-fn write_row(
-    output: &mut impl Write,
-    torus: &Torus,
-    index: usize,
-    row: &Row,
-) -> std::io::Result<()> {
+fn write_row(output: &mut impl Write, index: usize, row: &Row) -> std::io::Result<()> {
     let oracle = match row.label.class {
         OracleClass::Hit => "hit",
         OracleClass::Miss => "miss",
@@ -399,9 +431,8 @@ fn write_row(
     if let Some(finished) = row.finished {
         write!(output, ",{finished}")?;
     }
-    for cull in CullKind::TIMED {
-        let keep = cull.keeps(torus.bounds(), row.line.origin, row.line.dir);
-        write!(output, ",{}", u8::from(keep))?;
+    for keep in &row.keeps {
+        write!(output, ",{}", u8::from(*keep))?;
     }
     for keep in row.gpu_keeps.iter().flatten() {
         write!(output, ",{}", u8::from(*keep))?;
@@ -583,23 +614,6 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
     Ok(fields)
 }
 
-/// An `on_surface` row's origin must be a surface point: within
-/// [`ON_SURFACE_REL`]·(R + r) of the surface (docs/math.md §9).
-fn check_on_surface(torus: &Torus, origin: DVec3) -> Result<(), String> {
-    let (major, minor) = (torus.major_radius_f64(), torus.minor_radius_f64());
-    let rho = origin.x.hypot(origin.z);
-    let off = ((rho - major).hypot(origin.y) - minor).abs();
-    let bound = ON_SURFACE_REL * (major + minor);
-    if off > bound {
-        return Err(format!(
-            "column on_surface: 1, but the origin is {off:.3e} from the surface (allowed: ≤ \
-             {ON_SURFACE_REL:e}·(R + r) = {bound:e}, docs/math.md §9): not a surface point; \
-             give 0 for a literal ray"
-        ));
-    }
-    Ok(())
-}
-
 /// Why `field` (column `name`) did not give a finite number: it is `inf` or `NaN` as
 /// typed, or a number beyond the precision's largest finite value `max` (`1e39` in f32,
 /// which f64 would read).
@@ -625,12 +639,12 @@ fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
     )
 }
 
-fn parse_ray(torus: &Torus, columns: &Columns, line: &str) -> Result<Ray, String> {
+fn parse_ray(target: &Target, columns: &Columns, line: &str) -> Result<Ray, String> {
     let f = parse_row::<f32>(columns, line)?;
     let v = f.six;
     let (o, d) = (Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]));
     if f.on_surface {
-        check_on_surface(torus, o.as_dvec3())?;
+        target.check_on_surface(o.as_dvec3())?;
         Ray::from_surface_with_range(o, d, f.t_min, f.t_max)
     } else {
         Ray::with_range(o, d, f.t_min, f.t_max)
@@ -638,12 +652,12 @@ fn parse_ray(torus: &Torus, columns: &Columns, line: &str) -> Result<Ray, String
     .map_err(|e| as_typed(e, &f.typed))
 }
 
-fn parse_dray(torus: &Torus, columns: &Columns, line: &str) -> Result<DRay, String> {
+fn parse_dray(target: &Target, columns: &Columns, line: &str) -> Result<DRay, String> {
     let f = parse_row::<f64>(columns, line)?;
     let v = f.six;
     let (o, d) = (DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]));
     if f.on_surface {
-        check_on_surface(torus, o)?;
+        target.check_on_surface(o)?;
         DRay::from_surface_with_range(o, d, f.t_min, f.t_max)
     } else {
         DRay::with_range(o, d, f.t_min, f.t_max)
@@ -654,7 +668,7 @@ fn parse_dray(torus: &Torus, columns: &Columns, line: &str) -> Result<DRay, Stri
 #[cfg(test)]
 mod tests {
     use super::*;
-    use torus_cull::Named;
+    use torus_cull::{CullKind, Named};
 
     #[test]
     fn header_names_every_timed_cull_in_order() {

@@ -1,0 +1,81 @@
+//! `torus-cull family`: every cull and the exact intersection of the torus family against
+//! the oracle, member class by member class (`torus_cull_lab::family_check`).
+
+use super::CliResult;
+use crate::console::{out, outln};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torus_cull_lab::family_check::{self, FamilyFile};
+use torus_cull_lab::{output, results};
+
+/// The most rays per member.
+const MAX_RAYS: usize = 1_000_000;
+
+/// `torus-cull family`'s arguments.
+#[derive(clap::Args)]
+pub struct FamilyArgs {
+    /// Rays per member class, cycling through the kinds uniform, grazing, axis/hole and
+    /// spawned (1 ..= 1 000 000).
+    #[arg(long, default_value_t = 20_000)]
+    rays: usize,
+    /// The seed every member draws its pose and rays from.
+    #[arg(long, default_value_t = 20261127)]
+    seed: u64,
+    /// Results JSON (default: results/<short commit>[-dirty]-family.json). Its directory
+    /// must exist.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+/// Runs `family`. Exit 1 when a cull rejected a hit of the oracle, or the exact
+/// intersection missed or invented a hit.
+pub fn run(args: FamilyArgs) -> CliResult {
+    if !(1..=MAX_RAYS).contains(&args.rays) {
+        return Err(format!(
+            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
+            args.rays
+        )
+        .into());
+    }
+    let path = match args.out {
+        Some(path) => path,
+        None => {
+            let path = results::default_path(Path::new("results"), "-family");
+            output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
+    // Before the work, not after it.
+    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    let members = family_check::members().len();
+    let heartbeat = crate::console::Heartbeat::new(
+        format!("family: {members} members x {} rays", args.rays),
+        "members",
+    );
+    heartbeat.update(0, members as u64);
+    let records = family_check::check(args.rays, args.seed, &|done, all| {
+        heartbeat.update(done as u64, all as u64);
+    })?;
+    out!("{}", family_check::table(&records))?;
+    let failed: Vec<String> = records
+        .iter()
+        .filter(|r| r.false_rejects() > 0 || r.exact_wrong() > 0)
+        .map(family_check::MemberRecord::label)
+        .collect();
+    let file = FamilyFile::new(records, args.rays, args.seed);
+    let mut text = serde_json::to_string_pretty(&file)?;
+    text.push('\n');
+    // A regular file is replaced atomically: a temp file, then renamed.
+    output::write_file(&path, text.as_bytes())
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    outln!("wrote {}", path.display())?;
+    if !failed.is_empty() {
+        eprintln!(
+            "error: a false reject, or a missed or invented hit of the exact intersection, in: {}",
+            failed.join(", ")
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}

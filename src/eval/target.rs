@@ -1,0 +1,200 @@
+//! What `eval` intersects: the circular ring torus (R, r), as it always has, or a member
+//! of the torus family ([`Toroid`]: an elliptical tube `--axial b ≠ r`, or a horn or
+//! spindle, R ≤ r, whose surface is the apple).
+//!
+//! The circular ring torus keeps its own path ([`Torus`], the circular oracle, every
+//! precision): its rows are byte for byte those of a binary without the family. A family
+//! member is answered by [`Toroid::intersect`] (f64 and f32 rays), its culls by
+//! [`Toroid::kept_by`] (a cull that does not accept its shape keeps every ray), its
+//! oracle column by the family oracle ([`crate::family_label`]), and its `on_surface`
+//! origins are checked against its own surface (the family oracle's nearest point). The certified f32 path and the GPU take a [`Torus`]: a family
+//! member is refused there ([`Toroid::as_torus`]), the error naming the mode and the shape.
+
+use super::EvalError;
+use crate::oracle::{OracleLabel, Query, classify_from_surface};
+use glam::{DVec3, Vec3};
+use torus_cull::family::{Toroid, ToroidError};
+use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, Torus};
+
+/// The torus `eval` answers for.
+#[derive(Debug, Clone, Copy)]
+pub enum Target {
+    /// The circular ring torus: R > r, no `--axial` or `--axial` = `--minor`.
+    Ring(Torus),
+    /// Any other member of the family.
+    Family(Toroid),
+}
+
+impl Target {
+    /// The canonical torus for `--major R --minor r [--axial b]`. The circular ring
+    /// torus (b absent or equal to r, and not `0 < R ≤ r`) is [`Torus::canonical`]'s,
+    /// with its errors; every other member is [`Toroid::new`]'s, its errors naming the
+    /// flags.
+    pub fn new(major: f32, minor: f32, axial: Option<f32>) -> Result<Target, EvalError> {
+        let circular = axial.is_none_or(|b| b == minor);
+        let horn_or_spindle = major > 0.0 && minor > 0.0 && major <= minor;
+        if circular && !horn_or_spindle {
+            return Torus::canonical(major, minor)
+                .map(Target::Ring)
+                .map_err(EvalError::Torus);
+        }
+        Toroid::new(Vec3::ZERO, Vec3::Y, major, minor, axial.unwrap_or(minor))
+            .map(Target::Family)
+            .map_err(EvalError::Toroid)
+    }
+
+    /// The torus the certified f32 path and the GPU take (`mode` names the flag): the
+    /// circular ring torus, or an error naming the mode and the member's shape.
+    pub fn as_torus(&self, mode: &'static str) -> Result<&Torus, EvalError> {
+        match self {
+            Target::Ring(torus) => Ok(torus),
+            Target::Family(toroid) => toroid.as_torus().map_err(|e| EvalError::Mode {
+                mode,
+                message: format!(
+                    "{} torus (shape {:?}, R = {}, a = {}, b = {}): {e}; use --exact f64",
+                    kind_name(toroid),
+                    toroid.shape(),
+                    toroid.major_radius_f64(),
+                    toroid.radial_semi_axis_f64(),
+                    toroid.axial_semi_axis_f64()
+                ),
+            }),
+        }
+    }
+
+    /// The oracle's label of the ray over its range: the literal ray's, or by the
+    /// on-surface rule. A line the oracle cannot answer is an error for its row.
+    pub fn oracle(&self, ray: &DRay) -> Result<OracleLabel, String> {
+        match self {
+            Target::Ring(torus) => {
+                let query = Query::dray(torus, ray);
+                query.check_reach()?;
+                Ok(if ray.starts_on_surface() {
+                    classify_from_surface(&query)
+                } else {
+                    query.classify()
+                })
+            }
+            Target::Family(toroid) => crate::family_label::label(toroid, ray),
+        }
+    }
+
+    /// The exact intersection's nearest `t` in range.
+    pub fn t_hit<P: Precision>(&self, ray: &Ray<P>) -> Option<P::Float> {
+        match self {
+            Target::Ring(torus) => torus_cull::intersect(torus, ray).map(|h| h.t),
+            Target::Family(toroid) => toroid.intersect(ray).map(|h| h.t),
+        }
+    }
+
+    /// Each of [`CullKind::TIMED`]'s verdicts on the ray (true keeps), in that order.
+    pub fn keeps<P: Precision>(&self, ray: &Ray<P>) -> Vec<bool> {
+        match self {
+            Target::Ring(torus) => {
+                // The culls' own input: far origins go to the foot point, as in a renderer.
+                let line = torus.line_to_local(ray);
+                CullKind::TIMED
+                    .iter()
+                    .map(|cull| cull.keeps(torus.bounds(), line.origin, line.dir))
+                    .collect()
+            }
+            Target::Family(toroid) => CullKind::TIMED
+                .iter()
+                .map(|cull| toroid.kept_by(cull, ray))
+                .collect(),
+        }
+    }
+
+    /// An `on_surface` row's origin must be a surface point: within
+    /// [`ON_SURFACE_REL`]·(R + r) of the ring torus's surface, or
+    /// [`ON_SURFACE_REL`]·(R + max(a, b)) of a family member's (docs/math.md §9).
+    pub fn check_on_surface(&self, origin: DVec3) -> Result<(), String> {
+        let (off, bound, size) = match self {
+            Target::Ring(torus) => {
+                let (major, minor) = (torus.major_radius_f64(), torus.minor_radius_f64());
+                let rho = origin.x.hypot(origin.z);
+                let off = ((rho - major).hypot(origin.y) - minor).abs();
+                (off, ON_SURFACE_REL * (major + minor), "(R + r)")
+            }
+            Target::Family(toroid) => {
+                // The family oracle's own nearest surface point, and (E − 1)·min(a, b) for
+                // a point it leaves where it is (on the axis, at a cusp).
+                let query = crate::family_label::query(
+                    toroid,
+                    &DRay::new(origin, DVec3::Y).map_err(|e| e.to_string())?,
+                );
+                let moved = (query.on_surface().origin - origin).length();
+                let off = moved.max(query.g(0.0).abs());
+                (off, ON_SURFACE_REL * size(toroid), "(R + max(a, b))")
+            }
+        };
+        if off > bound {
+            return Err(format!(
+                "column on_surface: 1, but the origin is {off:.3e} from the surface (allowed: ≤ \
+                 {ON_SURFACE_REL:e}·{size} = {bound:e}, docs/math.md §9): not a surface point; \
+                 give 0 for a literal ray"
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// R + max(a, b): the member's size, the scale of its margins.
+pub fn size(toroid: &Toroid) -> f64 {
+    toroid.major_radius_f64()
+        + toroid
+            .radial_semi_axis_f64()
+            .max(toroid.axial_semi_axis_f64())
+}
+
+/// "elliptical ring", "horn" or "spindle".
+fn kind_name(toroid: &Toroid) -> &'static str {
+    use torus_cull::family::ToroidKind;
+    match toroid.kind() {
+        ToroidKind::Ring => "an elliptical ring",
+        ToroidKind::Horn => "a horn",
+        ToroidKind::Spindle => "a spindle",
+    }
+}
+
+/// A family member's error with the flags that gave the values: `major_radius` is
+/// `--major`, `radial_semi_axis` `--minor`, `axial_semi_axis` `--axial`; the values as
+/// the f32 the flags were read as (`0.2`, not its f64 widening).
+pub fn flag_error(e: &ToroidError) -> String {
+    use torus_cull::family::{MAX_ASPECT, MIN_ASPECT, MIN_FAMILY_NU};
+    let f = |v: f64| v as f32;
+    match e {
+        ToroidError::BadRadius { name, value } => {
+            let value = f(*value);
+            let flag = match *name {
+                "major_radius" => "--major",
+                "radial_semi_axis" => "--minor",
+                _ => "--axial",
+            };
+            format!("{flag} {value} is invalid (allowed: a finite number > 0)")
+        }
+        ToroidError::Aspect {
+            radial_semi_axis,
+            axial_semi_axis,
+        } => format!(
+            "--axial {}: --axial / --minor = {} is outside the allowed range \
+             {MIN_ASPECT} ..= {MAX_ASPECT} (--minor {}: --axial from {} to {})",
+            f(*axial_semi_axis),
+            f(axial_semi_axis / radial_semi_axis),
+            f(*radial_semi_axis),
+            f(MIN_ASPECT * radial_semi_axis),
+            f(MAX_ASPECT * radial_semi_axis)
+        ),
+        ToroidError::TooFat {
+            major_radius,
+            radial_semi_axis,
+        } => format!(
+            "--major {}: --major / --minor = {} is below the allowed {MIN_FAMILY_NU} \
+             (allowed: {MIN_FAMILY_NU} <= --major / --minor <= {})",
+            f(*major_radius),
+            f(major_radius / radial_semi_axis),
+            torus_cull::MAX_NU
+        ),
+        other => format!("--major/--minor/--axial: {other}"),
+    }
+}
