@@ -41,6 +41,7 @@
 //! [`RatioRecord`](crate::results::RatioRecord)s; the verdicts of `torus-cull compare` on
 //! them are [`crate::compare`]'s.
 
+pub mod bvh;
 pub mod contender;
 pub mod engine;
 pub mod family;

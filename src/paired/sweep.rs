@@ -445,7 +445,7 @@ fn push_unit_records(
 /// The rounds the operating system left alone, if there are enough of them (a quarter,
 /// and at least [`MIN_UNDISTURBED`]); otherwise every round, as a machine that switches
 /// this thread out in most rounds leaves nothing better to choose from.
-fn undisturbed(disturbed: &[bool]) -> Vec<bool> {
+pub(crate) fn undisturbed(disturbed: &[bool]) -> Vec<bool> {
     let clean = disturbed.iter().filter(|d| !**d).count();
     if clean >= MIN_UNDISTURBED.max(disturbed.len() / 4) {
         disturbed.iter().map(|d| !d).collect()
