@@ -56,10 +56,8 @@ const REFERENCES: [CullKind; 2] = [CullKind::NoCull, CullKind::Cychosz];
 /// What to time.
 #[derive(Debug, Clone)]
 pub struct BvhTiming {
-    /// Scene layouts.
-    pub scenes: Vec<SceneKind>,
-    /// ν of the scenes' tori.
-    pub nus: Vec<f64>,
+    /// Scene layouts and the ν of their tori, in turn.
+    pub units: Vec<(SceneKind, f64)>,
     /// Tori per scene.
     pub tori: usize,
     /// Scene seed.
@@ -110,6 +108,10 @@ struct Unit {
     shadow: Vec<Spawned>,
 }
 
+/// One record to make: the cull, the metric, its contender, and each reference's name
+/// and contender.
+type Planned = (CullKind, &'static str, usize, Vec<(String, usize)>);
+
 /// The contenders of a unit: the culls' closest-hit passes, their any-hit passes, then
 /// the batched culls' passes.
 struct Lineup {
@@ -151,7 +153,7 @@ impl Lineup {
     }
 
     /// (cull, metric, contender, [(reference name, reference contender)]) of every record.
-    fn records(&self) -> Vec<(CullKind, &'static str, usize, Vec<(String, usize)>)> {
+    fn records(&self) -> Vec<Planned> {
         let mut out = Vec::new();
         let against = |of: &dyn Fn(CullKind) -> Option<usize>, k: CullKind| {
             REFERENCES
@@ -186,7 +188,7 @@ pub fn time_bvh(
 ) -> Result<Vec<RatioRecord>, BvhTimingError> {
     let lineup = Lineup::new(&timing.culls);
     let per_run = timing.seconds / timing.runs.max(1) as f64;
-    let units_count = timing.scenes.len() * timing.nus.len();
+    let units_count = timing.units.len();
     let visits_per_run = ((per_run / VISIT.as_secs_f64()).ceil() as usize).max(units_count);
     let all = visits_per_run * timing.runs;
     let mut done = 0;
@@ -220,26 +222,24 @@ pub fn time_bvh(
 /// cull gives `none`'s answers on them.
 fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
     let mut units = Vec::new();
-    for &kind in &timing.scenes {
-        for &nu in &timing.nus {
-            let scene = Scene::build(kind, nu, timing.tori, timing.seed)
-                .map_err(|e| BvhTimingError::Scene(e.to_string()))?;
-            let (camera, shadow) = unit_rays(&scene, timing.rays);
-            let lineup = Lineup::new(&timing.culls);
-            for &cull in &lineup.culls {
-                if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow)) {
-                    return Err(BvhTimingError::Mismatch(format!(
-                        "{} {kind} nu={nu}: {e}",
-                        cull.name()
-                    )));
-                }
+    for &(kind, nu) in &timing.units {
+        let scene = Scene::build(kind, nu, timing.tori, timing.seed)
+            .map_err(|e| BvhTimingError::Scene(e.to_string()))?;
+        let (camera, shadow) = unit_rays(&scene, timing.rays);
+        let lineup = Lineup::new(&timing.culls);
+        for &cull in &lineup.culls {
+            if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow)) {
+                return Err(BvhTimingError::Mismatch(format!(
+                    "{} {kind} nu={nu}: {e}",
+                    cull.name()
+                )));
             }
-            units.push(Unit {
-                scene,
-                camera,
-                shadow,
-            });
         }
+        units.push(Unit {
+            scene,
+            camera,
+            shadow,
+        });
     }
     Ok(units)
 }
@@ -420,8 +420,7 @@ mod tests {
     #[test]
     fn every_record_is_reported_with_a_between_run_interval() {
         let timing = BvhTiming {
-            scenes: vec![SceneKind::FacingGrid],
-            nus: vec![4.0],
+            units: vec![(SceneKind::FacingGrid, 4.0)],
             tori: 16,
             seed: 3,
             culls: CullKind::TIMED.to_vec(),

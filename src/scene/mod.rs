@@ -119,15 +119,30 @@ impl Scene {
         );
         let (major, minor) = (1.0f64, 1.0 / nu);
         let (placed, eye) = match kind {
-            SceneKind::RingField => ring_field(count, major + minor, &mut rng),
+            SceneKind::RingField => ring_field(count, major + minor, 1.5, &mut rng),
             SceneKind::Chain => chain(count, major, major + minor),
             SceneKind::FacingGrid => facing_grid(count, major + minor),
+            SceneKind::MixedNu => ring_field(count, major + 1.0 / MIXED_NU.0, 1.5, &mut rng),
+            SceneKind::Dense => ring_field(count, major + minor, 0.5, &mut rng),
         };
+        // Every torus's r: 1/ν, or in the mixed scene 1/ν with ν log-uniform in MIXED_NU.
+        let minors: Vec<f64> = (0..count)
+            .map(|_| match kind {
+                SceneKind::MixedNu => {
+                    let (lo, hi) = (MIXED_NU.0.ln(), MIXED_NU.1.ln());
+                    1.0 / rng.random_range(lo..hi).exp()
+                }
+                _ => minor,
+            })
+            .collect();
         let placed: Vec<(DVec3, DVec3)> = placed.into_iter().map(|(c, a)| (c * scale, a)).collect();
-        let (eye, major, minor) = (eye * scale, major * scale, minor * scale);
+        let (eye, major) = (eye * scale, major * scale);
         let tori: Vec<Torus> = placed
             .iter()
-            .map(|(c, a)| Torus::new(c.as_vec3(), a.as_vec3(), major as f32, minor as f32))
+            .zip(&minors)
+            .map(|((c, a), r)| {
+                Torus::new(c.as_vec3(), a.as_vec3(), major as f32, (r * scale) as f32)
+            })
             .collect::<Result<_, _>>()
             .map_err(|e| SceneError(e.to_string()))?;
         let aabbs: Vec<Aabb> = tori
@@ -355,10 +370,19 @@ impl Scene {
     }
 }
 
-/// Tori at random positions and axes in a cube sized for `count` of them, and an eye
-/// outside it in a random direction.
-fn ring_field(count: usize, outer: f64, rng: &mut Pcg64) -> (Vec<(DVec3, DVec3)>, DVec3) {
-    let side = 2.0 * outer * (count as f64).cbrt() * 1.5;
+/// The range of ν in the `mixed_nu` scene.
+pub const MIXED_NU: (f64, f64) = (1.25, 16.0);
+
+/// Tori at random positions and axes in a cube sized for `count` of them (`spread` outer
+/// diameters apart on average: 1.5 leaves room, 0.5 packs them so that they overlap),
+/// and an eye outside it in a random direction.
+fn ring_field(
+    count: usize,
+    outer: f64,
+    spread: f64,
+    rng: &mut Pcg64,
+) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = 2.0 * outer * (count as f64).cbrt() * spread;
     let placed = (0..count)
         .map(|_| {
             let c = DVec3::new(

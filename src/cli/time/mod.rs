@@ -101,8 +101,8 @@ pub struct TimeArgs {
     /// one run in this process, with the within-run interval only.
     #[arg(long)]
     runs: Option<u64>,
-    /// Time inside the BVH instead (the workload's `bvh` scenes; `--nu` any ν, default
-    /// the workload's): each cull at the leaves over `none` and `cychosz`, per ray, for
+    /// Time inside the BVH instead (the workload's `bvh` scenes, `--nu` any ν, default
+    /// the workload's; the scenes it lacks at ν = 4): each cull at the leaves over `none` and `cychosz`, per ray, for
     /// closest-hit camera rays, any-hit shadow rays and batched leaves, `--runs` runs
     /// (default 5) in this process; metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
     /// `bvh_batched_ns`. Default file …-bvh-time.json.
