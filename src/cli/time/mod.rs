@@ -104,7 +104,7 @@ pub struct TimeArgs {
     /// Time inside the BVH instead (the workload's `bvh` scenes, `--nu` any ν, default
     /// the workload's; the scenes it lacks at ν = 4): each cull at the leaves over `none` and `cychosz`, per ray, for
     /// closest-hit camera rays, any-hit shadow rays and batched leaves, `--runs` runs
-    /// (default 5) in this process; metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
+    /// (default 10) in this process; metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
     /// `bvh_batched_ns`. Default file …-bvh-time.json.
     #[arg(long)]
     bvh: bool,
