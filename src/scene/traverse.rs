@@ -1,6 +1,6 @@
 //! The lab's own traversal of obvhs's CWBVH nodes, one that honours the ray's `t_min`.
 //!
-//! obvhs 0.4's node test (`CwBvhNode::intersect_ray`, in `src/cwbvh/node.rs` and
+//! obvhs 0.4's node test (`CwBvhNode::intersect_ray`, in `obvhs-0.4.0/src/cwbvh/node.rs` and
 //! `simd.rs`) ignores `ray.tmin` and clamps each child box's entry distance to
 //! `EPSILON = 1e-4` (`let tmin = tmin3.max_element().max(EPSILON); //ray.tmin?`): a child
 //! box that the ray leaves before t = 10⁻⁴, in units of the ray's direction, is skipped,
