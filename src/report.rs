@@ -149,6 +149,9 @@ pub fn ratio_tables(results: &Results) -> String {
                 "batch_cull_ns" => "batch cull alone (SIMD)",
                 "batch_f32_total_ns" => "batch f32 total (certified f32 wavefront)",
                 "batch_f32_uncertified_ns" => "batch f32 total, uncertified (no proof)",
+                "bvh_closest_ns" => "BVH closest-hit (camera rays, cull at the leaves)",
+                "bvh_anyhit_ns" => "BVH any-hit (shadow rays, cull at the leaves)",
+                "bvh_batched_ns" => "BVH batched leaves (wavefront per torus)",
                 other => other,
             };
             let device = if r.device == CPU_DEVICE {
@@ -158,6 +161,8 @@ pub fn ratio_tables(results: &Results) -> String {
             };
             let reference = if r.reference == F64_REFERENCE {
                 "the same cull's f64 wavefront"
+            } else if r.reference == crate::paired::bvh::SCALAR_REFERENCE {
+                "the same cull's scalar closest-hit"
             } else {
                 r.reference.as_str()
             };

@@ -16,6 +16,12 @@ pub enum SceneKind {
     /// A square grid of tori whose axes all point at the camera: the hole-heavy case the
     /// paper targets.
     FacingGrid,
+    /// Tori as in `ring_field`, each of its own ν, drawn log-uniformly from 1.25 to 16
+    /// (the scene's ν is not used).
+    MixedNu,
+    /// Tori as in `ring_field` packed into a cube a third as wide, so that boxes (and
+    /// tori) overlap and a ray meets several leaves.
+    Dense,
 }
 
 /// Every scene by its stable name, in table order.
@@ -25,6 +31,8 @@ impl Named for SceneKind {
         SceneKind::RingField,
         SceneKind::Chain,
         SceneKind::FacingGrid,
+        SceneKind::MixedNu,
+        SceneKind::Dense,
     ];
 
     fn name(self) -> &'static str {
@@ -32,6 +40,8 @@ impl Named for SceneKind {
             SceneKind::RingField => "ring_field",
             SceneKind::Chain => "chain",
             SceneKind::FacingGrid => "facing_grid",
+            SceneKind::MixedNu => "mixed_nu",
+            SceneKind::Dense => "dense",
         }
     }
 }

@@ -140,7 +140,10 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     // The ratio grew because the reference got faster, not because the cull got slower.
     let faster_reference = n.reference_ns_per_ray < o.reference_ns_per_ray * (1.0 - threshold)
         && n.ns_per_ray <= o.ns_per_ray * (1.0 + threshold);
-    let decides = n.metric == "total_ns" && same_batch && !about_none && !faster_reference;
+    // The per-ray totals decide: one torus (`total_ns`) or a BVH traversal.
+    let decisive =
+        n.metric == "total_ns" || crate::paired::bvh::BVH_METRICS.contains(&n.metric.as_str());
+    let decides = decisive && same_batch && !about_none && !faster_reference;
     let mut flags = Vec::new();
     let mut regression = false;
     if change > threshold && worse_disjoint && about_none {

@@ -42,6 +42,7 @@
 //! them are [`crate::compare`]'s.
 
 pub mod bend;
+pub mod bvh;
 pub mod contender;
 pub mod engine;
 pub mod family;

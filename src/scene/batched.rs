@@ -3,7 +3,8 @@
 //!
 //! obvhs 0.4 traverses one ray at a time (`ray_traverse`, `ray_traverse_anyhit`, and the
 //! resumable `ray_traverse_dynamic` / `traverse!`); it has no packet traversal. What it
-//! allows is this two-pass form: `ray_traverse_anyhit` reports every leaf whose box a ray
+//! allows is this two-pass form: an all-hit traversal (the lab's [`super::traverse::each_leaf`],
+//! as obvhs's `ray_traverse_anyhit` but honouring `t_min`) reports every leaf whose box a ray
 //! enters, the candidates are grouped by torus, and each torus's rays go through
 //! [`torus_cull::batch::Wavefront`] as one batch (one torus per batch, because the lane kernels share
 //! the torus's frame and bounds across lanes). It gives up two things the scalar
@@ -11,8 +12,8 @@
 //! hit found so far (every box on the ray is a candidate), and full registers (a torus
 //! sees only the few rays that reach its box). [`LeafBatchStats`] counts both.
 
+use crate::scene::rays::Spawned;
 use crate::scene::{Scene, SceneHit};
-use glam::Vec3A;
 use torus_cull::Ray;
 use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 
@@ -44,21 +45,45 @@ pub fn trace_leaves_batched(
     rays: &[Ray],
     stats: &mut LeafBatchStats,
 ) -> Vec<SceneHit> {
+    batched(scene, dispatch, cull, rays, |i, _| rays[i], stats)
+}
+
+/// [`trace_leaves_batched`] of spawned rays: each ray's own torus sees the surface ray,
+/// every other torus the literal one ([`Spawned::literal`]).
+pub fn trace_spawned_batched(
+    scene: &Scene,
+    dispatch: &Dispatch,
+    cull: BatchCull,
+    spawned: &[Spawned],
+    stats: &mut LeafBatchStats,
+) -> Vec<SceneHit> {
+    let rays: Vec<Ray> = spawned.iter().map(|s| s.ray).collect();
+    let literal: Vec<Ray> = spawned.iter().map(Spawned::literal).collect();
+    let pick = |i: usize, torus: usize| {
+        if spawned[i].from as usize == torus {
+            rays[i]
+        } else {
+            literal[i]
+        }
+    };
+    batched(scene, dispatch, cull, &rays, pick, stats)
+}
+
+/// The two passes, with `ray_for(ray index, torus index)` the ray that torus is tested on.
+fn batched(
+    scene: &Scene,
+    dispatch: &Dispatch,
+    cull: BatchCull,
+    rays: &[Ray],
+    ray_for: impl Fn(usize, usize) -> Ray,
+    stats: &mut LeafBatchStats,
+) -> Vec<SceneHit> {
     let bvh = scene.bvh();
     // Pass 1: every (torus, ray) candidate, bucketed by torus.
     let mut candidates: Vec<Vec<u32>> = vec![Vec::new(); scene.tori.len()];
     for (i, ray) in rays.iter().enumerate() {
-        // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into
-        // +0.0 (as in `Scene::trace_with`).
-        let traversal_ray = obvhs::ray::Ray::new(
-            Vec3A::from(ray.origin()),
-            Vec3A::from(ray.dir()) + Vec3A::ZERO,
-            ray.t_min(),
-            ray.t_max(),
-        );
-        bvh.ray_traverse_anyhit(traversal_ray, |_, id| {
-            candidates[bvh.primitive_indices[id] as usize].push(i as u32);
-        });
+        // The lab's traversal: obvhs's skips boxes the ray leaves before t = 1e-4.
+        super::traverse::each_leaf(bvh, ray, |prim| candidates[prim].push(i as u32));
     }
     // Pass 2: per torus, the wavefront on its candidates; keep each ray's nearest hit.
     let mut best: Vec<SceneHit> = vec![None; rays.len()];
@@ -71,7 +96,7 @@ pub fn trace_leaves_batched(
             continue;
         }
         batch_rays.clear();
-        batch_rays.extend(which.iter().map(|&i| rays[i as usize]));
+        batch_rays.extend(which.iter().map(|&i| ray_for(i as usize, torus_index)));
         let torus = &scene.tori[torus_index];
         let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits);
         stats.leaf_candidates += which.len() as u64;

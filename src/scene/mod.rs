@@ -6,16 +6,17 @@
 //! closest hit must be identical to [`Scene::brute_force`] whatever the cull.
 
 pub mod batched;
+pub mod rays;
+pub mod traverse;
 
 pub use crate::scene_kind::SceneKind;
-pub use batched::{LeafBatchStats, trace_leaves_batched};
+pub use batched::{LeafBatchStats, trace_leaves_batched, trace_spawned_batched};
 
 use crate::workload::CameraView;
 use glam::{DVec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::cwbvh::CwBvh;
-use obvhs::ray::RayHit;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::fmt;
@@ -58,6 +59,8 @@ pub struct Scene {
     pub kind: SceneKind,
     /// ν of every torus (R = 1, r = 1/ν).
     pub nu: f64,
+    /// The length unit: R of every torus.
+    pub scale: f64,
     /// The tori.
     pub tori: Vec<Torus>,
     bvh: CwBvh,
@@ -82,6 +85,24 @@ impl std::error::Error for SceneError {}
 impl Scene {
     /// Build `count` tori of `kind` at ν, deterministically from `seed`.
     pub fn build(kind: SceneKind, nu: f64, count: usize, seed: u64) -> Result<Scene, SceneError> {
+        Scene::build_scaled(kind, nu, count, seed, 1.0)
+    }
+
+    /// [`Scene::build`] with every length times `scale`: R = `scale`, r = `scale`/ν, the
+    /// same layout and camera scaled about the world origin.
+    pub fn build_scaled(
+        kind: SceneKind,
+        nu: f64,
+        count: usize,
+        seed: u64,
+        scale: f64,
+    ) -> Result<Scene, SceneError> {
+        if !(scale.is_finite() && scale > 0.0) {
+            return Err(SceneError(format!(
+                "scale = {} is invalid (allowed: a positive finite number)",
+                crate::number::Num(scale)
+            )));
+        }
         if !(nu.is_finite() && nu > 1.0 && nu <= torus_cull::MAX_NU) {
             return Err(SceneError(format!(
                 "nu = {} is invalid (allowed: 1 < nu <= {})",
@@ -98,13 +119,30 @@ impl Scene {
         );
         let (major, minor) = (1.0f64, 1.0 / nu);
         let (placed, eye) = match kind {
-            SceneKind::RingField => ring_field(count, major + minor, &mut rng),
+            SceneKind::RingField => ring_field(count, major + minor, 1.5, &mut rng),
             SceneKind::Chain => chain(count, major, major + minor),
             SceneKind::FacingGrid => facing_grid(count, major + minor),
+            SceneKind::MixedNu => ring_field(count, major + 1.0 / MIXED_NU.0, 1.5, &mut rng),
+            SceneKind::Dense => ring_field(count, major + minor, 0.5, &mut rng),
         };
+        // Every torus's r: 1/ν, or in the mixed scene 1/ν with ν log-uniform in MIXED_NU.
+        let minors: Vec<f64> = (0..count)
+            .map(|_| match kind {
+                SceneKind::MixedNu => {
+                    let (lo, hi) = (MIXED_NU.0.ln(), MIXED_NU.1.ln());
+                    1.0 / rng.random_range(lo..hi).exp()
+                }
+                _ => minor,
+            })
+            .collect();
+        let placed: Vec<(DVec3, DVec3)> = placed.into_iter().map(|(c, a)| (c * scale, a)).collect();
+        let (eye, major) = (eye * scale, major * scale);
         let tori: Vec<Torus> = placed
             .iter()
-            .map(|(c, a)| Torus::new(c.as_vec3(), a.as_vec3(), major as f32, minor as f32))
+            .zip(&minors)
+            .map(|((c, a), r)| {
+                Torus::new(c.as_vec3(), a.as_vec3(), major as f32, (r * scale) as f32)
+            })
             .collect::<Result<_, _>>()
             .map_err(|e| SceneError(e.to_string()))?;
         let aabbs: Vec<Aabb> = tori
@@ -127,6 +165,7 @@ impl Scene {
         Ok(Scene {
             kind,
             nu,
+            scale,
             tori,
             bvh,
             camera: CameraView::framing(eye, centre, (lo.as_dvec3(), hi.as_dvec3())),
@@ -181,28 +220,135 @@ impl Scene {
         })
     }
 
-    /// Traverse the BVH, calling `leaf(torus, ray, current t_max)` at each leaf; it
-    /// returns the torus's t or +∞.
+    /// [`Scene::trace`] of a spawned ray: its own torus sees the surface ray, every other
+    /// the literal one ([`rays::Spawned::literal`]).
+    #[inline]
+    pub fn trace_spawned<C: Cull>(
+        &self,
+        cull: &C,
+        spawned: &rays::Spawned,
+        stats: &mut TraceStats,
+    ) -> SceneHit {
+        let literal = spawned.literal();
+        traverse::closest(&self.bvh, &spawned.ray, |prim, t_max| {
+            let torus = &self.tori[prim];
+            let ray = if prim == spawned.from as usize {
+                &spawned.ray
+            } else {
+                &literal
+            };
+            stats.leaf_visits += 1;
+            let line = torus.line_to_local(ray);
+            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
+                stats.cull_rejects += 1;
+                return f32::INFINITY;
+            }
+            stats.quartic_solves += 1;
+            intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+        })
+    }
+
+    /// [`Scene::occluded`] of a spawned shadow ray (its own torus sees the surface ray,
+    /// every other the literal one).
+    #[inline]
+    pub fn occluded_spawned<C: Cull>(
+        &self,
+        cull: &C,
+        spawned: &rays::Spawned,
+        stats: &mut TraceStats,
+    ) -> bool {
+        let literal = spawned.literal();
+        traverse::any(&self.bvh, &spawned.ray, |prim| {
+            let torus = &self.tori[prim];
+            let ray = if prim == spawned.from as usize {
+                &spawned.ray
+            } else {
+                &literal
+            };
+            stats.leaf_visits += 1;
+            let line = torus.line_to_local(ray);
+            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
+                stats.cull_rejects += 1;
+                return false;
+            }
+            stats.quartic_solves += 1;
+            torus_cull::occluded(torus, ray)
+        })
+    }
+
+    /// Traverse the BVH, calling `leaf(torus, ray, current t_max)` at each leaf whose box
+    /// the ray enters within `[t_min, current t_max]`; it returns the torus's t or +∞.
+    /// The lab's traversal ([`traverse`]): obvhs's own skips boxes the ray leaves before
+    /// t = 10⁻⁴.
     pub fn trace_with(
         &self,
         ray: &Ray,
         mut leaf: impl FnMut(&Torus, &Ray, f32) -> f32,
     ) -> SceneHit {
-        // CwBvh misses rays with a -0.0 direction component: adding +0.0 turns it into +0.0.
-        let traversal_ray = obvhs::ray::Ray::new(
-            Vec3A::from(ray.origin()),
-            Vec3A::from(ray.dir()) + Vec3A::ZERO,
-            ray.t_min(),
-            ray.t_max(),
-        );
-        let mut hit = RayHit::none();
-        let indices = &self.bvh.primitive_indices;
-        // Traversal ignores tmin: `intersect` honours the ray's own t_min.
-        let found = self.bvh.ray_traverse(traversal_ray, &mut hit, |r, id| {
-            let prim = indices[id] as usize;
-            leaf(&self.tori[prim], ray, r.tmax)
-        });
-        found.then(|| (indices[hit.primitive_id as usize], hit.t))
+        traverse::closest(&self.bvh, ray, |prim, t_max| {
+            leaf(&self.tori[prim], ray, t_max)
+        })
+    }
+
+    /// Whether anything blocks `ray` within `[t_min, t_max]` (a shadow ray), through the
+    /// BVH with `cull` at the leaves, stopping at the first blocker; adds to `stats`.
+    #[inline]
+    pub fn occluded<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> bool {
+        self.occluded_with(ray, |torus, ray| {
+            stats.leaf_visits += 1;
+            let line = torus.line_to_local(ray);
+            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
+                stats.cull_rejects += 1;
+                return false;
+            }
+            stats.quartic_solves += 1;
+            torus_cull::occluded(torus, ray)
+        })
+    }
+
+    /// Any-hit traversal: calls `leaf(torus, ray)` at the leaves whose box the ray
+    /// enters, until one returns `true`.
+    pub fn occluded_with(&self, ray: &Ray, mut leaf: impl FnMut(&Torus, &Ray) -> bool) -> bool {
+        traverse::any(&self.bvh, ray, |prim| leaf(&self.tori[prim], ray))
+    }
+
+    /// Whether any torus blocks `ray` within its range, with no BVH and no cull: the
+    /// ground truth for [`Scene::occluded`].
+    pub fn brute_force_occluded(&self, ray: &Ray) -> bool {
+        self.tori.iter().any(|t| torus_cull::occluded(t, ray))
+    }
+
+    /// [`Scene::brute_force`] of a spawned ray (its own torus sees the surface ray, every
+    /// other the literal one).
+    pub fn brute_force_spawned(&self, spawned: &rays::Spawned) -> SceneHit {
+        let literal = spawned.literal();
+        let mut best: SceneHit = None;
+        for (i, torus) in self.tori.iter().enumerate() {
+            let ray = if i == spawned.from as usize {
+                &spawned.ray
+            } else {
+                &literal
+            };
+            if let Some(h) = intersect(torus, ray) {
+                if best.is_none_or(|(_, t)| h.t < t) {
+                    best = Some((i as u32, h.t));
+                }
+            }
+        }
+        best
+    }
+
+    /// [`Scene::brute_force_occluded`] of a spawned shadow ray.
+    pub fn brute_force_occluded_spawned(&self, spawned: &rays::Spawned) -> bool {
+        let literal = spawned.literal();
+        self.tori.iter().enumerate().any(|(i, t)| {
+            let ray = if i == spawned.from as usize {
+                &spawned.ray
+            } else {
+                &literal
+            };
+            torus_cull::occluded(t, ray)
+        })
     }
 
     /// The BVH, for the batch traversal of [`trace_leaves_batched`].
@@ -224,10 +370,19 @@ impl Scene {
     }
 }
 
-/// Tori at random positions and axes in a cube sized for `count` of them, and an eye
-/// outside it in a random direction.
-fn ring_field(count: usize, outer: f64, rng: &mut Pcg64) -> (Vec<(DVec3, DVec3)>, DVec3) {
-    let side = 2.0 * outer * (count as f64).cbrt() * 1.5;
+/// The range of ν in the `mixed_nu` scene.
+pub const MIXED_NU: (f64, f64) = (1.25, 16.0);
+
+/// Tori at random positions and axes in a cube sized for `count` of them (`spread` outer
+/// diameters apart on average: 1.5 leaves room, 0.5 packs them so that they overlap),
+/// and an eye outside it in a random direction.
+fn ring_field(
+    count: usize,
+    outer: f64,
+    spread: f64,
+    rng: &mut Pcg64,
+) -> (Vec<(DVec3, DVec3)>, DVec3) {
+    let side = 2.0 * outer * (count as f64).cbrt() * spread;
     let placed = (0..count)
         .map(|_| {
             let c = DVec3::new(

@@ -11,4 +11,5 @@ mod batch_bvh;
 mod batch_solve;
 mod batch_wavefront;
 mod bvh;
+mod bvh_rays;
 mod certified_f32;

@@ -119,6 +119,13 @@ pub struct TimeArgs {
     /// one run in this process, with the within-run interval only.
     #[arg(long)]
     runs: Option<u64>,
+    /// Time inside the BVH instead (the workload's `bvh` scenes, `--nu` any ν, default
+    /// the workload's; the scenes it lacks at ν = 4): each cull at the leaves over `none` and `cychosz`, per ray, for
+    /// closest-hit camera rays, any-hit shadow rays and batched leaves, `--runs` runs
+    /// (default 10) in this process; metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
+    /// `bvh_batched_ns`. Default file …-bvh-time.json.
+    #[arg(long)]
+    bvh: bool,
     /// Internal: this process is worker run K of a `--runs` timing (writes its records
     /// to `--out`, prints no tables).
     #[arg(long, hide = true)]
@@ -155,6 +162,9 @@ enum Mode {
 
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    if args.bvh {
+        return bvh::run(&args);
+    }
     let mut workload = Workload::open(&args.workload)?;
     pick_cases(&args.cases, &mut workload, &args.workload)?;
     let culls = parse_culls(&args.culls)?;
@@ -683,6 +693,9 @@ fn check_writable(path: &Path) -> Result<(), String> {
     torus_cull_lab::output::check_writable(path)
         .map_err(|e| format!("--out {}: {e}", path.display()))
 }
+
+/// `torus-cull time --bvh`.
+mod bvh;
 
 /// `torus-cull time --device gpu`.
 #[cfg(feature = "gpu")]

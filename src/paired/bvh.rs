@@ -1,0 +1,447 @@
+//! Paired timing inside the BVH: each cull at the leaves against `none` and `cychosz`
+//! at the leaves, per ray traced through a whole scene, in the module's interleaved
+//! rounds (docs of [`super`]), with within- and between-run intervals.
+//!
+//! Per scene × ν, the contenders, one pass each over the same rays per round, in a
+//! shuffled order:
+//!
+//! - **closest-hit** (`bvh_closest_ns`): the camera rays through [`Scene::trace`], each
+//!   cull of the list at the leaves;
+//! - **any-hit** (`bvh_anyhit_ns`): one shadow ray per camera hit to the scene's light
+//!   ([`crate::scene::rays`]) through [`Scene::occluded_spawned`], stopping at the first
+//!   blocker;
+//! - **batched leaves** (`bvh_batched_ns`): the camera rays through
+//!   [`trace_leaves_batched`] (every leaf candidate collected, then the wavefront torus
+//!   by torus), for each cull with a batch form.
+//!
+//! Each ratio is a cull's time over `none`'s and over `cychosz`'s under the same metric;
+//! a batched cull is also timed over its own scalar closest-hit traversal (reference
+//! [`SCALAR_REFERENCE`]): whether batching the leaves pays.
+//!
+//! Runs: `runs` runs in this process, each on scenes and ray buffers built afresh (a
+//! fresh heap layout), the scene × ν units visited in turn for [`VISIT`] each until the
+//! run's share of the time is spent, so that a slow spell falls on all of them alike.
+//! [`combine_runs`] gives every record its between-run interval, as for `time --runs`.
+
+use super::engine::Interleaver;
+use super::runs::{RunsDiffer, combine_runs};
+use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
+use super::sweep::undisturbed;
+use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
+use crate::scene::rays::{Spawned, light, shadow_rays};
+use crate::scene::{Scene, SceneKind, TraceStats, same_hit, trace_leaves_batched};
+use std::fmt;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+use torus_cull::batch::{BatchCull, Dispatch};
+use torus_cull::{Cull, CullKind, CullVisitor, Named, NoCull, Ray};
+
+/// The closest-hit traversal's metric.
+pub const BVH_CLOSEST: &str = "bvh_closest_ns";
+/// The any-hit (shadow ray) traversal's metric.
+pub const BVH_ANYHIT: &str = "bvh_anyhit_ns";
+/// The batched leaves' metric.
+pub const BVH_BATCHED: &str = "bvh_batched_ns";
+/// The BVH metrics, in table order.
+pub const BVH_METRICS: [&str; 3] = [BVH_CLOSEST, BVH_ANYHIT, BVH_BATCHED];
+/// The reference of a batched cull timed over its own scalar closest-hit traversal.
+pub const SCALAR_REFERENCE: &str = "scalar";
+
+/// How long one visit to a scene × ν lasts before the next one's turn.
+pub const VISIT: Duration = Duration::from_millis(100);
+
+/// The references of every ratio.
+const REFERENCES: [CullKind; 2] = [CullKind::NoCull, CullKind::Cychosz];
+
+/// What to time.
+#[derive(Debug, Clone)]
+pub struct BvhTiming {
+    /// Scene layouts and the ν of their tori, in turn.
+    pub units: Vec<(SceneKind, f64)>,
+    /// Tori per scene.
+    pub tori: usize,
+    /// Scene seed.
+    pub seed: u64,
+    /// Culls at the leaves (`none` and `cychosz` are timed in any case).
+    pub culls: Vec<CullKind>,
+    /// Camera rays per timed pass (and at most as many shadow rays).
+    pub rays: usize,
+    /// Seconds in all, shared by the runs.
+    pub seconds: f64,
+    /// Independent runs.
+    pub runs: usize,
+    /// The wavefront's instruction set, for the batched leaves.
+    pub dispatch: Dispatch,
+}
+
+/// Why a BVH timing failed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BvhTimingError {
+    /// A scene could not be built.
+    Scene(String),
+    /// A cull gave another answer than `none` at the leaves (a bug: the culls are
+    /// conservative and the tests hold them to brute force).
+    Mismatch(String),
+    /// A record had no usable round.
+    NoRounds(String),
+    /// The runs' records differ.
+    Runs(RunsDiffer),
+}
+
+impl fmt::Display for BvhTimingError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BvhTimingError::Scene(e) => write!(f, "BVH scene: {e}"),
+            BvhTimingError::Mismatch(e) => write!(f, "BVH answers differ: {e}"),
+            BvhTimingError::NoRounds(e) => write!(f, "BVH timing: no usable rounds for {e}"),
+            BvhTimingError::Runs(e) => write!(f, "BVH timing: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for BvhTimingError {}
+
+/// One scene × ν with its rays and contenders.
+struct Unit {
+    scene: Scene,
+    camera: Vec<Ray>,
+    shadow: Vec<Spawned>,
+}
+
+/// One record to make: the cull, the metric, its contender, and each reference's name
+/// and contender.
+type Planned = (CullKind, &'static str, usize, Vec<(String, usize)>);
+
+/// The contenders of a unit: the culls' closest-hit passes, their any-hit passes, then
+/// the batched culls' passes.
+struct Lineup {
+    culls: Vec<CullKind>,
+    batched: Vec<BatchCull>,
+}
+
+impl Lineup {
+    fn new(asked: &[CullKind]) -> Lineup {
+        let mut culls: Vec<CullKind> = CullKind::TIMED
+            .iter()
+            .copied()
+            .filter(|k| asked.contains(k) || REFERENCES.contains(k))
+            .collect();
+        culls.dedup();
+        let batched = culls.iter().filter_map(|k| k.batched()).collect();
+        Lineup { culls, batched }
+    }
+
+    fn len(&self) -> usize {
+        2 * self.culls.len() + self.batched.len()
+    }
+
+    fn closest(&self, k: CullKind) -> usize {
+        self.culls
+            .iter()
+            .position(|&c| c == k)
+            .expect("in the lineup")
+    }
+
+    fn anyhit(&self, k: CullKind) -> usize {
+        self.culls.len() + self.closest(k)
+    }
+
+    fn batched(&self, k: CullKind) -> Option<usize> {
+        let b = k.batched()?;
+        let i = self.batched.iter().position(|&c| c == b)?;
+        Some(2 * self.culls.len() + i)
+    }
+
+    /// (cull, metric, contender, [(reference name, reference contender)]) of every record.
+    fn records(&self) -> Vec<Planned> {
+        let mut out = Vec::new();
+        let against = |of: &dyn Fn(CullKind) -> Option<usize>, k: CullKind| {
+            REFERENCES
+                .iter()
+                .filter(|&&r| r != k)
+                .filter_map(|&r| Some((r.name().to_string(), of(r)?)))
+                .collect::<Vec<_>>()
+        };
+        for &k in &self.culls {
+            let closest = |c| Some(self.closest(c));
+            out.push((k, BVH_CLOSEST, self.closest(k), against(&closest, k)));
+        }
+        for &k in &self.culls {
+            let anyhit = |c| Some(self.anyhit(c));
+            out.push((k, BVH_ANYHIT, self.anyhit(k), against(&anyhit, k)));
+        }
+        for &k in &self.culls {
+            if let Some(i) = self.batched(k) {
+                let mut refs = against(&|c| self.batched(c), k);
+                refs.push((SCALAR_REFERENCE.to_string(), self.closest(k)));
+                out.push((k, BVH_BATCHED, i, refs));
+            }
+        }
+        out
+    }
+}
+
+/// The paired BVH ratios of `timing`, `progress(done, all)` called after every visit.
+pub fn time_bvh(
+    timing: &BvhTiming,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<RatioRecord>, BvhTimingError> {
+    let lineup = Lineup::new(&timing.culls);
+    let per_run = timing.seconds / timing.runs.max(1) as f64;
+    let units_count = timing.units.len();
+    let visits_per_run = ((per_run / VISIT.as_secs_f64()).ceil() as usize).max(units_count);
+    let all = visits_per_run * timing.runs;
+    let mut done = 0;
+    let mut runs = Vec::new();
+    for run in 0..timing.runs {
+        let units = build_units(timing)?;
+        let mut rounds: Vec<Interleaver> = (0..units.len())
+            .map(|u| Interleaver::new(lineup.len(), timing.seed ^ (run * 1000 + u) as u64))
+            .collect();
+        let start = Instant::now();
+        let mut visit = 0;
+        while visit < units.len() || start.elapsed().as_secs_f64() < per_run {
+            let u = visit % units.len();
+            let mut time_one = |i: usize| pass(&units[u], &lineup, i, &timing.dispatch);
+            let discard = usize::from(visit < units.len());
+            rounds[u].visit(&mut time_one, discard, VISIT, 3, usize::MAX);
+            visit += 1;
+            done += 1;
+            progress(done.min(all), all);
+        }
+        let mut records = Vec::new();
+        for (unit, r) in units.iter().zip(&rounds) {
+            push_records(&mut records, unit, r, &lineup, timing.seed)?;
+        }
+        runs.push(records);
+    }
+    combine_runs(&runs).map_err(BvhTimingError::Runs)
+}
+
+/// Every scene × ν, built afresh, with its camera and shadow rays; checks that every
+/// cull gives `none`'s answers on them.
+fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
+    let mut units = Vec::new();
+    for &(kind, nu) in &timing.units {
+        let scene = Scene::build(kind, nu, timing.tori, timing.seed)
+            .map_err(|e| BvhTimingError::Scene(e.to_string()))?;
+        let (camera, shadow) = unit_rays(&scene, timing.rays);
+        let lineup = Lineup::new(&timing.culls);
+        for &cull in &lineup.culls {
+            if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow)) {
+                return Err(BvhTimingError::Mismatch(format!(
+                    "{} {kind} nu={nu}: {e}",
+                    cull.name()
+                )));
+            }
+        }
+        units.push(Unit {
+            scene,
+            camera,
+            shadow,
+        });
+    }
+    Ok(units)
+}
+
+/// `n` camera rays (every 4th of an image of about 4n pixels) and one shadow ray per hit
+/// of the whole image, evenly strided down to at most `n`.
+pub fn unit_rays(scene: &Scene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
+    let side = ((4 * n.max(1)) as f64).sqrt().ceil() as usize;
+    let image = scene.camera_rays(side);
+    let hits: Vec<_> = image
+        .iter()
+        .map(|r| scene.trace(&NoCull, r, &mut TraceStats::default()))
+        .collect();
+    let stride = image.len().div_ceil(n.max(1)).max(1);
+    let camera: Vec<Ray> = image.iter().step_by(stride).copied().collect();
+    let shadow = shadow_rays(scene, &image, &hits, light(scene), 1.0);
+    let stride = shadow.len().div_ceil(n.max(1)).max(1);
+    let shadow = shadow.into_iter().step_by(stride).collect();
+    (camera, shadow)
+}
+
+/// Whether a cull at the leaves answers as `none` does on a unit's rays: `None`, or the
+/// first ray that differs.
+struct Agree<'a>(&'a Scene, &'a [Ray], &'a [Spawned]);
+
+impl CullVisitor for Agree<'_> {
+    type Output = Option<String>;
+    fn visit<C: Cull>(self, cull: C) -> Option<String> {
+        let (scene, camera, shadow) = (self.0, self.1, self.2);
+        let mut stats = TraceStats::default();
+        for ray in camera {
+            let (a, b) = (
+                scene.trace(&cull, ray, &mut stats),
+                scene.trace(&NoCull, ray, &mut stats),
+            );
+            if !same_hit(a, b) {
+                return Some(format!("closest {ray:?}: {a:?} vs none {b:?}"));
+            }
+        }
+        for s in shadow {
+            let (a, b) = (
+                scene.occluded_spawned(&cull, s, &mut stats),
+                scene.occluded_spawned(&NoCull, s, &mut stats),
+            );
+            if a != b {
+                return Some(format!("any-hit {s:?}: {a} vs none {b}"));
+            }
+        }
+        None
+    }
+}
+
+/// One timed pass of contender `i` over its unit's rays.
+fn pass(unit: &Unit, lineup: &Lineup, i: usize, dispatch: &Dispatch) -> Duration {
+    let n = lineup.culls.len();
+    if i < n {
+        lineup.culls[i].visit(Closest(&unit.scene, &unit.camera))
+    } else if i < 2 * n {
+        lineup.culls[i - n].visit(AnyHit(&unit.scene, &unit.shadow))
+    } else {
+        let cull = lineup.batched[i - 2 * n];
+        let start = Instant::now();
+        let mut stats = crate::scene::LeafBatchStats::default();
+        let hits = trace_leaves_batched(
+            &unit.scene,
+            dispatch,
+            cull,
+            black_box(&unit.camera),
+            &mut stats,
+        );
+        black_box((hits, stats));
+        start.elapsed()
+    }
+}
+
+/// A timed closest-hit pass, monomorphized per cull.
+struct Closest<'a>(&'a Scene, &'a [Ray]);
+
+impl CullVisitor for Closest<'_> {
+    type Output = Duration;
+    #[inline(never)]
+    fn visit<C: Cull>(self, cull: C) -> Duration {
+        let start = Instant::now();
+        let mut stats = TraceStats::default();
+        let mut hits = 0usize;
+        for ray in black_box(self.1) {
+            hits += usize::from(self.0.trace(&cull, ray, &mut stats).is_some());
+        }
+        black_box((hits, stats));
+        start.elapsed()
+    }
+}
+
+/// A timed any-hit pass over shadow rays, monomorphized per cull.
+struct AnyHit<'a>(&'a Scene, &'a [Spawned]);
+
+impl CullVisitor for AnyHit<'_> {
+    type Output = Duration;
+    #[inline(never)]
+    fn visit<C: Cull>(self, cull: C) -> Duration {
+        let start = Instant::now();
+        let mut stats = TraceStats::default();
+        let mut blocked = 0usize;
+        for s in black_box(self.1) {
+            blocked += usize::from(self.0.occluded_spawned(&cull, s, &mut stats));
+        }
+        black_box((blocked, stats));
+        start.elapsed()
+    }
+}
+
+/// Appends one unit's records of one run, from its quiet rounds.
+fn push_records(
+    records: &mut Vec<RatioRecord>,
+    unit: &Unit,
+    r: &Interleaver,
+    lineup: &Lineup,
+    seed: u64,
+) -> Result<(), BvhTimingError> {
+    let quiet = quiet_rounds(&r.ns, &undisturbed(&r.disturbed), QUIET_FRACTION);
+    let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
+    let scene = &unit.scene;
+    for (cull, metric, contender, references) in lineup.records() {
+        let rays = if metric == BVH_ANYHIT {
+            unit.shadow.len()
+        } else {
+            unit.camera.len()
+        };
+        for (reference, reference_index) in references {
+            let bootstrap_seed = seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
+            let e = ratio_estimate(
+                &pick(contender),
+                &pick(reference_index),
+                rays as f64,
+                bootstrap_seed,
+            )
+            .ok_or_else(|| {
+                BvhTimingError::NoRounds(format!(
+                    "{} {} {}/{reference} {metric}",
+                    scene.kind,
+                    scene.nu,
+                    cull.name()
+                ))
+            })?;
+            records.push(RatioRecord {
+                case: scene.kind.name().to_string(),
+                nu: scene.nu,
+                cull: cull.name().to_string(),
+                reference,
+                metric: metric.to_string(),
+                ratio: e.ratio,
+                ratio_ci: e.ratio_ci,
+                rounds: e.rounds as u64,
+                rounds_measured: r.rounds() as u64,
+                rays: rays as u64,
+                ns_per_ray: e.ns_per_ray,
+                reference_ns_per_ray: e.reference_ns_per_ray,
+                precision: F64_PRECISION.to_string(),
+                device: CPU_DEVICE.to_string(),
+                escalation_rate: None,
+                runs: 1,
+                runs_set_aside: 0,
+                run_ratios: Vec::new(),
+                ratio_ci_between: None,
+                run_spread: None,
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every cull, metric and reference comes out, finite, with a between-run interval,
+    /// at a tiny size (speed is the command's).
+    #[test]
+    fn every_record_is_reported_with_a_between_run_interval() {
+        let timing = BvhTiming {
+            units: vec![(SceneKind::FacingGrid, 4.0)],
+            tori: 16,
+            seed: 3,
+            culls: CullKind::TIMED.to_vec(),
+            rays: 32,
+            seconds: 0.2,
+            runs: 2,
+            dispatch: Dispatch::best(),
+        };
+        let records = time_bvh(&timing, &mut |_, _| {}).unwrap();
+        let n = CullKind::TIMED.len();
+        let batched = CullKind::TIMED
+            .iter()
+            .filter(|k| k.batched().is_some())
+            .count();
+        // Each cull over none and cychosz but itself, per metric; batched also over scalar.
+        assert_eq!(records.len(), 2 * (2 * n - 2) + (2 * batched - 2) + batched);
+        for r in &records {
+            assert!(r.ratio.is_finite() && r.ratio > 0.0, "{r:?}");
+            assert_eq!(r.runs + r.runs_set_aside, 2, "{r:?}");
+            assert!(BVH_METRICS.contains(&r.metric.as_str()));
+        }
+        assert!(records.iter().any(|r| r.reference == SCALAR_REFERENCE));
+    }
+}
