@@ -414,6 +414,12 @@ impl<P: Precision> Ray<P> {
     /// of the surface: any surface point rounded to f32 within about 1 600·(R + r) of the
     /// world origin does (docs/math.md §9). The lab's `eval` refuses an `on_surface` row
     /// farther off; the library does not know the torus here and cannot.
+    ///
+    /// **Only for the surface it left.** The mark names no shape: a torus whose surface
+    /// passes within 10⁻²·R of the origin takes the origin as its own point and divides
+    /// its root out. In a scene, test the spawned ray on its own shape and its
+    /// [`Ray::literal`] on every other one: a neighbour that touches the origin's shape
+    /// (interlocked links) would otherwise report a crossing the line does not have.
     pub fn from_surface(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
         Ray::from_surface_with_range(
             origin,
@@ -448,6 +454,17 @@ impl<P: Precision> Ray<P> {
             on_surface: true,
             ..Ray::with_range(origin, dir, t_min, t_max)?
         })
+    }
+
+    /// The same ray, not marked as starting on a surface: what a spawned ray is for every
+    /// shape but the one it left ([`Ray::from_surface`]).
+    #[inline]
+    #[must_use]
+    pub const fn literal(&self) -> Ray<P> {
+        Ray {
+            on_surface: false,
+            ..*self
+        }
     }
 
     /// Whether the origin is a point of the surface ([`Ray::from_surface`]).
