@@ -273,6 +273,25 @@ impl FamilyQuery {
         out
     }
 
+    /// Every critical point of E on the whole line and every cut between the monotone
+    /// pieces of its slope, as t, sorted: E is monotone between consecutive ones (and
+    /// beyond the first and the last). Empty for a line whose numbers overflow. For the
+    /// pipe-bend oracle (`oracle::bend`), which needs D's monotone pieces.
+    pub fn critical_ts(&self) -> Vec<f64> {
+        self.check_line();
+        let line = Line::new(self);
+        if !line.is_finite() {
+            return Vec::new();
+        }
+        let mut out: Vec<f64> = line
+            .stationary()
+            .into_iter()
+            .map(|s| line.t_of_s(s))
+            .collect();
+        out.sort_by(f64::total_cmp);
+        out
+    }
+
     /// The first point of [`FamilyQuery::crossings`] (entering, leaving or touching: a ray
     /// that starts at a horn's centre and runs into the tube reports t = 0).
     pub fn first_crossing(&self) -> Option<f64> {

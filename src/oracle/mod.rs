@@ -34,6 +34,7 @@
 //! tube), by its own method on `E = √(((ρ − R)/a)² + (y/b)²)`, with its own second method
 //! and on-surface rule.
 
+pub mod bend;
 pub mod family;
 mod frame;
 mod from_surface;

@@ -8,6 +8,7 @@ use torus_cull_lab::oracle::{
 use torus_cull_lab::workload::{Batch, Case, Pose, generate};
 
 pub mod adversarial;
+pub mod bend;
 
 /// Whether this is a CI run: the environment variable `CI` is `true` (or `1`), as CI
 /// services set it.

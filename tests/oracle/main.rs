@@ -8,6 +8,7 @@
 mod common;
 
 mod adversarial;
+mod bend;
 mod capture;
 mod conservative;
 mod errata;

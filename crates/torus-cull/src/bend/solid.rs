@@ -291,8 +291,10 @@ impl PipeBend {
             self.bore_radius_f64().powi(2),
             self.tube_radius_f64().powi(2),
         );
+        // With no bore the core circle itself (D = 0) is interior: `d2 > 0` would drop a
+        // ray whose interval midpoint lies on it (a ray down through the core circle).
         let radial = if strict {
-            d2 > lo && d2 < hi
+            (self.inner.is_none() || d2 > lo) && d2 < hi
         } else {
             d2 >= lo && d2 <= hi
         };

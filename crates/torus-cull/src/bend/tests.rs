@@ -270,3 +270,37 @@ fn rays_from_the_caps_edges_never_hit_their_origin() {
     }
     assert!(hits > 100, "{hits}");
 }
+
+/// Regression (found by the lab's bend oracle): with no bore, the interval test left the
+/// core circle itself out of the solid (`D² > 0`), so a ray whose two outer crossings
+/// have their midpoint exactly on the core circle (down through it, or radially across
+/// it) was answered as a miss.
+#[test]
+fn a_ray_through_the_core_circle_of_a_solid_bend_hits() {
+    let bend = PipeBend::canonical(30.0, 0.0, 10.0, FRAC_PI_4, 3.0 * FRAC_PI_4).unwrap();
+    let rays = [
+        (
+            DRay::new(DVec3::new(0.0, 50.0, -30.0), DVec3::NEG_Y).unwrap(),
+            40.0,
+            60.0,
+        ),
+        (
+            DRay::new(DVec3::new(-50.0, 0.0, -30.0), DVec3::X).unwrap(),
+            50.0 - 700f64.sqrt(),
+            50.0 + 700f64.sqrt(),
+        ),
+    ];
+    for (ray, enter, exit) in rays {
+        let hit = bend
+            .intersect(&ray)
+            .unwrap_or_else(|| panic!("{ray:?} missed"));
+        assert!(hit.front_face && hit.face == BendFace::Outer);
+        assert!((hit.t - enter).abs() < 1e-12 * 40.0, "{hit:?}");
+        let all = crossings(&bend, &ray);
+        assert_eq!(all.len(), 2, "{all:?}");
+        assert!((all[1].0 - exit).abs() < 1e-12 * 40.0 && all[1].1 == Passage::Exit);
+        assert!(bend.occluded(&ray));
+    }
+    // The core circle itself is inside.
+    assert!(bend.contains(DVec3::new(0.0, 0.0, -30.0)));
+}
