@@ -23,7 +23,7 @@ pub const REFERENCES: [CullKind; 2] = [CullKind::Cychosz, CullKind::NoCull];
 const CULL_PASS_TARGET: Duration = Duration::from_micros(25);
 
 /// Fewest rounds left alone by the operating system that are used on their own.
-const MIN_UNDISTURBED: usize = 20;
+pub const MIN_UNDISTURBED: usize = 20;
 
 /// How much to measure, over all (case, ν) together.
 #[derive(Debug, Clone, Copy, PartialEq)]
