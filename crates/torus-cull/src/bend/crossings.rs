@@ -104,15 +104,14 @@ pub(super) fn own_faces(bend: &PipeBend, x: DVec3) -> OwnFaces {
     let reach = FACE_REACH * size;
     let mut faces = [false; 4];
     let mut point = x;
-    let rho = x.x.hypot(x.z);
-    let core = DVec3::new(x.x, 0.0, x.z) * (bend.major_radius_f64() / rho);
-    let off = x - core;
-    let dist = off.length();
-    let radii = [(0, bend.tube_radius_f64()), (1, bend.bore_radius_f64())];
-    for (i, r) in radii {
-        if r > 0.0 && rho > 0.0 && dist > 0.0 && (dist - r).abs() <= reach {
+    // A point within reach of a torus face is off the axis and the core circle (R > r),
+    // where the projection is the unique closest point.
+    for (i, torus) in [(0, Some(bend.outer)), (1, bend.inner)] {
+        let Some(torus) = torus else { continue };
+        let (on, _, signed_distance) = torus.tube().project(x);
+        if signed_distance.abs() <= reach {
             faces[i] = true;
-            point = core + off * (r / dist);
+            point = on;
         }
     }
     if let Some(w) = bend.wedge {

@@ -326,7 +326,7 @@ impl PipeBend {
     #[must_use]
     pub fn nearest_face_point(&self, p: DVec3) -> DVec3 {
         let local = self.local_point(p);
-        let moved = super::crossings::own_faces(self, local).point;
-        self.outer.to_local_rotation_f64().transpose() * moved + self.outer.center_f64()
+        self.outer
+            .point_to_world_f64(super::crossings::own_faces(self, local).point)
     }
 }

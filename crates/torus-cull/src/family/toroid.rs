@@ -408,14 +408,14 @@ impl Toroid {
         if self.y_scale == 1.0 {
             return self.image.nearest_surface_point(p);
         }
-        let rot = self.image.to_local_rotation_f64();
-        let local = rot * (p - self.center_f64());
+        let Ok(local) = self.image.point_to_local_f64(p) else {
+            return p;
+        };
         let image = DVec3::new(local.x, local.y * self.y_scale, local.z);
         match self.image.tube().nearest_surface_point(image) {
-            Some(on) => {
-                let back = DVec3::new(on.x, on.y / self.y_scale, on.z);
-                rot.transpose() * back + self.center_f64()
-            }
+            Some(on) => self
+                .image
+                .point_to_world_f64(DVec3::new(on.x, on.y / self.y_scale, on.z)),
             None => p,
         }
     }

@@ -231,23 +231,9 @@ impl Torus {
         major_radius: f32,
         minor_radius: f32,
     ) -> Result<Torus, TorusError> {
-        validate(
-            center.as_dvec3(),
-            axis.as_dvec3(),
-            f64::from(major_radius),
-            f64::from(minor_radius),
-        )?;
-        // The stored f32 axis *is* the torus: the f64 rotation (and the oracle) start from it,
-        // so both paths agree on the same surface to f64 precision.
-        let axis = axis.as_dvec3().normalize().as_vec3();
         let (major, minor) = (f64::from(major_radius), f64::from(minor_radius));
-        Ok(Torus::build(
-            (center, center.as_dvec3()),
-            (axis, axis.as_dvec3().normalize()),
-            (major_radius, major),
-            (minor_radius, minor),
-            minor_radius,
-        ))
+        check_hole(major, minor)?;
+        Torus::image(center.as_dvec3(), axis.as_dvec3(), major, minor, false)
     }
 
     /// A torus from f64 geometry, kept in f64 for the exact intersection (see the type's
@@ -283,31 +269,14 @@ impl Torus {
         major_radius: f64,
         minor_radius: f64,
     ) -> Result<Torus, TorusError> {
-        validate(center, axis, major_radius, minor_radius)?;
-        let center_f32 = center.as_vec3();
-        if !center_f32.is_finite() {
-            return Err(TorusError::NonFiniteCenter(center_f32));
-        }
-        // Scaled to its largest component first, so that |axis|² neither overflows nor
-        // underflows.
-        let unit = (axis / axis.abs().max_element()).normalize();
-        let major_f32 = major_radius as f32;
-        // The culls' tube: around the circle of radius R rounded, it must hold the f64
-        // tube, whose points are within r + |R − R_f32| of that circle.
-        let minor_cull = round_up(minor_radius + (major_radius - f64::from(major_f32)).abs());
-        Ok(Torus::build(
-            (center_f32, center),
-            (unit.as_vec3(), unit),
-            (major_f32, major_radius),
-            (minor_radius as f32, minor_radius),
-            minor_cull,
-        ))
+        check_hole(major_radius, minor_radius)?;
+        Torus::image(center, axis, major_radius, minor_radius, true)
     }
 
-    /// The circular image of a torus-family member (`crate::family::Toroid`): the same
-    /// construction as [`Torus::new`] (`f64_geometry` false) or [`Torus::new_f64`], without
-    /// the hole's rule, so R ≤ r (a horn or spindle) is built too. Only the family, which
-    /// answers R ≤ r with the apple's roots alone, may hold such a torus.
+    /// [`Torus::new`] (`f64_geometry` false: the values are f32's, widened) or
+    /// [`Torus::new_f64`] without the hole's rule, so R ≤ r (a horn or spindle) is built
+    /// too: the circular image of a torus-family member (`crate::family::Toroid`). Only
+    /// the family, which answers R ≤ r with the apple's roots alone, may hold such a torus.
     pub(crate) fn image(
         center: DVec3,
         axis: DVec3,
@@ -318,6 +287,8 @@ impl Torus {
         validate_image(center, axis, major_radius, minor_radius)?;
         if !f64_geometry {
             let (center, axis) = (center.as_vec3(), axis.as_vec3());
+            // The stored f32 axis *is* the torus: the f64 rotation (and the oracle) start
+            // from it, so both paths agree on the same surface to f64 precision.
             let axis = axis.as_dvec3().normalize().as_vec3();
             let (major, minor) = (major_radius as f32, minor_radius as f32);
             return Ok(Torus::build(
@@ -332,8 +303,12 @@ impl Torus {
         if !center_f32.is_finite() {
             return Err(TorusError::NonFiniteCenter(center_f32));
         }
+        // Scaled to its largest component first, so that |axis|² neither overflows nor
+        // underflows.
         let unit = (axis / axis.abs().max_element()).normalize();
         let major_f32 = major_radius as f32;
+        // The culls' tube: around the circle of radius R rounded, it must hold the f64
+        // tube, whose points are within r + |R − R_f32| of that circle.
         let minor_cull = round_up(minor_radius + (major_radius - f64::from(major_f32)).abs());
         Ok(Torus::build(
             (center_f32, center),
@@ -709,14 +684,7 @@ impl Torus {
         major_radius: f64,
         minor_radius: f64,
     ) -> Result<Torus, TorusError> {
-        let m = transform.matrix3;
-        let scale = m.determinant().cbrt();
-        let rigid = m * (1.0 / scale);
-        let off = (rigid.transpose() * rigid - DMat3::IDENTITY).to_cols_array();
-        let similar = scale.is_finite() && scale > 0.0 && off.iter().all(|e| e.abs() <= 1e-9);
-        if !similar {
-            return Err(TorusError::NotSimilarity);
-        }
+        let (rigid, scale) = similarity(transform.matrix3, 1e-9)?;
         Torus::new_f64(
             transform.translation,
             rigid * DVec3::Y,
@@ -740,17 +708,11 @@ impl Torus {
             transform.matrix3.y_axis.as_dvec3(),
             transform.matrix3.z_axis.as_dvec3(),
         );
-        let t = glam::DAffine3::from_mat3_translation(m, transform.translation.as_dvec3());
         // f32 entries are off by 2⁻²⁴ relative: allow that, not more.
-        let scale = m.determinant().cbrt();
-        let rigid = m * (1.0 / scale);
-        let off = (rigid.transpose() * rigid - DMat3::IDENTITY).to_cols_array();
-        if !(scale.is_finite() && scale > 0.0 && off.iter().all(|e| e.abs() <= 1e-6)) {
-            return Err(TorusError::NotSimilarity);
-        }
+        let (rigid, scale) = similarity(m, 1e-6)?;
         let unit = rigid * DVec3::Y;
         Torus::new(
-            t.translation.as_vec3(),
+            Vec3::from(transform.translation),
             unit.as_vec3(),
             (f64::from(major_radius) * scale) as f32,
             (f64::from(minor_radius) * scale) as f32,
@@ -816,8 +778,22 @@ impl Torus {
     }
 }
 
-/// Checks [`Torus::new`]'s rules on f64 values (f32 ones widened exactly).
-fn validate(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
+/// The linear part `m` of an instance transform as a rotation and a uniform positive
+/// scale, `m = scale·rigid`, each entry of `rigidᵀ·rigid − I` within `tolerance`.
+fn similarity(m: DMat3, tolerance: f64) -> Result<(DMat3, f64), TorusError> {
+    let scale = m.determinant().cbrt();
+    let rigid = m * (1.0 / scale);
+    let off = (rigid.transpose() * rigid - DMat3::IDENTITY).to_cols_array();
+    if scale.is_finite() && scale > 0.0 && off.iter().all(|e| e.abs() <= tolerance) {
+        Ok((rigid, scale))
+    } else {
+        Err(TorusError::NotSimilarity)
+    }
+}
+
+/// The hole's rule of [`Torus::new`]: R > r, checked on positive finite radii only (the
+/// others are [`validate_image`]'s to refuse, as `BadRadius`, which comes first).
+fn check_hole(major: f64, minor: f64) -> Result<(), TorusError> {
     let positive = |v: f64| v.is_finite() && v > 0.0;
     if positive(major) && positive(minor) && major <= minor {
         return Err(TorusError::NoHole {
@@ -825,10 +801,11 @@ fn validate(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), To
             minor_radius: minor as f32,
         });
     }
-    validate_image(center, axis, major, minor)
+    Ok(())
 }
 
-/// [`validate`] without the hole: the rules of a torus-family member's circular image
+/// [`Torus::new`]'s rules on f64 values (f32 ones widened exactly) but the hole's
+/// ([`check_hole`]): also those of a torus-family member's circular image
 /// (`crate::family`), which refuses its own ratios.
 fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
     for (name, value) in [("major_radius", major), ("minor_radius", minor)] {
