@@ -702,3 +702,53 @@ fn gpu_info_needs_the_feature() {
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(stderr.contains("--features gpu"), "{stderr}");
 }
+
+/// `time --family` and `time --bend` at a tiny size: every member or bend with its ratios
+/// (finite, positive, with a between-run interval), written as the file's one section.
+#[test]
+fn family_and_bend_timing_write_every_shape_and_ratio() {
+    let dir = tempfile::tempdir().unwrap();
+    let workload = tiny_workload(dir.path());
+    let culls = torus_cull::CullKind::TIMED.len();
+    for (flag, section, shapes, per_shape) in [
+        ("--family", "family", 8, 2 + culls),
+        ("--bend", "bend", 6, 4 * culls),
+    ] {
+        let out = dir.path().join(format!("{section}.json"));
+        let args = [
+            "time",
+            flag,
+            "--workload",
+            &workload,
+            "--seconds",
+            "1",
+            "--batch",
+            "16",
+        ];
+        let o = torus_cull(&[&args[..], &["--out", out.to_str().unwrap()]].concat());
+        assert!(
+            o.status.success(),
+            "{flag}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let file: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+        assert_eq!(file["meta"]["tool"], format!("time-{section}"));
+        let records = file[section].as_array().expect("the section");
+        assert_eq!(records.len(), shapes, "{flag}");
+        for shape in records {
+            let ratios = shape["ratios"].as_array().unwrap();
+            assert_eq!(ratios.len(), per_shape, "{flag}");
+            for r in ratios {
+                let ratio = r["ratio"].as_f64().unwrap();
+                assert!(ratio.is_finite() && ratio > 0.0, "{flag}: {r}");
+                assert!(r["between"].is_array(), "{flag}: {r}");
+            }
+        }
+    }
+    // The two are one choice: asked together, they are refused naming both.
+    let o = torus_cull(&["time", "--family", "--bend", "--workload", &workload]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("--bend") && err.contains("--family"), "{err}");
+}
