@@ -288,48 +288,70 @@ fn host_and_device_finishes_agree() {
     }
 }
 
-/// Lines perpendicular to the axis that touch the top of the tube (an even quartic whose
-/// `p² − 4r` is within rounding of 0 at the foot point): the CPU decides them with a fused
-/// multiply-add, which WGSL does not promise, so the device pass hands them to the host,
-/// and the answers are the CPU's f64 path's.
+/// Lines perpendicular to the axis at the height of the tube's top (an even quartic whose
+/// `p² − 4r` is within rounding of 0: tangent at two points symmetric about the foot
+/// point), and at ±1…±6 f32 steps above and below it, at three sizes and poses off the
+/// origin, in many directions: the CPU decides the sign with a fused multiply-add, the
+/// device with its fma-free exact sign (`tc_disc_sign64`, proved against the fused one in
+/// quartic/exact_sign.rs). Every escalated ray is finished on the device, none on the
+/// host, with the CPU's hit or miss and t within the device tolerance.
 #[test]
-fn even_tangents_at_the_foot_point_go_to_the_host() {
-    use torus_cull::gpu::Finished;
+fn even_tangents_at_the_foot_point_are_finished_on_the_device() {
+    use torus_cull::gpu::{FinishCounts, Finished};
     let Some(gpu) = gpu() else { return };
     if !gpu.finishes_on_device() {
         return;
     }
-    let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0).unwrap();
-    // Along x at the height of the tube's top (y = r), through z = 0: the line is tangent
-    // to the tube at x = ±4, and symmetric about its foot point x = 0.
-    let rays: Vec<Ray> = [-20.0f32, -10.0, -6.0]
-        .iter()
-        .flat_map(|&x| {
-            [
-                Ray::new(Vec3::new(x, 1.0, 0.0), Vec3::X).unwrap(),
-                Ray::new(Vec3::new(-x, 1.0, 0.0), Vec3::NEG_X).unwrap(),
-            ]
-        })
-        .collect();
-    let answers = gpu
-        .intersect_finished_where(&torus, GpuCull::NoCull, &rays)
-        .unwrap();
-    // The f32 kernel cannot prove an exact tangent: these reach the f64 pass.
-    assert!(
-        answers.iter().all(|(_, f)| *f == Finished::Host),
-        "{:?}",
-        answers.iter().map(|(_, f)| f).collect::<Vec<_>>()
-    );
-    for (ray, (answer, finished)) in rays.iter().zip(&answers) {
-        assert_ne!(
-            *finished,
-            Finished::Device,
-            "{ray:?}: decided on the device"
-        );
-        assert_eq!(
-            answer.hit.map(|h| h.t.to_bits()),
-            torus_cull::intersect(&torus, ray).map(|h| h.t.to_bits()),
-            "{ray:?}"
-        );
+    let (mut rays_total, mut bits_equal, mut hits) = (0, 0, 0);
+    let mut counts = [0usize; 3];
+    for (centre, major, minor) in [
+        (Vec3::ZERO, 4.0f32, 1.0f32),
+        (Vec3::new(3.0, -2.0, 7.0), 2.0, 0.5),
+        (Vec3::new(-1e3, 250.0, 40.0), 300.0, 0.75),
+    ] {
+        let torus = Torus::new(centre, Vec3::Y, major, minor).unwrap();
+        let mut rays = Vec::new();
+        for step in -6i32..=6 {
+            let top = centre.y + minor;
+            let y = f32::from_bits((top.to_bits() as i32 + step) as u32);
+            for k in 0..24 {
+                let angle = k as f32 * 0.2618;
+                let dir = Vec3::new(angle.cos(), 0.0, angle.sin());
+                // Through foot points from the axis out past the tube: the line at the
+                // top's height touches it twice wherever its foot point is inside R.
+                let foot = centre + Vec3::new(-dir.z, 0.0, dir.x) * (major * (k % 8) as f32 / 6.0);
+                let origin = Vec3::new(foot.x, y, foot.z) - dir * (3.0 * (major + minor));
+                rays.push(Ray::new(origin, dir).unwrap());
+            }
+        }
+        let answers = gpu
+            .intersect_finished_where(&torus, GpuCull::NoCull, &rays)
+            .unwrap();
+        let c = FinishCounts::of(answers.iter().map(|(_, f)| f));
+        for (sum, n) in counts.iter_mut().zip([c.proved, c.device, c.host]) {
+            *sum += n;
+        }
+        for (ray, (answer, finished)) in rays.iter().zip(&answers) {
+            assert_ne!(*finished, Finished::Host, "{ray:?}: handed to the host");
+            let cpu = torus_cull::intersect(&torus, ray);
+            assert_eq!(
+                answer.hit.is_some(),
+                cpu.is_some(),
+                "{ray:?}: {answer:?} vs {cpu:?}"
+            );
+            if let (Some(h), Some(c)) = (answer.hit, cpu) {
+                hits += 1;
+                bits_equal += usize::from(h.t.to_bits() == c.t.to_bits());
+                assert!(
+                    (h.t - c.t).abs() as f64 <= DEVICE_T_TOLERANCE_REL * c.t.abs() as f64,
+                    "{ray:?}: {h:?} vs {c:?}"
+                );
+            }
+        }
+        rays_total += rays.len();
     }
+    eprintln!(
+        "even tangents: {rays_total} rays, [proved, device, host] {counts:?}, {hits} hits ({bits_equal} with the CPU's t to the bit)"
+    );
+    assert!(counts[1] >= 100, "{counts:?}: too few reached the f64 pass");
 }

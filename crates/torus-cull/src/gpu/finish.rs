@@ -7,7 +7,8 @@
 //! the line to the torus frame in f64 (`M·(o − c)`, `M·d`), the foot point scaled by
 //! 1/R, the bounding sphere's chord test, the depressed quartic's coefficients in their
 //! non-cancelling forms, then `nearest_root_in_range`: `surely_no_real_root`, the even
-//! quartic (`q = 0`, its near-double `y` decided by a fused `p² − 4r`), Ferrari's split
+//! quartic (`q = 0`, its near-double `y` decided by the exact sign of `p² − 4r` in
+//! integers held in f64, where the CPU rounds a fused multiply-add once: docs/gpu.md), Ferrari's split
 //! on the resolvent's greatest root (Cardano with Vieta's small `z`, the trisection, the
 //! near-double resolvent, the small-root fixed point and the guarded Newton polish), the
 //! clear factors, and the near-double factors decided on the quartic (the cold path).

@@ -25,7 +25,8 @@
 //! / [`solve_quartic`] for CSG and the tests.
 //!
 //! Files: `nearest.rs` and `all_roots.rs` (the entry points), `discriminant.rs` (the
-//! early exit), `even.rs` (`q = 0`),
+//! early exit), `even.rs` (`q = 0`; `exact_sign.rs`, tests: its tangent sign without an fma, as the GPU
+//! computes it),
 //! `resolvent.rs` (the cubic in `m²`), `cube_root.rs` (its cube root and trisection without
 //! libm), `factor.rs` (Ferrari's split and near-double factors), `pieces.rs` (every real
 //! root by monotone pieces: `solve_quartic`'s path where the depression cannot be
@@ -44,6 +45,10 @@ mod close_pairs;
 mod corpus;
 mod discriminant;
 mod even;
+// The fma-free sign of p² − 4r that the GPU's f64 pass computes, proved here (tests only:
+// the CPU's own even quartic uses a fused multiply-add).
+#[cfg(test)]
+mod exact_sign;
 pub(crate) mod factor;
 pub(crate) mod lanes;
 pub(crate) mod nearest;

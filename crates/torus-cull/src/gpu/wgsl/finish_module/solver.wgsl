@@ -20,7 +20,9 @@
 // mirrors: tc_near_double_root64 -> crate::quartic::factor::near_double_root
 // mirrors: tc_quadratic_factor64 -> crate::quartic::factor::quadratic_factor
 // mirrors: tc_surely_no_real_root64 -> crate::quartic::discriminant::surely_no_real_root
-// mirrors: tc_even_near_double64 -> none (the device hands a near tangent to the host)
+// mirrors: tc_mantissa64 -> crate::quartic::exact_sign::mantissa
+// mirrors: tc_limbs64 -> crate::quartic::exact_sign::limbs
+// mirrors: tc_disc_sign64 -> crate::quartic::exact_sign::disc_sign
 // mirrors: tc_even_nearest64 -> crate::quartic::even::nearest_root
 // mirrors: tc_nearest_root64 -> crate::quartic::nearest::nearest_root_in_range
 
@@ -442,20 +444,108 @@ fn tc_surely_no_real_root64(p: f64, q: f64, r: f64) -> bool {
     return disc > TC_FIN_THIRTY_TWO_EPS * disc_abs && (p > 0.0 || -e > TC_FIN_EIGHT_EPS * e_abs);
 }
 
-// Whether the even quartic's p² − 4r lies within rounding of 0 (a tangent at the foot
-// point), where its sign decides hit or miss. The CPU takes it from a fused multiply-add,
-// rounded once; WGSL's `fma` need not be fused on every driver (Vulkan allows a separate
-// multiply and add), so the device does not decide it and hands the ray to the host.
-fn tc_even_near_double64(p: f64, r: f64) -> bool {
-    let disc = p * p - 4.0 * r;
-    let scale = p * p + 4.0 * abs(r);
-    return abs(disc) <= TC_FIN_NEAR_DOUBLE * scale;
+// |x| = m·2^e with m an integer in [2⁵², 2⁵³), for finite nonzero x: scalings by powers
+// of two, each exact, in loops bounded by f64's exponent range.
+struct TcMantissa64 {
+    m: f64,
+    e: i32,
+}
+
+fn tc_mantissa64(x: f64) -> TcMantissa64 {
+    let two_32 = 4294967296.0lf;
+    let two_52 = 4503599627370496.0lf;
+    let two_53 = 9007199254740992.0lf;
+    var m = abs(x);
+    var e = 0;
+    for (var i = 0; i < 40 && m >= two_53 * two_32; i++) {
+        m *= 1.0lf / two_32;
+        e += 32;
+    }
+    for (var i = 0; i < 40 && m < two_52 / two_32; i++) {
+        m *= two_32;
+        e -= 32;
+    }
+    for (var i = 0; i < 40 && m >= two_53; i++) {
+        m *= 0.5;
+        e += 1;
+    }
+    for (var i = 0; i < 40 && m < two_52; i++) {
+        m *= 2.0;
+        e -= 1;
+    }
+    return TcMantissa64(m, e);
+}
+
+// The base-2¹⁸ limbs of an integer m < 2⁵³, lowest first.
+fn tc_limbs64(m: f64) -> array<f64, 3> {
+    let limb_base = 262144.0lf;
+    let m2 = floor(m * (1.0lf / (limb_base * limb_base)));
+    let rest = m - m2 * (limb_base * limb_base);
+    let m1 = floor(rest * (1.0lf / limb_base));
+    return array<f64, 3>(rest - m1 * limb_base, m1, m2);
+}
+
+// The exact sign of p² − 4r (−1, 0, 1), where the CPU rounds a fused multiply-add once.
+// WGSL may contract a·b + c or not, and a shader compiler may re-associate sums it is not
+// told are exact, so this works on integers held exactly in f64 (every value an integer
+// below 2⁵³, or an exact power-of-two scaling), where any such rewriting gives the same
+// bits: |p| = a·2^ea, 4r = d·2^ed with a, d in [2⁵², 2⁵³); the sign of a² − d·2^k,
+// k = ed − 2ea, needs the product only for k = 52, 53, formed in 18-bit limbs and carried.
+fn tc_disc_sign64(p: f64, r: f64) -> i32 {
+    if (r <= 0.0) {
+        return select(1, 0, p == 0.0 && r == 0.0);
+    }
+    if (p == 0.0) {
+        return -1;
+    }
+    let a = tc_mantissa64(p);
+    let d = tc_mantissa64(4.0 * r);
+    let k = d.e - 2 * a.e;
+    if (k <= 51) {
+        return 1;
+    }
+    if (k >= 54) {
+        return -1;
+    }
+    let limb_base = 262144.0lf;
+    let x = tc_limbs64(a.m);
+    let y = tc_limbs64(d.m);
+    // d·2^k = Σ y_j·2^s·B^(j+2), k = 36 + s.
+    let s = select(131072.0lf, 65536.0lf, k == 52);
+    var limb = array<f64, 6>(
+        x[0] * x[0],
+        2.0 * x[0] * x[1],
+        2.0 * x[0] * x[2] + x[1] * x[1] - y[0] * s,
+        2.0 * x[1] * x[2] - y[1] * s,
+        x[2] * x[2] - y[2] * s,
+        0.0,
+    );
+    for (var i = 0; i < 5; i++) {
+        let carry = floor(limb[i] * (1.0lf / limb_base));
+        limb[i] -= carry * limb_base;
+        limb[i + 1] += carry;
+    }
+    // Every limb below the top is in [0, 2¹⁸): the top's sign is the sign, if it has one.
+    if (limb[5] != 0.0) {
+        return select(-1, 1, limb[5] > 0.0);
+    }
+    let rest = limb[0] + limb[1] + limb[2] + limb[3] + limb[4];
+    return select(0, 1, rest > 0.0);
 }
 
 // The even quartic x⁴ + p x² + r (even.rs, nearest_root), away from a tangent
-// (`tc_even_near_double64` false): the nearest root in range or TC_FIN_NONE.
+// the nearest root in range or TC_FIN_NONE, its near-tangent sign exact.
 fn tc_even_nearest64(p: f64, r: f64, lo: f64, hi: f64) -> f64 {
-    let disc = p * p - 4.0 * r;
+    var disc = p * p - 4.0 * r;
+    if (abs(disc) <= TC_FIN_NEAR_DOUBLE * (p * p + 4.0 * abs(r))) {
+        // A near-double y (a tangent at two points symmetric about the foot point): real
+        // iff p² − 4r ≥ 0, decided exactly; its value good to an ulp of p², fused or not.
+        let sign = tc_disc_sign64(p, r);
+        if (sign < 0) {
+            return TC_FIN_NONE;
+        }
+        disc = select(max(fma(p, p, -4.0 * r), 0.0), 0.0, sign == 0);
+    }
     if (disc < 0.0) {
         return TC_FIN_NONE;
     }
@@ -482,9 +572,6 @@ fn tc_nearest_root64(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> TcNearest64 {
         return TcNearest64(0.0, false, false);
     }
     if (q == 0.0 && p * p + 4.0 * abs(r) < TC_FIN_HUGE) {
-        if (tc_even_near_double64(p, r)) {
-            return TcNearest64(0.0, false, true);
-        }
         let best = tc_even_nearest64(p, r, lo, hi);
         return TcNearest64(best, best < TC_FIN_NONE, false);
     }
