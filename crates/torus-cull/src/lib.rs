@@ -86,6 +86,9 @@ pub mod quartic;
 #[cfg(feature = "gpu")]
 pub mod gpu;
 
+#[cfg(any(feature = "parry", feature = "bevy"))]
+pub mod adapters;
+
 /// What the lab's paper-as-printed fixtures (`torus-cull-lab`'s `errata`: the seed paper's
 /// culls with its misprints, which are *not* conservative) are built from. Not renderer
 /// API, no stability promise.
