@@ -492,6 +492,10 @@ fn bench() -> Result<ExitCode, String> {
         // The paired ratios take a minute: only a complete run pays for them.
         results.ratio = paired_ratios(&batches, config, dispatch);
         stage(clock, "paired ratios done");
+        results
+            .ratio
+            .extend(shape_ratios(config, setup.workload.seed));
+        stage(clock, "family and bend ratios done");
     }
     results.solver = solver::records(&home, &solver_sets, started, dispatch);
     results.bvh = bvh::records(&home, bvh_pending, started);
@@ -645,6 +649,25 @@ fn paired_ratios(
         })
         .collect();
     paired::combine_runs(&all).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The torus family's and the pipe bends' paired ratios, as `time --family` and `time
+/// --bend` take them (metrics `family_total_ns`, `bend_total_ns`), each in a quarter of
+/// the ring torus's paired time, over the same runs.
+fn shape_ratios(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
+    let runs = config.ratio_runs.max(1) as usize;
+    let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
+    let quarter = config.ratio_seconds / 4.0 / runs as f64;
+    let members = paired::family::MEMBERS.len() as f64;
+    let mut records =
+        paired::family::family_records(seed, rays, (runs, quarter / members), |_, _| {})
+            .unwrap_or_else(|e| panic!("{e}"));
+    let bends = paired::bend::BENDS.len() as f64;
+    records.extend(
+        paired::bend::bend_records(seed, rays, (runs, quarter / bends), |_, _| {})
+            .unwrap_or_else(|e| panic!("{e}")),
+    );
+    records
 }
 
 /// The fewest bounces a batch must give to be timed (as `time --secondary` asks).

@@ -149,6 +149,8 @@ pub fn ratio_tables(results: &Results) -> String {
                 "batch_cull_ns" => "batch cull alone (SIMD)",
                 "batch_f32_total_ns" => "batch f32 total (certified f32 wavefront)",
                 "batch_f32_uncertified_ns" => "batch f32 total, uncertified (no proof)",
+                "family_total_ns" => "family member total (cull + exact intersection)",
+                "bend_total_ns" => "pipe bend total (cull or wedge + exact intersection)",
                 "bvh_closest_ns" => "BVH closest-hit (camera rays, cull at the leaves)",
                 "bvh_anyhit_ns" => "BVH any-hit (shadow rays, cull at the leaves)",
                 "bvh_batched_ns" => "BVH batched leaves (wavefront per torus)",

@@ -14,7 +14,8 @@
 //!   of run i's K): the prediction interval, which is the one that promises 95 %.
 //!
 //! It also gives the headline ratios' spread, `|ratioᵢ/ratioⱼ − 1|` over the pairs: the
-//! headline is `total_ns` against `cychosz`, f64, on the CPU (the README's table).
+//! headline is every total `compare` decides by (`total_ns`, a family member's, a pipe
+//! bend's, a BVH traversal's) against `cychosz`, f64, on the CPU.
 //!
 //! The goals it checks (issue 29): coverage ≥ [`COVERAGE_GOAL`], judged by the next-run
 //! interval where every run has K ≥ 2 (else by the widest interval the runs have), and a
@@ -133,9 +134,11 @@ impl Coverage {
     }
 }
 
-/// Whether a record is a headline ratio: `total_ns` against `cychosz`, f64, on the CPU.
+/// Whether a record is a headline ratio: a decisive total (`total_ns`, a family
+/// member's, a pipe bend's or a BVH traversal's, as `compare` judges them) against
+/// `cychosz`, f64, on the CPU.
 fn is_headline(r: &RatioRecord) -> bool {
-    r.metric == "total_ns"
+    super::ratio::is_decisive(&r.metric)
         && r.reference == "cychosz"
         && r.precision == F64_PRECISION
         && r.device == CPU_DEVICE
@@ -407,6 +410,34 @@ mod tests {
         assert!(!c.between_known);
         assert_eq!(c.judged_coverage(), 0.0);
         assert!(render(&c).contains("unknown"));
+    }
+
+    /// A BVH traversal's, a family member's and a pipe bend's totals against `cychosz` are
+    /// headline ratios as `total_ns` is (they decide in `compare`), and a 10 % move of one
+    /// fails the goal; a `cull_ns` ratio is not a headline.
+    #[test]
+    fn every_decisive_total_is_a_headline() {
+        for metric in [
+            "bvh_closest_ns",
+            "family_total_ns",
+            "bend_total_ns",
+            "total_ns",
+        ] {
+            let r = |x: f64| {
+                let mut r = rec("skala", x, [x - 0.01, x + 0.01], Some([x - 0.2, x + 0.2]));
+                r.metric = metric.into();
+                r
+            };
+            let c = coverage(&[run(vec![r(1.0)]), run(vec![r(1.1)])], &names(2)).expect("runs");
+            assert_eq!(c.headline_changes.len(), 1, "{metric}");
+            assert!(!c.goals_met(), "{metric}");
+        }
+        let mut r = rec("skala", 1.0, [0.99, 1.01], Some([0.8, 1.2]));
+        r.metric = "cull_ns".into();
+        let mut s = r.clone();
+        s.ratio = 1.1;
+        let c = coverage(&[run(vec![r]), run(vec![s])], &names(2)).expect("runs");
+        assert!(c.headline_changes.is_empty());
     }
 
     #[test]

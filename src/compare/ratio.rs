@@ -1,6 +1,7 @@
 //! `torus-cull compare` on ratio records: the timing verdicts when both files have them.
 //!
-//! A `total_ns` ratio record is a **regression** when the cull's ratio against the same
+//! A `total_ns` ratio record (or a family member's, a pipe bend's, a BVH's total:
+//! `family_total_ns`, `bend_total_ns`, `bvh_*_ns`) is a **regression** when the cull's ratio against the same
 //! reference grew by more than the threshold *and* the two intervals do not overlap; it
 //! is `faster` in the mirror case. The intervals are the between-run ones
 //! (`ratio_ci_between`, over `time --runs`' independent runs) when both records have
@@ -107,6 +108,14 @@ fn verdict_intervals(o: &RatioRecord, n: &RatioRecord) -> ([f64; 2], [f64; 2], S
     }
 }
 
+/// Whether a metric's ratios decide (a regression fails `compare`): the per-ray totals of
+/// one torus (`total_ns`), a family member or a pipe bend, or a BVH traversal.
+pub(super) fn is_decisive(metric: &str) -> bool {
+    metric == "total_ns"
+        || crate::paired::shapes::SHAPE_METRICS.contains(&metric)
+        || crate::paired::bvh::BVH_METRICS.contains(&metric)
+}
+
 /// `case ν cull/reference metric`, then ` [f32]` (and the device, when not the CPU) for
 /// records of another precision or device: f32 and f64 records never pair, while the
 /// keys of f64 CPU records stay what they were before those fields existed.
@@ -140,10 +149,7 @@ fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> R
     // The ratio grew because the reference got faster, not because the cull got slower.
     let faster_reference = n.reference_ns_per_ray < o.reference_ns_per_ray * (1.0 - threshold)
         && n.ns_per_ray <= o.ns_per_ray * (1.0 + threshold);
-    // The per-ray totals decide: one torus (`total_ns`) or a BVH traversal.
-    let decisive =
-        n.metric == "total_ns" || crate::paired::bvh::BVH_METRICS.contains(&n.metric.as_str());
-    let decides = decisive && same_batch && !about_none && !faster_reference;
+    let decides = is_decisive(&n.metric) && same_batch && !about_none && !faster_reference;
     let mut flags = Vec::new();
     let mut regression = false;
     if change > threshold && worse_disjoint && about_none {

@@ -10,10 +10,65 @@
 //! the member's shape is declined, so it costs the exact intersection alone).
 
 use super::shapes::{Pair, ShapeRatio, time_contenders};
+use crate::results::RatioRecord;
+use crate::workload::box_rays::box_rays;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use torus_cull::family::Toroid;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+
+/// The members `time --family` and `cargo bench` time, (R, a, b) with a = 1: the
+/// elliptical ring tube at ν = R/a = 4 with b/a = 1/4, 1/2, 1, 2, 4, the horn torus, and
+/// the spindle at R/a = 3/4 with b/a = 1 and 2.
+pub const MEMBERS: [(f64, f64, f64); 8] = [
+    (4.0, 1.0, 0.25),
+    (4.0, 1.0, 0.5),
+    (4.0, 1.0, 1.0),
+    (4.0, 1.0, 2.0),
+    (4.0, 1.0, 4.0),
+    (1.0, 1.0, 1.0),
+    (0.75, 1.0, 1.0),
+    (0.75, 1.0, 2.0),
+];
+
+/// A member's case in a results file: `family_<kind>_b<b/a>` (`family_ring_b0.25`,
+/// `family_spindle_b2`); its ν field is R/a.
+#[must_use]
+pub fn case_name(member: &Toroid) -> String {
+    let kind = format!("{:?}", member.kind()).to_lowercase();
+    let aspect = member.axial_semi_axis_f64() / member.radial_semi_axis_f64();
+    format!("family_{kind}_b{aspect}")
+}
+
+/// Every member of [`MEMBERS`] timed on `batch` uniform rays at its box (seeded per
+/// member from `seed`), `runs` runs of `seconds` each, as `ratio` records of metric
+/// `family_total_ns`; `shown` sees each member's ratios as they come.
+///
+/// # Errors
+///
+/// A member without rounds (too short a time) or an invalid member, named.
+pub fn family_records(
+    seed: u64,
+    batch: usize,
+    (runs, seconds): (usize, f64),
+    mut shown: impl FnMut(&Toroid, &[ShapeRatio]),
+) -> Result<Vec<RatioRecord>, String> {
+    let mut records = Vec::new();
+    for (i, &(big, a, b)) in MEMBERS.iter().enumerate() {
+        let member = Toroid::canonical(big, a, b).map_err(|e| e.to_string())?;
+        let rays = box_rays(big, a, b, batch, seed.wrapping_add(i as u64));
+        let ratios = time_family(&member, &rays, runs, seconds, seed)
+            .ok_or_else(|| format!("{}: no rounds (raise the time)", case_name(&member)))?;
+        shown(&member, &ratios);
+        let case = case_name(&member);
+        records.extend(
+            ratios
+                .iter()
+                .map(|r| r.record(&case, big / a, "family_total_ns", rays.len())),
+        );
+    }
+    Ok(records)
+}
 
 /// The family's ratios for `member` (in its own frame: centre 0, axis +y) on `rays`:
 /// its exact intersection over the circular member (R, a, a)'s on the same rays and on

@@ -6,9 +6,10 @@
 //! the contenders.
 
 use super::engine::{Schedule, interleave};
-use super::runs::between_run_interval;
-use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
+use super::runs::{between_run_interval, pooled_within_interval};
+use super::stats::{QUIET_FRACTION, RatioEstimate, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
+use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use std::time::Duration;
 
 /// One paired ratio of a shape's timing.
@@ -17,20 +18,65 @@ pub struct ShapeRatio {
     /// What is timed: `exact` (the shape, no cull), a cull's name (its `total_ns`), or
     /// `wedge+<cull>` (a pipe bend's wedge with that cull).
     pub contender: String,
-    /// Against what: another contender's name (`cychosz`, `exact`, `circular_exact`,
+    /// Against what: another contender's name (`cychosz`, `none`, `circular_exact`,
     /// `circular_exact_on_images`).
     pub reference: String,
     /// The geometric mean of the runs' median ratios.
     pub ratio: f64,
     /// Each run's median ratio.
     pub run_ratios: Vec<f64>,
-    /// The first run's bootstrap 95 % interval (within-run).
+    /// The runs' bootstrap 95 % intervals pooled (within-run: how well the rounds pinned
+    /// the ratio down, [`pooled_within_interval`]).
     pub within: [f64; 2],
     /// The 95 % interval over the runs; `None` for a single run.
     pub between: Option<[f64; 2]>,
     /// The contender's median ns per ray (first run).
     pub ns_per_ray: f64,
+    /// The reference's median ns per ray over the same rounds (first run).
+    pub reference_ns_per_ray: f64,
+    /// Rounds behind the first run's ratio (its quiet ones), and measured in it.
+    pub rounds: (u64, u64),
 }
+
+impl ShapeRatio {
+    /// This ratio as a results file's `ratio` record, so that `compare`, `intervals` and
+    /// the report read it as they read the ring torus's: `case` names the shape, `nu` is
+    /// R over its tube's radial size, `metric` is `family_total_ns` or `bend_total_ns`
+    /// ([`SHAPE_METRICS`]), `rays` the batch.
+    #[must_use]
+    pub fn record(&self, case: &str, nu: f64, metric: &str, rays: usize) -> RatioRecord {
+        RatioRecord {
+            case: case.to_string(),
+            nu,
+            cull: self.contender.clone(),
+            reference: self.reference.clone(),
+            metric: metric.to_string(),
+            ratio: self.ratio,
+            ratio_ci: self.within,
+            rounds: self.rounds.0,
+            rounds_measured: self.rounds.1,
+            rays: rays as u64,
+            ns_per_ray: self.ns_per_ray,
+            reference_ns_per_ray: self.reference_ns_per_ray,
+            precision: F64_PRECISION.to_string(),
+            device: CPU_DEVICE.to_string(),
+            escalation_rate: None,
+            runs: self.run_ratios.len() as u64,
+            runs_set_aside: 0,
+            run_ratios: if self.run_ratios.len() > 1 {
+                self.run_ratios.clone()
+            } else {
+                Vec::new()
+            },
+            ratio_ci_between: self.between,
+            run_spread: None,
+        }
+    }
+}
+
+/// The metrics of the shapes beyond the ring torus: a torus family member's and a pipe
+/// bend's per-ray total (cull + exact intersection), decisive in `compare` as `total_ns`.
+pub const SHAPE_METRICS: [&str; 2] = ["family_total_ns", "bend_total_ns"];
 
 /// A contender against a reference, by index into the contenders, with their names.
 pub type Pair = (usize, usize, String, String);
@@ -49,7 +95,8 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
     if runs == 0 || work == 0 {
         return None;
     }
-    let mut per_run: Vec<Vec<(f64, [f64; 2], f64)>> = vec![Vec::new(); pairs.len()];
+    // Per pair, each run's estimate and the rounds it measured.
+    let mut per_run: Vec<Vec<(RatioEstimate, u64)>> = vec![Vec::new(); pairs.len()];
     for run in 0..runs {
         let schedule = Schedule {
             warm_up: Duration::from_secs_f64(0.1 * seconds),
@@ -63,7 +110,7 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
         let pick = |c: usize| -> Vec<f64> { kept.iter().map(|&k| rounds.ns[c][k]).collect() };
         for (slot, &(c, r, _, _)) in per_run.iter_mut().zip(&pairs) {
             let est = ratio_estimate(&pick(c), &pick(r), work as f64, seed ^ c as u64)?;
-            slot.push((est.ratio, est.ratio_ci, est.ns_per_ray));
+            slot.push((est, rounds.ns[c].len() as u64));
         }
     }
     Some(
@@ -71,7 +118,9 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
             .into_iter()
             .zip(per_run)
             .map(|((_, _, contender, reference), runs)| {
-                let run_ratios: Vec<f64> = runs.iter().map(|r| r.0).collect();
+                let run_ratios: Vec<f64> = runs.iter().map(|r| r.0.ratio).collect();
+                let run_cis: Vec<[f64; 2]> = runs.iter().map(|r| r.0.ratio_ci).collect();
+                let (first, measured) = &runs[0];
                 let log_mean =
                     run_ratios.iter().map(|r| r.ln()).sum::<f64>() / run_ratios.len() as f64;
                 ShapeRatio {
@@ -79,9 +128,11 @@ pub fn time_contenders<F: FnMut(usize) -> Duration>(
                     reference,
                     ratio: log_mean.exp(),
                     between: between_run_interval(&run_ratios),
+                    within: pooled_within_interval(&run_ratios, &run_cis),
                     run_ratios,
-                    within: runs[0].1,
-                    ns_per_ray: runs[0].2,
+                    ns_per_ray: first.ns_per_ray,
+                    reference_ns_per_ray: first.reference_ns_per_ray,
+                    rounds: (first.rounds as u64, *measured),
                 }
             })
             .collect(),

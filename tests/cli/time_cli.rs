@@ -704,17 +704,18 @@ fn gpu_info_needs_the_feature() {
 }
 
 /// `time --family` and `time --bend` at a tiny size: every member or bend with its ratios
-/// (finite, positive, with a between-run interval), written as the file's one section.
+/// (finite, positive, with a between-run interval), written as the `ratio` section of a
+/// results file under their metric, which `compare` reads and judges clean against itself.
 #[test]
 fn family_and_bend_timing_write_every_shape_and_ratio() {
     let dir = tempfile::tempdir().unwrap();
     let workload = tiny_workload(dir.path());
     let culls = torus_cull::CullKind::TIMED.len();
-    for (flag, section, shapes, per_shape) in [
-        ("--family", "family", 8, 2 + culls),
-        ("--bend", "bend", 6, 4 * culls),
+    for (flag, name, shapes, per_shape, metric) in [
+        ("--family", "family", 8, 2 + culls, "family_total_ns"),
+        ("--bend", "bend", 6, 4 * culls, "bend_total_ns"),
     ] {
-        let out = dir.path().join(format!("{section}.json"));
+        let out = dir.path().join(format!("{name}.json"));
         let args = [
             "time",
             flag,
@@ -733,18 +734,27 @@ fn family_and_bend_timing_write_every_shape_and_ratio() {
         );
         let file: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-        assert_eq!(file["meta"]["tool"], format!("time-{section}"));
-        let records = file[section].as_array().expect("the section");
-        assert_eq!(records.len(), shapes, "{flag}");
-        for shape in records {
-            let ratios = shape["ratios"].as_array().unwrap();
-            assert_eq!(ratios.len(), per_shape, "{flag}");
-            for r in ratios {
-                let ratio = r["ratio"].as_f64().unwrap();
-                assert!(ratio.is_finite() && ratio > 0.0, "{flag}: {r}");
-                assert!(r["between"].is_array(), "{flag}: {r}");
-            }
+        assert_eq!(file["meta"]["tool"], format!("time-{name}"));
+        let records = file["ratio"].as_array().expect("the ratio section");
+        assert_eq!(records.len(), shapes * per_shape, "{flag}");
+        let cases: std::collections::BTreeSet<&str> = records
+            .iter()
+            .map(|r| r["case"].as_str().unwrap())
+            .collect();
+        assert_eq!(cases.len(), shapes, "{flag}: {cases:?}");
+        for r in records {
+            assert!(r["case"].as_str().unwrap().starts_with(name), "{flag}: {r}");
+            assert_eq!(r["metric"], metric, "{flag}: {r}");
+            let ratio = r["ratio"].as_f64().unwrap();
+            assert!(ratio.is_finite() && ratio > 0.0, "{flag}: {r}");
+            assert!(r["ratio_ci_between"].is_array(), "{flag}: {r}");
+            assert_eq!(r["runs"], 3, "{flag}: {r}");
         }
+        let path = out.to_str().unwrap();
+        let o = torus_cull(&["compare", path, path]);
+        let report = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(o.status.code(), Some(0), "{flag}: {report}");
+        assert!(report.contains(metric), "{flag}: {report}");
     }
     // The two are one choice: asked together, they are refused naming both.
     let o = torus_cull(&["time", "--family", "--bend", "--workload", &workload]);

@@ -1,37 +1,24 @@
-//! What `time --family` and `time --bend` share: the results file of a shape's paired
-//! ratios (the usual `meta` block and one section of records, written atomically) and
-//! the console's `ratio [interval]`.
+//! What `time --family` and `time --bend` share: a results file whose `ratio` section holds
+//! a shape's paired ratios (the usual `meta` block, written atomically), and the
+//! console's `ratio [interval]`.
 
 use std::path::{Path, PathBuf};
 use torus_cull_lab::paired::shapes::ShapeRatio;
-use torus_cull_lab::results::{Meta, Results, default_path, write_atomic};
+use torus_cull_lab::results::{RatioRecord, Results, default_path};
 use torus_cull_lab::workload::spec::Workload;
 
-/// The file: `schema_version`, `meta`, and the section `section` holding `records`.
-#[derive(serde::Serialize)]
-struct ShapesFile<'a, T: serde::Serialize> {
-    schema_version: u32,
-    meta: Meta,
-    #[serde(flatten)]
-    section: std::collections::BTreeMap<&'a str, T>,
-}
-
-/// Writes `records` as section `section` of `out`, or of the default
+/// Writes `records` as the `ratio` section of `out`, or of the default
 /// `results/<commit><suffix>.json`, with `meta.tool` = `tool`; returns the path.
-pub(super) fn write<T: serde::Serialize>(
+pub(super) fn write(
     workload: &Workload,
     tool: &str,
-    (section, suffix): (&str, &str),
-    records: T,
+    suffix: &str,
+    records: Vec<RatioRecord>,
     out: Option<&Path>,
 ) -> Result<PathBuf, Box<dyn std::error::Error>> {
-    let mut meta = Results::new(workload, tool).meta;
-    meta.threads = Some(1);
-    let file = ShapesFile {
-        schema_version: torus_cull_lab::results::SCHEMA_VERSION,
-        meta,
-        section: [(section, records)].into_iter().collect(),
-    };
+    let mut results = Results::new(workload, tool);
+    results.meta.threads = Some(1);
+    results.ratio = records;
     let path = match out {
         Some(p) => p.to_path_buf(),
         None => {
@@ -41,9 +28,9 @@ pub(super) fn write<T: serde::Serialize>(
             p
         }
     };
-    let mut text = serde_json::to_string_pretty(&file)?;
-    text.push('\n');
-    write_atomic(&path, text.as_bytes()).map_err(|e| format!("{}: {e}", path.display()))?;
+    results
+        .save(&path)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     println!("wrote {}", path.display());
     Ok(path)
 }
