@@ -1,6 +1,7 @@
 //! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
-//! against ν.
+//! against ν, and the torus family check's capture and rejection per aspect b/a.
 
+use crate::family_check::{CullRecord, FamilyFile};
 use crate::results::{
     BvhRecord, CPU_DEVICE, EstimateRecord, F64_PRECISION, F64_REFERENCE, RatioRecord,
     RejectionRecord, Results, TimingRecord,
@@ -344,6 +345,89 @@ pub fn plot_results(
         estimate_charts(&results.estimates, &mut charts)?;
     }
     Ok(charts.written)
+}
+
+/// The charts of a `torus-cull family` file, written to `out_dir` (which must exist) as
+/// `<stem>-b<b/a>-capture.svg` and `…-rejection.svg`: per aspect b/a, each cull's
+/// capture of the far misses and its rejection rate against ν = R/a (horn and spindle
+/// members at ν ≤ 1), one line per cull; returns the paths written.
+pub fn plot_family(
+    file: &FamilyFile,
+    out_dir: &Path,
+    stem: &str,
+) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
+    let out_dir = if out_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        out_dir
+    };
+    if !out_dir.is_dir() {
+        return Err(format!("{}: no such directory", out_dir.display()).into());
+    }
+    let mut charts = Charts {
+        out_dir,
+        stem,
+        provenance: format!(
+            "{} rays a member, {}{}",
+            file.rays_per_member,
+            file.meta.commit.as_deref().unwrap_or("no commit"),
+            if file.meta.dirty { "-dirty" } else { "" }
+        ),
+        written: Vec::new(),
+    };
+    let points: Vec<FamilyPoint<'_>> = file
+        .members
+        .iter()
+        .flat_map(|m| {
+            m.culls
+                .iter()
+                .filter(|c| c.accepts)
+                .map(move |c| FamilyPoint {
+                    group: format!("b{}", m.aspect),
+                    nu: m.nu,
+                    cull: c,
+                })
+        })
+        .collect();
+    group_charts(
+        &points,
+        &mut charts,
+        ("", "torus family, aspect "),
+        &[
+            (
+                "capture",
+                "capture of the misses beyond 1.25 eta, by nu = R/a",
+                "% of far misses rejected",
+                |p| p.cull.capture.map(|c| (100.0 * c, None)),
+            ),
+            (
+                "rejection",
+                "rejection rate, by nu = R/a",
+                "% of rays rejected",
+                |p| Some((100.0 * p.cull.rejection_rate, None)),
+            ),
+        ],
+    )?;
+    Ok(charts.written)
+}
+
+/// One cull on one family member, as a chart point (group: the aspect b/a).
+struct FamilyPoint<'a> {
+    group: String,
+    nu: f64,
+    cull: &'a CullRecord,
+}
+
+impl Record for FamilyPoint<'_> {
+    fn group(&self) -> String {
+        self.group.clone()
+    }
+    fn cull(&self) -> &str {
+        &self.cull.cull
+    }
+    fn nu(&self) -> f64 {
+        self.nu
+    }
 }
 
 /// An estimate whose benchmark id reads `group/cull/ν` (`gpu_ns-hole/cychosz/2`,

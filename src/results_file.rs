@@ -1,8 +1,10 @@
 //! Any file the tool writes for `plot` and `compare` to read: a results file (`run`,
-//! `time`, `cargo bench`) or an f32-check file, told apart by `meta.tool` (`f32-check`)
-//! or, in files without it, by the f32-check file's own section `families`.
+//! `time`, `cargo bench`), an f32-check file or a family-check file, told apart by
+//! `meta.tool` (`f32-check`, `family`) or, in files without it, by their own sections
+//! (`families`, `members`).
 
 use crate::f32_check::CheckFile;
+use crate::family_check::FamilyFile;
 use crate::results::{Results, ResultsError, read_json};
 use std::path::Path;
 
@@ -13,6 +15,8 @@ pub enum ResultsFile {
     Results(Results),
     /// `f32-check`.
     F32Check(CheckFile),
+    /// `family`.
+    Family(Box<FamilyFile>),
 }
 
 impl ResultsFile {
@@ -26,6 +30,10 @@ impl ResultsFile {
             serde_json::from_value(value)
                 .map(ResultsFile::F32Check)
                 .map_err(parse)
+        } else if tool == Some("family") || value.get("members").is_some() {
+            serde_json::from_value(value)
+                .map(|f| ResultsFile::Family(Box::new(f)))
+                .map_err(parse)
         } else {
             serde_json::from_value(value)
                 .map(ResultsFile::Results)
@@ -38,6 +46,7 @@ impl ResultsFile {
         let meta = match self {
             ResultsFile::Results(r) => &r.meta,
             ResultsFile::F32Check(c) => &c.meta,
+            ResultsFile::Family(f) => &f.meta,
         };
         meta.tool.as_deref().unwrap_or("results")
     }

@@ -25,6 +25,10 @@ pub struct FamilyArgs {
     /// must exist.
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Skip the SVG charts (capture and rejection rate per cull against ν, one pair per
+    /// aspect b/a), otherwise written next to the JSON as `<stem>-b<b/a>-*.svg`.
+    #[arg(long)]
+    no_plots: bool,
 }
 
 /// Runs `family`. Exit 1 when a cull rejected a hit of the oracle, or the exact
@@ -48,6 +52,9 @@ pub fn run(args: FamilyArgs) -> CliResult {
     };
     // Before the work, not after it.
     output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    if !args.no_plots {
+        super::plot::check_plot_paths(&path)?;
+    }
     let members = family_check::members().len();
     let heartbeat = crate::console::Heartbeat::new(
         format!("family: {members} members x {} rays", args.rays),
@@ -70,6 +77,9 @@ pub fn run(args: FamilyArgs) -> CliResult {
     output::write_file(&path, text.as_bytes())
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     outln!("wrote {}", path.display())?;
+    if !args.no_plots {
+        super::plot::write_family_plots(&file, &path)?;
+    }
     if !failed.is_empty() {
         eprintln!(
             "error: a false reject, or a missed or invented hit of the exact intersection, in: {}",

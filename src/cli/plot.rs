@@ -1,4 +1,5 @@
-//! `torus-cull plot`: the SVG figures of a results file or an f32-check file.
+//! `torus-cull plot`: the SVG figures of a results file, an f32-check file or a
+//! family-check file.
 
 use super::CliResult;
 use crate::console::outln;
@@ -26,6 +27,7 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
     let written = match &results {
         ResultsFile::Results(r) => torus_cull_lab::plot::plot_results(r, &dir, &stem)?,
         ResultsFile::F32Check(c) => torus_cull_lab::f32_check::plot::plot_check(c, &dir, &stem)?,
+        ResultsFile::Family(f) => torus_cull_lab::plot::plot_family(f, &dir, &stem)?,
     };
     if written.is_empty() {
         return Err(format!(
@@ -91,6 +93,21 @@ pub(crate) fn write_plots(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (dir, stem) = plot_place(path);
     let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
+    outln!(
+        "wrote {} plots to {}/{stem}-*.svg",
+        written.len(),
+        dir.display()
+    )?;
+    Ok(())
+}
+
+/// The family check's SVG charts, next to its file `path` and named after it (`family`).
+pub(crate) fn write_family_plots(
+    file: &torus_cull_lab::family_check::FamilyFile,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (dir, stem) = plot_place(path);
+    let written = torus_cull_lab::plot::plot_family(file, &dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",
         written.len(),

@@ -173,4 +173,42 @@ fn family_check_at_a_tiny_size_is_clean() {
             .sum();
         assert_eq!(rays, 48);
     }
+    // Its charts, next to it: capture and rejection rate per aspect b/a (five aspects);
+    // `plot` draws the same from the file, and `--no-plots` writes none.
+    let svgs = |dir: &std::path::Path| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(".svg"))
+            .collect();
+        names.sort();
+        names
+    };
+    let written = svgs(dir.path());
+    assert_eq!(written.len(), 10, "{written:?}");
+    assert!(
+        written.contains(&"family-b0.25-capture.svg".to_string()),
+        "{written:?}"
+    );
+    let again = tempfile::tempdir().unwrap();
+    let out = torus_cull(&[
+        "plot",
+        path.to_str().unwrap(),
+        "--out-dir",
+        again.path().to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert_eq!(svgs(again.path()), written);
+    let bare = tempfile::tempdir().unwrap();
+    let quiet = bare.path().join("family.json");
+    let out = torus_cull(&[
+        "family",
+        "--rays",
+        "8",
+        "--no-plots",
+        "--out",
+        quiet.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(svgs(bare.path()).is_empty());
 }
