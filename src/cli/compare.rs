@@ -41,6 +41,10 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
             compare::f32_check::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
             compare::f32_check::compare(a, b, threshold / 100.0, options.across_machines)
         }
+        (ResultsFile::Family(a), ResultsFile::Family(b)) => {
+            compare::family::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
+            compare::family::compare(a, b, options.across_machines)
+        }
         _ => {
             return Err(format!(
                 "{pair}: {} was written by `{}` and {} by `{}`: they hold different \

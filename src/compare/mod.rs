@@ -11,6 +11,10 @@
 //!   is a single criterion figure with no interval, so a change beyond the threshold is
 //!   shown as `no verdict (no interval)` and decides nothing.
 //!
+//! * **family** (two `torus-cull family` files, `family.rs`): per member class and cull, a
+//!   new false reject or a lower capture is a regression, and so are more missed or
+//!   invented hits of the exact intersection.
+//!
 //! Records on one side only are listed. The exit code is 1 if any regression is flagged,
 //! and 1 too when records of the old file are missing from the new one (a run that lost
 //! records must not pass a gate), unless `--allow-missing` makes that a warning.
@@ -22,6 +26,7 @@
 
 pub mod coverage;
 pub mod f32_check;
+pub mod family;
 pub mod machine;
 mod ratio;
 mod rows;

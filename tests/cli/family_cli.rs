@@ -1,7 +1,7 @@
 //! The torus family on the command line: `eval --axial` and horn/spindle tori, the
 //! circular ring torus's rows unchanged, and `torus-cull family` at a tiny size.
 
-use super::support::{stderr, torus_cull};
+use super::support::{stderr, stdout, torus_cull};
 use std::path::Path;
 
 /// `eval` rows of `csv` (written to a temp file) as columns, or the error text.
@@ -199,6 +199,46 @@ fn family_check_at_a_tiny_size_is_clean() {
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert_eq!(svgs(again.path()), written);
+    // `compare` reads two family files: the same file is clean; a false reject added, or a
+    // capture lowered, is a regression (exit 1); files of other rays are refused (exit 2).
+    let p = path.to_str().unwrap();
+    let out = torus_cull(&["compare", p, p]);
+    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
+    assert!(
+        stdout(&out).contains("records compared"),
+        "{}",
+        stdout(&out)
+    );
+    let mut worse: serde_json::Value = file.clone();
+    worse["members"][3]["culls"][5]["false_rejects"] = 1.into();
+    let cull = &mut worse["members"][7]["culls"][8];
+    let far = cull["far_misses"].as_u64().unwrap();
+    cull["far_misses"] = (far + 1).into();
+    let worse_path = again.path().join("worse.json");
+    std::fs::write(&worse_path, worse.to_string()).unwrap();
+    let out = torus_cull(&["compare", p, worse_path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
+    let report = stdout(&out);
+    assert!(
+        report.contains("REGRESSION: false rejects 0 -> 1"),
+        "{report}"
+    );
+    assert!(report.contains("REGRESSION: lower capture"), "{report}");
+    let other = again.path().join("other.json");
+    let out = torus_cull(&[
+        "family",
+        "--rays",
+        "8",
+        "--no-plots",
+        "--seed",
+        "5",
+        "--out",
+        other.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let out = torus_cull(&["compare", p, other.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("workload_sha256"), "{}", stderr(&out));
     let bare = tempfile::tempdir().unwrap();
     let quiet = bare.path().join("family.json");
     let out = torus_cull(&[
