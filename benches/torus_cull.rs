@@ -496,6 +496,11 @@ fn bench() -> Result<ExitCode, String> {
             .ratio
             .extend(shape_ratios(config, setup.workload.seed));
         stage(clock, "family and bend ratios done");
+        if let Some(spec) = &bvh_spec {
+            let bvh = bvh_ratios(spec, config, setup.workload.seed, dispatch);
+            results.ratio.extend(bvh);
+            stage(clock, "paired BVH ratios done");
+        }
     }
     results.solver = solver::records(&home, &solver_sets, started, dispatch);
     results.bvh = bvh::records(&home, bvh_pending, started);
@@ -668,6 +673,32 @@ fn shape_ratios(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
             .unwrap_or_else(|e| panic!("{e}")),
     );
     records
+}
+
+/// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
+/// `bvh_batched_ns`), on the bench's scenes at each of its ν, in a quarter of the ring
+/// torus's paired time, over the same runs.
+fn bvh_ratios(
+    spec: &torus_cull_lab::workload::spec::BvhSpec,
+    config: &BenchConfig,
+    seed: u64,
+    dispatch: &Dispatch,
+) -> Vec<RatioRecord> {
+    let timing = paired::bvh::BvhTiming {
+        units: spec
+            .scenes
+            .iter()
+            .flat_map(|&k| spec.nu.iter().map(move |&nu| (k, nu)))
+            .collect(),
+        tori: spec.tori,
+        seed,
+        culls: CullKind::TIMED.to_vec(),
+        rays: config.batch.min(1024),
+        seconds: config.ratio_seconds / 4.0,
+        runs: config.ratio_runs.max(1) as usize,
+        dispatch: *dispatch,
+    };
+    paired::bvh::time_bvh(&timing, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e:?}"))
 }
 
 /// The fewest bounces a batch must give to be timed (as `time --secondary` asks).
