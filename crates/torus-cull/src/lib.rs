@@ -109,8 +109,8 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,
-    Torus, TorusError,
+    NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceCoords,
+    SurfaceProjection, SurfaceTangents, Torus, TorusError,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
