@@ -109,12 +109,12 @@ pub use cull::{
 };
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
-    NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceCoords,
-    SurfaceProjection, SurfaceTangents, Torus, TorusError,
+    NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,
+    Torus, TorusError,
 };
 pub use intersect::{
-    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
-    intersect_all, intersect_culled, occluded,
+    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,
+    SurfaceTangents, TorusRay, intersect, intersect_all, intersect_culled, occluded,
 };
 pub use names::{Named, UnknownName};
 

@@ -6,12 +6,10 @@ mod point_query;
 pub(crate) mod ray;
 mod torus;
 mod tube;
-mod uv;
 
 pub use bounds::{CullBounds, SAFETY_REL};
 pub use point_query::{NonFinitePoint, SurfaceProjection};
 pub(crate) use tube::Tube;
-pub use uv::{SurfaceCoords, SurfaceTangents};
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};
 pub use torus::{

@@ -5,8 +5,8 @@
 //! (0 on the torus frame's x axis, growing toward its z axis), each in `(−π, π]`. In the
 //! torus frame the surface is `P(θ, φ) = ((R + r cos θ) cos φ, r sin θ, (R + r cos θ) sin φ)`.
 
-use super::Torus;
-use crate::{Hit, Precision};
+use super::Hit;
+use crate::{Precision, Torus};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{PI, TAU};
 
