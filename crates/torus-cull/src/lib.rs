@@ -113,8 +113,8 @@ pub use geometry::{
     Torus, TorusError,
 };
 pub use intersect::{
-    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, TorusRay, intersect,
-    intersect_all, intersect_culled, occluded,
+    Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,
+    SurfaceTangents, TorusRay, intersect, intersect_all, intersect_culled, occluded,
 };
 pub use names::{Named, UnknownName};
 

@@ -84,3 +84,6 @@ pub use lines::{BLOCK, Lines};
 pub use mask::KeepMask;
 pub use solve::{Quartics, SolveStats, nearest_roots};
 pub use wavefront::{Wavefront, WavefrontStats};
+
+#[cfg(test)]
+mod tests;

@@ -19,7 +19,7 @@ use crate::cull::BatchCull;
 use crate::intersect::TorusRay;
 use crate::intersect::sealed::{FromExact, Steps};
 use crate::num::Dispatch;
-use crate::{Crossings, Ray, Torus, intersect, intersect_all, occluded};
+use crate::{Crossings, Precision, Ray, Torus, intersect, intersect_all, occluded};
 use glam::DVec3;
 
 /// Reusable buffers for [`Wavefront::intersect`]: a renderer keeps one per thread.
@@ -311,7 +311,8 @@ impl Wavefront {
     }
 
     /// Every crossing of every ray (`all[i]` for `rays[i]`, resized): what
-    /// [`crate::intersect_all`] returns ray by ray, exactly. The cull runs on lanes and a
+    /// [`crate::intersect_all`] returns ray by ray, exactly, for [`crate::Ray`]s (f32
+    /// crossings) and [`crate::DRay`]s (f64 ones) alike. The cull runs on lanes and a
     /// ray it rejects gets no crossing (a cull proves that the whole line misses the
     /// torus, so the ray is outside all along); each ray it keeps is solved by the scalar
     /// all-roots path, since the lane solver finds only the nearest root. So this form
@@ -322,7 +323,8 @@ impl Wavefront {
     /// ```
     /// use glam::Vec3;
     /// use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
-    /// use torus_cull::{Ray, Torus, intersect_all};
+    /// use glam::DVec3;
+    /// use torus_cull::{DRay, Ray, Torus, intersect_all};
     /// let torus = Torus::new(Vec3::ZERO, Vec3::Y, 4.0, 1.0)?;
     /// // Rays along x at heights 0 (through both sides of the tube) and 5 (above it).
     /// let rays = [
@@ -335,15 +337,21 @@ impl Wavefront {
     /// assert!(all[1].is_empty());
     /// assert_eq!(all[0], intersect_all(&torus, &rays[0]));
     /// assert_eq!(stats.kept, 1); // the ray above the torus is culled
+    /// // f64 rays get f64 crossings, the scalar path's exactly.
+    /// let drays = [DRay::new(DVec3::new(-10.0, 0.5, 0.0), DVec3::X)?];
+    /// let mut dall = Vec::new();
+    /// Wavefront::new().intersect_all(&Dispatch::best(), BatchCull::Skala, &torus, &drays, &mut dall);
+    /// assert_eq!(dall[0], intersect_all(&torus, &drays[0]));
+    /// assert_eq!(dall[0].len(), 4);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
-    pub fn intersect_all(
+    pub fn intersect_all<P: Precision>(
         &mut self,
         dispatch: &Dispatch,
         cull: BatchCull,
         torus: &Torus,
-        rays: &[Ray],
-        all: &mut Vec<Crossings>,
+        rays: &[Ray<P>],
+        all: &mut Vec<Crossings<P>>,
     ) -> WavefrontStats {
         self.cull_only(dispatch, cull, torus, rays);
         all.clear();

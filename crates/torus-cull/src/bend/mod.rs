@@ -27,12 +27,16 @@
 //! refuses a cut one ([`BendError::NotWhole`]).
 
 mod crossings;
+mod point_query;
 mod solid;
 mod wedge;
 
 pub use crossings::{BendCrossing, BendCrossings, BendHit};
+pub use point_query::BendProjection;
 pub use solid::{BendError, BendFace, PipeBend};
 pub use wedge::WedgeCull;
 
+#[cfg(test)]
+mod point_query_tests;
 #[cfg(test)]
 mod tests;

@@ -28,10 +28,12 @@ pub(crate) mod from_surface;
 pub(crate) mod nearest_hit;
 mod ray_cast;
 pub(crate) mod reduce;
+mod uv;
 pub use all::{Crossing, Crossings, Passage, Span, Spans, intersect_all};
 pub(crate) use all::{Roots, crossings_in_frame, line_crossings};
 use glam::{DVec3, Vec3};
 pub use ray_cast::{Culled, RayCast};
+pub use uv::{SurfaceCoords, SurfaceTangents};
 
 /// The nearest hit of a ray, in the ray's precision: [`Hit`] (`Hit<Vec3>`, f32) for a
 /// [`Ray`], [`DHit`] (`Hit<DVec3>`, f64) for a [`DRay`](crate::DRay).
