@@ -51,9 +51,16 @@ impl Tube {
         } else {
             DVec3::X
         };
-        let off = x - radial * self.major;
-        let dist = off.length();
-        let out = if dist > 0.0 { off / dist } else { radial };
+        // The offset from the core circle in the meridian's own coordinates (ρ − R, y):
+        // formed from x − R·radial instead, its rounding leaves the meridian, and on the
+        // core circle (where it is only rounding) would point anywhere.
+        let (across, up) = (rho - self.major, x.y);
+        let dist = across.hypot(up);
+        let out = if dist > 0.0 {
+            radial * (across / dist) + DVec3::Y * (up / dist)
+        } else {
+            radial
+        };
         (
             radial * self.major + out * self.minor,
             out,
