@@ -119,7 +119,7 @@ fn no_real_root<T: Real>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> T::M
     // SIMD target features.
     macro_rules! c {
         ($x:expr) => {
-            rho_sq.splat($x)
+            rho_sq.k($x)
         };
     }
     let rho_sq_m1 = rho_sq - c!(1.0);
