@@ -130,6 +130,16 @@ pub fn sc_mask(b: bool) -> M64s<pulp::Scalar> {
     }
 }
 
+/// Trait methods `fn f(self, o: Self) -> Self` that are the lane type's own `f`.
+macro_rules! forward {
+    ($name:ident: $($f:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> Self {
+            $name::$f(self, o)
+        }
+    )*};
+}
+
 macro_rules! real {
     ($name:ident, $mask:ident, $elem:ty, $m:ident, $lanes:ident, $neg:ident) => {
         impl<S: Simd> RealMask for $mask<S> {
@@ -212,22 +222,7 @@ macro_rules! real {
                     self.max_num(o)
                 }
             }
-            #[inline(always)]
-            fn min_cmp(self, o: Self) -> Self {
-                $name::min_cmp(self, o)
-            }
-            #[inline(always)]
-            fn max_cmp(self, o: Self) -> Self {
-                $name::max_cmp(self, o)
-            }
-            #[inline(always)]
-            fn min_num(self, o: Self) -> Self {
-                $name::min_num(self, o)
-            }
-            #[inline(always)]
-            fn max_num(self, o: Self) -> Self {
-                $name::max_num(self, o)
-            }
+            forward!($name: min_cmp, max_cmp, min_num, max_num);
             #[inline(always)]
             fn copysign(self, sign: Self) -> Self {
                 if S::$lanes == 1 {
@@ -279,6 +274,21 @@ macro_rules! real {
 
 real!(F64s, M64s, f64, m64s, F64_LANES, neg_f64s);
 real!(F32s, M32s, f32, m32s, F32_LANES, neg_f32s);
+
+/// [`Real`] on f32 lanes, with the one step the culls take beyond it: an exact rescale by
+/// a power of two read from a float's exponent bits (integer lanes of f32 width).
+pub trait Real32: Real {
+    /// `self` times 2^(127 − e), e the biased exponent of `exp_of` (exact; see
+    /// [`F32s::times_inverse_exponent`]).
+    fn times_inverse_exponent(self, exp_of: Self) -> Self;
+}
+
+impl<S: Simd> Real32 for F32s<S> {
+    #[inline(always)]
+    fn times_inverse_exponent(self, exp_of: Self) -> Self {
+        F32s::times_inverse_exponent(self, exp_of)
+    }
+}
 
 #[cfg(test)]
 mod tests {
