@@ -6,10 +6,10 @@
 //! (errata) and in the docs of [`torus_cull::cull::CychoszCull`] and [`torus_cull::cull::SkalaCull`].
 
 use glam::Vec3;
-use pulp::{Scalar, Simd};
+use pulp::Scalar;
 use torus_cull::Named;
 use torus_cull::cull::{Cull, CullBounds, CullVisitor};
-use torus_cull::internals::{F32s, SectionFormulas, Vec3s, foot_point, skala_keeps};
+use torus_cull::internals::{LaneBounds, Real, SectionFormulas, Vec3s, foot_point, skala_keeps};
 
 /// The paper-as-printed culls by stable name, as [`torus_cull::cull::CullKind`] names the real ones.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -112,26 +112,22 @@ printed_skala_cull!(SkalaEq102Cull, "skala_eq102", Printed<true>);
 struct Printed<const EQ102: bool>;
 
 impl<const EQ102: bool> SectionFormulas for Printed<EQ102> {
-    fn minor(b: &CullBounds) -> f32 {
-        b.minor_radius()
+    fn minor<R: Real>(b: &LaneBounds<R>) -> R {
+        b.minor_radius
     }
-    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
-        let inner = F32s::splat(a_h.s, b.major_radius() - b.minor_radius());
+    fn hole_edge_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h_sq: R) -> R {
+        let inner = b.major_radius - b.minor_radius;
         if EQ102 {
-            let sin_phi_h = a_h / F32s::splat(a_h.s, b.major_radius());
+            let sin_phi_h = a_h / b.major_radius;
             inner * inner * (h_sq - sin_phi_h * sin_phi_h)
         } else {
             inner * inner * h_sq - a_h * a_h
         }
     }
-    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
-        let minor = F32s::splat(a_h.s, b.minor_radius());
+    fn band_height_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h: R) -> R {
+        let minor = b.minor_radius;
         // The printed Eq. 105 has r where the corrected one has R.
-        let centre = if EQ102 {
-            F32s::splat(a_h.s, b.major_radius())
-        } else {
-            minor
-        };
+        let centre = if EQ102 { b.major_radius } else { minor };
         let off = a_h - centre * h;
         minor * minor * h * h - off * off
     }

@@ -94,8 +94,8 @@ pub mod adapters;
 /// API, no stability promise.
 #[doc(hidden)]
 pub mod internals {
-    pub use crate::cull::{SectionFormulas, foot_point, skala_keeps};
-    pub use crate::num::{F32s, Vec3s};
+    pub use crate::cull::{LaneBounds, SectionFormulas, foot_point, skala_keeps};
+    pub use crate::num::{F32s, Real, Vec3s};
 }
 
 pub use certified::{

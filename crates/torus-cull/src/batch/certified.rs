@@ -186,7 +186,7 @@ fn f32_stage<S: Simd>(
                 (u, found, !found)
             }
         };
-        store(s, to_world, &line, u, base + k, out);
+        store(to_world, &line, u, base + k, out);
         hit_bits |= hit.bits() << k;
         miss_bits |= miss.bits() << k;
     }
@@ -224,7 +224,6 @@ fn load_line<S: Simd>(s: S, frame: &TorusF64, columns: &Columns, k: usize) -> Sc
 /// Stores `u` and the world normal at `u` for lanes `at..at + F32_LANES`.
 #[inline(always)]
 fn store<S: Simd>(
-    s: S,
     to_world: &Mat3,
     line: &ScaledLine<F32s<S>>,
     u: F32s<S>,
@@ -234,15 +233,10 @@ fn store<S: Simd>(
     let at = at..at + S::F32_LANES;
     let n = normal_at(line, u);
     u.store(&mut out.u[at.clone()]);
-    macro_rules! c {
-        ($x:expr) => {
-            F32s::splat(s, $x)
-        };
-    }
-    // `Mat3 * Vec3` as glam computes it: (x_axis·n.x + y_axis·n.y) + z_axis·n.z.
-    let (cx, cy, cz) = (to_world.x_axis, to_world.y_axis, to_world.z_axis);
     let [nx, ny, nz] = &mut out.normal;
-    (c!(cx.x) * n.x + c!(cy.x) * n.y + c!(cz.x) * n.z).store(&mut nx[at.clone()]);
-    (c!(cx.y) * n.x + c!(cy.y) * n.y + c!(cz.y) * n.z).store(&mut ny[at.clone()]);
-    (c!(cx.z) * n.x + c!(cy.z) * n.y + c!(cz.z) * n.z).store(&mut nz[at]);
+    // Exact: the f32 matrix in f64, rounded back to f32 in the lanes.
+    let world = n.rotated(&to_world.as_dmat3());
+    world.x.store(&mut nx[at.clone()]);
+    world.y.store(&mut ny[at.clone()]);
+    world.z.store(&mut nz[at]);
 }

@@ -11,7 +11,7 @@ use super::mask::KeepMask;
 use crate::CullBounds;
 use crate::cull::BatchCull;
 use crate::cull::KernelVisitor;
-use crate::cull::kernel::CullKernel;
+use crate::cull::kernel::{CullKernel, LaneBounds};
 use crate::num::Dispatch;
 use crate::num::F32s;
 use crate::num::Vec3s;
@@ -80,6 +80,8 @@ impl<K: CullKernel> WithSimd for Run<'_, K> {
             lines,
             words,
         } = self;
+        // The bounds in lanes, once for every block.
+        let bounds = LaneBounds::new(bounds, F32s::splat(s, 0.0));
         let [ox, oy, oz] = &lines.origin;
         let [dx, dy, dz] = &lines.dir;
         for (block, word) in words.iter_mut().enumerate().take(lines.blocks()) {
@@ -98,7 +100,7 @@ impl<K: CullKernel> WithSimd for Run<'_, K> {
                 }
                 let origin = Vec3s::new(load!(ox), load!(oy), load!(oz));
                 let dir = Vec3s::new(load!(dx), load!(dy), load!(dz));
-                bits |= kernel.keeps_lanes(s, bounds, origin, dir).bits() << k;
+                bits |= kernel.keeps_lanes(&bounds, origin, dir).bits() << k;
             }
             *word = bits;
         }

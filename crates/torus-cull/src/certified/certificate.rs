@@ -91,8 +91,8 @@ struct PointBound<R> {
 
 #[inline(always)]
 fn point_bound<R: Real>(line: &ScaledLine<R>, b: &Bounds<R>, u: R) -> PointBound<R> {
-    let one = u.splat(1.0);
-    let eps = u.splat(U32);
+    let one = u.k(1.0);
+    let eps = u.k(U32);
     let (q, d) = (line.q, line.d);
     let p = V3 {
         x: q.x + u * d.x,
@@ -112,30 +112,30 @@ fn point_bound<R: Real>(line: &ScaledLine<R>, b: &Bounds<R>, u: R) -> PointBound
     // squares), u·|ρ − 1| ≤ u·(ρ + 1), 2u·h, u·|sdf| ≤ u·(h + rr) and rr's own u·rr:
     // 3u·(ρ + h) + u·(1 + 2rr), bounded here by 4u·(ρ + h) + 2u·(1 + rr) for the
     // second-order terms.
-    let sdf_err = eps_p + u.splat(4.0 * U32) * (rho + h) + u.splat(2.0 * U32) * (one + line.rr);
+    let sdf_err = eps_p + u.k(4.0 * U32) * (rho + h) + u.k(2.0 * U32) * (one + line.rr);
     let sdf_lo = sdf - sdf_err;
     let sdf_hi = sdf + sdf_err;
     // F = (h − rr)(h + rr)·g₊ with h + rr ≥ 2rr + sdf_lo and g₊ ≥ 1 − rr² + 2ρ.
-    let zero = u.splat(0.0);
-    let g_plus_lo = b.k + u.splat(2.0) * (rho - sdf_err).max(zero);
-    let f_lo = sdf_lo * (u.splat(2.0) * line.rr + sdf_lo) * g_plus_lo * (one - u.splat(8.0) * eps);
+    let zero = u.k(0.0);
+    let g_plus_lo = b.k + u.k(2.0) * (rho - sdf_err).max(zero);
+    let f_lo = sdf_lo * (u.k(2.0) * line.rr + sdf_lo) * g_plus_lo * (one - u.k(8.0) * eps);
     let f_lo = R::select(sdf_lo.gt(zero), f_lo, one.negate());
     // F′ = ∇F·d̂ = 4(|p|² + k)(p·d̂) − 8(px d̂x + pz d̂z).
     let p_sq = rho_sq + p.y * p.y;
     let a = p_sq + b.k;
     let bb = p.dot(d);
     let c = p.x * d.x + p.z * d.z;
-    let four = u.splat(4.0);
-    let eight = u.splat(8.0);
+    let four = u.k(4.0);
+    let eight = u.k(8.0);
     let slope = four * a * bb - eight * c;
     // Rounding (at most 10 roundings in a monomial), plus the line's error through F's
     // Hessian (‖H‖ ≤ 12|p|² + 12) and d̂'s rounding through ‖∇F‖ ≤ 4|p|³ + 12|p|.
     // |p| ≤ |q| + |u| (d̂ a unit vector to rounding; the term is tiny beside the others).
-    let p_len = reach * u.splat(1.0 + 4.0 * U32);
-    let twelve = u.splat(12.0);
-    let slope_err = u.splat(10.0 * U32) * (four * a.abs() * bb.abs() + eight * c.abs())
+    let p_len = reach * u.k(1.0 + 4.0 * U32);
+    let twelve = u.k(12.0);
+    let slope_err = u.k(10.0 * U32) * (four * a.abs() * bb.abs() + eight * c.abs())
         + (twelve * p_sq + twelve) * eps_p
-        + (four * p_sq * p_len + twelve * p_len) * u.splat(2.0 * U32);
+        + (four * p_sq * p_len + twelve * p_len) * u.k(2.0 * U32);
     PointBound {
         f_lo,
         slope_lo: slope - slope_err,
@@ -155,12 +155,12 @@ fn convex_positive<R: Real>(
     at_a: &PointBound<R>,
     at_b: &PointBound<R>,
 ) -> R::Mask {
-    let zero = alpha.splat(0.0);
+    let zero = alpha.k(0.0);
     let both = at_a.f_lo.gt(zero) & at_b.f_lo.gt(zero);
     let sa = at_a.slope_lo;
     let sb = at_b.slope_hi;
     let lhs = at_a.f_lo * sb + at_b.f_lo * sa.negate();
-    let rhs = sa.negate() * sb * (beta - alpha) * alpha.splat(1.0 + 8.0 * U32);
+    let rhs = sa.negate() * sb * (beta - alpha) * alpha.k(1.0 + 8.0 * U32);
     both & (sa.ge(zero) | sb.le(zero) | lhs.gt(rhs))
 }
 
@@ -170,7 +170,7 @@ fn convex_positive<R: Real>(
 /// from the piece's outer end (`from`).
 #[inline(always)]
 fn lowest<R: Real>(c2: R, c1: R, from: R, alpha: R, beta: R) -> R {
-    let (two, four, twelve) = (from.splat(2.0), from.splat(4.0), from.splat(12.0));
+    let (two, four, twelve) = (from.k(2.0), from.k(4.0), from.k(12.0));
     let mut u = from;
     for _ in 0..5 {
         let slope = (four * u * u + two * c2) * u + c1;
@@ -194,7 +194,7 @@ fn convex_piece_positive<R: Real>(
     (alpha, at_a): (R, &PointBound<R>),
     (beta, at_b): (R, &PointBound<R>),
 ) -> R::Mask {
-    let zero = alpha.splat(0.0);
+    let zero = alpha.k(0.0);
     // The tangents at the piece's ends alone prove most pieces (F falling towards a hit,
     // or rising away from the range start): the split below only where a lane needs it.
     let simple = convex_positive(alpha, beta, at_a, at_b);
@@ -229,8 +229,8 @@ fn pick<R: Real>(m: R::Mask, x: &PointBound<R>, y: &PointBound<R>) -> PointBound
 /// w ≥ 0 such that F″ = 12u² + 2c2 ≥ 0 wherever u² ≥ w² (c2 taken at its lowest).
 #[inline(always)]
 fn inflection<R: Real>(f: &Quartic<R>) -> R {
-    ((f.bounds.c2_err - f.c2) * f.c2.splat((1.0 + 8.0 * U32) / 6.0))
-        .max(f.c2.splat(0.0))
+    ((f.bounds.c2_err - f.c2) * f.c2.k((1.0 + 8.0 * U32) / 6.0))
+        .max(f.c2.k(0.0))
         .sqrt()
 }
 
@@ -245,7 +245,7 @@ fn positive<R: Real>(
     (hi, at_hi): (R, &PointBound<R>),
 ) -> R::Mask {
     let (b, c2, c1) = (&f.bounds, f.c2, f.c1);
-    let zero = lo.splat(0.0);
+    let zero = lo.k(0.0);
     let minus_w = w.negate();
     let at_minus_w = point_bound(line, b, minus_w);
     let at_w = point_bound(line, b, w);
@@ -283,7 +283,7 @@ fn positive<R: Real>(
     let f_alpha = R::select(mid_start_is_lo, at_lo.f_lo, at_minus_w.f_lo);
     let f_beta = R::select(mid_end_is_hi, at_hi.f_lo, at_w.f_lo);
     let span = beta - alpha;
-    let sag = lo.splat(0.5 * (1.0 + 8.0 * U32)) * b.c2_err * span * span;
+    let sag = lo.k(0.5 * (1.0 + 8.0 * U32)) * b.c2_err * span * span;
     let mid_ok = f_alpha.gt(zero) & f_beta.gt(zero) & (f_alpha.min(f_beta)).gt(sag);
     (!left_exists | left_ok) & (!right_exists | right_ok) & (!mid_exists | mid_ok)
 }
@@ -305,27 +305,26 @@ struct Quartic<R: Real> {
 #[inline(always)]
 fn quartic<R: Real>(line: &ScaledLine<R>) -> Quartic<R> {
     let (q, d, rr) = (line.q, line.d, line.rr);
-    let one = rr.splat(1.0);
-    let eps = rr.splat(U32);
+    let one = rr.k(1.0);
+    let eps = rr.k(U32);
     // The quartic, in the f64 path's forms that do not cancel near the surface (the same
     // function).
     let [c2, c1, c0] = coefficients(q, d, rr);
     let rho = (q.x * q.x + q.z * q.z).sqrt();
-    let two = rr.splat(2.0);
+    let two = rr.k(2.0);
     let q_len_sq = q.dot(q);
     let q_len = q_len_sq.sqrt();
     let line_at_foot = line.line_rel * q_len + line.line_abs;
     let rho_plus = rho + one;
-    let c2_err = rr.splat(16.0 * U32)
-        * (two * rho_plus * rho_plus + two * (q.y * q.y + rr * rr) + rr.splat(4.0))
-        + rr.splat(8.0) * line_at_foot
-        + rr.splat(8.0) * eps;
+    let c2_err = rr.k(16.0 * U32)
+        * (two * rho_plus * rho_plus + two * (q.y * q.y + rr * rr) + rr.k(4.0))
+        + rr.k(8.0) * line_at_foot
+        + rr.k(8.0) * eps;
     // The chord: every true root has u² ≤ (1 + rr)² − |q_true|², which this bounds above.
     let outer = one + rr;
-    let chord_sq = outer * outer * rr.splat(1.0 + 16.0 * U32)
-        - q_len_sq * rr.splat(1.0 - 16.0 * U32)
-        + rr.splat(4.0) * line_at_foot;
-    let chord = chord_sq.max(rr.splat(0.0)).sqrt();
+    let chord_sq = outer * outer * rr.k(1.0 + 16.0 * U32) - q_len_sq * rr.k(1.0 - 16.0 * U32)
+        + rr.k(4.0) * line_at_foot;
+    let chord = chord_sq.max(rr.k(0.0)).sqrt();
     Quartic {
         c2,
         c1,
@@ -373,7 +372,7 @@ struct Stage<R: Real> {
 fn quick<R: Real>(line: &ScaledLine<R>) -> (Decision<R>, Stage<R>) {
     let f = quartic(line);
     let (lo, hi, b) = (f.lo, f.hi, f.bounds);
-    let zero = lo.splat(0.0);
+    let zero = lo.k(0.0);
     // The solver's "careful" lanes (near-double resolvent roots, near-tangent factors) are
     // not escalated on its word: soundness rests on the proof alone, which fails wherever
     // the f32 root is wrong, and often succeeds where the flag was only cautious.
@@ -382,7 +381,7 @@ fn quick<R: Real>(line: &ScaledLine<R>) -> (Decision<R>, Stage<R>) {
     let finite = line.rr.is_finite() & f.chord_sq.is_finite() & f.c2.is_finite() & f.c0.is_finite();
 
     // Hit: sdf > 0 at the bracket's start, < 0 at its end, F > 0 before it.
-    let bracket = lo.splat(BRACKET);
+    let bracket = lo.k(BRACKET);
     let left = (root - bracket).max(lo);
     let right = (root + bracket).min(line.hi);
     let at_left = point_bound(line, &b, left);
@@ -448,6 +447,6 @@ pub(crate) fn decide<R: Real>(line: &ScaledLine<R>) -> Decision<R> {
 /// The unit outward normal at `p(u)` in the scaled frame (the f64 path's function).
 #[inline(always)]
 pub(crate) fn normal_at<R: Real>(line: &ScaledLine<R>, u: R) -> V3<R> {
-    let k = u.splat(1.0) - line.rr * line.rr;
+    let k = u.k(1.0) - line.rr * line.rr;
     crate::intersect::reduce::normal(line.q, line.d, u, k)
 }

@@ -49,12 +49,12 @@ pub(crate) fn scale<R: Real>(o: V3<R>, d: V3<R>, inv_major: R, t_min: R, t_max: 
     // f64 forms q = (o − (o·d̂)d̂)/R with an error of about 2⁻⁵¹·|o|/R: past
     // `FAR_SCALED` that outgrows `LINE_ABS`. NaN (a non-finite input) fails the test too.
     let far_sq = o.dot(o) * inv_major * inv_major;
-    let far = !far_sq.le(inv_major.splat(FAR_SCALED * FAR_SCALED));
+    let far = !far_sq.le(inv_major.k(FAR_SCALED * FAR_SCALED));
     let line = foot_line(o, d, inv_major);
     let (lo, hi) = line.u_range(t_min, t_max, inv_major);
     // Every root has |u| < 2: a range end beyond ±4 is as good as infinite, and keeps f32
     // finite.
-    let (min, max) = (inv_major.splat(-4.0), inv_major.splat(4.0));
+    let (min, max) = (inv_major.k(-4.0), inv_major.k(4.0));
     WideLine {
         foot: line,
         lo: lo.max(min).min(max),
@@ -91,8 +91,8 @@ pub(crate) fn lanes<R: Real>(like: R, q: [R; 3], d: [R; 3], rr_lo_hi: [R; 3]) ->
         rr: rr_lo_hi[0],
         lo: rr_lo_hi[1],
         hi: rr_lo_hi[2],
-        line_rel: like.splat(LINE_REL),
-        line_abs: like.splat(LINE_ABS),
+        line_rel: like.k(LINE_REL),
+        line_abs: like.k(LINE_ABS),
     }
 }
 

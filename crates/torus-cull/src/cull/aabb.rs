@@ -1,10 +1,7 @@
 //! `aabb`: the torus's own box, what a BVH leaf already knows.
 
-use super::CullBounds;
-use super::kernel::{CullKernel, scalar_cull};
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use crate::num::{Real32, V3};
 
 scalar_cull! {
     /// Rejects lines that miss the box [−(R+r_η), R+r_η] × [−r_η, r_η] × [−(R+r_η), R+r_η].
@@ -21,12 +18,11 @@ scalar_cull! {
 
 impl CullKernel for AabbCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        let outer = F32s::splat(s, b.outer_safe);
-        let half = Vec3s::new(outer, F32s::splat(s, b.minor_safe), outer);
-        let neg_half = Vec3s::new(-half.x, -half.y, -half.z);
-        let one = F32s::splat(s, 1.0);
-        let inv = Vec3s::new(one / d.x, one / d.y, one / d.z);
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+        let half = V3::new(b.outer_safe, b.minor_safe, b.outer_safe);
+        let neg_half = half.negate();
+        let one = b.outer_safe.k(1.0);
+        let inv = V3::new(one / d.x, one / d.y, one / d.z);
         let t0 = (neg_half - o).mul_elem(inv);
         let t1 = (half - o).mul_elem(inv);
         let near = t0.min_cmp(t1);

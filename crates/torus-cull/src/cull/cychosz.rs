@@ -1,10 +1,8 @@
 //! `cychosz`: Cychosz's bounding sphere R + r plus the slab |y| ≤ r (Graphics Gems II, 1991).
 
-use super::kernel::{CullKernel, scalar_cull};
-use super::{CullBounds, foot_point};
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use super::foot_point;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use crate::num::{Real, Real32, V3};
 
 scalar_cull! {
     /// Sphere, then slab: reject if the sphere chord's end heights are both > r or both < −r.
@@ -20,37 +18,32 @@ scalar_cull! {
 
 impl CullKernel for CychoszCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        sphere_slab(s, b, o, d).keep
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+        sphere_slab(b, o, d).keep
     }
 }
 
 /// The sphere + slab quantities, shared with `skala`, which refines the survivors.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct SphereSlab<S: Simd> {
+#[derive(Clone, Copy)]
+pub(crate) struct SphereSlab<R: Real> {
     /// The foot point p = o − d (o·d)/|d|².
-    pub foot: Vec3s<S>,
+    pub foot: V3<R>,
     /// (R + r)² − |p|²: the squared half chord, negative when the sphere is missed.
-    pub half_chord_sq: F32s<S>,
+    pub half_chord_sq: R,
     /// d_y²/|d|².
-    pub unit_y_sq: F32s<S>,
+    pub unit_y_sq: R,
     /// Cychosz's verdict.
-    pub keep: M32s<S>,
+    pub keep: R::Mask,
 }
 
 /// Cychosz's test without a square root and without a branch.
 #[inline(always)]
-pub(crate) fn sphere_slab<S: Simd>(
-    s: S,
-    b: &CullBounds,
-    origin: Vec3s<S>,
-    dir: Vec3s<S>,
-) -> SphereSlab<S> {
-    let zero = F32s::splat(s, 0.0);
+pub(crate) fn sphere_slab<R: Real>(b: &LaneBounds<R>, origin: V3<R>, dir: V3<R>) -> SphereSlab<R> {
+    let zero = b.outer_safe_sq.k(0.0);
     let (foot, inv_len_sq) = foot_point(origin, dir);
-    let half_chord_sq = F32s::splat(s, b.outer_safe_sq) - foot.length_squared();
+    let half_chord_sq = b.outer_safe_sq - foot.length_squared();
     let unit_y_sq = dir.y * dir.y * inv_len_sq;
-    let above = foot.y.abs() - F32s::splat(s, b.minor_safe);
+    let above = foot.y.abs() - b.minor_safe;
     let beyond_slab = above.gt(zero) & (above * above).gt(unit_y_sq * half_chord_sq);
     SphereSlab {
         foot,

@@ -1,13 +1,10 @@
 //! `discriminant` and `discriminant_f64`: the ray–torus quartic's real-root
 //! classification, exact and root-free.
 
-use super::kernel::{Cull, CullKernel, scalar_cull};
+use super::kernel::{Cull, CullKernel, LaneBounds, scalar_cull};
 use super::{CullBounds, moderate};
-use crate::num::Real;
-use crate::num::Vec3s;
-use crate::num::{F32s, F64s, M32s};
+use crate::num::{Real, Real32, V3, sc};
 use glam::Vec3;
-use pulp::{Scalar, Simd};
 
 scalar_cull! {
     /// Reject a line when its quartic has no real root, read from the discriminant; f32.
@@ -50,12 +47,7 @@ scalar_cull! {
 
 impl CullKernel for DiscriminantCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        macro_rules! c {
-            ($x:expr) => {
-                F32s::splat(s, $x)
-            };
-        }
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
         // The foot point from the moment m = o × d, f = d × m/|d|², is orthogonal to d
         // to the rounding of f itself; o − d(o·d)/|d|² slides along the line by ≈ ε|o|,
         // which changes Q = f_y d_y (a far, steep line through a small hole was once
@@ -63,14 +55,14 @@ impl CullKernel for DiscriminantCull {
         // With |d|² in [2⁻⁴⁰, 2⁴⁰], |m|² cannot overflow for origins within 10¹³.
         let d = moderate(d);
         let m = o.cross(d);
-        let inv_len_sq = c!(1.0) / d.length_squared();
+        let inv_len_sq = b.inv_major_sq.k(1.0) / d.length_squared();
         let f_sq = m.length_squared() * inv_len_sq;
         let f_y = (d.z * m.x - d.x * m.z) * inv_len_sq;
-        let inside_sphere = f_sq.le(c!(b.outer_safe_sq));
-        let fy_sq = f_y * f_y * c!(b.inv_major_sq);
-        let rho_sq = f_sq * c!(b.inv_major_sq) - fy_sq;
+        let inside_sphere = f_sq.le(b.outer_safe_sq);
+        let fy_sq = f_y * f_y * b.inv_major_sq;
+        let rho_sq = f_sq * b.inv_major_sq - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
-        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, c!(b.minor_rel_sq))
+        inside_sphere & !no_real_root(rho_sq, fy_sq, unit_y_sq, b.minor_rel_sq)
     }
 }
 
@@ -100,13 +92,7 @@ impl Cull for DiscriminantF64Cull {
         let fy_sq = f_y * f_y * b.inv_major_sq_f64;
         let rho_sq = f_sq * b.inv_major_sq_f64 - fy_sq;
         let unit_y_sq = d.y * d.y * inv_len_sq;
-        let one = |x: f64| F64s::splat(Scalar::new(), x);
-        let rootless = no_real_root(
-            one(rho_sq),
-            one(fy_sq),
-            one(unit_y_sq),
-            one(b.minor_rel_sq_f64),
-        );
+        let rootless = no_real_root(sc(rho_sq), sc(fy_sq), sc(unit_y_sq), sc(b.minor_rel_sq_f64));
         inside_sphere & !rootless.m
     }
 }
@@ -115,31 +101,27 @@ impl Cull for DiscriminantF64Cull {
 /// f_y², d̂_y² and r′². About 20 multiplies and 12 adds, no branch.
 #[inline(always)]
 fn no_real_root<T: Real>(rho_sq: T, fy_sq: T, unit_y_sq: T, minor_sq: T) -> T::Mask {
-    // A macro, not a closure: a closure that LLVM leaves outlined would run without the
-    // SIMD target features.
-    macro_rules! c {
-        ($x:expr) => {
-            rho_sq.splat($x)
-        };
-    }
-    let rho_sq_m1 = rho_sq - c!(1.0);
+    let (zero, one, two) = (rho_sq.k(0.0), rho_sq.k(1.0), rho_sq.k(2.0));
+    let rho_sq_m1 = rho_sq - one;
     let b = fy_sq - minor_sq;
     // P = k − 2 + 2d̂_y², with k − 2 = (ρ² − 1) + b.
-    let p = rho_sq_m1 + b + c!(2.0) * unit_y_sq;
+    let p = rho_sq_m1 + b + two * unit_y_sq;
     // S = k² − 4ρ², rearranged so that no two large terms cancel.
-    let s = rho_sq_m1 * rho_sq_m1 + b * (c!(2.0) * (rho_sq + c!(1.0)) + b);
+    let s = rho_sq_m1 * rho_sq_m1 + b * (two * (rho_sq + one) + b);
     let q_sq = fy_sq * unit_y_sq;
     let p_sq = p * p;
     let s_minus_p_sq = s - p_sq;
     let delta = s * s_minus_p_sq * s_minus_p_sq
-        - c!(8.0) * q_sq * (p_sq * p - c!(9.0) * p * s + c!(54.0) * q_sq);
-    delta.gt(c!(0.0)) & (p.gt(c!(0.0)) | s_minus_p_sq.gt(c!(0.0)))
+        - zero.k(8.0) * q_sq * (p_sq * p - zero.k(9.0) * p * s + zero.k(54.0) * q_sq);
+    delta.gt(zero) & (p.gt(zero) | s_minus_p_sq.gt(zero))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::{F32s, F64s};
     use glam::DVec3;
+    use pulp::Scalar;
 
     /// The quartic's coefficients from P, Q, S against the direct expansion of
     /// (|x|² + 1 − r′²)² − 4ρ² along the line, at a few points.

@@ -1,11 +1,9 @@
 //! `ellipsoid`: Cychosz's test with the sphere replaced by the outer ellipsoid
 //! ρ² + (ν + 1)·y² ≤ (R + r)², which touches the torus.
 
-use super::kernel::{CullKernel, scalar_cull};
-use super::{CullBounds, foot_point, moderate};
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use super::{foot_point, moderate};
+use crate::num::{Real, Real32, V3};
 
 scalar_cull! {
     /// Reject lines that miss E ∩ {|y| ≤ r}, E the ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².
@@ -37,44 +35,43 @@ scalar_cull! {
 
 impl CullKernel for EllipsoidCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        ellipsoid_slab(s, b, o, d).keep
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+        ellipsoid_slab(b, o, d).keep
     }
 }
 
 /// The y-scaled line and its ellipsoid chord, shared with `quadric`, which refines the
 /// survivors (so `quadric` rejects everything `ellipsoid` does, bit for bit).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct EllipsoidChord<S: Simd> {
+#[derive(Clone, Copy)]
+pub(crate) struct EllipsoidChord<R: Real> {
     /// Foot point of the y-scaled line: its point closest to the centre.
-    pub foot: Vec3s<S>,
+    pub foot: V3<R>,
     /// Direction of the y-scaled line (from the moderated direction).
-    pub dir: Vec3s<S>,
+    pub dir: V3<R>,
     /// 1/|dir|².
-    pub inv_len_sq: F32s<S>,
+    pub inv_len_sq: R,
     /// (R + r_η)² − |foot|²: the squared half chord, negative when E is missed.
-    pub half_chord_sq: F32s<S>,
+    pub half_chord_sq: R,
     /// The verdict: the line meets E ∩ slab.
-    pub keep: M32s<S>,
+    pub keep: R::Mask,
 }
 
 /// The y-scaled line's sphere chord and slab test, without a square root or a branch.
 #[inline(always)]
-pub(crate) fn ellipsoid_slab<S: Simd>(
-    s: S,
-    b: &CullBounds,
-    origin: Vec3s<S>,
-    dir: Vec3s<S>,
-) -> EllipsoidChord<S> {
-    let zero = F32s::splat(s, 0.0);
+pub(crate) fn ellipsoid_slab<R: Real32>(
+    b: &LaneBounds<R>,
+    origin: V3<R>,
+    dir: V3<R>,
+) -> EllipsoidChord<R> {
+    let zero = b.outer_safe_sq.k(0.0);
     // |d′|² ≤ (ν + 1)|d|², and `quadric` takes fourth powers of d′.
     let d = moderate(dir);
-    let scale = F32s::splat(s, b.ellipsoid_y_scale);
-    let dir = Vec3s::new(d.x, scale * d.y, d.z);
-    let (foot, inv_len_sq) = foot_point(Vec3s::new(origin.x, scale * origin.y, origin.z), dir);
-    let half_chord_sq = F32s::splat(s, b.outer_safe_sq) - foot.length_squared();
+    let scale = b.ellipsoid_y_scale;
+    let dir = V3::new(d.x, scale * d.y, d.z);
+    let (foot, inv_len_sq) = foot_point(V3::new(origin.x, scale * origin.y, origin.z), dir);
+    let half_chord_sq = b.outer_safe_sq - foot.length_squared();
     let unit_y_sq = dir.y * dir.y * inv_len_sq;
-    let above = foot.y.abs() - F32s::splat(s, b.ellipsoid_slab);
+    let above = foot.y.abs() - b.ellipsoid_slab;
     let beyond_slab = above.gt(zero) & (above * above).gt(unit_y_sq * half_chord_sq);
     EllipsoidChord {
         foot,
@@ -89,6 +86,7 @@ pub(crate) fn ellipsoid_slab<S: Simd>(
 mod tests {
     use super::*;
     use crate::Cull;
+    use crate::CullBounds;
     use glam::Vec3;
 
     fn keeps(big: f32, small: f32, o: [f32; 3], d: [f32; 3]) -> bool {

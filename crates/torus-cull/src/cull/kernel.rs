@@ -2,18 +2,18 @@
 //! kernel behind both the scalar and the lane form of each cull ([`CullKernel`]).
 //!
 //! **One source.** Each cull is written once, as a [`CullKernel`]: a function generic over
-//! `S: pulp::Simd` on the lane wrappers. pulp's [`pulp::Scalar`] implements `Simd` with
-//! `f32s = f32` and `m32s = bool`, so the kernel instantiated at `Scalar` *is* the scalar
-//! cull ([`keeps_scalar`], what every [`Cull::keeps`] calls), and instantiated at AVX2,
-//! AVX-512 or NEON it is the batch cull of [`crate::batch::cull_batch`]. The two agree bit
-//! for bit by construction: the same operations in the same order, no fused multiply-add
-//! (see `src/num/lanes.rs`); `tests/batch/batch.rs` checks it at every dispatch level.
+//! the number trait [`Real32`] (the solver's [`crate::num::Real`] on f32 lanes), with the
+//! torus's bounds lifted into lanes once ([`LaneBounds`]). At `F32s<pulp::Scalar>` (one
+//! `f32`, masks `bool`) the kernel *is* the scalar cull ([`keeps_scalar`], what every
+//! [`Cull::keeps`] calls), and at AVX2, AVX-512 or NEON it is the batch cull of
+//! [`crate::batch::cull_batch`]. The two agree bit for bit by construction: the same
+//! operations in the same order, no fused multiply-add (see `src/num/lanes.rs`);
+//! `tests/batch/batch.rs` checks it at every dispatch level.
 
 use super::{CullBounds, Shape};
-use crate::num::M32s;
-use crate::num::Vec3s;
+use crate::num::{Real, Real32, V3, Vec3s};
 use glam::Vec3;
-use pulp::{Scalar, Simd};
+use pulp::Scalar;
 
 /// A bounding test for one torus in its own frame.
 ///
@@ -76,7 +76,60 @@ pub trait CullVisitor {
 /// which at width 1 is the scalar early exit.
 pub(crate) trait CullKernel: Copy {
     /// The keep mask of the lines `o + t·d`, one per lane.
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S>;
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask;
+}
+
+/// A torus's [`CullBounds`] in lanes: each constant in every lane, made once per torus
+/// (per batch, or per scalar call, where it is free) instead of in every kernel step.
+#[doc(hidden)]
+#[derive(Debug, Clone, Copy)]
+pub struct LaneBounds<R> {
+    /// R.
+    pub major_radius: R,
+    /// r (unpadded, for the paper-as-printed variants).
+    pub minor_radius: R,
+    /// r_η = r + η.
+    pub minor_safe: R,
+    /// r_η².
+    pub minor_safe_sq: R,
+    /// R + r_η.
+    pub outer_safe: R,
+    /// (R + r_η)².
+    pub outer_safe_sq: R,
+    /// (R − r_η)², or 0 when the padded hole closes.
+    pub inner_safe_sq: R,
+    /// √(ν_η + 1), rounded down.
+    pub ellipsoid_y_scale: R,
+    /// √(ν_η + 1)·r_η.
+    pub ellipsoid_slab: R,
+    /// (ν_η − 1)/(ν_η + 1), rounded down, or 0 when the padded hole closes.
+    pub hyperboloid_y_coef: R,
+    /// 1/R².
+    pub inv_major_sq: R,
+    /// (r_η/R)².
+    pub minor_rel_sq: R,
+}
+
+impl<R: Real> LaneBounds<R> {
+    /// `b`'s constants in every lane, with `like`'s SIMD token (see [`CullBounds`] for
+    /// what each one is).
+    #[inline(always)]
+    pub fn new(b: &CullBounds, like: R) -> Self {
+        LaneBounds {
+            major_radius: like.k(b.major_radius),
+            minor_radius: like.k(b.minor_radius),
+            minor_safe: like.k(b.minor_safe),
+            minor_safe_sq: like.k(b.minor_safe_sq),
+            outer_safe: like.k(b.outer_safe),
+            outer_safe_sq: like.k(b.outer_safe_sq),
+            inner_safe_sq: like.k(b.inner_safe_sq),
+            ellipsoid_y_scale: like.k(b.ellipsoid_y_scale),
+            ellipsoid_slab: like.k(b.ellipsoid_slab),
+            hyperboloid_y_coef: like.k(b.hyperboloid_y_coef),
+            inv_major_sq: like.k(b.inv_major_sq),
+            minor_rel_sq: like.k(b.minor_rel_sq),
+        }
+    }
 }
 
 /// The kernel at width 1: the scalar cull.
@@ -88,9 +141,8 @@ pub(crate) fn keeps_scalar<K: CullKernel>(
     dir: Vec3,
 ) -> bool {
     let s = Scalar::new();
-    kernel
-        .keeps_lanes(s, b, Vec3s::splat(s, origin), Vec3s::splat(s, dir))
-        .m
+    let (o, d) = (Vec3s::splat(s, origin), Vec3s::splat(s, dir));
+    kernel.keeps_lanes(&LaneBounds::new(b, o.x), o, d).m
 }
 
 /// Declares a cull, `pub struct $cull = "$name";` with its docs, and its [`Cull`] impl: the

@@ -5,10 +5,12 @@
 //! line (the exact intersection must run) and `false` to *reject* it (proven miss).
 //!
 //! Each cull lives in its own file, written **once** for every lane width: a kernel generic
-//! over `S: pulp::Simd` (`kernel`'s `CullKernel`) whose instantiation at `pulp::Scalar` is
-//! the one-line [`Cull::keeps`] and whose instantiation at AVX2, AVX-512 or NEON is the
-//! batch cull of [`crate::batch::cull_batch`]. The module splits into
-//! * `kernel`: the [`Cull`] trait, [`CullVisitor`], and the kernel shape;
+//! over the number trait `Real32` (`num::real`; `kernel`'s `CullKernel`) whose
+//! instantiation at width 1 is the one-line [`Cull::keeps`] and whose instantiation at
+//! AVX2, AVX-512 or NEON is the batch cull of [`crate::batch::cull_batch`]. The module
+//! splits into
+//! * `kernel`: the [`Cull`] trait, [`CullVisitor`], the kernel shape, and the bounds in
+//!   lanes ([`LaneBounds`]);
 //! * `steps`: the scale steps every cull shares (the foot point, rescaling); the
 //!   per-torus constants with their safety margin, [`CullBounds`], belong to the torus;
 //! * `registry`: [`CullKind`], the registry by stable name, used in results, the CLI and
@@ -47,6 +49,8 @@ pub use aabb::AabbCull;
 pub use cychosz::CychoszCull;
 pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
 pub use ellipsoid::EllipsoidCull;
+#[doc(hidden)]
+pub use kernel::LaneBounds;
 pub use kernel::{Cull, CullVisitor};
 pub use none::NoCull;
 #[cfg(feature = "gpu")]

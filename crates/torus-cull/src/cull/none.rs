@@ -1,10 +1,7 @@
 //! `none`: the baseline that keeps every line, so the quartic always runs.
 
-use super::CullBounds;
-use super::kernel::{CullKernel, scalar_cull};
-use crate::num::M32s;
-use crate::num::Vec3s;
-use pulp::Simd;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use crate::num::{Real32, V3};
 
 scalar_cull! {
     /// Keeps every line.
@@ -13,7 +10,7 @@ scalar_cull! {
 
 impl CullKernel for NoCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, _: &CullBounds, _: Vec3s<S>, _: Vec3s<S>) -> M32s<S> {
-        M32s::splat(s, true)
+    fn keeps_lanes<R: Real32>(self, _: &LaneBounds<R>, o: V3<R>, _: V3<R>) -> R::Mask {
+        o.x.mask(true)
     }
 }

@@ -1,13 +1,9 @@
 //! `quadric`: the outer ellipsoid ∩ the slab ∩ the inner hyperboloid, two quadrics that
 //! touch the torus.
 
-use super::CullBounds;
 use super::ellipsoid::{EllipsoidChord, ellipsoid_slab};
-use super::kernel::{CullKernel, scalar_cull};
-use crate::num::RealMask;
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use crate::num::{Real, Real32, RealMask, V3};
 
 scalar_cull! {
     /// Reject lines that miss E ∩ {|y| ≤ r} ∩ {H ≥ 0}, with the outer ellipsoid
@@ -43,13 +39,13 @@ scalar_cull! {
 
 impl CullKernel for QuadricCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        let chord = ellipsoid_slab(s, b, o, d);
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+        let chord = ellipsoid_slab(b, o, d);
         // No line left to decide: at width 1 the scalar early exit.
         if !chord.keep.any() {
             return chord.keep;
         }
-        chord.keep & reaches_hyperboloid(s, b, &chord)
+        chord.keep & reaches_hyperboloid(b, &chord)
     }
 }
 
@@ -61,12 +57,7 @@ pub(crate) const HORIZONTAL_DY: f32 = 1e-20;
 /// coordinates, where H is ρ² − c·y′² − (R − r_η)², c = (ν_η − 1)/(ν_η + 1)). The clip
 /// uses the float type's `min`/`max`, which ignore a NaN operand.
 #[inline(always)]
-fn reaches_hyperboloid<S: Simd>(s: S, b: &CullBounds, chord: &EllipsoidChord<S>) -> M32s<S> {
-    macro_rules! c_ {
-        ($x:expr) => {
-            F32s::splat(s, $x)
-        };
-    }
+fn reaches_hyperboloid<R: Real>(b: &LaneBounds<R>, chord: &EllipsoidChord<R>) -> R::Mask {
     let EllipsoidChord {
         foot: q,
         dir: d,
@@ -75,21 +66,22 @@ fn reaches_hyperboloid<S: Simd>(s: S, b: &CullBounds, chord: &EllipsoidChord<S>)
         ..
     } = *chord;
     // Points are q + τ·d; the chord of E is |τ| ≤ √(half_chord_sq)/|d|.
-    let half = (half_chord_sq.max_num(c_!(0.0)) * inv_len_sq).sqrt();
-    let dy = d.y.abs().max_num(c_!(HORIZONTAL_DY)).copysign(d.y);
-    let inv_dy = c_!(1.0) / dy;
-    let slab = c_!(b.ellipsoid_slab);
-    let t_bottom = (-slab - q.y) * inv_dy;
+    let zero = inv_len_sq.k(0.0);
+    let half = (half_chord_sq.max_num(zero) * inv_len_sq).sqrt();
+    let dy = d.y.abs().max_num(zero.k(HORIZONTAL_DY)).copysign(d.y);
+    let inv_dy = zero.k(1.0) / dy;
+    let slab = b.ellipsoid_slab;
+    let t_bottom = (slab.negate() - q.y) * inv_dy;
     let t_top = (slab - q.y) * inv_dy;
-    let lo = (-half).max_num(t_bottom.min_num(t_top));
+    let lo = half.negate().max_num(t_bottom.min_num(t_top));
     let hi = half.min_num(t_bottom.max_num(t_top));
-    let c = c_!(b.hyperboloid_y_coef);
-    let inner_sq = c_!(b.inner_safe_sq);
+    let c = b.hyperboloid_y_coef;
+    let inner_sq = b.inner_safe_sq;
     // A macro, not a closure: a closure that LLVM leaves outlined would run without the
     // SIMD target features.
     macro_rules! h_at {
         ($x:expr) => {{
-            let x: Vec3s<S> = $x;
+            let x: V3<R> = $x;
             x.x * x.x + x.z * x.z - c * x.y * x.y - inner_sq
         }};
     }
@@ -98,17 +90,16 @@ fn reaches_hyperboloid<S: Simd>(s: S, b: &CullBounds, chord: &EllipsoidChord<S>)
     // misjudged at an end is harmless: H there is within second order of H(τ*).
     let neg_a = c * d.y * d.y - d.x * d.x - d.z * d.z;
     let half_b = q.x * d.x + q.z * d.z - c * q.y * d.y;
-    let vertex_inside = neg_a.gt(c_!(0.0)) & half_b.ge(lo * neg_a) & half_b.le(hi * neg_a);
-    let vertex_reaches = (h_at!(q) * neg_a + half_b * half_b).ge(c_!(0.0));
-    h_at!(q + d * lo).ge(c_!(0.0))
-        | h_at!(q + d * hi).ge(c_!(0.0))
-        | (vertex_inside & vertex_reaches)
+    let vertex_inside = neg_a.gt(zero) & half_b.ge(lo * neg_a) & half_b.le(hi * neg_a);
+    let vertex_reaches = (h_at!(q) * neg_a + half_b * half_b).ge(zero);
+    h_at!(q + d * lo).ge(zero) | h_at!(q + d * hi).ge(zero) | (vertex_inside & vertex_reaches)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::Cull;
+    use crate::CullBounds;
     use crate::cull::EllipsoidCull;
     use glam::Vec3;
 

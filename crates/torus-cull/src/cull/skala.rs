@@ -2,12 +2,9 @@
 //! Alternative Formulations"), with the paper's misprints corrected (see `docs/math.md`).
 
 use super::cychosz::{SphereSlab, sphere_slab};
-use super::kernel::{CullKernel, scalar_cull};
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
 use super::{AXIS_PARALLEL_H2, CullBounds, rescaled};
-use crate::num::RealMask;
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use crate::num::{Real, Real32, RealMask, V3};
 
 scalar_cull! {
     /// Cychosz's sphere + slab first (cheap, and most rejections), then, on the survivors,
@@ -50,8 +47,8 @@ scalar_cull! {
 
 impl CullKernel for SkalaCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-        skala_lanes::<S, Corrected>(s, b, o, d)
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+        skala_lanes::<R, Corrected>(b, o, d)
     }
 }
 
@@ -59,11 +56,11 @@ impl CullKernel for SkalaCull {
 #[doc(hidden)]
 pub trait SectionFormulas {
     /// Tube radius the formulas use (padded for the timed cull).
-    fn minor(b: &CullBounds) -> f32;
+    fn minor<R: Real>(b: &LaneBounds<R>) -> R;
     /// x_B²·h² for case a), given A = a·h and h² (any common scale of A and h).
-    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S>;
+    fn hole_edge_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h_sq: R) -> R;
     /// h_c²·h² for case c), given A = a·h and h (any common scale of A and h).
-    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S>;
+    fn band_height_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h: R) -> R;
 }
 
 /// The corrected formulas, x_B² = (R − r)² − a² (Eq. 104) and h_c² = r² − (a − R)²
@@ -72,20 +69,19 @@ pub(crate) struct Corrected;
 
 impl SectionFormulas for Corrected {
     #[inline(always)]
-    fn minor(b: &CullBounds) -> f32 {
+    fn minor<R: Real>(b: &LaneBounds<R>) -> R {
         b.minor_safe
     }
     #[inline(always)]
-    fn hole_edge_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h_sq: F32s<S>) -> F32s<S> {
+    fn hole_edge_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h_sq: R) -> R {
         // Rounding here acts like moving R − r and a by ~ε relative, which the margin η
         // absorbs, even where x_B has infinite slope (a ≈ R − r).
-        F32s::splat(a_h.s, b.inner_safe_sq) * h_sq - a_h * a_h
+        b.inner_safe_sq * h_sq - a_h * a_h
     }
     #[inline(always)]
-    fn band_height_sq_h2<S: Simd>(b: &CullBounds, a_h: F32s<S>, h: F32s<S>) -> F32s<S> {
-        let s = a_h.s;
-        let off = a_h - F32s::splat(s, b.major_radius) * h;
-        F32s::splat(s, b.minor_safe_sq) * h * h - off * off
+    fn band_height_sq_h2<R: Real>(b: &LaneBounds<R>, a_h: R, h: R) -> R {
+        let off = a_h - b.major_radius * h;
+        b.minor_safe_sq * h * h - off * off
     }
 }
 
@@ -107,8 +103,8 @@ pub fn skala_keeps<F: SectionFormulas>(
     impl<F> Copy for With<F> {}
     impl<F: SectionFormulas> CullKernel for With<F> {
         #[inline(always)]
-        fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
-            skala_lanes::<S, F>(s, b, o, d)
+        fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
+            skala_lanes::<R, F>(b, o, d)
         }
     }
     super::kernel::keeps_scalar(With::<F>(std::marker::PhantomData), b, origin, dir)
@@ -116,23 +112,17 @@ pub fn skala_keeps<F: SectionFormulas>(
 
 /// The Skala test with the section formulas `F`; see [`SkalaCull`].
 #[inline(always)]
-fn skala_lanes<S: Simd, F: SectionFormulas>(
-    s: S,
-    b: &CullBounds,
-    origin: Vec3s<S>,
-    dir: Vec3s<S>,
-) -> M32s<S> {
-    macro_rules! c {
-        ($x:expr) => {
-            F32s::splat(s, $x)
-        };
-    }
+fn skala_lanes<R: Real32, F: SectionFormulas>(
+    b: &LaneBounds<R>,
+    origin: V3<R>,
+    dir: V3<R>,
+) -> R::Mask {
     let SphereSlab {
         foot: p,
         half_chord_sq,
         unit_y_sq,
         keep,
-    } = sphere_slab(s, b, origin, dir);
+    } = sphere_slab(b, origin, dir);
     // No line left to decide: at width 1 the scalar early exit (most lines leave here).
     if !keep.any() {
         return keep;
@@ -143,10 +133,10 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     let len_sq = d.length_squared();
     let h_sq = d.x * d.x + d.z * d.z;
     // Parallel to the axis: ρ is constant; the sphere already bounds it from outside.
-    let axis_parallel = h_sq.lt(c!(AXIS_PARALLEL_H2) * len_sq);
+    let axis_parallel = h_sq.lt(len_sq.k(AXIS_PARALLEL_H2) * len_sq);
     // ≥: where the padded hole closes (R ≤ r_η, a horn or spindle image) inner_safe_sq is
     // 0, and the axis itself (ρ = 0) crosses the solid.
-    let axis_keep = (p.x * p.x + p.z * p.z).ge(c!(b.inner_safe_sq));
+    let axis_keep = (p.x * p.x + p.z * p.z).ge(b.inner_safe_sq);
     // a·h, with h = |(d_x, d_z)| unnormalized.
     let a_h = (p.x * d.z - p.z * d.x).abs();
     let a_h_sq = a_h * a_h;
@@ -157,7 +147,7 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     // answer, or is kept by it anyway, so `true` stands in for it. `kept` gathers the
     // verdicts of the lanes decided so far; once no lane is left undecided it is the
     // answer (at width 1, the scalar code's return right after each case).
-    let yes = M32s::splat(s, true);
+    let yes = len_sq.mask(true);
     // (No lane parallel to the axis keeps none by it: at width 1, ρ's test only there.)
     let kept = if axis_parallel.any() {
         keep & axis_parallel & axis_keep
@@ -172,11 +162,11 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     // Outer band (case c, and d when h_c² < 0): the slab shrinks to |Y| ≤ h_c, tested as
     // lowest² + (a − R)² ≤ r², times h² so that no division is needed. A chord that
     // crosses y = 0 (p_y² ≤ its squared height reach) has lowest = 0: keep, no root.
-    let band = a_h_sq.ge(c!(b.major_radius) * c!(b.major_radius) * h_sq);
+    let band = a_h_sq.ge(b.major_radius * b.major_radius * h_sq);
     let in_band = undecided & band;
     let (kept, undecided) = if in_band.any() {
         let band_keep =
-            outer_band_keeps::<S, F>(b, p, unit_y_sq * half_chord_sq, (a_h, h_sq), in_band);
+            outer_band_keeps::<R, F>(b, p, unit_y_sq * half_chord_sq, (a_h, h_sq), in_band);
         let undecided = undecided & !band;
         let kept = kept | (in_band & band_keep);
         if !undecided.any() {
@@ -193,9 +183,9 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
     // along the line by ~ε|o|, and 1/h would amplify that for steep lines.) Rejection
     // needs x_B·h·|d_y| ≥ |M| + r·h·(|d| − |d_y|): if even |M| alone is out of reach the
     // line is kept, before any root is taken.
-    let in_hole = undecided & a_h_sq.lt(c!(b.inner_safe_sq) * h_sq);
+    let in_hole = undecided & a_h_sq.lt(b.inner_safe_sq * h_sq);
     let hole_keep = if in_hole.any() {
-        hole_keeps::<S, F>(b, p, d, (a_h, h_sq, len_sq), in_hole)
+        hole_keeps::<R, F>(b, p, d, (a_h, h_sq, len_sq), in_hole)
     } else {
         yes
     };
@@ -209,16 +199,16 @@ fn skala_lanes<S: Simd, F: SectionFormulas>(
 /// chord's squared height reach, so a chord that crosses y = 0 (p_y² ≤ reach²) has
 /// lowest = 0: keep, no root.
 #[inline(always)]
-fn outer_band_keeps<S: Simd, F: SectionFormulas>(
-    b: &CullBounds,
-    p: Vec3s<S>,
-    reach_sq: F32s<S>,
-    (a_h, h_sq): (F32s<S>, F32s<S>),
-    in_band: M32s<S>,
-) -> M32s<S> {
+fn outer_band_keeps<R: Real, F: SectionFormulas>(
+    b: &LaneBounds<R>,
+    p: V3<R>,
+    reach_sq: R,
+    (a_h, h_sq): (R, R),
+    in_band: R::Mask,
+) -> R::Mask {
     let crosses_mid_plane = (p.y * p.y).le(reach_sq);
     if !(in_band & !crosses_mid_plane).any() {
-        return M32s::splat(p.x.s, true);
+        return p.x.mask(true);
     }
     let lowest = p.y.abs() - reach_sq.sqrt();
     let h = h_sq.sqrt();
@@ -228,22 +218,22 @@ fn outer_band_keeps<S: Simd, F: SectionFormulas>(
 /// The hole's verdict on the lanes `in_hole`: keep unless the line falls through between
 /// k and k′ (the in-plane moment M against the edge, see the caller).
 #[inline(always)]
-fn hole_keeps<S: Simd, F: SectionFormulas>(
-    b: &CullBounds,
-    p: Vec3s<S>,
-    d: Vec3s<S>,
-    (a_h, h_sq, len_sq): (F32s<S>, F32s<S>, F32s<S>),
-    in_hole: M32s<S>,
-) -> M32s<S> {
+fn hole_keeps<R: Real, F: SectionFormulas>(
+    b: &LaneBounds<R>,
+    p: V3<R>,
+    d: V3<R>,
+    (a_h, h_sq, len_sq): (R, R, R),
+    in_hole: R::Mask,
+) -> R::Mask {
     let moment = (p.x * d.x + p.z * d.z) * d.y - p.y * h_sq;
     let edge = F::hole_edge_sq_h2(b, a_h, h_sq) * (d.y * d.y);
     let out_of_reach = edge.lt(moment * moment);
     if !(in_hole & !out_of_reach).any() {
-        return M32s::splat(p.x.s, true);
+        return p.x.mask(true);
     }
     let h = h_sq.sqrt();
     let len = len_sq.sqrt();
-    let rhs = moment.abs() + F32s::splat(len.s, F::minor(b)) * h * (len - d.y.abs());
+    let rhs = moment.abs() + F::minor(b) * h * (len - d.y.abs());
     out_of_reach | edge.lt(rhs * rhs)
 }
 

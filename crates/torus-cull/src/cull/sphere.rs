@@ -1,10 +1,8 @@
 //! `sphere`: the bounding sphere |x| ≤ R + r.
 
-use super::kernel::{CullKernel, scalar_cull};
-use super::{CullBounds, foot_point};
-use crate::num::Vec3s;
-use crate::num::{F32s, M32s};
-use pulp::Simd;
+use super::foot_point;
+use super::kernel::{CullKernel, LaneBounds, scalar_cull};
+use crate::num::{Real32, V3};
 
 scalar_cull! {
     /// Rejects lines whose distance from the centre, |foot point|, exceeds R + r_η.
@@ -16,8 +14,8 @@ scalar_cull! {
 
 impl CullKernel for SphereCull {
     #[inline(always)]
-    fn keeps_lanes<S: Simd>(self, s: S, b: &CullBounds, o: Vec3s<S>, d: Vec3s<S>) -> M32s<S> {
+    fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask {
         let (foot, _) = foot_point(o, d);
-        foot.length_squared().le(F32s::splat(s, b.outer_safe_sq))
+        foot.length_squared().le(b.outer_safe_sq)
     }
 }

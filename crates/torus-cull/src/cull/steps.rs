@@ -1,8 +1,7 @@
 //! The scale steps every cull shares ([`foot_point`], [`rescaled`], [`moderate`]), written
-//! once over lanes: at [`pulp::Scalar`] they are the scalar steps.
+//! once over [`crate::num::Real`]: at width 1 they are the scalar steps.
 
-use crate::num::{F32s, RealMask, Vec3s};
-use pulp::Simd;
+use crate::num::{Real, Real32, RealMask, V3};
 
 /// Below this squared horizontal direction fraction (|h|/|d| < 1e-6) a line is treated as
 /// parallel to the axis: within the bounding sphere its distance from the axis changes by
@@ -13,9 +12,8 @@ pub(crate) const AXIS_PARALLEL_H2: f32 = 1e-12;
 /// centre) and 1/|d|². Shared first step of the sphere-based culls: it removes the
 /// far-origin cancellation from every later formula, for one division and no root.
 #[inline(always)]
-pub fn foot_point<S: Simd>(origin: Vec3s<S>, dir: Vec3s<S>) -> (Vec3s<S>, F32s<S>) {
-    let one = F32s::splat(origin.x.s, 1.0);
-    let inv_len_sq = one / dir.length_squared();
+pub fn foot_point<R: Real>(origin: V3<R>, dir: V3<R>) -> (V3<R>, R) {
+    let inv_len_sq = origin.x.k(1.0) / dir.length_squared();
     (origin - dir * (origin.dot(dir) * inv_len_sq), inv_len_sq)
 }
 
@@ -26,9 +24,9 @@ pub fn foot_point<S: Simd>(origin: Vec3s<S>, dir: Vec3s<S>) -> (Vec3s<S>, F32s<S
 /// A valid ray's |d|² is a finite normal f32, so the largest component's biased exponent
 /// e is in 1..=191 and the factor 2^(127 − e) is a normal f32.
 #[inline(always)]
-pub(crate) fn rescaled<S: Simd>(v: Vec3s<S>) -> Vec3s<S> {
+pub(crate) fn rescaled<R: Real32>(v: V3<R>) -> V3<R> {
     let largest = v.abs().max_element();
-    Vec3s::new(
+    V3::new(
         v.x.times_inverse_exponent(largest),
         v.y.times_inverse_exponent(largest),
         v.z.times_inverse_exponent(largest),
@@ -49,24 +47,24 @@ pub(crate) const MODERATE_HIGH: f32 = 1.099_511_6e12;
 /// subtract, shift, back to a float and multiply) in front of every cull's first product,
 /// against one length and two compares here. Otherwise the lanes select.
 #[inline(always)]
-pub(crate) fn moderate<S: Simd>(v: Vec3s<S>) -> Vec3s<S> {
-    let s = v.x.s;
+pub(crate) fn moderate<R: Real32>(v: V3<R>) -> V3<R> {
     let len_sq = v.length_squared();
-    let plain = len_sq.gt(F32s::splat(s, MODERATE_LOW)) & len_sq.lt(F32s::splat(s, MODERATE_HIGH));
+    let plain = len_sq.gt(len_sq.k(MODERATE_LOW)) & len_sq.lt(len_sq.k(MODERATE_HIGH));
     if plain.all() {
         return v;
     }
     let r = rescaled(v);
-    Vec3s::new(
-        plain.select(v.x, r.x),
-        plain.select(v.y, r.y),
-        plain.select(v.z, r.z),
+    V3::new(
+        R::select(plain, v.x, r.x),
+        R::select(plain, v.y, r.y),
+        R::select(plain, v.z, r.z),
     )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::Vec3s;
     use glam::Vec3;
     use pulp::Scalar;
 

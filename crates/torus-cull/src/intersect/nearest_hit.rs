@@ -57,11 +57,11 @@ pub(crate) fn nearest_hit<R: Real, N: NearestRoot<R>>(
     t_min: R,
     t_max: R,
 ) -> Option<Found<R>> {
-    let inv_major = t_min.splat(tube.inv_major);
+    let inv_major = t_min.k(tube.inv_major);
     let line = foot_line(o, d, inv_major);
-    let chord_sq = line.chord_sq(t_min.splat(tube.outer));
+    let chord_sq = line.chord_sq(t_min.k(tube.outer));
     // Most misses end here, before the range's division.
-    let touches = !chord_sq.lt(t_min.splat(0.0));
+    let touches = !chord_sq.lt(t_min.k(0.0));
     if !touches.any() {
         return None;
     }
@@ -70,7 +70,7 @@ pub(crate) fn nearest_hit<R: Real, N: NearestRoot<R>>(
     if !reaches.any() {
         return None;
     }
-    let [c2, c1, c0] = coefficients(line.p, line.dh, t_min.splat(tube.minor_rel));
+    let [c2, c1, c0] = coefficients(line.p, line.dh, t_min.k(tube.minor_rel));
     let (u, cold) = N::nearest(c2, c1, c0, lo, hi);
     let hit = reaches & !u.is_nan() & !cold;
     let fallback = reaches & cold;
@@ -78,8 +78,8 @@ pub(crate) fn nearest_hit<R: Real, N: NearestRoot<R>>(
         return None;
     }
     Some(Found {
-        t: line.t_at(u, t_min.splat(tube.major)),
-        normal: normal(line.p, line.dh, u, t_min.splat(tube.k)),
+        t: line.t_at(u, t_min.k(tube.major)),
+        normal: normal(line.p, line.dh, u, t_min.k(tube.k)),
         hit,
         fallback,
     })

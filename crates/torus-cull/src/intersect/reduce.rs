@@ -27,7 +27,7 @@ impl<R: Real> FootLine<R> {
     /// The ray's range `[t_min, t_max]` in `u`: `u = (t·|d| + s)/R`.
     #[inline(always)]
     pub(crate) fn u_range(&self, t_min: R, t_max: R, inv_major: R) -> (R, R) {
-        let len = self.s.splat(1.0) / self.inv_len;
+        let len = self.s.k(1.0) / self.inv_len;
         (
             (t_min * len + self.s) * inv_major,
             (t_max * len + self.s) * inv_major,
@@ -46,7 +46,7 @@ impl<R: Real> FootLine<R> {
     /// of the outer equator to the solver, which decides them on the quartic itself.
     #[inline(always)]
     pub(crate) fn chord_sq(&self, outer: R) -> R {
-        outer * outer * outer.splat(1.0 + CHORD_SLACK) - self.p.dot(self.p)
+        outer * outer * outer.k(1.0 + CHORD_SLACK) - self.p.dot(self.p)
     }
 }
 
@@ -54,7 +54,7 @@ impl<R: Real> FootLine<R> {
 /// or after `hi`.
 #[inline(always)]
 pub(crate) fn chord_in_range<R: Real>(chord_sq: R, lo: R, hi: R) -> R::Mask {
-    let zero = lo.splat(0.0);
+    let zero = lo.k(0.0);
     !((lo.gt(zero) & (lo * lo).gt(chord_sq)) | (hi.lt(zero) & (hi * hi).gt(chord_sq)))
 }
 
@@ -71,7 +71,7 @@ pub(crate) fn t_at<R: Real>(u: R, major: R, s: R, inv_len: R) -> R {
 /// The foot point of the centre on the line `o + t·d`, scaled by `inv_major` = 1/R.
 #[inline(always)]
 pub(crate) fn foot_line<R: Real>(o: V3<R>, d: V3<R>, inv_major: R) -> FootLine<R> {
-    let inv_len = inv_major.splat(1.0) / d.dot(d).sqrt();
+    let inv_len = inv_major.k(1.0) / d.dot(d).sqrt();
     let dh = d * inv_len;
     let s = o.dot(dh);
     let p = (o - dh * s) * inv_major;
@@ -94,13 +94,13 @@ pub(crate) fn foot_line<R: Real>(o: V3<R>, d: V3<R>, inv_major: R) -> FootLine<R
 ///   contact along the top circle turns that into 4e-11 of t).
 #[inline(always)]
 pub(crate) fn coefficients<R: Real>(p: V3<R>, dh: V3<R>, rr: R) -> [R; 3] {
-    let one = rr.splat(1.0);
-    let two = rr.splat(2.0);
+    let one = rr.k(1.0);
+    let two = rr.k(2.0);
     let rho = (p.x * p.x + p.z * p.z).sqrt();
     let tube = (p.y - rr) * (p.y + rr);
-    let c2 = two * (rho - one) * (rho + one) + two * tube + rr.splat(4.0) * dh.y * dh.y;
+    let c2 = two * (rho - one) * (rho + one) + two * tube + rr.k(4.0) * dh.y * dh.y;
     let delta = p.dot(dh);
-    let c1 = rr.splat(8.0) * (p.y - delta * dh.y) * dh.y;
+    let c1 = rr.k(8.0) * (p.y - delta * dh.y) * dh.y;
     let c0 = ((rho - one) * (rho - one) + tube) * ((rho + one) * (rho + one) + tube);
     [c2, c1, c0]
 }
@@ -113,7 +113,7 @@ pub(crate) fn coefficients<R: Real>(p: V3<R>, dh: V3<R>, rr: R) -> [R; 3] {
 pub(crate) fn normal<R: Real>(p: V3<R>, dh: V3<R>, u: R, k: R) -> V3<R> {
     let x = p + dh * u;
     let w = x.length_squared() + k;
-    let two = u.splat(2.0);
+    let two = u.k(2.0);
     let grad = V3::new(w * x.x - two * x.x, w * x.y, w * x.z - two * x.z);
-    grad * (u.splat(1.0) / grad.dot(grad).sqrt())
+    grad * (u.k(1.0) / grad.dot(grad).sqrt())
 }

@@ -2,7 +2,7 @@
 //! intersection compute with, and nothing above it.
 //!
 //! * [`lanes`]: pulp's registers wrapped in operators ([`F32s`], [`F64s`] and their masks
-//!   [`M32s`], [`M64s`]); at `pulp::Scalar` (width 1) a lane is one float and a mask a
+//!   [`M32s`](lanes::M32s), [`M64s`]); at `pulp::Scalar` (width 1) a lane is one float and a mask a
 //!   `bool`.
 //! * [`real`]: the [`Real`] trait, the operations a solver step needs, so that one generic
 //!   function is the scalar step at width 1 ([`Sc`]) and the lane step on wider registers.
@@ -23,9 +23,9 @@ pub mod v3;
 
 pub(crate) use cube_root::CBRT_RANGE;
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
-pub use lanes::{F32s, F64s, M32s, M64s};
+pub use lanes::{F32s, F64s, M64s};
 pub(crate) use poly::poly5;
-pub use real::{Real, RealMask, Sc, sc, sc_mask};
+pub use real::{Real, Real32, RealMask, Sc, sc, sc_mask};
 pub use v3::{DVec3s, V3, Vec3s};
 
 /// Runs a lane function over a list of f64s at every instruction set this CPU has, for the

@@ -5,8 +5,9 @@
 //! [`Real`], and is the scalar step at width 1 and the lane step at every other width.
 //! The trait holds only what the quartic solver and the exact intersection use:
 //! `+ − × ÷`, `√`, `|x|`, `min`/`max`, `copysign`, comparisons into a [`RealMask`],
-//! `select`, constants (`splat`), and "is any lane / every lane still active" for early
-//! exits.
+//! `select`, constants ([`Real::k`]), and "is any lane / every lane still active" for
+//! early exits; and for the culls, glam's compare-and-select `min`/`max` and their
+//! NaN-ignoring forms.
 //!
 //! It is implemented by the lane wrappers [`F64s<S>`] and [`F32s<S>`] of
 //! [`super::lanes`]. `pulp::Scalar` is a [`pulp::Simd`] whose `f64s` is `f64` and whose
@@ -37,8 +38,8 @@ pub trait RealMask:
 
 /// A float, or a register of float lanes, with the operations of the solver's steps.
 ///
-/// Constants are made with [`Real::splat`] from any value of the type (which carries the
-/// SIMD token), so a step needs no token argument: `x.splat(2.0)`.
+/// Constants are made with [`Real::k`] from any value of the type (which carries the
+/// SIMD token), so a step needs no token argument: `x.k(2.0)`.
 pub trait Real:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Cbrt
 {
@@ -47,8 +48,16 @@ pub trait Real:
     /// How many lanes (1: the scalar instantiation). For a step whose two forms give the
     /// same bits but suit latency (one lane) or throughput (many) better.
     const LANES: usize;
-    /// Every lane `x` (rounded to the lane type: exact for f64), same SIMD token as `self`.
-    fn splat(self, x: f64) -> Self;
+    /// The constant `x` in every lane, with `self`'s SIMD token: rounded to the lane type
+    /// (exact for an f64, or an f32 into f32 lanes). From any `f32` or `f64`, so that a
+    /// step names its constants (`x.k(2.0)`, `o.x.k(AXIS_PARALLEL_H2)`) without a macro.
+    fn k(self, x: impl Into<f64>) -> Self;
+    /// The mask with every lane `value`, with `self`'s SIMD token.
+    #[inline(always)]
+    fn mask(self, value: bool) -> Self::Mask {
+        let zero = self.k(0.0);
+        if value { zero.eq(zero) } else { zero.lt(zero) }
+    }
     /// `−x` (exact: flips the sign bit). Not the `Neg` operator on purpose: pulp's scalar
     /// "register" negates natively here, where the lane wrappers' `-` xors the sign bit
     /// through integer bit operations: at width 1 a round trip from float to integer bits
@@ -62,6 +71,16 @@ pub trait Real:
     fn min(self, o: Self) -> Self;
     /// The float type's `max`: the larger, ignoring a NaN operand.
     fn max(self, o: Self) -> Self;
+    /// glam's `min`: `if self < o { self } else { o }` (a NaN operand may come out).
+    fn min_cmp(self, o: Self) -> Self;
+    /// glam's `max`: `if self > o { self } else { o }`.
+    fn max_cmp(self, o: Self) -> Self;
+    /// The smaller, ignoring a NaN operand, chosen as [`Real::min_cmp`] chooses (at width
+    /// 1 a branch on `o`'s NaN around it): the culls' clips, whose scalar form always was
+    /// this select, where [`Real::min`] is the float type's own `min`.
+    fn min_num(self, o: Self) -> Self;
+    /// The larger, ignoring a NaN operand, chosen as [`Real::max_cmp`] chooses.
+    fn max_num(self, o: Self) -> Self;
     /// The magnitude of `self` with the sign bit of `sign`.
     fn copysign(self, sign: Self) -> Self;
     /// `self < o`.
@@ -111,6 +130,16 @@ pub fn sc_mask(b: bool) -> M64s<pulp::Scalar> {
     }
 }
 
+/// Trait methods `fn f(self, o: Self) -> Self` that are the lane type's own `f`.
+macro_rules! forward {
+    ($name:ident: $($f:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> Self {
+            $name::$f(self, o)
+        }
+    )*};
+}
+
 macro_rules! real {
     ($name:ident, $mask:ident, $elem:ty, $m:ident, $lanes:ident, $neg:ident) => {
         impl<S: Simd> RealMask for $mask<S> {
@@ -137,8 +166,8 @@ macro_rules! real {
             type Mask = $mask<S>;
             const LANES: usize = S::$lanes;
             #[inline(always)]
-            fn splat(self, x: f64) -> Self {
-                $name::splat(self.s, x as $elem)
+            fn k(self, x: impl Into<f64>) -> Self {
+                $name::splat(self.s, x.into() as $elem)
             }
             #[inline(always)]
             fn negate(self) -> Self {
@@ -193,6 +222,7 @@ macro_rules! real {
                     self.max_num(o)
                 }
             }
+            forward!($name: min_cmp, max_cmp, min_num, max_num);
             #[inline(always)]
             fn copysign(self, sign: Self) -> Self {
                 if S::$lanes == 1 {
@@ -244,6 +274,21 @@ macro_rules! real {
 
 real!(F64s, M64s, f64, m64s, F64_LANES, neg_f64s);
 real!(F32s, M32s, f32, m32s, F32_LANES, neg_f32s);
+
+/// [`Real`] on f32 lanes, with the one step the culls take beyond it: an exact rescale by
+/// a power of two read from a float's exponent bits (integer lanes of f32 width).
+pub trait Real32: Real {
+    /// `self` times 2^(127 − e), e the biased exponent of `exp_of` (exact; see
+    /// [`F32s::times_inverse_exponent`]).
+    fn times_inverse_exponent(self, exp_of: Self) -> Self;
+}
+
+impl<S: Simd> Real32 for F32s<S> {
+    #[inline(always)]
+    fn times_inverse_exponent(self, exp_of: Self) -> Self {
+        F32s::times_inverse_exponent(self, exp_of)
+    }
+}
 
 #[cfg(test)]
 mod tests {

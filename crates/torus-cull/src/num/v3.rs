@@ -61,37 +61,31 @@ impl<R: Real> V3<R> {
         }
     }
 
-    /// Per-component product, `Vec3 * Vec3`.
+    /// `v` in every lane, with `like`'s SIMD token (rounded to the lane type).
     #[inline(always)]
-    pub fn mul_elem(self, o: Self) -> Self {
-        V3 {
-            x: self.x * o.x,
-            y: self.y * o.y,
-            z: self.z * o.z,
-        }
+    pub fn of(like: R, v: glam::DVec3) -> Self {
+        V3::new(like.k(v.x), like.k(v.y), like.k(v.z))
     }
-}
 
-impl<S: Simd> Vec3s<S> {
-    /// Every lane `v`.
+    /// `DMat3 * DVec3` (or, from an f32 matrix, `Mat3 * Vec3`) as glam computes it:
+    /// `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
     #[inline(always)]
-    pub fn splat(s: S, v: glam::Vec3) -> Self {
-        V3 {
-            x: F32s::splat(s, v.x),
-            y: F32s::splat(s, v.y),
-            z: F32s::splat(s, v.z),
-        }
+    pub fn rotated(self, m: &glam::DMat3) -> Self {
+        let like = self.x;
+        V3::of(like, m.x_axis) * self.x
+            + V3::of(like, m.y_axis) * self.y
+            + V3::of(like, m.z_axis) * self.z
     }
 
     /// `Vec3::max_element`: `max(x, max(y, z))` with glam's `a > b` selection.
     #[inline(always)]
-    pub fn max_element(self) -> F32s<S> {
+    pub fn max_element(self) -> R {
         self.x.max_cmp(self.y.max_cmp(self.z))
     }
 
     /// `Vec3::min_element`: `min(x, min(y, z))` with glam's `a < b` selection.
     #[inline(always)]
-    pub fn min_element(self) -> F32s<S> {
+    pub fn min_element(self) -> R {
         self.x.min_cmp(self.y.min_cmp(self.z))
     }
 
@@ -112,6 +106,34 @@ impl<S: Simd> Vec3s<S> {
             x: self.x.max_cmp(o.x),
             y: self.y.max_cmp(o.y),
             z: self.z.max_cmp(o.z),
+        }
+    }
+
+    /// `-self` per component (exact: flips the sign bits).
+    #[inline(always)]
+    pub fn negate(self) -> Self {
+        V3::new(self.x.negate(), self.y.negate(), self.z.negate())
+    }
+
+    /// Per-component product, `Vec3 * Vec3`.
+    #[inline(always)]
+    pub fn mul_elem(self, o: Self) -> Self {
+        V3 {
+            x: self.x * o.x,
+            y: self.y * o.y,
+            z: self.z * o.z,
+        }
+    }
+}
+
+impl<S: Simd> Vec3s<S> {
+    /// Every lane `v`.
+    #[inline(always)]
+    pub fn splat(s: S, v: glam::Vec3) -> Self {
+        V3 {
+            x: F32s::splat(s, v.x),
+            y: F32s::splat(s, v.y),
+            z: F32s::splat(s, v.z),
         }
     }
 }
@@ -139,15 +161,6 @@ impl<S: Simd> DVec3s<S> {
             y: F64s::splat(s, v.y),
             z: F64s::splat(s, v.z),
         }
-    }
-
-    /// `DMat3 * DVec3` as glam computes it: `(x_axis·v.x + y_axis·v.y) + z_axis·v.z`.
-    #[inline(always)]
-    pub fn rotated(self, m: &glam::DMat3) -> Self {
-        let s = self.x.s;
-        DVec3s::splat(s, m.x_axis) * self.x
-            + DVec3s::splat(s, m.y_axis) * self.y
-            + DVec3s::splat(s, m.z_axis) * self.z
     }
 }
 

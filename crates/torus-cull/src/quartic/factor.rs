@@ -105,31 +105,26 @@ pub(super) fn split(p: f64, q: f64, r: f64) -> Split<f64> {
 /// step the scalar [`split`] and the lane solver share.
 #[inline(always)]
 pub(crate) fn split_at<R: Real>(p: R, q: R, r: R, root: &Root<R>) -> Split<R> {
-    macro_rules! k {
-        ($c:expr) => {
-            p.splat($c)
-        };
-    }
     let (z, dh, m) = (root.z, root.dh, root.m);
     let s = p + root.z_early;
-    let w2 = s * s - k!(4.0) * r;
+    let w2 = s * s - p.k(4.0) * r;
 
     // n₂ − n₁ is both q/m and sign(q)·√((p + z)² − 4r). The first inherits half the
     // relative error of z, ε·Σ|terms of h|/(z·h'(z)), large at a double root of the
     // resolvent; the second cancels when (p + z)² ≈ 4r, with relative error
     // ε·((p + z)² + 4|r|)/(2w²) plus what the error of z adds to p + z. Take whichever is
     // better determined (compared without dividing: both denominators are > 0 when used).
-    let b_abs = p * p + k!(4.0) * r.abs();
+    let b_abs = p * p + p.k(4.0) * r.abs();
     let z_early = root.z_early;
-    let h_mag = ((z_early + k!(2.0) * p.abs()) * z_early + b_abs) * z_early + q * q;
+    let h_mag = ((z_early + p.k(2.0) * p.abs()) * z_early + b_abs) * z_early + q * q;
     let zdh = z * dh;
     // rel(q/m) = ½·ε·h_mag/zdh ≤ rel(√w²) = ½·err_w/w2, with err_w = ε·(s² + 4|r|) plus
     // 2|s|·(ε|p| + ε·h_mag/dh), multiplied out so that no division is needed.
-    let eps = k!(EPS);
+    let eps = p.k(EPS);
     let err_w_zdh = eps
-        * ((s * s + k!(4.0) * r.abs() + k!(2.0) * s.abs() * p.abs()) * zdh
-            + k!(2.0) * s.abs() * h_mag * z);
-    let zero = k!(0.0);
+        * ((s * s + p.k(4.0) * r.abs() + p.k(2.0) * s.abs() * p.abs()) * zdh
+            + p.k(2.0) * s.abs() * h_mag * z);
+    let zero = p.k(0.0);
     let use_q_over_m =
         root.q_over_m_exact | (zdh.gt(zero) & (w2.le(zero) | (eps * h_mag * w2).le(err_w_zdh)));
     // Both candidates are computed and one is selected: which one wins is a coin toss from
@@ -140,7 +135,7 @@ pub(crate) fn split_at<R: Real>(p: R, q: R, r: R, root: &Root<R>) -> Split<R> {
 
     // n₁ n₂ = r: compute the larger-magnitude constant directly and the other as r over it,
     // which avoids the cancellation in (p + z ∓ d)/2 (again selected, not branched).
-    let (n1_direct, n2_direct) = (k!(0.5) * (s - d), k!(0.5) * (s + d));
+    let (n1_direct, n2_direct) = (p.k(0.5) * (s - d), p.k(0.5) * (s + d));
     let n2_bigger = n2_direct.abs().ge(n1_direct.abs());
     let big = R::select(n2_bigger, n2_direct, n1_direct);
     let r_over_big = if R::LANES == 1 {

@@ -105,7 +105,7 @@ pub(crate) fn nearest_root_in_range(p: f64, q: f64, r: f64, lo: f64, hi: f64) ->
 /// quartic, on the cold path. NaN (non-finite input) is not clear.
 #[inline(always)]
 pub(crate) fn clear_factors<R: Real>(f: &Split<R>) -> (R, R, R::Mask) {
-    let (four, near) = (f.z.splat(4.0), f.z.splat(factor::NEAR_DOUBLE));
+    let (four, near) = (f.z.k(4.0), f.z.k(factor::NEAR_DOUBLE));
     let (disc1, disc2) = (f.z - four * f.n1, f.z - four * f.n2);
     let clear = disc1.abs().gt(near * (f.z + four * f.n1.abs()))
         & disc2.abs().gt(near * (f.z + four * f.n2.abs()));
@@ -122,7 +122,7 @@ pub(crate) fn clear_factors<R: Real>(f: &Split<R>) -> (R, R, R::Mask) {
 /// critical path.
 #[inline(always)]
 pub(crate) fn nearest_of_clear<R: Real>(f: &Split<R>, disc1: R, disc2: R, lo: R, hi: R) -> R {
-    let (zero, half) = (lo.splat(0.0), lo.splat(0.5));
+    let (zero, half) = (lo.k(0.0), lo.k(0.5));
     let (s1, s2) = (disc1.max(zero).sqrt(), disc2.max(zero).sqrt());
     let (ok1, ok2) = (disc1.gt(zero), disc2.gt(zero));
     let half_m = half * f.m;

@@ -7,7 +7,7 @@ use crate::num::{Real, RealMask, sc, sc_mask};
 /// ray to ray.
 #[inline(always)]
 pub(crate) fn in_range<R: Real>(x: R, real: R::Mask, lo: R, hi: R) -> R {
-    let inf = x.splat(f64::INFINITY);
+    let inf = x.k(f64::INFINITY);
     if R::LANES == 1 {
         // The same value as the select below, short-circuited: at one lane three plain
         // `bool` tests that stop at the first false one, instead of three masks combined

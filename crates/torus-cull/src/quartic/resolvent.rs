@@ -66,22 +66,17 @@ pub(crate) struct Cubic<R> {
 /// The resolvent cubic of `x⁴ + p x² + q x + r`.
 #[inline(always)]
 pub(crate) fn cubic<R: Real>(p: R, q: R, r: R) -> Cubic<R> {
-    macro_rules! k {
-        ($c:expr) => {
-            p.splat($c)
-        };
-    }
-    let a = k!(2.0) * p;
-    let b = p * p - k!(4.0) * r;
+    let a = p.k(2.0) * p;
+    let b = p * p - p.k(4.0) * r;
     let c = q.negate() * q;
     // z = w − a/3 gives w³ + P w + Q. Thirds by multiplication: a division is on the
     // critical path, and the last bit of these is below what the formulas resolve.
     // In p, q, r directly: P' = −(p²/9 + 4r/3), Q' = p(4r/3 − p²/27) − q²/2 (a shorter
     // chain than through a, b and c).
-    let a3 = a * k!(1.0 / 3.0);
-    let (p2, r43) = (p * p, r * k!(4.0 / 3.0));
-    let third_p = (p2 * k!(1.0 / 9.0) + r43).negate();
-    let half_q = p * (r43 - p2 * k!(1.0 / 27.0)) - k!(0.5) * (q * q);
+    let a3 = a * p.k(1.0 / 3.0);
+    let (p2, r43) = (p * p, r * p.k(4.0 / 3.0));
+    let third_p = (p2 * p.k(1.0 / 9.0) + r43).negate();
+    let half_q = p * (r43 - p2 * p.k(1.0 / 27.0)) - p.k(0.5) * (q * q);
     let disc = half_q * half_q + third_p * third_p * third_p;
     let scale = half_q * half_q + (third_p * third_p * third_p).abs();
     Cubic {
@@ -106,20 +101,20 @@ impl<R: Real> Cubic<R> {
     /// `h′(z)`, Horner.
     #[inline(always)]
     pub(crate) fn dh(&self, z: R) -> R {
-        (z.splat(3.0) * z + z.splat(2.0) * self.a) * z + self.b
+        (z.k(3.0) * z + z.k(2.0) * self.a) * z + self.b
     }
 
     /// Where `Δ` is within rounding of 0 ([`DISC_NEAR`]): a near-double pair of roots.
     #[inline(always)]
     pub(crate) fn near_double(&self) -> R::Mask {
-        self.disc.abs().le(self.disc.splat(DISC_NEAR) * self.scale)
+        self.disc.abs().le(self.disc.k(DISC_NEAR) * self.scale)
     }
 
     /// Where the greatest root `z` (from a closed form) is too small for it: see
     /// [`SMALL_ROOT`].
     #[inline(always)]
     pub(crate) fn is_small_root(&self, z: R) -> R::Mask {
-        self.b.gt(z.splat(0.0)) & (z * (z + self.a.abs())).le(z.splat(SMALL_ROOT) * self.b)
+        self.b.gt(z.k(0.0)) & (z * (z + self.a.abs())).le(z.k(SMALL_ROOT) * self.b)
     }
 
     /// The small greatest root to full relative precision: near 0,
@@ -135,7 +130,7 @@ impl<R: Real> Cubic<R> {
     /// a double root cannot be thrown away; NaN, at `h′ = 0`, keeps `z`).
     #[inline(always)]
     pub(crate) fn polish(&self, mut z: R) -> R {
-        let zero = z.splat(0.0);
+        let zero = z.k(0.0);
         let mut hz = self.h(z);
         for _ in 0..2 {
             let zn = (z - hz / self.dh(z)).max(zero);
@@ -246,7 +241,7 @@ pub(super) fn greatest_root(p: f64, q: f64, r: f64) -> Root<Sc> {
 /// whose range the lane solver checks for its cube root.
 #[inline(always)]
 pub(crate) fn cardano<R: Real>(third_p: R, half_q: R, disc: R) -> (R, R, R) {
-    let zero = disc.splat(0.0);
+    let zero = disc.k(0.0);
     let cube = half_q.abs() + disc.sqrt();
     // u = ±∛cube and v = −P'/u = ±(−P'/cube)·∛cube²: the division runs while the cube
     // root does.
@@ -270,8 +265,8 @@ pub(crate) fn cardano<R: Real>(third_p: R, half_q: R, disc: R) -> (R, R, R) {
 /// `k = √(−P')` and `cos θ = −Q'/k³`.
 #[inline(always)]
 pub(crate) fn trigonometric<R: Real>(third_p: R, half_q: R) -> R {
-    let one = third_p.splat(1.0);
-    let k = third_p.negate().max(third_p.splat(0.0)).sqrt();
+    let one = third_p.k(1.0);
+    let k = third_p.negate().max(third_p.k(0.0)).sqrt();
     // −Q'/k³ = (Q'/P')·√(−1/P'): both divisions and the root overlap the root k. P' = 0
     // makes it NaN or infinite, which `max` and `min` clamp (`clamp` would keep NaN);
     // then k·… is 0.

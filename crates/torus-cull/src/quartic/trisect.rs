@@ -29,28 +29,23 @@ pub(crate) const HALF_RANGE: f64 = 0.5773502691896257;
 /// relative error even next to the double root `u = 0` at `x = −1`.
 #[inline(always)]
 pub(crate) fn trisect_u<R: Real>(x: R) -> R {
-    macro_rules! k {
-        ($c:expr) => {
-            x.splat($c)
-        };
-    }
-    let rhs = k!(2.0) * (k!(1.0) + x);
-    let s = (rhs * k!(1.0 / 3.0)).sqrt();
+    let rhs = x.k(2.0) * (x.k(1.0) + x);
+    let s = (rhs * x.k(1.0 / 3.0)).sqrt();
     let fit = [
-        k!(FIT[0]),
-        k!(FIT[1]),
-        k!(FIT[2]),
-        k!(FIT[3]),
-        k!(FIT[4]),
-        k!(FIT[5]),
+        x.k(FIT[0]),
+        x.k(FIT[1]),
+        x.k(FIT[2]),
+        x.k(FIT[3]),
+        x.k(FIT[4]),
+        x.k(FIT[5]),
     ];
-    let u = s * poly5(fit, s - k!(HALF_RANGE));
-    let f = u * u * (k!(3.0) + u) - rhs;
-    let df = (k!(3.0) * u + k!(6.0)) * u;
-    let d2f = k!(6.0) * u + k!(6.0);
-    let u = u - k!(2.0) * f * df / (k!(2.0) * df * df - f * d2f);
+    let u = s * poly5(fit, s - x.k(HALF_RANGE));
+    let f = u * u * (x.k(3.0) + u) - rhs;
+    let df = (x.k(3.0) * u + x.k(6.0)) * u;
+    let d2f = x.k(6.0) * u + x.k(6.0);
+    let u = u - x.k(2.0) * f * df / (x.k(2.0) * df * df - f * d2f);
     // rhs = 0 (x = −1) has the double root u = 0, where Halley's step is 0/0.
-    R::select(rhs.gt(k!(0.0)), u, k!(0.0))
+    R::select(rhs.gt(x.k(0.0)), u, x.k(0.0))
 }
 
 #[cfg(test)]
@@ -86,7 +81,7 @@ mod tests {
     impl LaneFn for Trisect {
         #[inline(always)]
         fn call<S: Simd>(x: F64s<S>) -> F64s<S> {
-            x.splat(0.5) * (x.splat(1.0) + trisect_u(x))
+            x.k(0.5) * (x.k(1.0) + trisect_u(x))
         }
     }
 

@@ -35,7 +35,7 @@ pub(crate) fn nearest_root<R: Real>(p: R, q: R, r: R, lo: R, hi: R) -> (R, R::Ma
     let split = split_at(p, q, r, &root);
     let (disc1, disc2, clear) = clear_factors(&split);
     let best = nearest_of_clear(&split, disc1, disc2, lo, hi);
-    let root = R::select(best.eq(p.splat(f64::INFINITY)), p.splat(f64::NAN), best);
+    let root = R::select(best.eq(p.k(f64::INFINITY)), p.k(f64::NAN), best);
     let bad_input = !(p.is_finite() & q.is_finite() & r.is_finite());
     (root, resolvent_fallback | !clear | bad_input)
 }

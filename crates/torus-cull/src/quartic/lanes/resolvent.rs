@@ -24,7 +24,7 @@ use crate::quartic::resolvent::{cardano, cubic, trigonometric};
 /// root's range, and anything not finite.
 #[inline(always)]
 pub(crate) fn greatest_root<R: Real>(p: R, q: R, r: R) -> (R, R, R::Mask) {
-    let zero = p.splat(0.0);
+    let zero = p.k(0.0);
     let cubic = cubic(p, q, r);
     // NaN (overflow) is left to the scalar solver too.
     let near_double = cubic.near_double() | cubic.disc.is_nan();
@@ -35,7 +35,7 @@ pub(crate) fn greatest_root<R: Real>(p: R, q: R, r: R) -> (R, R, R::Mask) {
     let one_real = cubic.disc.gt(zero);
     let (cardano, outside_cbrt) = if one_real.any() {
         let (u, v, cube) = cardano(cubic.third_p, cubic.half_q, cubic.disc);
-        let in_range = cube.ge(zero.splat(CBRT_RANGE.0)) & cube.le(zero.splat(CBRT_RANGE.1));
+        let in_range = cube.ge(zero.k(CBRT_RANGE.0)) & cube.le(zero.k(CBRT_RANGE.1));
         (u + v, one_real & !in_range)
     } else {
         (zero, one_real)
