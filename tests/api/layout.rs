@@ -579,6 +579,10 @@ const ALLOWED: &[(&str, &str)] = &[
         "removed; restored by the git show beside it",
     ),
     (
+        "results/052cf53-family-time.json",
+        "removed; restored by the git show beside it",
+    ),
+    (
         "results/0edc3c1-dirty-f32-check.json",
         "removed; restored by the git show beside it",
     ),
