@@ -1,6 +1,10 @@
 //! Pipe bends for the oracle tests: the bend, its rays and the judge of the exact
 //! intersection live in the lab (`torus_cull_lab::bend_check`), one home shared with
 //! `torus-cull bend`; the wedge-alone shorthand and the ambiguity band stay here.
+#![allow(
+    unused_imports,
+    reason = "re-exported for every test crate that includes common/, each using a part"
+)]
 
 use torus_cull::bend::PipeBend;
 use torus_cull::{DRay, NoCull};
