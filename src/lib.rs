@@ -18,6 +18,7 @@
 //! * Test fixtures: [`errata`], the seed paper's culls as printed, which are **not
 //!   conservative**; they exist to prove that the oracle catches a broken cull.
 
+pub mod bend_check;
 pub mod compare;
 pub mod errata;
 pub mod eval;

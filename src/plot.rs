@@ -1,5 +1,6 @@
 //! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
-//! against ν, and the torus family check's capture and rejection per aspect b/a.
+//! against ν, the torus family check's capture and rejection per aspect b/a, and the
+//! bend check's against Δφ (`bend.rs`).
 
 use crate::family_check::{CullRecord, FamilyFile};
 use crate::results::{
@@ -10,6 +11,8 @@ use plotters::prelude::*;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
+
+pub mod bend;
 
 /// One named line of (x, y) points.
 pub type Series = (String, Vec<(f64, f64)>);
@@ -51,8 +54,11 @@ pub fn line_chart(
             pts: pts.iter().map(|&(x, y)| (x, y, None)).collect(),
         })
         .collect();
-    write_chart(path, title, y_label, &lines, y_from_zero)
+    write_chart(path, title, (NU_AXIS, y_label), &lines, y_from_zero)
 }
+
+/// The x axis of every chart but the bend check's.
+const NU_AXIS: &str = "ν = R/r (log scale)";
 
 /// One line of a chart: its points (x, y, optional 95 % interval of y) and its colour
 /// index (the series' place among all the file's culls, so a cull keeps its colour).
@@ -65,12 +71,12 @@ struct Line {
 fn write_chart(
     path: &Path,
     title: &str,
-    y_label: &str,
+    axes: (&str, &str),
     lines: &[Line],
     y_from_zero: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let mut svg = String::new();
-    draw_chart(&mut svg, title, y_label, lines, y_from_zero)
+    draw_chart(&mut svg, title, axes, lines, y_from_zero)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     crate::output::write_file(path, svg.as_bytes())
         .map_err(|e| format!("{}: {e}", path.display()))?;
@@ -79,11 +85,12 @@ fn write_chart(
 
 /// The SVG text of one chart. Lines with no points are left out (legend included); a line
 /// identical to an earlier one says so in the legend, and each line has its own marker
-/// shape, so that neither hides the other; intervals are drawn as error bars.
+/// shape, so that neither hides the other; intervals are drawn as error bars. `axes`:
+/// the x and y labels (x on a log scale).
 fn draw_chart(
     svg: &mut String,
     title: &str,
-    y_label: &str,
+    (x_label, y_label): (&str, &str),
     lines: &[Line],
     y_from_zero: bool,
 ) -> Result<(), Box<dyn std::error::Error>> {
@@ -112,7 +119,7 @@ fn draw_chart(
         )?;
     chart
         .configure_mesh()
-        .x_desc("ν = R/r (log scale)")
+        .x_desc(x_label)
         .y_desc(y_label)
         .label_style(("sans-serif", 14))
         .light_line_style(WHITE)
@@ -333,6 +340,7 @@ pub fn plot_results(
             results.meta.commit.as_deref().unwrap_or("no commit"),
             if results.meta.dirty { "-dirty" } else { "" }
         ),
+        x_label: NU_AXIS,
         written: Vec::new(),
     };
     rejection_charts(&results.rejection, &mut charts)?;
@@ -373,6 +381,7 @@ pub fn plot_family(
             file.meta.commit.as_deref().unwrap_or("no commit"),
             if file.meta.dirty { "-dirty" } else { "" }
         ),
+        x_label: NU_AXIS,
         written: Vec::new(),
     };
     let points: Vec<FamilyPoint<'_>> = file
@@ -494,6 +503,8 @@ struct Charts<'a> {
     stem: &'a str,
     /// Workload and commit, appended to every title.
     provenance: String,
+    /// The x axis's label.
+    x_label: &'static str,
     written: Vec<PathBuf>,
 }
 
@@ -512,7 +523,7 @@ impl Charts<'_> {
         }
         let path = self.out_dir.join(format!("{}-{name}.svg", self.stem));
         let title = format!("{title} ({})", self.provenance);
-        write_chart(&path, &title, y, &lines, zero)?;
+        write_chart(&path, &title, (self.x_label, y), &lines, zero)?;
         self.written.push(path);
         Ok(())
     }

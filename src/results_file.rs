@@ -1,8 +1,9 @@
 //! Any file the tool writes for `plot` and `compare` to read: a results file (`run`,
-//! `time`, `cargo bench`), an f32-check file or a family-check file, told apart by
-//! `meta.tool` (`f32-check`, `family`) or, in files without it, by their own sections
-//! (`families`, `members`).
+//! `time`, `cargo bench`), an f32-check file, a family-check file or a bend-check file,
+//! told apart by `meta.tool` (`f32-check`, `family`, `bend`) or, in files without it, by
+//! their own sections (`families`, `members`, `classes`).
 
+use crate::bend_check::BendFile;
 use crate::f32_check::CheckFile;
 use crate::family_check::FamilyFile;
 use crate::results::{Results, ResultsError, read_json};
@@ -17,6 +18,8 @@ pub enum ResultsFile {
     F32Check(CheckFile),
     /// `family`.
     Family(Box<FamilyFile>),
+    /// `bend`.
+    Bend(Box<BendFile>),
 }
 
 impl ResultsFile {
@@ -34,6 +37,10 @@ impl ResultsFile {
             serde_json::from_value(value)
                 .map(|f| ResultsFile::Family(Box::new(f)))
                 .map_err(parse)
+        } else if tool == Some("bend") || value.get("classes").is_some() {
+            serde_json::from_value(value)
+                .map(|f| ResultsFile::Bend(Box::new(f)))
+                .map_err(parse)
         } else {
             serde_json::from_value(value)
                 .map(ResultsFile::Results)
@@ -47,6 +54,7 @@ impl ResultsFile {
             ResultsFile::Results(r) => &r.meta,
             ResultsFile::F32Check(c) => &c.meta,
             ResultsFile::Family(f) => &f.meta,
+            ResultsFile::Bend(b) => &b.meta,
         };
         meta.tool.as_deref().unwrap_or("results")
     }

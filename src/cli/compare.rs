@@ -45,6 +45,10 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
             compare::family::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
             compare::family::compare(a, b, options.across_machines)
         }
+        (ResultsFile::Bend(a), ResultsFile::Bend(b)) => {
+            compare::bend::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
+            compare::bend::compare(a, b, options.across_machines)
+        }
         _ => {
             return Err(format!(
                 "{pair}: {} was written by `{}` and {} by `{}`: they hold different \

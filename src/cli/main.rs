@@ -11,6 +11,7 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+mod bend;
 mod compare;
 mod console;
 mod eval;
@@ -130,6 +131,11 @@ enum Command {
     /// false rejects, rejection rate, capture of far misses, missed and invented hits.
     /// Exits 1 on a false reject or a missed or invented hit.
     Family(family::FamilyArgs),
+    /// Check every cull, alone and behind the wedge, and the exact intersection of the
+    /// pipe bend (a hollow core, a φ segment with end caps) against the bend oracle, per
+    /// (Δφ, r_min/r_max) class: false rejects, rejection rate, capture of far misses and
+    /// of the cut-away misses, missed, invented and wrong-face hits. Exits 1 on any.
+    Bend(bend::BendArgs),
     /// The GPU adapter wgpu picks (a binary built with `--features gpu`), one `key: value`
     /// a line: adapter, device_type, backend, driver, software (a CPU rasteriser such as
     /// lavapipe), shader_f64, f64_finish_pass (and why not), timestamps. Exits 2 with one
@@ -224,6 +230,7 @@ fn main() -> ExitCode {
         Command::Time(args) => time::run(args),
         Command::F32Check(args) => f32_check::run(args),
         Command::Family(args) => family::run(args),
+        Command::Bend(args) => bend::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
         Command::Render {

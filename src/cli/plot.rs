@@ -1,5 +1,5 @@
 //! `torus-cull plot`: the SVG figures of a results file, an f32-check file or a
-//! family-check file.
+//! family-check file or a bend-check file.
 
 use super::CliResult;
 use crate::console::outln;
@@ -28,6 +28,7 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
         ResultsFile::Results(r) => torus_cull_lab::plot::plot_results(r, &dir, &stem)?,
         ResultsFile::F32Check(c) => torus_cull_lab::f32_check::plot::plot_check(c, &dir, &stem)?,
         ResultsFile::Family(f) => torus_cull_lab::plot::plot_family(f, &dir, &stem)?,
+        ResultsFile::Bend(b) => torus_cull_lab::plot::bend::plot_bend(b, &dir, &stem)?,
     };
     if written.is_empty() {
         return Err(format!(
@@ -108,6 +109,21 @@ pub(crate) fn write_family_plots(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let (dir, stem) = plot_place(path);
     let written = torus_cull_lab::plot::plot_family(file, &dir, &stem)?;
+    outln!(
+        "wrote {} plots to {}/{stem}-*.svg",
+        written.len(),
+        dir.display()
+    )?;
+    Ok(())
+}
+
+/// The bend check's SVG charts, next to its file `path` and named after it (`bend`).
+pub(crate) fn write_bend_plots(
+    file: &torus_cull_lab::bend_check::BendFile,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (dir, stem) = plot_place(path);
+    let written = torus_cull_lab::plot::bend::plot_bend(file, &dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",
         written.len(),

@@ -142,7 +142,7 @@ fn exact_row(key: String, o: &MemberRecord, n: &MemberRecord) -> Row {
 }
 
 /// `changed: name a->b, …` for the counts that changed, or nothing.
-fn changed(counts: &[(&str, u64, u64)]) -> Vec<String> {
+pub(super) fn changed(counts: &[(&str, u64, u64)]) -> Vec<String> {
     let moved: Vec<String> = counts
         .iter()
         .filter(|(_, a, b)| a != b)

@@ -14,6 +14,9 @@
 //! * **family** (two `torus-cull family` files, `family.rs`): per member class and cull, a
 //!   new false reject or a lower capture is a regression, and so are more missed or
 //!   invented hits of the exact intersection.
+//! * **bend** (two `torus-cull bend` files, `bend.rs`): per class and cull (alone and
+//!   behind the wedge), a new false reject or a lower capture is a regression, as are a
+//!   lower capture of the cut-away misses and more missed, invented or wrong-face hits.
 //!
 //! Records on one side only are listed. The exit code is 1 if any regression is flagged,
 //! and 1 too when records of the old file are missing from the new one (a run that lost
@@ -24,6 +27,7 @@
 //! not regressions; the CLI then exits 2, as it does when the two files share no record,
 //! so that a vacuous comparison never passes a CI gate.
 
+pub mod bend;
 pub mod coverage;
 pub mod f32_check;
 pub mod family;

@@ -37,7 +37,7 @@ fn legends_name_twins_and_skip_empty_series_and_intervals_are_drawn() {
         },
     ];
     let mut svg = String::new();
-    draw_chart(&mut svg, "title (w, abc1234)", "y", &lines, true).unwrap();
+    draw_chart(&mut svg, "title (w, abc1234)", (NU_AXIS, "y"), &lines, true).unwrap();
     let t = texts(&svg);
     assert!(
         t.iter().any(|x| x == "discriminant (= discriminant_f64)"),
@@ -92,7 +92,7 @@ fn legends_name_twins_and_skip_empty_series_and_intervals_are_drawn() {
                 pts: l.pts.iter().map(|&(x, y, _)| (x, y, None)).collect(),
             })
             .collect();
-        draw_chart(&mut s, "title", "y", &no_ci, true).unwrap();
+        draw_chart(&mut s, "title", (NU_AXIS, "y"), &no_ci, true).unwrap();
         s
     };
     // skala's colour (index 3): its line and markers, plus a bar and two caps for each

@@ -7,14 +7,14 @@
 //! culls and the wedge, rays spawned from every face, and the point queries against the
 //! oracle's signed function (exact inside, a lower bound outside).
 
-use crate::common::bend::{Spec, TOL, Tally, compare, face, from_surface_reference, rng, unit};
+use crate::common::bend::{Spec, TOL, Tally, compare, face, from_surface_reference, rng};
 use glam::DVec3;
 use rand::RngExt;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 use torus_cull::bend::BendFace;
 use torus_cull::{CullKind, DRay, NoCull};
 use torus_cull_lab::oracle::OracleClass;
-use torus_cull_lab::oracle::bend::{BendQuery, Face, Passage};
+use torus_cull_lab::oracle::bend::{BendQuery, Passage};
 
 const DELTAS: [f64; 4] = [TAU, PI, FRAC_PI_2, PI / 6.0];
 const RATIOS: [f64; 3] = [0.0, 0.5, 0.9];
@@ -261,62 +261,33 @@ fn grazing_sweeps_across_a_metre_torus() {
 
 #[test]
 fn the_cut_away_arc_the_pipes_axis_the_hollow_core_and_the_caps_edges() {
+    // The ray kinds of `torus-cull bend` (`bend_check::rays`), at the test's size.
     let mut rng = rng(0xa1c);
     let mut total = Tally::default();
     for delta in [PI, FRAC_PI_2, PI / 6.0] {
         for ratio in RATIOS {
             let spec = Spec::canonical(4.0, ratio, 1.0, 0.2, delta).posed(&mut rng);
-            let (e0, e1, a) = spec.frame();
-            let at = |phi: f64| e0 * phi.cos() + e1 * phi.sin();
-            let growing = |phi: f64| e1 * phi.cos() - e0 * phi.sin();
             let mut rays = Vec::new();
             let bend = spec.bend();
             for _ in 0..200 {
                 // Through the cut-away arc, along the axis through the tube: a miss.
-                let phi = spec.start + delta + rng.random_range(0.05..(TAU - delta - 0.05));
-                let p = spec.point(phi, rng.random_range(0.0..TAU), rng.random_range(0.0..1.0));
-                let ray = DRay::new(p - a * 10.0, a).unwrap();
+                let ray = spec.cut_away_axial(&mut rng);
                 assert!(bend.intersect(&ray).is_none(), "cut-away {ray:?}");
                 assert_eq!(spec.query(&ray).classify().class, OracleClass::Miss);
                 rays.push(ray);
-                // Through the cut-away arc in a random direction.
-                rays.push(DRay::new(p - unit(&mut rng) * 10.0, p - spec.center).unwrap());
-                // Along the pipe's axis at mid-segment, through both caps' planes: in the
-                // material, in the bore.
-                let mid = spec.start + 0.5 * delta;
-                let d = rng.random_range(0.0..1.0);
-                let p = spec.point(mid, rng.random_range(0.0..TAU), d);
-                rays.push(DRay::new(p - growing(mid) * 10.0, growing(mid)).unwrap());
-                rays.push(DRay::new(p + growing(mid) * 10.0, -growing(mid)).unwrap());
-                // Through the hole, along the axis.
-                let p = spec.center + at(mid) * rng.random_range(0.0..2.9);
-                rays.push(DRay::new(p + a * 10.0, -a).unwrap());
-                // Grazing each cap's edges (outer and bore circles) by ±1e-7..1e-3.
-                for (phi, sign) in [(spec.start, -1.0), (spec.start + delta, 1.0)] {
-                    let e = 10f64.powf(rng.random_range(-7.0..-3.0)) * sign;
-                    let e = if rng.random_bool(0.5) { e } else { -e };
-                    let r = if ratio > 0.0 && rng.random_bool(0.5) {
-                        ratio
-                    } else {
-                        1.0
-                    };
-                    let psi = rng.random_range(0.0..TAU);
-                    let p = spec.point(phi, psi, r) + growing(phi) * e;
-                    let tangent = spec.point(phi, psi + 1e-3, r) - spec.point(phi, psi - 1e-3, r);
-                    rays.push(DRay::new(p - tangent * 1e3, tangent).unwrap());
-                    rays.push(DRay::new(p - a * 10.0, a).unwrap());
+                rays.push(spec.cut_away_any(&mut rng));
+                // Along the pipe's axis at mid-segment, through both caps' planes, in the
+                // material or the bore; through the hole.
+                rays.push(spec.pipe_axis(&mut rng));
+                rays.push(spec.pipe_axis(&mut rng));
+                rays.push(spec.hole(&mut rng));
+                // Grazing the caps' edges (outer and bore circles) by ±1e-7..1e-3.
+                for _ in 0..4 {
+                    rays.push(spec.cap_edge(&mut rng));
                 }
-                // Tangent to the bore (offset by ±1e-8..1e-4), in a random tangent
-                // direction.
+                // Tangent to the bore (offset by ±1e-8..1e-4).
                 if ratio > 0.0 {
-                    let phi = spec.start + rng.random_range(0.0..delta);
-                    let psi = rng.random_range(0.0..TAU);
-                    let p0 = spec.point(phi, psi, ratio);
-                    let n = (p0 - spec.point(phi, psi, 0.0)).normalize();
-                    let t = unit(&mut rng).reject_from_normalized(n).normalize();
-                    let e = 10f64.powf(rng.random_range(-8.0..-4.0));
-                    let p = p0 + n * if rng.random_bool(0.5) { e } else { -e };
-                    rays.push(DRay::new(p - t * 5.0, t).unwrap());
+                    rays.push(spec.bore_tangent(&mut rng));
                 }
             }
             total.add(&run(&spec, rays));
@@ -353,7 +324,7 @@ fn the_delta_phi_ratio_nu_scale_grid() {
 /// Random rays of one (Δφ, r_min/r_max) class: `n` rays over ν, scales and poses.
 /// Returns the tally, (cut-away misses: rays that hit the whole outer torus but miss its
 /// segment; of them rejected by the wedge alone), and the culls' false rejects.
-fn random_class(delta: f64, ratio: f64, n: usize, seed: u64) -> (Tally, (usize, usize), usize) {
+fn random_class(delta: f64, ratio: f64, n: usize, seed: u64) -> (Tally, (u64, u64), u64) {
     let mut rng = rng(seed);
     let mut total = Tally::default();
     let (mut cut_away, mut captured, mut false_rejects) = (0, 0, 0);
@@ -387,7 +358,7 @@ fn random_class(delta: f64, ratio: f64, n: usize, seed: u64) -> (Tally, (usize, 
             {
                 // Through the cut-away arc: the whole torus is hit, its segment is not.
                 cut_away += 1;
-                captured += usize::from(!bend.kept_by(&bend.wedge_cull(NoCull), ray));
+                captured += u64::from(!bend.kept_by(&bend.wedge_cull(NoCull), ray));
             }
         }
         total.add(&run(&spec, rays));
@@ -467,30 +438,20 @@ fn rays_spawned_from_every_face() {
             for nu in NUS {
                 let spec = Spec::canonical(nu, ratio, 1.0, 0.0, delta).posed(&mut rng);
                 let bend = spec.bend();
+                // From a random crossing of a random ray, or from a cap's point (its edges
+                // included): `bend_check::rays`' spawned rays, counted by the oracle's faces
+                // at the origin.
                 let mut rays = Vec::new();
-                // From every crossing of random rays.
-                for _ in 0..150 {
-                    let ray = spec.random_ray(&mut rng);
-                    for c in bend.intersect_all(&ray).as_slice() {
-                        per_face[c.face as usize] += 1;
-                        rays.push(bend.spawn(&ray, c.t, unit(&mut rng)).unwrap());
-                    }
-                }
-                // From points of each cap, its edges included.
-                if delta < TAU {
-                    for phi in [spec.start, spec.start + delta] {
-                        for _ in 0..60 {
-                            let psi = rng.random_range(0.0..TAU);
-                            let d = match rng.random_range(0..3) {
-                                0 => 1.0,
-                                1 => ratio,
-                                _ => rng.random_range(ratio..1.0),
-                            };
-                            let p = spec.point(phi, psi, d);
-                            let any = DRay::new(p, DVec3::X).unwrap();
-                            rays.push(bend.spawn(&any, 0.0, unit(&mut rng)).unwrap());
+                for _ in 0..270 {
+                    let Some(ray) = spec.spawned(&bend, &mut rng) else {
+                        continue;
+                    };
+                    if let Some((_, faces)) = spec.query(&ray).on_surface() {
+                        for f in faces {
+                            per_face[f as usize] += 1;
                         }
                     }
+                    rays.push(ray);
                 }
                 for ray in rays {
                     let (c, a, why) = spawned(&spec, &ray);
@@ -512,7 +473,6 @@ fn rays_spawned_from_every_face() {
     }
     assert!(bad.is_empty(), "{} spawned rays disagree", bad.len());
     assert!(per_face.iter().all(|&n| n > 50), "{per_face:?}");
-    let _ = Face::Outer;
 }
 
 /// The world point at angle φ about the axis, distance `rho` from it and height `y`.

@@ -1,0 +1,108 @@
+//! `torus-cull bend`: every cull, alone and behind the wedge, and the exact intersection of
+//! the pipe bend against the bend oracle, class by class (`torus_cull_lab::bend_check`).
+
+use super::CliResult;
+use crate::console::{out, outln};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
+use torus_cull_lab::{output, results};
+
+/// The most rays per class.
+const MAX_RAYS: usize = 10_000_000;
+
+/// `torus-cull bend`'s arguments.
+#[derive(clap::Args)]
+pub struct BendArgs {
+    /// Rays per (ν, Δφ, r_min/r_max) class, cycling through the kinds random, cut-away,
+    /// pipe axis, hole, cap edge, bore tangent and spawned (1 ..= 10 000 000).
+    #[arg(long, default_value_t = 20_000)]
+    rays: usize,
+    /// The seed every pose draws its bend and rays from.
+    #[arg(long, default_value_t = 20261128)]
+    seed: u64,
+    /// ν = R/r_max of the classes, comma-separated (each finite, > 1).
+    #[arg(long, value_delimiter = ',', default_value = "4")]
+    nu: Vec<f64>,
+    /// Worker threads (default: the available cores); the counts do not depend on it.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Results JSON (default: results/<short commit>[-dirty]-bend.json). Its directory
+    /// must exist.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Skip the SVG charts (capture and rejection rate per cull and per wedge + cull
+    /// against Δφ, one pair per r_min/r_max and ν), otherwise written next to the JSON as
+    /// `<stem>-*.svg`.
+    #[arg(long)]
+    no_plots: bool,
+}
+
+/// Runs `bend`. Exit 1 when a cull rejected a hit of the oracle, or the exact
+/// intersection missed, invented or misplaced a hit.
+pub fn run(args: BendArgs) -> CliResult {
+    if !(1..=MAX_RAYS).contains(&args.rays) {
+        return Err(format!(
+            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
+            args.rays
+        )
+        .into());
+    }
+    if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
+        return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)").into());
+    }
+    let threads = super::threads::pick(args.threads)?;
+    let path = match args.out {
+        Some(path) => path,
+        None => {
+            let path = results::default_path(Path::new("results"), "-bend");
+            output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
+    // Before the work, not after it.
+    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
+    if !args.no_plots {
+        super::plot::check_plot_paths(&path)?;
+    }
+    let classes = bend_check::classes(&args.nu);
+    let mut file = BendFile::new(&classes, args.rays, args.seed);
+    let classes = classes.len();
+    let heartbeat = crate::console::Heartbeat::new(
+        format!("bend: {classes} classes x {} rays", args.rays),
+        "poses",
+    );
+    let checked = bend_check::check(args.rays, args.seed, &args.nu, threads, &|done, all| {
+        heartbeat.update(done as u64, all as u64);
+    });
+    out!("{}", bend_check::table(&checked.records))?;
+    let failed: Vec<String> = checked
+        .records
+        .iter()
+        .filter(|r| r.false_rejects() > 0 || r.exact.bad() > 0)
+        .map(ClassRecord::label)
+        .collect();
+    for (class, why) in &checked.disagreements {
+        eprintln!("disagreement in {class}:\n{why}\n");
+    }
+    file.classes = checked.records;
+    let mut text = serde_json::to_string_pretty(&file)?;
+    text.push('\n');
+    // A regular file is replaced atomically: a temp file, then renamed.
+    output::write_file(&path, text.as_bytes())
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    outln!("wrote {}", path.display())?;
+    if !args.no_plots {
+        super::plot::write_bend_plots(&file, &path)?;
+    }
+    if !failed.is_empty() {
+        eprintln!(
+            "error: a false reject, or a missed, invented or misplaced hit of the exact \
+             intersection, in: {}",
+            failed.join(", ")
+        );
+        return Ok(ExitCode::from(1));
+    }
+    Ok(ExitCode::SUCCESS)
+}
