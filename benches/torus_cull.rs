@@ -57,7 +57,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::SystemTime;
 use support::batch::{BATCH_GROUPS, BATCH_TIMED, BatchCase, time_batch_cull};
-use support::{BenchConfig, Estimate, Mode, bvh, read_estimate, solver};
+use support::{BenchConfig, Estimate, Mode, bvh, ratios, read_estimate, solver};
 use torus_cull::Named;
 use torus_cull::batch::{Dispatch, Lines, Wavefront};
 use torus_cull::{Cull, CullKind, CullVisitor, LocalLine, Ray, Torus, intersect, intersect_culled};
@@ -494,10 +494,10 @@ fn bench() -> Result<ExitCode, String> {
         stage(clock, "paired ratios done");
         results
             .ratio
-            .extend(shape_ratios(config, setup.workload.seed));
+            .extend(ratios::shapes(config, setup.workload.seed));
         stage(clock, "family and bend ratios done");
         if let Some(spec) = &bvh_spec {
-            let bvh = bvh_ratios(spec, config, setup.workload.seed, dispatch);
+            let bvh = ratios::bvh(spec, config, setup.workload.seed, dispatch);
             results.ratio.extend(bvh);
             stage(clock, "paired BVH ratios done");
         }
@@ -654,51 +654,6 @@ fn paired_ratios(
         })
         .collect();
     paired::combine_runs(&all).unwrap_or_else(|e| panic!("{e}"))
-}
-
-/// The torus family's and the pipe bends' paired ratios, as `time --family` and `time
-/// --bend` take them (metrics `family_total_ns`, `bend_total_ns`), each in a quarter of
-/// the ring torus's paired time, over the same runs.
-fn shape_ratios(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
-    let runs = config.ratio_runs.max(1) as usize;
-    let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
-    let quarter = config.ratio_seconds / 4.0 / runs as f64;
-    let members = paired::family::MEMBERS.len() as f64;
-    let mut records =
-        paired::family::family_records(seed, rays, (runs, quarter / members), |_, _| {})
-            .unwrap_or_else(|e| panic!("{e}"));
-    let bends = paired::bend::BENDS.len() as f64;
-    records.extend(
-        paired::bend::bend_records(seed, rays, (runs, quarter / bends), |_, _| {})
-            .unwrap_or_else(|e| panic!("{e}")),
-    );
-    records
-}
-
-/// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
-/// `bvh_batched_ns`), on the bench's scenes at each of its ν, in a quarter of the ring
-/// torus's paired time, over the same runs.
-fn bvh_ratios(
-    spec: &torus_cull_lab::workload::spec::BvhSpec,
-    config: &BenchConfig,
-    seed: u64,
-    dispatch: &Dispatch,
-) -> Vec<RatioRecord> {
-    let timing = paired::bvh::BvhTiming {
-        units: spec
-            .scenes
-            .iter()
-            .flat_map(|&k| spec.nu.iter().map(move |&nu| (k, nu)))
-            .collect(),
-        tori: spec.tori,
-        seed,
-        culls: CullKind::TIMED.to_vec(),
-        rays: config.batch.min(1024),
-        seconds: config.ratio_seconds / 4.0,
-        runs: config.ratio_runs.max(1) as usize,
-        dispatch: *dispatch,
-    };
-    paired::bvh::time_bvh(&timing, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e:?}"))
 }
 
 /// The fewest bounces a batch must give to be timed (as `time --secondary` asks).

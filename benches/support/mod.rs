@@ -3,6 +3,7 @@
 
 pub mod batch;
 pub mod bvh;
+pub mod ratios;
 pub mod solver;
 
 use std::path::Path;

@@ -7,7 +7,7 @@
 //! culls and the wedge, rays spawned from every face, and the point queries against the
 //! oracle's signed function (exact inside, a lower bound outside).
 
-use crate::common::bend::{Spec, TOL, Tally, compare, face, from_surface_reference, rng};
+use crate::common::bend::{Spec, TOL, Tally, compare, face, from_surface_reference, rng, unit};
 use glam::DVec3;
 use rand::RngExt;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};

@@ -1,0 +1,53 @@
+//! The paired ratios a complete bench takes beyond the ring torus's: the torus family's,
+//! the pipe bends' and the BVH's, as `time --family`, `--bend` and `--bvh` take them.
+
+use super::BenchConfig;
+use torus_cull::CullKind;
+use torus_cull::batch::Dispatch;
+use torus_cull_lab::paired;
+use torus_cull_lab::results::RatioRecord;
+
+/// The torus family's and the pipe bends' paired ratios, as `time --family` and `time
+/// --bend` take them (metrics `family_total_ns`, `bend_total_ns`), each in a quarter of
+/// the ring torus's paired time, over the same runs.
+pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
+    let runs = config.ratio_runs.max(1) as usize;
+    let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
+    let quarter = config.ratio_seconds / 4.0 / runs as f64;
+    let members = paired::family::MEMBERS.len() as f64;
+    let mut records =
+        paired::family::family_records(seed, rays, (runs, quarter / members), |_, _| {})
+            .unwrap_or_else(|e| panic!("{e}"));
+    let bends = paired::bend::BENDS.len() as f64;
+    records.extend(
+        paired::bend::bend_records(seed, rays, (runs, quarter / bends), |_, _| {})
+            .unwrap_or_else(|e| panic!("{e}")),
+    );
+    records
+}
+
+/// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
+/// `bvh_batched_ns`), on the bench's scenes at each of its ν, in a quarter of the ring
+/// torus's paired time, over the same runs.
+pub fn bvh(
+    spec: &torus_cull_lab::workload::spec::BvhSpec,
+    config: &BenchConfig,
+    seed: u64,
+    dispatch: &Dispatch,
+) -> Vec<RatioRecord> {
+    let timing = paired::bvh::BvhTiming {
+        units: spec
+            .scenes
+            .iter()
+            .flat_map(|&k| spec.nu.iter().map(move |&nu| (k, nu)))
+            .collect(),
+        tori: spec.tori,
+        seed,
+        culls: CullKind::TIMED.to_vec(),
+        rays: config.batch.min(1024),
+        seconds: config.ratio_seconds / 4.0,
+        runs: config.ratio_runs.max(1) as usize,
+        dispatch: *dispatch,
+    };
+    paired::bvh::time_bvh(&timing, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e:?}"))
+}
