@@ -321,28 +321,8 @@ pub fn plot_results(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    // The directory is the caller's: like every output, a missing one is not created.
-    // An empty path (the parent of a bare file name) is the current directory.
-    let out_dir = if out_dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        out_dir
-    };
-    if !out_dir.is_dir() {
-        return Err(format!("{}: no such directory", out_dir.display()).into());
-    }
-    let mut charts = Charts {
-        out_dir,
-        stem,
-        provenance: format!(
-            "{}, {}{}",
-            results.meta.workload,
-            results.meta.commit.as_deref().unwrap_or("no commit"),
-            if results.meta.dirty { "-dirty" } else { "" }
-        ),
-        x_label: NU_AXIS,
-        written: Vec::new(),
-    };
+    let what = results.meta.workload.clone();
+    let mut charts = Charts::new(out_dir, stem, provenance(what, &results.meta), NU_AXIS)?;
     rejection_charts(&results.rejection, &mut charts)?;
     timing_charts(&results.timing, &mut charts)?;
     bvh_charts(&results.bvh, &mut charts)?;
@@ -364,26 +344,8 @@ pub fn plot_family(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    let out_dir = if out_dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        out_dir
-    };
-    if !out_dir.is_dir() {
-        return Err(format!("{}: no such directory", out_dir.display()).into());
-    }
-    let mut charts = Charts {
-        out_dir,
-        stem,
-        provenance: format!(
-            "{} rays a member, {}{}",
-            file.rays_per_member,
-            file.meta.commit.as_deref().unwrap_or("no commit"),
-            if file.meta.dirty { "-dirty" } else { "" }
-        ),
-        x_label: NU_AXIS,
-        written: Vec::new(),
-    };
+    let what = format!("{} rays a member", file.rays_per_member);
+    let mut charts = Charts::new(out_dir, stem, provenance(what, &file.meta), NU_AXIS)?;
     let points: Vec<FamilyPoint<'_>> = file
         .members
         .iter()
@@ -497,6 +459,15 @@ fn estimate_charts(
     Ok(())
 }
 
+/// `what, <commit>[-dirty]`: what a file holds and the build that wrote it, for titles.
+fn provenance(what: String, meta: &crate::results::Meta) -> String {
+    format!(
+        "{what}, {}{}",
+        meta.commit.as_deref().unwrap_or("no commit"),
+        if meta.dirty { "-dirty" } else { "" }
+    )
+}
+
 /// Where a results file's charts go, and the ones written so far.
 struct Charts<'a> {
     out_dir: &'a Path,
@@ -508,7 +479,33 @@ struct Charts<'a> {
     written: Vec<PathBuf>,
 }
 
-impl Charts<'_> {
+impl<'a> Charts<'a> {
+    /// The charts of one file, to `out_dir` (which must exist: like every output, a missing
+    /// one is not created; an empty path, the parent of a bare file name, is the current
+    /// directory), named `<stem>-*.svg`, each title ending in `provenance`.
+    fn new(
+        out_dir: &'a Path,
+        stem: &'a str,
+        provenance: String,
+        x_label: &'static str,
+    ) -> Result<Charts<'a>, Box<dyn std::error::Error>> {
+        let out_dir = if out_dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            out_dir
+        };
+        if !out_dir.is_dir() {
+            return Err(format!("{}: no such directory", out_dir.display()).into());
+        }
+        Ok(Charts {
+            out_dir,
+            stem,
+            provenance,
+            x_label,
+            written: Vec::new(),
+        })
+    }
+
     /// Writes chart `<stem>-<name>.svg`, unless none of `lines` has a point.
     fn chart(
         &mut self,

@@ -94,7 +94,9 @@ pub fn run(args: BendArgs) -> CliResult {
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     outln!("wrote {}", path.display())?;
     if !args.no_plots {
-        super::plot::write_bend_plots(&file, &path)?;
+        super::plot::write_charts(&path, |dir, stem| {
+            torus_cull_lab::plot::bend::plot_bend(&file, dir, stem)
+        })?;
     }
     if !failed.is_empty() {
         eprintln!(

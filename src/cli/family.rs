@@ -78,7 +78,9 @@ pub fn run(args: FamilyArgs) -> CliResult {
         .map_err(|e| format!("--out {}: {e}", path.display()))?;
     outln!("wrote {}", path.display())?;
     if !args.no_plots {
-        super::plot::write_family_plots(&file, &path)?;
+        super::plot::write_charts(&path, |dir, stem| {
+            torus_cull_lab::plot::plot_family(&file, dir, stem)
+        })?;
     }
     if !failed.is_empty() {
         eprintln!(

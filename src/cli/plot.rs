@@ -87,47 +87,28 @@ pub(crate) fn check_plot_paths(path: &Path) -> Result<(), String> {
         .map_err(|e| format!("{e} (a plot of --out {}; or --no-plots)", path.display()))
 }
 
-/// The SVG charts, next to the results file `path` and named after it (`run` and `time`).
+/// The SVG charts of the file `path`, next to it and named after it, drawn by `draw(dir,
+/// stem)` (`plot_results` for `run` and `time`, `plot_family`, `plot_bend`).
+pub(crate) fn write_charts(
+    path: &Path,
+    draw: impl FnOnce(&Path, &str) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (dir, stem) = plot_place(path);
+    let written = draw(&dir, &stem)?;
+    outln!(
+        "wrote {} plots to {}/{stem}-*.svg",
+        written.len(),
+        dir.display()
+    )?;
+    Ok(())
+}
+
+/// The SVG charts of a results file, next to it (`run` and `time`).
 pub(crate) fn write_plots(
     results: &Results,
     path: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let (dir, stem) = plot_place(path);
-    let written = torus_cull_lab::plot::plot_results(results, &dir, &stem)?;
-    outln!(
-        "wrote {} plots to {}/{stem}-*.svg",
-        written.len(),
-        dir.display()
-    )?;
-    Ok(())
-}
-
-/// The family check's SVG charts, next to its file `path` and named after it (`family`).
-pub(crate) fn write_family_plots(
-    file: &torus_cull_lab::family_check::FamilyFile,
-    path: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let (dir, stem) = plot_place(path);
-    let written = torus_cull_lab::plot::plot_family(file, &dir, &stem)?;
-    outln!(
-        "wrote {} plots to {}/{stem}-*.svg",
-        written.len(),
-        dir.display()
-    )?;
-    Ok(())
-}
-
-/// The bend check's SVG charts, next to its file `path` and named after it (`bend`).
-pub(crate) fn write_bend_plots(
-    file: &torus_cull_lab::bend_check::BendFile,
-    path: &Path,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let (dir, stem) = plot_place(path);
-    let written = torus_cull_lab::plot::bend::plot_bend(file, &dir, &stem)?;
-    outln!(
-        "wrote {} plots to {}/{stem}-*.svg",
-        written.len(),
-        dir.display()
-    )?;
-    Ok(())
+    write_charts(path, |dir, stem| {
+        torus_cull_lab::plot::plot_results(results, dir, stem)
+    })
 }

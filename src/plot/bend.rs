@@ -1,7 +1,7 @@
 //! The charts of a `torus-cull bend` file: per r_min/r_max (and ν), each cull's capture
 //! of the far misses and its rejection rate against Δφ, alone and behind the wedge.
 
-use super::{Charts, Record, group_charts};
+use super::{Charts, Record, group_charts, provenance};
 use crate::bend_check::{BendFile, CullRecord};
 use std::path::{Path, PathBuf};
 
@@ -13,26 +13,13 @@ pub fn plot_bend(
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    let out_dir = if out_dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        out_dir
-    };
-    if !out_dir.is_dir() {
-        return Err(format!("{}: no such directory", out_dir.display()).into());
-    }
-    let mut charts = Charts {
+    let what = format!("{} rays a class", file.rays_per_class);
+    let mut charts = Charts::new(
         out_dir,
         stem,
-        provenance: format!(
-            "{} rays a class, {}{}",
-            file.rays_per_class,
-            file.meta.commit.as_deref().unwrap_or("no commit"),
-            if file.meta.dirty { "-dirty" } else { "" }
-        ),
-        x_label: "Δφ in degrees (log scale)",
-        written: Vec::new(),
-    };
+        provenance(what, &file.meta),
+        "Δφ in degrees (log scale)",
+    )?;
     let points: Vec<BendPoint<'_>> = file
         .classes
         .iter()
