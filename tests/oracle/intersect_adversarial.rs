@@ -280,7 +280,9 @@ fn generator_families_at_extreme_nu_and_scale() {
     let mut seed = 0xE7_0000u64;
     for nu in [1.01, 1.05, 1.2, 100.0, 1000.0] {
         for &case in Case::ALL {
-            for _ in 0..8 {
+            // Five random scales and poses per (ν, case), 2 000 rays each (eight took 34 s
+            // of CI's 2 cores; the oracle's grids and tangent families cover the rest).
+            for _ in 0..5 {
                 seed += 1;
                 let batch = generate(case, nu, 2_000, seed, Pose::Random)
                     .unwrap_or_else(|e| panic!("{case} at nu={nu}: {e}"));

@@ -234,3 +234,87 @@ fn core_circle_points_project_onto_the_surface() {
         }
     }
 }
+
+/// Issue 41's count: 10⁶ adversarial points on ring tori (ν 1.01…1000, R 10⁻³…10³),
+/// cycling through five kinds: near the surface (D = r·(1 ± 10⁻⁸…10⁻¹)), near the axis,
+/// near the core circle, in the box, and far away. Inside/outside is held to the implicit
+/// quartic's sign, `(|x|² + R² − r²)² − 4R²(x² + z²) < 0`, written out here (its rounding
+/// is far below the band of 10⁻⁹·(R + r) left out), and the signed distance to the
+/// meridian's closed form, to 10⁻¹⁴ of the size.
+#[test]
+fn a_million_adversarial_points_inside_outside_and_distance() {
+    let mut rng = Pcg64::seed_from_u64(0x41_0001);
+    let (mut checked, mut in_band, mut inside_count, mut worst) = (0u64, 0u64, 0u64, 0.0f64);
+    fn unit(rng: &mut Pcg64) -> DVec3 {
+        loop {
+            let v = DVec3::new(
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            );
+            let l = v.length();
+            if l > 1e-3 && l <= 1.0 {
+                return v / l;
+            }
+        }
+    }
+    for scale in [1e-3, 1.0, 1e3] {
+        for nu in [1.01, 1.25, 4.0, 32.0, 1000.0] {
+            let (big, small) = (scale, scale / nu);
+            let torus = Torus::new_f64(DVec3::ZERO, DVec3::Y, big, small).unwrap();
+            let size = big + small;
+            for k in 0..66_667 {
+                let phi = rng.random_range(0.0..TAU);
+                let radial = DVec3::new(phi.cos(), 0.0, phi.sin());
+                let x = match k % 5 {
+                    0 => {
+                        let theta = rng.random_range(0.0..TAU);
+                        let sign = if rng.random::<bool>() { 1.0 } else { -1.0 };
+                        let d = small * (1.0 + sign * 10f64.powf(rng.random_range(-8.0..-1.0)));
+                        radial * (big + d * theta.cos()) + DVec3::Y * (d * theta.sin())
+                    }
+                    1 => {
+                        radial * (size * 10f64.powf(rng.random_range(-12.0..-1.0)))
+                            + DVec3::Y * (size * rng.random_range(-2.0..2.0))
+                    }
+                    2 => {
+                        radial * big
+                            + unit(&mut rng) * (small * 10f64.powf(rng.random_range(-12.0..-1.0)))
+                    }
+                    3 => {
+                        DVec3::new(
+                            rng.random_range(-2.0..2.0),
+                            rng.random_range(-1.0..1.0),
+                            rng.random_range(-2.0..2.0),
+                        ) * size
+                    }
+                    _ => unit(&mut rng) * (size * 10f64.powf(rng.random_range(1.0..4.0))),
+                };
+                let rho_sq = x.x * x.x + x.z * x.z;
+                let s = x.length_squared() + big * big - small * small;
+                let implicit = s * s - 4.0 * big * big * rho_sq;
+                let meridian = (rho_sq.sqrt() - big).hypot(x.y) - small;
+                let got = torus.signed_distance(x).unwrap();
+                let err = (got - meridian).abs() / (size + x.length());
+                worst = worst.max(err);
+                assert!(
+                    err < 1e-14,
+                    "R {big}, r {small}, x {x}: {got} vs {meridian}"
+                );
+                if meridian.abs() > 1e-9 * size {
+                    let inside = torus.contains(x).unwrap();
+                    assert_eq!(inside, implicit < 0.0, "R {big}, r {small}, x {x}");
+                    inside_count += u64::from(inside);
+                } else {
+                    in_band += 1;
+                }
+                checked += 1;
+            }
+        }
+    }
+    eprintln!(
+        "point queries: {checked} points, {inside_count} inside, {in_band} in the band; worst \
+         distance error {worst:.1e} of the size"
+    );
+    assert!(checked >= 1_000_000 && inside_count > 100_000);
+}
