@@ -13,8 +13,9 @@
 //! Two files of different classes, rays or seed (`meta.workload_sha256`) are refused by
 //! [`comparable`].
 
-use super::family::changed;
-use super::rows::{Report, Row, first_duplicate, pair_up};
+use super::rows::{
+    CullCounts, Report, Row, changed, cull_capture_row, first_duplicate, pair_up, ratio,
+};
 use crate::bend_check::{BendFile, ClassRecord, CullRecord};
 
 /// Refuses files whose rays differ, and a file that holds a class twice.
@@ -65,51 +66,15 @@ pub fn compare(old: &BendFile, new: &BendFile, across_machines: bool) -> Report 
     report
 }
 
-fn ratio(num: u64, den: u64) -> f64 {
-    if den > 0 {
-        num as f64 / den as f64
-    } else {
-        f64::NAN
-    }
-}
-
-/// One cull on one class: its capture from its counts, a regression on a new false
-/// reject or a lower capture.
+/// One cull (or cull + wedge) on one class ([`cull_capture_row`]).
 fn cull_row(key: String, o: &CullRecord, n: &CullRecord) -> Row {
-    let counts = [
-        ("rejected", o.rejected, n.rejected),
-        ("false_rejects", o.false_rejects, n.false_rejects),
-        ("far_misses", o.far_misses, n.far_misses),
-        (
-            "far_misses_rejected",
-            o.far_misses_rejected,
-            n.far_misses_rejected,
-        ),
-    ];
-    let mut flags = changed(&counts);
-    let mut regression = false;
-    if n.false_rejects > o.false_rejects {
-        regression = true;
-        flags.push(format!(
-            "REGRESSION: false rejects {} -> {}",
-            o.false_rejects, n.false_rejects
-        ));
-    }
-    let old_c = ratio(o.far_misses_rejected, o.far_misses);
-    let new_c = ratio(n.far_misses_rejected, n.far_misses);
-    if new_c < old_c {
-        regression = true;
-        flags.push("REGRESSION: lower capture".into());
-    }
-    Row {
-        section: "bend",
-        key,
-        metric: "capture",
-        old: old_c,
-        new: new_c,
-        flags,
-        regression,
-    }
+    let counts = |c: &CullRecord| CullCounts {
+        rejected: c.rejected,
+        false_rejects: c.false_rejects,
+        far_misses: c.far_misses,
+        far_misses_rejected: c.far_misses_rejected,
+    };
+    cull_capture_row(("bend", key), counts(o), counts(n), &[])
 }
 
 /// The wedge alone's capture of the cut-away misses: lower is a regression.

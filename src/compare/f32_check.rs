@@ -11,7 +11,7 @@
 //! Two files of different families, rays or seed (`meta.workload_sha256`) are refused by
 //! [`comparable`], as results files of different workloads are.
 
-use super::rows::{Report, Row, TIMED_SECTIONS, first_duplicate, pair_up};
+use super::rows::{Report, Row, TIMED_SECTIONS, changed, changed_counts, first_duplicate, pair_up};
 use crate::f32_check::{CheckFile, FamilyRecord, Tally};
 
 /// A family's key: its name, and its ν when it has one (the workload generators' families
@@ -105,15 +105,6 @@ pub fn compare(old: &CheckFile, new: &CheckFile, threshold: f64, across_machines
     report
 }
 
-/// `name a->b` for each count that changed.
-fn changed_counts(counts: &[(&str, u64, u64)]) -> Vec<String> {
-    counts
-        .iter()
-        .filter(|(_, a, b)| a != b)
-        .map(|(name, a, b)| format!("{name} {a}->{b}"))
-        .collect()
-}
-
 /// One intersector on one family: its escalation rate from its counts, its changed
 /// counts, and (for ours) a regression when it got more answers wrong.
 fn tally_row(
@@ -129,17 +120,13 @@ fn tally_row(
             f64::NAN
         }
     };
-    let changed = changed_counts(&[
+    let mut flags = changed(&[
         ("escalated", o.escalated, n.escalated),
         ("missed", o.missed, n.missed),
         ("spurious", o.spurious, n.spurious),
         ("far", o.far, n.far),
         ("hits_answered", o.hits_answered, n.hits_answered),
     ]);
-    let mut flags = Vec::new();
-    if !changed.is_empty() {
-        flags.push(format!("changed: {}", changed.join(", ")));
-    }
     let wrong = |t: &Tally| t.missed + t.spurious + t.far;
     let regression = ours && wrong(n) > wrong(o);
     if regression {

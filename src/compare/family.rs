@@ -12,7 +12,7 @@
 //! Two files of different members, rays or seed (`meta.workload_sha256`) are refused by
 //! [`comparable`].
 
-use super::rows::{Report, Row, first_duplicate, pair_up};
+use super::rows::{CullCounts, Report, Row, changed, cull_capture_row, first_duplicate, pair_up};
 use crate::family_check::{CullRecord, FamilyFile, MemberRecord};
 
 /// Refuses files whose rays differ, and a file that holds a member class twice.
@@ -61,50 +61,17 @@ pub fn compare(old: &FamilyFile, new: &FamilyFile, across_machines: bool) -> Rep
     report
 }
 
-/// One cull on one member: its capture from its counts, a regression on a new false
-/// reject or a lower capture.
+/// One cull on one member ([`cull_capture_row`]); whether it accepts the member's shape
+/// is flagged when it changes.
 fn cull_row(key: String, o: &CullRecord, n: &CullRecord) -> Row {
-    let capture = |c: &CullRecord| {
-        if c.far_misses > 0 {
-            c.far_misses_rejected as f64 / c.far_misses as f64
-        } else {
-            f64::NAN
-        }
+    let counts = |c: &CullRecord| CullCounts {
+        rejected: c.rejected,
+        false_rejects: c.false_rejects,
+        far_misses: c.far_misses,
+        far_misses_rejected: c.far_misses_rejected,
     };
-    let counts = [
-        ("accepts", u64::from(o.accepts), u64::from(n.accepts)),
-        ("rejected", o.rejected, n.rejected),
-        ("false_rejects", o.false_rejects, n.false_rejects),
-        ("far_misses", o.far_misses, n.far_misses),
-        (
-            "far_misses_rejected",
-            o.far_misses_rejected,
-            n.far_misses_rejected,
-        ),
-    ];
-    let mut flags = changed(&counts);
-    let mut regression = false;
-    if n.false_rejects > o.false_rejects {
-        regression = true;
-        flags.push(format!(
-            "REGRESSION: false rejects {} -> {}",
-            o.false_rejects, n.false_rejects
-        ));
-    }
-    let (old_c, new_c) = (capture(o), capture(n));
-    if new_c < old_c {
-        regression = true;
-        flags.push("REGRESSION: lower capture".into());
-    }
-    Row {
-        section: "family",
-        key,
-        metric: "capture",
-        old: old_c,
-        new: new_c,
-        flags,
-        regression,
-    }
+    let accepts = ("accepts", u64::from(o.accepts), u64::from(n.accepts));
+    cull_capture_row(("family", key), counts(o), counts(n), &[accepts])
 }
 
 /// The exact intersection on one member: more missed or invented hits is a regression;
@@ -138,19 +105,5 @@ fn exact_row(key: String, o: &MemberRecord, n: &MemberRecord) -> Row {
         new: b.max_t_error_rel,
         flags,
         regression,
-    }
-}
-
-/// `changed: name a->b, …` for the counts that changed, or nothing.
-pub(super) fn changed(counts: &[(&str, u64, u64)]) -> Vec<String> {
-    let moved: Vec<String> = counts
-        .iter()
-        .filter(|(_, a, b)| a != b)
-        .map(|(name, a, b)| format!("{name} {a}->{b}"))
-        .collect();
-    if moved.is_empty() {
-        Vec::new()
-    } else {
-        vec![format!("changed: {}", moved.join(", "))]
     }
 }

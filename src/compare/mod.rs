@@ -195,14 +195,7 @@ fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
         ("rejected", o.rejected, n.rejected),
         ("false_rejects", o.false_rejects, n.false_rejects),
     ];
-    let changed: Vec<String> = counts
-        .iter()
-        .filter(|(_, a, b)| a != b)
-        .map(|(name, a, b)| format!("{name} {a}->{b}"))
-        .collect();
-    if !changed.is_empty() {
-        flags.push(format!("changed: {}", changed.join(", ")));
-    }
+    flags.extend(rows::changed(&counts));
     if n.false_rejects > o.false_rejects {
         regression = true;
         flags.push(format!(

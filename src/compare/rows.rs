@@ -107,3 +107,86 @@ pub(super) fn pair_up<'a, R>(
         })
         .collect()
 }
+
+/// `name a->b` for each count that changed.
+pub(super) fn changed_counts(counts: &[(&str, u64, u64)]) -> Vec<String> {
+    counts
+        .iter()
+        .filter(|(_, a, b)| a != b)
+        .map(|(name, a, b)| format!("{name} {a}->{b}"))
+        .collect()
+}
+
+/// `changed: name a->b, …` for the counts that changed, or no flag.
+pub(super) fn changed(counts: &[(&str, u64, u64)]) -> Vec<String> {
+    let moved = changed_counts(counts);
+    if moved.is_empty() {
+        Vec::new()
+    } else {
+        vec![format!("changed: {}", moved.join(", "))]
+    }
+}
+
+/// `num / den`, NaN without a denominator (a capture with nothing to capture).
+pub(super) fn ratio(num: u64, den: u64) -> f64 {
+    if den > 0 {
+        num as f64 / den as f64
+    } else {
+        f64::NAN
+    }
+}
+
+/// A cull's counts on the same rays in a check file (`torus-cull family`, `torus-cull bend`).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct CullCounts {
+    pub rejected: u64,
+    pub false_rejects: u64,
+    pub far_misses: u64,
+    pub far_misses_rejected: u64,
+}
+
+/// One cull of a check file: its capture of the far misses from its counts (`extra`
+/// counts flagged when they change too); a new false reject or a lower capture is a
+/// regression, the rays being the same.
+pub(super) fn cull_capture_row(
+    (section, key): (&'static str, String),
+    o: CullCounts,
+    n: CullCounts,
+    extra: &[(&str, u64, u64)],
+) -> Row {
+    let mut counts = extra.to_vec();
+    counts.extend([
+        ("rejected", o.rejected, n.rejected),
+        ("false_rejects", o.false_rejects, n.false_rejects),
+        ("far_misses", o.far_misses, n.far_misses),
+        (
+            "far_misses_rejected",
+            o.far_misses_rejected,
+            n.far_misses_rejected,
+        ),
+    ]);
+    let mut flags = changed(&counts);
+    let mut regression = false;
+    if n.false_rejects > o.false_rejects {
+        regression = true;
+        flags.push(format!(
+            "REGRESSION: false rejects {} -> {}",
+            o.false_rejects, n.false_rejects
+        ));
+    }
+    let old_c = ratio(o.far_misses_rejected, o.far_misses);
+    let new_c = ratio(n.far_misses_rejected, n.far_misses);
+    if new_c < old_c {
+        regression = true;
+        flags.push("REGRESSION: lower capture".into());
+    }
+    Row {
+        section,
+        key,
+        metric: "capture",
+        old: old_c,
+        new: new_c,
+        flags,
+        regression,
+    }
+}
