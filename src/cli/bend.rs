@@ -3,10 +3,10 @@
 
 use super::CliResult;
 use crate::console::{out, outln};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
-use torus_cull_lab::{output, results};
+use torus_cull_lab::output;
 
 /// The most rays per class.
 const MAX_RAYS: usize = 10_000_000;
@@ -52,20 +52,8 @@ pub fn run(args: BendArgs) -> CliResult {
         return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)").into());
     }
     let threads = super::threads::pick(args.threads)?;
-    let path = match args.out {
-        Some(path) => path,
-        None => {
-            let path = results::default_path(Path::new("results"), "-bend");
-            output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
     // Before the work, not after it.
-    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
-    if !args.no_plots {
-        super::plot::check_plot_paths(&path)?;
-    }
+    let path = super::plot::check_file_out(args.out, "-bend", args.no_plots)?;
     let classes = bend_check::classes(&args.nu);
     let mut file = BendFile::new(&classes, args.rays, args.seed);
     let classes = classes.len();

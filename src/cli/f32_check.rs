@@ -7,7 +7,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull_lab::f32_check::{self, CheckFile, families};
-use torus_cull_lab::{output, results};
+use torus_cull_lab::output;
 
 /// The most rays per family.
 const MAX_RAYS: usize = 1_000_000;
@@ -64,20 +64,8 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         .into());
     }
     let threads = crate::threads::pick(args.threads)?;
-    let path = match args.out {
-        Some(path) => path,
-        None => {
-            let path = results::default_path(Path::new("results"), "-f32-check");
-            output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
     // Before the work, not after it.
-    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
-    if !args.no_plots {
-        crate::plot::check_plot_paths(&path)?;
-    }
+    let path = crate::plot::check_file_out(args.out, "-f32-check", args.no_plots)?;
 
     let mut families = families::all();
     if let Some(part) = &args.family {

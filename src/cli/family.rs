@@ -3,10 +3,10 @@
 
 use super::CliResult;
 use crate::console::{out, outln};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::family_check::{self, FamilyFile};
-use torus_cull_lab::{output, results};
+use torus_cull_lab::output;
 
 /// The most rays per member.
 const MAX_RAYS: usize = 1_000_000;
@@ -41,20 +41,8 @@ pub fn run(args: FamilyArgs) -> CliResult {
         )
         .into());
     }
-    let path = match args.out {
-        Some(path) => path,
-        None => {
-            let path = results::default_path(Path::new("results"), "-family");
-            output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
     // Before the work, not after it.
-    output::check_writable(&path).map_err(|e| format!("--out {}: {e}", path.display()))?;
-    if !args.no_plots {
-        super::plot::check_plot_paths(&path)?;
-    }
+    let path = super::plot::check_file_out(args.out, "-family", args.no_plots)?;
     let members = family_check::members().len();
     let heartbeat = crate::console::Heartbeat::new(
         format!("family: {members} members x {} rays", args.rays),

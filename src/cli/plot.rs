@@ -112,3 +112,28 @@ pub(crate) fn write_plots(
         torus_cull_lab::plot::plot_results(results, dir, stem)
     })
 }
+
+/// Where a check command (`f32-check`, `family`, `bend`) writes its file: `--out`, or
+/// `results/<commit><suffix>.json` (its folder made); checked writable, and its charts'
+/// paths too unless `no_plots`, before any work, so a finished run is never lost to them.
+pub(crate) fn check_file_out(
+    out: Option<PathBuf>,
+    suffix: &str,
+    no_plots: bool,
+) -> Result<PathBuf, Box<dyn std::error::Error>> {
+    let path = match out {
+        Some(path) => path,
+        None => {
+            let path = torus_cull_lab::results::default_path(Path::new("results"), suffix);
+            torus_cull_lab::output::create_default_dir(&path)
+                .map_err(|e| format!("--out {}: {e}", path.display()))?;
+            path
+        }
+    };
+    torus_cull_lab::output::check_writable(&path)
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    if !no_plots {
+        check_plot_paths(&path)?;
+    }
+    Ok(path)
+}
