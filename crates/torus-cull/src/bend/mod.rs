@@ -37,6 +37,8 @@ pub use solid::{BendError, BendFace, PipeBend};
 pub use wedge::WedgeCull;
 
 #[cfg(test)]
+mod near_tangent_tests;
+#[cfg(test)]
 mod point_query_tests;
 #[cfg(test)]
 mod tests;
