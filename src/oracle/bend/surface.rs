@@ -10,8 +10,13 @@
 //!
 //! **The rule.** With `cos θ_f` the cosine between the direction and each own face's
 //! normal, the own crossing lies within `w = 4·(δ + 10⁻¹¹·S)/(min |cos θ_f|·|d|)` of
-//! t = 0 (δ the moved point's residual distance from its faces). Ambiguous: a direction
-//! within 10⁻⁹ of tangent to an own face, a next crossing in `(w, 2w]`. Then:
+//! t = 0 (δ the moved point's residual distance from its faces); the own crossing is the
+//! line's crossing nearest t = 0 within `w`. Ambiguous: a direction within 10⁻⁹ of
+//! tangent to an own face, any other crossing in `(−w, 2w]` (a ray within about
+//! 10⁻⁵ of tangent to a torus face that dips into the tube, or out into the bore, by
+//! less than about 10⁻¹¹·S has its exit, or its re-hit, inside the window: the oracle
+//! cannot separate it from the origin's own, and must not drop it as the origin's).
+//! Then:
 //! - **outward** (F > 0 past the origin): the first local maximum `t_a` of F past `w`
 //!   (before the next crossing); none and no next crossing: a **miss**; none before a
 //!   next crossing, or F there ≤ `4·10⁻¹¹·S`: ambiguous (a re-hit that cannot be told
@@ -115,10 +120,21 @@ impl BendQuery {
         let window = 4.0 * (delta + OWN_ERROR * size) / cos_min / len;
         let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
         let events: Vec<(f64, Passage, Face)> = whole.crossings();
-        let next = events.iter().map(|c| c.0).find(|&t| t > window);
-        if next.is_some_and(|t| t <= 2.0 * window) {
+        // The origin's own crossing is the one nearest t = 0 within the window; any other
+        // within 2w of the origin (a near-tangent ray's exit, or its re-hit of a concave
+        // face, closer than the window) cannot be told from it at the oracle's error.
+        let own = events
+            .iter()
+            .map(|c| c.0)
+            .filter(|t| t.abs() <= window)
+            .min_by(|a, b| a.abs().total_cmp(&b.abs()));
+        let crowded = events
+            .iter()
+            .any(|c| c.0 > -window && c.0 <= 2.0 * window && Some(c.0) != own);
+        if crowded {
             return None;
         }
+        let next = events.iter().map(|c| c.0).find(|&t| t > window);
         let first = events
             .iter()
             .copied()

@@ -6,7 +6,7 @@ use super::*;
 use crate::oracle::OracleClass;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
 const INF: f64 = f64::INFINITY;
 
@@ -246,4 +246,174 @@ fn rays_from_every_face_skip_their_own_crossing() {
     // Not on a face: ambiguous.
     let q = vecgeom(DVec3::new(0.0, 11.0, -30.0), DVec3::NEG_Y);
     assert_eq!(q.classify_from_surface().class, OracleClass::Ambiguous);
+}
+
+/// The five spawned rays `torus-cull bend` found the library and this rule disagreeing on
+/// (results/60bf307-bend.json, docs/bend.md): the bend (centre, axis, φ₀ direction, R,
+/// r_min, r_max, φ₀, Δφ), the ray (origin, direction), and the library's first crossing
+/// past the origin's own (t, face): each ray is within about 10⁻⁵ of tangent to a torus
+/// face and dips into the tube (or out into the bore) by 10⁻¹⁴…10⁻¹¹·S before it leaves
+/// (or comes back), closer to the origin than the rule's window of the own crossing.
+#[allow(clippy::type_complexity)]
+const NEAR_TANGENT_SPAWNS: [([[f64; 3]; 3], [f64; 5], [[f64; 3]; 2], (f64, Face)); 5] = [
+    (
+        [
+            [
+                -0.0019746248461145824,
+                -0.0029461541354645713,
+                -0.002641725932126363,
+            ],
+            [
+                -0.9994340728838559,
+                -0.027617915347328565,
+                0.01920376813688821,
+            ],
+            [
+                -0.03839274378281804,
+                -0.5015706361275626,
+                0.8642643659201847,
+            ],
+        ],
+        [0.004, 0.0, 0.001, -0.4135553324725523, TAU],
+        [
+            [
+                -0.003012353835024316,
+                -0.0005034284021232195,
+                -0.00630995983544658,
+            ],
+            [0.3839776212794209, 0.7494345850302565, -0.5393597956069075],
+        ],
+        (1.3822452583211218e-9, Face::Outer),
+    ),
+    (
+        [
+            [-4063.927963968598, -5826.442432564374, -3619.900442763744],
+            [-0.4486214615214787, -0.3191164149563251, 0.8348074616148055],
+            [0.6379370917284685, -0.740060173919516, -0.21294883417205987],
+        ],
+        [4000.0, 500.0, 1000.0, 5.234144575869436, PI],
+        [
+            [-1032.6853178779907, -7651.828150260352, -3013.312688205051],
+            [-0.7938955426834177, 0.06795079341920689, 0.604245444319692],
+        ],
+        (0.008570618684261977, Face::Inner),
+    ),
+    (
+        [
+            [
+                0.9683628968244662,
+                -1.2898992145825265,
+                -0.41524891552930593,
+            ],
+            [0.9533858451022077, 0.2588865798794186, 0.15502634975089408],
+            [-0.2704095612401064, 0.9403950649676744, 0.20624206887630026],
+        ],
+        [4.0, 0.5, 1.0, -4.2428158752067215, FRAC_PI_2],
+        [
+            [2.228681110387581, -5.499659413330818, 1.781270478956565],
+            [-0.8080322127994893, -0.5401766400518971, 0.2351449353496773],
+        ],
+        (7.953060063307258e-6, Face::Outer),
+    ),
+    (
+        [
+            [
+                -0.0070694112850074545,
+                -0.005260815943236233,
+                0.0026248288246057175,
+            ],
+            [
+                0.46793799360294835,
+                -0.5440873756002695,
+                -0.6964215403441064,
+            ],
+            [-0.09513806847870568, 0.8072361469501801, 0.5825105586881394],
+        ],
+        [0.004, 0.0, 0.001, -5.126034964075151, PI / 6.0],
+        [
+            [
+                -0.005546322795914502,
+                -0.0070190524725663415,
+                0.004607172487988897,
+            ],
+            [
+                0.9064590344535395,
+                -0.18455667945105142,
+                -0.37983002899660095,
+            ],
+        ],
+        (2.1717086449838836e-8, Face::Outer),
+    ),
+    (
+        [
+            [
+                0.0012284150449144425,
+                -0.00034560456923205473,
+                -0.00359326936255987,
+            ],
+            [0.870644694383978, -0.0963274599902967, -0.4823886779277137],
+            [0.8432010268880604, -0.12192405634464161, 0.5235900617271007],
+        ],
+        [
+            0.004,
+            0.0009000000000000001,
+            0.001,
+            4.324324471309348,
+            0.5235987755982988,
+        ],
+        [
+            [
+                0.0011966294934207505,
+                0.004322819518941651,
+                -0.005257426735134356,
+            ],
+            [-0.6605694424572993, 0.47028247147243163, 0.5852199660960264],
+        ],
+        (1.4900413485020056e-8, Face::Outer),
+    ),
+];
+
+#[test]
+fn a_crossing_inside_the_own_window_is_not_the_origins() {
+    for (k, (pose, radii, line, (t_lib, face_lib))) in NEAR_TANGENT_SPAWNS.into_iter().enumerate() {
+        let [c, a, p0] = pose.map(DVec3::from_array);
+        let [r, r_min, r_max, start, delta] = radii;
+        let [o, d] = line.map(DVec3::from_array);
+        let q = BendQuery::new(
+            (c, a, p0),
+            (r, r_min, r_max),
+            (start, delta),
+            o,
+            d,
+            (0.0, INF),
+        );
+        let size = q.size();
+        // The line through the moved origin has a crossing of its own near 0 and the
+        // library's at t_lib, far past the f64 rounding of the origin (its two crossings
+        // are 10⁻⁷…10⁻⁶·S apart), with the line strictly on one side between them.
+        let (moved, _) = q.on_surface().unwrap();
+        let whole = moved.over(-INF, INF).crossings();
+        assert!(
+            whole.iter().any(|x| x.0.abs() * d.length() <= 1e-9 * size),
+            "{k}: {whole:?}"
+        );
+        let second = whole
+            .iter()
+            .find(|x| x.0 * d.length() > 1e-9 * size)
+            .unwrap();
+        assert_eq!(second.2, face_lib, "{k}: {whole:?}");
+        assert!(
+            (second.0 - t_lib).abs() * d.length() <= 1e-9 * size,
+            "{k}: {whole:?}"
+        );
+        let mid = moved.f(0.5 * t_lib);
+        assert!(mid.abs() > 1e-15 * size, "{k}: F at the middle {mid:e}");
+        // Before the fix the rule took the second crossing for the origin's own: four
+        // misses, and for the bore's re-hit the outer exit 0.17·S on as the first crossing.
+        assert_eq!(
+            q.classify_from_surface().class,
+            OracleClass::Ambiguous,
+            "{k}"
+        );
+    }
 }
