@@ -111,7 +111,7 @@ fn next_up(y: f32) -> f32 {
 const INFLATE: f32 = 1.0 + 1.0 / 1_048_576.0;
 
 /// The cubic in f32 with its bounds.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 struct Cubic32 {
     a3: f32,
     a2: f32,
@@ -289,13 +289,41 @@ fn tangents(alpha: f32, beta: f32, at_a: &At, at_b: &At) -> bool {
     lhs > rhs
 }
 
-/// The cubic certificate on a torus-frame line `o + t·d` from a surface point over
-/// `t ∈ [t_min, t_max]` (module docs).
-pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f64) -> Verdict {
+/// The cubic's f64 setup for one ray, rounded for the f32 proof: what [`prove`] forms in
+/// f64 before its f32 steps, and what the GPU kernel's `TorusSurfaceRay` carries
+/// ([`Prepared::words`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Setup {
+    /// The range ends before any root past the origin's: a miss, proved in f64.
+    Miss,
+    /// Nothing to prove from (not a surface point, `v = 0` not a simple root, or a value
+    /// not finite).
+    Escalate,
+    /// The cubic and its range, for [`Prepared::decide`].
+    Cubic(Prepared),
+}
+
+/// The rounded cubic and its range in `v`, for the f32 proof.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Prepared {
+    cubic: Cubic32,
+    /// The range's start rounded down, and its end rounded up and down.
+    alpha: f32,
+    hi_up: f32,
+    hi_dn: f32,
+    /// The origin's own root `u₀` (the foot-point frame).
+    own: f64,
+    /// `v` per unit `t`: `|d|/R`.
+    v_per_t: f64,
+}
+
+/// The cubic's setup on a torus-frame line `o + t·d` from a surface point over `t ∈
+/// [t_min, t_max]` (module docs, "The bounds" and "The verdict").
+pub(crate) fn setup(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f64) -> Setup {
     let tube = torus.tube();
     let len_sq = d.length_squared();
     if !starts_on_the_surface(tube, o) || len_sq.is_nan() || len_sq <= 0.0 {
-        return Verdict::Escalate;
+        return Setup::Escalate;
     }
     let g = SurfaceCubic::new(tube, (o, d));
     let [c2, c1, c0] = g.c;
@@ -305,11 +333,11 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
     let delta_err = F64_REL * 8.0 * size;
     let (a3, a2, a1) = (g.a3, g.a2, g.a1);
     if !(size.is_finite() && a3.is_finite() && a2.is_finite() && a1.is_finite()) {
-        return Verdict::Escalate;
+        return Setup::Escalate;
     }
     // g(0) = a1 must be told from 0: then v = 0 is a simple root of v·g, the origin's.
     if a1.abs() <= 2.0 * delta_err {
-        return Verdict::Escalate;
+        return Setup::Escalate;
     }
     let s: f32 = if a1 > 0.0 { 1.0 } else { -1.0 };
     // The range in v (from p), past the origin's root: (0, v_max] ∩ [v_min, v_max].
@@ -318,72 +346,126 @@ pub(crate) fn prove(torus: &Torus, (o, d): (DVec3, DVec3), t_min: f64, t_max: f6
     let v_end = t_max * g.v_per_t;
     let v_max = v_end.min(v_cap);
     if !(v_min.is_finite() && v_cap.is_finite()) || v_max.is_nan() {
-        return Verdict::Escalate;
+        return Setup::Escalate;
     }
     if v_max < v_min {
-        return Verdict::Miss;
+        return Setup::Miss;
     }
     let alpha = down(v_min);
     let (hi_up, hi_dn) = (up(v_max), down(v_max));
     if !(alpha >= 0.0 && hi_up.is_finite() && alpha <= hi_up) {
-        return Verdict::Escalate;
+        return Setup::Escalate;
     }
     let coefficient = |a: f64| {
         let r = a as f32;
         (r, up((a - f64::from(r)).abs() + delta_err))
     };
     let ((r3, e3), (r2, e2), (r1, e1)) = (coefficient(a3), coefficient(a2), coefficient(a1));
-    let cubic = Cubic32 {
-        a3: r3,
-        a2: r2,
-        a1: r1,
-        e3,
-        e2,
-        e1,
-        s,
-        w_lo: down((-a3 - f64::from(e3)) / 3.0),
-        w_hi: up((-a3 + f64::from(e3)) / 3.0),
-    };
-    let t_of = |v: f32| f64::from(v) / g.v_per_t;
-    let first = cubic.first_root(alpha, hi_up);
-    let verdict = match first {
-        None => cubic.positive(alpha, hi_up, 0.0).then_some(Verdict::Miss),
-        Some(root) => {
-            let bracket = BRACKET as f32;
-            let left = (root - bracket).max(alpha);
-            let right = (root + bracket).min(hi_dn);
-            let sign_change =
-                right > left && cubic.below(right, 0.0) && cubic.positive(alpha, left, 0.0);
-            // Within the range as the ray states it (the ends were rounded to f32 in v).
-            let t32 = (t_of(root).max(t_min).min(t_max)) as f32;
-            let u = (p + f64::from(root)) as f32;
-            (sign_change && t32.is_finite() && u.is_finite()).then_some(Verdict::Hit {
-                t: t32,
-                u,
-                front_face: s > 0.0,
-            })
-        }
-    };
-    verdict.unwrap_or_else(|| {
-        // A far crossing the cubic cannot resolve (near-tangent, where g loses digits to
-        // cancellation): prove the stretch halfway to it clear, for the literal
-        // certificate to go on from.
-        let mid = 0.5 * (alpha + first.unwrap_or(hi_up));
-        let t_mid = down(t_of(mid));
-        // Only out of the tube: the literal ray, off the surface point by the origin's
-        // rounding, is inside where this one is (or its certificate escalates) only
-        // when both leave into the outside.
-        let clear = s > 0.0
-            && mid > alpha
-            && f64::from(t_mid) >= t_of(alpha)
-            && t_mid >= 0.0
-            && cubic.positive(alpha, mid, 0.0);
-        if clear {
-            Verdict::Clear(t_mid)
-        } else {
-            Verdict::Escalate
-        }
+    Setup::Cubic(Prepared {
+        cubic: Cubic32 {
+            a3: r3,
+            a2: r2,
+            a1: r1,
+            e3,
+            e2,
+            e1,
+            s,
+            w_lo: down((-a3 - f64::from(e3)) / 3.0),
+            w_hi: up((-a3 + f64::from(e3)) / 3.0),
+        },
+        alpha,
+        hi_up,
+        hi_dn,
+        own: p,
+        v_per_t: g.v_per_t,
     })
+}
+
+/// The cubic certificate on a torus-frame line `o + t·d` from a surface point over
+/// `t ∈ [t_min, t_max]` (module docs).
+pub(crate) fn prove(torus: &Torus, line: (DVec3, DVec3), t_min: f64, t_max: f64) -> Verdict {
+    match setup(torus, line, t_min, t_max) {
+        Setup::Miss => Verdict::Miss,
+        Setup::Escalate => Verdict::Escalate,
+        Setup::Cubic(prepared) => prepared.decide(t_min, t_max),
+    }
+}
+
+impl Prepared {
+    /// The proof over the range of [`setup`] (`t_min`, `t_max` as given to it).
+    fn decide(&self, t_min: f64, t_max: f64) -> Verdict {
+        let Prepared {
+            cubic,
+            alpha,
+            hi_up,
+            hi_dn,
+            own: p,
+            v_per_t,
+        } = *self;
+        let t_of = |v: f32| f64::from(v) / v_per_t;
+        let first = cubic.first_root(alpha, hi_up);
+        let verdict = match first {
+            None => cubic.positive(alpha, hi_up, 0.0).then_some(Verdict::Miss),
+            Some(root) => {
+                let bracket = BRACKET as f32;
+                let left = (root - bracket).max(alpha);
+                let right = (root + bracket).min(hi_dn);
+                let sign_change =
+                    right > left && cubic.below(right, 0.0) && cubic.positive(alpha, left, 0.0);
+                // Within the range as the ray states it (the ends were rounded to f32 in v).
+                let t32 = (t_of(root).max(t_min).min(t_max)) as f32;
+                let u = (p + f64::from(root)) as f32;
+                (sign_change && t32.is_finite() && u.is_finite()).then_some(Verdict::Hit {
+                    t: t32,
+                    u,
+                    front_face: cubic.s > 0.0,
+                })
+            }
+        };
+        verdict.unwrap_or_else(|| {
+            // A far crossing the cubic cannot resolve (near-tangent, where g loses digits
+            // to cancellation): prove the stretch halfway to it clear, for the literal
+            // certificate to go on from.
+            let mid = 0.5 * (alpha + first.unwrap_or(hi_up));
+            let t_mid = down(t_of(mid));
+            // Only out of the tube: the literal ray, off the surface point by the origin's
+            // rounding, is inside where this one is (or its certificate escalates) only
+            // when both leave into the outside.
+            let clear = cubic.s > 0.0
+                && mid > alpha
+                && f64::from(t_mid) >= t_of(alpha)
+                && t_mid >= 0.0
+                && cubic.positive(alpha, mid, 0.0);
+            if clear {
+                Verdict::Clear(t_mid)
+            } else {
+                Verdict::Escalate
+            }
+        })
+    }
+
+    /// The GPU kernel's `TorusSurfaceRay` words but the last row's literal start:
+    /// `(a3, a2, a1, s)`, `(e3, e2, e1, u₀)`, `(α, v_max↑, v_max↓, t per v)`, `(w_lo,
+    /// w_hi)`. `t per v` is `R/|d|` rounded to f32, whose rounding the kernel bounds.
+    pub(crate) fn words(&self) -> [f32; 14] {
+        let c = &self.cubic;
+        [
+            c.a3,
+            c.a2,
+            c.a1,
+            c.s,
+            c.e3,
+            c.e2,
+            c.e1,
+            self.own as f32,
+            self.alpha,
+            self.hi_up,
+            self.hi_dn,
+            (1.0 / self.v_per_t) as f32,
+            c.w_lo,
+            c.w_hi,
+        ]
+    }
 }
 
 #[cfg(test)]

@@ -63,19 +63,20 @@ pub enum Escalation {
     EarlierRootNotRuledOut,
     /// The reported t would not be within 1.9·10⁻⁴·(R + r) of the root.
     TErrorTooLarge,
-    /// The ray starts on the surface ([`crate::Ray::from_surface`]) and does not leave
-    /// into the outside by a margin (into the tube, or along the tangent plane): the host
-    /// divides its origin's root out in f64. Rays that leave into the outside go to the
-    /// kernel as the literal ray past their origin's root.
+    /// The ray starts on the surface ([`crate::Ray::from_surface`]) and neither the
+    /// cubic certificate (its origin's root divided out, `certified/surface_cubic.rs`)
+    /// nor the literal ray past its origin's root proved it: the kernel (code 8), or the
+    /// host where it has neither to send (no simple root at the origin and no start past
+    /// it).
     OnSurface,
     /// A code the host does not know.
     Unknown,
 }
 
 impl Escalation {
-    /// The escalations the module reports, in the order of their codes 1 to 7
+    /// The escalations the module reports, in the order of their codes 1 to 8
     /// (`TorusHit.why`, `TORUS_WHY_<NAME>` with NAME = [`Escalation::name`] in capitals).
-    pub const KERNEL: [Escalation; 7] = [
+    pub const KERNEL: [Escalation; 8] = [
         Escalation::NonFiniteLine,
         Escalation::SolverUnsure,
         Escalation::MissNotProved,
@@ -83,11 +84,11 @@ impl Escalation {
         Escalation::NoSignChange,
         Escalation::EarlierRootNotRuledOut,
         Escalation::TErrorTooLarge,
+        Escalation::OnSurface,
     ];
 
     /// The module's code (`TorusHit.why`) for an escalation it reports; `None` for the
-    /// host's own ([`Escalation::FarOrigin`], [`Escalation::OnSurface`],
-    /// [`Escalation::Unknown`]).
+    /// host's own ([`Escalation::FarOrigin`], [`Escalation::Unknown`]).
     pub fn code(self) -> Option<u32> {
         Escalation::KERNEL
             .iter()
@@ -99,7 +100,7 @@ impl Escalation {
     /// [`Escalation::Unknown`].
     pub fn from_code(code: u32) -> Escalation {
         match code {
-            1..=7 => Escalation::KERNEL[code as usize - 1],
+            1..=8 => Escalation::KERNEL[code as usize - 1],
             _ => Escalation::Unknown,
         }
     }
@@ -193,14 +194,10 @@ mod tests {
             ];
             assert_eq!(verdict(record), (F32Verdict::Escalate, Some(why)));
         }
-        for host in [
-            Escalation::FarOrigin,
-            Escalation::OnSurface,
-            Escalation::Unknown,
-        ] {
+        for host in [Escalation::FarOrigin, Escalation::Unknown] {
             assert_eq!(host.code(), None);
         }
         assert_eq!(Escalation::from_code(0), Escalation::Unknown);
-        assert_eq!(Escalation::from_code(8), Escalation::Unknown);
+        assert_eq!(Escalation::from_code(9), Escalation::Unknown);
     }
 }

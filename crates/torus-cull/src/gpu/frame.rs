@@ -1,7 +1,9 @@
 //! The frame: the torus as the kernel's uniform block ([`Frame`], its params) and a ray
 //! packed for the kernel ([`Frame::prepare`], [`Frame::pack`]): the centre subtracted in
-//! f64, far origins moved to their foot point, surface rays started past their own root.
+//! f64, far origins moved to their foot point, surface rays with their cubic formed in f64
+//! (and started past their own root where the cubic proves nothing).
 
+use super::wire::{SURFACE_CUBIC, SURFACE_CUBIC_AND_START, SURFACE_NONE};
 use super::{Escalation, GpuCull, Mode, PARAMS_BYTES, bounds};
 use crate::certified::F32Verdict;
 use crate::{Ray, Torus};
@@ -37,8 +39,38 @@ pub(crate) struct Packed {
     pub(crate) t0: f64,
     /// Within [`FAR_REL`]·R of the centre: the kernel may answer.
     pub(crate) sendable: bool,
-    /// The host's own answer, whatever the kernel writes ([`Frame::prepare`]).
+    /// The host's own answer, whatever `torus_intersect` writes ([`Frame::prepare`]; the
+    /// library's kernel uses [`Packed::kernel_host`]).
     pub(crate) host: Option<(F32Verdict, Option<Escalation>)>,
+    /// The ray's `TorusSurfaceRay` ([`Frame::prepare`]); `start.w` = 0 for a literal ray.
+    pub(crate) surface: [f32; 16],
+}
+
+/// The host's answer `host` for `torus_intersect` as `torus_intersect_from_surface` reads
+/// the ray with its surface record `surface`: none where the kernel proves the cubic.
+pub(crate) fn kernel_host(
+    host: Option<(F32Verdict, Option<Escalation>)>,
+    surface: &[f32; 16],
+) -> Option<(F32Verdict, Option<Escalation>)> {
+    if surface[15] == SURFACE_CUBIC {
+        None
+    } else {
+        host
+    }
+}
+
+impl Packed {
+    /// Whether the kernel reads this ray's surface record.
+    pub(crate) fn has_surface(&self) -> bool {
+        self.surface[15] != SURFACE_NONE
+    }
+
+    /// The host's own answer where the kernel reads the surface records
+    /// (`torus_intersect_from_surface`): [`Packed::host`], but none for a ray whose cubic
+    /// the kernel proves (the host escalates it only for `torus_intersect`).
+    pub(crate) fn kernel_host(&self) -> Option<(F32Verdict, Option<Escalation>)> {
+        kernel_host(self.host, &self.surface)
+    }
 }
 
 impl Frame {
@@ -59,25 +91,49 @@ impl Frame {
     }
 
     /// `ray` packed for the kernel ([`Frame::pack`]), with the host's own answer where it
-    /// has one: an origin beyond [`FAR_REL`]·R escalates ([`Escalation::FarOrigin`]); a ray
-    /// from a surface point goes as the literal ray past its origin's own root
-    /// ([`crate::certified::on_surface`]), or is answered here when it has no such start:
-    /// a proved miss (its range ends first), or escalated (it goes into the tube).
+    /// has one: an origin beyond [`FAR_REL`]·R escalates ([`Escalation::FarOrigin`]).
+    ///
+    /// A ray from a surface point goes as the CPU's certified path takes it
+    /// (`certified::prove`). Its words are the literal ray past the origin's own root
+    /// (`on_surface`), which `torus_intersect` may answer alone; its surface record holds
+    /// the cubic left once that root is divided out (`surface_cubic`, formed in f64), and
+    /// the ray's own `t_min`, for `torus_intersect_from_surface`, which tries the cubic
+    /// first. The host answers a proved miss (the range ends before any other root), and
+    /// escalates ([`Escalation::OnSurface`]) a ray with no start past its root: for
+    /// `torus_intersect` always, for `torus_intersect_from_surface` only where it has no
+    /// cubic either ([`Packed::kernel_host`]).
     pub(crate) fn prepare(&self, ray: &Ray) -> Packed {
         use crate::certified::on_surface::{Start, start};
+        use crate::certified::surface_cubic::{Setup, setup};
+        let mut surface = [0.0; 16];
+        let escalate = Some((F32Verdict::Escalate, Some(Escalation::OnSurface)));
         let (sent, on_surface) = if ray.starts_on_surface() {
-            match start(&self.torus, ray) {
-                Start::Literal(literal) => (literal, None),
-                Start::Miss => (*ray, Some((F32Verdict::Miss, None))),
-                Start::Escalate => (
-                    *ray,
-                    Some((F32Verdict::Escalate, Some(Escalation::OnSurface))),
-                ),
+            let line = self.torus.line_to_local_f64(ray);
+            let range = (f64::from(ray.t_min()), f64::from(ray.t_max()));
+            let cubic = setup(&self.torus, line, range.0, range.1);
+            let start = start(&self.torus, ray);
+            if let Setup::Cubic(cubic) = cubic {
+                surface[..14].copy_from_slice(&cubic.words());
+                surface[14] = ray.t_min();
+                surface[15] = match start {
+                    Start::Literal(_) => SURFACE_CUBIC_AND_START,
+                    _ => SURFACE_CUBIC,
+                };
+            }
+            match (cubic, start) {
+                (Setup::Miss, _) | (_, Start::Miss) => (*ray, Some((F32Verdict::Miss, None))),
+                (_, Start::Literal(literal)) => (literal, None),
+                (_, Start::Escalate) => (*ray, escalate),
             }
         } else {
             (*ray, None)
         };
         let mut packed = self.pack(&sent);
+        // A surface point is within 2·(R + r) of the centre, so the origin is not moved
+        // (t0 = 0) and the cubic's t is the kernel's.
+        if packed.t0 == 0.0 && (on_surface.is_none() || on_surface == escalate) {
+            packed.surface = surface;
+        }
         packed.host = if packed.sendable {
             on_surface
         } else {
@@ -86,14 +142,14 @@ impl Frame {
         packed
     }
 
-    /// The uniform block: the torus ([`Frame::torus_params`]); the count, the cull and
-    /// the mode.
-    pub(crate) fn params(&self, count: u32, cull: GpuCull, mode: Mode) -> Vec<u8> {
+    /// The uniform block: the torus ([`Frame::torus_params`]); the count, the cull, the
+    /// mode, and whether the kernel reads the surface records.
+    pub(crate) fn params(&self, count: u32, cull: GpuCull, mode: Mode, surfaces: bool) -> Vec<u8> {
         let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
         for f in self.torus_params() {
             bytes.extend_from_slice(&f.to_le_bytes());
         }
-        for u in [count, cull.code(), mode as u32, 0] {
+        for u in [count, cull.code(), mode as u32, u32::from(surfaces)] {
             bytes.extend_from_slice(&u.to_le_bytes());
         }
         bytes
@@ -163,6 +219,7 @@ impl Frame {
             t0,
             sendable,
             host: None,
+            surface: [0.0; 16],
         }
     }
 }
@@ -175,7 +232,7 @@ mod tests {
     fn the_uniform_block_has_its_size() {
         let torus = Torus::canonical(4.0, 1.0).unwrap();
         let frame = Frame::of(&torus);
-        let bytes = frame.params(7, GpuCull::Skala, Mode::CullOnly);
+        let bytes = frame.params(7, GpuCull::Skala, Mode::CullOnly, false);
         assert_eq!(bytes.len() as u64, PARAMS_BYTES);
         let word = |k: usize| u32::from_le_bytes(bytes[4 * k..4 * k + 4].try_into().unwrap());
         // config = (count, cull, mode, 0), the last row.

@@ -4,8 +4,8 @@
 
 use super::finish;
 use super::{
-    Escalation, Finished, Frame, GpuCull, Mode, PARAMS_BYTES, Packed, RAY_BYTES, as_bytes,
-    decode_records, kernel_source, shifted, verdict,
+    Escalation, Finished, Frame, GpuCull, Mode, PARAMS_BYTES, Packed, RAY_BYTES, SURFACE_BYTES,
+    as_bytes, decode_records, kernel_source, shifted, verdict,
 };
 use crate::certified::{F32Hit, F32Verdict};
 use crate::{Ray, Torus};
@@ -70,12 +70,13 @@ pub struct GpuIntersector {
     pub(crate) device_finish: bool,
 }
 
-/// The uniform block, the rays, the results and their staging copy, for up to `rays`
-/// rays a dispatch.
+/// The uniform block, the rays, their surface records, the results and their staging
+/// copy, for up to `rays` rays a dispatch.
 pub(crate) struct Buffers {
     pub(crate) rays: usize,
     pub(crate) params: wgpu::Buffer,
     pub(crate) input: wgpu::Buffer,
+    pub(crate) surfaces: wgpu::Buffer,
     pub(crate) output: wgpu::Buffer,
     pub(crate) staging: wgpu::Buffer,
     pub(crate) bind_group: wgpu::BindGroup,
@@ -136,6 +137,7 @@ impl GpuIntersector {
                 B::Uniform,
                 B::Storage { read_only: true },
                 B::Storage { read_only: false },
+                B::Storage { read_only: true },
             ],
             "main",
         );
@@ -198,13 +200,18 @@ impl GpuIntersector {
             })
         };
         use wgpu::BufferUsages as Use;
-        let [params, input, output, staging] = [
+        let [params, input, surfaces, output, staging] = [
             (
                 "torus-cull params",
                 PARAMS_BYTES,
                 Use::UNIFORM | Use::COPY_DST,
             ),
             ("torus-cull rays", size, Use::STORAGE | Use::COPY_DST),
+            (
+                "torus-cull surface records",
+                rays as u64 * SURFACE_BYTES,
+                Use::STORAGE | Use::COPY_DST,
+            ),
             ("torus-cull results", size, Use::STORAGE | Use::COPY_SRC),
             ("torus-cull staging", size, Use::MAP_READ | Use::COPY_DST),
         ]
@@ -225,6 +232,10 @@ impl GpuIntersector {
                     binding: 2,
                     resource: output.as_entire_binding(),
                 },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: surfaces.as_entire_binding(),
+                },
             ],
         });
         let finish = match &self.finish {
@@ -237,6 +248,7 @@ impl GpuIntersector {
             rays,
             params,
             input,
+            surfaces,
             output,
             staging,
             bind_group,
@@ -292,7 +304,7 @@ impl GpuIntersector {
         let mut out = Vec::with_capacity(rays.len());
         self.run(torus, cull, Mode::Intersect, rays, |packed, records| {
             for (p, &w) in packed.iter().zip(records) {
-                out.push(p.host.unwrap_or_else(|| shifted(verdict(w), p.t0)));
+                out.push(p.kernel_host().unwrap_or_else(|| shifted(verdict(w), p.t0)));
             }
         })?;
         Ok(out)
@@ -340,9 +352,10 @@ impl GpuIntersector {
         for batch in rays.chunks(CHUNK) {
             // A ray from a surface point goes as its literal ray past the origin's root.
             let packed: Vec<Packed> = batch.iter().map(|ray| frame.prepare(ray)).collect();
+            let surfaces = upload_surfaces(self, buffers, &packed);
             match self.dispatch(
                 buffers,
-                &frame.params(batch.len() as u32, cull, mode),
+                &frame.params(batch.len() as u32, cull, mode, surfaces),
                 &packed,
             ) {
                 Ok(records) => each(&packed, &records),
@@ -494,7 +507,8 @@ impl GpuIntersector {
                     .iter()
                     .zip(&packed)
                     .map(|(ray, p)| {
-                        let (world, instruction) = finish::world_record(torus, ray, p.host);
+                        let (world, instruction) =
+                            finish::world_record(torus, ray, p.kernel_host());
                         (world, finish::instruction_record(instruction))
                     })
                     .unzip()
@@ -506,7 +520,8 @@ impl GpuIntersector {
                 world: &world,
                 instructions: &instructions,
             });
-            let params = frame.params(batch.len() as u32, cull, Mode::Intersect);
+            let surfaces = upload_surfaces(self, buffers, &packed);
+            let params = frame.params(batch.len() as u32, cull, Mode::Intersect, surfaces);
             let (records, finished) = match self.dispatch_with(buffers, &params, &packed, second) {
                 Ok(answer) => answer,
                 Err(e) => {
@@ -515,7 +530,9 @@ impl GpuIntersector {
                 }
             };
             for (k, (ray, p)) in batch.iter().zip(&packed).enumerate() {
-                let (verdict, _) = p.host.unwrap_or_else(|| shifted(verdict(records[k]), p.t0));
+                let (verdict, _) = p
+                    .kernel_host()
+                    .unwrap_or_else(|| shifted(verdict(records[k]), p.t0));
                 if verdict != F32Verdict::Escalate {
                     out.push((
                         crate::certified::finish(verdict, torus, ray),
@@ -534,6 +551,18 @@ impl GpuIntersector {
         }
         Ok(out)
     }
+}
+
+/// Uploads the surface records of `packed` where any ray has one; whether it did (the
+/// uniform block's `config.w`, [`Frame::params`]).
+pub(crate) fn upload_surfaces(gpu: &GpuIntersector, buffers: &Buffers, packed: &[Packed]) -> bool {
+    let any = packed.iter().any(Packed::has_surface);
+    if any {
+        let records: Vec<f32> = packed.iter().flat_map(|p| p.surface).collect();
+        gpu.queue
+            .write_buffer(&buffers.surfaces, 0, &as_bytes(&records));
+    }
+    any
 }
 
 /// One dispatch's records: the kernel's `(t, n.xyz, code, why, 0, 0)`, and the f64

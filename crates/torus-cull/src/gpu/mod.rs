@@ -116,8 +116,8 @@ pub use wgpu;
 
 pub(crate) use escalation::{shifted, verdict};
 pub(crate) use frame::{Frame, Packed};
-pub(crate) use intersector::{Buffers, CHUNK, WORKGROUP, compute_pipeline};
+pub(crate) use intersector::{Buffers, CHUNK, WORKGROUP, compute_pipeline, upload_surfaces};
 pub(crate) use wire::{
-    CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Mode, PARAMS_BYTES, RAY_BYTES, as_bytes,
-    decode_records,
+    CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Mode, PARAMS_BYTES, RAY_BYTES, SURFACE_BYTES,
+    as_bytes, decode_records,
 };

@@ -59,6 +59,12 @@ pub struct PreparedRay {
     /// The host's own answer, where it has one: then the shader's answer for this ray is
     /// ignored (it may still be sent; it is a valid ray).
     pub host: Option<(F32Verdict, Option<Escalation>)>,
+    /// The module's `TorusSurfaceRay` (16 words, four `vec4<f32>`): for a ray from a
+    /// surface point, the cubic left once its origin's root is divided out, formed in f64
+    /// and rounded with bounds, its range, and the literal start past the root; the last
+    /// word is 0 for a literal ray. Pass it to `torus_intersect_from_surface`, which
+    /// answers a literal ray as `torus_intersect` does.
+    pub surface: [f32; 16],
 }
 
 /// A ray prepared for the f64 module ([`ModuleTorus::prepare_f64`]).
@@ -177,12 +183,14 @@ impl ModuleTorus {
         }
     }
 
-    /// The module's `TorusRay` for `ray`, as the library's kernel gets it:
+    /// The module's `TorusRay` and `TorusSurfaceRay` for `ray`, as the library's kernel
+    /// gets them:
     ///
-    /// - a ray from a surface point ([`Ray::from_surface`]) goes as its literal ray past
-    ///   its origin's own root (the origin's root divided out in f64), or the host
-    ///   answers it: a proved miss, or [`Escalation::OnSurface`] (it goes into the tube or
-    ///   along the tangent plane);
+    /// - a ray from a surface point ([`Ray::from_surface`]) goes with its cubic, the
+    ///   origin's root divided out in f64 ([`PreparedRay::surface`]), and the start past
+    ///   that root for the literal certificate to fall back on; where the cubic has nothing
+    ///   to prove from, as its literal ray past the root; or the host answers it: a proved
+    ///   miss (the range ends first), or [`Escalation::OnSurface`] (neither);
     /// - the origin relative to the centre, o − c in f64 rounded once; an origin farther
     ///   than 2·(R + r) moved to its line's foot point, `t0 = −(o − c)·d/|d|²` in f64, the
     ///   range shifted by `−t0` and clipped to `|t| ≤ (|foot| + 4(R + r))/|d|`;
@@ -194,6 +202,7 @@ impl ModuleTorus {
             words: packed.words,
             t0: packed.t0,
             host: packed.host,
+            surface: packed.surface,
         }
     }
 }
@@ -202,6 +211,29 @@ impl PreparedRay {
     /// [`PreparedRay::words`] as the 32 little-endian bytes of a `TorusRay`.
     pub fn bytes(&self) -> [u8; 32] {
         words_bytes(self.words)
+    }
+
+    /// This ray as a shader that calls `torus_intersect_from_surface` with
+    /// [`PreparedRay::surface`] reads it: [`PreparedRay::host`] is then none for a ray the
+    /// shader proves from its cubic alone (a ray from a surface point with no start past
+    /// its origin's root, which `torus_intersect` cannot answer). Decode and finish that
+    /// shader's answers through this copy ([`PreparedRay::verdict`],
+    /// [`ModuleTorus::prepare_f64`]).
+    #[must_use]
+    pub fn from_surface(&self) -> PreparedRay {
+        PreparedRay {
+            host: super::frame::kernel_host(self.host, &self.surface),
+            ..*self
+        }
+    }
+
+    /// [`PreparedRay::surface`] as the 64 little-endian bytes of a `TorusSurfaceRay`.
+    pub fn surface_bytes(&self) -> [u8; 64] {
+        let mut out = [0; 64];
+        for (chunk, w) in out.chunks_exact_mut(4).zip(self.surface) {
+            chunk.copy_from_slice(&w.to_le_bytes());
+        }
+        out
     }
 
     /// The ray's verdict from the shader's `TorusHit` (`t`, `normal`, `code`, `why`): the
@@ -283,7 +315,7 @@ mod tests {
     fn the_params_are_the_kernels_block() {
         let t = torus();
         let module = ModuleTorus::new(&t);
-        let block = Frame::of(&t).params(5, GpuCull::Skala, Mode::Intersect);
+        let block = Frame::of(&t).params(5, GpuCull::Skala, Mode::Intersect, false);
         assert_eq!(module.params_bytes().len(), 112);
         assert_eq!(module.params_bytes()[..], block[..112]);
         assert_eq!(module.params()[3], 4.0); // rot_x.w = R

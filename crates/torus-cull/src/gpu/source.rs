@@ -41,6 +41,7 @@ const MODULE_FILES: (&str, &[(&str, &str)]) = wgsl_files!(
     "wgsl/module/certificate.wgsl",
     "wgsl/module/culls.wgsl",
     "wgsl/module/trace.wgsl",
+    "wgsl/module/surface.wgsl",
 );
 
 /// The module's body (the intersection as WGSL functions, no bindings): every shared
@@ -450,6 +451,7 @@ pub fn kernel_source() -> String {
 ///
 /// ```wgsl
 /// fn torus_intersect(ray: TorusRay, torus: TorusParams, cull: u32) -> TorusHit
+/// fn torus_intersect_from_surface(ray: TorusRay, surf: TorusSurfaceRay, torus: TorusParams, cull: u32) -> TorusHit
 /// fn torus_cull_keeps(ray: TorusRay, torus: TorusParams, cull: u32) -> bool
 /// ```
 ///
@@ -463,6 +465,10 @@ pub fn kernel_source() -> String {
 ///   sent; a ray from a surface point goes as its literal ray past the origin's root, or
 ///   the host answers it. A ray prepared otherwise is outside what the certificate
 ///   proves.
+/// - `TorusSurfaceRay` (64 bytes), for `torus_intersect_from_surface`: from
+///   [`super::PreparedRay::surface`], per ray: a ray from a surface point's cubic, its
+///   origin's root divided out in f64, tried before the literal ray (zeros for a literal
+///   ray); decode the answers through [`super::PreparedRay::from_surface`].
 /// - `cull`: `TORUS_CULL_<NAME>`, [`super::GpuCull::ALL`]'s order.
 /// - `TorusHit`: `code` is `TORUS_HIT` (t within 2·10⁻⁴·(R + r) of the first root in
 ///   range along the unit direction, `normal` the unit world normal), `TORUS_MISS` (a

@@ -13,7 +13,7 @@
 use super::escalation::FinishCounts;
 use super::finish::{self, Status};
 use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
-use super::{Mode, WORKGROUP, as_bytes, decode_records, shifted, verdict};
+use super::{Mode, WORKGROUP, as_bytes, decode_records, shifted, upload_surfaces, verdict};
 use crate::Ray;
 use crate::Torus;
 use crate::certified::F32Verdict;
@@ -27,6 +27,8 @@ pub struct ResidentRays<'g> {
     chunks: Vec<Buffers>,
     /// Rays in each chunk.
     counts: Vec<usize>,
+    /// Whether each chunk has surface records for the kernel to read.
+    surfaced: Vec<bool>,
     /// Per ray, what the host adds to the kernel's t ([`Frame::pack`]), and the rays the
     /// kernel is not asked about (far origins, on-surface rays).
     shifts: Vec<f64>,
@@ -90,21 +92,22 @@ impl GpuIntersector {
         let frame = Frame::of(torus);
         let mut chunks = Vec::new();
         let mut counts = Vec::new();
+        let mut surfaced = Vec::new();
         let mut shifts = Vec::with_capacity(rays.len());
         let mut host = Vec::new();
         for (k, batch) in rays.chunks(CHUNK).enumerate() {
             let buffers = self.buffers(batch.len());
-            let mut packed: Vec<f32> = Vec::with_capacity(batch.len() * 8);
-            for (i, ray) in batch.iter().enumerate() {
-                let p = frame.prepare(ray);
-                packed.extend_from_slice(&p.words);
+            let packed: Vec<_> = batch.iter().map(|ray| frame.prepare(ray)).collect();
+            for (i, p) in packed.iter().enumerate() {
                 shifts.push(p.t0);
-                if let Some(answer) = p.host {
+                if let Some(answer) = p.kernel_host() {
                     host.push((k * CHUNK + i, answer));
                 }
             }
+            let words: Vec<f32> = packed.iter().flat_map(|p| p.words).collect();
             self.queue
-                .write_buffer(&buffers.input, 0, &as_bytes(&packed));
+                .write_buffer(&buffers.input, 0, &as_bytes(&words));
+            surfaced.push(upload_surfaces(self, &buffers, &packed));
             chunks.push(buffers);
             counts.push(batch.len());
         }
@@ -118,6 +121,7 @@ impl GpuIntersector {
             frame,
             chunks,
             counts,
+            surfaced,
             shifts,
             host,
             upload: start.elapsed(),
@@ -202,11 +206,15 @@ impl ResidentRays<'_> {
     /// Runs the kernel with `cull` over every resident ray `repeats` times (at least
     /// once), in one submission, and waits for it.
     pub fn run(&self, cull: GpuCull, repeats: usize) -> Result<KernelTime, GpuError> {
-        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+        for ((buffers, &count), &surfaces) in
+            self.chunks.iter().zip(&self.counts).zip(&self.surfaced)
+        {
             self.gpu.queue.write_buffer(
                 &buffers.params,
                 0,
-                &self.frame.params(count as u32, cull, Mode::Intersect),
+                &self
+                    .frame
+                    .params(count as u32, cull, Mode::Intersect, surfaces),
             );
         }
         self.dispatch(&self.gpu.pipeline, repeats)
@@ -244,7 +252,7 @@ impl ResidentRays<'_> {
             let mut orders: Vec<f32> = Vec::with_capacity(batch.len() * 8);
             for ray in batch {
                 let p = self.frame.prepare(ray);
-                let (w, instruction) = finish::world_record(torus, ray, p.host);
+                let (w, instruction) = finish::world_record(torus, ray, p.kernel_host());
                 world.extend_from_slice(&w);
                 orders.extend_from_slice(&finish::instruction_record(instruction));
             }
@@ -284,11 +292,15 @@ impl ResidentRays<'_> {
                 "run_finished before upload_finish: the f64 pass has no input".into(),
             ));
         }
-        for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
+        for ((buffers, &count), &surfaces) in
+            self.chunks.iter().zip(&self.counts).zip(&self.surfaced)
+        {
             self.gpu.queue.write_buffer(
                 &buffers.params,
                 0,
-                &self.frame.params(count as u32, cull, Mode::Intersect),
+                &self
+                    .frame
+                    .params(count as u32, cull, Mode::Intersect, surfaces),
             );
         }
         let (wall, mut device) = self.submit(&self.gpu.pipeline, Some(&pass.pipeline), repeats)?;

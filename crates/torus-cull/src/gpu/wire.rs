@@ -4,6 +4,18 @@
 /// Bytes per ray, in and out: two `vec4<f32>` each.
 pub(crate) const RAY_BYTES: u64 = 32;
 
+/// Bytes per ray of the surface records (`TorusSurfaceRay`, four `vec4<f32>`): the cubic
+/// of a ray from a surface point, formed on the host in f64 ([`super::frame::Frame::prepare`]).
+pub(crate) const SURFACE_BYTES: u64 = 64;
+
+/// `TorusSurfaceRay.start.w`: what the record holds. A literal ray (not from a surface
+/// point, or one the host sends as its literal ray past the origin's root) has none.
+pub(crate) const SURFACE_NONE: f32 = 0.0;
+/// The cubic, and no literal start past the origin's root to fall back on.
+pub(crate) const SURFACE_CUBIC: f32 = 1.0;
+/// The cubic, and the literal start in `start.z` to fall back on.
+pub(crate) const SURFACE_CUBIC_AND_START: f32 = 2.0;
+
 /// Size of the uniform block (`Params` in the kernel): eight 16-byte rows, the module's
 /// `TorusParams` (seven) and the kernel's `config`.
 pub(crate) const PARAMS_BYTES: u64 = 128;
@@ -18,7 +30,8 @@ pub(crate) const CODE_ESCALATE: u32 = 2;
 /// `TORUS_KEPT`: the cull alone kept the ray's line.
 pub(crate) const CODE_KEPT: u32 = 3;
 
-/// What the kernel does per ray (`Params.config.z`).
+/// What the kernel does per ray (`Params.config.z`; `config.w` is 1 where the dispatch's
+/// surface records are to be read).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Mode {
     /// The cull, then the certified intersection.

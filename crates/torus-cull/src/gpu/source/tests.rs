@@ -109,7 +109,11 @@ fn the_kernel_is_the_module_plus_its_bindings() {
     assert_includable(
         &module,
         &parsed,
-        &["torus_intersect", "torus_cull_keeps"],
+        &[
+            "torus_intersect",
+            "torus_intersect_from_surface",
+            "torus_cull_keeps",
+        ],
         &[
             "const TORUS_HIT: u32 = 1u;",
             "const TORUS_ESCALATE: u32 = 2u;",
@@ -117,6 +121,7 @@ fn the_kernel_is_the_module_plus_its_bindings() {
             "const TORUS_CULL_DISCRIMINANT: u32 = 8u;",
             "const TORUS_WHY_NON_FINITE_LINE: u32 = 1u;",
             "const TORUS_WHY_T_ERROR: u32 = 7u;",
+            "const TORUS_WHY_ON_SURFACE: u32 = 8u;",
         ],
     );
     assert_prefixed(&parsed, 60);

@@ -27,6 +27,8 @@
 // THE PUBLIC ENTRY POINTS (everything else here is internal):
 //
 //   fn torus_intersect(ray: TorusRay, torus: TorusParams, cull: u32) -> TorusHit
+//   fn torus_intersect_from_surface(ray: TorusRay, surf: TorusSurfaceRay,
+//                                   torus: TorusParams, cull: u32) -> TorusHit
 //   fn torus_cull_keeps(ray: TorusRay, torus: TorusParams, cull: u32) -> bool
 //
 // `cull` is one of TORUS_CULL_NONE, _SPHERE, _AABB, _CYCHOSZ, _THICK_CYLINDER, _SKALA,
@@ -45,6 +47,11 @@
 //     (torus_cull::Ray::from_surface) sent as its literal ray past the origin's own root,
 //     or answered on the host (see ModuleTorus::prepare). A ray prepared otherwise is
 //     outside what the certificate proves.
+//   - TorusSurfaceRay, per ray, for torus_intersect_from_surface: ModuleTorus::prepare(ray)
+//     .surface (64 bytes; surface.wgsl): a ray from a surface point's cubic, its origin's
+//     root divided out in f64, which proves the grazing rays and the re-hits near the
+//     origin that the literal ray cannot; all zeros for a literal ray. Decode its answers
+//     through PreparedRay::from_surface().
 //
 // WHAT THE ANSWER MEANS: TorusHit.code
 //   TORUS_HIT: a proved hit; t (along the prepared ray's direction, from the prepared
