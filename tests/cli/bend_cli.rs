@@ -1,7 +1,7 @@
 //! `torus-cull bend` at a tiny size: a clean file, its charts, `plot` redrawing them, and
 //! `compare` of two bend files.
 
-use super::support::{stderr, stdout, torus_cull};
+use super::support::{arg, assert_ok, cli, refused, stderr, stdout, torus_cull};
 
 /// The SVG files in `dir`, sorted.
 fn svgs(dir: &std::path::Path) -> Vec<String> {
@@ -18,9 +18,9 @@ fn svgs(dir: &std::path::Path) -> Vec<String> {
 fn bend_check_at_a_tiny_size_is_clean() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("bend.json");
-    let p = path.to_str().unwrap();
+    let p = arg(&path);
     let out = torus_cull(&["bend", "--rays", "1400", "--out", p]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_ok(&out);
     let file: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     assert_eq!(file["meta"]["tool"], "bend");
@@ -68,7 +68,7 @@ fn bend_check_at_a_tiny_size_is_clean() {
     assert!(chart.contains("cychosz+wedge"));
     let again = tempfile::tempdir().unwrap();
     let out = torus_cull(&["plot", p, "--out-dir", again.path().to_str().unwrap()]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_ok(&out);
     assert_eq!(svgs(again.path()), written);
     // `compare`: the same file is clean; a false reject added, a capture lowered or a
     // wrong face added is a regression (exit 1); files of other rays are refused (exit 2).
@@ -87,7 +87,7 @@ fn bend_check_at_a_tiny_size_is_clean() {
     worse["classes"][9]["exact"]["wrong_face"] = 1.into();
     let worse_path = again.path().join("worse.json");
     std::fs::write(&worse_path, worse.to_string()).unwrap();
-    let out = torus_cull(&["compare", p, worse_path.to_str().unwrap()]);
+    let out = torus_cull(&["compare", p, arg(&worse_path)]);
     assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
     let report = stdout(&out);
     assert!(
@@ -97,32 +97,23 @@ fn bend_check_at_a_tiny_size_is_clean() {
     assert!(report.contains("REGRESSION: lower capture"), "{report}");
     assert!(report.contains("wrong-value answers 0 -> 1"), "{report}");
     let other = again.path().join("other.json");
-    let o = other.to_str().unwrap();
-    let out = torus_cull(&[
-        "bend",
-        "--rays",
-        "7",
-        "--no-plots",
-        "--seed",
-        "5",
-        "--out",
-        o,
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    let o = arg(&other);
+    let out = cli("bend --rays 7 --no-plots --seed 5 --out {}", &[o]);
+    assert_ok(&out);
     assert!(
         svgs(again.path()).len() == written.len(),
         "--no-plots wrote charts"
     );
     let out = torus_cull(&["compare", p, o]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    refused(&out);
     assert!(stderr(&out).contains("workload_sha256"), "{}", stderr(&out));
     // A family file and a bend file are different records.
     let family = again.path().join("family.json");
-    let f = family.to_str().unwrap();
+    let f = arg(&family);
     let out = torus_cull(&["family", "--rays", "4", "--no-plots", "--out", f]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_ok(&out);
     let out = torus_cull(&["compare", f, p]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    refused(&out);
 }
 
 #[test]

@@ -2,30 +2,19 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::support::{arg, assert_ok, cli, refused, torus_cull as run};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 use torus_cull::{CullKind, Ray, Torus, intersect};
 use torus_cull_lab::oracle::{OracleClass, classify};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(args)
-        .output()
-        .expect("run torus-cull")
-}
 
 fn eval_file(dir: &Path, csv: &str, major: &str, minor: &str) -> Output {
     let input = dir.join("rays.csv");
     std::fs::write(&input, csv).unwrap();
-    run(&[
-        "eval",
-        "--major",
-        major,
-        "--minor",
-        minor,
-        "--rays",
-        input.to_str().unwrap(),
-    ])
+    cli(
+        "eval --major {} --minor {} --rays {}",
+        &[major, minor, arg(&input)],
+    )
 }
 
 #[test]
@@ -55,11 +44,7 @@ fn bad_rows_stop_with_the_line_number() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("rays.csv:1: header"));
     // r ≥ R is a horn or spindle torus (the apple), down to R/r = 0.5; fatter is refused.
     let out = eval_file(dir.path(), &format!("{header}{good}"), "1", "2");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let out = eval_file(dir.path(), &format!("{header}{good}"), "0.9", "2");
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
@@ -71,17 +56,10 @@ fn bad_rows_stop_with_the_line_number() {
     let input = dir.path().join("rays.csv");
     std::fs::write(&input, format!("{header}{good}{good}1,2\n")).unwrap();
     let out_path = dir.path().join("out.csv");
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--out",
-        out_path.to_str().unwrap(),
-    ]);
+    let out = cli(
+        "eval --major 2 --minor 1 --rays {} --out {}",
+        &[arg(&input), arg(&out_path)],
+    );
     assert!(!out.status.success());
     assert!(
         !out_path.exists(),
@@ -89,15 +67,7 @@ fn bad_rows_stop_with_the_line_number() {
         out_path.display()
     );
     // A missing file is named.
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        "/no/such.csv",
-    ]);
+    let out = cli("eval --major 2 --minor 1 --rays /no/such.csv", &[]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("/no/such.csv"));
 }
@@ -124,25 +94,12 @@ fn good_input_round_trips() {
     let input = dir.path().join("rays.csv");
     let output = dir.path().join("out.csv");
     std::fs::write(&input, csv).unwrap();
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--out",
-        output.to_str().unwrap(),
-        // The f32 path, checked here against f32 rays; the f64 default has its own test.
-        "--precision",
-        "f32",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    // The f32 path, checked here against f32 rays; the f64 default has its own test.
+    let out = cli(
+        "eval --major 2 --minor 1 --rays {} --out {} --precision f32",
+        &[arg(&input), arg(&output)],
     );
+    assert_ok(&out);
     let text = std::fs::read_to_string(&output).unwrap();
     let mut lines = text.lines();
     assert_eq!(
@@ -216,11 +173,7 @@ fn no_hit_row_without_t_hit_on_hole_edge_lines() {
     }
     let dir = tempfile::tempdir().unwrap();
     let out = eval_file(dir.path(), &csv, "1", "0.8333333");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let (mut hits, mut empty) = (0, Vec::new());
     for line in text.lines().skip(1) {
@@ -268,11 +221,7 @@ fn far_origins_are_never_falsely_rejected() {
     }
     let dir = tempfile::tempdir().unwrap();
     let out = eval_file(dir.path(), &csv, &big.to_string(), &small.to_string());
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut hits = 0;
     for row in text.lines().skip(1) {
@@ -301,16 +250,12 @@ fn precision_f64_answers_for_the_ray_as_typed() {
     assert!((exact - 1.99858578679).abs() < 1e-11);
     let t_hit = |precision: Option<&str>| {
         let mut args = vec!["eval", "--major", "2", "--minor", "1"];
-        args.extend(["--rays", input.to_str().unwrap()]);
+        args.extend(["--rays", arg(&input)]);
         if let Some(p) = precision {
             args.extend(["--precision", p]);
         }
         let out = run(&args);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_ok(&out);
         let text = String::from_utf8(out.stdout).unwrap();
         let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
         assert_eq!(row[1], "hit");
@@ -325,18 +270,11 @@ fn precision_f64_answers_for_the_ray_as_typed() {
     }
     let rounded = t_hit(Some("f32"));
     assert!((rounded - exact).abs() > 1e-6, "f32 t = {rounded}");
-    let bad = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--precision",
-        "f16",
-    ]);
-    assert_eq!(bad.status.code(), Some(2));
+    let bad = cli(
+        "eval --major 2 --minor 1 --rays {} --precision f16",
+        &[arg(&input)],
+    );
+    refused(&bad);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("f64"));
 }
 
@@ -351,15 +289,9 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
         "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n",
     )
     .unwrap();
-    let path = input.to_str().unwrap();
-    let out = run(&[
-        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "f32",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let path = arg(&input);
+    let out = cli("eval --major 2 --minor 1 --rays {} --exact f32", &[path]);
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(
@@ -374,20 +306,11 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
     );
     assert_eq!((rows[3][1], rows[3][4]), ("hit", "1"));
     // --exact f32 takes f32 rays: an explicit --precision f64 is refused.
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        path,
-        "--exact",
-        "f32",
-        "--precision",
-        "f64",
-    ]);
-    assert_eq!(out.status.code(), Some(2));
+    let out = cli(
+        "eval --major 2 --minor 1 --rays {} --exact f32 --precision f64",
+        &[path],
+    );
+    refused(&out);
     assert!(String::from_utf8_lossy(&out.stderr).contains("--exact f32 takes f32 rays"));
 }
 
@@ -395,7 +318,7 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
 fn eval_rows(dir: &Path, csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
     let input = dir.join("rays.csv");
     std::fs::write(&input, csv).unwrap();
-    let mut all = vec!["eval", "--rays", input.to_str().unwrap()];
+    let mut all = vec!["eval", "--rays", arg(&input)];
     all.extend_from_slice(args);
     let out = run(&all);
     if !out.status.success() {
@@ -728,10 +651,8 @@ fn exact_gpu_adds_a_column_per_gpu_cull() {
         ));
     }
     std::fs::write(&input, csv).unwrap();
-    let path = input.to_str().unwrap();
-    let out = run(&[
-        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "gpu",
-    ]);
+    let path = arg(&input);
+    let out = cli("eval --major 2 --minor 1 --rays {} --exact gpu", &[path]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     if !out.status.success() && stderr.contains("no GPU adapter") {
         eprintln!("SKIPPED: no GPU adapter ({stderr})");

@@ -2,6 +2,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::support::{arg, assert_ok};
 use std::path::Path;
 use std::process::Command;
 use torus_cull_lab::compare::compare;
@@ -353,7 +354,7 @@ fn compare_flags_regressions() {
 
 fn cli_compare(old: &Path, new: &Path) -> (i32, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(["compare", old.to_str().unwrap(), new.to_str().unwrap()])
+        .args(["compare", arg(old), arg(new)])
         .output()
         .unwrap();
     let text =
@@ -475,12 +476,7 @@ fn records_missing_from_the_new_file_fail_unless_allowed() {
         "{text}"
     );
     let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args([
-            "compare",
-            a.to_str().unwrap(),
-            b.to_str().unwrap(),
-            "--allow-missing",
-        ])
+        .args(["compare", arg(&a), arg(&b), "--allow-missing"])
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
@@ -516,10 +512,10 @@ fn duplicate_records_are_refused_naming_the_record() {
     copy.rejected = 10;
     twice.rejection.push(copy);
     twice.save(&b).unwrap();
-    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, err) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 2, "{out}{err}");
     assert!(
-        err.contains(b.to_str().unwrap())
+        err.contains(arg(&b))
             && err.contains("record `rejection hole 2 skala` appears more than once"),
         "{err}"
     );
@@ -569,7 +565,7 @@ fn different_machines_are_said_first_and_their_timings_decide_nothing() {
     slow.timing[0].total_ns = 30.0;
     slow.timing[0].total_ns_ci = [29.0, 31.0];
     slow.save(&b).unwrap();
-    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (a, b) = (arg(&a), arg(&b));
     let (code, out, err) = compare_cli(&[a, b]);
     assert_eq!(code, 0, "{out}{err}");
     let first = out.lines().next().unwrap();

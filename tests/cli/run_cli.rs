@@ -3,7 +3,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::support::torus_cull as run;
+use crate::support::{arg, assert_ok, cli, refused, torus_cull as run};
 use std::process::Command;
 use torus_cull_lab::results::Results;
 
@@ -11,14 +11,8 @@ use torus_cull_lab::results::Results;
 fn quick_workload_writes_results_and_plots() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("quick.json");
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = cli("run --workload workloads/quick.json --out {}", &[arg(&out)]);
+    assert_ok(&o);
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("hole: miss capture") && stdout.contains("uniform: miss capture"));
     let r = Results::load(&out).unwrap();
@@ -63,16 +57,10 @@ fn quick_workload_writes_results_and_plots() {
 fn a_broken_cull_fails_the_run_and_names_the_ray() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("broken.json");
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--out",
-        out.to_str().unwrap(),
-        "--no-plots",
-        "--culls",
-        "cychosz,cychosz_printed",
-    ]);
+    let o = cli(
+        "run --workload workloads/quick.json --out {} --no-plots --culls cychosz,cychosz_printed",
+        &[arg(&out)],
+    );
     assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("FALSE REJECT: cull cychosz_printed"), "{err}");
@@ -106,8 +94,8 @@ fn bad_inputs_exit_2_and_say_where() {
         r#"{"name":"b","seed":1,"cases":["hole"],"nu":[0.8],"rays":10}"#,
     )
     .unwrap();
-    let o = run(&["run", "--workload", bad.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["run", "--workload", arg(&bad)]);
+    refused(&o);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
         err.contains("bad.json") && err.contains("field `nu[0]`") && err.contains("> 1"),
@@ -115,29 +103,15 @@ fn bad_inputs_exit_2_and_say_where() {
     );
 
     let o = run(&["run", "--workload", "/no/such/workload.json"]);
-    assert_eq!(o.status.code(), Some(2));
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("/no/such/workload.json"));
 
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--culls",
-        "bogus",
-    ]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = cli("run --workload workloads/quick.json --culls bogus", &[]);
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("unknown cull 'bogus'"));
 
-    let o = run(&[
-        "render",
-        "--scene",
-        "facing_grid",
-        "--nu",
-        "0.5",
-        "--out",
-        "/tmp/x.png",
-    ]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = cli("render --scene facing_grid --nu 0.5 --out /tmp/x.png", &[]);
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("--nu"));
 }
 
@@ -180,7 +154,7 @@ fn the_commit_is_the_builds_not_the_current_directorys() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     let written: Vec<String> = std::fs::read_dir(dir.path().join("results"))
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
@@ -223,7 +197,7 @@ fn a_built_in_workload_runs_from_any_folder() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     let r = Results::load(&out).unwrap();
     let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("workloads/quick.json");
     let want = torus_cull_lab::workload::spec::Workload::load(&file).unwrap();
@@ -245,8 +219,7 @@ fn the_default_workload_is_built_in() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = refused(&o);
     assert!(
         err.contains("--out") && !err.contains("cannot read"),
         "{err}"

@@ -14,7 +14,7 @@ fn first_line_is_not_blank_and_long_keys_stay_aligned() {
     r.rejection[1].cull = "discriminant_f64".into();
     r.save(&a).unwrap();
     r.save(&b).unwrap();
-    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, _) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 0, "{out}");
     assert!(
         out.lines().next().is_some_and(|l| !l.trim().is_empty()),
@@ -79,17 +79,17 @@ fn f32_check_files_compare_and_mixed_kinds_are_refused() {
     let mut bad = good.clone();
     bad.families[0] = family(2);
     write(&b, &bad);
-    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), a.to_str().unwrap()]);
+    let (code, out, err) = compare_cli(&[arg(&a), arg(&a)]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("hole 2 cert"), "{out}");
-    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, _) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("REGRESSION: missed/spurious/far 0/0/0 -> 2/0/0"),
         "{out}"
     );
     sample().save(&c).unwrap();
-    let (code, _, err) = compare_cli(&[a.to_str().unwrap(), c.to_str().unwrap()]);
+    let (code, _, err) = compare_cli(&[arg(&a), arg(&c)]);
     assert_eq!(code, 2, "{err}");
     assert!(
         err.contains("`f32-check`") && err.contains("`run`"),
@@ -127,7 +127,7 @@ fn estimate_only_files_are_plotted_and_compared() {
     let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
     gpu(2.0, "RTX").save(&a).unwrap();
     gpu(3.0, "RTX").save(&b).unwrap();
-    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (a, b) = (arg(&a), arg(&b));
     let (code, out, _) = compare_cli(&[a, b]);
     assert_eq!(code, 1, "{out}");
     assert!(
@@ -142,7 +142,7 @@ fn estimate_only_files_are_plotted_and_compared() {
         .args(["plot", a])
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     let svg = dir.path().join("a-estimates-gpu_ns-hole.svg");
     let text = std::fs::read_to_string(&svg).expect("an estimates chart");
     assert!(
