@@ -2,7 +2,8 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::support::{arg, assert_ok, cli, refused, torus_cull as run};
+use crate::common::RANGE_ROWS;
+use crate::support::{arg, assert_ok, cli, cli_ok, refused, temp_path, torus_cull as run};
 use std::path::Path;
 use std::process::Output;
 use torus_cull::{CullKind, Ray, Torus, intersect};
@@ -95,11 +96,10 @@ fn good_input_round_trips() {
     let output = dir.path().join("out.csv");
     std::fs::write(&input, csv).unwrap();
     // The f32 path, checked here against f32 rays; the f64 default has its own test.
-    let out = cli(
+    cli_ok(
         "eval --major 2 --minor 1 --rays {} --out {} --precision f32",
         &[arg(&input), arg(&output)],
     );
-    assert_ok(&out);
     let text = std::fs::read_to_string(&output).unwrap();
     let mut lines = text.lines();
     assert_eq!(
@@ -243,8 +243,7 @@ fn far_origins_are_never_falsely_rejected() {
 /// the rounded line, 9e-6 away.
 #[test]
 fn precision_f64_answers_for_the_ray_as_typed() {
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     std::fs::write(&input, "ox,oy,oz,dx,dy,dz\n0,0.999999,-4,0,0,1\n").unwrap();
     let exact = 4.0 - (2.0 + (1.0f64 - 0.999999f64 * 0.999999).sqrt());
     assert!((exact - 1.99858578679).abs() < 1e-11);
@@ -280,8 +279,7 @@ fn precision_f64_answers_for_the_ray_as_typed() {
 
 #[test]
 fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     // A clear hit (proved in f32), a clear miss, and the near-tangent ray of another
     // project's tests (within f32's resolution of the tube: escalated to f64).
     std::fs::write(
@@ -290,8 +288,7 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
     )
     .unwrap();
     let path = arg(&input);
-    let out = cli("eval --major 2 --minor 1 --rays {} --exact f32", &[path]);
-    assert_ok(&out);
+    let out = cli_ok("eval --major 2 --minor 1 --rays {} --exact f32", &[path]);
     let text = String::from_utf8(out.stdout).unwrap();
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(
@@ -342,25 +339,7 @@ const CPU_MODES: [&[&str]; 3] = [
 fn optional_range_and_on_surface_columns_in_every_cpu_mode() {
     let dir = tempfile::tempdir().unwrap();
     // R = 4, r = 1. Each row: the oracle's class and t_hit (empty: none).
-    let rows: [(&str, &str, Option<f32>); 9] = [
-        // From the inner equator across the hole: the far wall at t = 6 …
-        ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
-        // … beyond a light at t = 5.
-        ("3,0,0,-1,0,0,0,5,1", "miss", None),
-        // From the top of the tube into it: it leaves at the bottom, t = 2 …
-        ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
-        // … not before t = 1.5.
-        ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
-        // From the top, up: nothing.
-        ("4,1,0,0,1,0,0,inf,1", "miss", None),
-        // Literal rays with a range: the top of the tube at t = 9 …
-        ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
-        ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
-        // … from inside the tube (t_min = 9.5): the oracle's hit, the exit at t = 11.
-        ("4,10,0,0,-1,0,9.5,20,0", "hit", Some(11.0)),
-        // t_min = t_max = 9: the one point of the top.
-        ("4,10,0,0,-1,0,8,10,0", "hit", Some(9.0)),
-    ];
+    let rows = RANGE_ROWS;
     let csv = std::iter::once("ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface")
         .chain(rows.iter().map(|r| r.0))
         .collect::<Vec<_>>()
@@ -377,7 +356,7 @@ fn optional_range_and_on_surface_columns_in_every_cpu_mode() {
                 None => assert_eq!(got[3], "", "{mode:?} {row}"),
                 Some(t) => {
                     let g: f32 = got[3].parse().unwrap();
-                    assert!((g - t).abs() < 1e-4, "{mode:?} {row}: t_hit {g}");
+                    assert!((g - *t as f32).abs() < 1e-4, "{mode:?} {row}: t_hit {g}");
                 }
             }
             // Every on-surface row is proved in f32 (the certified cubic): into the tube
@@ -615,8 +594,7 @@ fn saddle_rows_are_rehit_in_every_cpu_mode() {
 fn exact_gpu_adds_a_column_per_gpu_cull() {
     use torus_cull::Named;
     use torus_cull_lab::eval::{GPU_CULLS, gpu_output_header};
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     let mut csv = String::from(
         "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n0.5,10,0,0,-1,0\n",
     );

@@ -9,12 +9,12 @@
 #![cfg(unix)]
 
 use crate::support::{
-    BIN, ROOT, arg, assert_ok, cli, refused, refused_at_once, stderr, tiny_workload, torus_cull,
-    workload,
+    BIN, ROOT, arg, cli, cli_ok, refused, refused_at_once, stderr, temp_path, tiny_workload,
+    torus_cull, workload,
 };
 use std::io::Write;
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 /// `eval --major 2 --minor 1 --rays -` on `csv`, killed after `limit`: its output, or
@@ -95,11 +95,10 @@ fn the_oracle_answers_far_origins_at_once() {
 fn a_cull_named_twice_is_counted_once() {
     let (dir, w) = tiny_workload();
     let out = dir.path().join("r.json");
-    let o = cli(
+    cli_ok(
         "run --workload {} --culls skala,skala,sphere --no-plots --out {}",
         &[arg(&w), arg(&out)],
     );
-    assert_ok(&o);
     let r = torus_cull_lab::results::Results::load(&out).unwrap();
     // Two cases × two ν, one record per cull.
     assert_eq!(r.rejection.iter().filter(|x| x.cull == "skala").count(), 4);
@@ -141,11 +140,10 @@ fn a_plot_path_blocked_by_a_directory_is_refused_before_the_work() {
 
     // Without plots nothing is in the way.
     let out = dir.path().join("r.json");
-    let o = cli(
+    cli_ok(
         "run --workload {} --no-plots --out {}",
         &[arg(&w), arg(&out)],
     );
-    assert_ok(&o);
     assert!(out.exists());
 }
 
@@ -156,8 +154,7 @@ fn intervals_refuses_the_same_run_twice() {
     let run = Path::new(ROOT).join("results/07ba7a3-quick-time-honest-run1.json");
     let run = arg(&run);
     let other = Path::new(ROOT).join("results/07ba7a3-quick-time-honest-run2.json");
-    let dir = tempfile::tempdir().unwrap();
-    let copy = dir.path().join("copy.json");
+    let (_dir, copy) = temp_path("copy.json");
     std::fs::copy(run, &copy).unwrap();
     for (a, b) in [(run, run), (run, arg(&copy))] {
         let start = Instant::now();
@@ -169,8 +166,7 @@ fn intervals_refuses_the_same_run_twice() {
 /// Issue 36 C4: `f32-check --rounds` had no upper bound.
 #[test]
 fn f32_check_rounds_has_an_upper_bound() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("f.json");
+    let (_dir, out) = temp_path("f.json");
     for rounds in ["1001", "4000000000"] {
         let start = Instant::now();
         let o = torus_cull(&["f32-check", "--rounds", rounds, "--out", arg(&out)]);
@@ -202,8 +198,7 @@ fn errors_write_numbers_compactly_and_name_the_line_that_is_not_utf8() {
         assert!(err.contains("e300") || err.contains("e200"), "{row}: {err}");
     }
 
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (_dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, b"ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n-5,\xff,0,1,0,0\n").unwrap();
     let rays = arg(&rays);
     let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", rays]);
@@ -233,6 +228,18 @@ fn an_unwritable_out_folder_is_named() {
     assert!(!stderr(&o).contains(".torus-cull-"), "{}", stderr(&o));
 }
 
+#[cfg(target_os = "linux")]
+/// Starts `run --workload w --no-plots` in `cwd`, where its default file goes to `results/`.
+fn start_run(w: &Path, cwd: &Path) -> Child {
+    Command::new(BIN)
+        .args(["run", "--workload", arg(w), "--no-plots"])
+        .current_dir(cwd)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
 /// Issue 36 C8: Ctrl-C of `run` in a folder without `results/` left an empty `results/`
 /// behind (made for the default file before the sweep). The interrupted run removes the
 /// folder it made.
@@ -243,13 +250,7 @@ fn an_interrupted_run_leaves_no_results_folder_it_made() {
     let w = workload(dir.path(), "long", 200_000);
     let cwd = dir.path().join("cwd");
     std::fs::create_dir(&cwd).unwrap();
-    let mut child = Command::new(BIN)
-        .args(["run", "--workload", arg(&w), "--no-plots"])
-        .current_dir(&cwd)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = start_run(&w, &cwd);
     let results = cwd.join("results");
     let start = Instant::now();
     while !results.exists() {
@@ -270,13 +271,7 @@ fn an_interrupted_run_leaves_no_results_folder_it_made() {
 
     // A results/ that was there before is kept.
     std::fs::create_dir(&results).unwrap();
-    let mut child = Command::new(BIN)
-        .args(["run", "--workload", arg(&w), "--no-plots"])
-        .current_dir(&cwd)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = start_run(&w, &cwd);
     std::thread::sleep(Duration::from_millis(500));
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])

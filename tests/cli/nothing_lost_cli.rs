@@ -9,8 +9,8 @@
 #![cfg(unix)]
 
 use crate::support::{
-    BIN, ROOT, arg, assert_ok, cli, refused, refused_at_once, stderr, tiny_workload, torus_cull,
-    torus_cull_in, words, workload,
+    BIN, ROOT, arg, assert_ok, cli, cli_ok, refused, refused_at_once, stderr, temp_path,
+    tiny_workload, torus_cull, torus_cull_in, words, workload,
 };
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
@@ -53,8 +53,7 @@ fn a_missing_parent_directory_is_an_error_not_created() {
 
 #[test]
 fn an_output_that_is_an_input_is_refused_and_the_input_kept() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("a.csv");
+    let (dir, rays) = temp_path("a.csv");
     let csv = "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n";
     std::fs::write(&rays, csv).unwrap();
     // The same path, a symlink to it and a hard link to it are all the same file.
@@ -105,8 +104,7 @@ fn a_workload_name_that_escapes_results_is_refused_at_load() {
 
 #[test]
 fn time_names_its_default_file_after_the_workload() {
-    let dir = tempfile::tempdir().unwrap();
-    let cwd = dir.path().join("cwd");
+    let (dir, cwd) = temp_path("cwd");
     std::fs::create_dir(&cwd).unwrap();
     for name in ["tiny", "small"] {
         let workload = workload(dir.path(), name, 200);
@@ -193,8 +191,7 @@ fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
 #[test]
 fn nu_beyond_the_tested_range_is_a_one_line_error() {
     // The reproducer: R = 1, r = 3e-9 (nu = 3.3e8) once answered a hit for a miss.
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,4.5e-9,0,1,0,0\n").unwrap();
     let o = cli("eval --major 1 --minor 3e-9 --rays {}", &[arg(&rays)]);
     let err = refused(&o);
@@ -216,8 +213,7 @@ fn nu_beyond_the_tested_range_is_a_one_line_error() {
 
 #[test]
 fn a_workload_its_generators_cannot_fill_is_refused_at_load() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = dir.path().join("thin.json");
+    let (dir, workload) = temp_path("thin.json");
     std::fs::write(
         &workload,
         r#"{ "name": "thin", "seed": 1, "cases": ["hole"], "nu": [1.0000001],
@@ -238,8 +234,7 @@ fn a_workload_its_generators_cannot_fill_is_refused_at_load() {
 
 #[test]
 fn eval_messages_name_the_value_typed_and_the_option() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
     let rays = arg(&rays);
     for (major, minor, needles) in [
@@ -330,11 +325,10 @@ fn help_texts_state_the_real_defaults() {
 fn progress_meta_and_plots_of_time_files() {
     let (dir, workload) = tiny_workload();
     let run_json = dir.path().join("r.json");
-    let o = cli(
+    let o = cli_ok(
         "run --workload {} --threads 2 --no-plots --out {}",
         &[arg(&workload), arg(&run_json)],
     );
-    assert_ok(&o);
     assert!(
         stderr(&o).contains("run tiny") && stderr(&o).contains("800/800 rays (100%)"),
         "{}",
@@ -351,11 +345,10 @@ fn progress_meta_and_plots_of_time_files() {
     );
 
     let time_json = dir.path().join("t.json");
-    let o = cli(
+    let o = cli_ok(
         "time --workload {} --seconds 0.5 --out {}",
         &[arg(&workload), arg(&time_json)],
     );
-    assert_ok(&o);
     assert!(
         stderr(&o).contains("time tiny") && stderr(&o).contains("(100%)"),
         "{}",
@@ -409,8 +402,7 @@ fn progress_meta_and_plots_of_time_files() {
 /// values are written in scientific notation, not as 300 digits.
 #[test]
 fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
     let rays = arg(&rays);
     for bad in ["NaN", "inf", "-inf"] {
@@ -495,11 +487,10 @@ fn zero_threads_is_refused_with_the_range() {
 #[test]
 fn time_says_why_a_cull_has_no_batch_table() {
     let (dir, workload) = tiny_workload();
-    let o = cli(
+    let o = cli_ok(
         "time --workload {} --mode both --culls discriminant_f64 --seconds 0.3 --no-plots --out {}",
         &[arg(&workload), arg(&dir.path().join("t.json"))],
     );
-    assert_ok(&o);
     assert!(
         stderr(&o).contains(
             "discriminant_f64 has no batch form and is timed one ray at a time only, so no \

@@ -6,7 +6,9 @@
 // Every check here runs against the harness's oracle or CLI.
 #![cfg(unix)]
 
-use crate::support::{BIN, arg, assert_ok, cli, eval_to, refused, torus_cull, words};
+use crate::support::{
+    BIN, arg, assert_ok, cli, eval_to, refused, svgs, temp_path, torus_cull, words,
+};
 use std::io::{Read, Write};
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::path::{Path, PathBuf};
@@ -195,8 +197,7 @@ fn wait_for_temp(dir: &Path) {
 #[test]
 fn an_interrupted_eval_leaves_no_temp_file() {
     for signal in ["TERM", "INT", "HUP"] {
-        let dir = tempfile::tempdir().unwrap();
-        let out = dir.path().join("out.csv");
+        let (dir, out) = temp_path("out.csv");
         let mut child = Command::new(BIN)
             .args([
                 "eval", "--major", "2", "--minor", "1", "--rays", "-", "--out",
@@ -244,8 +245,7 @@ fn an_interrupted_eval_leaves_no_temp_file() {
 
 #[test]
 fn a_byte_order_mark_before_the_header_is_accepted() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("bom.csv");
+    let (_dir, rays) = temp_path("bom.csv");
     std::fs::write(&rays, format!("\u{feff}{HEADER}-5,0,0,2,0,0\n")).unwrap();
     let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", arg(&rays)]);
     assert_ok(&o);
@@ -282,8 +282,7 @@ fn a_closed_pipe_ends_eval_quietly() {
 
 #[test]
 fn run_refuses_an_unwritable_out_before_the_sweep() {
-    let dir = tempfile::tempdir().unwrap();
-    let not_a_dir = dir.path().join("file");
+    let (_dir, not_a_dir) = temp_path("file");
     std::fs::write(&not_a_dir, "").unwrap();
     let out = not_a_dir.join("results.json");
     let start = Instant::now();
@@ -380,20 +379,10 @@ fn render_refuses_a_name_that_is_not_png() {
 /// value, not "3.145-3", and the f64 time sits on the f32 path's row.
 #[test]
 fn f32_check_files_are_plotted_and_compared() {
-    let dir = tempfile::tempdir().unwrap();
-    let json = dir.path().join("f.json");
+    let (dir, json) = temp_path("f.json");
     let o = cli("f32-check --rays 1 --rounds 1 --out {}", &[arg(&json)]);
     let table = String::from_utf8_lossy(&o.stdout).into_owned();
     assert_ok(&o);
-    let svgs = |d: &Path| -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(d)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .filter(|n| n.ends_with(".svg"))
-            .collect();
-        v.sort();
-        v
-    };
     assert_eq!(
         svgs(dir.path()),
         [
@@ -422,11 +411,6 @@ fn f32_check_files_are_plotted_and_compared() {
     assert_eq!(svgs(&again), svgs(dir.path()));
     let o = torus_cull(&["compare", arg(&json), arg(&json)]);
     let out = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{out}{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    assert_ok(&o);
     assert!(out.contains("0 regressions"), "{out}");
 }

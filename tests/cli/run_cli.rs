@@ -3,16 +3,14 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::support::{arg, assert_ok, cli, refused, torus_cull as run};
+use crate::support::{arg, assert_ok, cli, cli_ok, refused, temp_path, torus_cull as run};
 use std::process::Command;
 use torus_cull_lab::results::Results;
 
 #[test]
 fn quick_workload_writes_results_and_plots() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("quick.json");
-    let o = cli("run --workload workloads/quick.json --out {}", &[arg(&out)]);
-    assert_ok(&o);
+    let (dir, out) = temp_path("quick.json");
+    let o = cli_ok("run --workload workloads/quick.json --out {}", &[arg(&out)]);
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("hole: miss capture") && stdout.contains("uniform: miss capture"));
     let r = Results::load(&out).unwrap();
@@ -55,8 +53,7 @@ fn quick_workload_writes_results_and_plots() {
 
 #[test]
 fn a_broken_cull_fails_the_run_and_names_the_ray() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("broken.json");
+    let (_dir, out) = temp_path("broken.json");
     let o = cli(
         "run --workload workloads/quick.json --out {} --no-plots --culls cychosz,cychosz_printed",
         &[arg(&out)],
@@ -87,8 +84,7 @@ fn a_broken_cull_fails_the_run_and_names_the_ray() {
 
 #[test]
 fn bad_inputs_exit_2_and_say_where() {
-    let dir = tempfile::tempdir().unwrap();
-    let bad = dir.path().join("bad.json");
+    let (_dir, bad) = temp_path("bad.json");
     std::fs::write(
         &bad,
         r#"{"name":"b","seed":1,"cases":["hole"],"nu":[0.8],"rays":10}"#,
@@ -189,8 +185,7 @@ fn the_commit_is_the_builds_not_the_current_directorys() {
 /// repository's file.
 #[test]
 fn a_built_in_workload_runs_from_any_folder() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("quick.json");
+    let (dir, out) = temp_path("quick.json");
     let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
         .args(["run", "--workload", "quick", "--no-plots", "--out"])
         .arg(&out)
@@ -209,8 +204,7 @@ fn a_built_in_workload_runs_from_any_folder() {
 /// unwritable `--out` is what stops it, not a missing `workloads/default.json`.
 #[test]
 fn the_default_workload_is_built_in() {
-    let dir = tempfile::tempdir().unwrap();
-    let not_a_dir = dir.path().join("file");
+    let (dir, not_a_dir) = temp_path("file");
     std::fs::write(&not_a_dir, "").unwrap();
     let out = not_a_dir.join("results.json");
     let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))

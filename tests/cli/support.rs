@@ -54,9 +54,9 @@ pub fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
-/// Asserts that the run succeeded, showing its standard error where it did not.
+/// Asserts that the run succeeded, showing its standard output and error where it did not.
 pub fn assert_ok(o: &Output) {
-    assert!(o.status.success(), "{}", stderr(o));
+    assert!(o.status.success(), "{}{}", stdout(o), stderr(o));
 }
 
 /// Asserts that the run exited 2 (refused its input) and returns its standard error.
@@ -79,6 +79,14 @@ pub fn workload(dir: &Path, name: &str, rays: usize) -> PathBuf {
     )
     .unwrap();
     path
+}
+
+/// A new temporary folder and the path `name` in it (nothing made there yet); the folder
+/// lives as long as the caller keeps it.
+pub fn temp_path(name: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    (dir, path)
 }
 
 /// A new temporary folder holding the workload `tiny` of [`workload`] (200 rays), and the
@@ -110,6 +118,13 @@ pub fn cli(line: &str, fill: &[&str]) -> Output {
     torus_cull(&words(line, fill))
 }
 
+/// [`cli`], asserting that the run succeeded.
+pub fn cli_ok(line: &str, fill: &[&str]) -> Output {
+    let o = cli(line, fill);
+    assert_ok(&o);
+    o
+}
+
 /// The words of a command line, split as a shell would split `line`, each `{}` replaced by
 /// the next of `fill` whole (a path may hold spaces).
 pub fn words<'a>(line: &'a str, fill: &[&'a str]) -> Vec<&'a str> {
@@ -125,4 +140,44 @@ pub fn words<'a>(line: &'a str, fill: &[&'a str]) -> Vec<&'a str> {
         .collect();
     assert!(fill.next().is_none(), "too many values for {line}");
     words
+}
+
+/// `compare` of the results file `old` with itself is clean (exit 0, records compared);
+/// with `worse` (written to `dir/worse.json`), where a false reject was added and a capture
+/// lowered, it is a regression (exit 1) that names both. Returns that report.
+pub fn compare_clean_and_worse(old: &str, worse: &serde_json::Value, dir: &Path) -> String {
+    let out = torus_cull(&["compare", old, old]);
+    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
+    assert!(
+        stdout(&out).contains("records compared"),
+        "{}",
+        stdout(&out)
+    );
+    let worse_path = dir.join("worse.json");
+    std::fs::write(&worse_path, worse.to_string()).unwrap();
+    let out = torus_cull(&["compare", old, arg(&worse_path)]);
+    assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
+    let report = stdout(&out);
+    assert!(
+        report.contains("REGRESSION: false rejects 0 -> 1"),
+        "{report}"
+    );
+    assert!(report.contains("REGRESSION: lower capture"), "{report}");
+    report
+}
+
+/// The names of the SVG files in `dir`, sorted.
+pub fn svgs(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".svg"))
+        .collect();
+    names.sort();
+    names
+}
+
+/// The JSON file at `path`, parsed.
+pub fn read_json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }

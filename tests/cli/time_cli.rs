@@ -4,21 +4,28 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::support::{arg, assert_ok, cli, refused, tiny_workload, torus_cull};
-use std::path::Path;
+use crate::support::{
+    arg, assert_ok, cli, cli_ok, read_json, refused, temp_path, tiny_workload, torus_cull,
+};
+use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::process::Output;
 use std::time::{Duration, Instant};
 use torus_cull_lab::results::Results;
 
-#[test]
-fn a_short_run_writes_ratios_that_load_and_compare() {
+/// `time` of the tiny workload with `options` into `a.json` in a new folder, which must
+/// succeed: the folder (kept alive by the caller), that file and the run.
+fn time_tiny(options: &str) -> (tempfile::TempDir, PathBuf, Output) {
     let (dir, workload) = tiny_workload();
     let a = dir.path().join("a.json");
-    let o = cli(
-        "time --workload {} --seconds 1 --out {}",
-        &[arg(&workload), arg(&a)],
-    );
-    assert_ok(&o);
+    let line = format!("time --workload {{}} {options} --out {{}}");
+    let o = cli_ok(&line, &[arg(&workload), arg(&a)]);
+    (dir, a, o)
+}
+
+#[test]
+fn a_short_run_writes_ratios_that_load_and_compare() {
+    let (dir, a, o) = time_tiny("--seconds 1");
     let stdout = String::from_utf8_lossy(&o.stdout);
     for title in [
         "hole: total (cull + exact intersection) / cychosz, paired ratio [95% CI]",
@@ -105,12 +112,11 @@ fn a_short_run_writes_ratios_that_load_and_compare() {
 fn runs_2_writes_both_intervals() {
     let (dir, workload) = tiny_workload();
     let a = dir.path().join("a.json");
-    let o = cli(
+    let o = cli_ok(
         "time --workload {} --seconds 1 --culls skala,aabb --runs 2 --no-plots --out {}",
         &[arg(&workload), arg(&a)],
     );
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(o.status.success(), "{err}");
     assert!(
         err.contains("run 1 of 2") && err.contains("run 2 of 2"),
         "{err}"
@@ -311,8 +317,7 @@ fn results_without_a_ratio_section_still_load() {
     let r = Results::load(&old).unwrap();
     assert!(r.ratio.is_empty());
     assert!(!r.timing.is_empty() && !r.rejection.is_empty());
-    let dir = tempfile::tempdir().unwrap();
-    let copy = dir.path().join("copy.json");
+    let (_dir, copy) = temp_path("copy.json");
     r.save(&copy).unwrap();
     assert_eq!(Results::load(&copy).unwrap(), r);
 }
@@ -392,13 +397,7 @@ fn mode_both_adds_batch_ratios_at_the_chosen_isa() {
 /// never pairs an f32 record with an f64 one.
 #[test]
 fn mode_both_times_the_f32_wavefront_with_escalation_rates() {
-    let (dir, workload) = tiny_workload();
-    let a = dir.path().join("a.json");
-    let o = cli(
-        "time --workload {} --seconds 1 --culls none,discriminant --mode both --out {}",
-        &[arg(&workload), arg(&a)],
-    );
-    assert_ok(&o);
+    let (dir, a, o) = time_tiny("--seconds 1 --culls none,discriminant --mode both");
     let stdout = String::from_utf8_lossy(&o.stdout);
     for title in [
         "uniform: batch f32 total (certified f32 wavefront) / the same cull's f64 wavefront, \
@@ -490,8 +489,7 @@ fn mode_both_times_the_f32_wavefront_with_escalation_rates() {
 /// on the same rays, and a case without hits (the hole) is skipped with a note.
 #[test]
 fn secondary_times_spawned_bounces_in_both_paths() {
-    let dir = tempfile::tempdir().unwrap();
-    let a = dir.path().join("a.json");
+    let (_dir, a) = temp_path("a.json");
     let o = cli(
         "time --workload quick --nu 2 --seconds 1 --culls skala --mode both --secondary --no-plots --out {}",
         &[arg(&a)],
@@ -597,11 +595,10 @@ fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
         "{stderr}"
     );
     let out = dir.path().join("a.json");
-    let o = cli(
+    cli_ok(
         "time --workload {} --cases uniform --culls cychosz --seconds 0.3 --runs 1 --no-plots --out {}",
         &[arg(&workload), arg(&out)],
     );
-    assert_ok(&o);
     let r = Results::load(&out).unwrap();
     assert!(!r.ratio.is_empty());
     assert!(r.ratio.iter().all(|x| x.case == "uniform"), "{:?}", r.ratio);
@@ -645,8 +642,7 @@ fn family_and_bend_timing_write_every_shape_and_ratio() {
             "{flag}: {}",
             String::from_utf8_lossy(&o.stderr)
         );
-        let file: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+        let file = read_json(&out);
         assert_eq!(file["meta"]["tool"], format!("time-{name}"));
         let records = file["ratio"].as_array().expect("the ratio section");
         assert_eq!(records.len(), shapes * per_shape, "{flag}");
