@@ -2,11 +2,10 @@
 //! the pipe bend against the bend oracle, class by class (`torus_cull_lab::bend_check`).
 
 use super::CliResult;
-use crate::console::{out, outln};
+use crate::console::out;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
-use torus_cull_lab::output;
 
 /// The most rays per class.
 const MAX_RAYS: usize = 10_000_000;
@@ -41,13 +40,7 @@ pub struct BendArgs {
 /// Runs `bend`. Exit 1 when a cull rejected a hit of the oracle, or the exact
 /// intersection missed, invented or misplaced a hit.
 pub fn run(args: BendArgs) -> CliResult {
-    if !(1..=MAX_RAYS).contains(&args.rays) {
-        return Err(format!(
-            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
-            args.rays
-        )
-        .into());
-    }
+    super::plot::check_rays(args.rays, MAX_RAYS)?;
     if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
         return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)").into());
     }
@@ -75,12 +68,7 @@ pub fn run(args: BendArgs) -> CliResult {
         eprintln!("disagreement in {class}:\n{why}\n");
     }
     file.classes = checked.records;
-    let mut text = serde_json::to_string_pretty(&file)?;
-    text.push('\n');
-    // A regular file is replaced atomically: a temp file, then renamed.
-    output::write_file(&path, text.as_bytes())
-        .map_err(|e| format!("--out {}: {e}", path.display()))?;
-    outln!("wrote {}", path.display())?;
+    super::plot::write_check_file(&path, &file)?;
     if !args.no_plots {
         super::plot::write_charts(&path, |dir, stem| {
             torus_cull_lab::plot::bend::plot_bend(&file, dir, stem)

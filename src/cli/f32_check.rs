@@ -7,7 +7,6 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull_lab::f32_check::{self, CheckFile, families};
-use torus_cull_lab::output;
 
 /// The most rays per family.
 const MAX_RAYS: usize = 1_000_000;
@@ -49,13 +48,7 @@ pub struct F32CheckArgs {
 /// missed a hit, answered a miss with a `t` or put a `t` outside the tolerance: the
 /// peer's speckles are what it measures, not a failure.
 pub fn run(args: F32CheckArgs) -> CliResult {
-    if !(1..=MAX_RAYS).contains(&args.rays) {
-        return Err(format!(
-            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
-            args.rays
-        )
-        .into());
-    }
+    super::plot::check_rays(args.rays, MAX_RAYS)?;
     if args.rounds > MAX_ROUNDS {
         return Err(format!(
             "--rounds {} is invalid (allowed: 0 ..= {MAX_ROUNDS})",
@@ -107,11 +100,7 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         .map(|r| r.family.clone())
         .collect();
     let file = CheckFile::new(records, args.rays, args.seed, threads);
-    let mut text = serde_json::to_string_pretty(&file)?;
-    text.push('\n');
-    output::write_file(&path, text.as_bytes())
-        .map_err(|e| format!("--out {}: {e}", path.display()))?;
-    outln!("wrote {}", path.display())?;
+    super::plot::write_check_file(&path, &file)?;
     if !args.no_plots {
         let dir = path
             .parent()

@@ -2,11 +2,10 @@
 //! the oracle, member class by member class (`torus_cull_lab::family_check`).
 
 use super::CliResult;
-use crate::console::{out, outln};
+use crate::console::out;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::family_check::{self, FamilyFile};
-use torus_cull_lab::output;
 
 /// The most rays per member.
 const MAX_RAYS: usize = 1_000_000;
@@ -34,13 +33,7 @@ pub struct FamilyArgs {
 /// Runs `family`. Exit 1 when a cull rejected a hit of the oracle, or the exact
 /// intersection missed or invented a hit.
 pub fn run(args: FamilyArgs) -> CliResult {
-    if !(1..=MAX_RAYS).contains(&args.rays) {
-        return Err(format!(
-            "--rays {} is invalid (allowed: 1 ..= {MAX_RAYS})",
-            args.rays
-        )
-        .into());
-    }
+    super::plot::check_rays(args.rays, MAX_RAYS)?;
     // Before the work, not after it.
     let path = super::plot::check_file_out(args.out, "-family", args.no_plots)?;
     let members = family_check::members().len();
@@ -59,12 +52,7 @@ pub fn run(args: FamilyArgs) -> CliResult {
         .map(family_check::MemberRecord::label)
         .collect();
     let file = FamilyFile::new(records, args.rays, args.seed);
-    let mut text = serde_json::to_string_pretty(&file)?;
-    text.push('\n');
-    // A regular file is replaced atomically: a temp file, then renamed.
-    output::write_file(&path, text.as_bytes())
-        .map_err(|e| format!("--out {}: {e}", path.display()))?;
-    outln!("wrote {}", path.display())?;
+    super::plot::write_check_file(&path, &file)?;
     if !args.no_plots {
         super::plot::write_charts(&path, |dir, stem| {
             torus_cull_lab::plot::plot_family(&file, dir, stem)

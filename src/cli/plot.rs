@@ -113,6 +113,29 @@ pub(crate) fn write_plots(
     })
 }
 
+/// Writes a check command's file to `path`: `file` as pretty JSON and a newline, a regular
+/// file replaced atomically (a temp file, then renamed); then says so.
+pub(crate) fn write_check_file(
+    path: &Path,
+    file: &impl serde::Serialize,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut text = serde_json::to_string_pretty(file)?;
+    text.push('\n');
+    torus_cull_lab::output::write_file(path, text.as_bytes())
+        .map_err(|e| format!("--out {}: {e}", path.display()))?;
+    outln!("wrote {}", path.display())?;
+    Ok(())
+}
+
+/// A check command's (`f32-check`, `family`, `bend`) `--rays`: 1 ..= `max`, else the
+/// message that says so.
+pub(crate) fn check_rays(rays: usize, max: usize) -> Result<(), Box<dyn std::error::Error>> {
+    if !(1..=max).contains(&rays) {
+        return Err(format!("--rays {rays} is invalid (allowed: 1 ..= {max})").into());
+    }
+    Ok(())
+}
+
 /// Where a check command (`f32-check`, `family`, `bend`) writes its file: `--out`, or
 /// `results/<commit><suffix>.json` (its folder made); checked writable, and its charts'
 /// paths too unless `no_plots`, before any work, so a finished run is never lost to them.

@@ -463,25 +463,11 @@ pub struct Tolerance {
 impl CheckFile {
     /// A file for `families` drawn with `rays` per family from `seed`.
     pub fn new(families: Vec<FamilyRecord>, rays: usize, seed: u64, threads: usize) -> CheckFile {
-        use sha2::{Digest, Sha256};
         let mut spec = format!("f32-check v{SCHEMA_VERSION} rays {rays} seed {seed}");
         for f in &families {
             let _ = write!(spec, " {}@{:?}", f.family, f.nu);
         }
-        let sha256: String = Sha256::digest(spec.as_bytes())
-            .iter()
-            .map(|b| format!("{b:02x}"))
-            .collect();
-        let workload = crate::workload::spec::Workload {
-            name: "f32-check".into(),
-            seed,
-            cases: Vec::new(),
-            nu: Vec::new(),
-            rays,
-            pose: crate::workload::Pose::Random,
-            bvh: None,
-            sha256,
-        };
+        let workload = crate::workload::spec::Workload::drawn("f32-check", seed, rays, &spec);
         let mut meta = crate::results::Results::new(&workload, "f32-check").meta;
         meta.threads = Some(threads as u64);
         CheckFile {

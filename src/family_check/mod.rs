@@ -186,25 +186,11 @@ pub struct FamilyFile {
 impl FamilyFile {
     /// The file for `members`, drawn with `rays` per member from `seed`.
     pub fn new(members: Vec<MemberRecord>, rays: usize, seed: u64) -> FamilyFile {
-        use sha2::{Digest, Sha256};
         let mut spec = format!("family v{SCHEMA_VERSION} rays {rays} seed {seed}");
         for m in &members {
             let _ = write!(spec, " {}@{}x{}", m.kind, m.nu, m.aspect);
         }
-        let sha256: String = Sha256::digest(spec.as_bytes())
-            .iter()
-            .map(|b| format!("{b:02x}"))
-            .collect();
-        let workload = crate::workload::spec::Workload {
-            name: "family".into(),
-            seed,
-            cases: Vec::new(),
-            nu: Vec::new(),
-            rays,
-            pose: crate::workload::Pose::Random,
-            bvh: None,
-            sha256,
-        };
+        let workload = crate::workload::spec::Workload::drawn("family", seed, rays, &spec);
         let meta = crate::results::Results::new(&workload, "family").meta;
         FamilyFile {
             schema_version: SCHEMA_VERSION,

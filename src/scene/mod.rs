@@ -33,6 +33,22 @@ pub struct TraceStats {
     pub quartic_solves: u64,
 }
 
+impl TraceStats {
+    /// A leaf visit of `ray` at `torus`: whether `cull` keeps it, counted as a cull reject
+    /// where it does not and as a quartic solve (the caller's next step) where it does.
+    #[inline]
+    fn kept_by<C: Cull>(&mut self, cull: &C, torus: &Torus, ray: &Ray) -> bool {
+        self.leaf_visits += 1;
+        let line = torus.line_to_local(ray);
+        if !cull.keeps(torus.bounds(), line.origin, line.dir) {
+            self.cull_rejects += 1;
+            return false;
+        }
+        self.quartic_solves += 1;
+        true
+    }
+}
+
 impl std::ops::AddAssign for TraceStats {
     fn add_assign(&mut self, o: TraceStats) {
         self.leaf_visits += o.leaf_visits;
@@ -209,13 +225,9 @@ impl Scene {
     #[inline]
     pub fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
         self.trace_with(ray, |torus, ray, t_max| {
-            stats.leaf_visits += 1;
-            let line = torus.line_to_local(ray);
-            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
-                stats.cull_rejects += 1;
+            if !stats.kept_by(cull, torus, ray) {
                 return f32::INFINITY;
             }
-            stats.quartic_solves += 1;
             intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
         })
     }
@@ -232,18 +244,10 @@ impl Scene {
         let literal = spawned.literal();
         traverse::closest(&self.bvh, &spawned.ray, |prim, t_max| {
             let torus = &self.tori[prim];
-            let ray = if prim == spawned.from as usize {
-                &spawned.ray
-            } else {
-                &literal
-            };
-            stats.leaf_visits += 1;
-            let line = torus.line_to_local(ray);
-            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
-                stats.cull_rejects += 1;
+            let ray = spawned.seen_by(prim, &literal);
+            if !stats.kept_by(cull, torus, ray) {
                 return f32::INFINITY;
             }
-            stats.quartic_solves += 1;
             intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
         })
     }
@@ -260,19 +264,8 @@ impl Scene {
         let literal = spawned.literal();
         traverse::any(&self.bvh, &spawned.ray, |prim| {
             let torus = &self.tori[prim];
-            let ray = if prim == spawned.from as usize {
-                &spawned.ray
-            } else {
-                &literal
-            };
-            stats.leaf_visits += 1;
-            let line = torus.line_to_local(ray);
-            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
-                stats.cull_rejects += 1;
-                return false;
-            }
-            stats.quartic_solves += 1;
-            torus_cull::occluded(torus, ray)
+            let ray = spawned.seen_by(prim, &literal);
+            stats.kept_by(cull, torus, ray) && torus_cull::occluded(torus, ray)
         })
     }
 
@@ -295,14 +288,7 @@ impl Scene {
     #[inline]
     pub fn occluded<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> bool {
         self.occluded_with(ray, |torus, ray| {
-            stats.leaf_visits += 1;
-            let line = torus.line_to_local(ray);
-            if !cull.keeps(torus.bounds(), line.origin, line.dir) {
-                stats.cull_rejects += 1;
-                return false;
-            }
-            stats.quartic_solves += 1;
-            torus_cull::occluded(torus, ray)
+            stats.kept_by(cull, torus, ray) && torus_cull::occluded(torus, ray)
         })
     }
 

@@ -37,6 +37,17 @@ impl Spawned {
         Ray::with_range(r.origin(), r.dir(), r.t_min(), r.t_max())
             .expect("a valid ray's parts make a valid ray")
     }
+
+    /// The ray torus `prim` sees: the surface ray for its own torus, `literal` (its
+    /// [`Spawned::literal`]) for every other.
+    #[inline]
+    pub fn seen_by<'a>(&'a self, prim: usize, literal: &'a Ray) -> &'a Ray {
+        if prim == self.from as usize {
+            &self.ray
+        } else {
+            literal
+        }
+    }
 }
 
 /// The scene's point light: beside the camera, half the scene's radius above its eye.

@@ -132,6 +132,22 @@ impl fmt::Display for WorkloadError {
 impl std::error::Error for WorkloadError {}
 
 impl Workload {
+    /// The workload of a check that draws its own rays (`f32-check`, `family`): no cases
+    /// and no ν of its own, `rays` per family from `seed`, random poses, identified by the
+    /// SHA-256 of `spec` (what it draws, in words) where a file's would be.
+    pub fn drawn(name: &str, seed: u64, rays: usize, spec: &str) -> Workload {
+        Workload {
+            name: name.into(),
+            seed,
+            cases: Vec::new(),
+            nu: Vec::new(),
+            rays,
+            pose: Pose::Random,
+            bvh: None,
+            sha256: hex(&Sha256::digest(spec.as_bytes())),
+        }
+    }
+
     /// `--workload ARG`: the built-in workload `arg` names ([`BUILT_IN`]), or else the
     /// workload file at `arg`.
     pub fn open(arg: &Path) -> Result<Workload, WorkloadError> {

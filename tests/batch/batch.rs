@@ -21,7 +21,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::common::{NUS, family, pushed_back};
+use crate::common::{NUS, family, on_two_threads, pushed_back};
 use glam::{DMat3, DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -173,10 +173,7 @@ impl Tally {
 
 /// Every dispatch level this CPU has; at least the scalar fallback.
 fn levels() -> Vec<Dispatch> {
-    let levels: Vec<Dispatch> = Isa::available()
-        .into_iter()
-        .map(|isa| Dispatch::forced(isa).unwrap())
-        .collect();
+    let levels = crate::dispatch_levels();
     println!(
         "dispatch levels tested: {:?}",
         levels.iter().map(|d| d.isa().name()).collect::<Vec<_>>()
@@ -339,24 +336,7 @@ fn batch_verdicts_equal_scalar_verdicts_at_every_dispatch_level() {
     let levels = levels();
     assert!(levels.iter().any(|d| d.isa() == Isa::Scalar));
     let nus = all_nus();
-    let tallies: Vec<(f64, Tally)> = std::thread::scope(|s| {
-        let handles: Vec<_> = nus
-            .chunks(nus.len().div_ceil(2))
-            .map(|chunk| {
-                let levels = &levels;
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|&nu| (nu, tally_for(nu, levels)))
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let tallies = on_two_threads(&nus, |&nu| (nu, tally_for(nu, &levels)));
     let mut total = Tally::default();
     for (nu, t) in tallies {
         assert!(t.hits > 5_000, "nu={nu}: only {} hits", t.hits);
@@ -379,10 +359,7 @@ fn any_length_and_the_padding_never_shows() {
         torus_cull_lab::workload::Pose::Canonical,
     )
     .unwrap();
-    for dispatch in Isa::available()
-        .into_iter()
-        .map(|i| Dispatch::forced(i).unwrap())
-    {
+    for dispatch in crate::dispatch_levels() {
         for n in [0, 1, 15, 16, 17, 63, 64, 65, 127, 300] {
             let lines = Lines::from_rays(&torus, &batch.rays[..n]);
             let mut keep = KeepMask::new();

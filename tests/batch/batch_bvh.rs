@@ -7,7 +7,7 @@
 
 use glam::Vec3;
 use torus_cull::Named;
-use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Isa};
+use torus_cull::batch::{BATCHED, BatchCull};
 use torus_cull::{NoCull, Ray};
 use torus_cull_lab::scene::{LeafBatchStats, trace_leaves_batched};
 use torus_cull_lab::scene::{Scene, SceneHit, SceneKind, TraceStats};
@@ -39,10 +39,7 @@ fn axis_rays(scene: &Scene) -> Vec<Ray> {
 
 #[test]
 fn batched_bvh_matches_brute_force_for_every_batched_cull() {
-    let levels: Vec<Dispatch> = Isa::available()
-        .into_iter()
-        .map(|i| Dispatch::forced(i).unwrap())
-        .collect();
+    let levels = crate::dispatch_levels();
     for &kind in SceneKind::ALL {
         for nu in [1.5, 4.0] {
             let scene = Scene::build(kind, nu, 60, 3).unwrap();

@@ -14,7 +14,7 @@
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::Named;
-use torus_cull::batch::{Dispatch, Isa, Quartics, nearest_roots};
+use torus_cull::batch::{Quartics, nearest_roots};
 use torus_cull::quartic::nearest_root_depressed;
 use torus_cull_lab::solver_suite::{NearestScore, SolverCase, family_cases};
 use torus_cull_lab::workload::Pose;
@@ -50,16 +50,9 @@ fn same(a: Option<f64>, b: Option<f64>) -> bool {
     }
 }
 
-fn levels() -> Vec<Dispatch> {
-    Isa::available()
-        .into_iter()
-        .map(|i| Dispatch::forced(i).unwrap())
-        .collect()
-}
-
 #[test]
 fn batch_solver_misses_nothing_and_invents_nothing_on_the_solver_families() {
-    let levels = levels();
+    let levels = crate::dispatch_levels();
     for name in ["uniform", "hole_edge", "tangent", "tangent_limit"] {
         let cases = family(name);
         let mut quartics = Quartics::new();
@@ -160,7 +153,7 @@ fn batch_solver_agrees_with_the_scalar_solver_on_random_quartics() {
         f64::INFINITY,
     ));
     let mut roots = Vec::new();
-    for d in levels() {
+    for d in crate::dispatch_levels() {
         let stats = nearest_roots(&d, &quartics, &mut roots);
         assert_eq!(roots.len(), want.len());
         let bad: Vec<String> = roots

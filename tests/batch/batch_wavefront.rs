@@ -8,8 +8,8 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::common::{family, pushed_back};
-use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Isa, Wavefront};
+use crate::common::{family, on_two_threads, pushed_back};
+use torus_cull::batch::{BATCHED, BatchCull, Dispatch, Wavefront};
 use torus_cull::{CullKind, CullVisitor, Hit, Named, Ray, Torus, intersect_culled};
 use torus_cull_lab::oracle::{OracleClass, classify};
 use torus_cull_lab::workload::Case;
@@ -91,45 +91,21 @@ fn check(t: &mut Tally, torus: &Torus, rays: &[Ray], levels: &[Dispatch]) {
 
 #[test]
 fn wavefront_hits_are_the_scalar_hits_and_miss_no_oracle_hit() {
-    let levels: Vec<Dispatch> = Isa::available()
-        .into_iter()
-        .map(|i| Dispatch::forced(i).unwrap())
-        .collect();
+    let levels = crate::dispatch_levels();
     let nus = [1.01, 1.25, 2.0, 4.0, 16.0, 1000.0];
-    let tallies: Vec<(f64, Tally)> = std::thread::scope(|s| {
-        let handles: Vec<_> = nus
-            .chunks(nus.len().div_ceil(2))
-            .map(|chunk| {
-                let levels = &levels;
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|&nu| {
-                            let mut t = Tally::default();
-                            for &case in Case::ALL {
-                                for batch in family(case, nu, 3_000, 0xBA7E ^ nu.to_bits()) {
-                                    check(&mut t, &batch.torus, &batch.rays, levels);
-                                    if case == Case::Grazing {
-                                        let far = 250.0 * batch.torus.outer_radius();
-                                        let rays: Vec<Ray> = batch
-                                            .rays
-                                            .iter()
-                                            .map(|r| pushed_back(r, far))
-                                            .collect();
-                                        check(&mut t, &batch.torus, &rays, levels);
-                                    }
-                                }
-                            }
-                            (nu, t)
-                        })
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
+    let tallies = on_two_threads(&nus, |&nu| {
+        let mut t = Tally::default();
+        for &case in Case::ALL {
+            for batch in family(case, nu, 3_000, 0xBA7E ^ nu.to_bits()) {
+                check(&mut t, &batch.torus, &batch.rays, &levels);
+                if case == Case::Grazing {
+                    let far = 250.0 * batch.torus.outer_radius();
+                    let rays: Vec<Ray> = batch.rays.iter().map(|r| pushed_back(r, far)).collect();
+                    check(&mut t, &batch.torus, &rays, &levels);
+                }
+            }
+        }
+        (nu, t)
     });
     for (nu, t) in &tallies {
         println!(

@@ -22,6 +22,18 @@ struct Tally {
     worst: f64,
 }
 
+impl Tally {
+    /// Prints the tally of `what` with its escalation rate, and adds it to `bad` where a
+    /// hit was missed or invented or a t fell outside the tolerance.
+    fn report(&self, what: &str, bad: &mut Vec<String>) {
+        let escalated = 100.0 * self.escalated as f64 / self.rays as f64;
+        eprintln!("{what}: {self:?} esc {escalated:.3} %");
+        if self.missed + self.spurious + self.far > 0 {
+            bad.push(format!("{what}: {self:?}"));
+        }
+    }
+}
+
 fn check(tally: &mut Tally, torus: &Torus, ray: &Ray) {
     let query = Query::ray(torus, ray);
     let label = query.classify();
@@ -56,13 +68,7 @@ const NUS: [f64; 6] = [1.01, 1.2, 2.0, 4.0, 32.0, 1000.0];
 fn generators_and_families_never_miss() {
     let mut bad = Vec::new();
     for nu in NUS {
-        for case in [
-            Case::Hole,
-            Case::OuterBand,
-            Case::Grazing,
-            Case::Uniform,
-            Case::Camera,
-        ] {
+        for &case in Case::ALL {
             if nu < case.min_nu() {
                 continue;
             }
@@ -71,14 +77,7 @@ fn generators_and_families_never_miss() {
             for ray in &batch.rays {
                 check(&mut tally, &batch.torus, ray);
             }
-            eprintln!(
-                "{:>10} nu {nu:>7}: {tally:?} esc {:.3} %",
-                case.name(),
-                100.0 * tally.escalated as f64 / tally.rays as f64
-            );
-            if tally.missed + tally.spurious + tally.far > 0 {
-                bad.push(format!("{} nu {nu}: {tally:?}", case.name()));
-            }
+            tally.report(&format!("{:>10} nu {nu:>7}", case.name()), &mut bad);
         }
         for family in [
             LineFamily::HoleEdge,
@@ -91,13 +90,7 @@ fn generators_and_families_never_miss() {
             for ray in &rays {
                 check(&mut tally, &torus, ray);
             }
-            eprintln!(
-                "{family:>10?} nu {nu:>7}: {tally:?} esc {:.3} %",
-                100.0 * tally.escalated as f64 / tally.rays as f64
-            );
-            if tally.missed + tally.spurious + tally.far > 0 {
-                bad.push(format!("{family:?} nu {nu}: {tally:?}"));
-            }
+            tally.report(&format!("{family:>10?} nu {nu:>7}"), &mut bad);
         }
     }
     assert!(bad.is_empty(), "{bad:#?}");
@@ -180,13 +173,7 @@ fn scales_far_origins_and_secondary_rays_never_miss() {
                 ("secondary", &secondary),
                 ("bounce", &bounce),
             ] {
-                eprintln!(
-                    "{name:>10} R {major:e} nu {nu:>7}: {tally:?} esc {:.3} %",
-                    100.0 * tally.escalated as f64 / tally.rays as f64
-                );
-                if tally.missed + tally.spurious + tally.far > 0 {
-                    bad.push(format!("{name} R {major} nu {nu}: {tally:?}"));
-                }
+                tally.report(&format!("{name:>10} R {major:e} nu {nu:>7}"), &mut bad);
             }
         }
     }

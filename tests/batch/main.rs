@@ -13,3 +13,12 @@ mod batch_wavefront;
 mod bvh;
 mod bvh_rays;
 mod certified_f32;
+
+/// Every dispatch level this machine runs (scalar and each SIMD width it has), forced: the
+/// batch paths are checked at each, not only at the widest.
+fn dispatch_levels() -> Vec<torus_cull::batch::Dispatch> {
+    torus_cull::batch::Isa::available()
+        .into_iter()
+        .map(|isa| torus_cull::batch::Dispatch::forced(isa).unwrap())
+        .collect()
+}

@@ -1,28 +1,18 @@
 //! `torus-cull bend` at a tiny size: a clean file, its charts, `plot` redrawing them, and
 //! `compare` of two bend files.
 
-use super::support::{stderr, stdout, torus_cull};
-
-/// The SVG files in `dir`, sorted.
-fn svgs(dir: &std::path::Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".svg"))
-        .collect();
-    names.sort();
-    names
-}
+use super::support::{
+    arg, assert_ok, cli_ok, compare_clean_and_worse, read_json, refused, stderr, svgs, temp_path,
+    torus_cull,
+};
 
 #[test]
 fn bend_check_at_a_tiny_size_is_clean() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("bend.json");
-    let p = path.to_str().unwrap();
+    let (dir, path) = temp_path("bend.json");
+    let p = arg(&path);
     let out = torus_cull(&["bend", "--rays", "1400", "--out", p]);
-    assert!(out.status.success(), "{}", stderr(&out));
-    let file: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_ok(&out);
+    let file = read_json(&path);
     assert_eq!(file["meta"]["tool"], "bend");
     let classes = file["classes"].as_array().unwrap();
     assert_eq!(classes.len(), 12);
@@ -68,61 +58,35 @@ fn bend_check_at_a_tiny_size_is_clean() {
     assert!(chart.contains("cychosz+wedge"));
     let again = tempfile::tempdir().unwrap();
     let out = torus_cull(&["plot", p, "--out-dir", again.path().to_str().unwrap()]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_ok(&out);
     assert_eq!(svgs(again.path()), written);
     // `compare`: the same file is clean; a false reject added, a capture lowered or a
     // wrong face added is a regression (exit 1); files of other rays are refused (exit 2).
-    let out = torus_cull(&["compare", p, p]);
-    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
-    assert!(
-        stdout(&out).contains("records compared"),
-        "{}",
-        stdout(&out)
-    );
     let mut worse = file.clone();
     worse["classes"][4]["culls"][13]["false_rejects"] = 1.into();
     let cull = &mut worse["classes"][7]["culls"][3];
     let far = cull["far_misses"].as_u64().unwrap();
     cull["far_misses"] = (far + 1).into();
     worse["classes"][9]["exact"]["wrong_face"] = 1.into();
-    let worse_path = again.path().join("worse.json");
-    std::fs::write(&worse_path, worse.to_string()).unwrap();
-    let out = torus_cull(&["compare", p, worse_path.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
-    let report = stdout(&out);
-    assert!(
-        report.contains("REGRESSION: false rejects 0 -> 1"),
-        "{report}"
-    );
-    assert!(report.contains("REGRESSION: lower capture"), "{report}");
+    let report = compare_clean_and_worse(p, &worse, again.path());
     assert!(report.contains("wrong-value answers 0 -> 1"), "{report}");
     let other = again.path().join("other.json");
-    let o = other.to_str().unwrap();
-    let out = torus_cull(&[
-        "bend",
-        "--rays",
-        "7",
-        "--no-plots",
-        "--seed",
-        "5",
-        "--out",
-        o,
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    let o = arg(&other);
+    cli_ok("bend --rays 7 --no-plots --seed 5 --out {}", &[o]);
     assert!(
         svgs(again.path()).len() == written.len(),
         "--no-plots wrote charts"
     );
     let out = torus_cull(&["compare", p, o]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    refused(&out);
     assert!(stderr(&out).contains("workload_sha256"), "{}", stderr(&out));
     // A family file and a bend file are different records.
     let family = again.path().join("family.json");
-    let f = family.to_str().unwrap();
+    let f = arg(&family);
     let out = torus_cull(&["family", "--rays", "4", "--no-plots", "--out", f]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_ok(&out);
     let out = torus_cull(&["compare", f, p]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    refused(&out);
 }
 
 #[test]

@@ -2,30 +2,20 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::common::RANGE_ROWS;
+use crate::support::{arg, assert_ok, cli, cli_ok, refused, temp_path, torus_cull as run};
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 use torus_cull::{CullKind, Ray, Torus, intersect};
 use torus_cull_lab::oracle::{OracleClass, classify};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(args)
-        .output()
-        .expect("run torus-cull")
-}
 
 fn eval_file(dir: &Path, csv: &str, major: &str, minor: &str) -> Output {
     let input = dir.join("rays.csv");
     std::fs::write(&input, csv).unwrap();
-    run(&[
-        "eval",
-        "--major",
-        major,
-        "--minor",
-        minor,
-        "--rays",
-        input.to_str().unwrap(),
-    ])
+    cli(
+        "eval --major {} --minor {} --rays {}",
+        &[major, minor, arg(&input)],
+    )
 }
 
 #[test]
@@ -55,11 +45,7 @@ fn bad_rows_stop_with_the_line_number() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("rays.csv:1: header"));
     // r ≥ R is a horn or spindle torus (the apple), down to R/r = 0.5; fatter is refused.
     let out = eval_file(dir.path(), &format!("{header}{good}"), "1", "2");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let out = eval_file(dir.path(), &format!("{header}{good}"), "0.9", "2");
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
@@ -71,17 +57,10 @@ fn bad_rows_stop_with_the_line_number() {
     let input = dir.path().join("rays.csv");
     std::fs::write(&input, format!("{header}{good}{good}1,2\n")).unwrap();
     let out_path = dir.path().join("out.csv");
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--out",
-        out_path.to_str().unwrap(),
-    ]);
+    let out = cli(
+        "eval --major 2 --minor 1 --rays {} --out {}",
+        &[arg(&input), arg(&out_path)],
+    );
     assert!(!out.status.success());
     assert!(
         !out_path.exists(),
@@ -89,15 +68,7 @@ fn bad_rows_stop_with_the_line_number() {
         out_path.display()
     );
     // A missing file is named.
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        "/no/such.csv",
-    ]);
+    let out = cli("eval --major 2 --minor 1 --rays /no/such.csv", &[]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("/no/such.csv"));
 }
@@ -124,24 +95,10 @@ fn good_input_round_trips() {
     let input = dir.path().join("rays.csv");
     let output = dir.path().join("out.csv");
     std::fs::write(&input, csv).unwrap();
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--out",
-        output.to_str().unwrap(),
-        // The f32 path, checked here against f32 rays; the f64 default has its own test.
-        "--precision",
-        "f32",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    // The f32 path, checked here against f32 rays; the f64 default has its own test.
+    cli_ok(
+        "eval --major 2 --minor 1 --rays {} --out {} --precision f32",
+        &[arg(&input), arg(&output)],
     );
     let text = std::fs::read_to_string(&output).unwrap();
     let mut lines = text.lines();
@@ -216,11 +173,7 @@ fn no_hit_row_without_t_hit_on_hole_edge_lines() {
     }
     let dir = tempfile::tempdir().unwrap();
     let out = eval_file(dir.path(), &csv, "1", "0.8333333");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let (mut hits, mut empty) = (0, Vec::new());
     for line in text.lines().skip(1) {
@@ -268,11 +221,7 @@ fn far_origins_are_never_falsely_rejected() {
     }
     let dir = tempfile::tempdir().unwrap();
     let out = eval_file(dir.path(), &csv, &big.to_string(), &small.to_string());
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_ok(&out);
     let text = String::from_utf8(out.stdout).unwrap();
     let mut hits = 0;
     for row in text.lines().skip(1) {
@@ -294,23 +243,18 @@ fn far_origins_are_never_falsely_rejected() {
 /// the rounded line, 9e-6 away.
 #[test]
 fn precision_f64_answers_for_the_ray_as_typed() {
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     std::fs::write(&input, "ox,oy,oz,dx,dy,dz\n0,0.999999,-4,0,0,1\n").unwrap();
     let exact = 4.0 - (2.0 + (1.0f64 - 0.999999f64 * 0.999999).sqrt());
     assert!((exact - 1.99858578679).abs() < 1e-11);
     let t_hit = |precision: Option<&str>| {
         let mut args = vec!["eval", "--major", "2", "--minor", "1"];
-        args.extend(["--rays", input.to_str().unwrap()]);
+        args.extend(["--rays", arg(&input)]);
         if let Some(p) = precision {
             args.extend(["--precision", p]);
         }
         let out = run(&args);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert_ok(&out);
         let text = String::from_utf8(out.stdout).unwrap();
         let row: Vec<&str> = text.lines().nth(1).unwrap().split(',').collect();
         assert_eq!(row[1], "hit");
@@ -325,25 +269,17 @@ fn precision_f64_answers_for_the_ray_as_typed() {
     }
     let rounded = t_hit(Some("f32"));
     assert!((rounded - exact).abs() > 1e-6, "f32 t = {rounded}");
-    let bad = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        input.to_str().unwrap(),
-        "--precision",
-        "f16",
-    ]);
-    assert_eq!(bad.status.code(), Some(2));
+    let bad = cli(
+        "eval --major 2 --minor 1 --rays {} --precision f16",
+        &[arg(&input)],
+    );
+    refused(&bad);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("f64"));
 }
 
 #[test]
 fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     // A clear hit (proved in f32), a clear miss, and the near-tangent ray of another
     // project's tests (within f32's resolution of the tube: escalated to f64).
     std::fs::write(
@@ -351,15 +287,8 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
         "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n",
     )
     .unwrap();
-    let path = input.to_str().unwrap();
-    let out = run(&[
-        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "f32",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let path = arg(&input);
+    let out = cli_ok("eval --major 2 --minor 1 --rays {} --exact f32", &[path]);
     let text = String::from_utf8(out.stdout).unwrap();
     let rows: Vec<Vec<&str>> = text.lines().map(|l| l.split(',').collect()).collect();
     assert_eq!(
@@ -374,20 +303,11 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
     );
     assert_eq!((rows[3][1], rows[3][4]), ("hit", "1"));
     // --exact f32 takes f32 rays: an explicit --precision f64 is refused.
-    let out = run(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        path,
-        "--exact",
-        "f32",
-        "--precision",
-        "f64",
-    ]);
-    assert_eq!(out.status.code(), Some(2));
+    let out = cli(
+        "eval --major 2 --minor 1 --rays {} --exact f32 --precision f64",
+        &[path],
+    );
+    refused(&out);
     assert!(String::from_utf8_lossy(&out.stderr).contains("--exact f32 takes f32 rays"));
 }
 
@@ -395,7 +315,7 @@ fn exact_f32_adds_the_escalated_column_and_agrees_with_the_oracle() {
 fn eval_rows(dir: &Path, csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
     let input = dir.join("rays.csv");
     std::fs::write(&input, csv).unwrap();
-    let mut all = vec!["eval", "--rays", input.to_str().unwrap()];
+    let mut all = vec!["eval", "--rays", arg(&input)];
     all.extend_from_slice(args);
     let out = run(&all);
     if !out.status.success() {
@@ -419,25 +339,7 @@ const CPU_MODES: [&[&str]; 3] = [
 fn optional_range_and_on_surface_columns_in_every_cpu_mode() {
     let dir = tempfile::tempdir().unwrap();
     // R = 4, r = 1. Each row: the oracle's class and t_hit (empty: none).
-    let rows: [(&str, &str, Option<f32>); 9] = [
-        // From the inner equator across the hole: the far wall at t = 6 …
-        ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
-        // … beyond a light at t = 5.
-        ("3,0,0,-1,0,0,0,5,1", "miss", None),
-        // From the top of the tube into it: it leaves at the bottom, t = 2 …
-        ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
-        // … not before t = 1.5.
-        ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
-        // From the top, up: nothing.
-        ("4,1,0,0,1,0,0,inf,1", "miss", None),
-        // Literal rays with a range: the top of the tube at t = 9 …
-        ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
-        ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
-        // … from inside the tube (t_min = 9.5): the oracle's hit, the exit at t = 11.
-        ("4,10,0,0,-1,0,9.5,20,0", "hit", Some(11.0)),
-        // t_min = t_max = 9: the one point of the top.
-        ("4,10,0,0,-1,0,8,10,0", "hit", Some(9.0)),
-    ];
+    let rows = RANGE_ROWS;
     let csv = std::iter::once("ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface")
         .chain(rows.iter().map(|r| r.0))
         .collect::<Vec<_>>()
@@ -454,7 +356,7 @@ fn optional_range_and_on_surface_columns_in_every_cpu_mode() {
                 None => assert_eq!(got[3], "", "{mode:?} {row}"),
                 Some(t) => {
                     let g: f32 = got[3].parse().unwrap();
-                    assert!((g - t).abs() < 1e-4, "{mode:?} {row}: t_hit {g}");
+                    assert!((g - *t as f32).abs() < 1e-4, "{mode:?} {row}: t_hit {g}");
                 }
             }
             // Every on-surface row is proved in f32 (the certified cubic): into the tube
@@ -692,8 +594,7 @@ fn saddle_rows_are_rehit_in_every_cpu_mode() {
 fn exact_gpu_adds_a_column_per_gpu_cull() {
     use torus_cull::Named;
     use torus_cull_lab::eval::{GPU_CULLS, gpu_output_header};
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     let mut csv = String::from(
         "ox,oy,oz,dx,dy,dz\n4,10,0,0,-1,0\n2,10,0,0,-1,0\n0,0.999999,-4,0,0,1\n0.5,10,0,0,-1,0\n",
     );
@@ -728,10 +629,8 @@ fn exact_gpu_adds_a_column_per_gpu_cull() {
         ));
     }
     std::fs::write(&input, csv).unwrap();
-    let path = input.to_str().unwrap();
-    let out = run(&[
-        "eval", "--major", "2", "--minor", "1", "--rays", path, "--exact", "gpu",
-    ]);
+    let path = arg(&input);
+    let out = cli("eval --major 2 --minor 1 --rays {} --exact gpu", &[path]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     if !out.status.success() && stderr.contains("no GPU adapter") {
         eprintln!("SKIPPED: no GPU adapter ({stderr})");

@@ -4,6 +4,7 @@
 //! first root, on every family; the peer (the plain f32 closed form of shaders) is
 //! counted on the same rays and shows its speckles where the families aim.
 
+use crate::support::assert_ok;
 use std::process::Command;
 use std::sync::OnceLock;
 use torus_cull_lab::f32_check::{self, CheckFile, FamilyRecord, families};
@@ -200,12 +201,7 @@ fn the_cli_writes_the_json_and_refuses_bad_outputs() {
     let out = dir.join("f32.json");
     let o = run(&out);
     let stdout = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    assert_ok(&o);
     assert!(
         stdout.contains("bitangent") && stdout.contains("peer"),
         "{stdout}"

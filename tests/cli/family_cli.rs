@@ -1,15 +1,17 @@
 //! The torus family on the command line: `eval --axial` and horn/spindle tori, the
 //! circular ring torus's rows unchanged, and `torus-cull family` at a tiny size.
 
-use super::support::{stderr, stdout, torus_cull};
+use super::support::{
+    arg, assert_ok, cli_ok, compare_clean_and_worse, read_json, refused, stderr, svgs, temp_path,
+    torus_cull,
+};
 use std::path::Path;
 
 /// `eval` rows of `csv` (written to a temp file) as columns, or the error text.
 fn eval_rows(csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
-    let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("rays.csv");
+    let (_dir, input) = temp_path("rays.csv");
     std::fs::write(&input, csv).unwrap();
-    let mut all = vec!["eval", "--rays", input.to_str().unwrap()];
+    let mut all = vec!["eval", "--rays", arg(&input)];
     all.extend_from_slice(args);
     let out = torus_cull(&all);
     if !out.status.success() {
@@ -128,7 +130,7 @@ fn circular_ring_rows_are_unchanged() {
         for axial in [&[][..], &["--axial", "1"]] {
             let mut args = vec!["eval", "--major", "3", "--minor", "1"];
             args.extend_from_slice(axial);
-            args.extend_from_slice(&["--rays", input.to_str().unwrap()]);
+            args.extend_from_slice(&["--rays", arg(&input)]);
             args.extend_from_slice(mode);
             let out = torus_cull(&args);
             assert!(out.status.success(), "{args:?}: {}", stderr(&out));
@@ -142,12 +144,10 @@ fn circular_ring_rows_are_unchanged() {
 
 #[test]
 fn family_check_at_a_tiny_size_is_clean() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("family.json");
-    let out = torus_cull(&["family", "--rays", "48", "--out", path.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", stderr(&out));
-    let file: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let (dir, path) = temp_path("family.json");
+    let out = torus_cull(&["family", "--rays", "48", "--out", arg(&path)]);
+    assert_ok(&out);
+    let file = read_json(&path);
     assert_eq!(file["meta"]["tool"], "family");
     let members = file["members"].as_array().unwrap();
     assert_eq!(members.len(), 24);
@@ -175,15 +175,6 @@ fn family_check_at_a_tiny_size_is_clean() {
     }
     // Its charts, next to it: capture and rejection rate per aspect b/a (five aspects);
     // `plot` draws the same from the file, and `--no-plots` writes none.
-    let svgs = |dir: &std::path::Path| -> Vec<String> {
-        let mut names: Vec<String> = std::fs::read_dir(dir)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .filter(|n| n.ends_with(".svg"))
-            .collect();
-        names.sort();
-        names
-    };
     let written = svgs(dir.path());
     assert_eq!(written.len(), 10, "{written:?}");
     assert!(
@@ -191,64 +182,31 @@ fn family_check_at_a_tiny_size_is_clean() {
         "{written:?}"
     );
     let again = tempfile::tempdir().unwrap();
-    let out = torus_cull(&[
-        "plot",
-        path.to_str().unwrap(),
-        "--out-dir",
-        again.path().to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    cli_ok(
+        "plot {} --out-dir {}",
+        &[arg(&path), again.path().to_str().unwrap()],
+    );
     assert_eq!(svgs(again.path()), written);
     // `compare` reads two family files: the same file is clean; a false reject added, or a
     // capture lowered, is a regression (exit 1); files of other rays are refused (exit 2).
-    let p = path.to_str().unwrap();
-    let out = torus_cull(&["compare", p, p]);
-    assert_eq!(out.status.code(), Some(0), "{}", stdout(&out));
-    assert!(
-        stdout(&out).contains("records compared"),
-        "{}",
-        stdout(&out)
-    );
+    let p = arg(&path);
     let mut worse: serde_json::Value = file.clone();
     worse["members"][3]["culls"][5]["false_rejects"] = 1.into();
     let cull = &mut worse["members"][7]["culls"][8];
     let far = cull["far_misses"].as_u64().unwrap();
     cull["far_misses"] = (far + 1).into();
-    let worse_path = again.path().join("worse.json");
-    std::fs::write(&worse_path, worse.to_string()).unwrap();
-    let out = torus_cull(&["compare", p, worse_path.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(1), "{}", stdout(&out));
-    let report = stdout(&out);
-    assert!(
-        report.contains("REGRESSION: false rejects 0 -> 1"),
-        "{report}"
-    );
-    assert!(report.contains("REGRESSION: lower capture"), "{report}");
+    compare_clean_and_worse(p, &worse, again.path());
     let other = again.path().join("other.json");
-    let out = torus_cull(&[
-        "family",
-        "--rays",
-        "8",
-        "--no-plots",
-        "--seed",
-        "5",
-        "--out",
-        other.to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
-    let out = torus_cull(&["compare", p, other.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    cli_ok(
+        "family --rays 8 --no-plots --seed 5 --out {}",
+        &[arg(&other)],
+    );
+    let out = torus_cull(&["compare", p, arg(&other)]);
+    refused(&out);
     assert!(stderr(&out).contains("workload_sha256"), "{}", stderr(&out));
     let bare = tempfile::tempdir().unwrap();
     let quiet = bare.path().join("family.json");
-    let out = torus_cull(&[
-        "family",
-        "--rays",
-        "8",
-        "--no-plots",
-        "--out",
-        quiet.to_str().unwrap(),
-    ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    let out = torus_cull(&["family", "--rays", "8", "--no-plots", "--out", arg(&quiet)]);
+    assert_ok(&out);
     assert!(svgs(bare.path()).is_empty());
 }

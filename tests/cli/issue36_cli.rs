@@ -8,44 +8,14 @@
 // Every check here runs against the harness's CLI.
 #![cfg(unix)]
 
-use crate::support::{BIN, ROOT, stderr, torus_cull};
+use crate::support::{
+    BIN, ROOT, arg, cli, cli_ok, refused, refused_at_once, stderr, temp_path, tiny_workload,
+    torus_cull, workload,
+};
 use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::path::Path;
+use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
-
-/// Two cases at two ν, `rays` rays each.
-fn workload(dir: &Path, name: &str, rays: usize) -> PathBuf {
-    let path = dir.join(format!("{name}.json"));
-    std::fs::write(
-        &path,
-        format!(
-            r#"{{ "name": "{name}", "seed": 3, "cases": ["hole", "uniform"], "nu": [2, 8],
-                 "rays": {rays}, "pose": "random" }}"#
-        ),
-    )
-    .unwrap();
-    path
-}
-
-/// Exit 2, one line on stderr naming every needle, nothing on stdout, and fast.
-fn refused_at_once(o: &Output, started: Instant, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    for needle in needles {
-        assert!(err.contains(needle), "no '{needle}' in: {err}");
-    }
-    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    assert!(
-        o.stdout.is_empty(),
-        "the work ran: {}",
-        String::from_utf8_lossy(&o.stdout)
-    );
-    assert!(
-        started.elapsed() < Duration::from_secs(10),
-        "it worked first"
-    );
-}
 
 /// `eval --major 2 --minor 1 --rays -` on `csv`, killed after `limit`: its output, or
 /// `None` if it was still running.
@@ -111,8 +81,7 @@ fn the_oracle_answers_far_origins_at_once() {
     // Beyond what f64 can hold once combined: refused, naming the input and the line.
     let csv = "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n1.7e308,1.7e308,0,-1,-1,0\n";
     let out = eval_with_timeout(csv, Duration::from_secs(20)).expect("eval returns");
-    let err = stderr(&out);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let err = refused(&out);
     assert!(
         err.contains("-:3:") && err.contains("the oracle cannot answer this line"),
         "{err}"
@@ -124,25 +93,17 @@ fn the_oracle_answers_far_origins_at_once() {
 /// the file. A cull named twice is counted once.
 #[test]
 fn a_cull_named_twice_is_counted_once() {
-    let dir = tempfile::tempdir().unwrap();
-    let w = workload(dir.path(), "tiny", 200);
+    let (dir, w) = tiny_workload();
     let out = dir.path().join("r.json");
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        w.to_str().unwrap(),
-        "--culls",
-        "skala,skala,sphere",
-        "--no-plots",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    cli_ok(
+        "run --workload {} --culls skala,skala,sphere --no-plots --out {}",
+        &[arg(&w), arg(&out)],
+    );
     let r = torus_cull_lab::results::Results::load(&out).unwrap();
     // Two cases × two ν, one record per cull.
     assert_eq!(r.rejection.iter().filter(|x| x.cull == "skala").count(), 4);
     assert_eq!(r.rejection.len(), 8);
-    let o = torus_cull(&["compare", out.to_str().unwrap(), out.to_str().unwrap()]);
+    let o = torus_cull(&["compare", arg(&out), arg(&out)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 }
 
@@ -151,61 +112,38 @@ fn a_cull_named_twice_is_counted_once() {
 /// `f32-check` now refuse at once, naming the path; `--no-plots` goes ahead.
 #[test]
 fn a_plot_path_blocked_by_a_directory_is_refused_before_the_work() {
-    let dir = tempfile::tempdir().unwrap();
-    let w = workload(dir.path(), "tiny", 200);
+    let (dir, w) = tiny_workload();
     let blocked = dir.path().join("r-hole-miss_capture.svg");
     std::fs::create_dir(&blocked).unwrap();
     let out = dir.path().join("r.json");
     let start = Instant::now();
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        w.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    refused_at_once(&o, start, &[blocked.to_str().unwrap(), "--no-plots"]);
+    let o = torus_cull(&["run", "--workload", arg(&w), "--out", arg(&out)]);
+    refused_at_once(&o, start, &[arg(&blocked), "--no-plots"]);
     assert!(!out.exists(), "the run was made first");
 
     std::fs::create_dir(dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg")).unwrap();
     let out = dir.path().join("t.json");
     let start = Instant::now();
-    let o = torus_cull(&[
-        "time",
-        "--workload",
-        w.to_str().unwrap(),
-        "--seconds",
-        "5",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = cli(
+        "time --workload {} --seconds 5 --out {}",
+        &[arg(&w), arg(&out)],
+    );
     refused_at_once(&o, start, &["t-ratio-hole-total_ns-vs-cychosz.svg"]);
     assert!(!out.exists());
 
     std::fs::create_dir(dir.path().join("f-escalation.svg")).unwrap();
     let out = dir.path().join("f.json");
     let start = Instant::now();
-    let o = torus_cull(&[
-        "f32-check",
-        "--rays",
-        "100000",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let o = torus_cull(&["f32-check", "--rays", "100000", "--out", arg(&out)]);
     refused_at_once(&o, start, &["f-escalation.svg"]);
     assert!(!out.exists());
 
     // Without plots nothing is in the way.
     let out = dir.path().join("r.json");
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        w.to_str().unwrap(),
-        "--no-plots",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    cli_ok(
+        "run --workload {} --no-plots --out {}",
+        &[arg(&w), arg(&out)],
+    );
     assert!(out.exists());
 }
 
@@ -214,14 +152,13 @@ fn a_plot_path_blocked_by_a_directory_is_refused_before_the_work() {
 #[test]
 fn intervals_refuses_the_same_run_twice() {
     let run = Path::new(ROOT).join("results/07ba7a3-quick-time-honest-run1.json");
-    let run = run.to_str().unwrap();
+    let run = arg(&run);
     let other = Path::new(ROOT).join("results/07ba7a3-quick-time-honest-run2.json");
-    let dir = tempfile::tempdir().unwrap();
-    let copy = dir.path().join("copy.json");
+    let (_dir, copy) = temp_path("copy.json");
     std::fs::copy(run, &copy).unwrap();
-    for (a, b) in [(run, run), (run, copy.to_str().unwrap())] {
+    for (a, b) in [(run, run), (run, arg(&copy))] {
         let start = Instant::now();
-        let o = torus_cull(&["intervals", a, other.to_str().unwrap(), b]);
+        let o = torus_cull(&["intervals", a, arg(&other), b]);
         refused_at_once(&o, start, &["the same run", a, b]);
     }
 }
@@ -229,17 +166,10 @@ fn intervals_refuses_the_same_run_twice() {
 /// Issue 36 C4: `f32-check --rounds` had no upper bound.
 #[test]
 fn f32_check_rounds_has_an_upper_bound() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("f.json");
+    let (_dir, out) = temp_path("f.json");
     for rounds in ["1001", "4000000000"] {
         let start = Instant::now();
-        let o = torus_cull(&[
-            "f32-check",
-            "--rounds",
-            rounds,
-            "--out",
-            out.to_str().unwrap(),
-        ]);
+        let o = torus_cull(&["f32-check", "--rounds", rounds, "--out", arg(&out)]);
         refused_at_once(
             &o,
             start,
@@ -268,13 +198,11 @@ fn errors_write_numbers_compactly_and_name_the_line_that_is_not_utf8() {
         assert!(err.contains("e300") || err.contains("e200"), "{row}: {err}");
     }
 
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (_dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, b"ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n-5,\xff,0,1,0,0\n").unwrap();
-    let rays = rays.to_str().unwrap();
+    let rays = arg(&rays);
     let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", rays]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = refused(&o);
     assert!(
         err.contains(&format!("{rays}:3:")) && err.contains("UTF-8"),
         "{err}"
@@ -286,16 +214,9 @@ fn errors_write_numbers_compactly_and_name_the_line_that_is_not_utf8() {
 #[test]
 #[cfg(target_os = "linux")]
 fn an_unwritable_out_folder_is_named() {
-    let dir = tempfile::tempdir().unwrap();
-    let w = workload(dir.path(), "tiny", 200);
+    let (_dir, w) = tiny_workload();
     let start = Instant::now();
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        w.to_str().unwrap(),
-        "--out",
-        "/proc/a.json",
-    ]);
+    let o = torus_cull(&["run", "--workload", arg(&w), "--out", "/proc/a.json"]);
     refused_at_once(
         &o,
         start,
@@ -305,6 +226,18 @@ fn an_unwritable_out_folder_is_named() {
         ],
     );
     assert!(!stderr(&o).contains(".torus-cull-"), "{}", stderr(&o));
+}
+
+#[cfg(target_os = "linux")]
+/// Starts `run --workload w --no-plots` in `cwd`, where its default file goes to `results/`.
+fn start_run(w: &Path, cwd: &Path) -> Child {
+    Command::new(BIN)
+        .args(["run", "--workload", arg(w), "--no-plots"])
+        .current_dir(cwd)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
 }
 
 /// Issue 36 C8: Ctrl-C of `run` in a folder without `results/` left an empty `results/`
@@ -317,13 +250,7 @@ fn an_interrupted_run_leaves_no_results_folder_it_made() {
     let w = workload(dir.path(), "long", 200_000);
     let cwd = dir.path().join("cwd");
     std::fs::create_dir(&cwd).unwrap();
-    let mut child = Command::new(BIN)
-        .args(["run", "--workload", w.to_str().unwrap(), "--no-plots"])
-        .current_dir(&cwd)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = start_run(&w, &cwd);
     let results = cwd.join("results");
     let start = Instant::now();
     while !results.exists() {
@@ -344,13 +271,7 @@ fn an_interrupted_run_leaves_no_results_folder_it_made() {
 
     // A results/ that was there before is kept.
     std::fs::create_dir(&results).unwrap();
-    let mut child = Command::new(BIN)
-        .args(["run", "--workload", w.to_str().unwrap(), "--no-plots"])
-        .current_dir(&cwd)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = start_run(&w, &cwd);
     std::thread::sleep(Duration::from_millis(500));
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])

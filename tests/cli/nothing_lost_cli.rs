@@ -8,78 +8,33 @@
 // Every check here runs against the harness's CLI.
 #![cfg(unix)]
 
-use crate::support::{BIN, ROOT, stderr, torus_cull};
-use std::path::{Path, PathBuf};
+use crate::support::{
+    BIN, ROOT, arg, assert_ok, cli, cli_ok, refused, refused_at_once, stderr, temp_path,
+    tiny_workload, torus_cull, torus_cull_in, words, workload,
+};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
-use std::time::{Duration, Instant};
-
-/// Two cases at two ν, 200 rays: a second to run, a few to time.
-fn tiny_workload(dir: &Path, name: &str) -> PathBuf {
-    let path = dir.join(format!("{name}.json"));
-    std::fs::write(
-        &path,
-        format!(
-            r#"{{ "name": "{name}", "seed": 3, "cases": ["hole", "uniform"], "nu": [2, 8],
-                 "rays": 200, "pose": "random" }}"#
-        ),
-    )
-    .unwrap();
-    path
-}
-
-/// Exit 2, one line on stderr naming every needle, nothing on stdout, and fast: the work
-/// never started.
-fn refused_before_work(o: &Output, started: Instant, needles: &[&str]) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    for needle in needles {
-        assert!(err.contains(needle), "no '{needle}' in: {err}");
-    }
-    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    assert!(
-        o.stdout.is_empty(),
-        "the work ran: {}",
-        String::from_utf8_lossy(&o.stdout)
-    );
-    assert!(
-        started.elapsed() < Duration::from_secs(10),
-        "it worked first"
-    );
-}
+use std::time::Instant;
 
 #[test]
 fn an_existing_directory_as_out_is_refused_before_the_work() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let target = dir.path().to_str().unwrap();
     for command in ["run", "time"] {
         let start = Instant::now();
-        let o = torus_cull(&[
-            command,
-            "--workload",
-            workload.to_str().unwrap(),
-            "--out",
-            target,
-        ]);
-        refused_before_work(&o, start, &["--out", target, "is a directory"]);
+        let o = torus_cull(&[command, "--workload", arg(&workload), "--out", target]);
+        refused_at_once(&o, start, &["--out", target, "is a directory"]);
     }
 }
 
 #[test]
 fn a_missing_parent_directory_is_an_error_not_created() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let out = dir.path().join("no").join("such").join("r.json");
     for command in ["run", "time"] {
         let start = Instant::now();
-        let o = torus_cull(&[
-            command,
-            "--workload",
-            workload.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        refused_before_work(&o, start, &["--out", "does not exist"]);
+        let o = torus_cull(&[command, "--workload", arg(&workload), "--out", arg(&out)]);
+        refused_at_once(&o, start, &["--out", "does not exist"]);
         assert!(
             !dir.path().join("no").exists(),
             "{command} made the directory"
@@ -87,26 +42,18 @@ fn a_missing_parent_directory_is_an_error_not_created() {
     }
     let rays = dir.path().join("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "2",
-        "--minor",
-        "1",
-        "--rays",
-        rays.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let o = cli(
+        "eval --major 2 --minor 1 --rays {} --out {}",
+        &[arg(&rays), arg(&out)],
+    );
+    refused(&o);
     assert!(stderr(&o).contains("--out"), "{}", stderr(&o));
     assert!(!dir.path().join("no").exists());
 }
 
 #[test]
 fn an_output_that_is_an_input_is_refused_and_the_input_kept() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("a.csv");
+    let (dir, rays) = temp_path("a.csv");
     let csv = "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n";
     std::fs::write(&rays, csv).unwrap();
     // The same path, a symlink to it and a hard link to it are all the same file.
@@ -115,19 +62,11 @@ fn an_output_that_is_an_input_is_refused_and_the_input_kept() {
     let hard = dir.path().join("hard.csv");
     std::fs::hard_link(&rays, &hard).unwrap();
     for out in [&rays, &sym, &hard] {
-        let o = torus_cull(&[
-            "eval",
-            "--major",
-            "2",
-            "--minor",
-            "1",
-            "--rays",
-            rays.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ]);
-        let err = stderr(&o);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let o = cli(
+            "eval --major 2 --minor 1 --rays {} --out {}",
+            &[arg(&rays), arg(out)],
+        );
+        let err = refused(&o);
         assert!(
             err.contains("--out") && err.contains("--rays") && err.contains("same file"),
             "{err}"
@@ -135,66 +74,48 @@ fn an_output_that_is_an_input_is_refused_and_the_input_kept() {
         assert_eq!(std::fs::read_to_string(&rays).unwrap(), csv);
     }
 
-    let workload = tiny_workload(dir.path(), "tiny");
+    let workload = workload(dir.path(), "tiny", 200);
     let text = std::fs::read_to_string(&workload).unwrap();
     for command in ["run", "time"] {
         let start = Instant::now();
-        let o = torus_cull(&[
-            command,
-            "--workload",
-            workload.to_str().unwrap(),
-            "--out",
-            workload.to_str().unwrap(),
-        ]);
-        refused_before_work(&o, start, &["--out", "--workload", "same file"]);
+        let o = cli(
+            "{} --workload {} --out {}",
+            &[command, arg(&workload), arg(&workload)],
+        );
+        refused_at_once(&o, start, &["--out", "--workload", "same file"]);
         assert_eq!(std::fs::read_to_string(&workload).unwrap(), text);
     }
 }
 
 #[test]
 fn a_workload_name_that_escapes_results_is_refused_at_load() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let text = std::fs::read_to_string(&workload)
         .unwrap()
         .replace("\"tiny\"", "\"../../evil\"");
     std::fs::write(&workload, text).unwrap();
     for command in ["run", "time"] {
         let start = Instant::now();
-        let o = Command::new(BIN)
-            .args([command, "--workload", workload.to_str().unwrap()])
-            .current_dir(dir.path())
-            .output()
-            .unwrap();
-        refused_before_work(
-            &o,
-            start,
-            &[workload.to_str().unwrap(), "field `name`", "../../evil"],
-        );
+        let o = torus_cull_in(dir.path(), &[command, "--workload", arg(&workload)]);
+        refused_at_once(&o, start, &[arg(&workload), "field `name`", "../../evil"]);
     }
     assert!(!dir.path().join("results").exists());
 }
 
 #[test]
 fn time_names_its_default_file_after_the_workload() {
-    let dir = tempfile::tempdir().unwrap();
-    let cwd = dir.path().join("cwd");
+    let (dir, cwd) = temp_path("cwd");
     std::fs::create_dir(&cwd).unwrap();
     for name in ["tiny", "small"] {
-        let workload = tiny_workload(dir.path(), name);
-        let o = Command::new(BIN)
-            .args([
-                "time",
-                "--workload",
-                workload.to_str().unwrap(),
-                "--seconds",
-                "0.5",
-                "--no-plots",
-            ])
-            .current_dir(&cwd)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", stderr(&o));
+        let workload = workload(dir.path(), name, 200);
+        let o = torus_cull_in(
+            &cwd,
+            &words(
+                "time --workload {} --seconds 0.5 --no-plots",
+                &[arg(&workload)],
+            ),
+        );
+        assert_ok(&o);
     }
     // The tool's own results/ is made (one level) for a default name; both files are kept.
     let mut names: Vec<String> = std::fs::read_dir(cwd.join("results"))
@@ -208,10 +129,10 @@ fn time_names_its_default_file_after_the_workload() {
 }
 
 /// Runs `args` with stdout a pipe whose reader has already gone.
-fn with_closed_stdout(args: &[&str], cwd: &Path) -> Output {
+fn with_closed_stdout(args: &[&str]) -> Output {
     let mut child = Command::new(BIN)
         .args(args)
-        .current_dir(cwd)
+        .current_dir(ROOT)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -222,19 +143,9 @@ fn with_closed_stdout(args: &[&str], cwd: &Path) -> Output {
 
 #[test]
 fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let json = dir.path().join("r.json");
-    let o = with_closed_stdout(
-        &[
-            "run",
-            "--workload",
-            workload.to_str().unwrap(),
-            "--out",
-            json.to_str().unwrap(),
-        ],
-        Path::new(ROOT),
-    );
+    let o = with_closed_stdout(&["run", "--workload", arg(&workload), "--out", arg(&json)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
     let svgs = |d: &Path| {
@@ -248,15 +159,7 @@ fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
     // Every plot of the file: the same count as `plot` writes.
     let again = dir.path().join("again");
     std::fs::create_dir(&again).unwrap();
-    let o = with_closed_stdout(
-        &[
-            "plot",
-            json.to_str().unwrap(),
-            "--out-dir",
-            again.to_str().unwrap(),
-        ],
-        Path::new(ROOT),
-    );
+    let o = with_closed_stdout(&["plot", arg(&json), "--out-dir", arg(&again)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(
         written > 0 && written == svgs(&again),
@@ -265,45 +168,22 @@ fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
     );
 
     // compare keeps its documented exit code (0: no regression).
-    let o = with_closed_stdout(
-        &["compare", json.to_str().unwrap(), json.to_str().unwrap()],
-        Path::new(ROOT),
-    );
+    let o = with_closed_stdout(&["compare", arg(&json), arg(&json)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
 
     let timed = dir.path().join("t.json");
-    let o = with_closed_stdout(
-        &[
-            "time",
-            "--workload",
-            workload.to_str().unwrap(),
-            "--seconds",
-            "0.5",
-            "--out",
-            timed.to_str().unwrap(),
-        ],
-        Path::new(ROOT),
-    );
+    let o = with_closed_stdout(&words(
+        "time --workload {} --seconds 0.5 --out {}",
+        &[arg(&workload), arg(&timed)],
+    ));
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(timed.exists());
 
     let png = dir.path().join("scene.png");
-    let o = with_closed_stdout(
-        &[
-            "render",
-            "--scene",
-            "chain",
-            "--nu",
-            "4",
-            "--size",
-            "16",
-            "--tori",
-            "4",
-            "--out",
-            png.to_str().unwrap(),
-        ],
-        Path::new(ROOT),
-    );
+    let o = with_closed_stdout(&words(
+        "render --scene chain --nu 4 --size 16 --tori 4 --out {}",
+        &[arg(&png)],
+    ));
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(png.exists() && dir.path().join("scene-cullmap.png").exists());
 }
@@ -311,20 +191,10 @@ fn a_closed_pipe_ends_every_command_quietly_after_its_files() {
 #[test]
 fn nu_beyond_the_tested_range_is_a_one_line_error() {
     // The reproducer: R = 1, r = 3e-9 (nu = 3.3e8) once answered a hit for a miss.
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,4.5e-9,0,1,0,0\n").unwrap();
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "1",
-        "--minor",
-        "3e-9",
-        "--rays",
-        rays.to_str().unwrap(),
-    ]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let o = cli("eval --major 1 --minor 3e-9 --rays {}", &[arg(&rays)]);
+    let err = refused(&o);
     assert!(
         err.contains("--major/--minor") && err.contains("3.33") && err.contains("<= 1000"),
         "{err}"
@@ -336,23 +206,14 @@ fn nu_beyond_the_tested_range_is_a_one_line_error() {
         String::from_utf8_lossy(&o.stdout)
     );
     let png = dir.path().join("thin.png");
-    let o = torus_cull(&[
-        "render",
-        "--scene",
-        "chain",
-        "--nu",
-        "2000",
-        "--out",
-        png.to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let o = cli("render --scene chain --nu 2000 --out {}", &[arg(&png)]);
+    refused(&o);
     assert!(stderr(&o).contains("--nu") && stderr(&o).contains("1000"));
 }
 
 #[test]
 fn a_workload_its_generators_cannot_fill_is_refused_at_load() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = dir.path().join("thin.json");
+    let (dir, workload) = temp_path("thin.json");
     std::fs::write(
         &workload,
         r#"{ "name": "thin", "seed": 1, "cases": ["hole"], "nu": [1.0000001],
@@ -360,31 +221,22 @@ fn a_workload_its_generators_cannot_fill_is_refused_at_load() {
     )
     .unwrap();
     let start = Instant::now();
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        workload.to_str().unwrap(),
-        "--out",
-        dir.path().join("r.json").to_str().unwrap(),
-    ]);
-    refused_before_work(
+    let o = cli(
+        "run --workload {} --out {}",
+        &[arg(&workload), arg(&dir.path().join("r.json"))],
+    );
+    refused_at_once(
         &o,
         start,
-        &[
-            workload.to_str().unwrap(),
-            "field `nu[0]`",
-            "1.0000001",
-            "case hole",
-        ],
+        &[arg(&workload), "field `nu[0]`", "1.0000001", "case hole"],
     );
 }
 
 #[test]
 fn eval_messages_name_the_value_typed_and_the_option() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
-    let rays = rays.to_str().unwrap();
+    let rays = arg(&rays);
     for (major, minor, needles) in [
         ("1e300", "1", vec!["--major", "1e300"]),
         ("1e-300", "1e-301", vec!["--major", "1e-300"]),
@@ -407,19 +259,11 @@ fn eval_messages_name_the_value_typed_and_the_option() {
     for (precision, tiny_dx) in [("f32", "1e-20"), ("f64", "1e-170")] {
         let tiny = dir.path().join("tiny.csv");
         std::fs::write(&tiny, format!("ox,oy,oz,dx,dy,dz\n-5,0,0,{tiny_dx},0,0\n")).unwrap();
-        let o = torus_cull(&[
-            "eval",
-            "--major",
-            "2",
-            "--minor",
-            "1",
-            "--rays",
-            tiny.to_str().unwrap(),
-            "--precision",
-            precision,
-        ]);
-        let err = stderr(&o);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let o = cli(
+            "eval --major 2 --minor 1 --rays {} --precision {}",
+            &[arg(&tiny), precision],
+        );
+        let err = refused(&o);
         assert!(
             err.contains(":2:") && err.contains(tiny_dx) && err.contains("too short"),
             "{err}"
@@ -429,8 +273,7 @@ fn eval_messages_name_the_value_typed_and_the_option() {
     // A directory as --rays names the option and the path.
     let d = dir.path().to_str().unwrap();
     let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", d]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = refused(&o);
     assert!(
         err.contains("--rays") && err.contains(d) && err.contains("is a directory"),
         "{err}"
@@ -440,31 +283,29 @@ fn eval_messages_name_the_value_typed_and_the_option() {
 #[test]
 fn time_lists_only_what_it_times_and_checks_the_isa_in_every_mode() {
     let o = torus_cull(&["time", "--culls", "bogus"]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = refused(&o);
     assert!(
         err.contains("'bogus'") && err.contains("discriminant_f64"),
         "{err}"
     );
     assert!(!err.contains("printed") && !err.contains("eq102"), "{err}");
 
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let start = Instant::now();
     let o = Command::new(BIN)
         .args([
             "time",
             "--workload",
-            workload.to_str().unwrap(),
+            arg(&workload),
             "--seconds",
             "5",
             "--out",
-            dir.path().join("t.json").to_str().unwrap(),
+            arg(&dir.path().join("t.json")),
         ])
         .env("TORUS_CULL_ISA", "avx3")
         .output()
         .unwrap();
-    refused_before_work(&o, start, &["TORUS_CULL_ISA", "avx3"]);
+    refused_at_once(&o, start, &["TORUS_CULL_ISA", "avx3"]);
 }
 
 #[test]
@@ -482,20 +323,12 @@ fn help_texts_state_the_real_defaults() {
 /// commit, and says so when a file has nothing to plot.
 #[test]
 fn progress_meta_and_plots_of_time_files() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
+    let (dir, workload) = tiny_workload();
     let run_json = dir.path().join("r.json");
-    let o = torus_cull(&[
-        "run",
-        "--workload",
-        workload.to_str().unwrap(),
-        "--threads",
-        "2",
-        "--no-plots",
-        "--out",
-        run_json.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = cli_ok(
+        "run --workload {} --threads 2 --no-plots --out {}",
+        &[arg(&workload), arg(&run_json)],
+    );
     assert!(
         stderr(&o).contains("run tiny") && stderr(&o).contains("800/800 rays (100%)"),
         "{}",
@@ -512,16 +345,10 @@ fn progress_meta_and_plots_of_time_files() {
     );
 
     let time_json = dir.path().join("t.json");
-    let o = torus_cull(&[
-        "time",
-        "--workload",
-        workload.to_str().unwrap(),
-        "--seconds",
-        "0.5",
-        "--out",
-        time_json.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = cli_ok(
+        "time --workload {} --seconds 0.5 --out {}",
+        &[arg(&workload), arg(&time_json)],
+    );
     assert!(
         stderr(&o).contains("time tiny") && stderr(&o).contains("(100%)"),
         "{}",
@@ -542,8 +369,8 @@ fn progress_meta_and_plots_of_time_files() {
     );
     std::fs::remove_file(&svg).unwrap();
 
-    let o = torus_cull(&["plot", time_json.to_str().unwrap()]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = torus_cull(&["plot", arg(&time_json)]);
+    assert_ok(&o);
     let svg = dir.path().join("t-ratio-hole-total_ns-vs-cychosz.svg");
     let text = std::fs::read_to_string(&svg).expect("a ratio chart");
     assert!(
@@ -565,8 +392,8 @@ fn progress_meta_and_plots_of_time_files() {
     let mut e = t.clone();
     e.ratio.clear();
     e.save(&empty).unwrap();
-    let o = torus_cull(&["plot", empty.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let o = torus_cull(&["plot", arg(&empty)]);
+    refused(&o);
     assert!(stderr(&o).contains("nothing to plot"), "{}", stderr(&o));
 }
 
@@ -575,10 +402,9 @@ fn progress_meta_and_plots_of_time_files() {
 /// values are written in scientific notation, not as 300 digits.
 #[test]
 fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("rays.csv");
+    let (dir, rays) = temp_path("rays.csv");
     std::fs::write(&rays, "ox,oy,oz,dx,dy,dz\n-5,0,0,1,0,0\n").unwrap();
-    let rays = rays.to_str().unwrap();
+    let rays = arg(&rays);
     for bad in ["NaN", "inf", "-inf"] {
         let o = torus_cull(&["eval", "--major", bad, "--minor", "1", "--rays", rays]);
         let err = stderr(&o);
@@ -592,35 +418,19 @@ fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
     }
     let big = dir.path().join("big.csv");
     std::fs::write(&big, "ox,oy,oz,dx,dy,dz\n1e39,0,0,-1,0,0\n").unwrap();
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "3",
-        "--minor",
-        "1",
-        "--rays",
-        big.to_str().unwrap(),
-        "--precision",
-        "f32",
-    ]);
-    let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let o = cli(
+        "eval --major 3 --minor 1 --rays {} --precision f32",
+        &[arg(&big)],
+    );
+    let err = refused(&o);
     assert!(
         err.contains("column ox: 1e39 is out of f32 range (allowed: |value| <= 3.4028235e38)"),
         "{err}"
     );
     assert!(!err.contains("not finite"), "{err}");
     // The same row in f64 is read, and its t_hit (about 1e39) is one short word.
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "3",
-        "--minor",
-        "1",
-        "--rays",
-        big.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let o = torus_cull(&["eval", "--major", "3", "--minor", "1", "--rays", arg(&big)]);
+    assert_ok(&o);
     let csv = String::from_utf8_lossy(&o.stdout).into_owned();
     let row = csv.lines().nth(1).unwrap();
     let t_hit = row.split(',').nth(3).unwrap();
@@ -631,15 +441,7 @@ fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
     );
     // `inf` typed in a CSV is still "not finite".
     std::fs::write(&big, "ox,oy,oz,dx,dy,dz\ninf,0,0,-1,0,0\n").unwrap();
-    let o = torus_cull(&[
-        "eval",
-        "--major",
-        "3",
-        "--minor",
-        "1",
-        "--rays",
-        big.to_str().unwrap(),
-    ]);
+    let o = torus_cull(&["eval", "--major", "3", "--minor", "1", "--rays", arg(&big)]);
     assert!(
         stderr(&o).contains("column ox: inf is not finite"),
         "{}",
@@ -653,8 +455,7 @@ fn non_finite_radii_f32_range_and_huge_values_are_said_plainly() {
         &["time", "--nu", "1e300"][..],
     ] {
         let o = torus_cull(args);
-        let err = stderr(&o);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let err = refused(&o);
         assert!(
             err.contains("1e300") && !err.contains("0000000000"),
             "{err}"
@@ -673,7 +474,7 @@ fn zero_threads_is_refused_with_the_range() {
         let mut args = command.to_vec();
         args.extend(["--threads", "0", "--out", "/nonexistent-dir-h29/x.json"]);
         let o = torus_cull(&args);
-        refused_before_work(
+        refused_at_once(
             &o,
             started,
             &["--threads 0 is invalid", "allowed: 1 ..= 1024"],
@@ -685,23 +486,11 @@ fn zero_threads_is_refused_with_the_range() {
 /// batch tables are missing, instead of dropping them without a word.
 #[test]
 fn time_says_why_a_cull_has_no_batch_table() {
-    let dir = tempfile::tempdir().unwrap();
-    let workload = tiny_workload(dir.path(), "tiny");
-    let o = torus_cull(&[
-        "time",
-        "--workload",
-        workload.to_str().unwrap(),
-        "--mode",
-        "both",
-        "--culls",
-        "discriminant_f64",
-        "--seconds",
-        "0.3",
-        "--no-plots",
-        "--out",
-        dir.path().join("t.json").to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let (dir, workload) = tiny_workload();
+    let o = cli_ok(
+        "time --workload {} --mode both --culls discriminant_f64 --seconds 0.3 --no-plots --out {}",
+        &[arg(&workload), arg(&dir.path().join("t.json"))],
+    );
     assert!(
         stderr(&o).contains(
             "discriminant_f64 has no batch form and is timed one ray at a time only, so no \

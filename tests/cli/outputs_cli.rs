@@ -6,13 +6,15 @@
 // Every check here runs against the harness's oracle or CLI.
 #![cfg(unix)]
 
+use crate::support::{
+    BIN, arg, assert_ok, cli, eval_to, refused, svgs, temp_path, torus_cull, words,
+};
 use std::io::{Read, Write};
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
 const HEADER: &str = "ox,oy,oz,dx,dy,dz\n";
 
 fn rays_csv(dir: &Path, rows: usize) -> PathBuf {
@@ -25,14 +27,22 @@ fn rays_csv(dir: &Path, rows: usize) -> PathBuf {
     path
 }
 
-fn eval_to(rays: &Path, out: &Path) -> Output {
-    Command::new(BIN)
-        .args(["eval", "--major", "2", "--minor", "1", "--rays"])
-        .arg(rays)
-        .arg("--out")
-        .arg(out)
-        .output()
-        .unwrap()
+/// Runs the quick workload without plots into `dir/q.json` and returns that file.
+fn quick_results(dir: &Path) -> PathBuf {
+    let json = dir.join("q.json");
+    assert_ok(&cli(
+        "run --workload workloads/quick.json --no-plots --out {}",
+        &[arg(&json)],
+    ));
+    json
+}
+
+/// `render` of a small chain scene (two tori, 8 pixels) to `out`.
+fn render_chain(out: &Path) -> Output {
+    cli(
+        "render --scene chain --nu 4 --size 8 --tori 2 --out {}",
+        &[arg(out)],
+    )
 }
 
 /// Runs `args` under `umask`, through the shell (the test process's umask is not touched).
@@ -71,7 +81,7 @@ fn out_follows_symlinks_and_writes_fifos_and_devices_in_place() {
     let link = dir.path().join("link.csv");
     std::os::unix::fs::symlink(&real, &link).unwrap();
     let o = eval_to(&rays, &link);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     assert!(
         std::fs::symlink_metadata(&link)
             .unwrap()
@@ -94,7 +104,7 @@ fn out_follows_symlinks_and_writes_fifos_and_devices_in_place() {
         std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
     };
     let o = eval_to(&rays, &fifo);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     assert_eq!(reader.join().unwrap().lines().count(), 4);
     assert!(
         std::fs::symlink_metadata(&fifo)
@@ -107,7 +117,7 @@ fn out_follows_symlinks_and_writes_fifos_and_devices_in_place() {
     let to_stdout = dir.path().join("stdout");
     std::os::unix::fs::symlink("/proc/self/fd/1", &to_stdout).unwrap();
     let o = eval_to(&rays, &to_stdout);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     assert!(String::from_utf8_lossy(&o.stdout).starts_with("index,oracle"));
     assert!(
         std::fs::symlink_metadata(&to_stdout)
@@ -123,8 +133,7 @@ fn out_follows_symlinks_and_writes_fifos_and_devices_in_place() {
         std::os::unix::fs::symlink("/dev/full", &full).unwrap();
         let big = rays_csv(dir.path(), 20_000);
         let o = eval_to(&big, &full);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let err = refused(&o);
         assert!(err.contains("full") && err.contains("No space"), "{err}");
         assert!(
             std::fs::symlink_metadata(&full)
@@ -150,34 +159,24 @@ fn new_files_get_the_umask_mode() {
         let out = dir.path().join(format!("eval-{umask}.csv"));
         let o = with_umask(
             umask,
-            &[
-                "eval",
-                "--major",
-                "2",
-                "--minor",
-                "1",
-                "--rays",
-                rays.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ],
+            &words(
+                "eval --major 2 --minor 1 --rays {} --out {}",
+                &[arg(&rays), arg(&out)],
+            ),
         );
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert_ok(&o);
         assert_eq!(mode(&out), want, "eval --out under umask {umask}");
     }
     // The results JSON and its SVGs.
     let json = dir.path().join("q.json");
     let o = with_umask(
         "022",
-        &[
-            "run",
-            "--workload",
-            "workloads/quick.json",
-            "--out",
-            json.to_str().unwrap(),
-        ],
+        &words(
+            "run --workload workloads/quick.json --out {}",
+            &[arg(&json)],
+        ),
     );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     assert_eq!(mode(&json), 0o644);
     let svg = dir.path().join("q-hole-miss_capture.svg");
     assert_eq!(mode(&svg), 0o644);
@@ -198,8 +197,7 @@ fn wait_for_temp(dir: &Path) {
 #[test]
 fn an_interrupted_eval_leaves_no_temp_file() {
     for signal in ["TERM", "INT", "HUP"] {
-        let dir = tempfile::tempdir().unwrap();
-        let out = dir.path().join("out.csv");
+        let (dir, out) = temp_path("out.csv");
         let mut child = Command::new(BIN)
             .args([
                 "eval", "--major", "2", "--minor", "1", "--rays", "-", "--out",
@@ -247,15 +245,10 @@ fn an_interrupted_eval_leaves_no_temp_file() {
 
 #[test]
 fn a_byte_order_mark_before_the_header_is_accepted() {
-    let dir = tempfile::tempdir().unwrap();
-    let rays = dir.path().join("bom.csv");
+    let (_dir, rays) = temp_path("bom.csv");
     std::fs::write(&rays, format!("\u{feff}{HEADER}-5,0,0,2,0,0\n")).unwrap();
-    let o = Command::new(BIN)
-        .args(["eval", "--major", "2", "--minor", "1", "--rays"])
-        .arg(&rays)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = torus_cull(&["eval", "--major", "2", "--minor", "1", "--rays", arg(&rays)]);
+    assert_ok(&o);
     assert!(String::from_utf8_lossy(&o.stdout).contains("0,hit,"));
 }
 
@@ -289,23 +282,16 @@ fn a_closed_pipe_ends_eval_quietly() {
 
 #[test]
 fn run_refuses_an_unwritable_out_before_the_sweep() {
-    let dir = tempfile::tempdir().unwrap();
-    let not_a_dir = dir.path().join("file");
+    let (_dir, not_a_dir) = temp_path("file");
     std::fs::write(&not_a_dir, "").unwrap();
     let out = not_a_dir.join("results.json");
     let start = Instant::now();
-    let o = Command::new(BIN)
-        .args(["run", "--workload", "workloads/default.json", "--out"])
-        .arg(&out)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(
-        err.contains("--out") && err.contains(out.to_str().unwrap()),
-        "{err}"
+    let o = cli(
+        "run --workload workloads/default.json --out {}",
+        &[arg(&out)],
     );
+    let err = refused(&o);
+    assert!(err.contains("--out") && err.contains(arg(&out)), "{err}");
     // No table means the sweep never ran (the default workload takes half a minute).
     assert!(
         o.stdout.is_empty(),
@@ -318,20 +304,7 @@ fn run_refuses_an_unwritable_out_before_the_sweep() {
 #[test]
 fn plots_are_replaced_atomically_and_errors_name_the_path() {
     let dir = tempfile::tempdir().unwrap();
-    let json = dir.path().join("q.json");
-    let o = Command::new(BIN)
-        .args([
-            "run",
-            "--workload",
-            "workloads/quick.json",
-            "--no-plots",
-            "--out",
-        ])
-        .arg(&json)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json = quick_results(dir.path());
 
     // An old chart with a second hard link: a rename leaves the link's bytes alone,
     // writing in place (truncate, then draw) would change them.
@@ -339,37 +312,23 @@ fn plots_are_replaced_atomically_and_errors_name_the_path() {
     std::fs::write(&svg, "old chart").unwrap();
     let kept = dir.path().join("kept.svg");
     std::fs::hard_link(&svg, &kept).unwrap();
-    let o = Command::new(BIN).arg("plot").arg(&json).output().unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = torus_cull(&["plot", arg(&json)]);
+    assert_ok(&o);
     assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
     assert_eq!(std::fs::read_to_string(&kept).unwrap(), "old chart");
     assert!(temp_files(dir.path()).is_empty());
 
     // An output directory that cannot exist: the error names it.
     let blocked = dir.path().join("kept.svg").join("charts");
-    let o = Command::new(BIN)
-        .arg("plot")
-        .arg(&json)
-        .arg("--out-dir")
-        .arg(&blocked)
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains(blocked.to_str().unwrap()), "{err}");
+    let o = torus_cull(&["plot", arg(&json), "--out-dir", arg(&blocked)]);
+    let err = refused(&o);
+    assert!(err.contains(arg(&blocked)), "{err}");
 
     // A chart path that is a directory: the error names the chart.
     let dir_chart = dir.path().join("charts2");
     std::fs::create_dir_all(dir_chart.join("q-hole-miss_capture.svg")).unwrap();
-    let o = Command::new(BIN)
-        .arg("plot")
-        .arg(&json)
-        .arg("--out-dir")
-        .arg(&dir_chart)
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let o = torus_cull(&["plot", arg(&json), "--out-dir", arg(&dir_chart)]);
+    let err = refused(&o);
     assert!(err.contains("q-hole-miss_capture.svg"), "{err}");
 }
 
@@ -378,20 +337,7 @@ fn plots_are_replaced_atomically_and_errors_name_the_path() {
 #[test]
 fn plot_out_dir_must_be_an_existing_directory() {
     let dir = tempfile::tempdir().unwrap();
-    let json = dir.path().join("q.json");
-    let o = Command::new(BIN)
-        .args([
-            "run",
-            "--workload",
-            "workloads/quick.json",
-            "--no-plots",
-            "--out",
-        ])
-        .arg(&json)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let json = quick_results(dir.path());
     let missing = dir.path().join("no").join("such");
     let file = dir.path().join("a-file");
     std::fs::write(&file, "x").unwrap();
@@ -399,19 +345,10 @@ fn plot_out_dir_must_be_an_existing_directory() {
         (&missing, "no such directory (it is not created"),
         (&file, "is a file, not a directory"),
     ] {
-        let o = Command::new(BIN)
-            .arg("plot")
-            .arg(&json)
-            .arg("--out-dir")
-            .arg(out_dir)
-            .output()
-            .unwrap();
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(2), "{err}");
+        let o = torus_cull(&["plot", arg(&json), "--out-dir", arg(out_dir)]);
+        let err = refused(&o);
         assert!(
-            err.contains("--out-dir")
-                && err.contains(out_dir.to_str().unwrap())
-                && err.contains(needle),
+            err.contains("--out-dir") && err.contains(arg(out_dir)) && err.contains(needle),
             "{err}"
         );
         assert!(!err.contains("os error 17"), "{err}");
@@ -425,27 +362,15 @@ fn render_refuses_a_name_that_is_not_png() {
     let dir = tempfile::tempdir().unwrap();
     for name in ["x.svg", "x.jpg", "x"] {
         let out = dir.path().join(name);
-        let o = Command::new(BIN)
-            .args([
-                "render", "--scene", "chain", "--nu", "4", "--size", "8", "--tori", "2", "--out",
-            ])
-            .arg(&out)
-            .output()
-            .unwrap();
+        let o = render_chain(&out);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{name}: {err}");
         assert!(err.contains("a file name ending in .png"), "{name}: {err}");
         assert!(!out.exists(), "{name} was written");
     }
     let out = dir.path().join("x.PNG");
-    let o = Command::new(BIN)
-        .args([
-            "render", "--scene", "chain", "--nu", "4", "--size", "8", "--tori", "2", "--out",
-        ])
-        .arg(&out)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = render_chain(&out);
+    assert_ok(&o);
     assert!(std::fs::read(&out).unwrap().starts_with(b"\x89PNG"));
 }
 
@@ -454,24 +379,10 @@ fn render_refuses_a_name_that_is_not_png() {
 /// value, not "3.145-3", and the f64 time sits on the f32 path's row.
 #[test]
 fn f32_check_files_are_plotted_and_compared() {
-    let dir = tempfile::tempdir().unwrap();
-    let json = dir.path().join("f.json");
-    let o = Command::new(BIN)
-        .args(["f32-check", "--rays", "1", "--rounds", "1", "--out"])
-        .arg(&json)
-        .output()
-        .unwrap();
+    let (dir, json) = temp_path("f.json");
+    let o = cli("f32-check --rays 1 --rounds 1 --out {}", &[arg(&json)]);
     let table = String::from_utf8_lossy(&o.stdout).into_owned();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let svgs = |d: &Path| -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(d)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .filter(|n| n.ends_with(".svg"))
-            .collect();
-        v.sort();
-        v
-    };
+    assert_ok(&o);
     assert_eq!(
         svgs(dir.path()),
         [
@@ -495,27 +406,11 @@ fn f32_check_files_are_plotted_and_compared() {
     assert!(cert.trim_end().ends_with(" -"), "{cert}");
     let again = dir.path().join("again");
     std::fs::create_dir(&again).unwrap();
-    let o = Command::new(BIN)
-        .arg("plot")
-        .arg(&json)
-        .arg("--out-dir")
-        .arg(&again)
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = torus_cull(&["plot", arg(&json), "--out-dir", arg(&again)]);
+    assert_ok(&o);
     assert_eq!(svgs(&again), svgs(dir.path()));
-    let o = Command::new(BIN)
-        .arg("compare")
-        .arg(&json)
-        .arg(&json)
-        .output()
-        .unwrap();
+    let o = torus_cull(&["compare", arg(&json), arg(&json)]);
     let out = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{out}{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    assert_ok(&o);
     assert!(out.contains("0 regressions"), "{out}");
 }

@@ -2,8 +2,8 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use std::path::Path;
-use std::process::Command;
+use crate::support::{arg, assert_ok, read_json, stderr, stdout, temp_path, torus_cull};
+use std::path::{Path, PathBuf};
 use torus_cull_lab::compare::compare;
 use torus_cull_lab::results::{
     BvhRecord, Meta, RatioRecord, RejectionRecord, Results, ResultsError, SCHEMA_VERSION,
@@ -99,8 +99,7 @@ fn sample() -> Results {
 
 #[test]
 fn schema_round_trips_and_keeps_field_names() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("r.json");
+    let (_dir, path) = temp_path("r.json");
     let r = sample();
     r.save(&path).unwrap();
     assert_eq!(Results::load(&path).unwrap(), r);
@@ -172,12 +171,10 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
             ..ratio.clone()
         },
     ];
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("r.json");
+    let (dir, path) = temp_path("r.json");
     r.save(&path).unwrap();
     assert_eq!(Results::load(&path).unwrap(), r);
-    let value: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    let value = read_json(&path);
     for section in ["timing", "ratio"] {
         let records = value[section].as_array().unwrap();
         assert_eq!(records[0]["precision"], "f64", "{section}");
@@ -254,8 +251,7 @@ fn committed_results_from_before_precision_load_and_compare() {
 
 #[test]
 fn other_versions_and_non_json_are_refused() {
-    let dir = tempfile::tempdir().unwrap();
-    let v2 = dir.path().join("v2.json");
+    let (dir, v2) = temp_path("v2.json");
     let text = serde_json::to_string(&sample())
         .unwrap()
         .replace("\"schema_version\":1", "\"schema_version\":2");
@@ -277,8 +273,7 @@ fn other_versions_and_non_json_are_refused() {
 
 #[test]
 fn atomic_write_leaves_no_partial_file() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("r.json");
+    let (dir, path) = temp_path("r.json");
     write_atomic(&path, b"old contents").unwrap();
     // A write that fails at the rename (target is a non-empty directory) keeps nothing half-done.
     let blocked = dir.path().join("blocked");
@@ -295,15 +290,20 @@ fn atomic_write_leaves_no_partial_file() {
     assert!(leftovers.is_empty(), "{leftovers:?}");
 }
 
+/// The sample with its first record's rejected count and miss capture changed.
+fn with_capture(rejected: u64, capture: f64) -> Results {
+    let mut r = sample();
+    r.rejection[0].rejected = rejected;
+    r.rejection[0].miss_capture = Some(capture);
+    r
+}
+
 #[test]
 fn compare_flags_regressions() {
     let old = sample();
     assert_eq!(compare(&old, &old, 0.1).regressions(), 0);
 
-    let mut worse = sample();
-    worse.rejection[0].rejected = 900;
-    worse.rejection[0].miss_capture = Some(0.9);
-    let r = compare(&old, &worse, 0.1);
+    let r = compare(&old, &with_capture(900, 0.9), 0.1);
     assert_eq!(r.regressions(), 1);
     assert!(
         r.rows[0]
@@ -318,10 +318,7 @@ fn compare_flags_regressions() {
     assert_eq!(compare(&old, &false_reject, 0.1).regressions(), 1);
 
     // Better capture is flagged as a change but is no regression.
-    let mut better = sample();
-    better.rejection[0].rejected = 990;
-    better.rejection[0].miss_capture = Some(0.99);
-    let r = compare(&old, &better, 0.1);
+    let r = compare(&old, &with_capture(990, 0.99), 0.1);
     assert_eq!(r.regressions(), 0);
     assert!(!r.rows[0].flags.is_empty());
 
@@ -351,14 +348,18 @@ fn compare_flags_regressions() {
     assert_eq!(r.regressions(), 0);
 }
 
+/// A new folder with the sample saved as `a.json`, and the path `b.json` beside it.
+fn sample_and_b() -> (tempfile::TempDir, PathBuf, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
+    sample().save(&a).unwrap();
+    (dir, a, b)
+}
+
+/// `compare old new`: its exit code, and its standard output followed by its error.
 fn cli_compare(old: &Path, new: &Path) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(["compare", old.to_str().unwrap(), new.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let text =
-        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    (out.status.code().unwrap(), text)
+    let (code, out, err) = compare_cli(&[arg(old), arg(new)]);
+    (code, out + &err)
 }
 
 #[test]
@@ -459,9 +460,7 @@ fn bvh_throughput_without_an_interval_gets_no_verdict() {
 /// new file are fine.
 #[test]
 fn records_missing_from_the_new_file_fail_unless_allowed() {
-    let dir = tempfile::tempdir().unwrap();
-    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
-    sample().save(&a).unwrap();
+    let (_dir, a, b) = sample_and_b();
     let mut fewer = sample();
     fewer.rejection.pop();
     fewer.bvh.clear();
@@ -474,52 +473,34 @@ fn records_missing_from_the_new_file_fail_unless_allowed() {
             && text.contains("--allow-missing"),
         "{text}"
     );
-    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args([
-            "compare",
-            a.to_str().unwrap(),
-            b.to_str().unwrap(),
-            "--allow-missing",
-        ])
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(0), "{err}");
+    let (code, _, err) = compare_cli(&[arg(&a), arg(&b), "--allow-missing"]);
+    assert_eq!(code, 0, "{err}");
     assert!(err.contains("warning") && err.contains("missing"), "{err}");
     // The other way round (new records) is no failure.
     let (code, text) = cli_compare(&b, &a);
     assert_eq!(code, 0, "{text}");
 }
 
+/// `compare args…`: its exit code, standard output and standard error.
 fn compare_cli(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .arg("compare")
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let out = torus_cull(&[&["compare"], args].concat());
+    (out.status.code().unwrap(), stdout(&out), stderr(&out))
 }
 
 /// Issue 29: a file with one record twice is refused (exit 2), naming the file and the
 /// record, instead of one of the two being compared silently.
 #[test]
 fn duplicate_records_are_refused_naming_the_record() {
-    let dir = tempfile::tempdir().unwrap();
-    let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
-    sample().save(&a).unwrap();
+    let (_dir, a, b) = sample_and_b();
     let mut twice = sample();
     let mut copy = twice.rejection[0].clone();
     copy.rejected = 10;
     twice.rejection.push(copy);
     twice.save(&b).unwrap();
-    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, err) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 2, "{out}{err}");
     assert!(
-        err.contains(b.to_str().unwrap())
+        err.contains(arg(&b))
             && err.contains("record `rejection hole 2 skala` appears more than once"),
         "{err}"
     );
@@ -569,7 +550,7 @@ fn different_machines_are_said_first_and_their_timings_decide_nothing() {
     slow.timing[0].total_ns = 30.0;
     slow.timing[0].total_ns_ci = [29.0, 31.0];
     slow.save(&b).unwrap();
-    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (a, b) = (arg(&a), arg(&b));
     let (code, out, err) = compare_cli(&[a, b]);
     assert_eq!(code, 0, "{out}{err}");
     let first = out.lines().next().unwrap();

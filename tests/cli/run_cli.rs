@@ -3,22 +3,14 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::support::torus_cull as run;
+use crate::support::{arg, assert_ok, cli, cli_ok, refused, temp_path, torus_cull as run};
 use std::process::Command;
 use torus_cull_lab::results::Results;
 
 #[test]
 fn quick_workload_writes_results_and_plots() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("quick.json");
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (dir, out) = temp_path("quick.json");
+    let o = cli_ok("run --workload workloads/quick.json --out {}", &[arg(&out)]);
     let stdout = String::from_utf8_lossy(&o.stdout);
     assert!(stdout.contains("hole: miss capture") && stdout.contains("uniform: miss capture"));
     let r = Results::load(&out).unwrap();
@@ -61,18 +53,11 @@ fn quick_workload_writes_results_and_plots() {
 
 #[test]
 fn a_broken_cull_fails_the_run_and_names_the_ray() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("broken.json");
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--out",
-        out.to_str().unwrap(),
-        "--no-plots",
-        "--culls",
-        "cychosz,cychosz_printed",
-    ]);
+    let (_dir, out) = temp_path("broken.json");
+    let o = cli(
+        "run --workload workloads/quick.json --out {} --no-plots --culls cychosz,cychosz_printed",
+        &[arg(&out)],
+    );
     assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("FALSE REJECT: cull cychosz_printed"), "{err}");
@@ -99,15 +84,14 @@ fn a_broken_cull_fails_the_run_and_names_the_ray() {
 
 #[test]
 fn bad_inputs_exit_2_and_say_where() {
-    let dir = tempfile::tempdir().unwrap();
-    let bad = dir.path().join("bad.json");
+    let (_dir, bad) = temp_path("bad.json");
     std::fs::write(
         &bad,
         r#"{"name":"b","seed":1,"cases":["hole"],"nu":[0.8],"rays":10}"#,
     )
     .unwrap();
-    let o = run(&["run", "--workload", bad.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = run(&["run", "--workload", arg(&bad)]);
+    refused(&o);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(
         err.contains("bad.json") && err.contains("field `nu[0]`") && err.contains("> 1"),
@@ -115,29 +99,15 @@ fn bad_inputs_exit_2_and_say_where() {
     );
 
     let o = run(&["run", "--workload", "/no/such/workload.json"]);
-    assert_eq!(o.status.code(), Some(2));
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("/no/such/workload.json"));
 
-    let o = run(&[
-        "run",
-        "--workload",
-        "workloads/quick.json",
-        "--culls",
-        "bogus",
-    ]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = cli("run --workload workloads/quick.json --culls bogus", &[]);
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("unknown cull 'bogus'"));
 
-    let o = run(&[
-        "render",
-        "--scene",
-        "facing_grid",
-        "--nu",
-        "0.5",
-        "--out",
-        "/tmp/x.png",
-    ]);
-    assert_eq!(o.status.code(), Some(2));
+    let o = cli("render --scene facing_grid --nu 0.5 --out /tmp/x.png", &[]);
+    refused(&o);
     assert!(String::from_utf8_lossy(&o.stderr).contains("--nu"));
 }
 
@@ -180,7 +150,7 @@ fn the_commit_is_the_builds_not_the_current_directorys() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     let written: Vec<String> = std::fs::read_dir(dir.path().join("results"))
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
@@ -215,15 +185,14 @@ fn the_commit_is_the_builds_not_the_current_directorys() {
 /// repository's file.
 #[test]
 fn a_built_in_workload_runs_from_any_folder() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("quick.json");
+    let (dir, out) = temp_path("quick.json");
     let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
         .args(["run", "--workload", "quick", "--no-plots", "--out"])
         .arg(&out)
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&o);
     let r = Results::load(&out).unwrap();
     let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("workloads/quick.json");
     let want = torus_cull_lab::workload::spec::Workload::load(&file).unwrap();
@@ -235,8 +204,7 @@ fn a_built_in_workload_runs_from_any_folder() {
 /// unwritable `--out` is what stops it, not a missing `workloads/default.json`.
 #[test]
 fn the_default_workload_is_built_in() {
-    let dir = tempfile::tempdir().unwrap();
-    let not_a_dir = dir.path().join("file");
+    let (dir, not_a_dir) = temp_path("file");
     std::fs::write(&not_a_dir, "").unwrap();
     let out = not_a_dir.join("results.json");
     let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -245,8 +213,7 @@ fn the_default_workload_is_built_in() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = refused(&o);
     assert!(
         err.contains("--out") && !err.contains("cannot read"),
         "{err}"

@@ -124,17 +124,7 @@ pub fn escalating_families(size: usize) -> Vec<(String, Vec<RaySet>)> {
     let mut rng = Pcg64::seed_from_u64(0x0F1_5E64);
     let edges = edge_sets(&mut rng, &[1.01, 2.0, 100.0], n(300), n(200));
     families.push(("hole_edge_line".into(), edges.hole_edge));
-    for name in [
-        "spawned_bounce",
-        "spawned_bounce_scene_eps",
-        "spawned_grazing",
-        "spawned_across",
-        "spawned_saddle",
-    ] {
-        let family = torus_cull_lab::f32_check::families::all()
-            .into_iter()
-            .find(|f| f.name == name)
-            .expect("an f32-check family");
+    for family in super::spawned_families() {
         let mut sets: Vec<RaySet> = Vec::new();
         for (torus, ray) in family.generate(100, 0xF1_5E64).unwrap() {
             match sets.last_mut() {
@@ -142,7 +132,7 @@ pub fn escalating_families(size: usize) -> Vec<(String, Vec<RaySet>)> {
                 _ => sets.push((torus, vec![ray])),
             }
         }
-        families.push((name.into(), sets));
+        families.push((family.name, sets));
     }
     for (circle, sets) in SpecialCircle::ALL.into_iter().zip(edges.tangent) {
         families.push((format!("tangent ±1e-6 r {}", circle.name()), sets));

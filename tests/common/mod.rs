@@ -74,3 +74,72 @@ pub fn from_surface_reference(torus: &Torus, ray: &DRay) -> Option<Option<f64>> 
         OracleClass::Hit => Some(Some(first_crossing_from_surface(&query)?)),
     }
 }
+
+/// `f` of every item of `items`, in order, computed on two threads (each takes one half):
+/// the long tests' sweeps over ν take half the wall time on CI's two cores.
+pub fn on_two_threads<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    let f = &f;
+    std::thread::scope(|s| {
+        let handles: Vec<_> = items
+            .chunks(items.len().div_ceil(2).max(1))
+            .map(|chunk| s.spawn(move || chunk.iter().map(f).collect::<Vec<_>>()))
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap())
+            .collect()
+    })
+}
+
+/// The f32-check's spawned secondary-ray families (issue 26: bounces with two t_min,
+/// grazing, across, saddle), in the order the tests report them.
+pub fn spawned_families() -> Vec<torus_cull_lab::f32_check::families::Family> {
+    let names = [
+        "spawned_bounce",
+        "spawned_bounce_scene_eps",
+        "spawned_grazing",
+        "spawned_across",
+        "spawned_saddle",
+    ];
+    let all = torus_cull_lab::f32_check::families::all();
+    names
+        .iter()
+        .map(|name| {
+            let family = all.iter().find(|f| f.name == *name);
+            family.expect("an f32-check family").clone()
+        })
+        .collect()
+}
+
+/// Asserts that no check failed: otherwise how many did, and the first ten.
+pub fn assert_no_failures(failures: &[String]) {
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures[..failures.len().min(10)].join("\n")
+    );
+}
+
+/// `eval` rows with the optional columns t_min, t_max, on_surface (after ox … dz) on the
+/// torus R = 4, r = 1, each with the oracle's class and t_hit (`None`: no hit): the CPU
+/// modes' test and the GPU's read the same rows.
+pub const RANGE_ROWS: [(&str, &str, Option<f64>); 9] = [
+    // From the inner equator across the hole: the far wall at t = 6 …
+    ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
+    // … beyond a light at t = 5.
+    ("3,0,0,-1,0,0,0,5,1", "miss", None),
+    // From the top of the tube into it: it leaves at the bottom, t = 2 …
+    ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
+    // … not before t = 1.5.
+    ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
+    // From the top, up: nothing.
+    ("4,1,0,0,1,0,0,inf,1", "miss", None),
+    // Literal rays with a range: the top of the tube at t = 9 …
+    ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
+    ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
+    // … from inside the tube (t_min = 9.5): the oracle's hit, the exit at t = 11.
+    ("4,10,0,0,-1,0,9.5,20,0", "hit", Some(11.0)),
+    // t_min = t_max = 9: the one point of the top.
+    ("4,10,0,0,-1,0,8,10,0", "hit", Some(9.0)),
+];

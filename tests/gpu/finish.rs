@@ -12,19 +12,10 @@ use super::*;
 /// path's, checked in tests/oracle/secondary_rays.rs).
 #[test]
 fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
-    use torus_cull_lab::f32_check::{Answer, Labeled, families, tally};
+    use torus_cull_lab::f32_check::{Answer, Labeled, tally};
     let Some(gpu) = gpu() else { return };
-    for name in [
-        "spawned_bounce",
-        "spawned_bounce_scene_eps",
-        "spawned_grazing",
-        "spawned_across",
-        "spawned_saddle",
-    ] {
-        let family = families::all()
-            .into_iter()
-            .find(|f| f.name == name)
-            .expect("an f32-check family");
+    for family in crate::common::spawned_families() {
+        let name = &family.name;
         let labeled: Vec<Labeled> = family
             .generate(100, 0x6E0_0026)
             .unwrap()

@@ -714,15 +714,8 @@ fn eval_exact_gpu_takes_range_and_on_surface_columns() {
     let Some(_) = gpu() else { return };
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("rays.csv");
-    let rows: [(&str, &str, Option<f64>); 7] = [
-        ("3,0,0,-1,0,0,0,inf,1", "hit", Some(6.0)),
-        ("3,0,0,-1,0,0,0,5,1", "miss", None),
-        ("4,1,0,0,-1,0,0,2.5,1", "hit", Some(2.0)),
-        ("4,1,0,0,-1,0,0,1.5,1", "miss", None),
-        ("4,1,0,0,1,0,0,inf,1", "miss", None),
-        ("4,10,0,0,-1,0,0,8.5,0", "miss", None),
-        ("4,10,0,0,-1,0,8.5,20,0", "hit", Some(9.0)),
-    ];
+    // The CPU modes' rows up to the two from inside the tube.
+    let rows = &crate::common::RANGE_ROWS[..7];
     let csv = std::iter::once("ox,oy,oz,dx,dy,dz,t_min,t_max,on_surface")
         .chain(rows.iter().map(|r| r.0))
         .collect::<Vec<_>>()

@@ -49,16 +49,20 @@ fn kernel() -> Option<GpuIntersector> {
     }
 }
 
+/// The names of a validated module's entry points.
+fn entry_names(module: &torus_cull::gpu::wgpu::naga::Module) -> Vec<&str> {
+    module
+        .entry_points
+        .iter()
+        .map(|e| e.name.as_str())
+        .collect()
+}
+
 #[test]
 fn the_combined_shader_validates_without_an_adapter() {
     let source = combined_shader();
     let module = validate(&source).unwrap_or_else(|e| panic!("{e}"));
-    let entries: Vec<&str> = module
-        .entry_points
-        .iter()
-        .map(|e| e.name.as_str())
-        .collect();
-    assert_eq!(entries, ["shade"]);
+    assert_eq!(entry_names(&module), ["shade"]);
     // The renderer's four bindings, none of the library kernel's.
     assert_eq!(module.global_variables.len(), 4);
     assert!(source.starts_with(&wgsl_module()));
@@ -170,12 +174,7 @@ fn the_combined_shader_agrees_with_the_f64_path_on_the_adapter() {
 fn the_f64_shader_validates_with_float64_without_an_adapter() {
     let source = combined_shader_f64();
     let module = validate_f64(&source).unwrap_or_else(|e| panic!("{e}"));
-    let entries: Vec<&str> = module
-        .entry_points
-        .iter()
-        .map(|e| e.name.as_str())
-        .collect();
-    assert_eq!(entries, ["shade_f64"]);
+    assert_eq!(entry_names(&module), ["shade_f64"]);
     // The renderer's four bindings, none of the library passes'.
     assert_eq!(module.global_variables.len(), 4);
     assert!(source.starts_with(&format!("{}\n{}", wgsl_module(), wgsl_finish_module())));

@@ -14,6 +14,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::common::on_two_threads;
 use glam::{DMat3, DVec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -273,23 +274,7 @@ fn adversarial_families_keep_every_hit() {
         .iter()
         .flat_map(|&nu| SCALES.iter().map(move |&s| (nu, s)))
         .collect();
-    let tallies: Vec<(f64, f64, Tally)> = std::thread::scope(|s| {
-        let handles: Vec<_> = cells
-            .chunks(cells.len().div_ceil(2))
-            .map(|chunk| {
-                s.spawn(move || {
-                    chunk
-                        .iter()
-                        .map(|&(nu, scale)| (nu, scale, tally(nu, scale)))
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let tallies = on_two_threads(&cells, |&(nu, scale)| (nu, scale, tally(nu, scale)));
     let mut failures = Vec::new();
     let mut worst_kept = [0f64; 2];
     for (nu, scale, t) in &tallies {

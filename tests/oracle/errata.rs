@@ -42,27 +42,27 @@ fn counterexample(o: [f32; 3], d: [f32; 3], printed: PrintedCull) {
     );
 }
 
+/// Each misprint's counterexample (origin, direction): a hit its printed cull rejects.
 #[test]
-fn eq35_second_clause() {
-    counterexample(
-        [-6.0, 0.5, 0.0],
-        [1.0, 0.0, 0.0],
-        PrintedCull::CychoszPrinted,
-    );
-}
-
-#[test]
-fn eq105_band_height() {
-    counterexample(
-        [-5.0, 0.5, 2.0],
-        [1.0, 0.0, 0.0],
-        PrintedCull::SkalaPrintedC,
-    );
-}
-
-#[test]
-fn eq102_hole_edge() {
-    counterexample([0.9, -3.0, 0.5], [0.01, 1.0, 0.0], PrintedCull::SkalaEq102);
+fn each_misprint_rejects_its_counterexample() {
+    for (o, d, printed) in [
+        // Eq. 35, the second clause.
+        (
+            [-6.0, 0.5, 0.0],
+            [1.0, 0.0, 0.0],
+            PrintedCull::CychoszPrinted,
+        ),
+        // Eq. 105, the band's height.
+        (
+            [-5.0, 0.5, 2.0],
+            [1.0, 0.0, 0.0],
+            PrintedCull::SkalaPrintedC,
+        ),
+        // Eq. 102, the hole's edge.
+        ([0.9, -3.0, 0.5], [0.01, 1.0, 0.0], PrintedCull::SkalaEq102),
+    ] {
+        counterexample(o, d, printed);
+    }
 }
 
 /// On the same families the conservativeness test uses, each printed variant rejects

@@ -463,20 +463,22 @@ fn exact_f64_tangents_on_an_f64_torus() {
     assert!(tally.touches > 0);
 }
 
+/// A torus of major radius `k` and ν at a random pose, its centre `k` from the origin in a
+/// random direction, with its f32 radii.
+fn posed_torus(rng: &mut Pcg64, nu: f64, k: f64) -> (Torus, f32, f32) {
+    let (major, minor) = (k as f32, (k / nu) as f32);
+    let center = unit_vector(rng).as_vec3() * major;
+    let torus = Torus::new(center, unit_vector(rng).as_vec3(), major, minor).unwrap();
+    (torus, major, minor)
+}
+
 #[test]
 fn rays_from_inside_the_tube() {
     let mut tally = Tally::default();
     let mut rng = Pcg64::seed_from_u64(0xA14);
     for nu in NUS {
         for k in SCALES {
-            let (major, minor) = (k as f32, (k / nu) as f32);
-            let torus = Torus::new(
-                unit_vector(&mut rng).as_vec3() * major,
-                unit_vector(&mut rng).as_vec3(),
-                major,
-                minor,
-            )
-            .unwrap();
+            let (torus, major, minor) = posed_torus(&mut rng, nu, k);
             for _ in 0..150 {
                 let phi = rng.random_range(0.0..std::f64::consts::TAU);
                 let theta = rng.random_range(0.0..std::f64::consts::TAU);
@@ -511,14 +513,7 @@ fn rays_from_a_surface_point() {
     let mut rng = Pcg64::seed_from_u64(0xA15);
     for nu in NUS {
         for k in SCALES {
-            let (major, minor) = (k as f32, (k / nu) as f32);
-            let torus = Torus::new(
-                unit_vector(&mut rng).as_vec3() * major,
-                unit_vector(&mut rng).as_vec3(),
-                major,
-                minor,
-            )
-            .unwrap();
+            let (torus, major, _) = posed_torus(&mut rng, nu, k);
             let size = torus.outer_radius() as f64;
             for _ in 0..150 {
                 let target = torus.center_f64() + unit_vector(&mut rng) * f64::from(major);

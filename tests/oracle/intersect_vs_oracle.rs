@@ -2,7 +2,7 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
-use crate::common::{NUS, family, pairs, pushed_back};
+use crate::common::{NUS, assert_no_failures, family, pairs, pushed_back};
 use torus_cull::Named;
 use torus_cull::intersect;
 use torus_cull_lab::oracle::{OracleClass, Query, classify, margin_by_sampling, reference_roots};
@@ -53,12 +53,7 @@ fn intersect_finds_a_hit_exactly_when_the_oracle_says_hit() {
         }
     }
     println!("{checked} rays checked, {hits} hits, worst relative t error {worst:e}");
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures[..failures.len().min(10)].join("\n")
-    );
+    assert_no_failures(&failures);
     assert!(hits > 50_000);
 }
 

@@ -7,6 +7,7 @@
 
 use crate::common::{family, pairs, pushed_back};
 use glam::Vec3;
+use torus_cull::Named;
 use torus_cull::{
     CullKind, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Ray, Torus, TorusError,
 };
@@ -85,13 +86,7 @@ fn sized(pose: &Torus, nu: f64, outer: f64) -> (Torus, f32) {
 fn tally_at(outer: f64) -> Tally {
     let mut tally = Tally::default();
     for nu in NUS {
-        for case in [
-            Case::Uniform,
-            Case::Grazing,
-            Case::Hole,
-            Case::OuterBand,
-            Case::Camera,
-        ] {
+        for &case in Case::ALL {
             if case == Case::Hole && nu < 1.05 {
                 continue; // the hole is too narrow to sample in reasonable time
             }

@@ -5,6 +5,7 @@
 
 // Every check here runs against the harness's oracle.
 
+use crate::common::assert_no_failures;
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -141,12 +142,7 @@ fn at_the_limit_intersect_agrees_with_the_oracle_including_the_reproducer_family
         }
     }
     println!("{checked} rays checked, {hits} hits, {ambiguous} ambiguous");
-    assert!(
-        failures.is_empty(),
-        "{} failures:\n{}",
-        failures.len(),
-        failures[..failures.len().min(10)].join("\n")
-    );
+    assert_no_failures(&failures);
     assert!(
         checked > 5_000 && hits > 1_000,
         "{checked} checked, {hits} hits"

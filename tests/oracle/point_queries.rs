@@ -53,6 +53,17 @@ fn reference_distance_family(big: f64, a: f64, b: f64, x: DVec3) -> f64 {
     best
 }
 
+/// `n` random points, uniform in the box |x|, |z| ≤ 2, |y| ≤ `half_height`, times `size`.
+fn random_points(rng: &mut Pcg64, n: usize, half_height: f64, size: f64) -> Vec<DVec3> {
+    (0..n)
+        .map(|_| {
+            let x = rng.random_range(-2.0..2.0);
+            let y = rng.random_range(-half_height..half_height);
+            DVec3::new(x, y, rng.random_range(-2.0..2.0)) * size
+        })
+        .collect()
+}
+
 #[test]
 fn point_queries_against_dense_sampling_at_adversarial_points() {
     let mut rng = Pcg64::seed_from_u64(41);
@@ -77,15 +88,7 @@ fn point_queries_against_dense_sampling_at_adversarial_points() {
                 DVec3::new(big - small * 0.999, 1e-6 * small, 0.0),
                 DVec3::new(1e4 * size, 3e3 * size, -2e4 * size),
             ];
-            for _ in 0..60 {
-                points.push(
-                    DVec3::new(
-                        rng.random_range(-2.0..2.0),
-                        rng.random_range(-1.0..1.0),
-                        rng.random_range(-2.0..2.0),
-                    ) * size,
-                );
-            }
+            points.extend(random_points(&mut rng, 60, 1.0, size));
             for x in points {
                 let p = torus.point_to_world_f64(x);
                 let got = torus.project_point(p).unwrap();
@@ -169,15 +172,7 @@ fn family_point_queries_against_dense_sampling() {
                 DVec3::new(big + 0.5 * a, 0.2 * b, 0.0),
                 DVec3::new(1e3 * size, -2e2 * size, 0.0),
             ];
-            for _ in 0..40 {
-                points.push(
-                    DVec3::new(
-                        rng.random_range(-2.0..2.0),
-                        rng.random_range(-1.5..1.5),
-                        rng.random_range(-2.0..2.0),
-                    ) * size,
-                );
-            }
+            points.extend(random_points(&mut rng, 40, 1.5, size));
             for x in points {
                 let got = member.project_point(x).unwrap();
                 let want = reference_distance_family(big, a, b, x);

@@ -49,6 +49,14 @@ impl Pose {
             ax: ax * k,
         }
     }
+    /// [`Pose::random`] where `posed`, else [`Pose::canonical`] (drawing nothing).
+    fn posed_or_not(posed: bool, rng: &mut Pcg64, shape: (f64, f64, f64), k: f64) -> Pose {
+        if posed {
+            Pose::random(rng, shape, k)
+        } else {
+            Pose::canonical(shape, k)
+        }
+    }
     pub(super) fn random(rng: &mut Pcg64, shape: (f64, f64, f64), k: f64) -> Pose {
         let a = unit(rng);
         let (x, z) = a.any_orthonormal_pair();
@@ -144,11 +152,7 @@ fn rays_along_the_axis() {
     for shape in SHAPES {
         for k in SCALES {
             for posed in [false, true] {
-                let p = if posed {
-                    Pose::random(&mut rng, shape, k)
-                } else {
-                    Pose::canonical(shape, k)
-                };
+                let p = Pose::posed_or_not(posed, &mut rng, shape, k);
                 let q = p.q(DVec3::new(0.0, 10.0 * k, 0.0), DVec3::NEG_Y);
                 let ctx = format!("{p:?}");
                 let l = q.classify();
@@ -193,11 +197,7 @@ fn equatorial_rays_through_the_centre() {
     for shape in SHAPES {
         for k in SCALES {
             for posed in [false, true] {
-                let p = if posed {
-                    Pose::random(&mut rng, shape, k)
-                } else {
-                    Pose::canonical(shape, k)
-                };
+                let p = Pose::posed_or_not(posed, &mut rng, shape, k);
                 let d = if posed {
                     DVec3::new(0.6, 0.0, 0.8)
                 } else {

@@ -5,6 +5,14 @@ use super::*;
 
 /// Issue 29: the report's first line is never blank (`compare | head -1`), and a key longer
 /// than the default column keeps the columns aligned.
+/// Asserts that one of `notes` says every one of `parts`.
+fn assert_note(notes: &[String], parts: &[&str]) {
+    assert!(
+        notes.iter().any(|n| parts.iter().all(|p| n.contains(p))),
+        "no note with {parts:?} in {notes:?}"
+    );
+}
+
 #[test]
 fn first_line_is_not_blank_and_long_keys_stay_aligned() {
     let dir = tempfile::tempdir().unwrap();
@@ -14,7 +22,7 @@ fn first_line_is_not_blank_and_long_keys_stay_aligned() {
     r.rejection[1].cull = "discriminant_f64".into();
     r.save(&a).unwrap();
     r.save(&b).unwrap();
-    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, _) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 0, "{out}");
     assert!(
         out.lines().next().is_some_and(|l| !l.trim().is_empty()),
@@ -79,17 +87,17 @@ fn f32_check_files_compare_and_mixed_kinds_are_refused() {
     let mut bad = good.clone();
     bad.families[0] = family(2);
     write(&b, &bad);
-    let (code, out, err) = compare_cli(&[a.to_str().unwrap(), a.to_str().unwrap()]);
+    let (code, out, err) = compare_cli(&[arg(&a), arg(&a)]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("hole 2 cert"), "{out}");
-    let (code, out, _) = compare_cli(&[a.to_str().unwrap(), b.to_str().unwrap()]);
+    let (code, out, _) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("REGRESSION: missed/spurious/far 0/0/0 -> 2/0/0"),
         "{out}"
     );
     sample().save(&c).unwrap();
-    let (code, _, err) = compare_cli(&[a.to_str().unwrap(), c.to_str().unwrap()]);
+    let (code, _, err) = compare_cli(&[arg(&a), arg(&c)]);
     assert_eq!(code, 2, "{err}");
     assert!(
         err.contains("`f32-check`") && err.contains("`run`"),
@@ -127,7 +135,7 @@ fn estimate_only_files_are_plotted_and_compared() {
     let (a, b) = (dir.path().join("a.json"), dir.path().join("b.json"));
     gpu(2.0, "RTX").save(&a).unwrap();
     gpu(3.0, "RTX").save(&b).unwrap();
-    let (a, b) = (a.to_str().unwrap(), b.to_str().unwrap());
+    let (a, b) = (arg(&a), arg(&b));
     let (code, out, _) = compare_cli(&[a, b]);
     assert_eq!(code, 1, "{out}");
     assert!(
@@ -138,11 +146,7 @@ fn estimate_only_files_are_plotted_and_compared() {
     let (code, out, _) = compare_cli(&[a, b]);
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("meta.device: RTX vs lavapipe"), "{out}");
-    let o = Command::new(env!("CARGO_BIN_EXE_torus-cull"))
-        .args(["plot", a])
-        .output()
-        .unwrap();
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_ok(&torus_cull(&["plot", a]));
     let svg = dir.path().join("a-estimates-gpu_ns-hole.svg");
     let text = std::fs::read_to_string(&svg).expect("an estimates chart");
     assert!(
@@ -196,13 +200,12 @@ fn between_run_intervals_decide_where_both_files_have_them() {
     assert_eq!(r.regressions(), 0, "{r:?}");
     let row = r.rows.iter().find(|x| x.section == "ratio").unwrap();
     assert_eq!(row.flags, ["slower, intervals overlap (noise)"], "{row:?}");
-    assert!(
-        r.notes
-            .iter()
-            .any(|n| n.contains("old file 3 runs, new file 3 runs")
-                && n.contains("by the between-run intervals")),
-        "{:?}",
-        r.notes
+    assert_note(
+        &r.notes,
+        &[
+            "old file 3 runs, new file 3 runs",
+            "by the between-run intervals",
+        ],
     );
 
     // The same change with between-run intervals apart: a regression, saying which.
@@ -219,13 +222,12 @@ fn between_run_intervals_decide_where_both_files_have_them() {
     let single = with_ratio(1.0, [0.99, 1.01], None, 1);
     let r = compare(&single, &new, 0.1);
     assert_eq!(r.regressions(), 1, "{r:?}");
-    assert!(
-        r.notes
-            .iter()
-            .any(|n| n.contains("old file 1 run, new file 3 runs")
-                && n.contains("the old file lacks between-run intervals")),
-        "{:?}",
-        r.notes
+    assert_note(
+        &r.notes,
+        &[
+            "old file 1 run, new file 3 runs",
+            "the old file lacks between-run intervals",
+        ],
     );
 
     // A record written before the fields existed reads as one run with no between-run
