@@ -121,8 +121,10 @@ impl BendQuery {
         let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
         let events: Vec<(f64, Passage, Face)> = whole.crossings();
         // The origin's own crossing is the one nearest t = 0 within the window; any other
-        // within 2w of the origin (a near-tangent ray's exit, or its re-hit of a concave
-        // face, closer than the window) cannot be told from it at the oracle's error.
+        // ahead of the origin within 2w (a near-tangent ray's exit, or its re-hit of a
+        // concave face, closer than the window) cannot be told from it at the oracle's
+        // error. One behind the origin is not the ray's (a cap edge's other face): the ray
+        // starts past it, whichever of the two is the origin's own.
         let own = events
             .iter()
             .map(|c| c.0)
@@ -130,7 +132,7 @@ impl BendQuery {
             .min_by(|a, b| a.abs().total_cmp(&b.abs()));
         let crowded = events
             .iter()
-            .any(|c| c.0 > -window && c.0 <= 2.0 * window && Some(c.0) != own);
+            .any(|c| c.0 > 0.0 && c.0 <= 2.0 * window && Some(c.0) != own);
         if crowded {
             return None;
         }
