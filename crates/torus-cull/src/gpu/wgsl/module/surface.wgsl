@@ -225,16 +225,10 @@ fn tc_from(ray: TorusRay, t_start: f32) -> TorusRay {
 // the literal certificate may go on (the stretch before it proved clear of any root but
 // the origin's), or −1 where there is none.
 fn tc_surface_decide(ray: TorusRay, surf: TorusSurfaceRay, torus: TorusParams) -> TorusHit {
-    var c: TcSurfaceCubic;
-    c.a3 = surf.coeffs.x;
-    c.a2 = surf.coeffs.y;
-    c.a1 = surf.coeffs.z;
-    c.s = surf.coeffs.w;
-    c.e3 = surf.errors.x;
-    c.e2 = surf.errors.y;
-    c.e1 = surf.errors.z;
-    c.w_lo = surf.start.x;
-    c.w_hi = surf.start.y;
+    // Fields in TcSurfaceCubic's order: a3, a2, a1, e3, e2, e1, s, w_lo, w_hi.
+    let k = surf.coeffs;
+    let e = surf.errors;
+    let c = TcSurfaceCubic(k.x, k.y, k.z, e.x, e.y, e.z, k.w, surf.start.x, surf.start.y);
     let alpha = surf.range.x;
     let hi_up = surf.range.y;
     let hi_dn = surf.range.z;
