@@ -4,8 +4,12 @@
 //! cull can still save is its **marginal** value: quartic solves per ray beyond the box
 //! test. [`Scene::trace`] counts leaf visits, cull rejections and quartic solves, and the
 //! closest hit must be identical to [`Scene::brute_force`] whatever the cull.
+//!
+//! [`family::FamilyScene`] puts the torus family's shapes (horn and spindle tori,
+//! elliptical tubes, pipe bends) in the same BVH, through the same traversals.
 
 pub mod batched;
+pub mod family;
 pub mod rays;
 pub mod traverse;
 

@@ -10,7 +10,8 @@
 //! small at any scale (the case obvhs's node clamp at t = 10⁻⁴ loses; see
 //! [`super::traverse`]).
 //!
-//! The functions take any scene of [`Surfaces`]: its shapes' hits and spawns.
+//! The functions take any scene of [`Surfaces`]: the tori of [`Scene`] and the family
+//! shapes of [`super::family::FamilyScene`] alike.
 
 use super::{Scene, SceneHit};
 use crate::workload::CameraView;
@@ -53,7 +54,8 @@ impl Surfaces for Scene {
 pub struct Spawned {
     /// The ray (it starts on the surface of shape `from`).
     pub ray: Ray,
-    /// The shape it starts on (an index into [`Scene::tori`]).
+    /// The shape it starts on (an index into [`Scene::tori`], or into
+    /// [`super::family::FamilyScene::shapes`]).
     pub from: u32,
 }
 
