@@ -4,8 +4,12 @@
 //! cull can still save is its **marginal** value: quartic solves per ray beyond the box
 //! test. [`Scene::trace`] counts leaf visits, cull rejections and quartic solves, and the
 //! closest hit must be identical to [`Scene::brute_force`] whatever the cull.
+//!
+//! [`family::FamilyScene`] puts the torus family's shapes (horn and spindle tori,
+//! elliptical tubes, pipe bends) in the same BVH, through the same traversals.
 
 pub mod batched;
+pub mod family;
 pub mod rays;
 pub mod traverse;
 
@@ -13,7 +17,7 @@ pub use crate::scene_kind::SceneKind;
 pub use batched::{LeafBatchStats, trace_leaves_batched, trace_spawned_batched};
 
 use crate::workload::CameraView;
-use glam::{DVec3, Vec3A};
+use glam::{DVec3, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use obvhs::cwbvh::CwBvh;
@@ -161,64 +165,32 @@ impl Scene {
             })
             .collect::<Result<_, _>>()
             .map_err(|e| SceneError(e.to_string()))?;
-        let aabbs: Vec<Aabb> = tori
-            .iter()
-            .map(|t| {
-                let (lo, hi) = t.world_aabb();
-                Aabb::new(Vec3A::from(lo), Vec3A::from(hi))
-            })
-            .collect();
-        let params = BvhBuildParams {
-            max_prims_per_leaf: 1,
-            ..BvhBuildParams::medium_build()
-        };
-        let bvh = obvhs::cwbvh::builder::build_cwbvh(&aabbs, params, &mut Default::default());
-        let (lo, hi) = aabbs.iter().fold((Vec3A::MAX, Vec3A::MIN), |(lo, hi), b| {
-            (lo.min(b.min), hi.max(b.max))
-        });
-        let centre = ((lo + hi) * 0.5).as_dvec3();
-        let radius = ((hi - lo) * 0.5).as_dvec3().length();
+        let boxes: Vec<(Vec3, Vec3)> = tori.iter().map(Torus::world_aabb).collect();
+        let Boxed {
+            bvh,
+            camera,
+            bounding_sphere,
+        } = Boxed::over(&boxes, eye);
         Ok(Scene {
             kind,
             nu,
             scale,
             tori,
             bvh,
-            camera: CameraView::framing(eye, centre, (lo.as_dvec3(), hi.as_dvec3())),
-            bounding_sphere: (centre, radius),
+            camera,
+            bounding_sphere,
         })
     }
 
     /// The `size`×`size` pinhole rays through pixel centres, row-major from the top left.
     pub fn camera_rays(&self, size: usize) -> Vec<Ray> {
-        let cam = &self.camera;
-        let mut rays = Vec::with_capacity(size * size);
-        for row in 0..size {
-            for col in 0..size {
-                let u = ((col as f64 + 0.5) / size as f64 * 2.0 - 1.0) * cam.tan_half_fov;
-                let v = (1.0 - (row as f64 + 0.5) / size as f64 * 2.0) * cam.tan_half_fov;
-                let d = cam.forward + cam.right * u + cam.up * v;
-                rays.push(
-                    Ray::new(cam.eye.as_vec3(), d.as_vec3()).expect("camera rays are finite"),
-                );
-            }
-        }
-        rays
+        pinhole_rays(&self.camera, size)
     }
 
     /// `count` isotropic lines through the scene's bounding sphere (as in the `uniform`
     /// case), starting outside it.
     pub fn random_rays(&self, count: usize, seed: u64) -> Vec<Ray> {
-        let mut rng = Pcg64::seed_from_u64(seed ^ 0x5CE7_E0FF);
-        let (centre, radius) = self.bounding_sphere;
-        (0..count)
-            .map(|_| {
-                let d = crate::workload::unit_vector(&mut rng);
-                let p = centre + crate::workload::disk_point(&mut rng, d, radius);
-                Ray::new((p - d * (2.0 * radius)).as_vec3(), d.as_vec3())
-                    .expect("random rays are finite")
-            })
-            .collect()
+        lines_through(self.bounding_sphere, count, seed)
     }
 
     /// The closest hit through the BVH, with `cull` at the leaves; adds to `stats`.
@@ -354,6 +326,67 @@ impl Scene {
         }
         best
     }
+}
+
+/// A scene's BVH over one box per shape (`max_prims_per_leaf = 1`, so a leaf is a
+/// shape), and the camera at `eye` and the bounding sphere that frame the boxes.
+struct Boxed {
+    bvh: CwBvh,
+    camera: CameraView,
+    bounding_sphere: (DVec3, f64),
+}
+
+impl Boxed {
+    fn over(boxes: &[(Vec3, Vec3)], eye: DVec3) -> Boxed {
+        let aabbs: Vec<Aabb> = boxes
+            .iter()
+            .map(|&(lo, hi)| Aabb::new(Vec3A::from(lo), Vec3A::from(hi)))
+            .collect();
+        let params = BvhBuildParams {
+            max_prims_per_leaf: 1,
+            ..BvhBuildParams::medium_build()
+        };
+        let bvh = obvhs::cwbvh::builder::build_cwbvh(&aabbs, params, &mut Default::default());
+        let (lo, hi) = aabbs.iter().fold((Vec3A::MAX, Vec3A::MIN), |(lo, hi), b| {
+            (lo.min(b.min), hi.max(b.max))
+        });
+        let centre = ((lo + hi) * 0.5).as_dvec3();
+        let radius = ((hi - lo) * 0.5).as_dvec3().length();
+        Boxed {
+            bvh,
+            camera: CameraView::framing(eye, centre, (lo.as_dvec3(), hi.as_dvec3())),
+            bounding_sphere: (centre, radius),
+        }
+    }
+}
+
+/// The `size`×`size` pinhole rays of `cam` through pixel centres, row-major from the top
+/// left.
+fn pinhole_rays(cam: &CameraView, size: usize) -> Vec<Ray> {
+    let mut rays = Vec::with_capacity(size * size);
+    for row in 0..size {
+        for col in 0..size {
+            let u = ((col as f64 + 0.5) / size as f64 * 2.0 - 1.0) * cam.tan_half_fov;
+            let v = (1.0 - (row as f64 + 0.5) / size as f64 * 2.0) * cam.tan_half_fov;
+            let d = cam.forward + cam.right * u + cam.up * v;
+            rays.push(Ray::new(cam.eye.as_vec3(), d.as_vec3()).expect("camera rays are finite"));
+        }
+    }
+    rays
+}
+
+/// `count` isotropic lines through the sphere `(centre, radius)` (as in the `uniform`
+/// case), starting outside it.
+fn lines_through((centre, radius): (DVec3, f64), count: usize, seed: u64) -> Vec<Ray> {
+    let mut rng = Pcg64::seed_from_u64(seed ^ 0x5CE7_E0FF);
+    (0..count)
+        .map(|_| {
+            let d = crate::workload::unit_vector(&mut rng);
+            let p = centre + crate::workload::disk_point(&mut rng, d, radius);
+            Ray::new((p - d * (2.0 * radius)).as_vec3(), d.as_vec3())
+                .expect("random rays are finite")
+        })
+        .collect()
 }
 
 /// The range of ν in the `mixed_nu` scene.

@@ -9,19 +9,53 @@
 //! segments with long direction vectors, where a box's depth along the ray, in t, is
 //! small at any scale (the case obvhs's node clamp at t = 10⁻⁴ loses; see
 //! [`super::traverse`]).
+//!
+//! The functions take any scene of [`Surfaces`]: the tori of [`Scene`] and the family
+//! shapes of [`super::family::FamilyScene`] alike.
 
 use super::{Scene, SceneHit};
-use glam::DVec3;
+use crate::workload::CameraView;
+use glam::{DVec3, Vec3};
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use torus_cull::{Ray, intersect};
 
-/// A secondary ray and the torus it was spawned on.
+/// What a scene's secondary rays need of it: the camera and bounds that place the light,
+/// and per shape its hit's normal and its spawn API (the origin moved onto the surface).
+pub trait Surfaces {
+    /// The camera and the scene's bounding sphere (centre, radius).
+    fn view(&self) -> (&CameraView, (DVec3, f64));
+    /// Shape `id`'s nearest hit on `ray`: t and the unit normal on the side the ray came
+    /// from (the outward normal where the ray enters, its opposite where it leaves).
+    fn facing_hit(&self, id: u32, ray: &Ray) -> Option<(f32, DVec3)>;
+    /// The ray leaving shape `id`'s hit at `t` on `ray` in `dir`, spawned with the
+    /// shape's own API; `None` where the spawn fails (a point beyond f32).
+    fn spawn(&self, id: u32, ray: &Ray, t: f32, dir: Vec3) -> Option<Ray>;
+}
+
+impl Surfaces for Scene {
+    fn view(&self) -> (&CameraView, (DVec3, f64)) {
+        (&self.camera, self.bounding_sphere)
+    }
+
+    fn facing_hit(&self, id: u32, ray: &Ray) -> Option<(f32, DVec3)> {
+        let h = intersect(&self.tori[id as usize], ray)?;
+        let normal = h.normal.as_dvec3();
+        Some((h.t, if h.front_face { normal } else { -normal }))
+    }
+
+    fn spawn(&self, id: u32, ray: &Ray, t: f32, dir: Vec3) -> Option<Ray> {
+        self.tori[id as usize].spawn(ray, t, dir).ok()
+    }
+}
+
+/// A secondary ray and the shape it was spawned on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Spawned {
-    /// The ray (it starts on the surface of torus `from`).
+    /// The ray (it starts on the surface of shape `from`).
     pub ray: Ray,
-    /// The torus it starts on (an index into [`Scene::tori`]).
+    /// The shape it starts on (an index into [`Scene::tori`], or into
+    /// [`super::family::FamilyScene::shapes`]).
     pub from: u32,
 }
 
@@ -51,15 +85,16 @@ impl Spawned {
 }
 
 /// The scene's point light: beside the camera, half the scene's radius above its eye.
-pub fn light(scene: &Scene) -> DVec3 {
-    scene.camera.eye + scene.camera.up * (0.5 * scene.bounding_sphere.1)
+pub fn light(scene: &impl Surfaces) -> DVec3 {
+    let (camera, (_, radius)) = scene.view();
+    camera.eye + camera.up * (0.5 * radius)
 }
 
 /// For each hit `hits[i]` of `primary[i]`, a shadow ray from the hit to `light`, spawned
-/// on the hit torus, direction `(light − hit) · stretch`, `t_max = 1 / stretch` (the
+/// on the hit shape, direction `(light − hit) · stretch`, `t_max = 1 / stretch` (the
 /// light). A hit whose spawn fails (a point beyond f32) gives none.
 pub fn shadow_rays(
-    scene: &Scene,
+    scene: &impl Surfaces,
     primary: &[Ray],
     hits: &[SceneHit],
     light: DVec3,
@@ -72,8 +107,7 @@ pub fn shadow_rays(
             let (id, t) = (*hit)?;
             let at = ray.origin().as_dvec3() + ray.dir().as_dvec3() * f64::from(t);
             let dir = ((light - at) * f64::from(stretch)).as_vec3();
-            let torus = &scene.tori[id as usize];
-            let ray = torus.spawn(ray, t, dir).ok()?.with_t_max(1.0 / stretch);
+            let ray = scene.spawn(id, ray, t, dir)?.with_t_max(1.0 / stretch);
             Some(Spawned { ray, from: id })
         })
         .collect()
@@ -81,9 +115,9 @@ pub fn shadow_rays(
 
 /// For each hit `hits[i]` of `primary[i]`, one diffuse bounce: cosine-weighted about the
 /// normal on the side the ray came from (the unit normal plus a uniform unit vector),
-/// times `stretch`, spawned on the hit torus; deterministic in `seed`.
+/// times `stretch`, spawned on the hit shape; deterministic in `seed`.
 pub fn bounce_rays(
-    scene: &Scene,
+    scene: &impl Surfaces,
     primary: &[Ray],
     hits: &[SceneHit],
     seed: u64,
@@ -95,16 +129,13 @@ pub fn bounce_rays(
         .zip(hits)
         .filter_map(|(ray, hit)| {
             let (id, _) = (*hit)?;
-            let torus = &scene.tori[id as usize];
-            let h = intersect(torus, ray)?;
-            let normal = h.normal.as_dvec3();
-            let facing = if h.front_face { normal } else { -normal };
+            let (t, facing) = scene.facing_hit(id, ray)?;
             let dir: DVec3 = facing + crate::workload::unit_vector(&mut rng);
             if dir.length_squared() < 1e-12 {
                 return None;
             }
             let dir = (dir.normalize() * f64::from(stretch)).as_vec3();
-            let ray = torus.spawn(ray, h.t, dir).ok()?;
+            let ray = scene.spawn(id, ray, t, dir)?;
             Some(Spawned { ray, from: id })
         })
         .collect()

@@ -11,6 +11,7 @@ mod batch_bvh;
 mod batch_solve;
 mod batch_wavefront;
 mod bvh;
+mod bvh_family;
 mod bvh_rays;
 mod certified_f32;
 

@@ -1,0 +1,182 @@
+//! One shape of the family scene: a [`Toroid`] or a [`PipeBend`], its box, its exact
+//! intersection, the library's cull for it, and its spawn API.
+
+use glam::{DVec3, Vec3};
+use torus_cull::bend::{BendFace, PipeBend};
+use torus_cull::family::{Toroid, ToroidKind};
+use torus_cull::{Cull, NoCull, Ray};
+
+/// A shape of the torus family in a scene.
+// A bend (two tori and a wedge) is twice a `Toroid`'s size; the scene holds its shapes
+// once, in one Vec that the leaves read by index, so they stay unboxed: a leaf reads its
+// shape in place, and what a `Toroid` leaves unused is a few hundred bytes a shape.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FamilyShape {
+    /// A ring, horn or spindle torus with a circular or elliptical tube.
+    Toroid(Toroid),
+    /// A torus segment with a bore and end caps.
+    Bend(PipeBend),
+}
+
+/// Which kind of shape, for counting a test's hits per kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ShapeClass {
+    /// A ring torus with a circular tube (a = b).
+    Ring,
+    /// A ring torus with an elliptical tube (a ≠ b).
+    Elliptic,
+    /// R = a, either tube.
+    Horn,
+    /// R < a, either tube: the apple.
+    Spindle,
+    /// A pipe bend that is a whole ring with a bore.
+    BoredRing,
+    /// A pipe bend cut to a φ segment (with or without a bore): end caps.
+    Segment,
+}
+
+impl ShapeClass {
+    /// Every class, in the order the scene cycles through them.
+    pub const ALL: [ShapeClass; 6] = [
+        ShapeClass::Ring,
+        ShapeClass::Elliptic,
+        ShapeClass::Horn,
+        ShapeClass::Spindle,
+        ShapeClass::BoredRing,
+        ShapeClass::Segment,
+    ];
+}
+
+/// A shape's nearest hit: t, the unit outward normal, whether the ray enters there, and
+/// on a bend the face.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapeHit {
+    /// Ray parameter, in units of the ray's direction.
+    pub t: f32,
+    /// Unit outward normal, world space.
+    pub normal: Vec3,
+    /// The ray enters the solid here.
+    pub front_face: bool,
+    /// The bend's face hit (`None` on a [`Toroid`]).
+    pub face: Option<BendFace>,
+}
+
+impl FamilyShape {
+    /// Which kind of shape.
+    pub fn class(&self) -> ShapeClass {
+        match self {
+            FamilyShape::Toroid(t) => match t.kind() {
+                ToroidKind::Ring if t.aspect() == 1.0 => ShapeClass::Ring,
+                ToroidKind::Ring => ShapeClass::Elliptic,
+                ToroidKind::Horn => ShapeClass::Horn,
+                ToroidKind::Spindle => ShapeClass::Spindle,
+            },
+            FamilyShape::Bend(b) if b.delta_phi() < std::f64::consts::TAU => ShapeClass::Segment,
+            FamilyShape::Bend(_) => ShapeClass::BoredRing,
+        }
+    }
+
+    /// The world box `(min, max)` that holds the solid.
+    ///
+    /// A bend: its outer torus's box ([`torus_cull::Torus::world_aabb`]), as the solid lies
+    /// in the outer torus. A [`Toroid`] has no box of its own, so it is derived: the solid
+    /// lies in the Minkowski sum of the core circle (radius R, across the unit axis n) and
+    /// the spheroid with semi-axes a, a across n and b along n (each meridian ellipse lies
+    /// in the spheroid centred at its core point), whose half-width along the world axis
+    /// e_i is `R·√(1 − n_i²) + √(a²·(1 − n_i²) + b²·n_i²)` (support functions add; for
+    /// a = b this is `world_aabb`'s `R·√(1 − n_i²) + r`). Formed in f64, widened by
+    /// 10⁻¹⁵ of the coordinates' size for f64's rounding, and rounded outward to f32.
+    pub fn world_box(&self) -> (Vec3, Vec3) {
+        let t = match self {
+            FamilyShape::Bend(b) => return b.outer().world_aabb(),
+            FamilyShape::Toroid(t) => t,
+        };
+        let (c, n) = (t.center_f64(), t.axis_f64());
+        let (major, a, b) = (
+            t.major_radius_f64(),
+            t.radial_semi_axis_f64(),
+            t.axial_semi_axis_f64(),
+        );
+        let across = (DVec3::ONE - n * n).max(DVec3::ZERO);
+        let tube = (across * (a * a) + n * n * (b * b)).sqrt();
+        let half = across.sqrt() * major + tube;
+        let slack = (c.abs() + half) * 1e-15;
+        let (lo, hi) = (c - half - slack, c + half + slack);
+        (
+            Vec3::new(round_down(lo.x), round_down(lo.y), round_down(lo.z)),
+            Vec3::new(round_up(hi.x), round_up(hi.y), round_up(hi.z)),
+        )
+    }
+
+    /// The nearest hit in `[t_min, t_max]`: [`Toroid::intersect`] or
+    /// [`PipeBend::intersect`], each the shape's own exact intersection.
+    pub fn intersect(&self, ray: &Ray) -> Option<ShapeHit> {
+        match self {
+            FamilyShape::Toroid(t) => t.intersect(ray).map(|h| ShapeHit {
+                t: h.t,
+                normal: h.normal,
+                front_face: h.front_face,
+                face: None,
+            }),
+            FamilyShape::Bend(b) => b.intersect(ray).map(|h| ShapeHit {
+                t: h.t,
+                normal: h.normal,
+                front_face: h.front_face,
+                face: Some(h.face),
+            }),
+        }
+    }
+
+    /// Whether the ray meets the solid in `[t_min, t_max]`: the shape's own `occluded`.
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        match self {
+            FamilyShape::Toroid(t) => t.occluded(ray),
+            FamilyShape::Bend(b) => b.occluded(ray),
+        }
+    }
+
+    /// Whether `cull` keeps the ray, by the library's own rule for the shape: a member
+    /// runs it on its image line ([`Toroid::kept_by`], which declines a cull not proved
+    /// for its shape), a bend on its outer torus with the segment's wedge after it
+    /// ([`PipeBend::wedge_cull`]). Both are conservative: a kept-out ray misses the solid.
+    pub fn kept_by<C: Cull>(&self, cull: &C, ray: &Ray) -> bool {
+        match self {
+            FamilyShape::Toroid(t) => t.kept_by(cull, ray),
+            FamilyShape::Bend(b) => {
+                // `wedge_cull` takes the torus cull by value; the wedge alone on the outer
+                // torus's line is the same test after `kept_by`.
+                let line = b.outer().line_to_local(ray);
+                b.kept_by(cull, ray) && b.wedge_cull(NoCull).wedge_keeps(line.origin, line.dir)
+            }
+        }
+    }
+
+    /// The ray leaving the hit at `t` on `ray` in `dir`, marked as starting on the surface:
+    /// [`Toroid::spawn`] or [`PipeBend::spawn`]; `None` where the spawn fails.
+    pub fn spawn(&self, ray: &Ray, t: f32, dir: Vec3) -> Option<Ray> {
+        match self {
+            FamilyShape::Toroid(s) => s.spawn(ray, t, dir).ok(),
+            FamilyShape::Bend(s) => s.spawn(ray, t, dir).ok(),
+        }
+    }
+}
+
+/// The smallest f32 ≥ `x` (finite `x` within f32's range).
+fn round_up(x: f64) -> f32 {
+    let y = x as f32;
+    if f64::from(y) >= x {
+        y
+    } else if y > 0.0 {
+        f32::from_bits(y.to_bits() + 1)
+    } else if y < 0.0 {
+        f32::from_bits(y.to_bits() - 1)
+    } else {
+        f32::from_bits(1)
+    }
+}
+
+/// The largest f32 ≤ `x`.
+fn round_down(x: f64) -> f32 {
+    -round_up(-x)
+}

@@ -1,0 +1,242 @@
+//! The torus family in the BVH: `Toroid`s (ring, horn, spindle; circular and elliptical
+//! tubes) and `PipeBend`s (bores, φ segments) give brute force's answers through the lab's
+//! traversal, for camera rays (closest hit), shadow rays (any-hit, spawned on the hit
+//! shape) and one bounce per hit (closest, spawned with the shape's own spawn), with every
+//! cull at the leaves by the shapes' own rule. At R = 10⁻³ … 10³, and where obvhs's node
+//! clamp at t = 10⁻⁴ bites: shapes below its scale, and long direction vectors.
+
+// Every check here runs against brute force over all shapes, with no BVH and no cull.
+
+use std::collections::BTreeMap;
+use torus_cull::bend::BendFace;
+use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+use torus_cull_lab::scene::family::{FamilyScene, ShapeClass};
+use torus_cull_lab::scene::rays::{Spawned, bounce_rays, light, shadow_rays, stretched};
+use torus_cull_lab::scene::{SceneHit, TraceStats, same_hit};
+
+/// A scene's renderer rays and brute force's answers for them.
+struct Rays {
+    primary: Vec<Ray>,
+    primary_truth: Vec<SceneHit>,
+    bounce: Vec<Spawned>,
+    bounce_truth: Vec<SceneHit>,
+    shadow: Vec<Spawned>,
+    shadow_truth: Vec<bool>,
+}
+
+impl Rays {
+    /// Camera, random and bore rays (directions times `stretch`), their hits by brute force, and
+    /// a shadow ray and a bounce per hit.
+    fn of(scene: &FamilyScene, stretch: f32) -> Rays {
+        let mut primary = scene.camera_rays(64);
+        primary.extend(scene.random_rays(2000, 5));
+        primary.extend(scene.bore_rays(20, 6));
+        let primary = stretched(&primary, stretch);
+        let primary_truth: Vec<SceneHit> = primary.iter().map(|r| scene.brute_force(r)).collect();
+        let bounce = bounce_rays(scene, &primary, &primary_truth, 11, stretch);
+        let shadow = shadow_rays(scene, &primary, &primary_truth, light(scene), stretch);
+        Rays {
+            bounce_truth: bounce
+                .iter()
+                .map(|s| scene.brute_force_spawned(s))
+                .collect(),
+            shadow_truth: shadow
+                .iter()
+                .map(|s| scene.brute_force_occluded_spawned(s))
+                .collect(),
+            primary,
+            primary_truth,
+            bounce,
+            shadow,
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.primary.len() + self.bounce.len() + self.shadow.len()
+    }
+
+    /// Camera and random rays' hits, per class of the shape hit.
+    fn hits_per_class(&self, scene: &FamilyScene) -> BTreeMap<ShapeClass, usize> {
+        let mut per = BTreeMap::new();
+        for (id, _) in self.primary_truth.iter().flatten() {
+            *per.entry(scene.shapes[*id as usize].class()).or_insert(0) += 1;
+        }
+        per
+    }
+
+    /// The bends' hits (camera, random and bounce rays) per face.
+    fn bend_hits_per_face(&self, scene: &FamilyScene) -> BTreeMap<String, usize> {
+        let mut hit: Vec<(usize, Ray)> = Vec::new();
+        for (ray, h) in self.primary.iter().zip(&self.primary_truth) {
+            hit.extend(h.map(|(id, _)| (id as usize, *ray)));
+        }
+        for (s, h) in self.bounce.iter().zip(&self.bounce_truth) {
+            // A bounce is a surface ray on its own shape only.
+            hit.extend(h.map(|(id, _)| {
+                let ray = if id == s.from { s.ray } else { s.literal() };
+                (id as usize, ray)
+            }));
+        }
+        let mut per = BTreeMap::new();
+        for (id, ray) in hit {
+            if let Some(face) = scene.shapes[id].intersect(&ray).and_then(|h| h.face) {
+                *per.entry(format!("{face:?}")).or_insert(0) += 1;
+            }
+        }
+        per
+    }
+
+    /// Bounces whose closest hit is on another shape than their own, at t below `t`.
+    fn neighbour_hits_below(&self, t: f32) -> usize {
+        self.bounce
+            .iter()
+            .zip(&self.bounce_truth)
+            .filter(|(s, h)| h.is_some_and(|(id, th)| id != s.from && th < t))
+            .count()
+    }
+
+    /// Hits of each kind: camera and random rays, bounces, blocked shadow rays.
+    fn counts(&self) -> (usize, usize, usize) {
+        (
+            self.primary_truth.iter().flatten().count(),
+            self.bounce_truth.iter().flatten().count(),
+            self.shadow_truth.iter().filter(|&&b| b).count(),
+        )
+    }
+}
+
+/// Per cull: the rays whose BVH answer differs from brute force, as messages, and the
+/// work counts.
+struct Check<'a>(&'a FamilyScene, &'a Rays);
+
+impl CullVisitor for Check<'_> {
+    type Output = (Vec<String>, TraceStats);
+    fn visit<C: Cull>(self, cull: C) -> (Vec<String>, TraceStats) {
+        let (scene, rays) = (self.0, self.1);
+        let mut stats = TraceStats::default();
+        let mut wrong = Vec::new();
+        for (ray, truth) in rays.primary.iter().zip(&rays.primary_truth) {
+            let got = scene.trace(&cull, ray, &mut stats);
+            if !same_hit(got, *truth) {
+                wrong.push(format!("closest {ray:?}: bvh {got:?}, brute {truth:?}"));
+            }
+        }
+        for (s, truth) in rays.bounce.iter().zip(&rays.bounce_truth) {
+            let got = scene.trace_spawned(&cull, s, &mut stats);
+            if !same_hit(got, *truth) {
+                wrong.push(format!("bounce {s:?}: bvh {got:?}, brute {truth:?}"));
+            }
+        }
+        for (s, &truth) in rays.shadow.iter().zip(&rays.shadow_truth) {
+            let got = scene.occluded_spawned(&cull, s, &mut stats);
+            if got != truth {
+                wrong.push(format!("any-hit {s:?}: bvh {got}, brute {truth}"));
+            }
+        }
+        assert_eq!(stats.leaf_visits, stats.cull_rejects + stats.quartic_solves);
+        (wrong, stats)
+    }
+}
+
+/// Every cull (`none`: the exact intersection alone) against brute force, closest and
+/// any-hit; panics naming the first mismatches.
+fn assert_all_match(scene: &FamilyScene, rays: &Rays, what: &str) {
+    let (hits, rehits, blocked) = rays.counts();
+    eprintln!(
+        "{what}: {} camera/random rays ({hits} hit), {} bounces ({rehits} hit), {} shadow \
+         rays ({blocked} blocked); hits per class {:?}, bends' hits per face {:?}",
+        rays.primary.len(),
+        rays.bounce.len(),
+        rays.shadow.len(),
+        rays.hits_per_class(scene),
+        rays.bend_hits_per_face(scene)
+    );
+    for cull in CullKind::TIMED {
+        let (wrong, stats) = cull.visit(Check(scene, rays));
+        eprintln!(
+            "  {cull}: {} wrong; per ray {:.3} leaf visits, {:.3} culled, {:.3} solves",
+            wrong.len(),
+            stats.leaf_visits as f64 / rays.len() as f64,
+            stats.cull_rejects as f64 / rays.len() as f64,
+            stats.quartic_solves as f64 / rays.len() as f64
+        );
+        assert!(
+            wrong.is_empty(),
+            "{what}: {cull}: {} of {} rays wrong, e.g.\n{}",
+            wrong.len(),
+            rays.len(),
+            wrong[..wrong.len().min(3)].join("\n")
+        );
+    }
+}
+
+/// Every class of shape hit by at least 10 camera, random and bore rays, and every face of
+/// the bends (outer, bore, both caps) by at least 5 of those and the bounces.
+fn assert_every_class_hit(scene: &FamilyScene, rays: &Rays, what: &str) {
+    let per = rays.hits_per_class(scene);
+    for class in ShapeClass::ALL {
+        let n = per.get(&class).copied().unwrap_or(0);
+        assert!(n >= 10, "{what}: {class:?} hit {n} times: test too weak");
+    }
+    let faces = rays.bend_hits_per_face(scene);
+    for face in [
+        BendFace::Outer,
+        BendFace::Inner,
+        BendFace::StartCap,
+        BendFace::EndCap,
+    ] {
+        let n = faces.get(&format!("{face:?}")).copied().unwrap_or(0);
+        assert!(
+            n >= 5,
+            "{what}: bends' {face:?} hit {n} times: test too weak"
+        );
+    }
+}
+
+/// The scene spread out and packed (shapes overlapping, rays meeting several boxes), at
+/// R = 10⁻³, 1 and 10³: camera, shadow and bounce rays.
+#[test]
+fn family_rays_match_brute_force_at_every_scale() {
+    for spread in [1.5, 0.5] {
+        for scale in [1e-3, 1.0, 1e3] {
+            let what = format!("spread {spread} R={scale}");
+            let scene = FamilyScene::build(120, 7, scale, spread).unwrap();
+            let rays = Rays::of(&scene, 1.0);
+            let (hits, rehits, blocked) = rays.counts();
+            assert!(
+                hits > 200 && rehits > 30 && blocked > 10 && blocked < rays.shadow.len(),
+                "{what}: {hits} hits, {rehits} bounces hit, {blocked} of {} shadow rays \
+                 blocked: test too weak",
+                rays.shadow.len()
+            );
+            assert_every_class_hit(&scene, &rays, &what);
+            assert_all_match(&scene, &rays, &what);
+        }
+    }
+}
+
+/// Shapes below the clamp's scale (R = 10⁻⁵, packed, unit directions): bounces re-hit a
+/// neighbour at t < 10⁻⁴, inside a box that obvhs's node test skips.
+#[test]
+fn tiny_family_below_obvhs_clamp() {
+    let scene = FamilyScene::build(120, 3, 1e-5, 0.5).unwrap();
+    let rays = Rays::of(&scene, 1.0);
+    let shallow = rays.neighbour_hits_below(1e-4);
+    eprintln!("{shallow} bounces hit a neighbour below t = 1e-4");
+    assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");
+    assert_every_class_hit(&scene, &rays, "R = 1e-5");
+    assert_all_match(&scene, &rays, "R = 1e-5");
+}
+
+/// Shapes of R = 1 (packed) and directions 10⁵ long: every box within 10 of a spawned
+/// ray's origin lies below t = 10⁻⁴.
+#[test]
+fn long_directions_family_under_obvhs_clamp() {
+    let scene = FamilyScene::build(120, 3, 1.0, 0.5).unwrap();
+    let rays = Rays::of(&scene, 1e5);
+    let shallow = rays.neighbour_hits_below(1e-4);
+    eprintln!("{shallow} bounces hit a neighbour below t = 1e-4");
+    assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");
+    assert_every_class_hit(&scene, &rays, "|d| = 1e5");
+    assert_all_match(&scene, &rays, "|d| = 1e5");
+}
