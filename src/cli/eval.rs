@@ -7,11 +7,13 @@ use std::process::ExitCode;
 
 /// Runs `eval`.
 pub fn eval(
-    radii: (f32, f32, Option<f32>),
+    ((major, minor, axial), bend): ((f32, f32, Option<f32>), torus_cull_lab::eval::BendFlags),
     precision: torus_cull_lab::eval::Precision,
     rays: &std::path::Path,
     out: Option<&std::path::Path>,
 ) -> CliResult {
+    // The shape first: a bad flag is reported before any file is opened.
+    let target = torus_cull_lab::eval::Target::with_bend(major, minor, axial, bend)?;
     let name = rays.display().to_string();
     if let Some(out) = out {
         if name != "-" {
@@ -32,8 +34,8 @@ pub fn eval(
         Some(path) => {
             let named = |e: std::io::Error| format!("--out {}: {e}", path.display());
             let mut file = torus_cull_lab::output::Output::create(path).map_err(named)?;
-            let rows = torus_cull_lab::eval::eval_family_csv(
-                radii,
+            let rows = torus_cull_lab::eval::eval_target_csv(
+                target,
                 precision,
                 input,
                 &name,
@@ -44,8 +46,8 @@ pub fn eval(
                 Err(e) => Err(e.into()),
             }
         }
-        None => torus_cull_lab::eval::eval_family_csv(
-            radii,
+        None => torus_cull_lab::eval::eval_target_csv(
+            target,
             precision,
             input,
             &name,

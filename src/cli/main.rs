@@ -156,6 +156,19 @@ enum Command {
         /// of the torus family (--exact f64 only).
         #[arg(long = "axial", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         axial: Option<f32>,
+        /// A pipe bend's bore r_min, 0 <= r_min < r (default 0): with --bore, --phi-start
+        /// or --delta-phi the rows are answered for the solid of a pipe bend (centre 0,
+        /// axis +y, φ = 0 along +x, φ growing toward −z) whose outer tube is --minor: its
+        /// nearest crossing of any face, the torus culls on its outer torus, and the bend
+        /// oracle (--exact f64 only; a whole bend is the ring torus).
+        #[arg(long = "bore", allow_hyphen_values = true)]
+        bore: Option<f64>,
+        /// The bend's segment start φ₀ in radians, finite (default 0).
+        #[arg(long = "phi-start", allow_hyphen_values = true)]
+        phi_start: Option<f64>,
+        /// The bend's segment Δφ in radians, 0 < Δφ <= 2π (default 2π).
+        #[arg(long = "delta-phi", allow_hyphen_values = true)]
+        delta_phi: Option<f64>,
         /// Input CSV with header ox,oy,oz,dx,dy,dz (`-` for stdin), optionally followed
         /// by t_min, t_max, on_surface (any subset, in this order).
         ///
@@ -263,6 +276,9 @@ fn main() -> ExitCode {
             major,
             minor,
             axial,
+            bore,
+            phi_start,
+            delta_phi,
             rays,
             out,
             precision,
@@ -281,7 +297,10 @@ fn main() -> ExitCode {
                     "--exact gpu takes f32 rays: drop --precision f64, or use --exact f64".into(),
                 ),
             };
-            precision.and_then(|p| eval::eval((major, minor, axial), p, &rays, out.as_deref()))
+            precision.and_then(|p| {
+                let shape = ((major, minor, axial), (bore, phi_start, delta_phi));
+                eval::eval(shape, p, &rays, out.as_deref())
+            })
         }
     };
     match result {

@@ -62,7 +62,7 @@ use std::io::{BufRead, Write};
 use torus_cull::family::ToroidError;
 use torus_cull::{DRay, Ray, Torus, TorusError, intersect_f32};
 
-pub use target::{Target, size};
+pub use target::{BendFlags, Target, size};
 
 /// The input header's six required columns.
 pub const INPUT_HEADER: &str = "ox,oy,oz,dx,dy,dz";
@@ -117,6 +117,9 @@ pub enum EvalError {
     Torus(TorusError),
     /// The family member's parameters are invalid (`--axial`, or a horn or spindle).
     Toroid(ToroidError),
+    /// The pipe bend's parameters are invalid (`--bore`, `--phi-start`, `--delta-phi`),
+    /// the message naming the flag and the allowed range.
+    Bend(String),
     /// The mode (`--exact f32`, `--exact gpu`) takes a circular ring torus only.
     Mode {
         /// The flag as typed.
@@ -145,6 +148,7 @@ impl fmt::Display for EvalError {
         match self {
             EvalError::Torus(e) => write!(f, "--major/--minor: {e}"),
             EvalError::Toroid(e) => write!(f, "{}", target::flag_error(e)),
+            EvalError::Bend(e) => write!(f, "{e}"),
             EvalError::Mode { mode, message } => write!(f, "{mode}: {message}"),
             EvalError::Row {
                 input,
@@ -191,9 +195,21 @@ pub fn eval_family_csv(
     precision: Precision,
     input: impl BufRead,
     input_name: &str,
-    mut output: impl Write,
+    output: impl Write,
 ) -> Result<usize, EvalError> {
     let target = Target::new(major_radius, minor_radius, axial)?;
+    eval_target_csv(target, precision, input, input_name, output)
+}
+
+/// [`eval_csv`] for any [`Target`]: the ring torus, a family member or a pipe bend
+/// ([`Target::with_bend`]).
+pub fn eval_target_csv(
+    target: Target,
+    precision: Precision,
+    input: impl BufRead,
+    input_name: &str,
+    mut output: impl Write,
+) -> Result<usize, EvalError> {
     match precision {
         Precision::CertifiedF32 => _ = target.as_torus("--exact f32")?,
         Precision::CertifiedGpu => _ = target.as_torus("--exact gpu")?,

@@ -9,10 +9,20 @@
 //! oracle column by the family oracle ([`crate::family_label`]), and its `on_surface`
 //! origins are checked against its own surface (the family oracle's nearest point). The certified f32 path and the GPU take a [`Torus`]: a family
 //! member is refused there ([`Toroid::as_torus`]), the error naming the mode and the shape.
+//!
+//! **The pipe bend** (`--bore r_min`, `--phi-start φ₀`, `--delta-phi Δφ`): the solid of
+//! [`PipeBend::canonical`] (centre 0, axis +y, φ = 0 along +x), answered by
+//! [`PipeBend::intersect`] (its nearest crossing of any face), its culls by
+//! [`PipeBend::kept_by`] (the torus cull on the outer torus, a whole-line test), its
+//! oracle column by the bend oracle ([`BendQuery`], the on-surface rule for `on_surface`
+//! rows), and an `on_surface` origin must lie within [`ON_SURFACE_REL`]·(R + r_max) of a
+//! face. A whole bend (no bore, Δφ = 2π) is the ring torus, answered as without the flags.
 
 use super::EvalError;
+use crate::oracle::bend::BendQuery;
 use crate::oracle::{OracleLabel, Query, classify_from_surface};
 use glam::{DVec3, Vec3};
+use torus_cull::bend::PipeBend;
 use torus_cull::family::{Toroid, ToroidError};
 use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, Torus};
 
@@ -23,7 +33,12 @@ pub enum Target {
     Ring(Torus),
     /// Any other member of the family.
     Family(Toroid),
+    /// A pipe bend with a bore or a φ segment.
+    Bend(PipeBend),
 }
+
+/// `--bore`, `--phi-start`, `--delta-phi` as given (each `None` when absent).
+pub type BendFlags = (Option<f64>, Option<f64>, Option<f64>);
 
 impl Target {
     /// The canonical torus for `--major R --minor r [--axial b]`. The circular ring
@@ -31,6 +46,38 @@ impl Target {
     /// with its errors; every other member is [`Toroid::new`]'s, its errors naming the
     /// flags.
     pub fn new(major: f32, minor: f32, axial: Option<f32>) -> Result<Target, EvalError> {
+        Target::with_bend(major, minor, axial, (None, None, None))
+    }
+
+    /// [`Target::new`], or the pipe bend of `--bore`, `--phi-start` and `--delta-phi`
+    /// where any is given (r_min 0, φ₀ 0 and Δφ 2π by default): [`PipeBend::canonical`]'s,
+    /// with its errors naming the flags. A whole bend is the ring torus. A bend takes a
+    /// circular tube (no `--axial` other than `--minor`).
+    pub fn with_bend(
+        major: f32,
+        minor: f32,
+        axial: Option<f32>,
+        (bore, start, delta): BendFlags,
+    ) -> Result<Target, EvalError> {
+        if bore.is_some() || start.is_some() || delta.is_some() {
+            if axial.is_some_and(|b| b != minor) {
+                return Err(EvalError::Bend(
+                    "--axial with --bore/--phi-start/--delta-phi: a pipe bend's tube is                      circular (give --axial equal to --minor, or leave it out)"
+                        .into(),
+                ));
+            }
+            let bend = PipeBend::canonical(
+                f64::from(major),
+                bore.unwrap_or(0.0),
+                f64::from(minor),
+                start.unwrap_or(0.0),
+                delta.unwrap_or(std::f64::consts::TAU),
+            )
+            .map_err(|e| EvalError::Bend(bend_flag_error(&e)))?;
+            if bend.as_torus().is_err() {
+                return Ok(Target::Bend(bend));
+            }
+        }
         let circular = axial.is_none_or(|b| b == minor);
         let horn_or_spindle = major > 0.0 && minor > 0.0 && major <= minor;
         if circular && !horn_or_spindle {
@@ -59,6 +106,17 @@ impl Target {
                     toroid.axial_semi_axis_f64()
                 ),
             }),
+            Target::Bend(bend) => Err(EvalError::Mode {
+                mode,
+                message: format!(
+                    "a pipe bend (R = {}, r_min = {}, r_max = {}, Δφ = {}): {}; use --exact f64",
+                    bend.major_radius_f64(),
+                    bend.bore_radius_f64(),
+                    bend.tube_radius_f64(),
+                    bend.delta_phi(),
+                    torus_cull::bend::BendError::NotWhole
+                ),
+            }),
         }
     }
 
@@ -76,6 +134,14 @@ impl Target {
                 })
             }
             Target::Family(toroid) => crate::family_label::label(toroid, ray),
+            Target::Bend(bend) => {
+                let query = bend_query(bend, ray);
+                Ok(if ray.starts_on_surface() {
+                    query.classify_from_surface()
+                } else {
+                    query.classify()
+                })
+            }
         }
     }
 
@@ -84,6 +150,7 @@ impl Target {
         match self {
             Target::Ring(torus) => torus_cull::intersect(torus, ray).map(|h| h.t),
             Target::Family(toroid) => toroid.intersect(ray).map(|h| h.t),
+            Target::Bend(bend) => bend.intersect(ray).map(|h| h.t),
         }
     }
 
@@ -101,6 +168,10 @@ impl Target {
             Target::Family(toroid) => CullKind::TIMED
                 .iter()
                 .map(|cull| toroid.kept_by(cull, ray))
+                .collect(),
+            Target::Bend(bend) => CullKind::TIMED
+                .iter()
+                .map(|cull| bend.kept_by(cull, ray))
                 .collect(),
         }
     }
@@ -127,6 +198,14 @@ impl Target {
                 let off = moved.max(query.g(0.0).abs());
                 (off, ON_SURFACE_REL * size(toroid), "(R + max(a, b))")
             }
+            Target::Bend(bend) => {
+                let size = bend.major_radius_f64() + bend.tube_radius_f64();
+                let off = bend
+                    .signed_distance(origin)
+                    .map_err(|e| e.to_string())?
+                    .abs();
+                (off, ON_SURFACE_REL * size, "(R + r_max)")
+            }
         };
         if off > bound {
             return Err(format!(
@@ -136,6 +215,47 @@ impl Target {
             ));
         }
         Ok(())
+    }
+}
+
+/// The bend oracle's question for `ray` against `bend` (its canonical frame).
+fn bend_query(bend: &PipeBend, ray: &DRay) -> BendQuery {
+    BendQuery::new(
+        (DVec3::ZERO, DVec3::Y, DVec3::X),
+        (
+            bend.major_radius_f64(),
+            bend.bore_radius_f64(),
+            bend.tube_radius_f64(),
+        ),
+        (bend.start_phi(), bend.delta_phi()),
+        ray.origin(),
+        ray.dir(),
+        (ray.t_min(), ray.t_max()),
+    )
+}
+
+/// A bend's error with the flags that gave the values.
+fn bend_flag_error(e: &torus_cull::bend::BendError) -> String {
+    use torus_cull::bend::BendError;
+    match e {
+        BendError::Bore {
+            bore_radius,
+            tube_radius,
+        } => format!(
+            "--bore {bore_radius} is invalid (allowed: 0 <= --bore < --minor = {tube_radius})"
+        ),
+        BendError::Segment { name, value } => {
+            let flag = if *name == "start_phi" {
+                "--phi-start"
+            } else {
+                "--delta-phi"
+            };
+            format!(
+                "{flag} {value} is invalid (allowed: --phi-start finite; 0 < --delta-phi <= 2*pi = {})",
+                std::f64::consts::TAU
+            )
+        }
+        other => format!("--major/--minor/--bore: {other}"),
     }
 }
 

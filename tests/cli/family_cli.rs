@@ -2,28 +2,10 @@
 //! circular ring torus's rows unchanged, and `torus-cull family` at a tiny size.
 
 use super::support::{
-    arg, assert_ok, cli_ok, compare_clean_and_worse, read_json, refused, stderr, svgs, temp_path,
-    torus_cull,
+    arg, assert_ok, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused, stderr, svgs,
+    temp_path, torus_cull,
 };
 use std::path::Path;
-
-/// `eval` rows of `csv` (written to a temp file) as columns, or the error text.
-fn eval_rows(csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
-    let (_dir, input) = temp_path("rays.csv");
-    std::fs::write(&input, csv).unwrap();
-    let mut all = vec!["eval", "--rays", arg(&input)];
-    all.extend_from_slice(args);
-    let out = torus_cull(&all);
-    if !out.status.success() {
-        return Err(stderr(&out));
-    }
-    Ok(String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(str::to_string).collect())
-        .collect())
-}
 
 #[test]
 fn spindle_rows_cross_the_apple_only() {

@@ -181,3 +181,21 @@ pub fn svgs(dir: &Path) -> Vec<String> {
 pub fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
+
+/// `eval` rows of `csv` (written to a temp file) as columns, or the error text.
+pub fn eval_rows(csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
+    let (_dir, input) = temp_path("rays.csv");
+    std::fs::write(&input, csv).unwrap();
+    let mut all = vec!["eval", "--rays", arg(&input)];
+    all.extend_from_slice(args);
+    let out = torus_cull(&all);
+    if !out.status.success() {
+        return Err(stderr(&out));
+    }
+    Ok(String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(str::to_string).collect())
+        .collect())
+}

@@ -444,6 +444,7 @@ impl Prepared {
         })
     }
 
+    #[cfg(feature = "gpu")]
     /// The GPU kernel's `TorusSurfaceRay` words but the last row's literal start:
     /// `(a3, a2, a1, s)`, `(e3, e2, e1, u₀)`, `(α, v_max↑, v_max↓, t per v)`, `(w_lo,
     /// w_hi)`. `t per v` is `R/|d|` rounded to f32, whose rounding the kernel bounds.
