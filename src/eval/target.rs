@@ -27,14 +27,14 @@ use torus_cull::family::{Toroid, ToroidError};
 use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, Torus};
 
 /// The torus `eval` answers for.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub enum Target {
     /// The circular ring torus: R > r, no `--axial` or `--axial` = `--minor`.
     Ring(Torus),
     /// Any other member of the family.
     Family(Toroid),
-    /// A pipe bend with a bore or a φ segment.
-    Bend(PipeBend),
+    /// A pipe bend with a bore or a φ segment (boxed: it holds two tori).
+    Bend(Box<PipeBend>),
 }
 
 /// `--bore`, `--phi-start`, `--delta-phi` as given (each `None` when absent).
@@ -75,7 +75,7 @@ impl Target {
             )
             .map_err(|e| EvalError::Bend(bend_flag_error(&e)))?;
             if bend.as_torus().is_err() {
-                return Ok(Target::Bend(bend));
+                return Ok(Target::Bend(Box::new(bend)));
             }
         }
         let circular = axial.is_none_or(|b| b == minor);
