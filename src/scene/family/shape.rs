@@ -1,7 +1,7 @@
 //! One shape of the family scene: a [`Toroid`] or a [`PipeBend`], its box, its exact
 //! intersection, the library's cull for it, and its spawn API.
 
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use torus_cull::bend::{BendFace, PipeBend};
 use torus_cull::family::{Toroid, ToroidKind};
 use torus_cull::{Cull, NoCull, Ray};
@@ -77,36 +77,14 @@ impl FamilyShape {
         }
     }
 
-    /// The world box `(min, max)` that holds the solid.
-    ///
-    /// A bend: its outer torus's box ([`torus_cull::Torus::world_aabb`]), as the solid lies
-    /// in the outer torus. A [`Toroid`] has no box of its own, so it is derived: the solid
-    /// lies in the Minkowski sum of the core circle (radius R, across the unit axis n) and
-    /// the spheroid with semi-axes a, a across n and b along n (each meridian ellipse lies
-    /// in the spheroid centred at its core point), whose half-width along the world axis
-    /// e_i is `R·√(1 − n_i²) + √(a²·(1 − n_i²) + b²·n_i²)` (support functions add; for
-    /// a = b this is `world_aabb`'s `R·√(1 − n_i²) + r`). Formed in f64, widened by
-    /// 10⁻¹⁵ of the coordinates' size for f64's rounding, and rounded outward to f32.
+    /// The world box `(min, max)` that holds the solid: [`Toroid::world_aabb`]; for a
+    /// bend its outer torus's ([`torus_cull::Torus::world_aabb`]), as the solid lies in the
+    /// outer torus.
     pub fn world_box(&self) -> (Vec3, Vec3) {
-        let t = match self {
-            FamilyShape::Bend(b) => return b.outer().world_aabb(),
-            FamilyShape::Toroid(t) => t,
-        };
-        let (c, n) = (t.center_f64(), t.axis_f64());
-        let (major, a, b) = (
-            t.major_radius_f64(),
-            t.radial_semi_axis_f64(),
-            t.axial_semi_axis_f64(),
-        );
-        let across = (DVec3::ONE - n * n).max(DVec3::ZERO);
-        let tube = (across * (a * a) + n * n * (b * b)).sqrt();
-        let half = across.sqrt() * major + tube;
-        let slack = (c.abs() + half) * 1e-15;
-        let (lo, hi) = (c - half - slack, c + half + slack);
-        (
-            Vec3::new(round_down(lo.x), round_down(lo.y), round_down(lo.z)),
-            Vec3::new(round_up(hi.x), round_up(hi.y), round_up(hi.z)),
-        )
+        match self {
+            FamilyShape::Toroid(t) => t.world_aabb(),
+            FamilyShape::Bend(b) => b.outer().world_aabb(),
+        }
     }
 
     /// The nearest hit in `[t_min, t_max]`: [`Toroid::intersect`] or
@@ -160,23 +138,4 @@ impl FamilyShape {
             FamilyShape::Bend(s) => s.spawn(ray, t, dir).ok(),
         }
     }
-}
-
-/// The smallest f32 ≥ `x` (finite `x` within f32's range).
-fn round_up(x: f64) -> f32 {
-    let y = x as f32;
-    if f64::from(y) >= x {
-        y
-    } else if y > 0.0 {
-        f32::from_bits(y.to_bits() + 1)
-    } else if y < 0.0 {
-        f32::from_bits(y.to_bits() - 1)
-    } else {
-        f32::from_bits(1)
-    }
-}
-
-/// The largest f32 ≤ `x`.
-fn round_down(x: f64) -> f32 {
-    -round_up(-x)
 }

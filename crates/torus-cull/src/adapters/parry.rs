@@ -113,16 +113,6 @@ fn to_parry(v: Vec3) -> Vector {
     Vector::from_array(v.to_array())
 }
 
-/// The smallest f32 at or above `x` (finite, non-negative `x`).
-fn round_up(x: f64) -> f32 {
-    let r = x as f32;
-    if f64::from(r) < x {
-        f32::from_bits(r.to_bits() + 1)
-    } else {
-        r
-    }
-}
-
 impl RayCast for ParryTorus {
     fn cast_local_ray_and_get_normal(
         &self,
@@ -195,7 +185,7 @@ impl Shape for ParryTorus {
     /// Centre 0, radius R + r rounded up.
     fn compute_local_bounding_sphere(&self) -> BoundingSphere {
         let (_, radius) = self.torus.bounding_sphere();
-        BoundingSphere::new(Vector::ZERO, round_up(radius))
+        BoundingSphere::new(Vector::ZERO, crate::num::round::up(radius))
     }
 
     /// The library's exact box of the posed torus ([`Torus::world_aabb`]: each half-width

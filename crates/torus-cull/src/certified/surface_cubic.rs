@@ -65,6 +65,7 @@
 use super::certificate::{BRACKET, U32};
 use crate::Torus;
 use crate::intersect::from_surface::{SurfaceCubic, starts_on_the_surface};
+use crate::num::round::{down, up};
 use glam::DVec3;
 
 /// The f64 setup's error on each of `a3, a2, a1, δ`, relative to the size of what forms
@@ -84,27 +85,6 @@ pub(crate) enum Verdict {
     Clear(f32),
     /// Not proved.
     Escalate,
-}
-
-/// `x` rounded up to f32 (for non-negative bounds); `+∞` past f32's range.
-fn up(x: f64) -> f32 {
-    let y = x as f32;
-    if f64::from(y) < x { next_up(y) } else { y }
-}
-
-/// `x` rounded down to f32.
-fn down(x: f64) -> f32 {
-    let y = x as f32;
-    if f64::from(y) > x { -next_up(-y) } else { y }
-}
-
-/// The next f32 above `y` (finite `y`).
-fn next_up(y: f32) -> f32 {
-    if y == 0.0 {
-        return f32::from_bits(1);
-    }
-    let bits = y.to_bits();
-    f32::from_bits(if y > 0.0 { bits + 1 } else { bits - 1 })
 }
 
 /// 1 + 2⁻²⁰: inflates a bound formed in f32 past its own roundings (a handful, 2⁻²⁴ each).

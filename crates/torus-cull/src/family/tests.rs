@@ -300,3 +300,47 @@ fn the_culls_keep_every_hit_of_the_shapes_they_accept() {
         &wrong[..wrong.len().min(10)]
     );
 }
+
+/// `world_aabb` holds every surface point of posed members (rings, horns, spindles, flat
+/// and tall tubes, at several scales), each formed in f64 from the meridian ellipse, and
+/// is tight: each face of the box is within 1 % of the size of the farthest point.
+#[test]
+fn the_world_box_holds_the_surface_and_is_tight() {
+    let mut rng = Pcg64::seed_from_u64(4104);
+    for (major, a, b) in [
+        (4.0, 1.0, 0.25),
+        (4.0, 1.0, 4.0),
+        (1.0, 1.0, 2.0),
+        (0.5, 1.0, 0.5),
+    ] {
+        for scale in [1e-3, 1.0, 1e3] {
+            let center = DVec3::new(3.0, -2.0, 5.0) * scale;
+            let axis = DVec3::new(0.3, 1.0, -0.2);
+            let toroid =
+                Toroid::new_f64(center, axis, major * scale, a * scale, b * scale).unwrap();
+            let (lo, hi) = toroid.world_aabb();
+            let (lo, hi) = (lo.as_dvec3(), hi.as_dvec3());
+            let to_world = toroid.image().to_local_rotation_f64().transpose();
+            let (mut seen_lo, mut seen_hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+            for _ in 0..20_000 {
+                let theta: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+                let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+                let rho = (major + a * theta.cos()) * scale;
+                let local = DVec3::new(rho * phi.cos(), b * scale * theta.sin(), rho * phi.sin());
+                let p = toroid.center_f64() + to_world * local;
+                assert!(
+                    p.cmpge(lo).all() && p.cmple(hi).all(),
+                    "({major}, {a}, {b}) × {scale}: {p} outside {lo} .. {hi}"
+                );
+                seen_lo = seen_lo.min(p);
+                seen_hi = seen_hi.max(p);
+            }
+            let size = (major + a.max(b)) * scale;
+            let gap = (seen_lo - lo).max(hi - seen_hi).max_element();
+            assert!(
+                gap < 1e-2 * size,
+                "({major}, {a}, {b}) × {scale}: gap {gap}"
+            );
+        }
+    }
+}

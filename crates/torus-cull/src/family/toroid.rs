@@ -331,6 +331,33 @@ impl Toroid {
         self.image.axis_f64()
     }
 
+    /// The world box `(min, max)` that holds the solid. It lies in the Minkowski sum of
+    /// the core circle (radius R, across the unit axis n) and the spheroid with semi-axes
+    /// a, a across n and b along n (each meridian ellipse lies in the spheroid centred at
+    /// its core point), whose half-width along the world axis e_i is `R·√(1 − n_i²) +
+    /// √(a²·(1 − n_i²) + b²·n_i²)` (support functions add; for a = b,
+    /// [`Torus::world_aabb`]'s `R·√(1 − n_i²) + r`). Formed in f64, widened by 10⁻¹⁵ of
+    /// the coordinates' size for f64's rounding, and rounded outward to f32.
+    #[must_use]
+    pub fn world_aabb(&self) -> (Vec3, Vec3) {
+        use crate::num::round::{down, up};
+        let (c, n) = (self.center_f64(), self.axis_f64());
+        let (major, a, b) = (
+            self.major_radius_f64(),
+            self.radial_semi_axis_f64(),
+            self.axial_semi_axis_f64(),
+        );
+        let across = (DVec3::ONE - n * n).max(DVec3::ZERO);
+        let tube = (across * (a * a) + n * n * (b * b)).sqrt();
+        let half = across.sqrt() * major + tube;
+        let slack = (c.abs() + half) * 1e-15;
+        let (lo, hi) = (c - half - slack, c + half + slack);
+        (
+            Vec3::new(down(lo.x), down(lo.y), down(lo.z)),
+            Vec3::new(up(hi.x), up(hi.y), up(hi.z)),
+        )
+    }
+
     /// The member as a [`crate::Torus`], for the paths that take one (SIMD lanes,
     /// certified f32, the GPU): only a circular ring member is one.
     ///

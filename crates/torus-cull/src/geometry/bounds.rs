@@ -1,6 +1,8 @@
 //! The per-torus constants of the culls with their safety margin ([`CullBounds`]): owned
 //! by the [`super::Torus`] they were computed for.
 
+use crate::num::round::down;
+
 /// The relative safety margin: `η = SAFETY_REL · (R + r)`, 2⁻¹² ≈ 2.4e-4.
 ///
 /// About 4000 f32 ulps of the torus size: large enough to absorb the transform and
@@ -77,11 +79,11 @@ impl CullBounds {
         let inner_safe = major_radius - minor_safe;
         let (big, small) = (f64::from(major_radius), f64::from(minor_safe));
         let hyperboloid_y_coef = if inner_safe > 0.0 {
-            round_down((big - small) / (big + small))
+            down((big - small) / (big + small))
         } else {
             0.0
         };
-        let ellipsoid_y_scale = round_down(((big + small) / small).sqrt());
+        let ellipsoid_y_scale = down(((big + small) / small).sqrt());
         CullBounds {
             major_radius,
             minor_radius,
@@ -133,16 +135,6 @@ impl CullBounds {
     #[inline]
     pub const fn outer_safe_sq(&self) -> f32 {
         self.outer_safe_sq
-    }
-}
-
-/// The largest f32 ≤ `x` (for a positive finite `x`).
-fn round_down(x: f64) -> f32 {
-    let y = x as f32;
-    if f64::from(y) > x {
-        f32::from_bits(y.to_bits() - 1)
-    } else {
-        y
     }
 }
 

@@ -309,7 +309,8 @@ impl Torus {
         let major_f32 = major_radius as f32;
         // The culls' tube: around the circle of radius R rounded, it must hold the f64
         // tube, whose points are within r + |R − R_f32| of that circle.
-        let minor_cull = round_up(minor_radius + (major_radius - f64::from(major_f32)).abs());
+        let minor_cull =
+            crate::num::round::up(minor_radius + (major_radius - f64::from(major_f32)).abs());
         Ok(Torus::build(
             (center_f32, center),
             (unit.as_vec3(), unit),
@@ -703,8 +704,7 @@ impl Torus {
         let ring = (DVec3::ONE - a * a).max(DVec3::ZERO).sqrt() * self.major_f64;
         let half = ring + DVec3::splat(self.minor_f64);
         let (lo, hi) = (self.center_f64 - half, self.center_f64 + half);
-        let down = |x: f64| -round_up(-x);
-        let up = |x: f64| round_up(x);
+        use crate::num::round::{down, up};
         (
             Vec3::new(down(lo.x), down(lo.y), down(lo.z)),
             Vec3::new(up(hi.x), up(hi.y), up(hi.z)),
@@ -759,20 +759,6 @@ fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<
         return Err(TorusError::BadAxis(axis.as_vec3()));
     }
     Ok(())
-}
-
-/// The smallest f32 ≥ `x` (for a finite `x` within f32's range).
-fn round_up(x: f64) -> f32 {
-    let y = x as f32;
-    if f64::from(y) >= x {
-        y
-    } else if y > 0.0 {
-        f32::from_bits(y.to_bits() + 1)
-    } else if y < 0.0 {
-        f32::from_bits(y.to_bits() - 1)
-    } else {
-        f32::from_bits(1)
-    }
 }
 
 /// A proper rotation taking the unit vector `axis` to +y.

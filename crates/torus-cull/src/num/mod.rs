@@ -10,6 +10,7 @@
 //! * [`cube_root`] and [`poly`]: the cube root's scalar and lane seeds with their shared
 //!   Halley step, and the fitted polynomials' evaluation.
 //! * [`isa`]: the instruction set, detected at run time ([`Dispatch`], [`Isa`]).
+//! * `round`: f64 values rounded to f32 up or down, for boxes and bounds.
 //!
 //! Every operation is one IEEE operation, never fused or reordered, so a step computes the
 //! same bits at every width; the bit-identity of scalar and lane verdicts rests on that.
@@ -19,6 +20,7 @@ pub mod isa;
 pub mod lanes;
 pub mod poly;
 pub mod real;
+pub(crate) mod round;
 pub mod v3;
 
 pub(crate) use cube_root::CBRT_RANGE;
