@@ -7,54 +7,22 @@
 
 // Every check here runs against brute force over all shapes, with no BVH and no cull.
 
+use crate::renderer_rays::{Rays, assert_every_cull_matches};
 use std::collections::BTreeMap;
+use torus_cull::Ray;
 use torus_cull::bend::BendFace;
-use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 use torus_cull_lab::scene::family::{FamilyScene, ShapeClass};
-use torus_cull_lab::scene::rays::{Spawned, bounce_rays, light, shadow_rays, stretched};
-use torus_cull_lab::scene::{SceneHit, TraceStats, same_hit};
 
-/// A scene's renderer rays and brute force's answers for them.
-struct Rays {
-    primary: Vec<Ray>,
-    primary_truth: Vec<SceneHit>,
-    bounce: Vec<Spawned>,
-    bounce_truth: Vec<SceneHit>,
-    shadow: Vec<Spawned>,
-    shadow_truth: Vec<bool>,
+/// Camera, random and bore rays of a family scene, for [`Rays::of`].
+fn primary(scene: &FamilyScene) -> Vec<Ray> {
+    let mut primary = scene.camera_rays(64);
+    primary.extend(scene.random_rays(2000, 5));
+    primary.extend(scene.bore_rays(20, 6));
+    primary
 }
 
+/// What the family's checks count of its rays.
 impl Rays {
-    /// Camera, random and bore rays (directions times `stretch`), their hits by brute force, and
-    /// a shadow ray and a bounce per hit.
-    fn of(scene: &FamilyScene, stretch: f32) -> Rays {
-        let mut primary = scene.camera_rays(64);
-        primary.extend(scene.random_rays(2000, 5));
-        primary.extend(scene.bore_rays(20, 6));
-        let primary = stretched(&primary, stretch);
-        let primary_truth: Vec<SceneHit> = primary.iter().map(|r| scene.brute_force(r)).collect();
-        let bounce = bounce_rays(scene, &primary, &primary_truth, 11, stretch);
-        let shadow = shadow_rays(scene, &primary, &primary_truth, light(scene), stretch);
-        Rays {
-            bounce_truth: bounce
-                .iter()
-                .map(|s| scene.brute_force_spawned(s))
-                .collect(),
-            shadow_truth: shadow
-                .iter()
-                .map(|s| scene.brute_force_occluded_spawned(s))
-                .collect(),
-            primary,
-            primary_truth,
-            bounce,
-            shadow,
-        }
-    }
-
-    fn len(&self) -> usize {
-        self.primary.len() + self.bounce.len() + self.shadow.len()
-    }
-
     /// Camera and random rays' hits, per class of the shape hit.
     fn hits_per_class(&self, scene: &FamilyScene) -> BTreeMap<ShapeClass, usize> {
         let mut per = BTreeMap::new();
@@ -86,15 +54,6 @@ impl Rays {
         per
     }
 
-    /// Bounces whose closest hit is on another shape than their own, at t below `t`.
-    fn neighbour_hits_below(&self, t: f32) -> usize {
-        self.bounce
-            .iter()
-            .zip(&self.bounce_truth)
-            .filter(|(s, h)| h.is_some_and(|(id, th)| id != s.from && th < t))
-            .count()
-    }
-
     /// Hits of each kind: camera and random rays, bounces, blocked shadow rays.
     fn counts(&self) -> (usize, usize, usize) {
         (
@@ -102,39 +61,6 @@ impl Rays {
             self.bounce_truth.iter().flatten().count(),
             self.shadow_truth.iter().filter(|&&b| b).count(),
         )
-    }
-}
-
-/// Per cull: the rays whose BVH answer differs from brute force, as messages, and the
-/// work counts.
-struct Check<'a>(&'a FamilyScene, &'a Rays);
-
-impl CullVisitor for Check<'_> {
-    type Output = (Vec<String>, TraceStats);
-    fn visit<C: Cull>(self, cull: C) -> (Vec<String>, TraceStats) {
-        let (scene, rays) = (self.0, self.1);
-        let mut stats = TraceStats::default();
-        let mut wrong = Vec::new();
-        for (ray, truth) in rays.primary.iter().zip(&rays.primary_truth) {
-            let got = scene.trace(&cull, ray, &mut stats);
-            if !same_hit(got, *truth) {
-                wrong.push(format!("closest {ray:?}: bvh {got:?}, brute {truth:?}"));
-            }
-        }
-        for (s, truth) in rays.bounce.iter().zip(&rays.bounce_truth) {
-            let got = scene.trace_spawned(&cull, s, &mut stats);
-            if !same_hit(got, *truth) {
-                wrong.push(format!("bounce {s:?}: bvh {got:?}, brute {truth:?}"));
-            }
-        }
-        for (s, &truth) in rays.shadow.iter().zip(&rays.shadow_truth) {
-            let got = scene.occluded_spawned(&cull, s, &mut stats);
-            if got != truth {
-                wrong.push(format!("any-hit {s:?}: bvh {got}, brute {truth}"));
-            }
-        }
-        assert_eq!(stats.leaf_visits, stats.cull_rejects + stats.quartic_solves);
-        (wrong, stats)
     }
 }
 
@@ -151,23 +77,15 @@ fn assert_all_match(scene: &FamilyScene, rays: &Rays, what: &str) {
         rays.hits_per_class(scene),
         rays.bend_hits_per_face(scene)
     );
-    for cull in CullKind::TIMED {
-        let (wrong, stats) = cull.visit(Check(scene, rays));
+    assert_every_cull_matches(scene, rays, what, |cull, wrong, stats| {
         eprintln!(
-            "  {cull}: {} wrong; per ray {:.3} leaf visits, {:.3} culled, {:.3} solves",
-            wrong.len(),
+            "  {cull}: {wrong} wrong; per ray {:.3} leaf visits, {:.3} culled, {:.3} solves",
             stats.leaf_visits as f64 / rays.len() as f64,
             stats.cull_rejects as f64 / rays.len() as f64,
             stats.quartic_solves as f64 / rays.len() as f64
         );
-        assert!(
-            wrong.is_empty(),
-            "{what}: {cull}: {} of {} rays wrong, e.g.\n{}",
-            wrong.len(),
-            rays.len(),
-            wrong[..wrong.len().min(3)].join("\n")
-        );
-    }
+        assert_eq!(stats.leaf_visits, stats.cull_rejects + stats.quartic_solves);
+    });
 }
 
 /// Every class of shape hit by at least 10 camera, random and bore rays, and every face of
@@ -201,7 +119,7 @@ fn family_rays_match_brute_force_at_every_scale() {
         for scale in [1e-3, 1.0, 1e3] {
             let what = format!("spread {spread} R={scale}");
             let scene = FamilyScene::build(120, 7, scale, spread).unwrap();
-            let rays = Rays::of(&scene, 1.0);
+            let rays = Rays::of(&scene, &primary(&scene), 1.0);
             let (hits, rehits, blocked) = rays.counts();
             assert!(
                 hits > 200 && rehits > 30 && blocked > 10 && blocked < rays.shadow.len(),
@@ -220,7 +138,7 @@ fn family_rays_match_brute_force_at_every_scale() {
 #[test]
 fn tiny_family_below_obvhs_clamp() {
     let scene = FamilyScene::build(120, 3, 1e-5, 0.5).unwrap();
-    let rays = Rays::of(&scene, 1.0);
+    let rays = Rays::of(&scene, &primary(&scene), 1.0);
     let shallow = rays.neighbour_hits_below(1e-4);
     eprintln!("{shallow} bounces hit a neighbour below t = 1e-4");
     assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");
@@ -233,7 +151,7 @@ fn tiny_family_below_obvhs_clamp() {
 #[test]
 fn long_directions_family_under_obvhs_clamp() {
     let scene = FamilyScene::build(120, 3, 1.0, 0.5).unwrap();
-    let rays = Rays::of(&scene, 1e5);
+    let rays = Rays::of(&scene, &primary(&scene), 1e5);
     let shallow = rays.neighbour_hits_below(1e-4);
     eprintln!("{shallow} bounces hit a neighbour below t = 1e-4");
     assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");

@@ -6,88 +6,16 @@
 
 // Every check here runs against the harness's oracle or CLI.
 
+use crate::renderer_rays::{Rays, assert_every_cull_matches};
 use torus_cull::batch::{BATCHED, Dispatch};
-use torus_cull::{Cull, CullKind, CullVisitor, Named, Ray};
-use torus_cull_lab::scene::rays::{Spawned, bounce_rays, light, shadow_rays, stretched};
-use torus_cull_lab::scene::{
-    LeafBatchStats, Scene, SceneHit, SceneKind, TraceStats, same_hit, trace_spawned_batched,
-};
+use torus_cull::{Named, Ray};
+use torus_cull_lab::scene::{LeafBatchStats, Scene, SceneHit, SceneKind, trace_spawned_batched};
 
-/// A scene's renderer rays and brute force's answers for them.
-struct Rays {
-    primary: Vec<Ray>,
-    primary_truth: Vec<SceneHit>,
-    bounce: Vec<Spawned>,
-    bounce_truth: Vec<SceneHit>,
-    shadow: Vec<Spawned>,
-    shadow_truth: Vec<bool>,
-}
-
-impl Rays {
-    /// Camera and random rays (directions times `stretch`), their hits by brute force, and
-    /// a shadow ray and a bounce per hit.
-    fn of(scene: &Scene, stretch: f32) -> Rays {
-        let mut primary = scene.camera_rays(24);
-        primary.extend(scene.random_rays(300, 5));
-        let primary = stretched(&primary, stretch);
-        let primary_truth: Vec<SceneHit> = primary.iter().map(|r| scene.brute_force(r)).collect();
-        let bounce = bounce_rays(scene, &primary, &primary_truth, 11, stretch);
-        let shadow = shadow_rays(scene, &primary, &primary_truth, light(scene), stretch);
-        Rays {
-            bounce_truth: bounce
-                .iter()
-                .map(|s| scene.brute_force_spawned(s))
-                .collect(),
-            shadow_truth: shadow
-                .iter()
-                .map(|s| scene.brute_force_occluded_spawned(s))
-                .collect(),
-            primary,
-            primary_truth,
-            bounce,
-            shadow,
-        }
-    }
-
-    /// Bounces whose closest hit is on another torus than their own, at t below `t`.
-    fn neighbour_hits_below(&self, t: f32) -> usize {
-        self.bounce
-            .iter()
-            .zip(&self.bounce_truth)
-            .filter(|(s, h)| h.is_some_and(|(id, th)| id != s.from && th < t))
-            .count()
-    }
-}
-
-/// Per cull: the rays whose BVH answer differs from brute force, as messages.
-struct Check<'a>(&'a Scene, &'a Rays);
-
-impl CullVisitor for Check<'_> {
-    type Output = Vec<String>;
-    fn visit<C: Cull>(self, cull: C) -> Vec<String> {
-        let (scene, rays) = (self.0, self.1);
-        let mut stats = TraceStats::default();
-        let mut wrong = Vec::new();
-        for (ray, truth) in rays.primary.iter().zip(&rays.primary_truth) {
-            let got = scene.trace(&cull, ray, &mut stats);
-            if !same_hit(got, *truth) {
-                wrong.push(format!("closest {ray:?}: bvh {got:?}, brute {truth:?}"));
-            }
-        }
-        for (s, truth) in rays.bounce.iter().zip(&rays.bounce_truth) {
-            let got = scene.trace_spawned(&cull, s, &mut stats);
-            if !same_hit(got, *truth) {
-                wrong.push(format!("bounce {s:?}: bvh {got:?}, brute {truth:?}"));
-            }
-        }
-        for (s, &truth) in rays.shadow.iter().zip(&rays.shadow_truth) {
-            let got = scene.occluded_spawned(&cull, s, &mut stats);
-            if got != truth {
-                wrong.push(format!("any-hit {:?}: bvh {got}, brute {truth}", s.ray));
-            }
-        }
-        wrong
-    }
+/// Camera and random rays of a torus scene, for [`Rays::of`].
+fn primary(scene: &Scene) -> Vec<Ray> {
+    let mut primary = scene.camera_rays(24);
+    primary.extend(scene.random_rays(300, 5));
+    primary
 }
 
 /// Both miss, or both hit at the same t up to the batch solver's rounding.
@@ -102,16 +30,7 @@ fn close(a: SceneHit, b: SceneHit) -> bool {
 /// Every cull (closest and any-hit) and every batched cull (closest) against brute force;
 /// panics naming the first mismatches.
 fn assert_all_match(scene: &Scene, rays: &Rays, what: &str) {
-    for cull in CullKind::TIMED {
-        let wrong = cull.visit(Check(scene, rays));
-        assert!(
-            wrong.is_empty(),
-            "{what}: {cull}: {} of {} rays wrong, e.g.\n{}",
-            wrong.len(),
-            rays.primary.len() + rays.bounce.len() + rays.shadow.len(),
-            wrong[..wrong.len().min(3)].join("\n")
-        );
-    }
+    assert_every_cull_matches(scene, rays, what, |_, _, _| {});
     let dispatch = Dispatch::best();
     for cull in BATCHED {
         let mut stats = LeafBatchStats::default();
@@ -131,7 +50,7 @@ fn assert_all_match(scene: &Scene, rays: &Rays, what: &str) {
 #[test]
 fn tiny_tori_below_obvhs_clamp() {
     let scene = Scene::build_scaled(SceneKind::Chain, 4.0, 120, 3, 1e-5).unwrap();
-    let rays = Rays::of(&scene, 1.0);
+    let rays = Rays::of(&scene, &primary(&scene), 1.0);
     let shallow = rays.neighbour_hits_below(1e-4);
     assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");
     assert_all_match(&scene, &rays, "R = 1e-5");
@@ -142,7 +61,7 @@ fn tiny_tori_below_obvhs_clamp() {
 #[test]
 fn long_directions_under_obvhs_clamp() {
     let scene = Scene::build(SceneKind::Chain, 4.0, 120, 3).unwrap();
-    let rays = Rays::of(&scene, 1e5);
+    let rays = Rays::of(&scene, &primary(&scene), 1e5);
     let shallow = rays.neighbour_hits_below(1e-4);
     assert!(shallow > 20, "only {shallow} neighbour re-hits below 1e-4");
     assert_all_match(&scene, &rays, "|d| = 1e5");
@@ -154,7 +73,7 @@ fn renderer_rays_match_brute_force_at_every_scale() {
     for &kind in SceneKind::ALL {
         for scale in [1e-3, 1.0, 1e3] {
             let scene = Scene::build_scaled(kind, 4.0, 60, 7, scale).unwrap();
-            let rays = Rays::of(&scene, 1.0);
+            let rays = Rays::of(&scene, &primary(&scene), 1.0);
             let hits = rays.primary_truth.iter().flatten().count();
             let blocked = rays.shadow_truth.iter().filter(|&&b| b).count();
             let rehits = rays.bounce_truth.iter().flatten().count();

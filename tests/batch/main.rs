@@ -14,6 +14,7 @@ mod bvh;
 mod bvh_family;
 mod bvh_rays;
 mod certified_f32;
+mod renderer_rays;
 
 /// Every dispatch level this machine runs (scalar and each SIMD width it has), forced: the
 /// batch paths are checked at each, not only at the widest.
