@@ -13,6 +13,9 @@
 #              per case × ν                                   -> grid.json, grid.txt
 #   2. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
 #              uniform and hole, ν = 4                         -> sweep-2pK.json, .txt
+#   2b. workgroup: the sweep's culls and cases at 2^20 rays with the kernel's workgroup
+#              32, 128 and 256 (`--workgroup`; 64 is the sweep's 2^20 row)
+#                                                              -> wg-N.json, .txt
 #   3. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
 #              escalating cases (hole, grazing) at the workload's smallest ν, 4 and its
 #              largest, culls none, cychosz, skala, 2^20 rays  -> finish.json, finish.txt
@@ -55,19 +58,17 @@
 #     the dispatch dominates); `time --device gpu --cases uniform,grazing --nu 4 --culls
 #     none --batch 2^20 --seconds 0.1` took 38 s in all
 #   - the smoke run (every step at 2^10-2^12 rays): 27-32 s; 104 s beside a cargo build
-# On the H100 (docs/gpu.md) one kernel pass over 2^20 rays is ~0.3-0.5 ms, so a round of
-# the grid (copy + 9 culls, each ~4 ms of repeats) is ~40 ms and 7 rounds ~0.3 s: the
-# share, not the minimum rounds, sets each unit's time. Planned for an H100 (16 cores):
-#   grid    60 units x 2^20 rays: --seconds 150 (2.5 s a unit) + start ~2 s + drawing
-#           ~8 s (12 grazing units dealt round-robin) + packing/upload ~6 s + warm-up
-#           and read-backs ~0.25 s a unit ~15 s                     => ~180 s
-#   sweep   7 commands x 2 units (uniform, hole: cheap to draw): --seconds 8 each (4 s a
-#           unit) + start ~2 s + drawing/upload of 2 x 2^22 rays at most ~2 s  => ~85 s
-#   finish  2 cases x 3 nu x 2^20 rays, culls none, cychosz, skala (6 contenders with
-#           the pass): --seconds 30 (5 s a unit) + start, drawing, uploads ~10 s => ~40 s
-#   total ~310 s of the 450 s budget. Every command also runs under `timeout` with what
-#   is left of the budget, so the script ends within it whatever the GPU does; the
-#   summary log has each step's time, to resize these from.
+# Measured on an H100 (2026-11-27, 16 host cores), which replaced the plan made here: one
+# kernel pass over 2^20 rays is 0.13-0.56 ms, but each case x nu unit costs ~5 s more than
+# its share (drawing 2^20 rays on one core, packing, uploading), and nu = 1.1 far more:
+#   - the whole default grid at --seconds 150 did not fit 430 s (55 of 60 units done);
+#     `--nu 1.1,4,32 --seconds 45` did not fit 140 s; `--nu 4,32 --seconds 20`: 52 s;
+#   - one workgroup step (2 units, 2^20 rays, --seconds 8): 20 s;
+#   - the finish step at nu = 4 only (2 units, --seconds 15): 28 s.
+# Hence the order: grid at nu = 4 and the largest (~50 s), sweep (~7 x 15 s), workgroup
+# (~3 x 20 s), finish (~3 units a case, ~60 s), and the rest of the grid's nu last with
+# what is left. Every command runs under `timeout` with what is left of the budget, so
+# the script ends within it whatever the GPU does; the summary log has each step's time.
 # Scale: SCALE=0.5 halves every --seconds (not the batches), e.g. for a shorter lease.
 #
 set -uo pipefail
@@ -101,16 +102,19 @@ if [ "$smoke" = 1 ]; then
   # Tiny: every step and every flag as in the real run, seconds of work on lavapipe.
   grid_batch=4096; grid_seconds=4; grid_nu=(--nu 4)
   sweep_pows=(10 11 12); sweep_seconds=1
+  wg_sizes=(32 256); wg_batch=4096
   finish_batch=4096; finish_seconds=2
 else
   budget=${budget:-450}
-  grid_batch=1048576; grid_seconds=150; grid_nu=()
+  grid_batch=1048576; grid_seconds=20; grid_nu=(); rest_seconds=60
   sweep_pows=(16 17 18 19 20 21 22); sweep_seconds=8
+  wg_sizes=(32 128 256); wg_batch=1048576
   finish_batch=1048576; finish_seconds=30
 fi
 scale=${SCALE:-1}
 scaled() { awk -v s="$1" -v k="$scale" 'BEGIN { printf "%g", s * k }'; }
 grid_seconds=$(scaled "$grid_seconds")
+rest_seconds=$(scaled "${rest_seconds:-0}")
 sweep_seconds=$(scaled "$sweep_seconds")
 finish_seconds=$(scaled "$finish_seconds")
 
@@ -268,8 +272,15 @@ esac
 lo=$(echo $wl_nu | awk '{print $1}')
 hi=$(echo $wl_nu | awk '{print $NF}')
 
-# 1. The grid.
-step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" "${grid_nu[@]}"
+# 1. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s
+#    on the H100), the rest of the workload's ν last, with what the budget leaves (on the
+#    H100 the whole default grid did not fit 430 s: 55 of its 60 units, see below).
+if [ "$smoke" = 1 ]; then
+  step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" "${grid_nu[@]}"
+else
+  step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" \
+    --nu "$(printf '%s\n' 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)"
+fi
 
 # 2. The batch sweep.
 if ! echo " $wl_nu " | grep -q ' 4 '; then
@@ -279,6 +290,15 @@ fi
 for p in "${sweep_pows[@]}"; do
   step "sweep-2p$p" --workload "$workload" --cases uniform,hole --nu 4 \
     --culls none,cychosz,skala,discriminant --batch $((1 << p)) --seconds "$sweep_seconds"
+done
+
+# 2b. The kernel's workgroup size (64 is the sweep's 2^20 row): the same rays and culls at
+#     2^20, in one process per size (not paired across sizes: compare ns/ray and of_copy).
+for w in "${wg_sizes[@]}"; do
+  [ "${#sweep_pows[@]}" -gt 0 ] || break
+  step "wg-$w" --workload "$workload" --cases uniform,hole --nu 4 \
+    --culls none,cychosz,skala,discriminant --batch "$wg_batch" --seconds "$sweep_seconds" \
+    --workgroup "$w"
 done
 
 # 3. The f64 finish pass.
@@ -291,6 +311,13 @@ else
   say "== finish: skipped, the adapter has no f64 finish pass ($(field f64_finish_pass))"
 fi
 
+# 4. The rest of the grid's ν, with what is left.
+if [ "$smoke" = 0 ]; then
+  rest=$(printf '%s\n' $wl_nu | awk -v hi="$hi" '$1 != 4 && $1 != hi' | paste -sd, -)
+  [ -z "$rest" ] || step grid-rest --workload "$workload" --batch "$grid_batch" \
+    --seconds "$rest_seconds" --nu "$rest"
+fi
+
 # The headline lines, in the log and on stderr.
 if [ -f "$out/grid.txt" ]; then
   gmax=$(awk '$4 ~ /^[0-9.]+$/ && $2 + 0 > m { m = $2 + 0 } END { print m }' "$out/grid.txt")
@@ -300,7 +327,7 @@ if [ -f "$out/grid.txt" ]; then
            END { for (i = 1; i <= n; i++) { c = order[i]; printf "   %-11s none %s, fastest %s %s\n", c, none[c], who[c], best[c] } }' \
     | tee -a "$partial" >&2
 fi
-for f in "$out"/sweep-2p*.txt; do
+for f in "$out"/sweep-2p*.txt "$out"/wg-*.txt; do
   [ -f "$f" ] || continue
   awk -v f="$(basename "$f" .txt)" '$3 == "none" && $4 ~ /^[0-9.]+$/ { print "   " f ": " $1 " none " $4 " ns/ray" }' "$f" \
     | tee -a "$partial" >&2

@@ -594,6 +594,13 @@ fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
         stderr.contains("--finish") && stderr.contains("--device gpu"),
         "{stderr}"
     );
+    let workgroup = torus_cull(&["time", "--workload", arg(&workload), "--workgroup", "128"]);
+    refused(&workgroup);
+    let stderr = String::from_utf8_lossy(&workgroup.stderr);
+    assert!(
+        stderr.contains("--workgroup") && stderr.contains("--device gpu"),
+        "{stderr}"
+    );
     let out = dir.path().join("a.json");
     cli_ok(
         "time --workload {} --cases uniform --culls cychosz --seconds 0.3 --runs 1 --no-plots --out {}",

@@ -185,3 +185,38 @@ fn every_cull_against_the_oracle_and_the_cpu() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// The kernel resized (`GpuIntersector::with_workgroup`, `time --workgroup`) answers every
+/// ray as the default size does: each invocation is one ray, whatever the group. A size
+/// outside the allowed ones is an error naming them.
+#[test]
+fn a_resized_workgroup_gives_the_same_answers() {
+    let Some(gpu) = gpu() else { return };
+    let refused = GpuIntersector::with_workgroup(48).unwrap_err().to_string();
+    assert!(
+        refused.contains("48") && refused.contains("256"),
+        "{refused}"
+    );
+    // Every case at ν = 4 (1000 rays: not a multiple of any size, so the last group is
+    // partial); lavapipe pays per dispatch, so one ν and two culls.
+    let sets: Vec<_> = Case::ALL
+        .iter()
+        .flat_map(|&case| family(case, 4.0, 1000, 0x3C0))
+        .collect();
+    let culls = [GpuCull::NoCull, GpuCull::Discriminant];
+    let want: Vec<Vec<_>> = sets
+        .iter()
+        .flat_map(|b| culls.map(|cull| gpu.intersect(&b.torus, cull, &b.rays).unwrap()))
+        .collect();
+    // The smallest and the largest size (each compile costs lavapipe seconds).
+    for threads in [32, 256] {
+        assert!(torus_cull::gpu::WORKGROUP_SIZES.contains(&threads));
+        let resized = GpuIntersector::with_workgroup(threads).unwrap();
+        assert_eq!(resized.workgroup(), threads);
+        let got: Vec<Vec<_>> = sets
+            .iter()
+            .flat_map(|b| culls.map(|cull| resized.intersect(&b.torus, cull, &b.rays).unwrap()))
+            .collect();
+        assert!(got == want, "workgroup {threads} answers differently");
+    }
+}

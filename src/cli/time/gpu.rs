@@ -33,6 +33,14 @@ const METRIC: &str = "gpu_kernel_ns";
 /// The contender that only copies each ray's record: the bandwidth floor.
 const COPY: &str = "copy";
 
+/// What `time --device gpu` runs besides the kernel's default.
+pub(super) struct Options {
+    /// Also time the f64 finish pass.
+    pub finish: bool,
+    /// Threads per workgroup of the kernel ([`GpuIntersector::with_workgroup`]).
+    pub workgroup: u32,
+}
+
 /// Times the kernel on every case × ν of `workload`.
 pub(super) fn run(
     workload: &Workload,
@@ -40,7 +48,7 @@ pub(super) fn run(
     culls: &[CullKind],
     seconds: f64,
     batch: usize,
-    finish: bool,
+    Options { finish, workgroup }: Options,
     path: &Path,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut culls = gpu_culls(culls)?;
@@ -49,7 +57,7 @@ pub(super) fn run(
             culls.insert(0, reference);
         }
     }
-    let gpu = GpuIntersector::new()?;
+    let gpu = GpuIntersector::with_workgroup(workgroup)?;
     let device = announce_adapter(&gpu)?;
     if finish {
         if let Some(why) = gpu.device_finish_unavailable() {
@@ -409,6 +417,9 @@ fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
         gpu.device_type(),
         gpu.backend()
     );
+    if gpu.workgroup() != 64 {
+        device.push_str(&format!("; workgroup {}", gpu.workgroup()));
+    }
     if gpu.is_software() {
         device.push_str("; software adapter: a CPU proxy, no GPU timing claimed");
     }

@@ -51,6 +51,10 @@ pub struct TimeArgs {
     /// `gpu_finish_per_escalated_ns-…`, in the same rounds as the kernel.
     #[arg(long)]
     finish: bool,
+    /// With `--device gpu`: threads per workgroup of the kernel (32, 64, 128 or 256; the
+    /// answers are the same, only the speed may differ). The results' device names it.
+    #[arg(long, default_value_t = 64)]
+    workgroup: u32,
     /// Total measuring time in seconds, shared evenly by every case × ν.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
@@ -210,7 +214,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             &culls,
             args.seconds,
             batch,
-            args.finish,
+            gpu::Options {
+                finish: args.finish,
+                workgroup: args.workgroup,
+            },
             &path,
         )?;
         if !args.no_plots {
@@ -222,6 +229,9 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
 
     if args.finish {
         return Err("--finish times the GPU's f64 finish pass: only with --device gpu".into());
+    }
+    if args.workgroup != 64 {
+        return Err("--workgroup sizes the GPU kernel: only with --device gpu".into());
     }
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
     // only `--mode both` uses it.
@@ -709,13 +719,19 @@ mod gpu {
     use torus_cull::CullKind;
     use torus_cull_lab::workload::spec::Workload;
 
+    /// As the GPU build's.
+    pub(super) struct Options {
+        pub finish: bool,
+        pub workgroup: u32,
+    }
+
     pub(super) fn run(
         _workload: &Workload,
         _nus: &[f64],
         _culls: &[CullKind],
         _seconds: f64,
         _batch: usize,
-        _finish: bool,
+        _options: Options,
         _path: &Path,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
         Err("--device gpu needs a binary built with the feature gpu: \

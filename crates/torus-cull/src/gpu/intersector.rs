@@ -50,8 +50,13 @@ impl std::error::Error for GpuError {}
 /// downlevel limit of 128 MiB per storage binding and 65 535 workgroups of 64).
 pub(crate) const CHUNK: usize = 1 << 20;
 
-/// Threads per workgroup (`@workgroup_size` in the kernel).
+/// Threads per workgroup of the f64 finish pass, and the kernel's default
+/// (`@workgroup_size` in each).
 pub(crate) const WORKGROUP: usize = 64;
+
+/// The kernel's workgroup sizes [`GpuIntersector::with_workgroup`] accepts: powers of two
+/// from a warp to WebGPU's downlevel limit of 256 invocations.
+pub const WORKGROUP_SIZES: [u32; 4] = [32, 64, 128, 256];
 
 /// A wgpu device with the kernel compiled, ready for batches of rays.
 pub struct GpuIntersector {
@@ -68,6 +73,8 @@ pub struct GpuIntersector {
     pub(crate) finish: Result<finish::FinishPipeline, String>,
     /// Escalated rays go to the f64 pass where there is one (default), else to the host.
     pub(crate) device_finish: bool,
+    /// Threads per workgroup of the kernel (one of [`WORKGROUP_SIZES`]).
+    pub(crate) workgroup: u32,
 }
 
 /// The uniform block, the rays, their surface records, the results and their staging
@@ -98,10 +105,29 @@ impl GpuIntersector {
     /// The first adapter wgpu offers (high-performance preferred; the backends from the
     /// environment, `WGPU_BACKEND`), a device on it and the kernel compiled.
     pub fn new() -> Result<GpuIntersector, GpuError> {
-        pollster::block_on(Self::new_async())
+        Self::with_workgroup(WORKGROUP as u32)
     }
 
-    async fn new_async() -> Result<GpuIntersector, GpuError> {
+    /// As [`GpuIntersector::new`], with the kernel compiled for `threads` invocations per
+    /// workgroup (one of [`WORKGROUP_SIZES`]; 64 by default). The answers are the same
+    /// whatever the size: each invocation handles one ray. Another size is an error
+    /// naming the allowed ones.
+    pub fn with_workgroup(threads: u32) -> Result<GpuIntersector, GpuError> {
+        if !WORKGROUP_SIZES.contains(&threads) {
+            return Err(GpuError::Kernel(format!(
+                "workgroup size {threads} is not one of {WORKGROUP_SIZES:?}"
+            )));
+        }
+        pollster::block_on(Self::new_async(threads))
+    }
+
+    /// Threads per workgroup of the kernel ([`GpuIntersector::with_workgroup`]).
+    #[must_use]
+    pub fn workgroup(&self) -> u32 {
+        self.workgroup
+    }
+
+    async fn new_async(threads: u32) -> Result<GpuIntersector, GpuError> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = instance
@@ -129,10 +155,19 @@ impl GpuIntersector {
         // not a panic in wgpu's default handler.
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         use wgpu::BufferBindingType as B;
+        // The entry point's one attribute, resized; everything else is the text as shipped.
+        let default = format!("@compute @workgroup_size({WORKGROUP})");
+        let source = kernel_source();
+        if source.matches(&default).count() != 1 {
+            return Err(GpuError::Kernel(format!(
+                "the kernel must hold `{default}` once, to resize it"
+            )));
+        }
+        let source = source.replacen(&default, &format!("@compute @workgroup_size({threads})"), 1);
         let (pipeline, layout) = compute_pipeline(
             &device,
             "torus-cull",
-            kernel_source(),
+            source,
             &[
                 B::Uniform,
                 B::Storage { read_only: true },
@@ -161,6 +196,7 @@ impl GpuIntersector {
             buffers: Mutex::new(None),
             finish,
             device_finish: true,
+            workgroup: threads,
         })
     }
 
@@ -404,7 +440,7 @@ impl GpuIntersector {
         self.queue.write_buffer(params_buffer, 0, params);
         self.queue.write_buffer(input, 0, &as_bytes(&words));
         let bytes = packed.len() as u64 * RAY_BYTES;
-        let groups = packed.len().div_ceil(WORKGROUP) as u32;
+        let groups = packed.len().div_ceil(self.workgroup as usize) as u32;
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor {

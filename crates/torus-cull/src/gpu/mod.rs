@@ -104,7 +104,7 @@ mod wire;
 
 pub use cull::GpuCull;
 pub use escalation::{Escalation, FinishCounts, Finished};
-pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE};
+pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE, WORKGROUP_SIZES};
 pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
