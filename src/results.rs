@@ -408,6 +408,36 @@ fn one_run() -> u64 {
     1
 }
 
+/// A record of one run with no escalation and nothing set aside: what a caller fills in
+/// is the key, the estimate and its sizes, and `..RatioRecord::default()` gives the rest
+/// (`runs` 1, `precision` f64, `device` cpu, empty strings and zeros for the key).
+impl Default for RatioRecord {
+    fn default() -> RatioRecord {
+        RatioRecord {
+            case: String::new(),
+            nu: 0.0,
+            cull: String::new(),
+            reference: String::new(),
+            metric: String::new(),
+            ratio: 0.0,
+            ratio_ci: [0.0; 2],
+            rounds: 0,
+            rounds_measured: 0,
+            rays: 0,
+            ns_per_ray: 0.0,
+            reference_ns_per_ray: 0.0,
+            precision: f64_precision(),
+            device: cpu_device(),
+            escalation_rate: None,
+            runs: one_run(),
+            runs_set_aside: 0,
+            run_ratios: Vec::new(),
+            ratio_ci_between: None,
+            run_spread: None,
+        }
+    }
+}
+
 impl RatioRecord {
     /// Whether this record times the f32 path.
     pub fn is_f32(&self) -> bool {

@@ -233,12 +233,7 @@ pub(super) mod tests {
             reference_ns_per_ray: 100.0,
             precision: "f64".into(),
             device: "cpu".into(),
-            escalation_rate: None,
-            runs: 1,
-            runs_set_aside: 0,
-            run_ratios: Vec::new(),
-            ratio_ci_between: None,
-            run_spread: None,
+            ..RatioRecord::default()
         }
     }
 

@@ -399,12 +399,7 @@ fn push_records(
                 reference_ns_per_ray: e.reference_ns_per_ray,
                 precision: F64_PRECISION.to_string(),
                 device: CPU_DEVICE.to_string(),
-                escalation_rate: None,
-                runs: 1,
-                runs_set_aside: 0,
-                run_ratios: Vec::new(),
-                ratio_ci_between: None,
-                run_spread: None,
+                ..RatioRecord::default()
             });
         }
     }

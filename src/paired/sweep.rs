@@ -430,11 +430,7 @@ fn push_unit_records(
                     precision: metric.precision().to_string(),
                     device: CPU_DEVICE.to_string(),
                     escalation_rate: escalation,
-                    runs: 1,
-                    runs_set_aside: 0,
-                    run_ratios: Vec::new(),
-                    ratio_ci_between: None,
-                    run_spread: None,
+                    ..RatioRecord::default()
                 });
             }
         }

@@ -154,12 +154,7 @@ fn precision_device_and_escalation_round_trip_and_default_when_absent() {
         reference_ns_per_ray: 23.5,
         precision: "f64".into(),
         device: "cpu".into(),
-        escalation_rate: None,
-        runs: 1,
-        runs_set_aside: 0,
-        run_ratios: Vec::new(),
-        ratio_ci_between: None,
-        run_spread: None,
+        ..RatioRecord::default()
     };
     r.ratio = vec![
         ratio.clone(),

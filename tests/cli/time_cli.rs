@@ -576,31 +576,25 @@ fn a_dead_worker_fails_the_timing_and_writes_nothing() {
 }
 
 /// `--cases` keeps the workload's cases named and refuses any other, naming the allowed
-/// ones; `--finish` is for `--device gpu` only.
+/// ones; `--finish` and `--workgroup` are for `--device gpu` only.
 #[test]
 fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
     let (dir, workload) = tiny_workload();
-    let bad = torus_cull(&["time", "--workload", arg(&workload), "--cases", "camera"]);
-    refused(&bad);
-    let stderr = String::from_utf8_lossy(&bad.stderr);
-    assert!(
-        stderr.contains("--cases camera") && stderr.contains("allowed: hole, uniform"),
-        "{stderr}"
-    );
-    let finish = torus_cull(&["time", "--workload", arg(&workload), "--finish"]);
-    refused(&finish);
-    let stderr = String::from_utf8_lossy(&finish.stderr);
-    assert!(
-        stderr.contains("--finish") && stderr.contains("--device gpu"),
-        "{stderr}"
-    );
-    let workgroup = torus_cull(&["time", "--workload", arg(&workload), "--workgroup", "128"]);
-    refused(&workgroup);
-    let stderr = String::from_utf8_lossy(&workgroup.stderr);
-    assert!(
-        stderr.contains("--workgroup") && stderr.contains("--device gpu"),
-        "{stderr}"
-    );
+    for (flags, needles) in [
+        (
+            &["--cases", "camera"][..],
+            ["--cases camera", "allowed: hole, uniform"],
+        ),
+        (&["--finish"][..], ["--finish", "--device gpu"]),
+        (&["--workgroup", "128"][..], ["--workgroup", "--device gpu"]),
+    ] {
+        let args: Vec<&str> = ["time", "--workload", arg(&workload)]
+            .into_iter()
+            .chain(flags.iter().copied())
+            .collect();
+        let stderr = refused(&torus_cull(&args));
+        assert!(needles.iter().all(|n| stderr.contains(n)), "{stderr}");
+    }
     let out = dir.path().join("a.json");
     cli_ok(
         "time --workload {} --cases uniform --culls cychosz --seconds 0.3 --runs 1 --no-plots --out {}",

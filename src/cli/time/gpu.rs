@@ -147,11 +147,7 @@ pub(super) fn run(
                     precision: F32_PRECISION.into(),
                     device: "gpu".into(),
                     escalation_rate: Some(escalated),
-                    runs: 1,
-                    runs_set_aside: 0,
-                    run_ratios: Vec::new(),
-                    ratio_ci_between: None,
-                    run_spread: None,
+                    ..RatioRecord::default()
                 });
             }
             let ns = median(mine) / rays;

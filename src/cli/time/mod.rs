@@ -731,9 +731,13 @@ mod gpu {
         _culls: &[CullKind],
         _seconds: f64,
         _batch: usize,
-        _options: Options,
+        options: Options,
         _path: &Path,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
+        let Options {
+            finish: _,
+            workgroup: _,
+        } = options;
         Err("--device gpu needs a binary built with the feature gpu: \
              cargo run --release --features gpu -- time --device gpu"
             .into())
