@@ -576,7 +576,8 @@ fn a_dead_worker_fails_the_timing_and_writes_nothing() {
 }
 
 /// `--cases` keeps the workload's cases named and refuses any other, naming the allowed
-/// ones; `--finish` and `--workgroup` are for `--device gpu` only.
+/// ones; `--finish` and `--workgroup` are for `--device gpu` only, and `--family` and
+/// `--bend` refuse the GPU's flags rather than ignore them.
 #[test]
 fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
     let (dir, workload) = tiny_workload();
@@ -587,6 +588,9 @@ fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
         ),
         (&["--finish"][..], ["--finish", "--device gpu"]),
         (&["--workgroup", "128"][..], ["--workgroup", "--device gpu"]),
+        (&["--bvh", "--workgroup", "32"][..], ["--workgroup", "--device gpu"]),
+        (&["--family", "--device", "gpu"][..], ["--family", "--device gpu"]),
+        (&["--bend", "--finish"][..], ["--bend", "--finish"]),
     ] {
         let args: Vec<&str> = ["time", "--workload", arg(&workload)]
             .into_iter()

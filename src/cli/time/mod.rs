@@ -166,6 +166,17 @@ enum Mode {
 
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    // Before any mode returns: a GPU flag on a CPU timing is refused, never ignored.
+    if args.device != Device::Gpu && args.workgroup != 64 {
+        return Err("--workgroup sizes the GPU kernel: only with --device gpu".into());
+    }
+    for (given, flag) in [(args.family, "--family"), (args.bend, "--bend")] {
+        if given && (args.device == Device::Gpu || args.finish) {
+            return Err(
+                format!("{flag} times the CPU's paths: not with --device gpu or --finish").into(),
+            );
+        }
+    }
     if args.bvh {
         return bvh::run(&args);
     }
@@ -229,9 +240,6 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
 
     if args.finish {
         return Err("--finish times the GPU's f64 finish pass: only with --device gpu".into());
-    }
-    if args.workgroup != 64 {
-        return Err("--workgroup sizes the GPU kernel: only with --device gpu".into());
     }
     // TORUS_CULL_ISA is checked in either mode: a typo must not pass silently because
     // only `--mode both` uses it.
