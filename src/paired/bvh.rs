@@ -14,6 +14,11 @@
 //!   [`trace_leaves_batched`] (every leaf candidate collected, then the wavefront torus
 //!   by torus), for each cull with a batch form.
 //!
+//! With [`BvhTiming::family`], one more unit: the torus family's shapes
+//! ([`FamilyScene`]: rings, elliptical tubes, horn and spindle tori, whole and cut pipe
+//! bends, each cull applied by the shape's own rule), timed closest-hit and any-hit (it
+//! has no batched form), recorded as the scene `family`.
+//!
 //! Each ratio is a cull's time over `none`'s and over `cychosz`'s under the same metric;
 //! a batched cull is also timed over its own scalar closest-hit traversal (reference
 //! [`SCALAR_REFERENCE`]): whether batching the leaves pays.
@@ -28,8 +33,11 @@ use super::runs::{RunsDiffer, combine_runs};
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
-use crate::scene::rays::{Spawned, light, shadow_rays};
-use crate::scene::{Scene, SceneKind, TraceStats, same_hit, trace_leaves_batched};
+use crate::scene::family::FamilyScene;
+use crate::scene::rays::{Spawned, Surfaces, light, shadow_rays};
+use crate::scene::{Scene, SceneHit, SceneKind, TraceStats, same_hit, trace_leaves_batched};
+use crate::workload::CameraView;
+use glam::{DVec3, Vec3};
 use std::fmt;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -49,6 +57,13 @@ pub const SCALAR_REFERENCE: &str = "scalar";
 
 /// How long one visit to a scene × ν lasts before the next one's turn.
 pub const VISIT: Duration = Duration::from_millis(100);
+
+/// The scene name of the torus family's unit in the records.
+pub const FAMILY_SCENE: &str = "family";
+
+/// How far apart the family's shapes stand, in outer diameters on average (as
+/// `ring_field`'s tori).
+const FAMILY_SPREAD: f64 = 1.5;
 
 /// The references of every ratio.
 const REFERENCES: [CullKind; 2] = [CullKind::NoCull, CullKind::Cychosz];
@@ -72,6 +87,9 @@ pub struct BvhTiming {
     pub runs: usize,
     /// The wavefront's instruction set, for the batched leaves.
     pub dispatch: Dispatch,
+    /// Also the torus family's scene (`tori` shapes of R = 1), recorded at this ν (its
+    /// shapes have their own); `None`: the tori's scenes only.
+    pub family: Option<f64>,
 }
 
 /// Why a BVH timing failed.
@@ -101,11 +119,76 @@ impl fmt::Display for BvhTimingError {
 
 impl std::error::Error for BvhTimingError {}
 
+/// A unit's scene: tori, or the torus family's shapes.
+enum UnitScene {
+    Tori(Scene),
+    /// The family's scene and the ν its records carry.
+    Family(FamilyScene, f64),
+}
+
+impl UnitScene {
+    /// The records' scene name and ν.
+    fn label(&self) -> (&'static str, f64) {
+        match self {
+            UnitScene::Tori(s) => (s.kind.name(), s.nu),
+            UnitScene::Family(_, nu) => (FAMILY_SCENE, *nu),
+        }
+    }
+
+    fn camera_rays(&self, size: usize) -> Vec<Ray> {
+        match self {
+            UnitScene::Tori(s) => s.camera_rays(size),
+            UnitScene::Family(s, _) => s.camera_rays(size),
+        }
+    }
+
+    #[inline]
+    fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
+        match self {
+            UnitScene::Tori(s) => s.trace(cull, ray, stats),
+            UnitScene::Family(s, _) => s.trace(cull, ray, stats),
+        }
+    }
+
+    #[inline]
+    fn occluded_spawned<C: Cull>(&self, cull: &C, s: &Spawned, stats: &mut TraceStats) -> bool {
+        match self {
+            UnitScene::Tori(scene) => scene.occluded_spawned(cull, s, stats),
+            UnitScene::Family(scene, _) => scene.occluded_spawned(cull, s, stats),
+        }
+    }
+}
+
+impl Surfaces for UnitScene {
+    fn view(&self) -> (&CameraView, (DVec3, f64)) {
+        match self {
+            UnitScene::Tori(s) => s.view(),
+            UnitScene::Family(s, _) => s.view(),
+        }
+    }
+
+    fn facing_hit(&self, id: u32, ray: &Ray) -> Option<(f32, DVec3)> {
+        match self {
+            UnitScene::Tori(s) => s.facing_hit(id, ray),
+            UnitScene::Family(s, _) => s.facing_hit(id, ray),
+        }
+    }
+
+    fn spawn(&self, id: u32, ray: &Ray, t: f32, dir: Vec3) -> Option<Ray> {
+        match self {
+            UnitScene::Tori(s) => s.spawn(id, ray, t, dir),
+            UnitScene::Family(s, _) => s.spawn(id, ray, t, dir),
+        }
+    }
+}
+
 /// One scene × ν with its rays and contenders.
 struct Unit {
-    scene: Scene,
+    scene: UnitScene,
     camera: Vec<Ray>,
     shadow: Vec<Spawned>,
+    /// Its contenders (the family's scene has no batched leaves).
+    lineup: Lineup,
 }
 
 /// One record to make: the cull, the metric, its contender, and each reference's name
@@ -120,14 +203,19 @@ struct Lineup {
 }
 
 impl Lineup {
-    fn new(asked: &[CullKind]) -> Lineup {
+    /// The culls asked for and the references; `batched`: also their batched forms.
+    fn new(asked: &[CullKind], batched: bool) -> Lineup {
         let mut culls: Vec<CullKind> = CullKind::TIMED
             .iter()
             .copied()
             .filter(|k| asked.contains(k) || REFERENCES.contains(k))
             .collect();
         culls.dedup();
-        let batched = culls.iter().filter_map(|k| k.batched()).collect();
+        let batched = if batched {
+            culls.iter().filter_map(|k| k.batched()).collect()
+        } else {
+            Vec::new()
+        };
         Lineup { culls, batched }
     }
 
@@ -186,9 +274,8 @@ pub fn time_bvh(
     timing: &BvhTiming,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<RatioRecord>, BvhTimingError> {
-    let lineup = Lineup::new(&timing.culls);
     let per_run = timing.seconds / timing.runs.max(1) as f64;
-    let units_count = timing.units.len();
+    let units_count = timing.units.len() + usize::from(timing.family.is_some());
     let visits_per_run = ((per_run / VISIT.as_secs_f64()).ceil() as usize).max(units_count);
     let all = visits_per_run * timing.runs;
     let mut done = 0;
@@ -196,13 +283,13 @@ pub fn time_bvh(
     for run in 0..timing.runs {
         let units = build_units(timing)?;
         let mut rounds: Vec<Interleaver> = (0..units.len())
-            .map(|u| Interleaver::new(lineup.len(), timing.seed ^ (run * 1000 + u) as u64))
+            .map(|u| Interleaver::new(units[u].lineup.len(), timing.seed ^ (run * 1000 + u) as u64))
             .collect();
         let start = Instant::now();
         let mut visit = 0;
         while visit < units.len() || start.elapsed().as_secs_f64() < per_run {
             let u = visit % units.len();
-            let mut time_one = |i: usize| pass(&units[u], &lineup, i, &timing.dispatch);
+            let mut time_one = |i: usize| pass(&units[u], i, &timing.dispatch);
             let discard = usize::from(visit < units.len());
             rounds[u].visit(&mut time_one, discard, VISIT, 3, usize::MAX);
             visit += 1;
@@ -211,26 +298,36 @@ pub fn time_bvh(
         }
         let mut records = Vec::new();
         for (unit, r) in units.iter().zip(&rounds) {
-            push_records(&mut records, unit, r, &lineup, timing.seed)?;
+            push_records(&mut records, unit, r, timing.seed)?;
         }
         runs.push(records);
     }
     combine_runs(&runs).map_err(BvhTimingError::Runs)
 }
 
-/// Every scene × ν, built afresh, with its camera and shadow rays; checks that every
-/// cull gives `none`'s answers on them.
+/// Every scene × ν (and the family's scene), built afresh, with its camera and shadow
+/// rays; checks that every cull gives `none`'s answers on them.
 fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
-    let mut units = Vec::new();
+    let scene_error = |e: crate::scene::SceneError| BvhTimingError::Scene(e.to_string());
+    let mut scenes = Vec::new();
     for &(kind, nu) in &timing.units {
-        let scene = Scene::build(kind, nu, timing.tori, timing.seed)
-            .map_err(|e| BvhTimingError::Scene(e.to_string()))?;
+        let scene = Scene::build(kind, nu, timing.tori, timing.seed).map_err(scene_error)?;
+        scenes.push(UnitScene::Tori(scene));
+    }
+    if let Some(nu) = timing.family {
+        let scene = FamilyScene::build(timing.tori, timing.seed, 1.0, FAMILY_SPREAD)
+            .map_err(scene_error)?;
+        scenes.push(UnitScene::Family(scene, nu));
+    }
+    let mut units = Vec::new();
+    for scene in scenes {
         let (camera, shadow) = unit_rays(&scene, timing.rays);
-        let lineup = Lineup::new(&timing.culls);
+        let lineup = Lineup::new(&timing.culls, matches!(scene, UnitScene::Tori(_)));
         for &cull in &lineup.culls {
             if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow)) {
+                let (name, nu) = scene.label();
                 return Err(BvhTimingError::Mismatch(format!(
-                    "{} {kind} nu={nu}: {e}",
+                    "{} {name} nu={nu}: {e}",
                     cull.name()
                 )));
             }
@@ -239,6 +336,7 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
             scene,
             camera,
             shadow,
+            lineup,
         });
     }
     Ok(units)
@@ -246,7 +344,7 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
 
 /// `n` camera rays (every 4th of an image of about 4n pixels) and one shadow ray per hit
 /// of the whole image, evenly strided down to at most `n`.
-pub fn unit_rays(scene: &Scene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
+fn unit_rays(scene: &UnitScene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
     let side = ((4 * n.max(1)) as f64).sqrt().ceil() as usize;
     let image = scene.camera_rays(side);
     let hits: Vec<_> = image
@@ -263,7 +361,7 @@ pub fn unit_rays(scene: &Scene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
 
 /// Whether a cull at the leaves answers as `none` does on a unit's rays: `None`, or the
 /// first ray that differs.
-struct Agree<'a>(&'a Scene, &'a [Ray], &'a [Spawned]);
+struct Agree<'a>(&'a UnitScene, &'a [Ray], &'a [Spawned]);
 
 impl CullVisitor for Agree<'_> {
     type Output = Option<String>;
@@ -293,7 +391,8 @@ impl CullVisitor for Agree<'_> {
 }
 
 /// One timed pass of contender `i` over its unit's rays.
-fn pass(unit: &Unit, lineup: &Lineup, i: usize, dispatch: &Dispatch) -> Duration {
+fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
+    let lineup = &unit.lineup;
     let n = lineup.culls.len();
     if i < n {
         lineup.culls[i].visit(Closest(&unit.scene, &unit.camera))
@@ -301,22 +400,19 @@ fn pass(unit: &Unit, lineup: &Lineup, i: usize, dispatch: &Dispatch) -> Duration
         lineup.culls[i - n].visit(AnyHit(&unit.scene, &unit.shadow))
     } else {
         let cull = lineup.batched[i - 2 * n];
+        let UnitScene::Tori(scene) = &unit.scene else {
+            unreachable!("the family's lineup has no batched contender")
+        };
         let start = Instant::now();
         let mut stats = crate::scene::LeafBatchStats::default();
-        let hits = trace_leaves_batched(
-            &unit.scene,
-            dispatch,
-            cull,
-            black_box(&unit.camera),
-            &mut stats,
-        );
+        let hits = trace_leaves_batched(scene, dispatch, cull, black_box(&unit.camera), &mut stats);
         black_box((hits, stats));
         start.elapsed()
     }
 }
 
 /// A timed closest-hit pass, monomorphized per cull.
-struct Closest<'a>(&'a Scene, &'a [Ray]);
+struct Closest<'a>(&'a UnitScene, &'a [Ray]);
 
 impl CullVisitor for Closest<'_> {
     type Output = Duration;
@@ -334,7 +430,7 @@ impl CullVisitor for Closest<'_> {
 }
 
 /// A timed any-hit pass over shadow rays, monomorphized per cull.
-struct AnyHit<'a>(&'a Scene, &'a [Spawned]);
+struct AnyHit<'a>(&'a UnitScene, &'a [Spawned]);
 
 impl CullVisitor for AnyHit<'_> {
     type Output = Duration;
@@ -356,12 +452,12 @@ fn push_records(
     records: &mut Vec<RatioRecord>,
     unit: &Unit,
     r: &Interleaver,
-    lineup: &Lineup,
     seed: u64,
 ) -> Result<(), BvhTimingError> {
+    let lineup = &unit.lineup;
     let quiet = quiet_rounds(&r.ns, &undisturbed(&r.disturbed), QUIET_FRACTION);
     let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
-    let scene = &unit.scene;
+    let (scene, nu) = unit.scene.label();
     for (cull, metric, contender, references) in lineup.records() {
         let rays = if metric == BVH_ANYHIT {
             unit.shadow.len()
@@ -378,15 +474,13 @@ fn push_records(
             )
             .ok_or_else(|| {
                 BvhTimingError::NoRounds(format!(
-                    "{} {} {}/{reference} {metric}",
-                    scene.kind,
-                    scene.nu,
+                    "{scene} {nu} {}/{reference} {metric}",
                     cull.name()
                 ))
             })?;
             records.push(RatioRecord {
-                case: scene.kind.name().to_string(),
-                nu: scene.nu,
+                case: scene.to_string(),
+                nu,
                 cull: cull.name().to_string(),
                 reference,
                 metric: metric.to_string(),
@@ -423,6 +517,7 @@ mod tests {
             seconds: 0.2,
             runs: 2,
             dispatch: Dispatch::best(),
+            family: None,
         };
         let records = time_bvh(&timing, &mut |_, _| {}).unwrap();
         let n = CullKind::TIMED.len();
@@ -438,5 +533,31 @@ mod tests {
             assert!(BVH_METRICS.contains(&r.metric.as_str()));
         }
         assert!(records.iter().any(|r| r.reference == SCALAR_REFERENCE));
+    }
+
+    /// The family's scene adds closest-hit and any-hit records under the scene name
+    /// `family` at the ν asked, and no batched one.
+    #[test]
+    fn the_family_scene_is_timed_closest_and_any_hit() {
+        let culls = vec![CullKind::NoCull, CullKind::Cychosz, CullKind::Skala];
+        let timing = BvhTiming {
+            units: Vec::new(),
+            tori: 24,
+            seed: 5,
+            culls: culls.clone(),
+            rays: 32,
+            seconds: 0.2,
+            runs: 2,
+            dispatch: Dispatch::best(),
+            family: Some(4.0),
+        };
+        let records = time_bvh(&timing, &mut |_, _| {}).unwrap();
+        // none over cychosz, cychosz over none, skala over both; per metric.
+        assert_eq!(records.len(), 2 * 4, "{records:?}");
+        for r in &records {
+            assert_eq!((r.case.as_str(), r.nu), (FAMILY_SCENE, 4.0), "{r:?}");
+            assert_ne!(r.metric, BVH_BATCHED, "{r:?}");
+            assert!(r.ratio.is_finite() && r.ratio > 0.0, "{r:?}");
+        }
     }
 }

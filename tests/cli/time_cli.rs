@@ -588,8 +588,14 @@ fn cases_are_the_workloads_and_finish_is_for_the_gpu() {
         ),
         (&["--finish"][..], ["--finish", "--device gpu"]),
         (&["--workgroup", "128"][..], ["--workgroup", "--device gpu"]),
-        (&["--bvh", "--workgroup", "32"][..], ["--workgroup", "--device gpu"]),
-        (&["--family", "--device", "gpu"][..], ["--family", "--device gpu"]),
+        (
+            &["--bvh", "--workgroup", "32"][..],
+            ["--workgroup", "--device gpu"],
+        ),
+        (
+            &["--family", "--device", "gpu"][..],
+            ["--family", "--device gpu"],
+        ),
         (&["--bend", "--finish"][..], ["--bend", "--finish"]),
     ] {
         let args: Vec<&str> = ["time", "--workload", arg(&workload)]
@@ -675,4 +681,28 @@ fn family_and_bend_timing_write_every_shape_and_ratio() {
     refused(&o);
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("--bend") && err.contains("--family"), "{err}");
+}
+
+/// `time --bvh` times the torus family's scene beside the tori's: closest-hit and any-hit
+/// records under the scene `family` at ν = 4, none batched, and the meta lists it.
+#[test]
+fn time_bvh_times_the_family_scene() {
+    let (_dir, out) = temp_path("bvh.json");
+    cli_ok(
+        "time --bvh --workload quick --culls skala --seconds 1 --runs 2 --batch 16 --out {}",
+        &[arg(&out)],
+    );
+    let r = Results::load(&out).unwrap();
+    let family: Vec<_> = r.ratio.iter().filter(|x| x.case == "family").collect();
+    for metric in ["bvh_closest_ns", "bvh_anyhit_ns"] {
+        assert!(
+            family
+                .iter()
+                .any(|x| x.metric == metric && x.cull == "skala" && x.reference == "none"),
+            "{metric}: {family:?}"
+        );
+    }
+    assert!(family.iter().all(|x| x.nu == 4.0 && x.metric != "bvh_batched_ns"));
+    let scenes = &r.meta.sizes.as_ref().unwrap().bvh.as_ref().unwrap().scenes;
+    assert!(scenes.iter().any(|s| s == "family"), "{scenes:?}");
 }

@@ -9,7 +9,7 @@ use std::path::Path;
 use std::process::ExitCode;
 use torus_cull::Named;
 use torus_cull::batch::Dispatch;
-use torus_cull_lab::paired::bvh::{BvhTiming, time_bvh};
+use torus_cull_lab::paired::bvh::{BvhTiming, FAMILY_SCENE, time_bvh};
 use torus_cull_lab::results::{self, BvhSizes, Results};
 use torus_cull_lab::scene::SceneKind;
 use torus_cull_lab::workload::spec::Workload;
@@ -18,8 +18,8 @@ use torus_cull_lab::workload::spec::Workload;
 /// a few of them in the batched leaves, few enough for hundreds of rounds a run.
 const DEFAULT_BVH_RAYS: usize = 1024;
 
-/// The ν of the scenes the workload does not list (`mixed_nu`, `dense`: issue 40 times
-/// new scenes at one ν).
+/// The ν of the scenes the workload does not list (`mixed_nu`, `dense`, and the torus
+/// family's, whose shapes have their own: issue 40 times new scenes at one ν).
 const NEW_SCENE_NU: f64 = 4.0;
 
 /// `--runs` unless given: more runs than `time`'s 5, as the slow-state runs set aside per
@@ -103,6 +103,7 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
         seconds: args.seconds,
         runs: runs as usize,
         dispatch,
+        family: Some(NEW_SCENE_NU),
     };
     eprintln!(
         "time --bvh: {} scene x nu, {} tori, {rays} camera rays a pass, {runs} runs in {:.0} s",
@@ -119,7 +120,11 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
     results.meta.threads = Some(1);
     let mut sizes = timing_sizes(rays, &nus);
     sizes.bvh = Some(BvhSizes {
-        scenes: SceneKind::ALL.iter().map(|s| s.to_string()).collect(),
+        scenes: SceneKind::ALL
+            .iter()
+            .map(|s| s.to_string())
+            .chain([FAMILY_SCENE.to_string()])
+            .collect(),
         nu: nus,
         tori: spec.tori as u64,
         image: 0,

@@ -742,10 +742,7 @@ mod gpu {
         options: Options,
         _path: &Path,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
-        let Options {
-            finish: _,
-            workgroup: _,
-        } = options;
+        let _ = (options.finish, options.workgroup);
         Err("--device gpu needs a binary built with the feature gpu: \
              cargo run --release --features gpu -- time --device gpu"
             .into())
