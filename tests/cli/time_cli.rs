@@ -702,7 +702,11 @@ fn time_bvh_times_the_family_scene() {
             "{metric}: {family:?}"
         );
     }
-    assert!(family.iter().all(|x| x.nu == 4.0 && x.metric != "bvh_batched_ns"));
+    assert!(
+        family
+            .iter()
+            .all(|x| x.nu == 4.0 && x.metric != "bvh_batched_ns")
+    );
     let scenes = &r.meta.sizes.as_ref().unwrap().bvh.as_ref().unwrap().scenes;
     assert!(scenes.iter().any(|s| s == "family"), "{scenes:?}");
 }
