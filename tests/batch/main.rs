@@ -10,6 +10,7 @@ mod batch;
 mod batch_bvh;
 mod batch_solve;
 mod batch_wavefront;
+mod bend_paths;
 mod bvh;
 mod bvh_family;
 mod bvh_rays;

@@ -68,6 +68,7 @@
 //! closest alternative; pulp was taken for its longer record (the SIMD layer of `faer`)
 //! and its mask-register support, not by a measurement of both on this code.
 
+mod bend;
 mod certified;
 mod cull;
 mod intersect;

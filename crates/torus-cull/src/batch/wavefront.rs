@@ -64,7 +64,7 @@ pub struct Wavefront {
     answers: Answers,
     answers_f32: F32Answers,
     /// The rays of the last pass the scalar f64 path answered (indices, ascending).
-    finished: Vec<usize>,
+    pub(super) finished: Vec<usize>,
 }
 
 /// What one wavefront did.

@@ -21,17 +21,21 @@
 //! root is dropped (a line meets a plane once, and the origin is that point), and the
 //! first interval's side is read past the origin: no self-hit, and no ε.
 //!
-//! **Scope.** f64 scalar. The whole torus (no bore, Δφ = 2π) is the ring torus, and
-//! answers bit for bit as its [`crate::Torus`]. The SIMD lanes, the certified f32 path
-//! and the GPU take a `Torus`: [`PipeBend::as_torus`] hands over the whole torus's and
-//! refuses a cut one ([`BendError::NotWhole`]).
+//! **Scope.** The solid is answered in f64. The whole torus (no bore, Δφ = 2π) is the
+//! ring torus, and answers bit for bit as its [`crate::Torus`]. The certified f32 path
+//! ([`PipeBend::intersect_f32`]) and the SIMD lanes (`batch::Wavefront::intersect_bend`)
+//! answer a cut bend's misses of the outer torus themselves and hand every other ray to
+//! the f64 solid, counted. The GPU takes a `Torus`: [`PipeBend::as_torus`] hands over the
+//! whole torus's and refuses a cut one ([`BendError::NotWhole`]).
 
 mod crossings;
+mod f32;
 mod point_query;
 mod solid;
 mod wedge;
 
 pub use crossings::{BendCrossing, BendCrossings, BendHit};
+pub use f32::BendF32Hit;
 pub use point_query::BendProjection;
 pub use solid::{BendError, BendFace, PipeBend};
 pub use wedge::WedgeCull;

@@ -258,6 +258,12 @@ impl PipeBend {
         self.delta_phi
     }
 
+    /// The outer torus (R, r_max), whole: what the culls and the lanes see of the solid.
+    #[inline]
+    pub(crate) fn outer_torus(&self) -> &Torus {
+        &self.outer
+    }
+
     /// The whole torus's [`Torus`], for the paths that take one.
     ///
     /// # Errors
