@@ -160,7 +160,8 @@ enum Command {
         /// or --delta-phi the rows are answered for the solid of a pipe bend (centre 0,
         /// axis +y, φ = 0 along +x, φ growing toward −z) whose outer tube is --minor: its
         /// nearest crossing of any face, the torus culls on its outer torus, and the bend
-        /// oracle (--exact f64 only; a whole bend is the ring torus).
+        /// oracle (--exact f64, or f32: the misses of the outer torus proved in f32, the
+        /// rest escalated; a whole bend is the ring torus).
         #[arg(long = "bore", allow_hyphen_values = true)]
         bore: Option<f64>,
         /// The bend's segment start φ₀ in radians, finite (default 0).

@@ -60,7 +60,7 @@ use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
 use torus_cull::family::ToroidError;
-use torus_cull::{DRay, Ray, Torus, TorusError, intersect_f32};
+use torus_cull::{DRay, Ray, Torus, TorusError};
 
 pub use target::{BendFlags, Target, size};
 
@@ -211,7 +211,7 @@ pub fn eval_target_csv(
     mut output: impl Write,
 ) -> Result<usize, EvalError> {
     match precision {
-        Precision::CertifiedF32 => _ = target.as_torus("--exact f32")?,
+        Precision::CertifiedF32 => target.check_certified_f32()?,
         Precision::CertifiedGpu => _ = target.as_torus("--exact gpu")?,
         _ => {}
     }
@@ -399,14 +399,8 @@ fn evaluate(
     let ray = parse_ray(target, columns, line)?;
     let (t, escalated, finished, gpu_keeps) = match precision {
         Precision::CertifiedF32 => {
-            let torus = target.as_torus("--exact f32").map_err(|e| e.to_string())?;
-            let answer = intersect_f32(torus, &ray);
-            (
-                answer.hit.map(|hit| hit.t),
-                Some(answer.escalated),
-                None,
-                None,
-            )
+            let (t, escalated) = target.certified_f32(&ray).map_err(|e| e.to_string())?;
+            (t, Some(escalated), None, None)
         }
         Precision::CertifiedGpu => {
             let answer = gpu_answers.next().expect("one GPU answer per row");

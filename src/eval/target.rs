@@ -16,7 +16,9 @@
 //! [`PipeBend::kept_by`] (the torus cull on the outer torus, a whole-line test), its
 //! oracle column by the bend oracle ([`BendQuery`], the on-surface rule for `on_surface`
 //! rows), and an `on_surface` origin must lie within [`ON_SURFACE_REL`]·(R + r_max) of a
-//! face. A whole bend (no bore, Δφ = 2π) is the ring torus, answered as without the flags.
+//! face; `--exact f32` answers it by [`PipeBend::intersect_f32`] (its misses of the outer
+//! torus proved in f32, the rest escalated). A whole bend (no bore, Δφ = 2π) is the ring
+//! torus, answered as without the flags.
 
 use super::EvalError;
 use crate::oracle::bend::BendQuery;
@@ -118,6 +120,26 @@ impl Target {
                 ),
             }),
         }
+    }
+
+    /// Refuses a target the certified f32 path cannot take (`--exact f32`): a family
+    /// member other than the circular ring torus. The ring torus and the pipe bend pass.
+    pub fn check_certified_f32(&self) -> Result<(), EvalError> {
+        match self {
+            Target::Bend(_) => Ok(()),
+            _ => self.as_torus("--exact f32").map(|_| ()),
+        }
+    }
+
+    /// The certified f32 path's nearest `t` and whether it escalated to f64: the ring
+    /// torus's [`torus_cull::intersect_f32`], the pipe bend's [`PipeBend::intersect_f32`].
+    pub fn certified_f32(&self, ray: &Ray) -> Result<(Option<f32>, bool), EvalError> {
+        if let Target::Bend(bend) = self {
+            let answer = bend.intersect_f32(ray);
+            return Ok((answer.hit.map(|h| h.t), answer.escalated));
+        }
+        let answer = torus_cull::intersect_f32(self.as_torus("--exact f32")?, ray);
+        Ok((answer.hit.map(|h| h.t), answer.escalated))
     }
 
     /// The oracle's label of the ray over its range: the literal ray's, or by the
