@@ -64,12 +64,13 @@ pub const POSE_RAYS: usize = 1000;
 /// Disagreements kept per class for the console.
 const SHOWN: usize = 3;
 
-/// The classes at each ν of `nus`: (ν, Δφ, r_min/r_max), ν outermost.
-pub fn classes(nus: &[f64]) -> Vec<(f64, f64, f64)> {
+/// The classes (ν, Δφ, r_min/r_max) of every ν of `nus`, Δφ of `deltas` and ratio of
+/// `ratios`, ν outermost (the command's default: [`DELTAS`] × [`RATIOS`]).
+pub fn classes(nus: &[f64], deltas: &[f64], ratios: &[f64]) -> Vec<(f64, f64, f64)> {
     let mut all = Vec::new();
     for &nu in nus {
-        for delta in DELTAS {
-            for ratio in RATIOS {
+        for &delta in deltas {
+            for &ratio in ratios {
                 all.push((nu, delta, ratio));
             }
         }
@@ -230,6 +231,7 @@ impl BendFile {
             rays,
             pose: crate::workload::Pose::Random,
             bvh: None,
+            bend: None,
             sha256,
         };
         let meta = crate::results::Results::new(&workload, "bend").meta;
@@ -401,16 +403,16 @@ pub struct Checked {
     pub disagreements: Vec<(String, String)>,
 }
 
-/// Every class at each ν of `nus`, `rays` rays each, on `threads` threads (the counts do
-/// not depend on it: each pose draws from its own seed); `progress(done, all)` in poses.
+/// Every class of `all` ([`classes`]), `rays` rays each, on `threads` threads (the
+/// counts do not depend on it: each pose draws from its own seed); `progress(done, all)`
+/// in poses.
 pub fn check(
     rays: usize,
     seed: u64,
-    nus: &[f64],
+    all: &[(f64, f64, f64)],
     threads: usize,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Checked {
-    let all = classes(nus);
     let poses = rays.div_ceil(POSE_RAYS);
     let jobs: Vec<(usize, usize)> = (0..all.len())
         .flat_map(|c| (0..poses).map(move |p| (c, p)))

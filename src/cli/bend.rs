@@ -3,9 +3,11 @@
 
 use super::CliResult;
 use crate::console::out;
+use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
+use torus_cull_lab::workload::spec::Workload;
 
 /// The most rays per class.
 const MAX_RAYS: usize = 10_000_000;
@@ -23,6 +25,19 @@ pub struct BendArgs {
     /// ν = R/r_max of the classes, comma-separated (each finite, > 1).
     #[arg(long, value_delimiter = ',', default_value = "4")]
     nu: Vec<f64>,
+    /// The segments Δφ of the classes in radians, comma-separated (each 0 < Δφ <= 2π;
+    /// default 2π, π, π/2, π/6).
+    #[arg(long = "delta-phi", value_delimiter = ',', allow_hyphen_values = true)]
+    delta_phi: Vec<f64>,
+    /// r_min/r_max of the classes, comma-separated (each 0 <= ratio < 1; default 0, 0.5,
+    /// 0.9).
+    #[arg(long = "bore-ratio", value_delimiter = ',', allow_hyphen_values = true)]
+    bore_ratio: Vec<f64>,
+    /// A workload file (or `quick`/`default`) whose `bend` key names the classes and the
+    /// rays per class, its `seed` the seed: instead of --nu, --delta-phi, --bore-ratio,
+    /// --rays and --seed.
+    #[arg(long, conflicts_with_all = ["nu", "delta_phi", "bore_ratio", "rays", "seed"])]
+    workload: Option<PathBuf>,
     /// Worker threads (default: the available cores); the counts do not depend on it.
     #[arg(long)]
     threads: Option<usize>,
@@ -40,21 +55,30 @@ pub struct BendArgs {
 /// Runs `bend`. Exit 1 when a cull rejected a hit of the oracle, or the exact
 /// intersection missed, invented or misplaced a hit.
 pub fn run(args: BendArgs) -> CliResult {
-    super::plot::check_rays(args.rays, MAX_RAYS)?;
-    if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
-        return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)").into());
-    }
+    let (classes, rays, seed) = match &args.workload {
+        Some(file) => {
+            let workload = Workload::open(file)?;
+            let spec = workload.bend.ok_or_else(|| {
+                format!(
+                    "--workload {}: no `bend` key (the classes: nu, delta_phi, bore_ratio, rays)",
+                    file.display()
+                )
+            })?;
+            let classes = bend_check::classes(&spec.nu, &spec.delta_phi, &spec.bore_ratio);
+            (classes, spec.rays, workload.seed)
+        }
+        None => (flag_classes(&args)?, args.rays, args.seed),
+    };
+    super::plot::check_rays(rays, MAX_RAYS)?;
     let threads = super::threads::pick(args.threads)?;
     // Before the work, not after it.
     let path = super::plot::check_file_out(args.out, "-bend", args.no_plots)?;
-    let classes = bend_check::classes(&args.nu);
-    let mut file = BendFile::new(&classes, args.rays, args.seed);
-    let classes = classes.len();
+    let mut file = BendFile::new(&classes, rays, seed);
     let heartbeat = crate::console::Heartbeat::new(
-        format!("bend: {classes} classes x {} rays", args.rays),
+        format!("bend: {} classes x {rays} rays", classes.len()),
         "poses",
     );
-    let checked = bend_check::check(args.rays, args.seed, &args.nu, threads, &|done, all| {
+    let checked = bend_check::check(rays, seed, &classes, threads, &|done, all| {
         heartbeat.update(done as u64, all as u64);
     });
     out!("{}", bend_check::table(&checked.records))?;
@@ -83,4 +107,34 @@ pub fn run(args: BendArgs) -> CliResult {
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The classes of --nu, --delta-phi and --bore-ratio (their defaults where not given),
+/// each value checked against its range.
+fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
+    if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
+        return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)"));
+    }
+    if let Some(d) = args.delta_phi.iter().find(|d| !(**d > 0.0 && **d <= TAU)) {
+        return Err(format!(
+            "--delta-phi {d} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})"
+        ));
+    }
+    if let Some(r) = args.bore_ratio.iter().find(|r| !(0.0..1.0).contains(*r)) {
+        return Err(format!(
+            "--bore-ratio {r} is invalid (allowed: 0 <= --bore-ratio < 1)"
+        ));
+    }
+    let or = |given: &[f64], default: &[f64]| {
+        if given.is_empty() {
+            default.to_vec()
+        } else {
+            given.to_vec()
+        }
+    };
+    Ok(bend_check::classes(
+        &args.nu,
+        &or(&args.delta_phi, &bend_check::DELTAS),
+        &or(&args.bore_ratio, &bend_check::RATIOS),
+    ))
 }

@@ -13,6 +13,7 @@
 //! line hit, and every cull is a line test.
 
 pub mod adversarial;
+pub mod bend_spec;
 pub mod box_rays;
 mod camera;
 mod grazing;

@@ -6,6 +6,7 @@
 //! ```
 //! Unknown fields are errors. Every error names the file, the field and what is allowed.
 
+use super::bend_spec::{BendSpec, parse_bend};
 use super::{Case, Pose};
 use crate::scene_kind::SceneKind;
 use serde::Deserialize;
@@ -52,6 +53,8 @@ pub struct Workload {
     pub pose: Pose,
     /// The many-torus BVH scenes, if the file has a `bvh` key.
     pub bvh: Option<BvhSpec>,
+    /// The pipe bends, if the file has a `bend` key (`torus-cull bend --workload`).
+    pub bend: Option<BendSpec>,
     /// SHA-256 of the file's bytes, hex.
     pub sha256: String,
 }
@@ -68,6 +71,8 @@ struct RawWorkload {
     pose: Option<String>,
     #[serde(default)]
     bvh: Option<serde_json::Value>,
+    #[serde(default)]
+    bend: Option<serde_json::Value>,
 }
 
 /// The `bvh` key: many-torus scenes for the BVH bench and `render`.
@@ -144,6 +149,7 @@ impl Workload {
             rays,
             pose: Pose::Random,
             bvh: None,
+            bend: None,
             sha256: hex(&Sha256::digest(spec.as_bytes())),
         }
     }
@@ -173,7 +179,7 @@ impl Workload {
             file: path.to_path_buf(),
             field: None,
             message: format!(
-                "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh)"
+                "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh, bend)"
             ),
         })?;
         validate(raw, hex(&Sha256::digest(bytes))).map_err(|(field, message)| WorkloadError {
@@ -189,7 +195,8 @@ impl Workload {
 type FieldError = (String, String);
 
 /// The workload `raw` describes, checked one field at a time in a fixed order (name,
-/// cases, nu, rays, seed, pose, bvh): of a file's several faults, the same one is named.
+/// cases, nu, rays, seed, pose, bvh, bend): of a file's several faults, the same one is
+/// named.
 fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
     check_name(&raw.name)?;
     let cases = parse_cases(&raw.cases)?;
@@ -198,6 +205,7 @@ fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
     let seed = parse_seed(&raw.seed)?;
     let pose = parse_pose(raw.pose.as_deref())?;
     let bvh = raw.bvh.map(parse_bvh).transpose()?;
+    let bend = raw.bend.map(parse_bend).transpose()?;
     Ok(Workload {
         name: raw.name,
         seed,
@@ -206,6 +214,7 @@ fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
         rays,
         pose,
         bvh,
+        bend,
         sha256,
     })
 }

@@ -96,6 +96,15 @@ fn bad_bend_arguments_name_the_flag_and_the_range() {
         (&["--nu", "1"], "--nu 1"),
         (&["--nu", "nan"], "--nu NaN"),
         (&["--threads", "0"], "--threads 0"),
+        (&["--delta-phi", "7"], "0 < --delta-phi <= 2*pi"),
+        (&["--delta-phi", "0"], "--delta-phi 0"),
+        (&["--bore-ratio", "1"], "0 <= --bore-ratio < 1"),
+        (&["--bore-ratio", "-0.1"], "--bore-ratio -0.1"),
+        (
+            &["--workload", "quick", "--rays", "5"],
+            "cannot be used with",
+        ),
+        (&["--workload", "quick"], "no `bend` key"),
     ] {
         let mut all = vec!["bend", "--no-plots", "--out", "/nonexistent/x.json"];
         all.extend_from_slice(args);
@@ -235,4 +244,103 @@ fn bad_bend_values_name_the_flag_and_the_range() {
         err.contains(":2:") && err.contains("not a surface point"),
         "{err}"
     );
+}
+
+/// The classes a user names: `--delta-phi` and `--bore-ratio`, or a workload file's
+/// `bend` key (its `seed` the seed); a bad value in the file names the file, the field and
+/// the range.
+#[test]
+fn bend_takes_its_classes_from_flags_or_a_workload_file() {
+    let (dir, path) = temp_path("flags.json");
+    let out = torus_cull(&[
+        "bend",
+        "--delta-phi",
+        "2",
+        "--bore-ratio",
+        "0.2",
+        "--rays",
+        "700",
+        "--no-plots",
+        "--out",
+        arg(&path),
+    ]);
+    assert_ok(&out);
+    let file = read_json(&path);
+    let classes = file["classes"].as_array().unwrap();
+    assert_eq!(classes.len(), 1);
+    assert_eq!(classes[0]["delta_phi"], 2.0);
+    assert_eq!(classes[0]["bore_ratio"], 0.2);
+    assert_eq!(classes[0]["rays"], 700);
+
+    let workload = dir.path().join("bends.json");
+    let text = |bend: &str| {
+        format!(r#"{{"name":"bends","seed":9,"cases":["hole"],"nu":[2],"rays":1,"bend":{bend}}}"#)
+    };
+    std::fs::write(
+        &workload,
+        text(r#"{"nu":[2.5],"delta_phi":[1.0,3.0],"bore_ratio":[0.3],"rays":700}"#),
+    )
+    .unwrap();
+    let from_file = dir.path().join("from-file.json");
+    let out = torus_cull(&[
+        "bend",
+        "--workload",
+        arg(&workload),
+        "--no-plots",
+        "--out",
+        arg(&from_file),
+    ]);
+    assert_ok(&out);
+    let file = read_json(&from_file);
+    assert_eq!(file["seed"], 9);
+    let classes = file["classes"].as_array().unwrap();
+    let got: Vec<(f64, f64, f64)> = classes
+        .iter()
+        .map(|c| {
+            (
+                c["nu"].as_f64().unwrap(),
+                c["delta_phi"].as_f64().unwrap(),
+                c["bore_ratio"].as_f64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(got, [(2.5, 1.0, 0.3), (2.5, 3.0, 0.3)]);
+    assert!(classes.iter().all(|c| c["rays"] == 700));
+
+    for (bend, expect) in [
+        (
+            r#"{"nu":[4],"delta_phi":[7],"bore_ratio":[0],"rays":10}"#,
+            "field `bend.delta_phi[0]`: 7 is invalid (allowed: 0 < delta_phi <= 2*pi",
+        ),
+        (
+            r#"{"nu":[4],"delta_phi":[1],"bore_ratio":[0,1],"rays":10}"#,
+            "field `bend.bore_ratio[1]`: 1 is invalid (allowed: 0 <= bore_ratio < 1)",
+        ),
+        (
+            r#"{"nu":[4],"delta_phi":[1],"bore_ratio":[0],"rays":0}"#,
+            "field `bend.rays`: 0 is invalid",
+        ),
+        (
+            r#"{"nu":[],"delta_phi":[1],"bore_ratio":[0],"rays":10}"#,
+            "field `bend.nu`: must list at least one value",
+        ),
+        (
+            r#"{"nu":[4],"delta_phi":[1],"bore_ratio":[0],"rays":10,"bores":[1]}"#,
+            "field `bend`: unknown field `bores`",
+        ),
+    ] {
+        std::fs::write(&workload, text(bend)).unwrap();
+        let err = refused(&torus_cull(&[
+            "bend",
+            "--workload",
+            arg(&workload),
+            "--no-plots",
+            "--out",
+            arg(&from_file),
+        ]));
+        assert!(
+            err.contains("bends.json") && err.contains(expect),
+            "{bend}: {err}"
+        );
+    }
 }

@@ -1,0 +1,107 @@
+//! A workload file's `bend` key: the pipe bends `torus-cull bend --workload FILE` checks.
+//!
+//! ```json
+//! "bend": { "nu": [4], "delta_phi": [6.283185307179586, 3.14159, 1.5708, 0.5236],
+//!           "bore_ratio": [0, 0.5, 0.9], "rays": 100000 }
+//! ```
+//!
+//! Each (ν, Δφ, r_min/r_max) is a class of `rays` rays (ν = R/r_max, Δφ the segment in
+//! radians, r_min/r_max the bore's share of the tube), posed and scaled as the command
+//! does; the workload's `seed` seeds them.
+
+use serde::Deserialize;
+use std::f64::consts::TAU;
+use torus_cull::MAX_NU;
+
+/// The pipe bends of a workload's `bend` key.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BendSpec {
+    /// ν = R/r_max of the classes.
+    pub nu: Vec<f64>,
+    /// The segments Δφ, radians.
+    pub delta_phi: Vec<f64>,
+    /// r_min/r_max of the classes.
+    pub bore_ratio: Vec<f64>,
+    /// Rays per class.
+    pub rays: usize,
+}
+
+/// The most rays per class.
+pub const MAX_BEND_RAYS: i64 = 10_000_000;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBend {
+    nu: Vec<f64>,
+    delta_phi: Vec<f64>,
+    bore_ratio: Vec<f64>,
+    rays: i64,
+}
+
+/// (the field at fault, what is wrong and what is allowed).
+type FieldError = (String, String);
+
+/// Checks one list: not empty, and every value `ok`; a fault names `bend.<name>[i]` and
+/// `allowed`.
+fn check_list(
+    name: &str,
+    values: &[f64],
+    ok: impl Fn(f64) -> bool,
+    allowed: &str,
+) -> Result<(), FieldError> {
+    if values.is_empty() {
+        return Err((
+            format!("bend.{name}"),
+            format!("must list at least one value (allowed: {allowed})"),
+        ));
+    }
+    for (i, &v) in values.iter().enumerate() {
+        if !ok(v) {
+            return Err((
+                format!("bend.{name}[{i}]"),
+                format!("{} is invalid (allowed: {allowed})", crate::number::Num(v)),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The `bend` key's value, checked field by field (nu, delta_phi, bore_ratio, rays).
+pub(super) fn parse_bend(value: serde_json::Value) -> Result<BendSpec, FieldError> {
+    let raw: RawBend = serde_json::from_value(value).map_err(|e| {
+        (
+            "bend".to_string(),
+            format!("{e} (expected nu, delta_phi, bore_ratio, rays)"),
+        )
+    })?;
+    check_list(
+        "nu",
+        &raw.nu,
+        |nu| nu.is_finite() && nu > 1.0 && nu <= MAX_NU,
+        &format!("1 < nu <= {MAX_NU}"),
+    )?;
+    check_list(
+        "delta_phi",
+        &raw.delta_phi,
+        |d| d > 0.0 && d <= TAU,
+        "0 < delta_phi <= 2*pi = 6.283185307179586",
+    )?;
+    check_list(
+        "bore_ratio",
+        &raw.bore_ratio,
+        |r| (0.0..1.0).contains(&r),
+        "0 <= bore_ratio < 1",
+    )?;
+    if !(1..=MAX_BEND_RAYS).contains(&raw.rays) {
+        return Err((
+            "bend.rays".into(),
+            format!("{} is invalid (allowed: 1 ..= {MAX_BEND_RAYS})", raw.rays),
+        ));
+    }
+    Ok(BendSpec {
+        nu: raw.nu,
+        delta_phi: raw.delta_phi,
+        bore_ratio: raw.bore_ratio,
+        rays: raw.rays as usize,
+    })
+}
