@@ -2,8 +2,8 @@
 //! `compare` of two bend files; `eval` on a pipe bend's solid.
 
 use super::support::{
-    arg, assert_ok, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused, stderr, svgs,
-    temp_path, torus_cull,
+    arg, assert_ok, cli, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused, stderr,
+    svgs, temp_path, torus_cull,
 };
 
 #[test]
@@ -282,14 +282,13 @@ fn bend_takes_its_classes_from_flags_or_a_workload_file() {
     )
     .unwrap();
     let from_file = dir.path().join("from-file.json");
-    let out = torus_cull(&[
-        "bend",
-        "--workload",
-        arg(&workload),
-        "--no-plots",
-        "--out",
-        arg(&from_file),
-    ]);
+    let run = || {
+        cli(
+            "bend --workload {} --no-plots --out {}",
+            &[arg(&workload), arg(&from_file)],
+        )
+    };
+    let out = run();
     assert_ok(&out);
     let file = read_json(&from_file);
     assert_eq!(file["seed"], 9);
@@ -330,14 +329,7 @@ fn bend_takes_its_classes_from_flags_or_a_workload_file() {
         ),
     ] {
         std::fs::write(&workload, text(bend)).unwrap();
-        let err = refused(&torus_cull(&[
-            "bend",
-            "--workload",
-            arg(&workload),
-            "--no-plots",
-            "--out",
-            arg(&from_file),
-        ]));
+        let err = refused(&run());
         assert!(
             err.contains("bends.json") && err.contains(expect),
             "{bend}: {err}"
