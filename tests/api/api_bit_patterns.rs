@@ -29,34 +29,27 @@ const LOOK_AT_THE_DIRECTION: [CullKind; 7] = [
     CullKind::DiscriminantF64,
 ];
 
-/// Floats by bit pattern: every class of f32 equally likely to come up as any other.
-fn any_f32() -> impl Strategy<Value = f32> {
-    prop_oneof![
-        any::<u32>().prop_map(f32::from_bits),
-        any::<f32>(),
-        (-4.0f32..4.0),
-        Just(0.0f32),
-        Just(-0.0f32),
-        Just(f32::MIN_POSITIVE / 2.0),
-        Just(f32::MAX),
-        Just(f32::INFINITY),
-        Just(f32::NAN),
-    ]
+/// Floats by bit pattern, for f32 and f64 alike: every class (any bits, finite, small,
+/// signed zeros, subnormal, the largest, infinite, NaN) equally likely to come up.
+macro_rules! any_float {
+    ($name:ident, $t:ty, $bits:ty) => {
+        fn $name() -> impl Strategy<Value = $t> {
+            prop_oneof![
+                any::<$bits>().prop_map(<$t>::from_bits),
+                any::<$t>(),
+                (-4.0 as $t..4.0),
+                Just(0.0 as $t),
+                Just(-0.0 as $t),
+                Just(<$t>::MIN_POSITIVE / 2.0),
+                Just(<$t>::MAX),
+                Just(<$t>::INFINITY),
+                Just(<$t>::NAN),
+            ]
+        }
+    };
 }
-
-fn any_f64() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        any::<u64>().prop_map(f64::from_bits),
-        any::<f64>(),
-        (-4.0f64..4.0),
-        Just(0.0f64),
-        Just(-0.0f64),
-        Just(f64::MIN_POSITIVE / 2.0),
-        Just(f64::MAX),
-        Just(f64::INFINITY),
-        Just(f64::NAN),
-    ]
-}
+any_float!(any_f32, f32, u32);
+any_float!(any_f64, f64, u64);
 
 fn vec3() -> impl Strategy<Value = Vec3> {
     prop::array::uniform3(any_f32()).prop_map(Vec3::from)

@@ -252,19 +252,10 @@ fn bad_bend_values_name_the_flag_and_the_range() {
 #[test]
 fn bend_takes_its_classes_from_flags_or_a_workload_file() {
     let (dir, path) = temp_path("flags.json");
-    let out = torus_cull(&[
-        "bend",
-        "--delta-phi",
-        "2",
-        "--bore-ratio",
-        "0.2",
-        "--rays",
-        "700",
-        "--no-plots",
-        "--out",
-        arg(&path),
-    ]);
-    assert_ok(&out);
+    cli_ok(
+        "bend --delta-phi 2 --bore-ratio 0.2 --rays 700 --no-plots --out {}",
+        &[arg(&path)],
+    );
     let file = read_json(&path);
     let classes = file["classes"].as_array().unwrap();
     assert_eq!(classes.len(), 1);

@@ -79,32 +79,28 @@ fn the_index_lists_every_committed_json_and_nothing_else() {
         "results/README.md is not committed"
     );
 
-    let unlisted: Vec<_> = committed
-        .iter()
-        .filter(|f| f.ends_with(".json") && !linked.contains(*f))
-        .collect();
-    assert!(
-        unlisted.is_empty(),
-        "committed under results/ but not linked in results/README.md: {unlisted:?}"
+    // Each rule: the files that break it, and what to say of them.
+    let none_of = |bad: Vec<&String>, what: &str| assert!(bad.is_empty(), "{what}: {bad:?}");
+    none_of(
+        committed
+            .iter()
+            .filter(|f| f.ends_with(".json") && !linked.contains(*f))
+            .collect(),
+        "committed under results/ but not linked in results/README.md",
     );
-
-    let missing: Vec<_> = linked
-        .iter()
-        .filter(|f| !root().join("results").join(f).is_file())
-        .collect();
-    assert!(
-        missing.is_empty(),
-        "linked in results/README.md but no such file under results/: {missing:?}"
+    none_of(
+        linked
+            .iter()
+            .filter(|f| !root().join("results").join(f).is_file())
+            .collect(),
+        "linked in results/README.md but no such file under results/",
     );
-
-    let svgs: Vec<_> = committed
-        .iter()
-        .filter(|f| f.to_ascii_lowercase().ends_with(".svg"))
-        .collect();
-    assert!(
-        svgs.is_empty(),
-        "SVGs committed under results/ (torus-cull plot redraws them; git rm --cached them): \
-         {svgs:?}"
+    none_of(
+        committed
+            .iter()
+            .filter(|f| f.to_ascii_lowercase().ends_with(".svg"))
+            .collect(),
+        "SVGs committed under results/ (torus-cull plot redraws them; git rm --cached them)",
     );
 }
 
