@@ -114,7 +114,7 @@ fn every_cull_against_the_oracle_and_the_cpu() {
                 }
                 for (i, k) in [1e-3f32, 1.0, 1e3].into_iter().enumerate() {
                     let seed = 0xC011 ^ nu.to_bits() ^ (i as u64) << 8;
-                    for batch in &family(case, nu, 400, seed) {
+                    for batch in &family(case, nu, 250, seed) {
                         let rays: Vec<Ray> = batch
                             .rays
                             .iter()

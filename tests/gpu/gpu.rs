@@ -229,7 +229,9 @@ impl Tally {
 #[test]
 fn generators_near_and_far() {
     let Some(gpu) = gpu() else { return };
-    for back in [0.0f32, 10.0, 1e3, 1e5] {
+    // Near, far (10³·(R + r)) and very far (10⁵): the origin's f32 rounding at 10 is
+    // the near case's, and CI's 15 minutes pay for three distances, not four.
+    for back in [0.0f32, 1e3, 1e5] {
         // Per cull, per case; the CPU's answers once per batch for every cull.
         let mut tallies: Vec<Vec<Tally>> = GpuCull::ALL
             .iter()
@@ -308,7 +310,7 @@ fn adversarial_lines() {
             tallies[k][slot].check(gpu, cull, torus, rays, &answers);
         }
     };
-    let edges = edge_sets(&mut rng, &[1.01, 1.1, 2.0, 8.0, 100.0, 1000.0], 400, 200);
+    let edges = edge_sets(&mut rng, &[1.01, 1.1, 2.0, 8.0, 100.0, 1000.0], 300, 150);
     for (torus, rays) in &edges.hole_edge {
         check(0, torus, rays);
     }

@@ -204,7 +204,8 @@ impl Tally {
 fn hole_edge_lines_inside_the_tube() {
     let mut rng = Pcg64::seed_from_u64(0xED6E);
     let mut tally = Tally::default();
-    for _ in 0..700_000 {
+    // 500 000 lines (16 s of CI's time at 700 000).
+    for _ in 0..500_000 {
         let setup = random_setup(&mut rng);
         let (point, dir) = hole_edge_line(&mut rng, setup.major, setup.minor);
         if let Some(ray) = setup.ray(&mut rng, point, dir) {
@@ -280,9 +281,10 @@ fn generator_families_at_extreme_nu_and_scale() {
     let mut seed = 0xE7_0000u64;
     for nu in [1.01, 1.05, 1.2, 100.0, 1000.0] {
         for &case in Case::ALL {
-            // Five random scales and poses per (ν, case), 2 000 rays each (eight took 34 s
-            // of CI's 2 cores; the oracle's grids and tangent families cover the rest).
-            for _ in 0..5 {
+            // Four random scales and poses per (ν, case), 2 000 rays each (eight took 34 s
+            // of CI's 2 cores, five 21 s; the oracle's grids and tangent families cover the
+            // rest).
+            for _ in 0..4 {
                 seed += 1;
                 let batch = generate(case, nu, 2_000, seed, Pose::Random)
                     .unwrap_or_else(|e| panic!("{case} at nu={nu}: {e}"));
@@ -311,7 +313,7 @@ fn generator_families_at_extreme_nu_and_scale() {
             }
         }
     }
-    tally.assert_clean("generators", 100_000);
+    tally.assert_clean("generators", 80_000);
 }
 
 /// Celeritas PR 2451: its Ferrari solver returned 32 235.538 instead of 103.849 on a fat

@@ -118,9 +118,13 @@ impl FamilyShape {
     /// runs it on its image line ([`Toroid::kept_by`], which declines a cull not proved
     /// for its shape), a bend on its outer torus with the segment's wedge after it
     /// ([`PipeBend::wedge_cull`]). Both are conservative: a kept-out ray misses the solid.
+    /// `none` keeps every ray, a bend's included: it is the exact intersection alone (the
+    /// wedge is a cull, timed as `wedge+none` by `time --bend`), so that every cull's
+    /// ratio over it counts the wedge's saving too.
     pub fn kept_by<C: Cull>(&self, cull: &C, ray: &Ray) -> bool {
         match self {
             FamilyShape::Toroid(t) => t.kept_by(cull, ray),
+            FamilyShape::Bend(_) if cull.name() == NoCull.name() => true,
             FamilyShape::Bend(b) => {
                 // `wedge_cull` takes the torus cull by value; the wedge alone on the outer
                 // torus's line is the same test after `kept_by`.
