@@ -10,7 +10,7 @@
 //! [`Wavefront::finished_in_f64`].
 
 use super::wavefront::{Wavefront, WavefrontStats};
-use crate::bend::{BendFace, BendHit, PipeBend};
+use crate::bend::{BendHit, PipeBend};
 use crate::cull::BatchCull;
 use crate::num::Dispatch;
 use crate::{Precision, Ray};
@@ -55,15 +55,7 @@ impl Wavefront {
         if let Ok(torus) = bend.as_torus() {
             let mut ring = Vec::new();
             let stats = self.intersect(dispatch, cull, torus, rays, &mut ring);
-            hits.extend(ring.into_iter().map(|h| {
-                h.map(|h| BendHit {
-                    t: h.t,
-                    normal: h.normal,
-                    point: h.point,
-                    front_face: h.front_face,
-                    face: BendFace::Outer,
-                })
-            }));
+            hits.extend(ring.into_iter().map(|h| h.map(BendHit::on_outer)));
             return stats;
         }
         let mut meets = Vec::new();

@@ -42,6 +42,20 @@ pub struct BendHit<P: Precision = glam::Vec3> {
     pub face: BendFace,
 }
 
+impl<P: Precision> BendHit<P> {
+    /// A ring torus's hit as the whole bend's: the same fields, on the face `Outer` (a
+    /// whole bend is its outer torus, on every path).
+    pub(crate) fn on_outer(hit: crate::Hit<P>) -> BendHit<P> {
+        BendHit {
+            t: hit.t,
+            normal: hit.normal,
+            point: hit.point,
+            front_face: hit.front_face,
+            face: BendFace::Outer,
+        }
+    }
+}
+
 /// Every crossing of a ray with a pipe bend in its range, sorted (at most ten).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BendCrossings<P: Precision = glam::Vec3> {
@@ -138,14 +152,7 @@ impl PipeBend {
     #[must_use]
     pub fn intersect<P: Precision>(&self, ray: &Ray<P>) -> Option<BendHit<P>> {
         if let Ok(torus) = self.as_torus() {
-            let hit = crate::intersect(torus, ray)?;
-            return Some(BendHit {
-                t: hit.t,
-                normal: hit.normal,
-                point: hit.point,
-                front_face: hit.front_face,
-                face: BendFace::Outer,
-            });
+            return crate::intersect(torus, ray).map(BendHit::on_outer);
         }
         let (first, _) = self.walk(ray, true);
         let c = first[0]?;

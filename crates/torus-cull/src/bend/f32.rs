@@ -8,7 +8,7 @@
 //! outer torus, which may fall in the cut-away arc or lead to the bore or a cap; a segment
 //! that starts inside; a ray from a surface point) escalates to [`PipeBend::intersect`].
 
-use super::{BendFace, BendHit, PipeBend};
+use super::{BendHit, PipeBend};
 use crate::geometry::ray::sealed::Scalar;
 use crate::{F32Verdict, Precision, Ray, intersect_f32, intersect_f32_certified};
 
@@ -52,13 +52,7 @@ impl PipeBend {
         if let Ok(torus) = self.as_torus() {
             let answer = intersect_f32(torus, ray);
             return BendF32Hit {
-                hit: answer.hit.map(|h| BendHit {
-                    t: h.t,
-                    normal: h.normal,
-                    point: h.point,
-                    front_face: h.front_face,
-                    face: BendFace::Outer,
-                }),
+                hit: answer.hit.map(BendHit::on_outer),
                 escalated: answer.escalated,
             };
         }
