@@ -102,6 +102,18 @@ impl fmt::Display for SceneError {
 
 impl std::error::Error for SceneError {}
 
+/// A scene's length unit must be a positive finite number (the torus and family scenes).
+pub(crate) fn check_scale(scale: f64) -> Result<(), SceneError> {
+    if scale.is_finite() && scale > 0.0 {
+        Ok(())
+    } else {
+        Err(SceneError(format!(
+            "scale = {} is invalid (allowed: a positive finite number)",
+            crate::number::Num(scale)
+        )))
+    }
+}
+
 impl Scene {
     /// Build `count` tori of `kind` at ν, deterministically from `seed`.
     pub fn build(kind: SceneKind, nu: f64, count: usize, seed: u64) -> Result<Scene, SceneError> {
@@ -117,12 +129,7 @@ impl Scene {
         seed: u64,
         scale: f64,
     ) -> Result<Scene, SceneError> {
-        if !(scale.is_finite() && scale > 0.0) {
-            return Err(SceneError(format!(
-                "scale = {} is invalid (allowed: a positive finite number)",
-                crate::number::Num(scale)
-            )));
-        }
+        check_scale(scale)?;
         if !(nu.is_finite() && nu > 1.0 && nu <= torus_cull::MAX_NU) {
             return Err(SceneError(format!(
                 "nu = {} is invalid (allowed: 1 < nu <= {})",

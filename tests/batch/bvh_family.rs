@@ -158,3 +158,27 @@ fn long_directions_family_under_obvhs_clamp() {
     assert_every_class_hit(&scene, &rays, "|d| = 1e5");
     assert_all_match(&scene, &rays, "|d| = 1e5");
 }
+
+/// A scale that is not a positive finite number is refused by both scene builders, naming
+/// the value and the allowed range.
+#[test]
+fn scenes_refuse_a_bad_scale() {
+    use torus_cull_lab::scene::{Scene, SceneKind};
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let errors = [
+            FamilyScene::build(12, 3, bad, 1.5)
+                .err()
+                .map(|e| e.to_string()),
+            Scene::build_scaled(SceneKind::RingField, 4.0, 12, 3, bad)
+                .err()
+                .map(|e| e.to_string()),
+        ];
+        for e in errors {
+            let e = e.unwrap_or_else(|| panic!("scale {bad} accepted"));
+            assert!(
+                e.contains("scale = ") && e.contains("positive finite"),
+                "{e}"
+            );
+        }
+    }
+}

@@ -66,12 +66,7 @@ impl FamilyScene {
         scale: f64,
         spread: f64,
     ) -> Result<FamilyScene, SceneError> {
-        if !(scale.is_finite() && scale > 0.0) {
-            return Err(SceneError(format!(
-                "scale = {} is invalid (allowed: a positive finite number)",
-                crate::number::Num(scale)
-            )));
-        }
+        super::check_scale(scale)?;
         if count == 0 {
             return Err(SceneError("a scene needs at least one shape".into()));
         }
