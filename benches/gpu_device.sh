@@ -100,13 +100,13 @@ done
 if [ "$smoke" = 1 ]; then
   budget=${budget:-240}
   # Tiny: every step and every flag as in the real run, seconds of work on lavapipe.
-  grid_batch=4096; grid_seconds=4; grid_nu=(--nu 4)
+  grid_batch=4096; grid_seconds=4
   sweep_pows=(10 11 12); sweep_seconds=1
   wg_sizes=(32 256); wg_batch=4096
   finish_batch=4096; finish_seconds=2
 else
   budget=${budget:-450}
-  grid_batch=1048576; grid_seconds=20; grid_nu=(); rest_seconds=60
+  grid_batch=1048576; grid_seconds=20; rest_seconds=60
   sweep_pows=(16 17 18 19 20 21 22); sweep_seconds=8
   wg_sizes=(32 128 256); wg_batch=1048576
   finish_batch=1048576; finish_seconds=30
@@ -275,12 +275,9 @@ hi=$(echo $wl_nu | awk '{print $NF}')
 # 1. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s
 #    on the H100), the rest of the workload's ν last, with what the budget leaves (on the
 #    H100 the whole default grid did not fit 430 s: 55 of its 60 units, see below).
-if [ "$smoke" = 1 ]; then
-  step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" "${grid_nu[@]}"
-else
-  step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" \
-    --nu "$(printf '%s\n' 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)"
-fi
+grid_nu=$(printf '%s\n' 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)
+[ "$smoke" = 1 ] && grid_nu=4
+step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" --nu "$grid_nu"
 
 # 2. The batch sweep.
 if ! echo " $wl_nu " | grep -q ' 4 '; then

@@ -8,6 +8,7 @@
 //! the adapter has none). Upload and read-back are timed once per case × ν and reported
 //! apart.
 
+use super::GpuOptions;
 use crate::console::outln;
 use std::path::Path;
 use std::process::ExitCode;
@@ -33,14 +34,6 @@ const METRIC: &str = "gpu_kernel_ns";
 /// The contender that only copies each ray's record: the bandwidth floor.
 const COPY: &str = "copy";
 
-/// What `time --device gpu` runs besides the kernel's default.
-pub(super) struct Options {
-    /// Also time the f64 finish pass.
-    pub finish: bool,
-    /// Threads per workgroup of the kernel ([`GpuIntersector::with_workgroup`]).
-    pub workgroup: u32,
-}
-
 /// Times the kernel on every case × ν of `workload`.
 pub(super) fn run(
     workload: &Workload,
@@ -48,7 +41,7 @@ pub(super) fn run(
     culls: &[CullKind],
     seconds: f64,
     batch: usize,
-    Options { finish, workgroup }: Options,
+    GpuOptions { finish, workgroup }: GpuOptions,
     path: &Path,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let mut culls = gpu_culls(culls)?;

@@ -225,7 +225,7 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             &culls,
             args.seconds,
             batch,
-            gpu::Options {
+            GpuOptions {
                 finish: args.finish,
                 workgroup: args.workgroup,
             },
@@ -715,6 +715,16 @@ fn check_writable(path: &Path) -> Result<(), String> {
 /// `torus-cull time --bvh`.
 mod bvh;
 
+/// What `time --device gpu` runs besides the kernel's default (read only by a binary
+/// built with the feature gpu).
+#[cfg_attr(not(feature = "gpu"), allow(dead_code))]
+struct GpuOptions {
+    /// Also time the f64 finish pass.
+    finish: bool,
+    /// Threads per workgroup of the kernel (`GpuIntersector::with_workgroup`).
+    workgroup: u32,
+}
+
 /// `torus-cull time --device gpu`.
 #[cfg(feature = "gpu")]
 mod gpu;
@@ -727,22 +737,15 @@ mod gpu {
     use torus_cull::CullKind;
     use torus_cull_lab::workload::spec::Workload;
 
-    /// As the GPU build's.
-    pub(super) struct Options {
-        pub finish: bool,
-        pub workgroup: u32,
-    }
-
     pub(super) fn run(
         _workload: &Workload,
         _nus: &[f64],
         _culls: &[CullKind],
         _seconds: f64,
         _batch: usize,
-        options: Options,
+        _options: super::GpuOptions,
         _path: &Path,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
-        let _ = (options.finish, options.workgroup);
         Err("--device gpu needs a binary built with the feature gpu: \
              cargo run --release --features gpu -- time --device gpu"
             .into())

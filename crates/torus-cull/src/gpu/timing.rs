@@ -386,7 +386,7 @@ impl ResidentRays<'_> {
         repeats: usize,
     ) -> Result<(Duration, Vec<Vec<Duration>>), GpuError> {
         let gpu = self.gpu;
-        let groups = gpu.workgroup as usize;
+        let threads = gpu.workgroup as usize;
         let repeats = repeats.max(1);
         let passes = 1 + usize::from(finish.is_some());
         let queries = gpu.has_timestamps().then(|| {
@@ -435,7 +435,7 @@ impl ResidentRays<'_> {
                 pass.set_pipeline(pipeline);
                 for (buffers, &count) in self.chunks.iter().zip(&self.counts) {
                     pass.set_bind_group(0, &buffers.bind_group, &[]);
-                    pass.dispatch_workgroups(count.div_ceil(groups) as u32, 1, 1);
+                    pass.dispatch_workgroups(count.div_ceil(threads) as u32, 1, 1);
                 }
             }
             if let Some(finish) = finish {
