@@ -7,6 +7,7 @@ use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
+use torus_cull_lab::workload::bend_spec::{bore_ratio_ok, delta_phi_ok};
 use torus_cull_lab::workload::spec::Workload;
 
 /// The most rays per class.
@@ -115,12 +116,12 @@ fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
     if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
         return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)"));
     }
-    if let Some(d) = args.delta_phi.iter().find(|d| !(**d > 0.0 && **d <= TAU)) {
+    if let Some(d) = args.delta_phi.iter().find(|d| !delta_phi_ok(**d)) {
         return Err(format!(
             "--delta-phi {d} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})"
         ));
     }
-    if let Some(r) = args.bore_ratio.iter().find(|r| !(0.0..1.0).contains(*r)) {
+    if let Some(r) = args.bore_ratio.iter().find(|r| !bore_ratio_ok(**r)) {
         return Err(format!(
             "--bore-ratio {r} is invalid (allowed: 0 <= --bore-ratio < 1)"
         ));

@@ -29,6 +29,16 @@ pub struct BendSpec {
 /// The most rays per class.
 pub const MAX_BEND_RAYS: i64 = 10_000_000;
 
+/// Whether `delta_phi` is a segment a bend takes: 0 < Δφ ≤ 2π (`PipeBend`'s own range).
+pub fn delta_phi_ok(delta_phi: f64) -> bool {
+    delta_phi > 0.0 && delta_phi <= TAU
+}
+
+/// Whether `ratio` is an r_min/r_max a bend takes: 0 ≤ ratio < 1 (the bore inside the tube).
+pub fn bore_ratio_ok(ratio: f64) -> bool {
+    (0.0..1.0).contains(&ratio)
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawBend {
@@ -83,13 +93,13 @@ pub(super) fn parse_bend(value: serde_json::Value) -> Result<BendSpec, FieldErro
     check_list(
         "delta_phi",
         &raw.delta_phi,
-        |d| d > 0.0 && d <= TAU,
+        delta_phi_ok,
         "0 < delta_phi <= 2*pi = 6.283185307179586",
     )?;
     check_list(
         "bore_ratio",
         &raw.bore_ratio,
-        |r| (0.0..1.0).contains(&r),
+        bore_ratio_ok,
         "0 <= bore_ratio < 1",
     )?;
     if !(1..=MAX_BEND_RAYS).contains(&raw.rays) {
