@@ -31,7 +31,7 @@
 #
 #   bash benches/gpu_device.sh [--smoke] [--bin PATH] [--workload FILE|default|quick]
 #                              [--out DIR] [--budget SECONDS] [--allow-software]
-#                              [--debs DIR]
+#                              [--debs DIR] [--steps LIST]
 #
 #   --bin       the binary (default $TORUS_CULL_BIN, else target/release/torus-cull, else
 #               .gpubin/torus-cull, where docs/gpu.md has it carried)
@@ -41,6 +41,8 @@
 #               set, /tmp/gpu-device-<UTC time>, packed into $OUT as above)
 #   --budget    wall-clock seconds for the whole run (default 450; --smoke: 240)
 #   --smoke     every step at tiny sizes (under a minute on lavapipe): checks the script
+#   --steps     the steps to run, comma-separated, of grid,sweep,wg,finish,rest (default
+#               all; a later session that has the first run's figures picks the rest)
 #   --debs      where no libvulkan.so.1 is installed and this runs as root: the folder of
 #               Debian packages (libvulkan1_*.deb and friends) to unpack into / first
 #               (default .gl, as the device machine's README has it)
@@ -83,6 +85,7 @@ smoke=0
 budget=""
 allow_software=0
 debs=.gl
+steps=grid,sweep,wg,finish,rest
 while [ $# -gt 0 ]; do
   case "$1" in
     --bin) bin=$2; shift 2 ;;
@@ -92,6 +95,7 @@ while [ $# -gt 0 ]; do
     --smoke) smoke=1; shift ;;
     --allow-software) allow_software=1; shift ;;
     --debs) debs=$2; shift 2 ;;
+    --steps) steps=$2; shift 2 ;;
     -h|--help) sed -n '2,/^set -uo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *) echo "gpu_device.sh: unknown argument $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -111,6 +115,13 @@ else
   wg_sizes=(32 128 256); wg_batch=1048576
   finish_batch=1048576; finish_seconds=30
 fi
+for s in ${steps//,/ }; do
+  case "$s" in grid|sweep|wg|finish|rest) ;;
+    *) echo "gpu_device.sh: --steps: unknown step $s (allowed: grid, sweep, wg, finish, rest)" >&2; exit 2 ;;
+  esac
+done
+# Whether step $1 was asked for.
+wanted() { case ",$steps," in *",$1,"*) return 0 ;; *) return 1 ;; esac; }
 scale=${SCALE:-1}
 scaled() { awk -v s="$1" -v k="$scale" 'BEGIN { printf "%g", s * k }'; }
 grid_seconds=$(scaled "$grid_seconds")
@@ -277,13 +288,14 @@ hi=$(echo $wl_nu | awk '{print $NF}')
 #    H100 the whole default grid did not fit 430 s: 55 of its 60 units, see below).
 grid_nu=$(printf '%s\n' 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)
 [ "$smoke" = 1 ] && grid_nu=4
-step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" --nu "$grid_nu"
+wanted grid && step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" --nu "$grid_nu"
 
 # 2. The batch sweep.
 if ! echo " $wl_nu " | grep -q ' 4 '; then
   failed=1; say "== sweep: skipped, workload $workload has no nu = 4 (it has: $wl_nu)"
-  sweep_pows=()
+  sweep_pows=(); wg_sizes=()
 fi
+wanted sweep || sweep_pows=()
 for p in "${sweep_pows[@]}"; do
   step "sweep-2p$p" --workload "$workload" --cases uniform,hole --nu 4 \
     --culls none,cychosz,skala,discriminant --batch $((1 << p)) --seconds "$sweep_seconds"
@@ -291,15 +303,17 @@ done
 
 # 2b. The kernel's workgroup size (64 is the sweep's 2^20 row): the same rays and culls at
 #     2^20, in one process per size (not paired across sizes: compare ns/ray and of_copy).
+wanted wg || wg_sizes=()
 for w in "${wg_sizes[@]}"; do
-  [ "${#sweep_pows[@]}" -gt 0 ] || break
   step "wg-$w" --workload "$workload" --cases uniform,hole --nu 4 \
     --culls none,cychosz,skala,discriminant --batch "$wg_batch" --seconds "$sweep_seconds" \
     --workgroup "$w"
 done
 
 # 3. The f64 finish pass.
-if [ "$(field f64_finish_pass)" = yes ]; then
+if ! wanted finish; then
+  :
+elif [ "$(field f64_finish_pass)" = yes ]; then
   finish_nu=$(printf '%s\n' "$lo" 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)
   [ "$smoke" = 1 ] && finish_nu=4
   step finish --finish --workload "$workload" --cases hole,grazing --nu "$finish_nu" \
@@ -309,7 +323,7 @@ else
 fi
 
 # 4. The rest of the grid's ν, with what is left.
-if [ "$smoke" = 0 ]; then
+if [ "$smoke" = 0 ] && wanted rest; then
   rest=$(printf '%s\n' $wl_nu | awk -v hi="$hi" '$1 != 4 && $1 != hi' | paste -sd, -)
   [ -z "$rest" ] || step grid-rest --workload "$workload" --batch "$grid_batch" \
     --seconds "$rest_seconds" --nu "$rest"

@@ -27,8 +27,9 @@ pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
 }
 
 /// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
-/// `bvh_batched_ns`), on the bench's scenes at each of its ν, in a quarter of the ring
-/// torus's paired time, over the same runs.
+/// `bvh_batched_ns`) on the same units: the bench's scenes at each of its ν, the scenes it
+/// lacks and the torus family's at ν = 4, in [`BenchConfig::bvh_seconds`] over
+/// [`BenchConfig::bvh_runs`] runs (the README's BVH line quotes a bench).
 pub fn bvh(
     spec: &torus_cull_lab::workload::spec::BvhSpec,
     config: &BenchConfig,
@@ -36,20 +37,15 @@ pub fn bvh(
     dispatch: &Dispatch,
 ) -> Vec<RatioRecord> {
     let timing = paired::bvh::BvhTiming {
-        units: spec
-            .scenes
-            .iter()
-            .flat_map(|&k| spec.nu.iter().map(move |&nu| (k, nu)))
-            .collect(),
+        units: paired::bvh::units_of(&spec.scenes, &spec.nu),
         tori: spec.tori,
         seed,
         culls: CullKind::TIMED.to_vec(),
         rays: config.batch.min(1024),
-        seconds: config.ratio_seconds / 4.0,
-        runs: config.ratio_runs.max(1) as usize,
+        seconds: config.bvh_seconds,
+        runs: config.bvh_runs,
         dispatch: *dispatch,
-        // The family's shapes are timed by `time --bvh`; the bench keeps its scenes.
-        family: None,
+        family: Some(paired::bvh::NEW_SCENE_NU),
     };
     paired::bvh::time_bvh(&timing, &mut |_, _| {}).unwrap_or_else(|e| panic!("{e:?}"))
 }

@@ -11,7 +11,7 @@
 //!   ([`crate::scene::rays`]) through [`Scene::occluded_spawned`], stopping at the first
 //!   blocker;
 //! - **batched leaves** (`bvh_batched_ns`): the camera rays through
-//!   [`trace_leaves_batched`] (every leaf candidate collected, then the wavefront torus
+//!   [`crate::scene::LeafBatcher`] (every leaf candidate collected, then the wavefront torus
 //!   by torus), for each cull with a batch form.
 //!
 //! With [`BvhTiming::family`], one more unit: the torus family's shapes
@@ -35,9 +35,10 @@ use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use crate::scene::family::FamilyScene;
 use crate::scene::rays::{Spawned, Surfaces, light, shadow_rays};
-use crate::scene::{Scene, SceneHit, SceneKind, TraceStats, same_hit, trace_leaves_batched};
+use crate::scene::{LeafBatcher, Scene, SceneHit, SceneKind, TraceStats, same_hit};
 use crate::workload::CameraView;
 use glam::{DVec3, Vec3};
+use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -64,6 +65,26 @@ pub const FAMILY_SCENE: &str = "family";
 /// How far apart the family's shapes stand, in outer diameters on average (as
 /// `ring_field`'s tori).
 const FAMILY_SPREAD: f64 = 1.5;
+
+/// The ν of the scenes a workload does not list (`mixed_nu`, `dense`, and the torus
+/// family's, whose shapes have their own): issue 40 times new scenes at one ν.
+pub const NEW_SCENE_NU: f64 = 4.0;
+
+/// The scene × ν units `time --bvh` and `cargo bench` time: a workload's `scenes` at each
+/// of `nus`, then every scene it lacks at [`NEW_SCENE_NU`] only.
+#[must_use]
+pub fn units_of(scenes: &[SceneKind], nus: &[f64]) -> Vec<(SceneKind, f64)> {
+    let mut units: Vec<(SceneKind, f64)> = scenes
+        .iter()
+        .flat_map(|&k| nus.iter().map(move |&nu| (k, nu)))
+        .collect();
+    for &k in SceneKind::ALL {
+        if !scenes.contains(&k) {
+            units.push((k, NEW_SCENE_NU));
+        }
+    }
+    units
+}
 
 /// The references of every ratio.
 const REFERENCES: [CullKind; 2] = [CullKind::NoCull, CullKind::Cychosz];
@@ -189,6 +210,8 @@ struct Unit {
     shadow: Vec<Spawned>,
     /// Its contenders (the family's scene has no batched leaves).
     lineup: Lineup,
+    /// The batched leaves' buffers, kept from pass to pass as a renderer keeps them.
+    batcher: RefCell<LeafBatcher>,
 }
 
 /// One record to make: the cull, the metric, its contender, and each reference's name
@@ -337,6 +360,7 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
             camera,
             shadow,
             lineup,
+            batcher: RefCell::new(LeafBatcher::new()),
         });
     }
     Ok(units)
@@ -405,7 +429,13 @@ fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
         };
         let start = Instant::now();
         let mut stats = crate::scene::LeafBatchStats::default();
-        let hits = trace_leaves_batched(scene, dispatch, cull, black_box(&unit.camera), &mut stats);
+        let hits = unit.batcher.borrow_mut().trace(
+            scene,
+            dispatch,
+            cull,
+            black_box(&unit.camera),
+            &mut stats,
+        );
         black_box((hits, stats));
         start.elapsed()
     }

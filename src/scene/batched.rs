@@ -32,12 +32,93 @@ pub struct LeafBatchStats {
     pub batches: u64,
 }
 
-/// The closest hit of every ray through `scene` (`hits[i]` for `rays[i]`), with `cull`
-/// applied torus by torus to the collected leaf candidates; adds to `stats`.
-///
-/// Every (ray, torus) pair the scalar traversal would test is tested here too (and more:
-/// those behind the closest hit), so the closest hit is the same, up to the batch
-/// solver's last bits.
+/// The buffers of the batched traversal, kept between calls: a renderer traces batch after
+/// batch, and an allocation per torus and per call would be timed (and would add the
+/// allocator's noise to every paired ratio of `time --bvh`).
+#[derive(Debug, Clone, Default)]
+pub struct LeafBatcher {
+    /// Per torus, the indices of the rays whose path enters its box.
+    candidates: Vec<Vec<u32>>,
+    wavefront: Wavefront,
+    batch_rays: Vec<Ray>,
+    hits: Vec<Option<torus_cull::Hit>>,
+}
+
+impl LeafBatcher {
+    /// Empty buffers, grown by the first call.
+    #[must_use]
+    pub fn new() -> LeafBatcher {
+        LeafBatcher::default()
+    }
+
+    /// The closest hit of every ray through `scene` (`hits[i]` for `rays[i]`), with `cull`
+    /// applied torus by torus to the collected leaf candidates; adds to `stats`.
+    ///
+    /// Every (ray, torus) pair the scalar traversal would test is tested here too (and
+    /// more: those behind the closest hit), so the closest hit is the same, up to the
+    /// batch solver's last bits.
+    pub fn trace(
+        &mut self,
+        scene: &Scene,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        rays: &[Ray],
+        stats: &mut LeafBatchStats,
+    ) -> Vec<SceneHit> {
+        self.batched(scene, dispatch, cull, rays, |i, _| rays[i], stats)
+    }
+
+    /// The two passes, with `ray_for(ray index, torus index)` the ray that torus is tested
+    /// on.
+    fn batched(
+        &mut self,
+        scene: &Scene,
+        dispatch: &Dispatch,
+        cull: BatchCull,
+        rays: &[Ray],
+        ray_for: impl Fn(usize, usize) -> Ray,
+        stats: &mut LeafBatchStats,
+    ) -> Vec<SceneHit> {
+        let bvh = scene.bvh();
+        // Pass 1: every (torus, ray) candidate, bucketed by torus.
+        self.candidates.resize_with(scene.tori.len(), Vec::new);
+        self.candidates.iter_mut().for_each(Vec::clear);
+        for (i, ray) in rays.iter().enumerate() {
+            // The lab's traversal: obvhs's skips boxes the ray leaves before t = 1e-4.
+            super::traverse::each_leaf(bvh, ray, |prim| self.candidates[prim].push(i as u32));
+        }
+        // Pass 2: per torus, the wavefront on its candidates; keep each ray's nearest hit.
+        let mut best: Vec<SceneHit> = vec![None; rays.len()];
+        stats.rays += rays.len() as u64;
+        for (torus_index, which) in self.candidates.iter().enumerate() {
+            if which.is_empty() {
+                continue;
+            }
+            self.batch_rays.clear();
+            self.batch_rays
+                .extend(which.iter().map(|&i| ray_for(i as usize, torus_index)));
+            let torus = &scene.tori[torus_index];
+            let s =
+                self.wavefront
+                    .intersect(dispatch, cull, torus, &self.batch_rays, &mut self.hits);
+            stats.leaf_candidates += which.len() as u64;
+            stats.cull_rejects += (s.rays - s.kept) as u64;
+            stats.intersections += s.kept as u64;
+            stats.batches += 1;
+            for (&i, hit) in which.iter().zip(&self.hits) {
+                if let Some(h) = hit {
+                    let slot = &mut best[i as usize];
+                    if slot.is_none_or(|(_, t)| h.t < t) {
+                        *slot = Some((torus_index as u32, h.t));
+                    }
+                }
+            }
+        }
+        best
+    }
+}
+
+/// [`LeafBatcher::trace`] with fresh buffers.
 pub fn trace_leaves_batched(
     scene: &Scene,
     dispatch: &Dispatch,
@@ -45,7 +126,7 @@ pub fn trace_leaves_batched(
     rays: &[Ray],
     stats: &mut LeafBatchStats,
 ) -> Vec<SceneHit> {
-    batched(scene, dispatch, cull, rays, |i, _| rays[i], stats)
+    LeafBatcher::new().trace(scene, dispatch, cull, rays, stats)
 }
 
 /// [`trace_leaves_batched`] of spawned rays: each ray's own torus sees the surface ray,
@@ -66,51 +147,5 @@ pub fn trace_spawned_batched(
             literal[i]
         }
     };
-    batched(scene, dispatch, cull, &rays, pick, stats)
-}
-
-/// The two passes, with `ray_for(ray index, torus index)` the ray that torus is tested on.
-fn batched(
-    scene: &Scene,
-    dispatch: &Dispatch,
-    cull: BatchCull,
-    rays: &[Ray],
-    ray_for: impl Fn(usize, usize) -> Ray,
-    stats: &mut LeafBatchStats,
-) -> Vec<SceneHit> {
-    let bvh = scene.bvh();
-    // Pass 1: every (torus, ray) candidate, bucketed by torus.
-    let mut candidates: Vec<Vec<u32>> = vec![Vec::new(); scene.tori.len()];
-    for (i, ray) in rays.iter().enumerate() {
-        // The lab's traversal: obvhs's skips boxes the ray leaves before t = 1e-4.
-        super::traverse::each_leaf(bvh, ray, |prim| candidates[prim].push(i as u32));
-    }
-    // Pass 2: per torus, the wavefront on its candidates; keep each ray's nearest hit.
-    let mut best: Vec<SceneHit> = vec![None; rays.len()];
-    let mut wavefront = Wavefront::new();
-    let mut batch_rays = Vec::new();
-    let mut hits = Vec::new();
-    stats.rays += rays.len() as u64;
-    for (torus_index, which) in candidates.iter().enumerate() {
-        if which.is_empty() {
-            continue;
-        }
-        batch_rays.clear();
-        batch_rays.extend(which.iter().map(|&i| ray_for(i as usize, torus_index)));
-        let torus = &scene.tori[torus_index];
-        let s = wavefront.intersect(dispatch, cull, torus, &batch_rays, &mut hits);
-        stats.leaf_candidates += which.len() as u64;
-        stats.cull_rejects += (s.rays - s.kept) as u64;
-        stats.intersections += s.kept as u64;
-        stats.batches += 1;
-        for (&i, hit) in which.iter().zip(&hits) {
-            if let Some(h) = hit {
-                let slot = &mut best[i as usize];
-                if slot.is_none_or(|(_, t)| h.t < t) {
-                    *slot = Some((torus_index as u32, h.t));
-                }
-            }
-        }
-    }
-    best
+    LeafBatcher::new().batched(scene, dispatch, cull, &rays, pick, stats)
 }

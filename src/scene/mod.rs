@@ -14,7 +14,7 @@ pub mod rays;
 pub mod traverse;
 
 pub use crate::scene_kind::SceneKind;
-pub use batched::{LeafBatchStats, trace_leaves_batched, trace_spawned_batched};
+pub use batched::{LeafBatchStats, LeafBatcher, trace_leaves_batched, trace_spawned_batched};
 
 use crate::workload::CameraView;
 use glam::{DVec3, Vec3, Vec3A};

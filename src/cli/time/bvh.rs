@@ -9,7 +9,7 @@ use std::path::Path;
 use std::process::ExitCode;
 use torus_cull::Named;
 use torus_cull::batch::Dispatch;
-use torus_cull_lab::paired::bvh::{BvhTiming, FAMILY_SCENE, time_bvh};
+use torus_cull_lab::paired::bvh::{BvhTiming, FAMILY_SCENE, NEW_SCENE_NU, time_bvh, units_of};
 use torus_cull_lab::results::{self, BvhSizes, Results};
 use torus_cull_lab::scene::SceneKind;
 use torus_cull_lab::workload::spec::Workload;
@@ -17,10 +17,6 @@ use torus_cull_lab::workload::spec::Workload;
 /// Camera rays per timed pass unless `--batch` says otherwise: enough that a torus sees
 /// a few of them in the batched leaves, few enough for hundreds of rounds a run.
 const DEFAULT_BVH_RAYS: usize = 1024;
-
-/// The ν of the scenes the workload does not list (`mixed_nu`, `dense`, and the torus
-/// family's, whose shapes have their own: issue 40 times new scenes at one ν).
-const NEW_SCENE_NU: f64 = 4.0;
 
 /// `--runs` unless given: more runs than `time`'s 5, as the slow-state runs set aside per
 /// batch leave 1 to 3 of 5 on a shared machine, and the t quantile of so few is wide.
@@ -83,19 +79,8 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
     };
     check_writable(&path)?;
     let dispatch = Dispatch::from_env()?;
-    // The workload's scenes at each ν, then the scenes it lacks at ν = 4 only.
-    let mut units: Vec<(SceneKind, f64)> = spec
-        .scenes
-        .iter()
-        .flat_map(|&k| nus.iter().map(move |&nu| (k, nu)))
-        .collect();
-    for &k in SceneKind::ALL {
-        if !spec.scenes.contains(&k) {
-            units.push((k, NEW_SCENE_NU));
-        }
-    }
     let timing = BvhTiming {
-        units,
+        units: units_of(&spec.scenes, &nus),
         tori: spec.tori,
         seed: workload.seed,
         culls,
