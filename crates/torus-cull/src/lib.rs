@@ -102,11 +102,10 @@ pub use certified::{
     F32Hit, F32Occluded, F32Verdict, intersect_f32, intersect_f32_certified, intersect_f32_culled,
     occluded_f32, occluded_f32_culled,
 };
-pub use cull::{
-    AabbCull, Cull, CullBounds, CullKind, CullVisitor, CychoszCull, DiscriminantCull,
-    DiscriminantF64Cull, EllipsoidCull, NoCull, QuadricCull, SkalaCull, SphereCull,
-    ThickCylinderCull,
-};
+pub use cull::{Cull, CullBounds, CullKind, CullVisitor};
+// Every cull type of the table of culls (`NoCull`, `CychoszCull`, `SkalaCull`, …).
+use cull::table::export_culls;
+export_culls!(root);
 pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,

@@ -3,7 +3,8 @@
 //! oracle's random and adversarial rays are the lab's.
 
 use super::{BendError, BendFace, PipeBend};
-use crate::{CullKind, DRay, NoCull, Passage, Ray, Torus, intersect, intersect_all};
+use crate::cull::NoCull;
+use crate::{CullKind, DRay, Passage, Ray, Torus, intersect, intersect_all};
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;

@@ -45,20 +45,16 @@ pub(crate) mod table;
 mod thick_cylinder;
 
 pub use crate::geometry::{CullBounds, SAFETY_REL};
-pub use aabb::AabbCull;
-pub use cychosz::CychoszCull;
-pub use discriminant::{DiscriminantCull, DiscriminantF64Cull};
-pub use ellipsoid::EllipsoidCull;
+// Every cull type of the table (`AabbCull`, `CychoszCull`, …), from its module.
+use table::export_culls;
+export_culls!(cull);
 #[doc(hidden)]
 pub use kernel::LaneBounds;
 pub use kernel::{Cull, CullVisitor};
-pub use none::NoCull;
 #[cfg(feature = "gpu")]
 pub(crate) use quadric::HORIZONTAL_DY;
-pub use quadric::QuadricCull;
 pub(crate) use registry::KernelVisitor;
 pub use registry::{BATCHED, BatchCull, CullKind};
-pub use skala::SkalaCull;
 pub use steps::foot_point;
 pub(crate) use steps::{AXIS_PARALLEL_H2, moderate, rescaled};
 pub use table::Shape;
@@ -66,5 +62,3 @@ pub use table::Shape;
 // renderer API.
 #[doc(hidden)]
 pub use skala::{SectionFormulas, skala_keeps};
-pub use sphere::SphereCull;
-pub use thick_cylinder::ThickCylinderCull;

@@ -4,8 +4,9 @@
 //! `GpuCull` (the culls with a WGSL function), the conversions between them and the
 //! dispatch from an enum to the cull's type.
 //!
-//! A row is `Variant "name" Type [forms] [shapes], "doc"`; each enum names the cull by
-//! the same variant:
+//! A row is `Variant "name" module::Type [forms] [shapes], "doc"` (`module`: the cull's
+//! file in `cull/`); each enum names the cull by the same variant, and the type is
+//! re-exported from `cull` and the crate root by [`export_culls`]:
 //! - `lanes`: the type is also a [`super::kernel::CullKernel`] and runs in the batch
 //!   paths;
 //! - `gpu`: the WGSL module has its function (a test checks that every GPU row has one);
@@ -17,27 +18,27 @@
 
 /// Calls `$then! { rows }` with the table's rows (module docs).
 macro_rules! cull_table {
-    ($then:ident) => {
-        $then! {
-            NoCull "none" NoCull [lanes gpu] [Ring Elliptic Spindle],
+    ($then:ident $(@$arm:ident)?) => {
+        $then! { $(@$arm)?
+            NoCull "none" none::NoCull [lanes gpu] [Ring Elliptic Spindle],
                 "No test: always run the quartic (the baseline), [`crate::NoCull`]; named `none`.";
-            Sphere "sphere" SphereCull [lanes gpu] [Ring Elliptic Spindle],
+            Sphere "sphere" sphere::SphereCull [lanes gpu] [Ring Elliptic Spindle],
                 "Bounding sphere of radius R + r.";
-            Aabb "aabb" AabbCull [lanes gpu] [Ring Elliptic Spindle],
+            Aabb "aabb" aabb::AabbCull [lanes gpu] [Ring Elliptic Spindle],
                 "The torus's box [−(R+r), R+r] × [−r, r] × [−(R+r), R+r].";
-            Cychosz "cychosz" CychoszCull [lanes gpu] [Ring Elliptic Spindle],
+            Cychosz "cychosz" cychosz::CychoszCull [lanes gpu] [Ring Elliptic Spindle],
                 "Cychosz (Graphics Gems II, 1991): sphere R + r, then the slab |y| ≤ r at the chord ends.";
-            ThickCylinder "thick_cylinder" ThickCylinderCull [lanes gpu] [Ring Elliptic Spindle],
+            ThickCylinder "thick_cylinder" thick_cylinder::ThickCylinderCull [lanes gpu] [Ring Elliptic Spindle],
                 "The shell R − r ≤ ρ ≤ R + r, |y| ≤ r (POV-Ray's `Test_Thick_Cylinder`).";
-            Skala "skala" SkalaCull [lanes gpu] [Ring Elliptic Spindle],
+            Skala "skala" skala::SkalaCull [lanes gpu] [Ring Elliptic Spindle],
                 "Skala's circle-based test, with the paper's misprints corrected.";
-            Ellipsoid "ellipsoid" EllipsoidCull [lanes gpu] [Ring Elliptic Spindle],
+            Ellipsoid "ellipsoid" ellipsoid::EllipsoidCull [lanes gpu] [Ring Elliptic Spindle],
                 "Cychosz with the sphere replaced by the outer ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².";
-            Quadric "quadric" QuadricCull [lanes gpu] [Ring Elliptic Spindle],
+            Quadric "quadric" quadric::QuadricCull [lanes gpu] [Ring Elliptic Spindle],
                 "The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².";
-            Discriminant "discriminant" DiscriminantCull [lanes gpu] [Ring Elliptic Spindle],
+            Discriminant "discriminant" discriminant::DiscriminantCull [lanes gpu] [Ring Elliptic Spindle],
                 "The quartic's real-root classification (no root, no branch), in f32.";
-            DiscriminantF64 "discriminant_f64" DiscriminantF64Cull [] [Ring Elliptic Spindle],
+            DiscriminantF64 "discriminant_f64" discriminant::DiscriminantF64Cull [] [Ring Elliptic Spindle],
                 "The same classification evaluated in f64.";
         }
     };
@@ -58,11 +59,34 @@ pub enum Shape {
     Spindle,
 }
 
+/// The cull types, re-exported where the crate makes them public: `export_culls!(cull)`
+/// in `cull` (from each cull's module), `export_culls!(root)` at the crate root (from
+/// `cull`). A new row is exported with no line to add.
+macro_rules! export_culls {
+    (cull) => { $crate::cull::table::cull_table!(export_culls @cull); };
+    (root) => { $crate::cull::table::cull_table!(export_culls @root); };
+    // (`export_culls` must be in scope where it is called: `cull_table!` calls it back by
+    // name.)
+    (@cull $(
+        $kind:ident $name:literal $module:ident :: $ty:ident
+        [$($forms:ident)*] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        $(pub use self::$module::$ty;)*
+    };
+    (@root $(
+        $kind:ident $name:literal $module:ident :: $ty:ident
+        [$($forms:ident)*] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        $(pub use crate::cull::$ty;)*
+    };
+}
+pub(crate) use export_culls;
+
 /// `CullKind` and `BatchCull`, their lists, names, conversions and dispatch, from the
 /// rows of [`cull_table`].
 macro_rules! define_culls {
     ($(
-        $kind:ident $name:literal $ty:ident
+        $kind:ident $name:literal $module:ident :: $ty:ident
         [$($lanes:ident $($gpu:ident)?)?] [$($shape:ident)*], $doc:literal;
     )*) => {
         /// Every cull by name: the registry.
@@ -216,7 +240,7 @@ pub(crate) use define_culls;
 #[cfg(feature = "gpu")]
 macro_rules! define_gpu_culls {
     ($(
-        $kind:ident $name:literal $ty:ident
+        $kind:ident $name:literal $module:ident :: $ty:ident
         [$($lanes:ident $($gpu:ident)?)?] [$($shape:ident)*], $doc:literal;
     )*) => {
         /// The cull the kernel runs before the intersection (a rejected ray is a miss):
