@@ -464,7 +464,9 @@ fn pick_batch(asked: Option<usize>, workload: &Workload, file: &Path) -> Result<
 
 /// Rays per case × ν on the GPU by default: a GPU needs about this many in flight before
 /// its time per ray stops falling (an H100 holds 132 multiprocessors × 2 048 threads).
-const GPU_BATCH: usize = 1 << 21;
+/// Not a power of two: on an H100, 2²⁰ rays (and, for uniform rays, 2²¹ and 2²²) ran in a
+/// slow state 3–5× slower than 2²⁰ ± 64 (docs/gpu.md, "Batch size on the H100").
+const GPU_BATCH: usize = 2_000_000;
 
 /// The most rays per case × ν on the GPU: 64 bytes each on the device, 2 GiB in all.
 const MAX_GPU_BATCH: usize = 1 << 25;
