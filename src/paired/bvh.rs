@@ -429,13 +429,8 @@ fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
         };
         let start = Instant::now();
         let mut stats = crate::scene::LeafBatchStats::default();
-        let hits = unit.batcher.borrow_mut().trace(
-            scene,
-            dispatch,
-            cull,
-            black_box(&unit.camera),
-            &mut stats,
-        );
+        let mut batcher = unit.batcher.borrow_mut();
+        let hits = batcher.trace(scene, dispatch, cull, black_box(&unit.camera), &mut stats);
         black_box((hits, stats));
         start.elapsed()
     }

@@ -42,6 +42,8 @@ pub struct LeafBatcher {
     wavefront: Wavefront,
     batch_rays: Vec<Ray>,
     hits: Vec<Option<torus_cull::Hit>>,
+    /// Per ray, the nearest hit so far: what [`LeafBatcher::trace`] returns.
+    best: Vec<SceneHit>,
 }
 
 impl LeafBatcher {
@@ -64,7 +66,7 @@ impl LeafBatcher {
         cull: BatchCull,
         rays: &[Ray],
         stats: &mut LeafBatchStats,
-    ) -> Vec<SceneHit> {
+    ) -> &[SceneHit] {
         self.batched(scene, dispatch, cull, rays, |i, _| rays[i], stats)
     }
 
@@ -78,7 +80,7 @@ impl LeafBatcher {
         rays: &[Ray],
         ray_for: impl Fn(usize, usize) -> Ray,
         stats: &mut LeafBatchStats,
-    ) -> Vec<SceneHit> {
+    ) -> &[SceneHit] {
         let bvh = scene.bvh();
         // Pass 1: every (torus, ray) candidate, bucketed by torus.
         self.candidates.resize_with(scene.tori.len(), Vec::new);
@@ -88,7 +90,8 @@ impl LeafBatcher {
             super::traverse::each_leaf(bvh, ray, |prim| self.candidates[prim].push(i as u32));
         }
         // Pass 2: per torus, the wavefront on its candidates; keep each ray's nearest hit.
-        let mut best: Vec<SceneHit> = vec![None; rays.len()];
+        self.best.clear();
+        self.best.resize(rays.len(), None);
         stats.rays += rays.len() as u64;
         for (torus_index, which) in self.candidates.iter().enumerate() {
             if which.is_empty() {
@@ -107,14 +110,14 @@ impl LeafBatcher {
             stats.batches += 1;
             for (&i, hit) in which.iter().zip(&self.hits) {
                 if let Some(h) = hit {
-                    let slot = &mut best[i as usize];
+                    let slot = &mut self.best[i as usize];
                     if slot.is_none_or(|(_, t)| h.t < t) {
                         *slot = Some((torus_index as u32, h.t));
                     }
                 }
             }
         }
-        best
+        &self.best
     }
 }
 
@@ -126,7 +129,9 @@ pub fn trace_leaves_batched(
     rays: &[Ray],
     stats: &mut LeafBatchStats,
 ) -> Vec<SceneHit> {
-    LeafBatcher::new().trace(scene, dispatch, cull, rays, stats)
+    LeafBatcher::new()
+        .trace(scene, dispatch, cull, rays, stats)
+        .to_vec()
 }
 
 /// [`trace_leaves_batched`] of spawned rays: each ray's own torus sees the surface ray,
@@ -147,5 +152,7 @@ pub fn trace_spawned_batched(
             literal[i]
         }
     };
-    LeafBatcher::new().batched(scene, dispatch, cull, &rays, pick, stats)
+    LeafBatcher::new()
+        .batched(scene, dispatch, cull, &rays, pick, stats)
+        .to_vec()
 }
