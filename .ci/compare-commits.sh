@@ -17,6 +17,11 @@ git clone --quiet "$repo" "$tmp/clone"
 cd "$tmp/clone"
 git config user.email ci@torus-cull.invalid
 git config user.name ci
+# The clone's own two crates at opt-level 1 (its dependencies keep the shared release
+# builds): this recipe checks the commands and the files they write, at the smoke size, not
+# speed, and its first build compiles both crates afresh at the clone's new path.
+mkdir -p .cargo
+printf '[profile.release.package.%s]\nopt-level = 1\n' torus-cull torus-cull-lab >.cargo/config.toml
 old=$(git rev-parse --short HEAD)
 mkdir -p results
 echo '{}' >"results/$old.json"

@@ -317,6 +317,14 @@ fn help_texts_state_the_real_defaults() {
     assert!(time.contains("<workload>-time.json"), "{time}");
 }
 
+/// The command's stderr holds every one of `needles`.
+fn says(o: &std::process::Output, needles: &[&str]) {
+    let err = stderr(o);
+    for needle in needles {
+        assert!(err.contains(needle), "no {needle:?} in:\n{err}");
+    }
+}
+
 /// With stderr not a terminal (a log, a CI job) `run` and `time` say what they are doing
 /// as they go; their files record cores, threads and OS, and `time`'s its sizes; `plot`
 /// draws a `time` file's paired ratios with their intervals, titled with the workload and
@@ -329,11 +337,7 @@ fn progress_meta_and_plots_of_time_files() {
         "run --workload {} --threads 2 --no-plots --out {}",
         &[arg(&workload), arg(&run_json)],
     );
-    assert!(
-        stderr(&o).contains("run tiny") && stderr(&o).contains("800/800 rays (100%)"),
-        "{}",
-        stderr(&o)
-    );
+    says(&o, &["run tiny", "800/800 rays (100%)"]);
     let r = torus_cull_lab::results::Results::load(&run_json).unwrap();
     assert_eq!(r.meta.threads, Some(2));
     assert!(r.meta.cores.is_some_and(|c| c >= 1));
@@ -349,11 +353,7 @@ fn progress_meta_and_plots_of_time_files() {
         "time --workload {} --seconds 0.5 --out {}",
         &[arg(&workload), arg(&time_json)],
     );
-    assert!(
-        stderr(&o).contains("time tiny") && stderr(&o).contains("(100%)"),
-        "{}",
-        stderr(&o)
-    );
+    says(&o, &["time tiny", "(100%)"]);
     let t = torus_cull_lab::results::Results::load(&time_json).unwrap();
     let sizes = t.meta.sizes.clone().expect("time records its sizes");
     assert_eq!(sizes.timing_rays, Some(200));
