@@ -30,11 +30,9 @@
 //!   the range, negative (the ray runs inside the tube).
 
 use super::frame::LineFrame;
-use super::{AMBIGUITY_REL, OracleClass, OracleLabel, Query, reference_roots};
+use super::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use super::{OracleClass, OracleLabel, Query, reference_roots};
 use glam::DVec3;
-
-/// The oracle's own error on a distance, × (R + r).
-const OWN_ERROR: f64 = 1e-11;
 
 /// [`Query::classify`] for a ray from a surface point: the rule of the module docs.
 ///
@@ -79,6 +77,13 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
         return None;
     }
     let window = 4.0 * (delta.abs() + OWN_ERROR * size) / cos0.abs() / len;
+    let spawned = SpawnedLine {
+        window,
+        t_min: query.t_min,
+        t_max: query.t_max,
+        len,
+        size,
+    };
     let roots = reference_roots(&line.over(f64::NEG_INFINITY, f64::INFINITY));
     let next = roots.iter().copied().find(|&t| t > window);
     if next.is_some_and(|t| t <= 2.0 * window) {
@@ -100,20 +105,13 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
             extreme = Some((t, v));
         }
     }
-    let first = roots
-        .iter()
-        .copied()
-        .find(|&t| t > window && t >= query.t_min && t <= query.t_max);
+    let first = roots.iter().copied().find(|&t| spawned.ahead_in_range(t));
     if outward {
         let Some(t_next) = next else {
             // Never comes back: a miss, by the distance at the range's start.
             let lo = query.t_min.max(window);
             let margin = if lo <= query.t_max { g(lo) } else { 0.0 };
-            let label = OracleLabel {
-                class: OracleClass::Miss,
-                margin: margin.max(0.0),
-            };
-            return Some((label, None));
+            return Some((miss_by(margin), None));
         };
         let (t_a, height) =
             extreme.unwrap_or((0.5 * (window + t_next), g(0.5 * (window + t_next))));
@@ -122,45 +120,19 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
         }
         let lo = query.t_min.max(t_a);
         if lo > query.t_max {
-            let label = OracleLabel {
-                class: OracleClass::Miss,
-                margin: g(query.t_max).max(0.0),
-            };
-            return Some((label, None));
+            return Some((miss_by(g(query.t_max)), None));
         }
         let label = line.over(lo, query.t_max).classify();
-        let band = AMBIGUITY_REL * size + 2.0 * offset;
-        if label.margin.abs() <= band {
-            return None;
-        }
-        return Some((label, first));
+        return spawned.out_of_solid(label, offset, first);
     }
     // Into the tube: the next crossing is where the ray leaves it.
-    let exit = next?;
-    if extreme.is_some_and(|(_, depth)| depth >= -4.0 * OWN_ERROR * size) {
-        return None;
-    }
-    let lo = query.t_min.max(2.0 * window);
-    if lo > query.t_max {
-        return None;
-    }
-    let outside = line.over(lo, query.t_max).classify();
-    if exit < lo {
-        return Some((outside, first));
-    }
-    if (exit - query.t_max).abs() * len <= 10.0 * AMBIGUITY_REL * size {
-        return None;
-    }
-    let class = if exit <= query.t_max {
-        OracleClass::Hit
-    } else {
-        OracleClass::Miss
-    };
-    let label = OracleLabel {
-        class,
-        margin: outside.margin,
-    };
-    Some((label, first))
+    let deepest = extreme.map(|(_, depth)| depth);
+    spawned.into_solid(
+        next?,
+        deepest,
+        |lo| line.over(lo, query.t_max).classify(),
+        first,
+    )
 }
 
 /// The surface point nearest to the query's origin (f64, closed form: the nearest point

@@ -41,6 +41,7 @@ mod from_surface;
 mod interval;
 mod roots;
 mod sampling;
+mod spawned_rule;
 #[cfg(test)]
 mod tests;
 

@@ -30,13 +30,12 @@
 //! moved point past `w`, in the range.
 
 use super::{BendQuery, Face, Frame, Passage};
-use crate::oracle::{AMBIGUITY_REL, OracleClass, OracleLabel};
+use crate::oracle::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use crate::oracle::{OracleClass, OracleLabel};
 use glam::DVec3;
 
 /// How far a marked origin may lie from a face, × S.
 const OWN_REACH: f64 = 1e-8;
-/// The oracle's own error on a distance, × S.
-const OWN_ERROR: f64 = 1e-11;
 
 /// A first crossing: t, passage, face.
 type First = Option<(f64, Passage, Face)>;
@@ -118,6 +117,13 @@ impl BendQuery {
         }
         let offset = (p - self.origin).length();
         let window = 4.0 * (delta + OWN_ERROR * size) / cos_min / len;
+        let spawned = SpawnedLine {
+            window,
+            t_min: self.t_min,
+            t_max: self.t_max,
+            len,
+            size,
+        };
         let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
         let events: Vec<(f64, Passage, Face)> = whole.crossings();
         // The origin's own crossing is the one nearest t = 0 within the window; any other
@@ -137,10 +143,7 @@ impl BendQuery {
             return None;
         }
         let next = events.iter().map(|c| c.0).find(|&t| t > window);
-        let first = events
-            .iter()
-            .copied()
-            .find(|c| c.0 > window && c.0 >= self.t_min && c.0 <= self.t_max);
+        let first = events.iter().copied().find(|c| spawned.ahead_in_range(c.0));
         let far = whole.chord().map_or(window, |c| c.1).max(window);
         let end = next.unwrap_or(far);
         let at = |t: f64| frame.f(p + line.dir * t);
@@ -159,11 +162,7 @@ impl BendQuery {
                 .map(|w| w[1]);
             let Some((t_a, height)) = peak else {
                 if next.is_none() {
-                    let label = OracleLabel {
-                        class: OracleClass::Miss,
-                        margin: at(start.min(self.t_max)).max(0.0),
-                    };
-                    return Some((label, None));
+                    return Some((miss_by(at(start.min(self.t_max))), None));
                 }
                 return None;
             };
@@ -172,44 +171,18 @@ impl BendQuery {
             }
             let lo = self.t_min.max(t_a);
             if lo > self.t_max {
-                let label = OracleLabel {
-                    class: OracleClass::Miss,
-                    margin: at(start.min(self.t_max)).max(0.0),
-                };
-                return Some((label, None));
+                return Some((miss_by(at(start.min(self.t_max))), None));
             }
             let label = line.over(lo, self.t_max).classify();
-            if label.margin.abs() <= AMBIGUITY_REL * size + 2.0 * offset {
-                return None;
-            }
-            return Some((label, first));
+            return spawned.out_of_solid(label, offset, first);
         }
-        let exit = next?;
-        let depth = profile.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-        if depth >= -4.0 * OWN_ERROR * size {
-            return None;
-        }
-        let lo = self.t_min.max(2.0 * window);
-        if lo > self.t_max {
-            return None;
-        }
-        let rest = line.over(lo, self.t_max).classify();
-        if exit < lo {
-            return Some((rest, first));
-        }
-        if (exit - self.t_max).abs() * len <= 10.0 * AMBIGUITY_REL * size {
-            return None;
-        }
-        let class = if exit <= self.t_max {
-            OracleClass::Hit
-        } else {
-            OracleClass::Miss
-        };
-        let label = OracleLabel {
-            class,
-            margin: rest.margin,
-        };
-        Some((label, first))
+        let deepest = profile.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+        spawned.into_solid(
+            next?,
+            Some(deepest),
+            |lo| line.over(lo, self.t_max).classify(),
+            first,
+        )
     }
 }
 

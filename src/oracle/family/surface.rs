@@ -34,11 +34,9 @@
 
 use super::line::Line;
 use super::{FamilyQuery, nearest_on_ellipse};
-use crate::oracle::{AMBIGUITY_REL, OracleClass, OracleLabel};
+use crate::oracle::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use crate::oracle::{OracleClass, OracleLabel};
 use glam::DVec3;
-
-/// The oracle's own error on a distance, × S.
-const OWN_ERROR: f64 = 1e-11;
 
 impl FamilyQuery {
     /// [`FamilyQuery::classify`] for a ray from a surface point: the rule of the module
@@ -87,16 +85,20 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
     let (lo_ab, hi_ab) = (line.radial.min(line.axial), line.radial.max(line.axial));
     let delta = line.g(0.0).abs() / lo_ab * hi_ab;
     let window = 4.0 * (delta + OWN_ERROR * size) / cos0.abs() / len;
+    let spawned = SpawnedLine {
+        window,
+        t_min: query.t_min,
+        t_max: query.t_max,
+        len,
+        size,
+    };
     let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
     let ts: Vec<f64> = whole.crossings().iter().map(|c| c.t).collect();
     let next = ts.iter().copied().find(|&t| t > window);
     if next.is_some_and(|t| t <= 2.0 * window) {
         return None;
     }
-    let first = ts
-        .iter()
-        .copied()
-        .find(|&t| t > window && t >= query.t_min && t <= query.t_max);
+    let first = ts.iter().copied().find(|&t| spawned.ahead_in_range(t));
     let frame = Line::new(&whole);
     let end = next.unwrap_or(f64::INFINITY);
     let outward = cos0 > 0.0;
@@ -119,11 +121,7 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
             if next.is_none() {
                 // Rises for ever: a miss, by g at the range's start past the window.
                 let at = start.min(query.t_max);
-                let label = OracleLabel {
-                    class: OracleClass::Miss,
-                    margin: line.g(at).max(0.0),
-                };
-                return Some((label, None));
+                return Some((miss_by(line.g(at)), None));
             }
             // A crossing with no highest point before it: rounding only.
             return None;
@@ -134,43 +132,18 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
         let lo = query.t_min.max(t_a);
         if lo > query.t_max {
             // The range ends before the highest point: outside all the way.
-            let label = OracleLabel {
-                class: OracleClass::Miss,
-                margin: line.g(start.min(query.t_max)).max(0.0),
-            };
-            return Some((label, None));
+            return Some((miss_by(line.g(start.min(query.t_max))), None));
         }
         let label = line.over(lo, query.t_max).classify();
-        if label.margin.abs() <= AMBIGUITY_REL * size + 2.0 * offset {
-            return None;
-        }
-        return Some((label, first));
+        return spawned.out_of_solid(label, offset, first);
     }
-    let exit = next?;
-    if extreme.is_some_and(|(_, depth)| depth >= -4.0 * OWN_ERROR * size) {
-        return None;
-    }
-    let lo = query.t_min.max(2.0 * window);
-    if lo > query.t_max {
-        return None;
-    }
-    let outside = line.over(lo, query.t_max).classify();
-    if exit < lo {
-        return Some((outside, first));
-    }
-    if (exit - query.t_max).abs() * len <= 10.0 * AMBIGUITY_REL * size {
-        return None;
-    }
-    let class = if exit <= query.t_max {
-        OracleClass::Hit
-    } else {
-        OracleClass::Miss
-    };
-    let label = OracleLabel {
-        class,
-        margin: outside.margin,
-    };
-    Some((label, first))
+    let deepest = extreme.map(|(_, depth)| depth);
+    spawned.into_solid(
+        next?,
+        deepest,
+        |lo| line.over(lo, query.t_max).classify(),
+        first,
+    )
 }
 
 /// The surface point nearest to the query's origin, the origin's distance from it and the
