@@ -123,11 +123,11 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
             return Some((miss_by(g(query.t_max)), None));
         }
         let label = line.over(lo, query.t_max).classify();
-        return spawned.out_of_solid(label, offset, first);
+        return spawned.leaving_solid(label, offset, first);
     }
     // Into the tube: the next crossing is where the ray leaves it.
     let deepest = extreme.map(|(_, depth)| depth);
-    spawned.into_solid(
+    spawned.entering_solid(
         next?,
         deepest,
         |lo| line.over(lo, query.t_max).classify(),

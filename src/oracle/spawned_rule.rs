@@ -37,7 +37,7 @@ impl SpawnedLine {
     /// Out of the solid: `label` (the line over the range past its highest point), unless
     /// its margin lies within `ε·size + 2·offset`, a graze that the origin's own offset
     /// from its surface point leaves undetermined.
-    pub(crate) fn out_of_solid<F>(
+    pub(crate) fn leaving_solid<F>(
         &self,
         label: OracleLabel,
         offset: f64,
@@ -55,7 +55,7 @@ impl SpawnedLine {
     /// `10·ε·size` of `t_max`. `outside(lo)` labels the line over `[lo, t_max]`,
     /// `lo = max(t_min, 2w)`: the answer where the exit comes before `lo`, and the margin
     /// of the hit or miss otherwise.
-    pub(crate) fn into_solid<F>(
+    pub(crate) fn entering_solid<F>(
         &self,
         exit: f64,
         deepest: Option<f64>,

@@ -174,10 +174,10 @@ impl BendQuery {
                 return Some((miss_by(at(start.min(self.t_max))), None));
             }
             let label = line.over(lo, self.t_max).classify();
-            return spawned.out_of_solid(label, offset, first);
+            return spawned.leaving_solid(label, offset, first);
         }
         let deepest = profile.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-        spawned.into_solid(
+        spawned.entering_solid(
             next?,
             Some(deepest),
             |lo| line.over(lo, self.t_max).classify(),

@@ -135,10 +135,10 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
             return Some((miss_by(line.g(start.min(query.t_max))), None));
         }
         let label = line.over(lo, query.t_max).classify();
-        return spawned.out_of_solid(label, offset, first);
+        return spawned.leaving_solid(label, offset, first);
     }
     let deepest = extreme.map(|(_, depth)| depth);
-    spawned.into_solid(
+    spawned.entering_solid(
         next?,
         deepest,
         |lo| line.over(lo, query.t_max).classify(),
