@@ -5,6 +5,7 @@ use super::BenchConfig;
 use torus_cull::CullKind;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::paired;
+use torus_cull_lab::paired::shapes::shape_records;
 use torus_cull_lab::results::RatioRecord;
 
 /// The torus family's and the pipe bends' paired ratios, as `time --family` and `time
@@ -14,16 +15,20 @@ pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
     let runs = config.ratio_runs.max(1) as usize;
     let rays = config.batch.min(paired::sweep::DEFAULT_BATCH);
     let quarter = config.ratio_seconds / 4.0 / runs as f64;
-    let members = paired::family::MEMBERS.len() as f64;
-    let mut records =
-        paired::family::family_records(seed, rays, (runs, quarter / members), |_, _| {})
-            .unwrap_or_else(|e| panic!("{e}"));
-    let bends = paired::bend::BENDS.len() as f64;
-    records.extend(
-        paired::bend::bend_records(seed, rays, (runs, quarter / bends), |_, _| {})
-            .unwrap_or_else(|e| panic!("{e}")),
-    );
-    records
+    let both = || -> Result<Vec<RatioRecord>, String> {
+        let (members, bends) = (paired::family::members()?, paired::bend::bends()?);
+        let share = |n: usize| (runs, quarter / n as f64);
+        let mut records = shape_records(&members, seed, rays, share(members.len()), |_, _| {})?;
+        records.extend(shape_records(
+            &bends,
+            seed,
+            rays,
+            share(bends.len()),
+            |_, _| {},
+        )?);
+        Ok(records)
+    };
+    both().unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,

@@ -9,11 +9,8 @@
 //! member behind each cull of the table ([`CullKind::TIMED`]; a cull that does not accept
 //! the member's shape is declined, so it costs the exact intersection alone).
 
-use super::shapes::{Pair, ShapeRatio, time_contenders};
-use crate::results::RatioRecord;
-use crate::workload::box_rays::box_rays;
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use super::shapes::{Pair, ShapeRatio, TimedShape, time_contenders, timed_pass};
+use std::time::Duration;
 use torus_cull::family::Toroid;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 
@@ -31,110 +28,95 @@ pub const MEMBERS: [(f64, f64, f64); 8] = [
     (0.75, 1.0, 2.0),
 ];
 
-/// A member's case in a results file: `family_<kind>_b<b/a>` (`family_ring_b0.25`,
-/// `family_spindle_b2`); its ν field is R/a.
-#[must_use]
-pub fn case_name(member: &Toroid) -> String {
-    let kind = format!("{:?}", member.kind()).to_lowercase();
-    let aspect = member.axial_semi_axis_f64() / member.radial_semi_axis_f64();
-    format!("family_{kind}_b{aspect}")
-}
-
-/// Every member of [`MEMBERS`] timed on `batch` uniform rays at its box (seeded per
-/// member from `seed`), `runs` runs of `seconds` each, as `ratio` records of metric
-/// `family_total_ns`; `shown` sees each member's ratios as they come.
+/// The members of [`MEMBERS`], as [`shape_records`] times them.
 ///
 /// # Errors
 ///
-/// A member without rounds (too short a time) or an invalid member, named.
-pub fn family_records(
-    seed: u64,
-    batch: usize,
-    (runs, seconds): (usize, f64),
-    mut shown: impl FnMut(&Toroid, &[ShapeRatio]),
-) -> Result<Vec<RatioRecord>, String> {
-    let mut records = Vec::new();
-    for (i, &(big, a, b)) in MEMBERS.iter().enumerate() {
-        let member = Toroid::canonical(big, a, b).map_err(|e| e.to_string())?;
-        let rays = box_rays(big, a, b, batch, seed.wrapping_add(i as u64));
-        let ratios = time_family(&member, &rays, runs, seconds, seed)
-            .ok_or_else(|| format!("{}: no rounds (raise the time)", case_name(&member)))?;
-        shown(&member, &ratios);
-        let case = case_name(&member);
-        records.extend(
-            ratios
-                .iter()
-                .map(|r| r.record(&case, big / a, "family_total_ns", rays.len())),
-        );
-    }
-    Ok(records)
+/// An invalid member, named.
+pub fn members() -> Result<Vec<Toroid>, String> {
+    MEMBERS
+        .iter()
+        .map(|&(big, a, b)| Toroid::canonical(big, a, b))
+        .collect::<Result<_, _>>()
+        .map_err(|e| e.to_string())
 }
 
 /// The family's ratios for `member` (in its own frame: centre 0, axis +y) on `rays`:
 /// its exact intersection over the circular member (R, a, a)'s on the same rays and on
 /// their images, and each cull's total over `cychosz`'s, from `runs` runs of about
 /// `seconds` each. `None` for an empty ray set, a posed member or a run without rounds.
-pub fn time_family(
-    member: &Toroid,
-    rays: &[Ray],
-    runs: usize,
-    seconds: f64,
-    seed: u64,
-) -> Option<Vec<ShapeRatio>> {
-    let own_frame = member.center_f64() == glam::DVec3::ZERO && member.axis_f64() == glam::DVec3::Y;
-    if !own_frame {
-        return None;
+impl TimedShape for Toroid {
+    const METRIC: &'static str = "family_total_ns";
+
+    fn box_radii(&self) -> (f64, f64, f64) {
+        let a = self.radial_semi_axis_f64();
+        (self.major_radius_f64(), a, self.axial_semi_axis_f64())
     }
-    let a = member.radial_semi_axis_f64();
-    let circular = Toroid::canonical(member.major_radius_f64(), a, a).ok()?;
-    let scale = glam::Vec3::new(1.0, (a / member.axial_semi_axis_f64()) as f32, 1.0);
-    let images: Vec<Ray> = rays
-        .iter()
-        .map(|r| Ray::with_range(r.origin() * scale, r.dir() * scale, r.t_min(), r.t_max()))
-        .collect::<Result<_, _>>()
-        .ok()?;
-    // Contenders 0: the circular exact; 1: the same on the images; 2: the member's
-    // exact; 3..: each cull's total on the member.
-    let culls = CullKind::TIMED;
-    let cychosz = 3 + culls.iter().position(|&k| k == CullKind::Cychosz)?;
-    let name = |s: &str| s.to_string();
-    let mut pairs: Vec<Pair> = vec![
-        (2, 0, name("exact"), name("circular_exact")),
-        (2, 1, name("exact"), name("circular_exact_on_images")),
-    ];
-    for (i, kind) in culls.iter().enumerate() {
-        pairs.push((3 + i, cychosz, name(kind.name()), name("cychosz")));
+
+    /// A member's case in a results file: `family_<kind>_b<b/a>` (`family_ring_b0.25`,
+    /// `family_spindle_b2`); its ν field is R/a.
+    fn case_name(&self) -> String {
+        let kind = format!("{:?}", self.kind()).to_lowercase();
+        let aspect = self.axial_semi_axis_f64() / self.radial_semi_axis_f64();
+        format!("family_{kind}_b{aspect}")
     }
-    time_contenders(
-        3 + culls.len(),
-        pairs,
-        (runs, seconds, seed),
-        rays.len(),
-        |_| {
-            let (rays, images) = (rays.to_vec(), images.clone());
-            move |i| match i {
-                0 => exact_pass(&circular, &rays),
-                1 => exact_pass(&circular, &images),
-                2 => exact_pass(member, &rays),
-                _ => culls[i - 3].visit(CulledPass {
-                    member,
-                    rays: &rays,
-                }),
-            }
-        },
-    )
+
+    fn ratios(
+        &self,
+        rays: &[Ray],
+        runs: usize,
+        seconds: f64,
+        seed: u64,
+    ) -> Option<Vec<ShapeRatio>> {
+        let own_frame = self.center_f64() == glam::DVec3::ZERO && self.axis_f64() == glam::DVec3::Y;
+        if !own_frame {
+            return None;
+        }
+        let a = self.radial_semi_axis_f64();
+        let circular = Toroid::canonical(self.major_radius_f64(), a, a).ok()?;
+        let scale = glam::Vec3::new(1.0, (a / self.axial_semi_axis_f64()) as f32, 1.0);
+        let images: Vec<Ray> = rays
+            .iter()
+            .map(|r| Ray::with_range(r.origin() * scale, r.dir() * scale, r.t_min(), r.t_max()))
+            .collect::<Result<_, _>>()
+            .ok()?;
+        // Contenders 0: the circular exact; 1: the same on the images; 2: the member's
+        // exact; 3..: each cull's total on the member.
+        let culls = CullKind::TIMED;
+        let cychosz = 3 + culls.iter().position(|&k| k == CullKind::Cychosz)?;
+        let name = |s: &str| s.to_string();
+        let mut pairs: Vec<Pair> = vec![
+            (2, 0, name("exact"), name("circular_exact")),
+            (2, 1, name("exact"), name("circular_exact_on_images")),
+        ];
+        for (i, kind) in culls.iter().enumerate() {
+            pairs.push((3 + i, cychosz, name(kind.name()), name("cychosz")));
+        }
+        time_contenders(
+            3 + culls.len(),
+            pairs,
+            (runs, seconds, seed),
+            rays.len(),
+            |_| {
+                let (rays, images) = (rays.to_vec(), images.clone());
+                move |i| match i {
+                    0 => exact_pass(&circular, &rays),
+                    1 => exact_pass(&circular, &images),
+                    2 => exact_pass(self, &rays),
+                    _ => culls[i - 3].visit(CulledPass {
+                        member: self,
+                        rays: &rays,
+                    }),
+                }
+            },
+        )
+    }
 }
 
 /// One timed pass of the member's exact intersection over the rays.
 #[inline(never)]
 fn exact_pass(member: &Toroid, rays: &[Ray]) -> Duration {
-    let start = Instant::now();
-    let mut hits = 0usize;
-    for ray in black_box(rays) {
-        hits += usize::from(member.intersect(ray).is_some());
-    }
-    black_box(hits);
-    start.elapsed()
+    timed_pass(rays, |ray| member.intersect(ray).is_some())
 }
 
 /// One timed pass of the member behind a cull, monomorphized per cull.
@@ -148,13 +130,10 @@ impl CullVisitor for CulledPass<'_> {
 
     #[inline(never)]
     fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut hits = 0usize;
-        for ray in black_box(self.rays) {
-            hits += usize::from(self.member.intersect_culled(&cull, ray).is_some());
-        }
-        black_box(hits);
-        start.elapsed()
+        let member = self.member;
+        timed_pass(self.rays, |ray| {
+            member.intersect_culled(&cull, ray).is_some()
+        })
     }
 }
 
@@ -174,7 +153,7 @@ mod tests {
                 Ray::new(o, Vec3::new(-a.cos(), -0.2, -a.sin())).unwrap()
             })
             .collect();
-        let got = time_family(&member, &rays, 2, 0.05, 7).unwrap();
+        let got = member.ratios(&rays, 2, 0.05, 7).unwrap();
         assert_eq!(got.len(), 2 + CullKind::TIMED.len());
         let first = (got[0].contender.as_str(), got[0].reference.as_str());
         assert_eq!(first, ("exact", "circular_exact"));

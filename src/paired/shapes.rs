@@ -10,7 +10,10 @@ use super::runs::{between_run_interval, pooled_within_interval};
 use super::stats::{QUIET_FRACTION, RatioEstimate, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
-use std::time::Duration;
+use crate::workload::box_rays::box_rays;
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+use torus_cull::Ray;
 
 /// One paired ratio of a shape's timing.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -77,6 +80,66 @@ impl ShapeRatio {
 /// The metrics of the shapes beyond the ring torus: a torus family member's and a pipe
 /// bend's per-ray total (cull + exact intersection), decisive in `compare` as `total_ns`.
 pub const SHAPE_METRICS: [&str; 2] = ["family_total_ns", "bend_total_ns"];
+
+/// A shape that `time --family`, `time --bend` and `cargo bench` time (a torus family
+/// member, a pipe bend): its case in a results file, its ray box and its ratios.
+pub trait TimedShape {
+    /// Its records' metric, one of [`SHAPE_METRICS`].
+    const METRIC: &'static str;
+    /// (R, a, b) of the box its uniform rays are drawn at; the records' ν is R/a.
+    fn box_radii(&self) -> (f64, f64, f64);
+    /// Its case in a results file.
+    fn case_name(&self) -> String;
+    /// Its ratios on `rays` from `runs` runs of about `seconds` each; `None` for an empty
+    /// ray set or a run without rounds.
+    fn ratios(&self, rays: &[Ray], runs: usize, seconds: f64, seed: u64)
+    -> Option<Vec<ShapeRatio>>;
+}
+
+/// Every shape of `shapes` timed on `batch` uniform rays at its box (seeded per shape
+/// from `seed`), `runs` runs of `seconds` each, as `ratio` records; `shown` sees each
+/// shape's ratios as they come.
+///
+/// # Errors
+///
+/// A shape without rounds (too short a time), named by its case.
+pub fn shape_records<S: TimedShape>(
+    shapes: &[S],
+    seed: u64,
+    batch: usize,
+    (runs, seconds): (usize, f64),
+    mut shown: impl FnMut(&S, &[ShapeRatio]),
+) -> Result<Vec<RatioRecord>, String> {
+    let mut records = Vec::new();
+    for (i, shape) in shapes.iter().enumerate() {
+        let (big, a, b) = shape.box_radii();
+        let rays = box_rays(big, a, b, batch, seed.wrapping_add(i as u64));
+        let case = shape.case_name();
+        let ratios = shape
+            .ratios(&rays, runs, seconds, seed)
+            .ok_or_else(|| format!("{case}: no rounds (raise the time)"))?;
+        shown(shape, &ratios);
+        records.extend(
+            ratios
+                .iter()
+                .map(|r| r.record(&case, big / a, S::METRIC, rays.len())),
+        );
+    }
+    Ok(records)
+}
+
+/// One timed pass of `hit` over `rays`, the hits counted into a `black_box` so that no
+/// ray's work can be dropped; inlined into each caller's own monomorphized pass.
+#[inline(always)]
+pub fn timed_pass(rays: &[Ray], mut hit: impl FnMut(&Ray) -> bool) -> Duration {
+    let start = Instant::now();
+    let mut hits = 0usize;
+    for ray in black_box(rays) {
+        hits += usize::from(hit(ray));
+    }
+    black_box(hits);
+    start.elapsed()
+}
 
 /// A contender against a reference, by index into the contenders, with their names.
 pub type Pair = (usize, usize, String, String);

@@ -3,25 +3,19 @@
 //! r_min/r_max = 0.5, and r_min/r_max = 0 and 0.9 at Δφ = π/2, written as the `ratio`
 //! section of a results file (metric `bend_total_ns`), which `compare` reads.
 
-use super::shapes::{show, write};
-use std::path::Path;
-use std::process::ExitCode;
-use torus_cull_lab::paired::bend::{BENDS, bend_records};
-use torus_cull_lab::workload::spec::Workload;
+use super::shapes::{Records, Timed, show};
+use torus_cull_lab::paired::bend::{BENDS, bends};
+use torus_cull_lab::paired::shapes::shape_records;
 
-/// Runs per bend, in this process (fresh ray buffers each).
-const RUNS: usize = 3;
+/// Every bend of [`BENDS`]; each prints the best cull with and without the wedge.
+pub(super) const TIMED: Timed = Timed {
+    name: "bend",
+    shapes: BENDS.len(),
+    records,
+};
 
-/// Times every bend for `seconds` in all, writes `out` (or the default
-/// `results/<commit>-bend-time.json`) and prints the best cull with and without the wedge.
-pub(super) fn run(
-    workload: &Workload,
-    seconds: f64,
-    batch: usize,
-    out: Option<&Path>,
-) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let per_run = seconds / (BENDS.len() * RUNS) as f64;
-    let records = bend_records(workload.seed, batch, (RUNS, per_run), |bend, ratios| {
+fn records(seed: u64, batch: usize, timing: (usize, f64)) -> Records {
+    shape_records(&bends()?, seed, batch, timing, |bend, ratios| {
         let best = |wedge: bool| {
             ratios
                 .iter()
@@ -40,7 +34,4 @@ pub(super) fn run(
             show(wedged)
         );
     })
-    .map_err(|e| format!("time --bend: {e}"))?;
-    write(workload, "time-bend", "-bend-time", records, out)?;
-    Ok(ExitCode::SUCCESS)
 }

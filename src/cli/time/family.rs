@@ -3,25 +3,20 @@
 //! tubes (b/a = 1/4, 1/2, 1, 2, 4) and at the horn and two spindles, written as the
 //! `ratio` section of a results file (metric `family_total_ns`), which `compare` reads.
 
-use super::shapes::{show, write};
-use std::path::Path;
-use std::process::ExitCode;
-use torus_cull_lab::paired::family::{MEMBERS, family_records};
-use torus_cull_lab::workload::spec::Workload;
+use super::shapes::{Records, Timed, show};
+use torus_cull_lab::paired::family::{MEMBERS, members};
+use torus_cull_lab::paired::shapes::shape_records;
 
-/// Runs per member, in this process (fresh ray buffers each).
-const RUNS: usize = 3;
+/// Every member of [`MEMBERS`]; each prints its exact intersection's cost and its
+/// fastest cull.
+pub(super) const TIMED: Timed = Timed {
+    name: "family",
+    shapes: MEMBERS.len(),
+    records,
+};
 
-/// Times every member for `seconds` in all, writes `out` (or the default
-/// `results/<commit>-family-time.json`) and prints a line per member.
-pub(super) fn run(
-    workload: &Workload,
-    seconds: f64,
-    batch: usize,
-    out: Option<&Path>,
-) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let per_run = seconds / (MEMBERS.len() * RUNS) as f64;
-    let records = family_records(workload.seed, batch, (RUNS, per_run), |member, ratios| {
+fn records(seed: u64, batch: usize, timing: (usize, f64)) -> Records {
+    shape_records(&members()?, seed, batch, timing, |member, ratios| {
         let best = ratios[2..]
             .iter()
             .min_by(|x, y| x.ratio.total_cmp(&y.ratio))
@@ -39,7 +34,4 @@ pub(super) fn run(
             show(best)
         );
     })
-    .map_err(|e| format!("time --family: {e}"))?;
-    write(workload, "time-family", "-family-time", records, out)?;
-    Ok(ExitCode::SUCCESS)
 }

@@ -185,13 +185,14 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let culls = parse_culls(&args.culls)?;
     let nus = pick_nus(&args.nu, &workload, &args.workload)?;
     check_seconds(args.seconds)?;
-    if args.family {
+    if args.family || args.bend {
+        let timed = if args.family {
+            &family::TIMED
+        } else {
+            &bend::TIMED
+        };
         let batch = pick_batch(args.batch, &workload, &args.workload)?;
-        return family::run(&workload, args.seconds, batch, args.out.as_deref());
-    }
-    if args.bend {
-        let batch = pick_batch(args.batch, &workload, &args.workload)?;
-        return bend::run(&workload, args.seconds, batch, args.out.as_deref());
+        return shapes::run(timed, &workload, args.seconds, batch, args.out.as_deref());
     }
     let batch = match args.device {
         Device::Cpu => pick_batch(args.batch, &workload, &args.workload)?,
