@@ -30,7 +30,7 @@
 //!   the range, negative (the ray runs inside the tube).
 
 use super::frame::LineFrame;
-use super::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use super::spawned_rule::{SpawnedLine, miss_by};
 use super::{OracleClass, OracleLabel, Query, reference_roots};
 use glam::DVec3;
 
@@ -76,14 +76,9 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
         // Tangent at the origin: nothing past it can be told.
         return None;
     }
-    let window = 4.0 * (delta.abs() + OWN_ERROR * size) / cos0.abs() / len;
-    let spawned = SpawnedLine {
-        window,
-        t_min: query.t_min,
-        t_max: query.t_max,
-        len,
-        size,
-    };
+    let range = (query.t_min, query.t_max);
+    let spawned = SpawnedLine::new(delta.abs(), cos0.abs(), range, len, size);
+    let window = spawned.window;
     let roots = reference_roots(&line.over(f64::NEG_INFINITY, f64::INFINITY));
     let next = roots.iter().copied().find(|&t| t > window);
     if next.is_some_and(|t| t <= 2.0 * window) {
@@ -113,17 +108,15 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
             let margin = if lo <= query.t_max { g(lo) } else { 0.0 };
             return Some((miss_by(margin), None));
         };
-        let (t_a, height) =
-            extreme.unwrap_or((0.5 * (window + t_next), g(0.5 * (window + t_next))));
-        if height <= 4.0 * OWN_ERROR * size {
-            return None;
-        }
-        let lo = query.t_min.max(t_a);
-        if lo > query.t_max {
-            return Some((miss_by(g(query.t_max)), None));
-        }
-        let label = line.over(lo, query.t_max).classify();
-        return spawned.leaving_solid(label, offset, first);
+        let mid = 0.5 * (window + t_next);
+        let peak = extreme.unwrap_or((mid, g(mid)));
+        return spawned.leaving_solid(
+            (Some(peak), true),
+            || g(query.t_max),
+            |lo| line.over(lo, query.t_max).classify(),
+            offset,
+            first,
+        );
     }
     // Into the tube: the next crossing is where the ray leaves it.
     let deepest = extreme.map(|(_, depth)| depth);

@@ -29,20 +29,57 @@ pub(crate) fn miss_by(margin: f64) -> OracleLabel {
 }
 
 impl SpawnedLine {
+    /// The line of a ray whose origin lies `delta` (in the shape's distance function) from
+    /// its surface point, leaving it at `cos` to the normal: the origin's own crossing lies
+    /// within the window `w = 4·(δ + OWN_ERROR·size)/(cos·|d|)` of t = 0.
+    pub(crate) fn new(
+        delta: f64,
+        cos: f64,
+        (t_min, t_max): (f64, f64),
+        len: f64,
+        size: f64,
+    ) -> Self {
+        SpawnedLine {
+            window: 4.0 * (delta + OWN_ERROR * size) / cos / len,
+            t_min,
+            t_max,
+            len,
+            size,
+        }
+    }
+
     /// A crossing at `t` is the ray's: past the origin's window, and in the range.
     pub(crate) fn ahead_in_range(&self, t: f64) -> bool {
         t > self.window && t >= self.t_min && t <= self.t_max
     }
 
-    /// Out of the solid: `label` (the line over the range past its highest point), unless
-    /// its margin lies within `ε·size + 2·offset`, a graze that the origin's own offset
-    /// from its surface point leaves undetermined.
-    pub(crate) fn leaving_solid<F>(
+    /// Out of the solid, the line rising from the origin: the label of the line over the
+    /// range past its highest point `peak` (t, height), from `over(lo)` with
+    /// `lo = max(t_min, t)`, unless its margin lies within `ε·size + 2·offset`, a graze
+    /// that the origin's own offset from its surface point leaves undetermined.
+    /// Without a peak, a miss by `miss_margin()` where the line never `comes_back`, and
+    /// rounding only (undetermined) where it does; undetermined too where it comes back
+    /// after rising by no more than the oracle's error. A range that ends before the peak
+    /// is outside all the way: a miss by `miss_margin()`.
+    pub(crate) fn leaving_solid<T>(
         &self,
-        label: OracleLabel,
+        (peak, comes_back): (Option<(f64, f64)>, bool),
+        miss_margin: impl Fn() -> f64,
+        over: impl FnOnce(f64) -> OracleLabel,
         offset: f64,
-        first: F,
-    ) -> Option<(OracleLabel, F)> {
+        first: Option<T>,
+    ) -> Option<(OracleLabel, Option<T>)> {
+        let Some((t_a, height)) = peak else {
+            return (!comes_back).then(|| (miss_by(miss_margin()), None));
+        };
+        if comes_back && height <= 4.0 * OWN_ERROR * self.size {
+            return None;
+        }
+        let lo = self.t_min.max(t_a);
+        if lo > self.t_max {
+            return Some((miss_by(miss_margin()), None));
+        }
+        let label = over(lo);
         if label.margin.abs() <= AMBIGUITY_REL * self.size + 2.0 * offset {
             return None;
         }

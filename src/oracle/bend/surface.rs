@@ -30,7 +30,7 @@
 //! moved point past `w`, in the range.
 
 use super::{BendQuery, Face, Frame, Passage};
-use crate::oracle::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use crate::oracle::spawned_rule::SpawnedLine;
 use crate::oracle::{OracleClass, OracleLabel};
 use glam::DVec3;
 
@@ -116,14 +116,8 @@ impl BendQuery {
             return None;
         }
         let offset = (p - self.origin).length();
-        let window = 4.0 * (delta + OWN_ERROR * size) / cos_min / len;
-        let spawned = SpawnedLine {
-            window,
-            t_min: self.t_min,
-            t_max: self.t_max,
-            len,
-            size,
-        };
+        let spawned = SpawnedLine::new(delta, cos_min, (self.t_min, self.t_max), len, size);
+        let window = spawned.window;
         let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
         let events: Vec<(f64, Passage, Face)> = whole.crossings();
         // The origin's own crossing is the one nearest t = 0 within the window; any other
@@ -153,28 +147,21 @@ impl BendQuery {
         } else {
             Vec::new()
         };
-        let start = self.t_min.max(window);
         if !inward {
-            // The first local maximum of F past the window.
+            // The first local maximum of F past the window; a miss's margin is F at the
+            // range's start past the window.
             let peak = profile
                 .windows(3)
                 .find(|w| w[1].1 >= w[0].1 && w[1].1 >= w[2].1)
                 .map(|w| w[1]);
-            let Some((t_a, height)) = peak else {
-                if next.is_none() {
-                    return Some((miss_by(at(start.min(self.t_max))), None));
-                }
-                return None;
-            };
-            if next.is_some() && height <= 4.0 * OWN_ERROR * size {
-                return None;
-            }
-            let lo = self.t_min.max(t_a);
-            if lo > self.t_max {
-                return Some((miss_by(at(start.min(self.t_max))), None));
-            }
-            let label = line.over(lo, self.t_max).classify();
-            return spawned.leaving_solid(label, offset, first);
+            let start = self.t_min.max(window).min(self.t_max);
+            return spawned.leaving_solid(
+                (peak, next.is_some()),
+                || at(start),
+                |lo| line.over(lo, self.t_max).classify(),
+                offset,
+                first,
+            );
         }
         let deepest = profile.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
         spawned.entering_solid(

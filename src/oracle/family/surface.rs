@@ -34,7 +34,7 @@
 
 use super::line::Line;
 use super::{FamilyQuery, nearest_on_ellipse};
-use crate::oracle::spawned_rule::{OWN_ERROR, SpawnedLine, miss_by};
+use crate::oracle::spawned_rule::SpawnedLine;
 use crate::oracle::{OracleClass, OracleLabel};
 use glam::DVec3;
 
@@ -84,14 +84,8 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
     }
     let (lo_ab, hi_ab) = (line.radial.min(line.axial), line.radial.max(line.axial));
     let delta = line.g(0.0).abs() / lo_ab * hi_ab;
-    let window = 4.0 * (delta + OWN_ERROR * size) / cos0.abs() / len;
-    let spawned = SpawnedLine {
-        window,
-        t_min: query.t_min,
-        t_max: query.t_max,
-        len,
-        size,
-    };
+    let spawned = SpawnedLine::new(delta, cos0.abs(), (query.t_min, query.t_max), len, size);
+    let window = spawned.window;
     let whole = line.over(f64::NEG_INFINITY, f64::INFINITY);
     let ts: Vec<f64> = whole.crossings().iter().map(|c| c.t).collect();
     let next = ts.iter().copied().find(|&t| t > window);
@@ -115,27 +109,16 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
             extreme = Some((t, v));
         }
     }
-    let start = query.t_min.max(window);
     if outward {
-        let Some((t_a, height)) = extreme else {
-            if next.is_none() {
-                // Rises for ever: a miss, by g at the range's start past the window.
-                let at = start.min(query.t_max);
-                return Some((miss_by(line.g(at)), None));
-            }
-            // A crossing with no highest point before it: rounding only.
-            return None;
-        };
-        if next.is_some() && height <= 4.0 * OWN_ERROR * size {
-            return None;
-        }
-        let lo = query.t_min.max(t_a);
-        if lo > query.t_max {
-            // The range ends before the highest point: outside all the way.
-            return Some((miss_by(line.g(start.min(query.t_max))), None));
-        }
-        let label = line.over(lo, query.t_max).classify();
-        return spawned.leaving_solid(label, offset, first);
+        // Past the highest point; a miss's margin is g at the range's start past the window.
+        let start = query.t_min.max(window).min(query.t_max);
+        return spawned.leaving_solid(
+            (extreme, next.is_some()),
+            || line.g(start),
+            |lo| line.over(lo, query.t_max).classify(),
+            offset,
+            first,
+        );
     }
     let deepest = extreme.map(|(_, depth)| depth);
     spawned.entering_solid(
