@@ -19,6 +19,7 @@
 //!   conservative**; they exist to prove that the oracle catches a broken cull.
 
 pub mod bend_check;
+pub mod check_counts;
 pub mod compare;
 pub mod errata;
 pub mod eval;
@@ -32,6 +33,7 @@ pub mod output;
 pub mod paired;
 pub mod peer_f32;
 pub mod plot;
+pub mod random;
 pub mod render;
 pub mod report;
 pub mod results;

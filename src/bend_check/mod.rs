@@ -27,6 +27,8 @@ pub mod exact;
 pub mod rays;
 mod table;
 
+use crate::check_counts::CullCounts;
+pub use crate::check_counts::KindRecord;
 use crate::oracle::{OracleClass, OracleLabel};
 use exact::Tally;
 use rays::{RayKind, Spec};
@@ -95,16 +97,11 @@ pub struct CullRecord {
     pub cull: String,
     /// Behind the wedge.
     pub wedge: bool,
-    /// Rays rejected.
-    pub rejected: u64,
+    /// Its counts (in the file, fields of the record).
+    #[serde(flatten)]
+    pub counts: CullCounts,
     /// rejected / rays.
     pub rejection_rate: f64,
-    /// Oracle hits rejected: must be 0.
-    pub false_rejects: u64,
-    /// The oracle's misses with margin > 1.25·η, literal rays only.
-    pub far_misses: u64,
-    /// Of those, rejected.
-    pub far_misses_rejected: u64,
     /// far_misses_rejected / far_misses (null without far misses).
     pub capture: Option<f64>,
 }
@@ -129,21 +126,6 @@ pub struct CutAwayRecord {
     pub wedge_rejected: u64,
     /// wedge_rejected / misses (null without any).
     pub capture: Option<f64>,
-}
-
-/// Per ray kind: rays, oracle hits, misses and ambiguous labels.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct KindRecord {
-    /// The kind's name.
-    pub kind: String,
-    /// Rays drawn.
-    pub rays: u64,
-    /// Oracle hits.
-    pub hits: u64,
-    /// Oracle misses.
-    pub misses: u64,
-    /// Ambiguous labels (not counted for the culls' false rejects).
-    pub ambiguous: u64,
 }
 
 /// The exact intersection on one class: [`Tally`]'s counts.
@@ -180,7 +162,7 @@ impl ClassRecord {
 
     /// False rejects over every cull and combination.
     pub fn false_rejects(&self) -> u64 {
-        self.culls.iter().map(|c| c.false_rejects).sum()
+        self.culls.iter().map(|c| c.counts.false_rejects).sum()
     }
 }
 
@@ -264,23 +246,14 @@ impl Accum {
         let cull = |c: &CullKind, wedge| CullRecord {
             cull: c.name().into(),
             wedge,
-            rejected: 0,
+            counts: CullCounts::default(),
             rejection_rate: 0.0,
-            false_rejects: 0,
-            far_misses: 0,
-            far_misses_rejected: 0,
             capture: None,
         };
         let mut culls: Vec<CullRecord> = CullKind::TIMED.iter().map(|c| cull(c, false)).collect();
         culls.extend(CullKind::TIMED.iter().map(|c| cull(c, true)));
         Accum {
-            kinds: RayKind::ALL
-                .iter()
-                .map(|k| KindRecord {
-                    kind: k.name().into(),
-                    ..KindRecord::default()
-                })
-                .collect(),
+            kinds: KindRecord::zeroed(RayKind::ALL.iter().map(|k| k.name())),
             culls,
             ..Accum::default()
         }
@@ -288,16 +261,10 @@ impl Accum {
 
     fn add(&mut self, o: Accum) {
         for (a, b) in self.kinds.iter_mut().zip(&o.kinds) {
-            a.rays += b.rays;
-            a.hits += b.hits;
-            a.misses += b.misses;
-            a.ambiguous += b.ambiguous;
+            a.add(b);
         }
         for (a, b) in self.culls.iter_mut().zip(&o.culls) {
-            a.rejected += b.rejected;
-            a.false_rejects += b.false_rejects;
-            a.far_misses += b.far_misses;
-            a.far_misses_rejected += b.far_misses_rejected;
+            a.counts.add(&b.counts);
         }
         self.cut_away.misses += o.cut_away.misses;
         self.cut_away.wedge_rejected += o.cut_away.wedge_rejected;
@@ -347,13 +314,7 @@ fn check_pose(
         } else {
             q.classify()
         };
-        let kind = &mut acc.kinds[k];
-        kind.rays += 1;
-        match label.class {
-            OracleClass::Hit => kind.hits += 1,
-            OracleClass::Miss => kind.misses += 1,
-            OracleClass::Ambiguous => kind.ambiguous += 1,
-        }
+        acc.kinds[k].count(label.class);
         let n = CullKind::TIMED.len();
         let far_miss = !spawned && label.class == OracleClass::Miss && label.margin > far;
         for (j, record) in acc.culls.iter_mut().enumerate() {
@@ -362,12 +323,8 @@ fn check_pose(
             } else {
                 bend.kept_by(&wedges[j - n], &ray)
             };
-            record.rejected += u64::from(!kept);
-            record.false_rejects += u64::from(label.class == OracleClass::Hit && !kept);
-            if far_miss {
-                record.far_misses += 1;
-                record.far_misses_rejected += u64::from(!kept);
-            }
+            let hit = label.class == OracleClass::Hit;
+            record.counts.count(kept, hit, far_miss);
         }
         if !spawned && label.class == OracleClass::Miss && is_cut_away(&whole, &segment, &ray) {
             acc.cut_away.misses += 1;
@@ -440,9 +397,8 @@ pub fn check(
     for (&(nu, delta, ratio), acc) in all.iter().zip(accums) {
         let mut acc = acc.into_inner().expect("no worker panicked");
         for c in &mut acc.culls {
-            c.rejection_rate = c.rejected as f64 / rays as f64;
-            c.capture =
-                (c.far_misses > 0).then(|| c.far_misses_rejected as f64 / c.far_misses as f64);
+            c.rejection_rate = c.counts.rejection_rate(rays);
+            c.capture = c.counts.capture();
         }
         let cut = &mut acc.cut_away;
         cut.capture = (cut.misses > 0).then(|| cut.wedge_rejected as f64 / cut.misses as f64);

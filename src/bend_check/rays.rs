@@ -335,19 +335,9 @@ pub fn draw(spec: &Spec, bend: &PipeBend, kind: RayKind, rng: &mut Pcg64) -> (DR
     (ray, false)
 }
 
-/// A uniformly random unit vector.
+/// A uniformly random unit vector (none shorter than 0.1 drawn).
 pub fn unit(rng: &mut Pcg64) -> DVec3 {
-    loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l = v.length();
-        if l > 0.1 && l <= 1.0 {
-            return v / l;
-        }
-    }
+    crate::random::ball_direction(rng, 0.01)
 }
 
 /// The generator every bend ray is drawn from.

@@ -11,7 +11,8 @@
 //! Two files of different families, rays or seed (`meta.workload_sha256`) are refused by
 //! [`comparable`], as results files of different workloads are.
 
-use super::rows::{Report, Row, TIMED_SECTIONS, changed, changed_counts, first_duplicate, pair_up};
+use super::counted::{self, CountedFile};
+use super::rows::{Report, Row, TIMED_SECTIONS, changed_counts, counts, judged_row, pair_up};
 use crate::f32_check::{CheckFile, FamilyRecord, Tally};
 
 /// A family's key: its name, and its ν when it has one (the workload generators' families
@@ -23,24 +24,21 @@ fn family_key(f: &FamilyRecord) -> String {
     }
 }
 
+/// The file as [`counted`] sees it.
+fn counted(file: &CheckFile) -> CountedFile<'_, FamilyRecord> {
+    CountedFile {
+        kind: "f32-check",
+        class: "family",
+        meta: &file.meta,
+        classes: &file.families,
+        rays: file.rays_per_family,
+        seed: format!("{:?}", file.meta.seed),
+    }
+}
+
 /// Refuses files whose rays differ, and a file that holds a family twice.
 pub fn comparable(old: &CheckFile, new: &CheckFile) -> Result<(), String> {
-    for file in [old, new] {
-        if let Some(family) = first_duplicate(&file.families, family_key) {
-            return Err(format!(
-                "family `{family}` appears more than once: compare cannot tell which to pair"
-            ));
-        }
-    }
-    if old.meta.workload_sha256 != new.meta.workload_sha256 {
-        return Err(format!(
-            "the f32-check rays differ (field `meta.workload_sha256`; rays per family {} vs \
-             {}, seeds {:?} vs {:?}): their counts are of different rays, so nothing is \
-             compared",
-            old.rays_per_family, new.rays_per_family, old.meta.seed, new.meta.seed
-        ));
-    }
-    Ok(())
+    counted::comparable(&counted(old), &counted(new), family_key)
 }
 
 /// The rows of two f32-check files; `threshold` is a fraction (0.10 for 10 %). Timing
@@ -59,12 +57,7 @@ pub fn compare(old: &CheckFile, new: &CheckFile, threshold: f64, across_machines
         "f32-check",
     );
     for (key, o, n) in &pairs {
-        let oracle = changed_counts(&[
-            ("rays", o.rays, n.rays),
-            ("hits", o.hits, n.hits),
-            ("misses", o.misses, n.misses),
-            ("ambiguous", o.ambiguous, n.ambiguous),
-        ]);
+        let oracle = changed_counts(&counts!(o, n; rays, hits, misses, ambiguous));
         for (who, a, b, ours) in [
             ("cert", &o.certified, &n.certified, true),
             ("f32", &o.f32_path, &n.f32_path, true),
@@ -120,28 +113,14 @@ fn tally_row(
             f64::NAN
         }
     };
-    let mut flags = changed(&[
-        ("escalated", o.escalated, n.escalated),
-        ("missed", o.missed, n.missed),
-        ("spurious", o.spurious, n.spurious),
-        ("far", o.far, n.far),
-        ("hits_answered", o.hits_answered, n.hits_answered),
-    ]);
+    let counts = counts!(o, n; escalated, missed, spurious, far, hits_answered);
     let wrong = |t: &Tally| t.missed + t.spurious + t.far;
-    let regression = ours && wrong(n) > wrong(o);
-    if regression {
-        flags.push(format!(
+    let worse = (ours && wrong(n) > wrong(o)).then(|| {
+        format!(
             "REGRESSION: missed/spurious/far {}/{}/{} -> {}/{}/{}",
             o.missed, o.spurious, o.far, n.missed, n.spurious, n.far
-        ));
-    }
-    Row {
-        section: "f32-check",
-        key,
-        metric: "escalation_rate",
-        old: rate(o, o_rays),
-        new: rate(n, n_rays),
-        flags,
-        regression,
-    }
+        )
+    });
+    let rates = (rate(o, o_rays), rate(n, n_rays));
+    judged_row(("f32-check", key, "escalation_rate"), rates, &counts, worse)
 }

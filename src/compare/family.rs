@@ -12,98 +12,61 @@
 //! Two files of different members, rays or seed (`meta.workload_sha256`) are refused by
 //! [`comparable`].
 
-use super::rows::{CullCounts, Report, Row, changed, cull_capture_row, first_duplicate, pair_up};
+use super::counted::{self, CountedFile};
+use super::rows::{Report, Row, counts, cull_capture_row, judged_row, pair_up};
 use crate::family_check::{CullRecord, FamilyFile, MemberRecord};
+
+/// The file as [`counted`] sees it.
+fn counted(file: &FamilyFile) -> CountedFile<'_, MemberRecord> {
+    CountedFile {
+        kind: "family-check",
+        class: "member",
+        meta: &file.meta,
+        classes: &file.members,
+        rays: file.rays_per_member,
+        seed: file.seed.to_string(),
+    }
+}
 
 /// Refuses files whose rays differ, and a file that holds a member class twice.
 pub fn comparable(old: &FamilyFile, new: &FamilyFile) -> Result<(), String> {
-    for file in [old, new] {
-        if let Some(member) = first_duplicate(&file.members, MemberRecord::label) {
-            return Err(format!(
-                "member `{member}` appears more than once: compare cannot tell which to pair"
-            ));
-        }
-    }
-    if old.meta.workload_sha256 != new.meta.workload_sha256 {
-        return Err(format!(
-            "the family-check rays differ (field `meta.workload_sha256`; rays per member {} \
-             vs {}, seeds {} vs {}): their counts are of different rays, so nothing is \
-             compared",
-            old.rays_per_member, new.rays_per_member, old.seed, new.seed
-        ));
-    }
-    Ok(())
+    counted::comparable(&counted(old), &counted(new), MemberRecord::label)
 }
 
 /// The rows of two family-check files (counts only: no timing, so no threshold).
 #[must_use]
 pub fn compare(old: &FamilyFile, new: &FamilyFile, across_machines: bool) -> Report {
-    let mut report = Report {
-        meta: super::machine::differences(&old.meta, &new.meta),
-        across_machines,
-        ..Report::default()
-    };
-    let members = pair_up(
-        &old.members,
-        &new.members,
-        MemberRecord::label,
-        &mut report,
-        "family",
-    );
-    for (member, o, n) in &members {
+    let files = (&counted(old), &counted(new));
+    let section = ("family", MemberRecord::label);
+    counted::report(files, section, across_machines, |member, o, n, report| {
         let key = |c: &CullRecord| format!("{member} {}", c.cull);
-        for (key, a, b) in pair_up(&o.culls, &n.culls, key, &mut report, "family") {
-            report.rows.push(cull_row(key, a, b));
+        for (key, a, b) in pair_up(&o.culls, &n.culls, key, report, "family") {
+            // Whether the cull accepts the member's shape is flagged when it changes.
+            let accepts = ("accepts", u64::from(a.accepts), u64::from(b.accepts));
+            let counts = (a.counts, b.counts);
+            report.rows.push(cull_capture_row(
+                ("family", key),
+                counts.0,
+                counts.1,
+                &[accepts],
+            ));
         }
         report.rows.push(exact_row(format!("{member} exact"), o, n));
-    }
-    super::judge_across_machines(&mut report);
-    report
-}
-
-/// One cull on one member ([`cull_capture_row`]); whether it accepts the member's shape
-/// is flagged when it changes.
-fn cull_row(key: String, o: &CullRecord, n: &CullRecord) -> Row {
-    let counts = |c: &CullRecord| CullCounts {
-        rejected: c.rejected,
-        false_rejects: c.false_rejects,
-        far_misses: c.far_misses,
-        far_misses_rejected: c.far_misses_rejected,
-    };
-    let accepts = ("accepts", u64::from(o.accepts), u64::from(n.accepts));
-    cull_capture_row(("family", key), counts(o), counts(n), &[accepts])
+    })
 }
 
 /// The exact intersection on one member: more missed or invented hits is a regression;
 /// the row's value is the largest t error (relative to the size).
 fn exact_row(key: String, o: &MemberRecord, n: &MemberRecord) -> Row {
     let (a, b) = (&o.exact, &n.exact);
-    let counts = [
-        ("intersect_missed", a.intersect_missed, b.intersect_missed),
-        (
-            "intersect_invented",
-            a.intersect_invented,
-            b.intersect_invented,
-        ),
-        ("all_missed", a.all_missed, b.all_missed),
-        ("all_invented", a.all_invented, b.all_invented),
-    ];
-    let mut flags = changed(&counts);
-    let regression = n.exact_wrong() > o.exact_wrong();
-    if regression {
-        flags.push(format!(
-            "REGRESSION: missed/invented hits {} -> {}",
-            o.exact_wrong(),
-            n.exact_wrong()
-        ));
-    }
-    Row {
-        section: "family exact",
-        key,
-        metric: "max_t_error_rel",
-        old: a.max_t_error_rel,
-        new: b.max_t_error_rel,
-        flags,
-        regression,
-    }
+    let counts = counts!(a, b; intersect_missed, intersect_invented, all_missed, all_invented);
+    let (was, is) = (o.exact_wrong(), n.exact_wrong());
+    let worse = (is > was).then(|| format!("REGRESSION: missed/invented hits {was} -> {is}"));
+    let t_error = (a.max_t_error_rel, b.max_t_error_rel);
+    judged_row(
+        ("family exact", key, "max_t_error_rel"),
+        t_error,
+        &counts,
+        worse,
+    )
 }

@@ -28,6 +28,7 @@
 //! so that a vacuous comparison never passes a CI gate.
 
 pub mod bend;
+mod counted;
 pub mod coverage;
 pub mod f32_check;
 pub mod family;
@@ -38,7 +39,7 @@ mod rows;
 pub use rows::{Report, Row};
 
 use crate::results::{BvhRecord, EstimateRecord, RejectionRecord, Results, TimingRecord};
-use rows::{TIMED_SECTIONS, first_duplicate, noise_or_faster, pair_up};
+use rows::{TIMED_SECTIONS, counts, first_duplicate, noise_or_faster, pair_up};
 use std::fmt::Write;
 
 fn key(kind: &str, nu: f64, cull: &str) -> String {
@@ -187,14 +188,7 @@ fn capture(r: &RejectionRecord) -> (Option<f64>, bool) {
 fn rejection_row(key: String, o: &RejectionRecord, n: &RejectionRecord) -> Row {
     let mut flags = Vec::new();
     let mut regression = false;
-    let counts = [
-        ("rays", o.rays, n.rays),
-        ("hits", o.hits, n.hits),
-        ("misses", o.misses, n.misses),
-        ("ambiguous", o.ambiguous, n.ambiguous),
-        ("rejected", o.rejected, n.rejected),
-        ("false_rejects", o.false_rejects, n.false_rejects),
-    ];
+    let counts = counts!(o, n; rays, hits, misses, ambiguous, rejected, false_rejects);
     flags.extend(rows::changed(&counts));
     if n.false_rejects > o.false_rejects {
         regression = true;
@@ -259,26 +253,18 @@ fn time_row(
 ) -> Row {
     let change = new / old - 1.0;
     let disjoint = new_ci[0] > old_ci[1] || new_ci[1] < old_ci[0];
-    let regression = change > threshold && disjoint;
-    let flags = if regression {
-        vec![format!(
+    let slower = (change > threshold && disjoint).then(|| {
+        format!(
             "REGRESSION: {:+.1}% slower, intervals disjoint",
             change * 100.0
-        )]
-    } else {
-        noise_or_faster(change, threshold, disjoint)
-            .into_iter()
-            .collect()
-    };
-    Row {
-        section,
-        key,
-        metric,
-        old,
-        new,
-        flags,
-        regression,
+        )
+    });
+    let mut row = rows::judged_row((section, key, metric), (old, new), &[], slower);
+    if !row.regression {
+        row.flags
+            .extend(noise_or_faster(change, threshold, disjoint));
     }
+    row
 }
 
 fn bvh_row(key: String, o: &BvhRecord, n: &BvhRecord, threshold: f64) -> Row {

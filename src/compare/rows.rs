@@ -2,7 +2,17 @@
 //! key: what every section of `torus-cull compare` builds on (the criterion sections in
 //! `mod.rs`, the ratio section in `ratio.rs`).
 
+use crate::check_counts::CullCounts;
 use std::collections::BTreeMap;
+
+/// `[("field", old.field, new.field), …]`: each count named by its own field, so that a
+/// flag's name cannot drift from what it counts.
+macro_rules! counts {
+    ($old:expr, $new:expr; $($field:ident),+ $(,)?) => {
+        [$((stringify!($field), $old.$field, $new.$field)),+]
+    };
+}
+pub(super) use counts;
 
 /// One compared record.
 #[derive(Debug, Clone, PartialEq)]
@@ -127,6 +137,28 @@ pub(super) fn changed(counts: &[(&str, u64, u64)]) -> Vec<String> {
     }
 }
 
+/// A row of `metric`, old against new: `counts` flagged where they changed (exact counts
+/// on the same rays), and the `regression` message added (the row a regression) when the
+/// new file answers worse.
+pub(super) fn judged_row(
+    (section, key, metric): (&'static str, String, &'static str),
+    (old, new): (f64, f64),
+    counts: &[(&str, u64, u64)],
+    regression: Option<String>,
+) -> Row {
+    let mut flags = changed(counts);
+    flags.extend(regression.iter().cloned());
+    Row {
+        section,
+        key,
+        metric,
+        old,
+        new,
+        flags,
+        regression: regression.is_some(),
+    }
+}
+
 /// `num / den`, NaN without a denominator (a capture with nothing to capture).
 pub(super) fn ratio(num: u64, den: u64) -> f64 {
     if den > 0 {
@@ -134,15 +166,6 @@ pub(super) fn ratio(num: u64, den: u64) -> f64 {
     } else {
         f64::NAN
     }
-}
-
-/// A cull's counts on the same rays in a check file (`torus-cull family`, `torus-cull bend`).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct CullCounts {
-    pub rejected: u64,
-    pub false_rejects: u64,
-    pub far_misses: u64,
-    pub far_misses_rejected: u64,
 }
 
 /// One cull of a check file: its capture of the far misses from its counts (`extra`
@@ -155,16 +178,7 @@ pub(super) fn cull_capture_row(
     extra: &[(&str, u64, u64)],
 ) -> Row {
     let mut counts = extra.to_vec();
-    counts.extend([
-        ("rejected", o.rejected, n.rejected),
-        ("false_rejects", o.false_rejects, n.false_rejects),
-        ("far_misses", o.far_misses, n.far_misses),
-        (
-            "far_misses_rejected",
-            o.far_misses_rejected,
-            n.far_misses_rejected,
-        ),
-    ]);
+    counts.extend(counts!(o, n; rejected, false_rejects, far_misses, far_misses_rejected));
     let mut flags = changed(&counts);
     let mut regression = false;
     if n.false_rejects > o.false_rejects {

@@ -31,6 +31,8 @@
 
 pub mod rays;
 
+use crate::check_counts::CullCounts;
+pub use crate::check_counts::KindRecord;
 use crate::family_label;
 use crate::oracle::OracleClass;
 use glam::DVec3;
@@ -75,16 +77,11 @@ pub struct CullRecord {
     pub cull: String,
     /// Whether the cull accepts the member's shape (false: declined, keeps every ray).
     pub accepts: bool,
-    /// Rays rejected.
-    pub rejected: u64,
+    /// Its counts (in the file, fields of the record).
+    #[serde(flatten)]
+    pub counts: CullCounts,
     /// rejected / rays.
     pub rejection_rate: f64,
-    /// Oracle hits rejected: must be 0.
-    pub false_rejects: u64,
-    /// The oracle's misses with margin > 1.25·η, literal rays only (not spawned).
-    pub far_misses: u64,
-    /// Of those, rejected.
-    pub far_misses_rejected: u64,
     /// far_misses_rejected / far_misses (null without far misses).
     pub capture: Option<f64>,
 }
@@ -105,22 +102,6 @@ pub struct ExactRecord {
     pub intersect_vs_all_rel: f64,
     /// The largest |t − t_oracle|·|d|/(R + max(a, b)) over hits both found.
     pub max_t_error_rel: f64,
-}
-
-/// Per ray kind: rays, oracle hits, misses and ambiguous rows.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct KindRecord {
-    /// The kind's name.
-    pub kind: String,
-    /// Rays drawn.
-    pub rays: u64,
-    /// Oracle hits.
-    pub hits: u64,
-    /// Oracle misses.
-    pub misses: u64,
-    /// Ambiguous rows (counted apart: neither for the culls' false rejects nor for the
-    /// exact intersection).
-    pub ambiguous: u64,
 }
 
 /// One member class.
@@ -152,7 +133,7 @@ impl MemberRecord {
 
     /// False rejects over every cull.
     pub fn false_rejects(&self) -> u64 {
-        self.culls.iter().map(|c| c.false_rejects).sum()
+        self.culls.iter().map(|c| c.counts.false_rejects).sum()
     }
 
     /// Missed and invented hits of the exact intersection (both forms).
@@ -238,23 +219,14 @@ pub fn check_member(
         member(nu, aspect, &mut rng).map_err(|e| format!("member nu={nu} b/a={aspect}: {e}"))?;
     let size = rays::size(&toroid);
     let far = CAPTURE_ETAS * ETA_REL * size;
-    let mut kinds: Vec<KindRecord> = RayKind::ALL
-        .iter()
-        .map(|k| KindRecord {
-            kind: k.name().into(),
-            ..KindRecord::default()
-        })
-        .collect();
+    let mut kinds = KindRecord::zeroed(RayKind::ALL.iter().map(|k| k.name()));
     let mut culls: Vec<CullRecord> = CullKind::TIMED
         .iter()
         .map(|c| CullRecord {
             cull: c.name().into(),
             accepts: c.accepts(toroid.shape()),
-            rejected: 0,
+            counts: CullCounts::default(),
             rejection_rate: 0.0,
-            false_rejects: 0,
-            far_misses: 0,
-            far_misses_rejected: 0,
             capture: None,
         })
         .collect();
@@ -264,26 +236,16 @@ pub fn check_member(
         let ray = rays::draw(&toroid, RayKind::ALL[k], &mut rng);
         let label = family_label::label(&toroid, &ray)
             .map_err(|e| format!("member nu={nu} b/a={aspect}, ray {i}: {e}"))?;
-        let kind = &mut kinds[k];
-        kind.rays += 1;
-        match label.class {
-            OracleClass::Hit => kind.hits += 1,
-            OracleClass::Miss => kind.misses += 1,
-            OracleClass::Ambiguous => kind.ambiguous += 1,
-        }
+        kinds[k].count(label.class);
         for (cull, record) in CullKind::TIMED.iter().zip(&mut culls) {
-            let kept = toroid.kept_by(cull, &ray);
-            record.rejected += u64::from(!kept);
-            if label.class == OracleClass::Hit && !kept {
-                record.false_rejects += 1;
-            }
             // A spawned ray's line passes through its own surface point: no line cull can
             // reject it, so its misses are left out of the capture.
             let literal = RayKind::ALL[k] != RayKind::Spawned;
-            if literal && label.class == OracleClass::Miss && label.margin > far {
-                record.far_misses += 1;
-                record.far_misses_rejected += u64::from(!kept);
-            }
+            let far_miss = literal && label.class == OracleClass::Miss && label.margin > far;
+            let hit = label.class == OracleClass::Hit;
+            record
+                .counts
+                .count(toroid.kept_by(cull, &ray), hit, far_miss);
         }
         if label.class == OracleClass::Ambiguous {
             continue;
@@ -308,9 +270,8 @@ pub fn check_member(
         }
     }
     for record in &mut culls {
-        record.rejection_rate = record.rejected as f64 / rays as f64;
-        record.capture = (record.far_misses > 0)
-            .then(|| record.far_misses_rejected as f64 / record.far_misses as f64);
+        record.rejection_rate = record.counts.rejection_rate(rays);
+        record.capture = record.counts.capture();
     }
     Ok(MemberRecord {
         kind: format!("{:?}", toroid.kind()).to_lowercase(),

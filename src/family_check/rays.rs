@@ -86,17 +86,7 @@ impl Frame {
 
 /// A uniformly random unit vector.
 fn unit(rng: &mut impl Rng) -> DVec3 {
-    loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l2 = v.length_squared();
-        if l2 > 1e-6 && l2 <= 1.0 {
-            return v / l2.sqrt();
-        }
-    }
+    crate::random::ball_direction(rng, 1e-6)
 }
 
 /// A random point of the surface (world) and its unit outward normal: a point

@@ -97,19 +97,7 @@ impl Pose {
 }
 
 fn unit(rng: &mut Pcg64) -> DVec3 {
-    // Rejection sampling keeps about half the draws: 1000 failures in a row never happen.
-    for _ in 0..1000 {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l2 = v.length_squared();
-        if l2 > 1e-4 && l2 <= 1.0 {
-            return v / l2.sqrt();
-        }
-    }
-    panic!("no unit vector in 1000 draws")
+    crate::random::ball_direction(rng, 1e-4)
 }
 
 fn close(a: f64, b: f64, tol: f64) -> bool {

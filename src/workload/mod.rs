@@ -23,6 +23,7 @@ pub mod secondary;
 pub mod spec;
 mod uniform;
 
+pub use crate::random::unit_vector;
 pub use camera::CameraView;
 pub use grazing::GRAZING_OFFSETS;
 
@@ -294,14 +295,6 @@ pub(crate) fn rejection_sample(
         draw(batch);
     }
     Ok(())
-}
-
-/// A direction uniform on the unit sphere (Archimedes: z uniform, azimuth uniform).
-pub fn unit_vector(rng: &mut Pcg64) -> DVec3 {
-    let z: f64 = rng.random_range(-1.0..1.0);
-    let phi = rng.random_range(0.0..std::f64::consts::TAU);
-    let s = (1.0 - z * z).max(0.0).sqrt();
-    DVec3::new(s * phi.cos(), s * phi.sin(), z)
 }
 
 /// A point uniform in the disk of `radius` across the unit direction `d`.

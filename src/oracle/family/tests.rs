@@ -120,18 +120,7 @@ impl Pose {
 }
 
 pub(super) fn unit(rng: &mut Pcg64) -> DVec3 {
-    for _ in 0..1000 {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l2 = v.length_squared();
-        if l2 > 1e-4 && l2 <= 1.0 {
-            return v / l2.sqrt();
-        }
-    }
-    panic!("no unit vector in 1000 draws")
+    crate::random::ball_direction(rng, 1e-4)
 }
 
 /// Asserts the crossings' passages and their t (each within `tol`).

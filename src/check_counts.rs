@@ -1,0 +1,99 @@
+//! What the shape checks (`torus-cull family`, `torus-cull bend`) count alike: per ray
+//! kind, the oracle's labels; per cull, its rejections, its false rejects and its capture
+//! of the far misses. `compare` recomputes the capture from these counts.
+
+use crate::oracle::OracleClass;
+use serde::{Deserialize, Serialize};
+
+/// Per ray kind: rays, oracle hits, misses and ambiguous rows.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct KindRecord {
+    /// The kind's name.
+    pub kind: String,
+    /// Rays drawn.
+    pub rays: u64,
+    /// Oracle hits.
+    pub hits: u64,
+    /// Oracle misses.
+    pub misses: u64,
+    /// Ambiguous rows (counted apart: neither for the culls' false rejects nor for the
+    /// exact intersection).
+    pub ambiguous: u64,
+}
+
+impl KindRecord {
+    /// One empty record per kind, named `names`.
+    pub fn zeroed<'a>(names: impl IntoIterator<Item = &'a str>) -> Vec<KindRecord> {
+        let zero = |kind: &str| KindRecord {
+            kind: kind.into(),
+            ..KindRecord::default()
+        };
+        names.into_iter().map(zero).collect()
+    }
+
+    /// Counts one ray the oracle labels `class`.
+    pub fn count(&mut self, class: OracleClass) {
+        self.rays += 1;
+        match class {
+            OracleClass::Hit => self.hits += 1,
+            OracleClass::Miss => self.misses += 1,
+            OracleClass::Ambiguous => self.ambiguous += 1,
+        }
+    }
+
+    /// Adds `other`'s counts (the same kind, drawn elsewhere).
+    pub fn add(&mut self, other: &KindRecord) {
+        self.rays += other.rays;
+        self.hits += other.hits;
+        self.misses += other.misses;
+        self.ambiguous += other.ambiguous;
+    }
+}
+
+/// A cull's counts on a check's rays.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct CullCounts {
+    /// Rays rejected.
+    pub rejected: u64,
+    /// Oracle hits rejected: must be 0.
+    pub false_rejects: u64,
+    /// The oracle's misses with margin > 1.25·η, literal rays only (a spawned ray's line
+    /// passes through its own surface point, which no line cull can reject).
+    pub far_misses: u64,
+    /// Of those, rejected.
+    pub far_misses_rejected: u64,
+}
+
+impl CullCounts {
+    /// Counts one ray the cull `kept` or rejected: a false reject if the oracle says it
+    /// `hit`s, and one of the far misses if it is one (`far_miss`).
+    pub fn count(&mut self, kept: bool, hit: bool, far_miss: bool) {
+        let rejected = u64::from(!kept);
+        self.rejected += rejected;
+        self.false_rejects += u64::from(hit && !kept);
+        if far_miss {
+            self.far_misses += 1;
+            self.far_misses_rejected += rejected;
+        }
+    }
+
+    /// Adds `other`'s counts (the same cull on other rays).
+    pub fn add(&mut self, other: &CullCounts) {
+        self.rejected += other.rejected;
+        self.false_rejects += other.false_rejects;
+        self.far_misses += other.far_misses;
+        self.far_misses_rejected += other.far_misses_rejected;
+    }
+
+    /// rejected / `rays`.
+    #[must_use]
+    pub fn rejection_rate(&self, rays: usize) -> f64 {
+        self.rejected as f64 / rays as f64
+    }
+
+    /// far_misses_rejected / far_misses; `None` without far misses.
+    #[must_use]
+    pub fn capture(&self) -> Option<f64> {
+        (self.far_misses > 0).then(|| self.far_misses_rejected as f64 / self.far_misses as f64)
+    }
+}
