@@ -320,9 +320,7 @@ impl PipeBend {
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        use crate::geometry::ray::sealed::Scalar;
-        let at = ray.origin().to_dvec3() + ray.dir().to_dvec3() * t.to_f64();
-        Ray::from_surface(P::from_dvec3(self.nearest_face_point(at)), dir)
+        ray.spawn_onto(t, dir, |at| self.nearest_face_point(at))
     }
 
     /// The point of the nearest face to the world point `p`, with the faces it lies on

@@ -460,8 +460,6 @@ impl Toroid {
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        use crate::geometry::ray::sealed::Scalar;
-        let at = ray.origin().to_dvec3() + ray.dir().to_dvec3() * t.to_f64();
-        Ray::from_surface(P::from_dvec3(self.surface_point_near(at)), dir)
+        ray.spawn_onto(t, dir, |at| self.surface_point_near(at))
     }
 }

@@ -456,6 +456,18 @@ impl<P: Precision> Ray<P> {
         })
     }
 
+    /// The shapes' `spawn`: the point at `t`, formed in f64 and moved onto the surface by
+    /// `onto` before it is rounded to `P`, as the origin of a [`Ray::from_surface`].
+    pub(crate) fn spawn_onto(
+        &self,
+        t: P::Float,
+        dir: P,
+        onto: impl Fn(DVec3) -> DVec3,
+    ) -> Result<Ray<P>, RayError<P>> {
+        let at = self.origin.to_dvec3() + self.dir.to_dvec3() * t.to_f64();
+        Ray::from_surface(P::from_dvec3(onto(at)), dir)
+    }
+
     /// The same ray, not marked as starting on a surface: what a spawned ray is for every
     /// shape but the one it left ([`Ray::from_surface`]).
     #[inline]

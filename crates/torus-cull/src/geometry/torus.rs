@@ -1,7 +1,6 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
-use super::ray::sealed::Scalar;
 use super::ray::{DRay, Precision, Ray, RayError};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
@@ -625,8 +624,7 @@ impl Torus {
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        let at = ray.origin().to_dvec3() + ray.dir().to_dvec3() * t.to_f64();
-        Ray::from_surface(P::from_dvec3(self.nearest_surface_point(at)), dir)
+        ray.spawn_onto(t, dir, |at| self.nearest_surface_point(at))
     }
 
     /// [`Torus::spawn`] from a hit's point (`Hit::point`, in the ray's precision), for a
