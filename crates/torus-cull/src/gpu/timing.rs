@@ -215,17 +215,7 @@ impl ResidentRays<'_> {
     /// Runs the kernel with `cull` over every resident ray `repeats` times (at least
     /// once), in one submission, and waits for it.
     pub fn run(&self, cull: GpuCull, repeats: usize) -> Result<KernelTime, GpuError> {
-        for ((buffers, &count), &surfaces) in
-            self.chunks.iter().zip(&self.counts).zip(&self.surfaced)
-        {
-            self.gpu.queue.write_buffer(
-                &buffers.params,
-                0,
-                &self
-                    .frame
-                    .params(count as u32, cull, Mode::Intersect, surfaces),
-            );
-        }
+        self.write_params(cull);
         self.dispatch(&self.gpu.pipeline, repeats)
     }
 
@@ -301,17 +291,7 @@ impl ResidentRays<'_> {
                 "run_finished before upload_finish: the f64 pass has no input".into(),
             ));
         }
-        for ((buffers, &count), &surfaces) in
-            self.chunks.iter().zip(&self.counts).zip(&self.surfaced)
-        {
-            self.gpu.queue.write_buffer(
-                &buffers.params,
-                0,
-                &self
-                    .frame
-                    .params(count as u32, cull, Mode::Intersect, surfaces),
-            );
-        }
+        self.write_params(cull);
         let (wall, mut device) = self.submit(&self.gpu.pipeline, Some(&pass.pipeline), repeats)?;
         let finish = device.pop().unwrap_or_default();
         let kernel = device.pop().unwrap_or_default();
@@ -361,6 +341,22 @@ impl ResidentRays<'_> {
             staging.unmap();
         }
         Ok(counts)
+    }
+
+    /// Writes each chunk's kernel parameters for an intersect pass with `cull`, before
+    /// every timed run: the cull may differ from the last run's.
+    fn write_params(&self, cull: GpuCull) {
+        for ((buffers, &count), &surfaces) in
+            self.chunks.iter().zip(&self.counts).zip(&self.surfaced)
+        {
+            self.gpu.queue.write_buffer(
+                &buffers.params,
+                0,
+                &self
+                    .frame
+                    .params(count as u32, cull, Mode::Intersect, surfaces),
+            );
+        }
     }
 
     fn dispatch(
