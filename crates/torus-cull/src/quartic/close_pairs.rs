@@ -31,6 +31,7 @@
 //! the near-double decision, not the coefficients' size); now 0 and 0, as the all-roots
 //! solvers were before and are now.
 
+use super::corpus::score::nearest_unused;
 use super::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 
 const EPS: f64 = f64::EPSILON;
@@ -364,10 +365,7 @@ pub(super) fn score_all(grid: &[Quartic], solve: impl Fn(&Quartic) -> Vec<f64>) 
                 continue;
             };
             tally.scored += 1;
-            let best = (0..got.len())
-                .filter(|&k| !used[k])
-                .min_by(|&a, &b| (got[a] - x).abs().total_cmp(&(got[b] - x).abs()));
-            match best {
+            match nearest_unused(&got, &used, x) {
                 Some(k) if (got[k] - x).abs() <= tol => {
                     used[k] = true;
                     tally.worst = tally.worst.max((got[k] - x).abs() / tol);

@@ -19,7 +19,7 @@
 //! root within rounding, or that duplicates a simple root already matched.
 
 mod cases;
-mod score;
+pub(super) mod score;
 
 use super::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
 use cases::{CASES, Case};

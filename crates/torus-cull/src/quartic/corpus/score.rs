@@ -63,7 +63,36 @@ fn backward_error(c: &[f64; 5], x: f64) -> f64 {
     if f == 0.0 { 0.0 } else { f / mag }
 }
 
+/// The index of the root of `got` nearest to `x` among those not `used` yet.
+pub(crate) fn nearest_unused(got: &[f64], used: &[bool], x: f64) -> Option<usize> {
+    (0..got.len())
+        .filter(|&k| !used[k])
+        .min_by(|&a, &b| (got[a] - x).abs().total_cmp(&(got[b] - x).abs()))
+}
+
 impl Score {
+    /// Counts the reference root `reference[i]` of case `name`: its `(x, tol, well)`, or
+    /// `None` for an ill-conditioned one, which is not scored.
+    fn count(
+        &mut self,
+        name: &'static str,
+        reference: &[(f64, u32, f64)],
+        i: usize,
+    ) -> Option<(f64, f64, bool)> {
+        self.roots += 1;
+        let Some(tol) = tolerance(reference, i) else {
+            self.ill += 1;
+            if self.ill_cases.last() != Some(&name) {
+                self.ill_cases.push(name);
+            }
+            return None;
+        };
+        let (x, _, kappa) = reference[i];
+        let well = kappa <= KAPPA_WELL;
+        self.well += usize::from(well);
+        Some((x, tol, well))
+    }
+
     /// Scores `got` (sorted) against the case's reference roots of the quartic `c`.
     pub(crate) fn all_roots(
         &mut self,
@@ -76,21 +105,10 @@ impl Score {
         // Well-separated roots matched: a second returned root there is a duplicate.
         let mut matched_simple = Vec::new();
         for (i, &root) in reference.iter().enumerate() {
-            self.roots += 1;
-            let Some(tol) = tolerance(reference, i) else {
-                self.ill += 1;
-                if self.ill_cases.last() != Some(&name) {
-                    self.ill_cases.push(name);
-                }
+            let Some((x, tol, well)) = self.count(name, reference, i) else {
                 continue;
             };
-            let x = root.0;
-            let well = root.2 <= KAPPA_WELL;
-            self.well += usize::from(well);
-            let best = (0..got.len())
-                .filter(|&k| !used[k])
-                .min_by(|&a, &b| (got[a] - x).abs().total_cmp(&(got[b] - x).abs()));
-            match best {
+            match nearest_unused(got, &used, x) {
                 Some(k) if (got[k] - x).abs() <= tol => {
                     used[k] = true;
                     if well {
@@ -131,17 +149,9 @@ impl Score {
         let [p, q, r] = pqr;
         let c = [1.0, 0.0, p, q, r];
         for (i, &root) in reference.iter().enumerate() {
-            self.roots += 1;
-            let Some(tol) = tolerance(reference, i) else {
-                self.ill += 1;
-                if self.ill_cases.last() != Some(&name) {
-                    self.ill_cases.push(name);
-                }
+            let Some((x, tol, well)) = self.count(name, reference, i) else {
                 continue;
             };
-            let x = root.0;
-            let well = root.2 <= KAPPA_WELL;
-            self.well += usize::from(well);
             // Half-way from the previous reference root: no other real root in [lo, x).
             let lo = if i == 0 {
                 f64::NEG_INFINITY
