@@ -323,9 +323,9 @@ pub fn plot_results(
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
     let what = results.meta.workload.clone();
     let mut charts = Charts::new(out_dir, stem, provenance(what, &results.meta), NU_AXIS)?;
-    rejection_charts(&results.rejection, &mut charts)?;
-    timing_charts(&results.timing, &mut charts)?;
-    bvh_charts(&results.bvh, &mut charts)?;
+    group_charts(&results.rejection, &mut charts, ("", ""), REJECTION_CHARTS)?;
+    group_charts(&results.timing, &mut charts, ("", ""), TIMING_CHARTS)?;
+    group_charts(&results.bvh, &mut charts, ("bvh-", "BVH "), BVH_CHARTS)?;
     ratio_charts(&results.ratio, &mut charts)?;
     // A file with only estimates (`time --device gpu`, a filtered bench) is drawn from
     // them; in a complete bench file they repeat the timing records and are not.
@@ -558,79 +558,49 @@ fn group_charts<R: Record>(
 }
 
 /// `run`'s counts: miss capture and rejection rate per case.
-fn rejection_charts(
-    records: &[RejectionRecord],
-    charts: &mut Charts<'_>,
-) -> Result<(), Box<dyn std::error::Error>> {
-    group_charts(
-        records,
-        charts,
-        ("", ""),
-        &[
-            (
-                "miss_capture",
-                "miss capture (rejected / misses)",
-                "miss capture",
-                |r| r.miss_capture.map(|v| (v, None)),
-            ),
-            (
-                "rejection_rate",
-                "rejection rate (rejected / rays)",
-                "rejection rate",
-                |r| Some((r.rejection_rate, None)),
-            ),
-        ],
-    )
-}
+const REJECTION_CHARTS: &[GroupChart<RejectionRecord>] = &[
+    (
+        "miss_capture",
+        "miss capture (rejected / misses)",
+        "miss capture",
+        |r| r.miss_capture.map(|v| (v, None)),
+    ),
+    (
+        "rejection_rate",
+        "rejection rate (rejected / rays)",
+        "rejection rate",
+        |r| Some((r.rejection_rate, None)),
+    ),
+];
 
 /// The benches' timings: ns per ray and speedup against no cull, per group.
-fn timing_charts(
-    records: &[TimingRecord],
-    charts: &mut Charts<'_>,
-) -> Result<(), Box<dyn std::error::Error>> {
-    group_charts(
-        records,
-        charts,
-        ("", ""),
-        &[
-            (
-                "total_ns",
-                "cull + exact intersection, ns per ray [CI]",
-                "total ns per ray",
-                |r| Some((r.total_ns, Some(r.total_ns_ci))),
-            ),
-            (
-                "speedup",
-                "speedup vs none",
-                "total_ns(none) / total_ns(cull)",
-                |r| Some((r.speedup_vs_none, None)),
-            ),
-        ],
-    )
-}
+const TIMING_CHARTS: &[GroupChart<TimingRecord>] = &[
+    (
+        "total_ns",
+        "cull + exact intersection, ns per ray [CI]",
+        "total ns per ray",
+        |r| Some((r.total_ns, Some(r.total_ns_ci))),
+    ),
+    (
+        "speedup",
+        "speedup vs none",
+        "total_ns(none) / total_ns(cull)",
+        |r| Some((r.speedup_vs_none, None)),
+    ),
+];
 
 /// The BVH scenes: throughput and quartic solves per ray, per scene and ray set.
-fn bvh_charts(
-    records: &[BvhRecord],
-    charts: &mut Charts<'_>,
-) -> Result<(), Box<dyn std::error::Error>> {
-    group_charts(
-        records,
-        charts,
-        ("bvh-", "BVH "),
-        &[
-            ("mrays", "million rays per second", "Mrays/s", |r| {
-                Some((r.mrays_per_s, None))
-            }),
-            (
-                "quartic_solves",
-                "quartic solves per ray",
-                "quartic solves per ray",
-                |r| Some((r.quartic_solves_per_ray, None)),
-            ),
-        ],
-    )
-}
+const BVH_CHARTS: &[GroupChart<BvhRecord>] = &[
+    ("mrays", "million rays per second", "Mrays/s", |r| {
+        Some((r.mrays_per_s, None))
+    }),
+    (
+        "quartic_solves",
+        "quartic solves per ray",
+        "quartic solves per ray",
+        |r| Some((r.quartic_solves_per_ray, None)),
+    ),
+];
 
 /// `torus-cull time`'s paired ratios: one chart per case × metric × reference, each ratio
 /// with its between-run interval where it has one (several runs), else its within-run one.
