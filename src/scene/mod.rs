@@ -51,6 +51,16 @@ impl TraceStats {
         self.quartic_solves += 1;
         true
     }
+
+    /// A closest-hit leaf: t of `ray`'s nearest hit on `torus` within `t_max`, or +∞ where
+    /// `cull` rejects the ray or there is none; counted as [`TraceStats::kept_by`].
+    #[inline]
+    fn leaf_t<C: Cull>(&mut self, cull: &C, torus: &Torus, ray: &Ray, t_max: f32) -> f32 {
+        if !self.kept_by(cull, torus, ray) {
+            return f32::INFINITY;
+        }
+        intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+    }
 }
 
 impl std::ops::AddAssign for TraceStats {
@@ -204,10 +214,7 @@ impl Scene {
     #[inline]
     pub fn trace<C: Cull>(&self, cull: &C, ray: &Ray, stats: &mut TraceStats) -> SceneHit {
         self.trace_with(ray, |torus, ray, t_max| {
-            if !stats.kept_by(cull, torus, ray) {
-                return f32::INFINITY;
-            }
-            intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+            stats.leaf_t(cull, torus, ray, t_max)
         })
     }
 
@@ -222,12 +229,8 @@ impl Scene {
     ) -> SceneHit {
         let literal = spawned.literal();
         traverse::closest(&self.bvh, &spawned.ray, |prim, t_max| {
-            let torus = &self.tori[prim];
             let ray = spawned.seen_by(prim, &literal);
-            if !stats.kept_by(cull, torus, ray) {
-                return f32::INFINITY;
-            }
-            intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+            stats.leaf_t(cull, &self.tori[prim], ray, t_max)
         })
     }
 

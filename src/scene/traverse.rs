@@ -172,16 +172,9 @@ pub fn any(bvh: &CwBvh, ray: &Ray, mut leaf: impl FnMut(usize) -> bool) -> bool 
 /// `[t_min, t_max]`: the candidates of the batched traversal.
 #[inline]
 pub fn each_leaf(bvh: &CwBvh, ray: &Ray, mut leaf: impl FnMut(usize)) {
-    let r = NodeRay::new(ray);
-    let mut state = bvh.new_traversal(r.dir);
-    let mut node;
-    obvhs::traverse!(
-        bvh,
-        node,
-        state,
-        node_hits(node, &r, r.t_max, state.oct_inv4),
-        {
-            leaf(bvh.primitive_indices[state.primitive_id as usize] as usize);
-        }
-    );
+    // An any-hit walk that nothing blocks: inlined, its never-taken exit folds away.
+    any(bvh, ray, |prim| {
+        leaf(prim);
+        false
+    });
 }
