@@ -53,7 +53,7 @@ mod tests_surface;
 
 pub use ellipse::nearest_on_ellipse;
 
-use super::{OracleClass, OracleLabel, Query};
+use super::{OracleClass, OracleLabel, Query, check_pose};
 use crate::oracle::interval::bisect;
 use glam::DVec3;
 use line::Line;
@@ -300,25 +300,8 @@ impl FamilyQuery {
 
     /// The torus and the line are valid.
     pub(super) fn check_line(&self) {
-        let FamilyQuery {
-            center,
-            axis,
-            major,
-            radial,
-            axial,
-            origin,
-            dir,
-            ..
-        } = *self;
-        assert!(center.is_finite() && origin.is_finite(), "non-finite point");
-        assert!(
-            axis.is_finite() && axis.length_squared() > 0.0,
-            "bad axis {axis}"
-        );
-        assert!(
-            dir.is_finite() && dir.length_squared() > 0.0,
-            "bad dir {dir}"
-        );
+        check_pose(self.center, self.axis, self.origin, self.dir);
+        let (major, radial, axial) = (self.major, self.radial, self.axial);
         for v in [major, radial, axial] {
             assert!(
                 v > 0.0 && v.is_finite(),

@@ -223,21 +223,8 @@ impl Query {
 
     /// The torus and the line are valid (the range is checked where it is used).
     pub(super) fn check_line(&self) {
-        let Query {
-            center,
-            axis,
-            major,
-            minor,
-            o,
-            d,
-            ..
-        } = *self;
-        assert!(center.is_finite() && o.is_finite(), "non-finite point");
-        assert!(
-            axis.is_finite() && axis.length_squared() > 0.0,
-            "bad axis {axis}"
-        );
-        assert!(d.is_finite() && d.length_squared() > 0.0, "bad dir {d}");
+        check_pose(self.center, self.axis, self.o, self.d);
+        let (major, minor) = (self.major, self.minor);
         assert!(
             minor > 0.0 && major > minor && major.is_finite(),
             "need R > r > 0, got R = {major}, r = {minor}"
@@ -260,4 +247,18 @@ pub fn classify(torus: &Torus, ray: &Ray) -> OracleLabel {
 /// Classify the ray's whole line, `t ∈ (−∞, +∞)` (line mode: the range is ignored).
 pub fn classify_line(torus: &Torus, ray: &Ray) -> OracleLabel {
     Query::line(torus, ray).classify()
+}
+
+/// Panics unless the centre and origin are finite and the axis and direction finite and
+/// nonzero: the pose and line checks every oracle query starts with.
+fn check_pose(center: DVec3, axis: DVec3, origin: DVec3, dir: DVec3) {
+    assert!(center.is_finite() && origin.is_finite(), "non-finite point");
+    assert!(
+        axis.is_finite() && axis.length_squared() > 0.0,
+        "bad axis {axis}"
+    );
+    assert!(
+        dir.is_finite() && dir.length_squared() > 0.0,
+        "bad dir {dir}"
+    );
 }
