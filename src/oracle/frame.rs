@@ -41,6 +41,20 @@ pub(super) struct LineFrame {
     pub(super) m2: f64,
 }
 
+/// s = s0 + t·len, the arc length of parameter t on a line whose origin is at s0 and whose
+/// direction has length len; an infinite t stays itself.
+pub(super) fn s_of_t(s0: f64, len: f64, t: f64) -> f64 {
+    if t.is_infinite() { t } else { s0 + t * len }
+}
+
+/// (ρ, y) of the point `p + s u`: its distance from the axis and its height along it,
+/// from the point itself.
+pub(super) fn meridian(p: DVec3, u: DVec3, axis: DVec3, s: f64) -> (f64, f64) {
+    let x = p + s * u;
+    let y = x.dot(axis);
+    ((x - y * axis).length(), y)
+}
+
 /// a·b − c·d to about one rounding of the result (Kahan's algorithm with a fused
 /// multiply-add), however much the two products cancel.
 fn diff_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
@@ -151,11 +165,7 @@ impl LineFrame {
     }
 
     pub(super) fn s_of_t(&self, t: f64) -> f64 {
-        if t.is_infinite() {
-            t
-        } else {
-            self.s0 + t * self.len
-        }
+        s_of_t(self.s0, self.len, t)
     }
 
     pub(super) fn t_of_s(&self, s: f64) -> f64 {
@@ -170,9 +180,7 @@ impl LineFrame {
     /// D(s), from the point itself (not from the ρ² formula), so that it is accurate to
     /// rounding wherever the point is.
     pub(super) fn dist(&self, s: f64) -> f64 {
-        let x = self.p + s * self.u;
-        let y = x.dot(self.axis);
-        let rho = (x - y * self.axis).length();
+        let (rho, y) = meridian(self.p, self.u, self.axis, s);
         (rho - self.major).hypot(y)
     }
 

@@ -2,7 +2,7 @@
 //! the monotone pieces of `½ dE²/ds` and its critical points.
 
 use super::FamilyQuery;
-use crate::oracle::frame::foot_point;
+use crate::oracle::frame::{foot_point, meridian, s_of_t};
 use crate::oracle::interval::bisect;
 use glam::DVec3;
 
@@ -92,27 +92,16 @@ impl Line {
     }
 
     pub(super) fn s_of_t(&self, t: f64) -> f64 {
-        if t.is_infinite() {
-            t
-        } else {
-            self.s0 + t * self.len
-        }
+        s_of_t(self.s0, self.len, t)
     }
 
     pub(super) fn t_of_s(&self, s: f64) -> f64 {
         (s - self.s0) / self.len
     }
 
-    /// (ρ, y) of the point at s, from the point itself.
-    fn meridian(&self, s: f64) -> (f64, f64) {
-        let x = self.p + s * self.u;
-        let y = x.dot(self.axis);
-        ((x - y * self.axis).length(), y)
-    }
-
     /// E(s) = √(((ρ − R)/a)² + (y/b)²).
     pub(super) fn e(&self, s: f64) -> f64 {
-        let (rho, y) = self.meridian(s);
+        let (rho, y) = meridian(self.p, self.u, self.axis, s);
         ((rho - self.major) / self.radial).hypot(y / self.axial)
     }
 
