@@ -306,23 +306,20 @@ pub fn render(c: &Coverage) -> String {
         "\ngoal: coverage >= {} ({judged}): {} -> {}\n",
         pct(COVERAGE_GOAL),
         pct(c.judged_coverage()),
-        if c.judged_coverage() >= COVERAGE_GOAL {
-            "met"
-        } else {
-            "NOT MET"
-        }
+        verdict(c.judged_coverage() >= COVERAGE_GOAL)
     );
     s += &format!(
         "goal: worst headline change <= {}: {} -> {}\n",
         pct(HEADLINE_CHANGE_GOAL),
         pct(c.worst_headline_change()),
-        if c.worst_headline_change() <= HEADLINE_CHANGE_GOAL {
-            "met"
-        } else {
-            "NOT MET"
-        }
+        verdict(c.worst_headline_change() <= HEADLINE_CHANGE_GOAL)
     );
     s
+}
+
+/// A goal's verdict as the report prints it.
+fn verdict(met: bool) -> &'static str {
+    if met { "met" } else { "NOT MET" }
 }
 
 #[cfg(test)]
