@@ -96,7 +96,7 @@ impl Pose {
     }
 }
 
-fn unit(rng: &mut Pcg64) -> DVec3 {
+pub(super) fn unit(rng: &mut Pcg64) -> DVec3 {
     crate::random::ball_direction(rng, 1e-4)
 }
 
@@ -385,20 +385,27 @@ fn random_line(
     } else {
         rng.random_range(0.0..3.0 * outer)
     };
-    let scale = 10f64.powf(rng.random_range(-1.0..1.0));
+    let (scale, t0, t1) = random_reach(rng, back, outer);
     let o = pose.point(point - back * dir);
     let d = pose.dir(dir) * scale;
+    (o, d, t0, t1, name)
+}
+
+/// For a random line whose point of interest is `back` from its origin: the direction's
+/// scale, and the range (the whole line, the ray, or a window of a few `size` at the point).
+pub(super) fn random_reach(rng: &mut Pcg64, back: f64, size: f64) -> (f64, f64, f64) {
+    let scale = 10f64.powf(rng.random_range(-1.0..1.0));
     let t_near = back / scale;
     let (t0, t1) = match rng.random_range(0..4) {
         0 | 1 => (-INF, INF),
         2 => (0.0, INF),
         _ => {
-            let a = t_near + rng.random_range(-2.0..2.0) * outer / scale;
-            let b = a + rng.random_range(0.0..3.0) * outer / scale;
+            let a = t_near + rng.random_range(-2.0..2.0) * size / scale;
+            let b = a + rng.random_range(0.0..3.0) * size / scale;
             (a, b)
         }
     };
-    (o, d, t0, t1, name)
+    (scale, t0, t1)
 }
 
 #[test]

@@ -3,6 +3,8 @@
 
 use super::line::Line;
 use super::*;
+use crate::oracle::tests::random_reach;
+pub(super) use crate::oracle::tests::unit;
 use crate::oracle::{AMBIGUITY_REL, reference_roots};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -117,10 +119,6 @@ impl Pose {
         let n = er * (theta.cos() / self.ra) + DVec3::Y * (theta.sin() / self.ax);
         (er * rho + DVec3::Y * y, n.normalize())
     }
-}
-
-pub(super) fn unit(rng: &mut Pcg64) -> DVec3 {
-    crate::random::ball_direction(rng, 1e-4)
 }
 
 /// Asserts the crossings' passages and their t (each within `tol`).
@@ -515,20 +513,8 @@ fn random_line(rng: &mut Pcg64, p: &Pose, kind: usize) -> (DVec3, DVec3, f64, f6
     } else {
         rng.random_range(0.0..3.0 * size)
     };
-    let scale = 10f64.powf(rng.random_range(-1.0..1.0));
-    let o = point - back * dir;
-    let d = dir * scale;
-    let t_near = back / scale;
-    let (t0, t1) = match rng.random_range(0..4) {
-        0 | 1 => (-INF, INF),
-        2 => (0.0, INF),
-        _ => {
-            let a = t_near + rng.random_range(-2.0..2.0) * size / scale;
-            let b = a + rng.random_range(0.0..3.0) * size / scale;
-            (a, b)
-        }
-    };
-    (o, d, t0, t1, name)
+    let (scale, t0, t1) = random_reach(rng, back, size);
+    (point - back * dir, dir * scale, t0, t1, name)
 }
 
 #[test]

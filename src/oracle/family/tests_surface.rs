@@ -182,13 +182,7 @@ fn rounded_surface_points_give_the_exact_points_answer() {
             for _ in 0..120 {
                 let p = Pose::random(&mut rng, shape, k);
                 let size = p.size();
-                let theta = loop {
-                    let th: f64 = rng.random_range(0.0..TAU);
-                    if p.big + p.ra * th.cos() > 0.05 * p.ra {
-                        break th;
-                    }
-                };
-                let (surf, n) = p.surface(rng.random_range(0.0..TAU), theta);
+                let (surf, n) = surface_point(&mut rng, &p);
                 let d = loop {
                     let d = unit(&mut rng);
                     if d.dot(n).abs() >= 0.05 {
@@ -249,13 +243,7 @@ fn near_tangent_rays_from_the_surface_stay_consistent() {
             for _ in 0..60 {
                 let p = Pose::random(&mut rng, shape, k);
                 let size = p.size();
-                let theta = loop {
-                    let th: f64 = rng.random_range(0.0..TAU);
-                    if p.big + p.ra * th.cos() > 0.05 * p.ra {
-                        break th;
-                    }
-                };
-                let (surf, n) = p.surface(rng.random_range(0.0..TAU), theta);
+                let (surf, n) = surface_point(&mut rng, &p);
                 let (t1, t2) = n.any_orthonormal_pair();
                 let psi = rng.random_range(0.0..TAU);
                 let tilt = [1e-3, -1e-3, 1e-6, -1e-6, 1e-9, -1e-9, 0.0][rng.random_range(0..7)];
@@ -287,4 +275,16 @@ fn near_tangent_rays_from_the_surface_stay_consistent() {
         }
     }
     assert!(decided > 500, "{decided}");
+}
+
+/// A random surface point of `p` and its outward normal, off the axis by more than 5 % of
+/// a (ρ = R + a cos θ > 0.05 a: a spindle's tips, where the normal turns, are left out).
+fn surface_point(rng: &mut Pcg64, p: &Pose) -> (DVec3, DVec3) {
+    let theta = loop {
+        let th: f64 = rng.random_range(0.0..TAU);
+        if p.big + p.ra * th.cos() > 0.05 * p.ra {
+            break th;
+        }
+    };
+    p.surface(rng.random_range(0.0..TAU), theta)
 }
