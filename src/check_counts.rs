@@ -4,6 +4,17 @@
 
 use crate::oracle::OracleClass;
 use serde::{Deserialize, Serialize};
+use std::fmt::Write as _;
+use torus_cull::{CullKind, Named};
+
+/// `into.field += from.field` for each named count: the sum of two tallies of the same
+/// thing drawn on other rays.
+macro_rules! add_counts {
+    ($into:expr, $from:expr; $($field:ident),+ $(,)?) => {
+        $($into.$field += $from.$field;)+
+    };
+}
+pub(crate) use add_counts;
 
 /// Per ray kind: rays, oracle hits, misses and ambiguous rows.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
@@ -43,10 +54,7 @@ impl KindRecord {
 
     /// Adds `other`'s counts (the same kind, drawn elsewhere).
     pub fn add(&mut self, other: &KindRecord) {
-        self.rays += other.rays;
-        self.hits += other.hits;
-        self.misses += other.misses;
-        self.ambiguous += other.ambiguous;
+        add_counts!(self, other; rays, hits, misses, ambiguous);
     }
 }
 
@@ -79,10 +87,7 @@ impl CullCounts {
 
     /// Adds `other`'s counts (the same cull on other rays).
     pub fn add(&mut self, other: &CullCounts) {
-        self.rejected += other.rejected;
-        self.false_rejects += other.false_rejects;
-        self.far_misses += other.far_misses;
-        self.far_misses_rejected += other.far_misses_rejected;
+        add_counts!(self, other; rejected, false_rejects, far_misses, far_misses_rejected);
     }
 
     /// rejected / `rays`.
@@ -95,5 +100,37 @@ impl CullCounts {
     #[must_use]
     pub fn capture(&self) -> Option<f64> {
         (self.far_misses > 0).then(|| self.far_misses_rejected as f64 / self.far_misses as f64)
+    }
+}
+
+/// A cull's console cell: its rejection rate and its capture in percent, each followed by
+/// `unit` (`-` for a capture without far misses).
+#[must_use]
+pub fn rate_and_capture(rejection_rate: f64, capture: Option<f64>, unit: &str) -> String {
+    let capture = capture.map_or("-".into(), |v| format!("{:.0}", 100.0 * v));
+    format!("{:.0}{unit}/{capture}{unit}", 100.0 * rejection_rate)
+}
+
+/// The per-cull part of a check's console table: a header (`first`, then each timed
+/// cull's name cut to `cell` characters) and a row per class (its label and its cells),
+/// the first column `width` wide, each cell right-aligned in `cell`.
+pub fn cull_columns(
+    out: &mut String,
+    (first, width): (&str, usize),
+    cell: usize,
+    rows: impl IntoIterator<Item = (String, Vec<String>)>,
+) {
+    let _ = write!(out, "{first:<width$}");
+    for c in CullKind::TIMED {
+        let name = c.name();
+        let _ = write!(out, " {:>cell$}", name.get(..cell).unwrap_or(name));
+    }
+    let _ = writeln!(out);
+    for (label, cells) in rows {
+        let _ = write!(out, "{label:<width$}");
+        for c in cells {
+            let _ = write!(out, " {c:>cell$}");
+        }
+        let _ = writeln!(out);
     }
 }

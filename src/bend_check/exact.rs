@@ -11,6 +11,7 @@
 //! against the oracle's on-surface rule's first crossing.
 
 use super::rays::Spec;
+use crate::check_counts::add_counts;
 use crate::oracle::bend::{BendQuery, Face, Passage as OraclePassage};
 use crate::oracle::{OracleClass, OracleLabel};
 use torus_cull::bend::{BendFace, PipeBend};
@@ -84,18 +85,9 @@ impl Tally {
 
     /// Adds `o`'s counts (the larger t error).
     pub fn add(&mut self, o: &Tally) {
-        self.rays += o.rays;
-        self.hits += o.hits;
-        self.misses += o.misses;
-        self.ambiguous += o.ambiguous;
-        self.missed += o.missed;
-        self.invented += o.invented;
-        self.wrong_face += o.wrong_face;
-        self.wrong_value += o.wrong_value;
-        self.all_missed += o.all_missed;
-        self.all_invented += o.all_invented;
-        self.all_wrong_face += o.all_wrong_face;
-        self.all_wrong_value += o.all_wrong_value;
+        add_counts!(self, o;
+            rays, hits, misses, ambiguous, missed, invented, wrong_face, wrong_value,
+            all_missed, all_invented, all_wrong_face, all_wrong_value);
         self.max_t_error_rel = self.max_t_error_rel.max(o.max_t_error_rel);
     }
 }

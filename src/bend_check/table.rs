@@ -1,8 +1,9 @@
 //! `torus-cull bend`'s console table.
 
 use super::{CAPTURE_ETAS, ClassRecord};
+use crate::check_counts::{cull_columns, rate_and_capture};
 use std::fmt::Write as _;
-use torus_cull::{CullKind, Named};
+use torus_cull::CullKind;
 
 /// One line per class (rays, ambiguous labels, false rejects, the exact intersection's
 /// missed/invented/wrong-face/wrong-value answers of `intersect` and `intersect_all`, the
@@ -52,29 +53,12 @@ pub fn table(records: &[ClassRecord]) -> String {
         out,
         "\nrejection rate / capture of misses > {CAPTURE_ETAS}·η, per cull: alone | behind the wedge"
     );
-    let _ = write!(out, "{:<26}", "class");
-    for c in CullKind::TIMED {
-        let _ = write!(out, " {:>19}", truncate(c.name(), 19));
-    }
-    let _ = writeln!(out);
-    for r in records {
-        let _ = write!(out, "{:<26}", r.label());
-        let n = CullKind::TIMED.len();
-        for j in 0..n {
-            let cell = |c: &super::CullRecord| {
-                let capture = c
-                    .capture
-                    .map_or("-".into(), |v| format!("{:.0}", 100.0 * v));
-                format!("{:.0}/{capture}", 100.0 * c.rejection_rate)
-            };
-            let both = format!("{}|{}", cell(&r.culls[j]), cell(&r.culls[n + j]));
-            let _ = write!(out, " {both:>19}");
-        }
-        let _ = writeln!(out);
-    }
+    let n = CullKind::TIMED.len();
+    let cell = |c: &super::CullRecord| rate_and_capture(c.rejection_rate, c.capture, "");
+    let rows = records.iter().map(|r| {
+        let cells = (0..n).map(|j| format!("{}|{}", cell(&r.culls[j]), cell(&r.culls[n + j])));
+        (r.label(), cells.collect())
+    });
+    cull_columns(&mut out, ("class", 26), 19, rows);
     out
-}
-
-fn truncate(s: &str, n: usize) -> &str {
-    s.get(..n).unwrap_or(s)
 }

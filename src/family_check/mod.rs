@@ -31,8 +31,8 @@
 
 pub mod rays;
 
-use crate::check_counts::CullCounts;
 pub use crate::check_counts::KindRecord;
+use crate::check_counts::{CullCounts, cull_columns, rate_and_capture};
 use crate::family_label;
 use crate::oracle::OracleClass;
 use glam::DVec3;
@@ -329,29 +329,13 @@ pub fn table(records: &[MemberRecord]) -> String {
         out,
         "\nrejection rate / capture of misses > {CAPTURE_ETAS}·η, per cull ('-': declined)"
     );
-    let _ = write!(out, "{:<24}", "member");
-    for c in CullKind::TIMED {
-        let _ = write!(out, " {:>13}", truncate(c.name(), 13));
-    }
-    let _ = writeln!(out);
-    for r in records {
-        let _ = write!(out, "{:<24}", r.label());
-        for c in &r.culls {
-            let cell = if c.accepts {
-                let capture = c
-                    .capture
-                    .map_or("-".into(), |v| format!("{:.0}", 100.0 * v));
-                format!("{:.0}%/{capture}%", 100.0 * c.rejection_rate)
-            } else {
-                "-".into()
-            };
-            let _ = write!(out, " {cell:>13}");
-        }
-        let _ = writeln!(out);
-    }
+    let rows = records.iter().map(|r| {
+        let cell = |c: &CullRecord| match c.accepts {
+            true => rate_and_capture(c.rejection_rate, c.capture, "%"),
+            false => "-".into(),
+        };
+        (r.label(), r.culls.iter().map(cell).collect())
+    });
+    cull_columns(&mut out, ("member", 24), 13, rows);
     out
-}
-
-fn truncate(s: &str, n: usize) -> &str {
-    s.get(..n).unwrap_or(s)
 }
