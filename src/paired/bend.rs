@@ -21,7 +21,7 @@ pub const BENDS: [(f64, f64); 6] = [
     (FRAC_PI_2, 0.9),
 ];
 
-/// The bends of [`BENDS`], as [`shape_records`] times them.
+/// The bends of [`BENDS`], as [`super::shapes::shape_records`] times them.
 ///
 /// # Errors
 ///

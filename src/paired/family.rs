@@ -28,7 +28,7 @@ pub const MEMBERS: [(f64, f64, f64); 8] = [
     (0.75, 1.0, 2.0),
 ];
 
-/// The members of [`MEMBERS`], as [`shape_records`] times them.
+/// The members of [`MEMBERS`], as [`super::shapes::shape_records`] times them.
 ///
 /// # Errors
 ///
