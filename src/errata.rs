@@ -7,36 +7,21 @@
 
 use glam::Vec3;
 use pulp::Scalar;
-use torus_cull::Named;
 use torus_cull::cull::{Cull, CullBounds, CullVisitor};
 use torus_cull::internals::{LaneBounds, Real, SectionFormulas, Vec3s, foot_point, skala_keeps};
 
-/// The paper-as-printed culls by stable name, as [`torus_cull::cull::CullKind`] names the real ones.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum PrintedCull {
-    /// Cychosz with the paper's Eq. 35 misprint ([`CychoszPrintedCull`]).
-    CychoszPrinted,
-    /// Skala with the printed Eq. 105, h_c² = r² − (a − r)² ([`SkalaPrintedCCull`]).
-    SkalaPrintedC,
-    /// Skala with the printed Eq. 102–103 x_B ([`SkalaEq102Cull`]).
-    SkalaEq102,
-}
-
-/// Every printed variant by the stable name used in results and the CLI.
-impl Named for PrintedCull {
-    const KIND: &'static str = "printed cull";
-    const ALL: &'static [PrintedCull] = &[
-        PrintedCull::CychoszPrinted,
-        PrintedCull::SkalaPrintedC,
-        PrintedCull::SkalaEq102,
-    ];
-
-    fn name(self) -> &'static str {
-        match self {
-            PrintedCull::CychoszPrinted => "cychosz_printed",
-            PrintedCull::SkalaPrintedC => "skala_printed_c",
-            PrintedCull::SkalaEq102 => "skala_eq102",
-        }
+crate::named::named_enum! {
+    /// The paper-as-printed culls by stable name, as [`torus_cull::cull::CullKind`] names the
+    /// real ones: [`Named::ALL`](torus_cull::Named::ALL) lists every printed variant by the stable name used in
+    /// results and the CLI.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+    pub enum PrintedCull: "printed cull" {
+        /// Cychosz with the paper's Eq. 35 misprint ([`CychoszPrintedCull`]).
+        CychoszPrinted = "cychosz_printed",
+        /// Skala with the printed Eq. 105, h_c² = r² − (a − r)² ([`SkalaPrintedCCull`]).
+        SkalaPrintedC = "skala_printed_c",
+        /// Skala with the printed Eq. 102–103 x_B ([`SkalaEq102Cull`]).
+        SkalaEq102 = "skala_eq102",
     }
 }
 

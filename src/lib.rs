@@ -27,6 +27,7 @@ pub mod f32_check;
 pub mod family_check;
 pub mod family_label;
 pub mod measure;
+pub mod named;
 pub mod number;
 pub mod oracle;
 pub mod output;

@@ -32,43 +32,23 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use torus_cull::{Named, Ray, Torus};
+use torus_cull::{Ray, Torus};
 
-/// A workload case.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Case {
-    /// Lines that fall through the hole (all misses).
-    Hole,
-    /// Lines in planes at distance [R, R + r) from the axis (Skala's case c).
-    OuterBand,
-    /// Lines tangent to the surface, pushed off it by ±1e-2, ±1e-4, ±1e-6 of r.
-    Grazing,
-    /// Isotropic lines through the bounding sphere.
-    Uniform,
-    /// Primary rays of a pinhole camera framing the torus.
-    Camera,
-}
-
-/// Every case by its stable name, in table order.
-impl Named for Case {
-    const KIND: &'static str = "case";
-    const ALL: &'static [Case] = &[
-        Case::Hole,
-        Case::OuterBand,
-        Case::Grazing,
-        Case::Uniform,
-        Case::Camera,
-    ];
-
-    fn name(self) -> &'static str {
-        match self {
-            Case::Hole => "hole",
-            Case::OuterBand => "outer_band",
-            Case::Grazing => "grazing",
-            Case::Uniform => "uniform",
-            Case::Camera => "camera",
-        }
+crate::named::named_enum! {
+    /// A workload case; [`Named::ALL`](torus_cull::Named::ALL) lists every case by its stable name, in table order.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+    #[serde(rename_all = "snake_case")]
+    pub enum Case: "case" {
+        /// Lines that fall through the hole (all misses).
+        Hole = "hole",
+        /// Lines in planes at distance [R, R + r) from the axis (Skala's case c).
+        OuterBand = "outer_band",
+        /// Lines tangent to the surface, pushed off it by ±1e-2, ±1e-4, ±1e-6 of r.
+        Grazing = "grazing",
+        /// Isotropic lines through the bounding sphere.
+        Uniform = "uniform",
+        /// Primary rays of a pinhole camera framing the torus.
+        Camera = "camera",
     }
 }
 
