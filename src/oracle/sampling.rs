@@ -42,33 +42,47 @@ pub fn margin_by_sampling(query: &Query) -> f64 {
     // Local minima of D along a line are about r apart at least; r/32 resolves them.
     let chord = (hi - lo) * dd.sqrt();
     let n = ((chord / (minor / 32.0)).ceil() as usize).clamp(2000, 400_000);
+    // 0.618^120 ≈ 1e-25: golden-section steps far past f64 resolution of any bracket.
+    min_by_samples(&dist, lo, hi, n, 120) - minor
+}
+
+/// The least value of `f` over `[lo, hi]` from `n + 1` evenly spaced samples, refined by
+/// [`golden_min`] (`iterations` at most) between the neighbours of every discrete local
+/// minimum: both oracles' second method (the ring's D, the family's E).
+pub(super) fn min_by_samples(
+    f: &dyn Fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    n: usize,
+    iterations: usize,
+) -> f64 {
     let ts: Vec<f64> = (0..=n)
         .map(|i| lo + (hi - lo) * (i as f64 / n as f64))
         .collect();
-    let ds: Vec<f64> = ts.iter().map(|&t| dist(t)).collect();
-    let mut best = ds.iter().copied().fold(f64::INFINITY, f64::min);
+    let fs: Vec<f64> = ts.iter().map(|&t| f(t)).collect();
+    let mut best = fs.iter().copied().fold(f64::INFINITY, f64::min);
     for i in 0..=n {
-        let left = if i > 0 { ds[i - 1] } else { f64::INFINITY };
-        let right = if i < n { ds[i + 1] } else { f64::INFINITY };
-        if ds[i] <= left && ds[i] <= right {
+        let left = if i > 0 { fs[i - 1] } else { f64::INFINITY };
+        let right = if i < n { fs[i + 1] } else { f64::INFINITY };
+        if fs[i] <= left && fs[i] <= right {
             let a = ts[i.saturating_sub(1)];
             let b = ts[(i + 1).min(n)];
-            best = best.min(golden_min(&dist, a, b));
+            best = best.min(golden_min(f, a, b, iterations));
         }
     }
-    best - minor
+    best
 }
 
-/// The least value of `f` found by golden-section search on [a, b] (unimodal assumed;
-/// otherwise still an upper bound on the minimum, since every value is a real sample).
-fn golden_min(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+/// The least value of `f` found by golden-section search on [a, b], `iterations` steps at
+/// most (unimodal assumed; otherwise still an upper bound on the minimum, since every value
+/// is a real sample).
+fn golden_min(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64, iterations: usize) -> f64 {
     let g = 0.5 * (5f64.sqrt() - 1.0);
     let mut best = f(a).min(f(b));
     let mut x1 = b - g * (b - a);
     let mut x2 = a + g * (b - a);
     let (mut f1, mut f2) = (f(x1), f(x2));
-    // 0.618^120 ≈ 1e-25: far past f64 resolution of any bracket.
-    for _ in 0..120 {
+    for _ in 0..iterations {
         best = best.min(f1).min(f2);
         if f1 <= f2 {
             b = x2;

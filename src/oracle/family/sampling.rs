@@ -2,6 +2,7 @@
 //! coordinates and golden-section refinement. Slow; the tests compare the oracle with it.
 
 use super::FamilyQuery;
+use crate::oracle::sampling::min_by_samples;
 
 impl FamilyQuery {
     /// The margin by the second method: samples of `(E − 1)·min(a, b)` straight from the
@@ -34,50 +35,6 @@ impl FamilyQuery {
         let chord = (hi - lo) * dd.sqrt();
         let step = self.radial.min(self.axial) / 32.0;
         let n = ((chord / step).ceil() as usize).clamp(2000, 400_000);
-        let ts: Vec<f64> = (0..=n)
-            .map(|i| lo + (hi - lo) * (i as f64 / n as f64))
-            .collect();
-        let gs: Vec<f64> = ts.iter().map(|&t| g(t)).collect();
-        let mut best = gs.iter().copied().fold(f64::INFINITY, f64::min);
-        for i in 0..=n {
-            let left = if i > 0 { gs[i - 1] } else { f64::INFINITY };
-            let right = if i < n { gs[i + 1] } else { f64::INFINITY };
-            if gs[i] <= left && gs[i] <= right {
-                let a = ts[i.saturating_sub(1)];
-                let b = ts[(i + 1).min(n)];
-                best = best.min(golden_min(&g, a, b));
-            }
-        }
-        best
+        min_by_samples(&g, lo, hi, n, 160)
     }
-}
-
-/// The least value of `f` found by golden-section search on [a, b] (every value a real
-/// sample, so an upper bound on the minimum even where f is not unimodal).
-fn golden_min(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let k = 0.5 * (5f64.sqrt() - 1.0);
-    let mut best = f(a).min(f(b));
-    let mut x1 = b - k * (b - a);
-    let mut x2 = a + k * (b - a);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..160 {
-        best = best.min(f1).min(f2);
-        if f1 <= f2 {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - k * (b - a);
-            f1 = f(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + k * (b - a);
-            f2 = f(x2);
-        }
-        if !(a < x1 && x1 <= x2 && x2 < b) {
-            break;
-        }
-    }
-    best.min(f1).min(f2)
 }
