@@ -32,13 +32,7 @@ impl Pose {
         }
     }
     fn random(rng: &mut Pcg64, big: f64, small: f64) -> Pose {
-        let a = unit(rng);
-        let (x, z) = a.any_orthonormal_pair();
-        let c = DVec3::new(
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-        ) * big;
+        let (c, a, x, z) = random_frame(rng, big);
         Pose {
             c,
             a,
@@ -98,6 +92,19 @@ impl Pose {
 
 pub(super) fn unit(rng: &mut Pcg64) -> DVec3 {
     crate::random::ball_direction(rng, 1e-4)
+}
+
+/// A random pose's frame: a centre within ±5 `scale` on each axis, a unit axis, and two
+/// unit vectors completing the frame: (c, a, x, z).
+pub(super) fn random_frame(rng: &mut Pcg64, scale: f64) -> (DVec3, DVec3, DVec3, DVec3) {
+    let a = unit(rng);
+    let (x, z) = a.any_orthonormal_pair();
+    let c = DVec3::new(
+        rng.random_range(-5.0..5.0),
+        rng.random_range(-5.0..5.0),
+        rng.random_range(-5.0..5.0),
+    ) * scale;
+    (c, a, x, z)
 }
 
 fn close(a: f64, b: f64, tol: f64) -> bool {
@@ -329,14 +336,8 @@ fn random_line(
     let outer = big + small;
     let tau = std::f64::consts::TAU;
     let (name, point, dir) = match kind {
-        0 => {
-            // Isotropic through the bounding sphere (a little beyond it).
-            let u = unit(rng);
-            let (e1, e2) = u.any_orthonormal_pair();
-            let rad = 1.05 * outer * rng.random::<f64>().sqrt();
-            let ang = rng.random_range(0.0..tau);
-            ("uniform", rad * (ang.cos() * e1 + ang.sin() * e2), u)
-        }
+        // Isotropic through the bounding sphere (a little beyond it).
+        0 => uniform_kind(rng, outer),
         1 => {
             // Through the hole disk, any direction.
             let rad = (big - small) * rng.random::<f64>().sqrt();
@@ -348,44 +349,18 @@ fn random_line(
             let (surf, n) = pose.surface(rng.random_range(0.0..tau), rng.random_range(0.0..tau));
             let t = n.any_orthonormal_pair();
             let psi = rng.random_range(0.0..tau);
-            // ±1e-8 sits just outside the band, ±1e-11 inside it.
-            let pushes = [
-                1e-2, -1e-2, 1e-4, -1e-4, 1e-6, -1e-6, 1e-8, -1e-8, 1e-11, -1e-11,
-            ];
-            let delta = pushes[rng.random_range(0..pushes.len())];
+            let delta = GRAZING_PUSHES[rng.random_range(0..GRAZING_PUSHES.len())];
             let dir = psi.cos() * t.0 + psi.sin() * t.1;
             ("grazing", surf + delta * small * n, dir)
         }
-        3 => {
-            // Through a point of the axis: D has a kink there.
-            let pt = DVec3::new(0.0, rng.random_range(-2.0..2.0) * small, 0.0);
-            ("axis", pt, unit(rng))
-        }
-        4 => {
-            // Parallel to the axis: ρ is constant.
-            let rad = rng.random_range(0.0..outer + small);
-            let ang = rng.random_range(0.0..tau);
-            let pt = DVec3::new(
-                rad * ang.cos(),
-                rng.random_range(-3.0..3.0),
-                rad * ang.sin(),
-            );
-            let s = if rng.random::<bool>() { 1.0 } else { -1.0 };
-            ("parallel", pt, DVec3::Y * s)
-        }
-        _ => {
-            // From 100·R away, aimed into the bounding sphere.
-            let from = 100.0 * big * unit(rng);
-            let to = unit(rng) * outer * rng.random::<f64>().cbrt();
-            ("far", to, (to - from).normalize())
-        }
+        // Through a point of the axis: D has a kink there.
+        3 => axis_kind(rng, small),
+        // Parallel to the axis: ρ is constant.
+        4 => parallel_kind(rng, outer + small, 1.0),
+        // From 100·R away, aimed into the bounding sphere.
+        _ => far_kind(rng, 100.0 * big, outer),
     };
-    let back = if name == "far" {
-        100.0 * big
-    } else {
-        rng.random_range(0.0..3.0 * outer)
-    };
-    let (scale, t0, t1) = random_reach(rng, back, outer);
+    let (back, scale, t0, t1) = random_back_and_reach(rng, name, 100.0 * big, outer);
     let o = pose.point(point - back * dir);
     let d = pose.dir(dir) * scale;
     (o, d, t0, t1, name)
@@ -406,6 +381,66 @@ pub(super) fn random_reach(rng: &mut Pcg64, back: f64, size: f64) -> (f64, f64, 
         }
     };
     (scale, t0, t1)
+}
+
+/// The grazing kind's pushes off the surface, in units of the tube's (least) radius: ±1e-8
+/// sits just outside the oracle's band, ±1e-11 inside it.
+pub(super) const GRAZING_PUSHES: [f64; 10] = [
+    1e-2, -1e-2, 1e-4, -1e-4, 1e-6, -1e-6, 1e-8, -1e-8, 1e-11, -1e-11,
+];
+
+/// The `uniform` kind: an isotropic line through the sphere of radius `1.05·size`.
+pub(super) fn uniform_kind(rng: &mut Pcg64, size: f64) -> (&'static str, DVec3, DVec3) {
+    let u = unit(rng);
+    let (e1, e2) = u.any_orthonormal_pair();
+    let rad = 1.05 * size * rng.random::<f64>().sqrt();
+    let ang = rng.random_range(0.0..std::f64::consts::TAU);
+    ("uniform", rad * (ang.cos() * e1 + ang.sin() * e2), u)
+}
+
+/// The `axis` kind: any direction through a point of the axis within ±2 `y_scale`.
+pub(super) fn axis_kind(rng: &mut Pcg64, y_scale: f64) -> (&'static str, DVec3, DVec3) {
+    let pt = DVec3::new(0.0, rng.random_range(-2.0..2.0) * y_scale, 0.0);
+    ("axis", pt, unit(rng))
+}
+
+/// The `parallel` kind: a line parallel to the axis, at a distance below `rad_max` from it
+/// and a height within ±3 `y_scale`.
+pub(super) fn parallel_kind(
+    rng: &mut Pcg64,
+    rad_max: f64,
+    y_scale: f64,
+) -> (&'static str, DVec3, DVec3) {
+    let rad = rng.random_range(0.0..rad_max);
+    let ang = rng.random_range(0.0..std::f64::consts::TAU);
+    let y = rng.random_range(-3.0..3.0) * y_scale;
+    let pt = DVec3::new(rad * ang.cos(), y, rad * ang.sin());
+    let s = if rng.random::<bool>() { 1.0 } else { -1.0 };
+    ("parallel", pt, DVec3::Y * s)
+}
+
+/// The `far` kind: from `far` away, aimed into the ball of radius `size`.
+pub(super) fn far_kind(rng: &mut Pcg64, far: f64, size: f64) -> (&'static str, DVec3, DVec3) {
+    let from = far * unit(rng);
+    let to = unit(rng) * size * rng.random::<f64>().cbrt();
+    ("far", to, (to - from).normalize())
+}
+
+/// How far back from its point a line of kind `name` starts (`far` for the `far` kind, else
+/// up to 3 `size`), with [`random_reach`]'s scale and range: (back, scale, t0, t1).
+pub(super) fn random_back_and_reach(
+    rng: &mut Pcg64,
+    name: &str,
+    far: f64,
+    size: f64,
+) -> (f64, f64, f64, f64) {
+    let back = if name == "far" {
+        far
+    } else {
+        rng.random_range(0.0..3.0 * size)
+    };
+    let (scale, t0, t1) = random_reach(rng, back, size);
+    (back, scale, t0, t1)
 }
 
 #[test]

@@ -3,8 +3,11 @@
 
 use super::line::Line;
 use super::*;
-use crate::oracle::tests::random_reach;
 pub(super) use crate::oracle::tests::unit;
+use crate::oracle::tests::{
+    GRAZING_PUSHES, axis_kind, far_kind, parallel_kind, random_back_and_reach, random_frame,
+    uniform_kind,
+};
 use crate::oracle::{AMBIGUITY_REL, reference_roots};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -25,6 +28,27 @@ pub(super) const SHAPES: [(f64, f64, f64); 9] = [
 ];
 
 pub(super) const SCALES: [f64; 3] = [1e-3, 1.0, 1e3];
+
+/// Every shape at every scale, shape by shape.
+pub(super) fn shapes_and_scales() -> impl Iterator<Item = ((f64, f64, f64), f64)> {
+    SHAPES
+        .into_iter()
+        .flat_map(|shape| SCALES.map(|k| (shape, k)))
+}
+
+/// Every shape at every scale k, canonically posed and then randomly posed (the random
+/// poses drawn from `seed`, one after the other): (pose, k, posed).
+pub(super) fn poses_both_ways(seed: u64) -> impl Iterator<Item = (Pose, f64, bool)> {
+    let mut rng = Pcg64::seed_from_u64(seed);
+    shapes_and_scales()
+        .flat_map(|(shape, k)| [false, true].map(|posed| (shape, k, posed)))
+        .map(move |(shape, k, posed)| (Pose::posed_or_not(posed, &mut rng, shape, k), k, posed))
+}
+
+/// Every shape at every scale k, canonically posed: (pose, k).
+pub(super) fn canonical_poses() -> impl Iterator<Item = (Pose, f64)> {
+    shapes_and_scales().map(|(shape, k)| (Pose::canonical(shape, k), k))
+}
 
 /// A shape scaled by k, with a pose: centre, unit axis and two unit vectors completing
 /// the frame.
@@ -60,13 +84,7 @@ impl Pose {
         }
     }
     pub(super) fn random(rng: &mut Pcg64, shape: (f64, f64, f64), k: f64) -> Pose {
-        let a = unit(rng);
-        let (x, z) = a.any_orthonormal_pair();
-        let c = DVec3::new(
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-        ) * k;
+        let (c, a, x, z) = random_frame(rng, k);
         Pose {
             c,
             a,
@@ -135,96 +153,84 @@ use Passage::{Entering as In, Leaving as Out, Touching as Touch};
 
 #[test]
 fn rays_along_the_axis() {
-    let mut rng = Pcg64::seed_from_u64(1);
-    for shape in SHAPES {
-        for k in SCALES {
-            for posed in [false, true] {
-                let p = Pose::posed_or_not(posed, &mut rng, shape, k);
-                let q = p.q(DVec3::new(0.0, 10.0 * k, 0.0), DVec3::NEG_Y);
-                let ctx = format!("{p:?}");
-                let l = q.classify();
-                // On the axis ρ = 0: E = √((R/a)² + (y/b)²), least R/a at y = 0.
-                let want = (p.big / p.ra - 1.0) * p.min_ab();
-                let tol = 1e-14 * p.size();
-                assert!((l.margin - want).abs() <= tol, "{ctx} {l:?}");
-                let class = if p.is_ring() {
-                    OracleClass::Miss
-                } else if p.is_horn() {
-                    OracleClass::Ambiguous
-                } else {
-                    OracleClass::Hit
-                };
-                assert_eq!(l.class, class, "{ctx}");
-                assert!(
-                    (q.margin_by_sampling() - want).abs() <= 1e-12 * p.size(),
-                    "{ctx}"
-                );
-                let got = q.crossings();
-                if p.is_ring() {
-                    assert!(got.is_empty(), "{ctx} {got:?}");
-                } else if p.is_horn() {
-                    // The centre, E = 1 exactly in the canonical frame.
-                    if !posed {
-                        assert_crossings(&got, &[(10.0 * k, Touch)], 0.0, &ctx);
-                    }
-                } else {
-                    // The apple's dimples: y = ±b √(1 − (R/a)²).
-                    let y0 = p.ax * (1.0 - (p.big / p.ra).powi(2)).sqrt();
-                    let want = [(10.0 * k - y0, In), (10.0 * k + y0, Out)];
-                    assert_crossings(&got, &want, 1e-14 * 10.0 * k, &ctx);
-                }
+    for (p, k, posed) in poses_both_ways(1) {
+        let q = p.q(DVec3::new(0.0, 10.0 * k, 0.0), DVec3::NEG_Y);
+        let ctx = format!("{p:?}");
+        let l = q.classify();
+        // On the axis ρ = 0: E = √((R/a)² + (y/b)²), least R/a at y = 0.
+        let want = (p.big / p.ra - 1.0) * p.min_ab();
+        let tol = 1e-14 * p.size();
+        assert!((l.margin - want).abs() <= tol, "{ctx} {l:?}");
+        let class = if p.is_ring() {
+            OracleClass::Miss
+        } else if p.is_horn() {
+            OracleClass::Ambiguous
+        } else {
+            OracleClass::Hit
+        };
+        assert_eq!(l.class, class, "{ctx}");
+        assert!(
+            (q.margin_by_sampling() - want).abs() <= 1e-12 * p.size(),
+            "{ctx}"
+        );
+        let got = q.crossings();
+        if p.is_ring() {
+            assert!(got.is_empty(), "{ctx} {got:?}");
+        } else if p.is_horn() {
+            // The centre, E = 1 exactly in the canonical frame.
+            if !posed {
+                assert_crossings(&got, &[(10.0 * k, Touch)], 0.0, &ctx);
             }
+        } else {
+            // The apple's dimples: y = ±b √(1 − (R/a)²).
+            let y0 = p.ax * (1.0 - (p.big / p.ra).powi(2)).sqrt();
+            let want = [(10.0 * k - y0, In), (10.0 * k + y0, Out)];
+            assert_crossings(&got, &want, 1e-14 * 10.0 * k, &ctx);
         }
     }
 }
 
 #[test]
 fn equatorial_rays_through_the_centre() {
-    let mut rng = Pcg64::seed_from_u64(2);
-    for shape in SHAPES {
-        for k in SCALES {
-            for posed in [false, true] {
-                let p = Pose::posed_or_not(posed, &mut rng, shape, k);
-                let d = if posed {
-                    DVec3::new(0.6, 0.0, 0.8)
-                } else {
-                    DVec3::X
-                };
-                let (big, ra) = (p.big, p.ra);
-                let o = -10.0 * k * d;
-                let q = p.q(o, d);
-                let ctx = format!("{p:?}");
-                let l = q.classify();
-                assert_eq!(l.class, OracleClass::Hit, "{ctx}");
-                let tol = 1e-14 * p.size();
-                assert!((l.margin + p.min_ab()).abs() <= tol, "{ctx} {l:?}");
-                let c = 10.0 * k;
-                let want: Vec<(f64, Passage)> = if p.is_ring() {
-                    vec![
-                        (c - big - ra, In),
-                        (c - big + ra, Out),
-                        (c + big - ra, In),
-                        (c + big + ra, Out),
-                    ]
-                } else if p.is_horn() {
-                    vec![(c - big - ra, In), (c, Touch), (c + big + ra, Out)]
-                } else {
-                    // Only ρ = R + a: the lemon's ρ = a − R is inside the apple.
-                    vec![(c - big - ra, In), (c + big + ra, Out)]
-                };
-                let got = q.crossings();
-                if posed && p.is_horn() {
-                    // Rounding of the pose decides whether the centre is touched.
-                    assert!(got.len() == 2 || got.len() == 3, "{ctx} {got:?}");
-                    continue;
-                }
-                assert_crossings(&got, &want, 1e-14 * c, &ctx);
-                if p.big < p.ra {
-                    let lemon = ra - big;
-                    for t in [c - lemon, c + lemon] {
-                        assert!(got.iter().all(|x| (x.t - t).abs() > 1e-3 * k), "{ctx}");
-                    }
-                }
+    for (p, k, posed) in poses_both_ways(2) {
+        let d = if posed {
+            DVec3::new(0.6, 0.0, 0.8)
+        } else {
+            DVec3::X
+        };
+        let (big, ra) = (p.big, p.ra);
+        let o = -10.0 * k * d;
+        let q = p.q(o, d);
+        let ctx = format!("{p:?}");
+        let l = q.classify();
+        assert_eq!(l.class, OracleClass::Hit, "{ctx}");
+        let tol = 1e-14 * p.size();
+        assert!((l.margin + p.min_ab()).abs() <= tol, "{ctx} {l:?}");
+        let c = 10.0 * k;
+        let want: Vec<(f64, Passage)> = if p.is_ring() {
+            vec![
+                (c - big - ra, In),
+                (c - big + ra, Out),
+                (c + big - ra, In),
+                (c + big + ra, Out),
+            ]
+        } else if p.is_horn() {
+            vec![(c - big - ra, In), (c, Touch), (c + big + ra, Out)]
+        } else {
+            // Only ρ = R + a: the lemon's ρ = a − R is inside the apple.
+            vec![(c - big - ra, In), (c + big + ra, Out)]
+        };
+        let got = q.crossings();
+        if posed && p.is_horn() {
+            // Rounding of the pose decides whether the centre is touched.
+            assert!(got.len() == 2 || got.len() == 3, "{ctx} {got:?}");
+            continue;
+        }
+        assert_crossings(&got, &want, 1e-14 * c, &ctx);
+        if p.big < p.ra {
+            let lemon = ra - big;
+            for t in [c - lemon, c + lemon] {
+                assert!(got.iter().all(|x| (x.t - t).abs() > 1e-3 * k), "{ctx}");
             }
         }
     }
@@ -232,55 +238,52 @@ fn equatorial_rays_through_the_centre() {
 
 #[test]
 fn rays_over_the_top_of_the_tube() {
-    for shape in SHAPES {
-        for k in SCALES {
-            let p = Pose::canonical(shape, k);
-            let (big, ra, ax) = (p.big, p.ra, p.ax);
-            for delta in [0.0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3] {
-                let h = ax * (1.0 + delta);
-                let ctx = format!("{p:?} delta {delta}");
-                let want_margin = delta * p.min_ab();
-                let class = if want_margin.abs() <= p.band() {
-                    OracleClass::Ambiguous
-                } else if delta < 0.0 {
-                    OracleClass::Hit
-                } else {
-                    OracleClass::Miss
-                };
-                // Across the hole (through the axis) and along the circle at ρ = R.
-                let across = p.q(DVec3::new(-10.0 * k, h, 0.0), DVec3::X);
-                let along = p.q(DVec3::new(big, h, -10.0 * k), DVec3::Z);
-                for (name, q) in [("across", across), ("along", along)] {
-                    let l = q.classify();
-                    let tol = 1e-15 * p.size();
-                    assert!((l.margin - want_margin).abs() <= tol, "{ctx} {name} {l:?}");
-                    assert_eq!(l.class, class, "{ctx} {name}");
-                }
-                let c = 10.0 * k;
-                // E = √(((ρ − R)/a)² + (1 + δ)²) = 1 at |ρ − R| = a √(1 − (1 + δ)²).
-                let w = ra * (1.0 - (1.0 + delta).powi(2)).max(0.0).sqrt();
-                let (want_across, want_along): (Vec<_>, Vec<_>) = if delta == 0.0 {
-                    (vec![(c - big, Touch), (c + big, Touch)], vec![(c, Touch)])
-                } else if delta > 0.0 {
-                    (vec![], vec![])
-                } else {
-                    let z = ((big + w).powi(2) - big * big).sqrt();
-                    (
-                        vec![
-                            (c - big - w, In),
-                            (c - big + w, Out),
-                            (c + big - w, In),
-                            (c + big + w, Out),
-                        ],
-                        vec![(c - z, In), (c + z, Out)],
-                    )
-                };
-                // A crossing near a tangency moves by rounding/√|δ|.
-                let tol = 1e-15 * c / delta.abs().max(1e-6).sqrt() * 10.0;
-                if delta.abs() != 1e-12 {
-                    assert_crossings(&across.crossings(), &want_across, tol, &ctx);
-                    assert_crossings(&along.crossings(), &want_along, tol, &ctx);
-                }
+    for (p, k) in canonical_poses() {
+        let (big, ra, ax) = (p.big, p.ra, p.ax);
+        for delta in [0.0, 1e-12, -1e-12, 1e-6, -1e-6, 1e-3, -1e-3] {
+            let h = ax * (1.0 + delta);
+            let ctx = format!("{p:?} delta {delta}");
+            let want_margin = delta * p.min_ab();
+            let class = if want_margin.abs() <= p.band() {
+                OracleClass::Ambiguous
+            } else if delta < 0.0 {
+                OracleClass::Hit
+            } else {
+                OracleClass::Miss
+            };
+            // Across the hole (through the axis) and along the circle at ρ = R.
+            let across = p.q(DVec3::new(-10.0 * k, h, 0.0), DVec3::X);
+            let along = p.q(DVec3::new(big, h, -10.0 * k), DVec3::Z);
+            for (name, q) in [("across", across), ("along", along)] {
+                let l = q.classify();
+                let tol = 1e-15 * p.size();
+                assert!((l.margin - want_margin).abs() <= tol, "{ctx} {name} {l:?}");
+                assert_eq!(l.class, class, "{ctx} {name}");
+            }
+            let c = 10.0 * k;
+            // E = √(((ρ − R)/a)² + (1 + δ)²) = 1 at |ρ − R| = a √(1 − (1 + δ)²).
+            let w = ra * (1.0 - (1.0 + delta).powi(2)).max(0.0).sqrt();
+            let (want_across, want_along): (Vec<_>, Vec<_>) = if delta == 0.0 {
+                (vec![(c - big, Touch), (c + big, Touch)], vec![(c, Touch)])
+            } else if delta > 0.0 {
+                (vec![], vec![])
+            } else {
+                let z = ((big + w).powi(2) - big * big).sqrt();
+                (
+                    vec![
+                        (c - big - w, In),
+                        (c - big + w, Out),
+                        (c + big - w, In),
+                        (c + big + w, Out),
+                    ],
+                    vec![(c - z, In), (c + z, Out)],
+                )
+            };
+            // A crossing near a tangency moves by rounding/√|δ|.
+            let tol = 1e-15 * c / delta.abs().max(1e-6).sqrt() * 10.0;
+            if delta.abs() != 1e-12 {
+                assert_crossings(&across.crossings(), &want_across, tol, &ctx);
+                assert_crossings(&along.crossings(), &want_along, tol, &ctx);
             }
         }
     }
@@ -288,37 +291,34 @@ fn rays_over_the_top_of_the_tube() {
 
 #[test]
 fn lines_parallel_to_the_axis() {
-    for shape in SHAPES {
-        for k in SCALES {
-            let p = Pose::canonical(shape, k);
-            let (big, ra, ax) = (p.big, p.ra, p.ax);
-            let mut cs = vec![
-                big,
-                big + 0.5 * ra,
-                big + ra * (1.0 + 1e-3),
-                2.0 * (big + ra),
-            ];
-            if p.is_ring() {
-                // Through the hole.
-                cs.push(0.5 * (big - ra));
+    for (p, k) in canonical_poses() {
+        let (big, ra, ax) = (p.big, p.ra, p.ax);
+        let mut cs = vec![
+            big,
+            big + 0.5 * ra,
+            big + ra * (1.0 + 1e-3),
+            2.0 * (big + ra),
+        ];
+        if p.is_ring() {
+            // Through the hole.
+            cs.push(0.5 * (big - ra));
+        } else {
+            cs.push(0.1 * big);
+        }
+        for c in cs {
+            let q = p.q(DVec3::new(c, 10.0 * k, 0.0), DVec3::NEG_Y);
+            let ctx = format!("{p:?} c {c}");
+            let r = (c - big).abs() / ra;
+            let l = q.classify();
+            let want = (r - 1.0) * p.min_ab();
+            assert!((l.margin - want).abs() <= 1e-14 * p.size(), "{ctx} {l:?}");
+            let got = q.crossings();
+            if r < 1.0 {
+                let y0 = ax * ((1.0 - r) * (1.0 + r)).sqrt();
+                let want = [(10.0 * k - y0, In), (10.0 * k + y0, Out)];
+                assert_crossings(&got, &want, 1e-14 * 10.0 * k, &ctx);
             } else {
-                cs.push(0.1 * big);
-            }
-            for c in cs {
-                let q = p.q(DVec3::new(c, 10.0 * k, 0.0), DVec3::NEG_Y);
-                let ctx = format!("{p:?} c {c}");
-                let r = (c - big).abs() / ra;
-                let l = q.classify();
-                let want = (r - 1.0) * p.min_ab();
-                assert!((l.margin - want).abs() <= 1e-14 * p.size(), "{ctx} {l:?}");
-                let got = q.crossings();
-                if r < 1.0 {
-                    let y0 = ax * ((1.0 - r) * (1.0 + r)).sqrt();
-                    let want = [(10.0 * k - y0, In), (10.0 * k + y0, Out)];
-                    assert_crossings(&got, &want, 1e-14 * 10.0 * k, &ctx);
-                } else {
-                    assert!(got.is_empty(), "{ctx} {got:?}");
-                }
+                assert!(got.is_empty(), "{ctx} {got:?}");
             }
         }
     }
@@ -363,52 +363,49 @@ fn the_horns_centre_point() {
 #[test]
 fn far_origins_keep_their_lines() {
     let mut rng = Pcg64::seed_from_u64(3);
-    for shape in SHAPES {
-        for k in SCALES {
-            let p = Pose::canonical(shape, k);
-            let far = 1e6 * p.big;
-            // Exact: along the equator and down the axis from 10⁶ R.
-            let q = p.q(DVec3::new(-far, 0.0, 0.0), DVec3::X);
-            let near = p.q(DVec3::new(-10.0 * k, 0.0, 0.0), DVec3::X);
-            let shift = far - 10.0 * k;
-            let ctx = format!("{p:?}");
-            let (lf, ln) = (q.classify(), near.classify());
-            assert!((lf.margin - ln.margin).abs() <= 1e-15 * p.size(), "{ctx}");
-            let (cf, cn) = (q.crossings(), near.crossings());
-            assert_eq!(cf.len(), cn.len(), "{ctx} {cf:?} {cn:?}");
-            for (a, b) in cf.iter().zip(&cn) {
-                assert_eq!(a.passage, b.passage);
-                assert!((a.t - shift - b.t).abs() <= 1e-15 * far * 4.0, "{ctx}");
+    for (p, k) in canonical_poses() {
+        let far = 1e6 * p.big;
+        // Exact: along the equator and down the axis from 10⁶ R.
+        let q = p.q(DVec3::new(-far, 0.0, 0.0), DVec3::X);
+        let near = p.q(DVec3::new(-10.0 * k, 0.0, 0.0), DVec3::X);
+        let shift = far - 10.0 * k;
+        let ctx = format!("{p:?}");
+        let (lf, ln) = (q.classify(), near.classify());
+        assert!((lf.margin - ln.margin).abs() <= 1e-15 * p.size(), "{ctx}");
+        let (cf, cn) = (q.crossings(), near.crossings());
+        assert_eq!(cf.len(), cn.len(), "{ctx} {cf:?} {cn:?}");
+        for (a, b) in cf.iter().zip(&cn) {
+            assert_eq!(a.passage, b.passage);
+            assert!((a.t - shift - b.t).abs() <= 1e-15 * far * 4.0, "{ctx}");
+        }
+        let q = p.q(DVec3::new(0.0, far, 0.0), DVec3::NEG_Y);
+        let want = (p.big / p.ra - 1.0) * p.min_ab();
+        assert!(
+            (q.classify().margin - want).abs() <= 1e-14 * p.size(),
+            "{ctx}"
+        );
+        // Random lines through a point near the torus, from 10⁶ R away: the same
+        // margin and crossings as from close by, within the far origin's rounding.
+        for _ in 0..40 {
+            let u = unit(&mut rng);
+            let target = unit(&mut rng) * p.size() * rng.random::<f64>();
+            let o_far = target - far * u;
+            let o_near = target - 3.0 * p.size() * u;
+            let (qf, qn) = (p.q(o_far, u), p.q(o_near, u));
+            let (lf, ln) = (qf.classify(), qn.classify());
+            let tol = 1e-15 * far * 8.0 * (p.ra.max(p.ax) / p.min_ab());
+            assert!((lf.margin - ln.margin).abs() <= tol, "{ctx} {lf:?} {ln:?}");
+            if lf.margin.abs() > tol + p.band() && ln.margin.abs() > tol + p.band() {
+                assert_eq!(lf.class, ln.class, "{ctx}");
+                let (cf, cn) = (qf.crossings(), qn.crossings());
+                let ends = |c: &[Crossing]| c.iter().filter(|x| x.passage != Touch).count();
+                assert_eq!(ends(&cf), ends(&cn), "{ctx} {cf:?} {cn:?}");
             }
-            let q = p.q(DVec3::new(0.0, far, 0.0), DVec3::NEG_Y);
-            let want = (p.big / p.ra - 1.0) * p.min_ab();
+            let mf = qf.margin_by_sampling();
             assert!(
-                (q.classify().margin - want).abs() <= 1e-14 * p.size(),
-                "{ctx}"
+                (mf - lf.margin).abs() <= 1e-9 * p.size(),
+                "{ctx} {lf:?} {mf}"
             );
-            // Random lines through a point near the torus, from 10⁶ R away: the same
-            // margin and crossings as from close by, within the far origin's rounding.
-            for _ in 0..40 {
-                let u = unit(&mut rng);
-                let target = unit(&mut rng) * p.size() * rng.random::<f64>();
-                let o_far = target - far * u;
-                let o_near = target - 3.0 * p.size() * u;
-                let (qf, qn) = (p.q(o_far, u), p.q(o_near, u));
-                let (lf, ln) = (qf.classify(), qn.classify());
-                let tol = 1e-15 * far * 8.0 * (p.ra.max(p.ax) / p.min_ab());
-                assert!((lf.margin - ln.margin).abs() <= tol, "{ctx} {lf:?} {ln:?}");
-                if lf.margin.abs() > tol + p.band() && ln.margin.abs() > tol + p.band() {
-                    assert_eq!(lf.class, ln.class, "{ctx}");
-                    let (cf, cn) = (qf.crossings(), qn.crossings());
-                    let ends = |c: &[Crossing]| c.iter().filter(|x| x.passage != Touch).count();
-                    assert_eq!(ends(&cf), ends(&cn), "{ctx} {cf:?} {cn:?}");
-                }
-                let mf = qf.margin_by_sampling();
-                assert!(
-                    (mf - lf.margin).abs() <= 1e-9 * p.size(),
-                    "{ctx} {lf:?} {mf}"
-                );
-            }
         }
     }
 }
@@ -454,13 +451,7 @@ fn random_line(rng: &mut Pcg64, p: &Pose, kind: usize) -> (DVec3, DVec3, f64, f6
     let size = p.size();
     let tau = std::f64::consts::TAU;
     let (name, point, dir) = match kind {
-        0 => {
-            let u = unit(rng);
-            let (e1, e2) = u.any_orthonormal_pair();
-            let rad = 1.05 * size * rng.random::<f64>().sqrt();
-            let ang = rng.random_range(0.0..tau);
-            ("uniform", rad * (ang.cos() * e1 + ang.sin() * e2), u)
-        }
+        0 => uniform_kind(rng, size),
         1 => {
             // Near the centre: the hole, the horn's pinch, the apple's dimples.
             let rad = p.big * rng.random::<f64>().sqrt();
@@ -483,37 +474,15 @@ fn random_line(rng: &mut Pcg64, p: &Pose, kind: usize) -> (DVec3, DVec3, f64, f6
             let (surf, n) = p.surface(phi, theta);
             let (t1, t2) = n.any_orthonormal_pair();
             let psi = rng.random_range(0.0..tau);
-            let pushes = [
-                1e-2, -1e-2, 1e-4, -1e-4, 1e-6, -1e-6, 1e-8, -1e-8, 1e-11, -1e-11,
-            ];
-            let delta = pushes[rng.random_range(0..pushes.len())];
+            let delta = GRAZING_PUSHES[rng.random_range(0..GRAZING_PUSHES.len())];
             let dir = psi.cos() * t1 + psi.sin() * t2;
             ("grazing", surf + delta * p.min_ab() * n, dir)
         }
-        3 => {
-            let pt = DVec3::new(0.0, rng.random_range(-2.0..2.0) * p.ax, 0.0);
-            ("axis", pt, unit(rng))
-        }
-        4 => {
-            let rad = rng.random_range(0.0..size + p.ra);
-            let ang = rng.random_range(0.0..tau);
-            let y = rng.random_range(-3.0..3.0) * p.ax;
-            let pt = DVec3::new(rad * ang.cos(), y, rad * ang.sin());
-            let s = if rng.random::<bool>() { 1.0 } else { -1.0 };
-            ("parallel", pt, DVec3::Y * s)
-        }
-        _ => {
-            let from = 100.0 * size * unit(rng);
-            let to = unit(rng) * size * rng.random::<f64>().cbrt();
-            ("far", to, (to - from).normalize())
-        }
+        3 => axis_kind(rng, p.ax),
+        4 => parallel_kind(rng, size + p.ra, p.ax),
+        _ => far_kind(rng, 100.0 * size, size),
     };
-    let back = if name == "far" {
-        100.0 * size
-    } else {
-        rng.random_range(0.0..3.0 * size)
-    };
-    let (scale, t0, t1) = random_reach(rng, back, size);
+    let (back, scale, t0, t1) = random_back_and_reach(rng, name, 100.0 * size, size);
     (point - back * dir, dir * scale, t0, t1, name)
 }
 
