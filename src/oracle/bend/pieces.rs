@@ -8,6 +8,17 @@ fn sort_dedup(v: &mut Vec<f64>) {
     v.dedup();
 }
 
+/// Adds to the sorted points `pts` each sign change of `f` between neighbours, then sorts
+/// and dedups them again.
+fn add_sign_changes(pts: &mut Vec<f64>, f: &dyn Fn(f64) -> f64) {
+    let extra: Vec<f64> = pts
+        .windows(2)
+        .filter_map(|w| sign_change(f, w[0], w[1]))
+        .collect();
+    pts.extend(extra);
+    sort_dedup(pts);
+}
+
 impl BendQuery {
     /// The breakpoints on the whole line: D's critical points, the roots of D = (r_min +
     /// r_max)/2, and each edge distance's minimum (the projected line's crossing of the
@@ -54,22 +65,12 @@ impl BendQuery {
             let (ds, de) = frame.edge_distances(frame.local(point(t)).0);
             ds - de
         };
-        let extra: Vec<f64> = pts
-            .windows(2)
-            .filter_map(|w| sign_change(&turn, w[0], w[1]))
-            .collect();
-        pts.extend(extra);
-        sort_dedup(&mut pts);
+        add_sign_changes(&mut pts, &turn);
         let gap = |t: f64| {
             let (q, y) = frame.local(point(t));
             frame.f_rad(frame.d_core(q, y)) - frame.f_w(q)
         };
-        let extra: Vec<f64> = pts
-            .windows(2)
-            .filter_map(|w| sign_change(&gap, w[0], w[1]))
-            .collect();
-        pts.extend(extra);
-        sort_dedup(&mut pts);
+        add_sign_changes(&mut pts, &gap);
         pts
     }
 
