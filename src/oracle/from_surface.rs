@@ -182,32 +182,26 @@ mod tests {
 
     #[test]
     fn the_origins_own_crossing_is_excluded() {
-        // From the inner equator across the hole: the far wall at t = 6 is the hit.
-        let across = label(DVec3::new(3.0, 0.0, 0.0), DVec3::NEG_X, f64::INFINITY);
-        assert_eq!(across.class, OracleClass::Hit);
-        assert_eq!(
-            label(DVec3::new(3.0, 0.0, 0.0), DVec3::NEG_X, 5.0).class,
-            OracleClass::Miss
-        );
-        // From the top, straight up: nothing.
-        assert_eq!(
-            label(DVec3::new(4.0, 1.0, 0.0), DVec3::Y, f64::INFINITY).class,
-            OracleClass::Miss
-        );
-        // Into the tube, from the top: the bottom, t = 2.
-        assert_eq!(
-            label(DVec3::new(4.0, 1.0, 0.0), DVec3::NEG_Y, 2.5).class,
-            OracleClass::Hit
-        );
-        assert_eq!(
-            label(DVec3::new(4.0, 1.0, 0.0), DVec3::NEG_Y, 1.5).class,
-            OracleClass::Miss
-        );
-        // Tangent at the top, along z: the own crossing is a double root, and nothing
-        // else can be told at the origin: ambiguous.
-        assert_eq!(
-            label(DVec3::new(4.0, 1.0, 0.0), DVec3::Z, f64::INFINITY).class,
-            OracleClass::Ambiguous
-        );
+        let (inner, top) = (DVec3::new(3.0, 0.0, 0.0), DVec3::new(4.0, 1.0, 0.0));
+        let inf = f64::INFINITY;
+        for (o, d, t_max, class) in [
+            // From the inner equator across the hole: the far wall at t = 6 is the hit.
+            (inner, DVec3::NEG_X, inf, OracleClass::Hit),
+            (inner, DVec3::NEG_X, 5.0, OracleClass::Miss),
+            // From the top, straight up: nothing.
+            (top, DVec3::Y, inf, OracleClass::Miss),
+            // Into the tube, from the top: the bottom, t = 2.
+            (top, DVec3::NEG_Y, 2.5, OracleClass::Hit),
+            (top, DVec3::NEG_Y, 1.5, OracleClass::Miss),
+            // Tangent at the top, along z: the own crossing is a double root, and nothing
+            // else can be told at the origin: ambiguous.
+            (top, DVec3::Z, inf, OracleClass::Ambiguous),
+        ] {
+            assert_eq!(
+                label(o, d, t_max).class,
+                class,
+                "from {o} along {d} to {t_max}"
+            );
+        }
     }
 }
