@@ -500,29 +500,25 @@ trait Float: std::str::FromStr + Copy + PartialOrd + fmt::Display {
     fn max() -> Num;
 }
 
-impl Float for f32 {
-    const ZERO: f32 = 0.0;
-    const INFINITY: f32 = f32::INFINITY;
-    const NAME: &'static str = "f32";
-    fn finite(self) -> bool {
-        self.is_finite()
-    }
-    fn max() -> Num {
-        Num::from(f32::MAX)
-    }
+/// [`Float`] for each `type => to_num` given: `to_num` writes the type's largest finite
+/// value as a [`Num`] (an f32 by its own shortest text, [`Num::from`]).
+macro_rules! impl_float {
+    ($($t:ident => $to_num:path),+) => {$(
+        impl Float for $t {
+            const ZERO: $t = 0.0;
+            const INFINITY: $t = $t::INFINITY;
+            const NAME: &'static str = stringify!($t);
+            fn finite(self) -> bool {
+                self.is_finite()
+            }
+            fn max() -> Num {
+                $to_num($t::MAX)
+            }
+        }
+    )+};
 }
 
-impl Float for f64 {
-    const ZERO: f64 = 0.0;
-    const INFINITY: f64 = f64::INFINITY;
-    const NAME: &'static str = "f64";
-    fn finite(self) -> bool {
-        self.is_finite()
-    }
-    fn max() -> Num {
-        Num(f64::MAX)
-    }
-}
+impl_float!(f32 => Num::from, f64 => Num);
 
 /// One row's values in the float `T`.
 struct Fields<'a, T> {
