@@ -101,6 +101,8 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
         }
     }
     let first = roots.iter().copied().find(|&t| spawned.ahead_in_range(t));
+    // The line over [lo, t_max]: the answer past the extreme point.
+    let over = |lo: f64| line.over(lo, query.t_max).classify();
     if outward {
         let Some(t_next) = next else {
             // Never comes back: a miss, by the distance at the range's start.
@@ -109,23 +111,11 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
             return Some((miss_by(margin), None));
         };
         let mid = 0.5 * (window + t_next);
-        let peak = extreme.unwrap_or((mid, g(mid)));
-        return spawned.leaving_solid(
-            (Some(peak), true),
-            || g(query.t_max),
-            |lo| line.over(lo, query.t_max).classify(),
-            offset,
-            first,
-        );
+        let rise = (Some(extreme.unwrap_or((mid, g(mid)))), true);
+        return spawned.leaving_solid(rise, || g(query.t_max), over, offset, first);
     }
     // Into the tube: the next crossing is where the ray leaves it.
-    let deepest = extreme.map(|(_, depth)| depth);
-    spawned.entering_solid(
-        next?,
-        deepest,
-        |lo| line.over(lo, query.t_max).classify(),
-        first,
-    )
+    spawned.entering_solid(next?, extreme.map(|(_, depth)| depth), over, first)
 }
 
 /// The surface point nearest to the query's origin (f64, closed form: the nearest point

@@ -147,6 +147,8 @@ impl BendQuery {
         } else {
             Vec::new()
         };
+        // The line over [lo, t_max]: the answer past the extreme point.
+        let over = |lo: f64| line.over(lo, self.t_max).classify();
         if !inward {
             // The first local maximum of F past the window; a miss's margin is F at the
             // range's start past the window.
@@ -155,21 +157,11 @@ impl BendQuery {
                 .find(|w| w[1].1 >= w[0].1 && w[1].1 >= w[2].1)
                 .map(|w| w[1]);
             let start = self.t_min.max(window).min(self.t_max);
-            return spawned.leaving_solid(
-                (peak, next.is_some()),
-                || at(start),
-                |lo| line.over(lo, self.t_max).classify(),
-                offset,
-                first,
-            );
+            let rise = (peak, next.is_some());
+            return spawned.leaving_solid(rise, || at(start), over, offset, first);
         }
         let deepest = profile.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-        spawned.entering_solid(
-            next?,
-            Some(deepest),
-            |lo| line.over(lo, self.t_max).classify(),
-            first,
-        )
+        spawned.entering_solid(next?, Some(deepest), over, first)
     }
 }
 

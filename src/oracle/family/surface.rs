@@ -109,24 +109,15 @@ fn decide(query: &FamilyQuery) -> Option<(OracleLabel, Option<f64>)> {
             extreme = Some((t, v));
         }
     }
+    // The line over [lo, t_max]: the answer past the extreme point.
+    let over = |lo: f64| line.over(lo, query.t_max).classify();
     if outward {
         // Past the highest point; a miss's margin is g at the range's start past the window.
         let start = query.t_min.max(window).min(query.t_max);
-        return spawned.leaving_solid(
-            (extreme, next.is_some()),
-            || line.g(start),
-            |lo| line.over(lo, query.t_max).classify(),
-            offset,
-            first,
-        );
+        let rise = (extreme, next.is_some());
+        return spawned.leaving_solid(rise, || line.g(start), over, offset, first);
     }
-    let deepest = extreme.map(|(_, depth)| depth);
-    spawned.entering_solid(
-        next?,
-        deepest,
-        |lo| line.over(lo, query.t_max).classify(),
-        first,
-    )
+    spawned.entering_solid(next?, extreme.map(|(_, depth)| depth), over, first)
 }
 
 /// The surface point nearest to the query's origin, the origin's distance from it and the
