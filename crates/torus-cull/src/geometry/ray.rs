@@ -123,22 +123,29 @@ pub(crate) mod sealed {
             Self: Precision;
     }
 
+    /// The items of [`Internals`] that are the glam vector's own, alike in both precisions.
+    macro_rules! internals_of_glam {
+        ($v:ident, $f:ty) => {
+            const ZERO: $v = $v::ZERO;
+            #[inline(always)]
+            fn finite(self) -> bool {
+                self.is_finite()
+            }
+            #[inline(always)]
+            fn length_sq(self) -> $f {
+                self.length_squared()
+            }
+            fn components(self) -> [$f; 3] {
+                self.to_array()
+            }
+        };
+    }
+
     impl Internals for Vec3 {
-        const ZERO: Vec3 = Vec3::ZERO;
+        internals_of_glam!(Vec3, f32);
         const NAME: &'static str = "f32";
         const HUGE: &'static str = "|d|² must be finite in f32: |d| < 1.8e19";
         const RANGE: &'static str = "need finite t_min ≤ t_max";
-        #[inline(always)]
-        fn finite(self) -> bool {
-            self.is_finite()
-        }
-        #[inline(always)]
-        fn length_sq(self) -> f32 {
-            self.length_squared()
-        }
-        fn components(self) -> [f32; 3] {
-            self.to_array()
-        }
         #[inline(always)]
         fn to_dvec3(self) -> DVec3 {
             self.as_dvec3()
@@ -157,21 +164,10 @@ pub(crate) mod sealed {
     }
 
     impl Internals for DVec3 {
-        const ZERO: DVec3 = DVec3::ZERO;
+        internals_of_glam!(DVec3, f64);
         const NAME: &'static str = "f64";
         const HUGE: &'static str = "|d|² overflows f64";
         const RANGE: &'static str = "t_min finite, t_min ≤ t_max";
-        #[inline(always)]
-        fn finite(self) -> bool {
-            self.is_finite()
-        }
-        #[inline(always)]
-        fn length_sq(self) -> f64 {
-            self.length_squared()
-        }
-        fn components(self) -> [f64; 3] {
-            self.to_array()
-        }
         #[inline(always)]
         fn to_dvec3(self) -> DVec3 {
             self

@@ -17,6 +17,32 @@
 use pulp::Simd;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
+/// The comparison methods `fn f(self, o: Self) -> $mask<S>` of a lane type, each one
+/// pulp comparison.
+macro_rules! lane_cmp {
+    ($mask:ident: $($(#[$doc:meta])* $f:ident $simd:ident),*) => {$(
+        $(#[$doc])*
+        #[inline(always)]
+        pub fn $f(self, o: Self) -> $mask<S> {
+            $mask { s: self.s, m: self.s.$simd(self.v, o.v) }
+        }
+    )*};
+}
+
+/// Binary operator impls of a lane (or mask) type whose register is the field `$field`,
+/// each one pulp operation.
+macro_rules! lane_op {
+    ($name:ident, $field:ident: $($op:ident $f:ident $simd:ident),*) => {$(
+        impl<S: Simd> $op for $name<S> {
+            type Output = Self;
+            #[inline(always)]
+            fn $f(self, o: Self) -> Self {
+                $name { s: self.s, $field: self.s.$simd(self.$field, o.$field) }
+            }
+        }
+    )*};
+}
+
 macro_rules! lanes {
     (
         $(#[$doc:meta])* $name:ident, $mask:ident, $elem:ty, $vec:ident, $m:ident, $lanes:ident,
@@ -42,6 +68,26 @@ macro_rules! lanes {
         }
 
         impl<S: Simd> $name<S> {
+            #[doc = concat!(
+                "The lanes of `slice` (exactly `S::", stringify!($lanes), "` values)."
+            )]
+            #[inline(always)]
+            pub fn load(s: S, slice: &[$elem]) -> Self {
+                $name {
+                    s,
+                    v: pulp::bytemuck::pod_read_unaligned(
+                        pulp::bytemuck::cast_slice::<$elem, u8>(slice),
+                    ),
+                }
+            }
+            #[doc = concat!(
+                "Writes the lanes to `slice` (exactly `S::", stringify!($lanes), "` values)."
+            )]
+            #[inline(always)]
+            pub fn store(self, slice: &mut [$elem]) {
+                pulp::bytemuck::cast_slice_mut::<$elem, u8>(slice)
+                    .copy_from_slice(pulp::bytemuck::bytes_of(&self.v));
+            }
             /// Every lane `x`.
             #[inline(always)]
             pub fn splat(s: S, x: $elem) -> Self {
@@ -57,31 +103,18 @@ macro_rules! lanes {
             pub fn abs(self) -> Self {
                 $name { s: self.s, v: self.s.$abs(self.v) }
             }
-            /// `self < o`.
-            #[inline(always)]
-            pub fn lt(self, o: Self) -> $mask<S> {
-                $mask { s: self.s, m: self.s.$lt(self.v, o.v) }
-            }
-            /// `self ≤ o`.
-            #[inline(always)]
-            pub fn le(self, o: Self) -> $mask<S> {
-                $mask { s: self.s, m: self.s.$le(self.v, o.v) }
-            }
-            /// `self > o`.
-            #[inline(always)]
-            pub fn gt(self, o: Self) -> $mask<S> {
-                $mask { s: self.s, m: self.s.$gt(self.v, o.v) }
-            }
-            /// `self ≥ o`.
-            #[inline(always)]
-            pub fn ge(self, o: Self) -> $mask<S> {
-                $mask { s: self.s, m: self.s.$ge(self.v, o.v) }
-            }
-            /// `self == o` (false for NaN).
-            #[inline(always)]
-            pub fn eq(self, o: Self) -> $mask<S> {
-                $mask { s: self.s, m: self.s.$eq(self.v, o.v) }
-            }
+            lane_cmp!($mask:
+                /// `self < o`.
+                lt $lt,
+                /// `self ≤ o`.
+                le $le,
+                /// `self > o`.
+                gt $gt,
+                /// `self ≥ o`.
+                ge $ge,
+                /// `self == o` (false for NaN).
+                eq $eq
+            );
             /// Lanes that are finite (neither infinite nor NaN).
             #[allow(dead_code, reason = "generated for f32 and f64 lanes; only one width uses it")]
             #[inline(always)]
@@ -134,6 +167,11 @@ macro_rules! lanes {
         }
 
         impl<S: Simd> $mask<S> {
+            /// Bit i of the result is lane i (at most 64 lanes).
+            #[inline(always)]
+            pub fn bits(self) -> u64 {
+                lane_bits(&self.m, S::$lanes)
+            }
             /// `if self { a } else { b }`, per lane.
             #[inline(always)]
             pub fn select(self, a: $name<S>, b: $name<S>) -> $name<S> {
@@ -147,34 +185,7 @@ macro_rules! lanes {
             }
         }
 
-        impl<S: Simd> Add for $name<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn add(self, o: Self) -> Self {
-                $name { s: self.s, v: self.s.$add(self.v, o.v) }
-            }
-        }
-        impl<S: Simd> Sub for $name<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn sub(self, o: Self) -> Self {
-                $name { s: self.s, v: self.s.$sub(self.v, o.v) }
-            }
-        }
-        impl<S: Simd> Mul for $name<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn mul(self, o: Self) -> Self {
-                $name { s: self.s, v: self.s.$mul(self.v, o.v) }
-            }
-        }
-        impl<S: Simd> Div for $name<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn div(self, o: Self) -> Self {
-                $name { s: self.s, v: self.s.$div(self.v, o.v) }
-            }
-        }
+        lane_op!($name, v: Add add $add, Sub sub $sub, Mul mul $mul, Div div $div);
         impl<S: Simd> Neg for $name<S> {
             type Output = Self;
             /// Flips the sign bit, as scalar negation does (exact).
@@ -184,20 +195,7 @@ macro_rules! lanes {
                 $name { s, v: s.$xor_f(self.v, s.$splat(-0.0)) }
             }
         }
-        impl<S: Simd> BitAnd for $mask<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn bitand(self, o: Self) -> Self {
-                $mask { s: self.s, m: self.s.$and_m(self.m, o.m) }
-            }
-        }
-        impl<S: Simd> BitOr for $mask<S> {
-            type Output = Self;
-            #[inline(always)]
-            fn bitor(self, o: Self) -> Self {
-                $mask { s: self.s, m: self.s.$or_m(self.m, o.m) }
-            }
-        }
+        lane_op!($mask, m: BitAnd bitand $and_m, BitOr bitor $or_m);
         impl<S: Simd> Not for $mask<S> {
             type Output = Self;
             #[inline(always)]
@@ -227,22 +225,6 @@ lanes!(
 );
 
 impl<S: Simd> F32s<S> {
-    /// The lanes of `slice` (exactly `S::F32_LANES` values).
-    #[inline(always)]
-    pub fn load(s: S, slice: &[f32]) -> Self {
-        F32s {
-            s,
-            v: pulp::bytemuck::pod_read_unaligned(pulp::bytemuck::cast_slice::<f32, u8>(slice)),
-        }
-    }
-
-    /// Writes the lanes to `slice` (exactly `S::F32_LANES` values).
-    #[inline(always)]
-    pub fn store(self, slice: &mut [f32]) {
-        pulp::bytemuck::cast_slice_mut::<f32, u8>(slice)
-            .copy_from_slice(pulp::bytemuck::bytes_of(&self.v));
-    }
-
     /// `self` times the power of two 2^(127 − e), e the biased exponent of `exp_of`:
     /// the integer half of [`crate::cull`]'s `rescaled` (exact). An infinite or NaN
     /// `exp_of` (e = 255) is taken as e = 254 (factor 2⁻¹²⁷ → 1: `self` unchanged), so the
@@ -273,40 +255,6 @@ impl<S: Simd> M32s<S> {
     pub fn splat(s: S, value: bool) -> Self {
         let zero = F32s::splat(s, 0.0);
         if value { zero.eq(zero) } else { zero.lt(zero) }
-    }
-
-    /// Bit i of the result is lane i (at most 64 lanes).
-    #[inline(always)]
-    pub fn bits(self) -> u64 {
-        lane_bits(&self.m, S::F32_LANES)
-    }
-}
-
-impl<S: Simd> F64s<S> {
-    /// The lanes of `slice` (exactly `S::F64_LANES` values).
-    #[inline(always)]
-    pub fn load(s: S, slice: &[f64]) -> Self {
-        F64s {
-            s,
-            v: pulp::bytemuck::pod_read_unaligned(pulp::bytemuck::cast_slice::<f64, u8>(slice)),
-        }
-    }
-}
-
-impl<S: Simd> F64s<S> {
-    /// Writes the lanes to `slice` (exactly `S::F64_LANES` values).
-    #[inline(always)]
-    pub fn store(self, slice: &mut [f64]) {
-        pulp::bytemuck::cast_slice_mut::<f64, u8>(slice)
-            .copy_from_slice(pulp::bytemuck::bytes_of(&self.v));
-    }
-}
-
-impl<S: Simd> M64s<S> {
-    /// Bit i of the result is lane i.
-    #[inline(always)]
-    pub fn bits(self) -> u64 {
-        lane_bits(&self.m, S::F64_LANES)
     }
 }
 

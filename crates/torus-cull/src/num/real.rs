@@ -130,11 +130,18 @@ pub fn sc_mask(b: bool) -> M64s<pulp::Scalar> {
     }
 }
 
-/// Trait methods `fn f(self, o: Self) -> Self` that are the lane type's own `f`.
+/// Trait methods `fn f(self, o: Self) -> Self` (or `-> $mask<S>`, the comparisons) that
+/// are the lane type's own `f`.
 macro_rules! forward {
     ($name:ident: $($f:ident),*) => {$(
         #[inline(always)]
         fn $f(self, o: Self) -> Self {
+            $name::$f(self, o)
+        }
+    )*};
+    ($name:ident => $mask:ident: $($f:ident),*) => {$(
+        #[inline(always)]
+        fn $f(self, o: Self) -> $mask<S> {
             $name::$f(self, o)
         }
     )*};
@@ -158,6 +165,20 @@ macro_rules! real {
                     self.any()
                 } else {
                     self.bits() == u64::MAX >> (64 - S::$lanes)
+                }
+            }
+        }
+
+        impl<S: Simd> $name<S> {
+            /// `f(self, o)` at width 1 (only there: the lanes are cast to one float), in the
+            /// float type's own operation, as the scalar solver's code computes it.
+            #[inline(always)]
+            fn one_lane(self, o: Self, f: impl FnOnce($elem, $elem) -> $elem) -> Self {
+                let (a, b): ($elem, $elem) =
+                    (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(o.v));
+                $name {
+                    s: self.s,
+                    v: pulp::bytemuck::cast(f(a, b)),
                 }
             }
         }
@@ -199,12 +220,7 @@ macro_rules! real {
                 if S::$lanes == 1 {
                     // The float type's own `min`, which the scalar code always used
                     // (it may differ from the select below in the sign of a zero).
-                    let (a, b): ($elem, $elem) =
-                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(o.v));
-                    $name {
-                        s: self.s,
-                        v: pulp::bytemuck::cast(a.min(b)),
-                    }
+                    self.one_lane(o, <$elem>::min)
                 } else {
                     self.min_num(o)
                 }
@@ -212,12 +228,7 @@ macro_rules! real {
             #[inline(always)]
             fn max(self, o: Self) -> Self {
                 if S::$lanes == 1 {
-                    let (a, b): ($elem, $elem) =
-                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(o.v));
-                    $name {
-                        s: self.s,
-                        v: pulp::bytemuck::cast(a.max(b)),
-                    }
+                    self.one_lane(o, <$elem>::max)
                 } else {
                     self.max_num(o)
                 }
@@ -226,36 +237,12 @@ macro_rules! real {
             #[inline(always)]
             fn copysign(self, sign: Self) -> Self {
                 if S::$lanes == 1 {
-                    let (a, b): ($elem, $elem) =
-                        (pulp::bytemuck::cast(self.v), pulp::bytemuck::cast(sign.v));
-                    $name {
-                        s: self.s,
-                        v: pulp::bytemuck::cast(a.copysign(b)),
-                    }
+                    self.one_lane(sign, <$elem>::copysign)
                 } else {
                     $name::copysign(self, sign)
                 }
             }
-            #[inline(always)]
-            fn lt(self, o: Self) -> $mask<S> {
-                $name::lt(self, o)
-            }
-            #[inline(always)]
-            fn le(self, o: Self) -> $mask<S> {
-                $name::le(self, o)
-            }
-            #[inline(always)]
-            fn gt(self, o: Self) -> $mask<S> {
-                $name::gt(self, o)
-            }
-            #[inline(always)]
-            fn ge(self, o: Self) -> $mask<S> {
-                $name::ge(self, o)
-            }
-            #[inline(always)]
-            fn eq(self, o: Self) -> $mask<S> {
-                $name::eq(self, o)
-            }
+            forward!($name => $mask: lt, le, gt, ge, eq);
             #[inline(always)]
             fn is_finite(self) -> $mask<S> {
                 $name::is_finite(self)
