@@ -2,6 +2,7 @@
 //! exactly, behind every batched cull and none, on tangent, hole, grazing and random rays.
 
 use super::{BATCHED, BatchCull, Dispatch, Wavefront};
+use crate::geometry::draw::dvec3_in;
 use crate::{DRay, Torus, intersect_all};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
@@ -71,16 +72,8 @@ fn intersect_all_on_drays_is_the_scalar_answer() {
         (1e-3, 0.25e-3),
         (500.0, 0.5),
     ] {
-        let center = DVec3::new(
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-        ) * big;
-        let axis = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
+        let center = dvec3_in(&mut rng, DVec3::splat(5.0)) * big;
+        let axis = dvec3_in(&mut rng, DVec3::splat(1.0));
         for torus in [
             Torus::new_f64(DVec3::ZERO, DVec3::Y, big, small).unwrap(),
             Torus::new_f64(center, axis, big, small).unwrap(),
@@ -88,11 +81,7 @@ fn intersect_all_on_drays_is_the_scalar_answer() {
             let mut rays = posed(&torus, &adversarial(big, small));
             for _ in 0..400 {
                 let s = 3.0 * (big + small);
-                let o = DVec3::new(
-                    rng.random_range(-s..s),
-                    rng.random_range(-s..s),
-                    rng.random_range(-s..s),
-                );
+                let o = dvec3_in(&mut rng, DVec3::splat(s));
                 let phi = rng.random_range(0.0..TAU);
                 let aim = DVec3::new(
                     big * phi.cos(),

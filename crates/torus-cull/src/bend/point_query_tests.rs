@@ -5,6 +5,7 @@
 //! bore, far away, at R from 10⁻³ to 10³. The sign against an independent inside test.
 
 use super::{BendFace, PipeBend};
+use crate::geometry::draw::dvec3_in;
 use crate::{NonFinitePoint, Torus};
 use glam::DVec3;
 use rand::{RngExt, SeedableRng};
@@ -259,18 +260,10 @@ fn points(spec: &Spec, rng: &mut Pcg64, random: usize) -> Vec<DVec3> {
             let r = rng.random_range(0.0..r0);
             pts.push(dir(phi) * (big + r * theta.cos()) + DVec3::Y * (r * theta.sin()));
         }
-        let far = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
+        let far = dvec3_in(rng, DVec3::splat(1.0));
         pts.push(far.normalize() * big * rng.random_range(10.0..1e3));
         let s = 1.5 * (big + r1);
-        pts.push(DVec3::new(
-            rng.random_range(-s..s),
-            rng.random_range(-s..s),
-            rng.random_range(-s..s),
-        ));
+        pts.push(dvec3_in(rng, DVec3::splat(s)));
     }
     pts
 }
@@ -414,11 +407,7 @@ fn the_whole_ring_without_bore_is_the_torus() {
         let mut pts = vec![to_world(DVec3::ZERO), to_world(DVec3::new(big, 0.0, 0.0))];
         for _ in 0..20_000 {
             let s = 2.0 * (big + small);
-            pts.push(to_world(DVec3::new(
-                rng.random_range(-s..s),
-                rng.random_range(-s..s),
-                rng.random_range(-s..s),
-            )));
+            pts.push(to_world(dvec3_in(&mut rng, DVec3::splat(s))));
         }
         for p in pts {
             let (want, got) = (

@@ -4,9 +4,10 @@
 
 use super::{BendError, BendFace, PipeBend};
 use crate::cull::NoCull;
+use crate::geometry::draw::{dvec3_in, vec3_in};
 use crate::{CullKind, DRay, Passage, Ray, Torus, intersect, intersect_all};
 use glam::{DVec3, Vec3};
-use rand::{RngExt, SeedableRng};
+use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, TAU};
 
@@ -36,16 +37,8 @@ fn the_whole_torus_answers_as_its_torus_bit_for_bit() {
     let torus = Torus::canonical(4.0, 1.0).unwrap();
     let bend = PipeBend::canonical(4.0, 0.0, 1.0, 0.0, TAU).unwrap();
     for _ in 0..20_000 {
-        let o = Vec3::new(
-            rng.random_range(-12.0..12.0),
-            rng.random_range(-12.0..12.0),
-            rng.random_range(-12.0..12.0),
-        );
-        let aim = Vec3::new(
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-5.0..5.0),
-        );
+        let o = vec3_in(&mut rng, Vec3::splat(12.0));
+        let aim = vec3_in(&mut rng, Vec3::new(5.0, 1.0, 5.0));
         let ray = Ray::new(o, aim - o).unwrap();
         let want = intersect(&torus, &ray);
         let got = bend.intersect(&ray);
@@ -153,16 +146,8 @@ fn rays_spawned_from_every_face_never_hit_their_origin() {
         let bend = PipeBend::canonical(30.0, rmin, 10.0, FRAC_PI_4, dphi).unwrap();
         let mut faces = [0usize; 4];
         for _ in 0..4000 {
-            let o = DVec3::new(
-                rng.random_range(-60.0..60.0),
-                rng.random_range(-30.0..30.0),
-                rng.random_range(-60.0..60.0),
-            );
-            let aim = DVec3::new(
-                rng.random_range(-40.0..40.0),
-                rng.random_range(-10.0..10.0),
-                rng.random_range(-40.0..40.0),
-            );
+            let o = dvec3_in(&mut rng, DVec3::new(60.0, 30.0, 60.0));
+            let aim = dvec3_in(&mut rng, DVec3::new(40.0, 10.0, 40.0));
             let ray = Ray::new(o.as_vec3(), (aim - o).as_vec3()).unwrap();
             let Some(hit) = bend.intersect(&ray) else {
                 continue;
@@ -197,16 +182,8 @@ fn the_wedge_cull_keeps_every_hit_and_rejects_the_cut_away_arc() {
         let bend = PipeBend::canonical(4.0, 0.5, 1.0, 0.3, dphi).unwrap();
         let (mut misses, mut rejected) = (0, 0);
         for _ in 0..20_000 {
-            let o = DVec3::new(
-                rng.random_range(-15.0..15.0),
-                rng.random_range(-15.0..15.0),
-                rng.random_range(-15.0..15.0),
-            );
-            let aim = DVec3::new(
-                rng.random_range(-5.0..5.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-5.0..5.0),
-            );
+            let o = dvec3_in(&mut rng, DVec3::splat(15.0));
+            let aim = dvec3_in(&mut rng, DVec3::new(5.0, 1.0, 5.0));
             let ray = Ray::new(o.as_vec3(), (aim - o).as_vec3()).unwrap();
             let hit = bend.intersect(&ray).is_some();
             for kind in CullKind::TIMED {
@@ -255,11 +232,7 @@ fn rays_from_the_caps_edges_never_hit_their_origin() {
                 let theta = TAU * k as f64 / 64.0;
                 let at = cap * (30.0 + r * theta.cos()) + DVec3::Y * r * theta.sin();
                 for _ in 0..16 {
-                    let dir = DVec3::new(
-                        rng.random_range(-1.0..1.0),
-                        rng.random_range(-1.0..1.0),
-                        rng.random_range(-1.0..1.0),
-                    );
+                    let dir = dvec3_in(&mut rng, DVec3::splat(1.0));
                     let ray = DRay::from_surface(at, dir).unwrap();
                     if let Some(next) = bend.intersect(&ray) {
                         hits += 1;

@@ -3,6 +3,7 @@
 
 use super::{Toroid, ToroidError, ToroidKind};
 use crate::cull::Shape;
+use crate::geometry::draw::{dvec3_in, vec3_in};
 use crate::{CullKind, DRay, Passage, Ray, Torus, intersect, intersect_all};
 use glam::{DVec3, Vec3};
 use rand::{RngExt, SeedableRng};
@@ -32,18 +33,8 @@ fn a_circular_ring_member_answers_as_its_torus_bit_for_bit() {
         assert_eq!(toroid.shape(), Shape::Ring);
         assert_eq!(toroid.as_torus().unwrap(), &torus);
         for i in 0..20_000 {
-            let o = center
-                + Vec3::new(
-                    rng.random_range(-3.0..3.0),
-                    rng.random_range(-3.0..3.0),
-                    rng.random_range(-3.0..3.0),
-                ) * (major + minor);
-            let aim = center
-                + Vec3::new(
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-0.3..0.3),
-                    rng.random_range(-1.0..1.0),
-                ) * (major + minor);
+            let o = center + vec3_in(&mut rng, Vec3::splat(3.0)) * (major + minor);
+            let aim = center + vec3_in(&mut rng, Vec3::new(1.0, 0.3, 1.0)) * (major + minor);
             let ray = if i % 3 == 0 {
                 let hit = intersect(&torus, &Ray::new(o, aim - o).unwrap());
                 match hit {
@@ -185,11 +176,7 @@ fn spawned_rays_leave_their_own_surface() {
     ] {
         let toroid = Toroid::canonical(major, a, b).unwrap();
         for _ in 0..2000 {
-            let o = DVec3::new(
-                rng.random_range(-4.0..4.0),
-                rng.random_range(-4.0..4.0),
-                rng.random_range(-4.0..4.0),
-            ) * (major + a);
+            let o = dvec3_in(&mut rng, DVec3::splat(4.0)) * (major + a);
             let aim = DVec3::new(
                 rng.random_range(-1.0..1.0),
                 0.0,
@@ -253,11 +240,7 @@ fn the_culls_keep_every_hit_of_the_shapes_they_accept() {
         let toroid = Toroid::canonical(major, a, b).unwrap();
         let size = major + a.max(b);
         for _ in 0..40_000 {
-            let dir = DVec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
+            let dir = dvec3_in(&mut rng, DVec3::splat(1.0));
             // Aimed at a point near the surface: ρ = R + a·cos θ, y = b·sin θ, pushed
             // by up to 10⁻³ either side.
             let theta: f64 = rng.random_range(0.0..std::f64::consts::TAU);

@@ -2,6 +2,8 @@
 //! torus computes once for its culls ([`CullBounds`]) and its exact path ([`Tube`]).
 
 mod bounds;
+#[cfg(test)]
+pub(crate) mod draw;
 mod point_query;
 pub(crate) mod ray;
 mod torus;

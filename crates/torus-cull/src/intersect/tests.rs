@@ -1,6 +1,7 @@
 //! The exact intersection's unit tests (moved out of mod.rs, which they outgrew).
 
 use super::*;
+use crate::geometry::draw::vec3_in;
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 
@@ -96,19 +97,11 @@ fn tangent_rays_in_random_poses_are_found() {
     // four (ρ − R ≈ s²/2R), so the inward-nudged hit is ⁴√-far: |t − 10| ≈ 0.095.
     let mut rng = Pcg64::seed_from_u64(0x7051_0010);
     for _ in 0..2000 {
-        let axis = Vec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
+        let axis = vec3_in(&mut rng, Vec3::splat(1.0));
         if axis.length() < 0.1 {
             continue;
         }
-        let center = Vec3::new(
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-            rng.random_range(-5.0..5.0),
-        );
+        let center = vec3_in(&mut rng, Vec3::splat(5.0));
         let torus = Torus::new(center, axis, 2.0, 0.5).unwrap();
         let phi = rng.random_range(0.0..std::f32::consts::TAU);
         let (sn, cs) = phi.sin_cos();
@@ -179,13 +172,7 @@ fn random_torus(rng: &mut Pcg64) -> Torus {
     let nu = rng.random_range(1.2..10.0);
     // A uniform axis by rejection from the unit ball (the harness's generators are not
     // part of the renderer build).
-    let mut cube = || {
-        Vec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        )
-    };
+    let mut cube = || vec3_in(rng, Vec3::splat(1.0));
     let axis = loop {
         let v = cube();
         if (0.01..=1.0).contains(&v.length_squared()) {
@@ -200,13 +187,7 @@ fn random_torus(rng: &mut Pcg64) -> Torus {
 /// point near the tube (|x|, |z| ≤ 1.5R, |y| ≤ 0.5R), unnormalized.
 fn aimed_at_the_tube(rng: &mut Pcg64, torus: &Torus, reach: f32) -> (Vec3, Vec3) {
     let big = torus.major_radius();
-    let mut offset = |x: f32, y: f32| {
-        Vec3::new(
-            rng.random_range(-x..x),
-            rng.random_range(-y..y),
-            rng.random_range(-x..x),
-        ) * big
-    };
+    let mut offset = |x: f32, y: f32| vec3_in(rng, Vec3::new(x, y, x)) * big;
     let o = torus.center() + offset(reach, reach);
     let target = torus.center() + offset(1.5, 0.5);
     (o, target - o)

@@ -2,6 +2,7 @@
 //! the hit's normal, and `point_at`'s finite differences.
 
 use super::*;
+use crate::geometry::draw::dvec3_in;
 use crate::{DRay, Ray, intersect};
 use glam::Vec3;
 use rand::{RngExt, SeedableRng};
@@ -22,16 +23,8 @@ fn random_tori(rng: &mut Pcg64) -> Vec<Torus> {
         (1e-3, 2e-4),
         (50.0, 20.0),
     ] {
-        let c = DVec3::new(
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-            rng.random_range(-3.0..3.0),
-        ) * big;
-        let axis = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
+        let c = dvec3_in(rng, DVec3::splat(3.0)) * big;
+        let axis = dvec3_in(rng, DVec3::splat(1.0));
         tori.push(Torus::new_f64(c, axis, big, small).unwrap());
     }
     tori
