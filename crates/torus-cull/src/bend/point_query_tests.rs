@@ -66,6 +66,18 @@ fn dir(phi: f64) -> DVec3 {
     DVec3::new(phi.cos(), 0.0, -phi.sin())
 }
 
+/// The eight neighbours of a grid cell (row, column offsets), in order.
+const NEIGHBOURS: [(i8, i8); 8] = [
+    (-1, -1),
+    (-1, 0),
+    (-1, 1),
+    (0, -1),
+    (0, 1),
+    (1, -1),
+    (1, 0),
+    (1, 1),
+];
+
 /// The least of `f` over `u ∈ [u0, u1]` and `v ∈ [v0, v1]` (clamped; or periodic with
 /// period 2π where `periodic`): a grid, then compass search from its local minima (the 8
 /// lowest).
@@ -92,21 +104,12 @@ fn grid_min(
         for j in 0..nv {
             let g = grid[i][j];
             let mut low = true;
-            for (a, b) in [
-                (-1, -1),
-                (-1, 0),
-                (-1, 1),
-                (0, -1),
-                (0, 1),
-                (1, -1),
-                (1, 0),
-                (1, 1),
-            ] {
-                let ii = (i as i64 + a).clamp(0, nu as i64 - 1) as usize;
+            for (a, b) in NEIGHBOURS {
+                let ii = (i as i64 + i64::from(a)).clamp(0, nu as i64 - 1) as usize;
                 let jj = if periodic {
-                    (j as i64 + b).rem_euclid(nv as i64)
+                    (j as i64 + i64::from(b)).rem_euclid(nv as i64)
                 } else {
-                    (j as i64 + b).clamp(0, nv as i64 - 1)
+                    (j as i64 + i64::from(b)).clamp(0, nv as i64 - 1)
                 } as usize;
                 low &= g <= grid[ii][jj];
             }
@@ -122,16 +125,8 @@ fn grid_min(
         let (mut su, mut sv) = (du, dv);
         for _ in 0..4000 {
             let mut moved = false;
-            for (a, b) in [
-                (-1.0, -1.0),
-                (-1.0, 0.0),
-                (-1.0, 1.0),
-                (0.0, -1.0),
-                (0.0, 1.0),
-                (1.0, -1.0),
-                (1.0, 0.0),
-                (1.0, 1.0),
-            ] {
+            for (a, b) in NEIGHBOURS {
+                let (a, b) = (f64::from(a), f64::from(b));
                 let (uu, vv) = ((u + a * su).clamp(u0, u1), clamp_v(v + b * sv));
                 let fv = f(uu, vv);
                 if fv < fb {

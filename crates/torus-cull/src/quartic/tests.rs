@@ -65,6 +65,11 @@ fn sorted(mut v: [f64; 4]) -> [f64; 4] {
     v
 }
 
+/// [`assert_roots`] on the quartic `k·∏(t − ρ)` of `roots`: the roots back, in order.
+fn assert_recovers(k: f64, roots: [f64; 4], tol: f64) {
+    assert_roots(from_roots(k, roots), &sorted(roots), tol);
+}
+
 /// Asserts the solver returns exactly `want` (sorted) with |err| ≤ tol·max(1, |root|).
 fn assert_roots(c: [f64; 5], want: &[f64], tol: f64) {
     let got = solve_quartic(c);
@@ -84,63 +89,23 @@ fn assert_roots(c: [f64; 5], want: &[f64], tol: f64) {
 
 #[test]
 fn distinct_roots() {
-    assert_roots(
-        from_roots(1.0, [1.0, 2.0, 3.0, 4.0]),
-        &[1.0, 2.0, 3.0, 4.0],
-        1e-13,
-    );
-    assert_roots(
-        from_roots(-3.0, [-2.5, 0.5, 0.0, 7.0]),
-        &[-2.5, 0.0, 0.5, 7.0],
-        1e-13,
-    );
-    assert_roots(
-        from_roots(1.0, [-1.0, -2.0, 1.0, 2.0]),
-        &[-2.0, -1.0, 1.0, 2.0],
-        1e-14,
-    );
+    assert_recovers(1.0, [1.0, 2.0, 3.0, 4.0], 1e-13);
+    assert_recovers(-3.0, [-2.5, 0.5, 0.0, 7.0], 1e-13);
+    assert_recovers(1.0, [-1.0, -2.0, 1.0, 2.0], 1e-14);
     // Large shift: roots clustered far from 0 (the depression cancels; polish repairs it).
-    assert_roots(
-        from_roots(1.0, [1000.0, 1001.0, 1002.0, 1003.0]),
-        &[1000.0, 1001.0, 1002.0, 1003.0],
-        1e-11,
-    );
+    assert_recovers(1.0, [1000.0, 1001.0, 1002.0, 1003.0], 1e-11);
 }
 
 #[test]
 fn double_roots() {
     // Double roots are ill-conditioned: error ~ √ε ≈ 1.5e-8, asserted at 1e-6.
-    assert_roots(
-        from_roots(1.0, [1.0, 1.0, 2.0, 3.0]),
-        &[1.0, 1.0, 2.0, 3.0],
-        1e-6,
-    );
-    assert_roots(
-        from_roots(1.0, [-1.0, 0.5, 3.0, 3.0]),
-        &[-1.0, 0.5, 3.0, 3.0],
-        1e-6,
-    );
-    assert_roots(
-        from_roots(2.0, [-4.0, 0.0, 0.0, 5.0]),
-        &[-4.0, 0.0, 0.0, 5.0],
-        1e-6,
-    );
+    assert_recovers(1.0, [1.0, 1.0, 2.0, 3.0], 1e-6);
+    assert_recovers(1.0, [-1.0, 0.5, 3.0, 3.0], 1e-6);
+    assert_recovers(2.0, [-4.0, 0.0, 0.0, 5.0], 1e-6);
     // Two double pairs, symmetric (the tangent-on-top torus case, q = 0) and not.
-    assert_roots(
-        from_roots(1.0, [-1.0, -1.0, 1.0, 1.0]),
-        &[-1.0, -1.0, 1.0, 1.0],
-        1e-12,
-    );
-    assert_roots(
-        from_roots(1.0, [-2.0, -2.0, 3.0, 3.0]),
-        &[-2.0, -2.0, 3.0, 3.0],
-        1e-6,
-    );
-    assert_roots(
-        from_roots(1.0, [0.3, 0.3, 1.7, 1.7]),
-        &[0.3, 0.3, 1.7, 1.7],
-        1e-6,
-    );
+    assert_recovers(1.0, [-1.0, -1.0, 1.0, 1.0], 1e-12);
+    assert_recovers(1.0, [-2.0, -2.0, 3.0, 3.0], 1e-6);
+    assert_recovers(1.0, [0.3, 0.3, 1.7, 1.7], 1e-6);
 }
 
 #[test]

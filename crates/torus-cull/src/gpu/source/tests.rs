@@ -39,30 +39,49 @@ fn hex_literals_are_exact() {
     assert_eq!(hex_f32(0.0), "0.0f");
 }
 
-#[test]
-fn every_shared_constant_comes_from_rust() {
-    let header = KernelConstants::CPU.header();
-    for (name, value) in [
-        ("SAFETY_REL", SAFETY_REL),
-        ("DISC_NEAR", DISC_NEAR as f32),
-        ("NEAR_DOUBLE", NEAR_DOUBLE as f32),
-        ("SMALL_ROOT", SMALL_ROOT as f32),
-        ("BRACKET", BRACKET as f32),
-        ("TRISECT_FIT_0", trisect::FIT[0] as f32),
-        ("TRISECT_FIT_5", trisect::FIT[5] as f32),
-        ("AXIS_PARALLEL_H2", AXIS_PARALLEL_H2),
-    ] {
-        let line = format!("const TC_{name}: f32 = {};", hex_f32(value));
+/// The header declares each `(name, value)` as `const TC_<name>: <ty> = <literal>;`.
+fn assert_declares<T: Copy>(
+    header: &str,
+    ty: &str,
+    literal: fn(T) -> String,
+    constants: &[(&str, T)],
+) {
+    for &(name, value) in constants {
+        let line = format!("const TC_{name}: {ty} = {};", literal(value));
         assert!(header.contains(&line), "{line} not in\n{header}");
     }
-    assert!(header.contains(&format!("const TC_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-    // The bodies declare none of them by hand (one source).
-    for line in MODULE_BODY.lines().chain(KERNEL_BODY.lines()) {
+}
+
+/// The bodies declare no constant by hand (one source: the generated header).
+fn assert_no_hand_written_constant(bodies: [&str; 2]) {
+    for line in bodies.iter().flat_map(|body| body.lines()) {
         assert!(
             !line.trim_start().starts_with("const "),
             "hand-written: {line}"
         );
     }
+}
+
+#[test]
+fn every_shared_constant_comes_from_rust() {
+    let header = KernelConstants::CPU.header();
+    assert_declares(
+        &header,
+        "f32",
+        hex_f32,
+        &[
+            ("SAFETY_REL", SAFETY_REL),
+            ("DISC_NEAR", DISC_NEAR as f32),
+            ("NEAR_DOUBLE", NEAR_DOUBLE as f32),
+            ("SMALL_ROOT", SMALL_ROOT as f32),
+            ("BRACKET", BRACKET as f32),
+            ("TRISECT_FIT_0", trisect::FIT[0] as f32),
+            ("TRISECT_FIT_5", trisect::FIT[5] as f32),
+            ("AXIS_PARALLEL_H2", AXIS_PARALLEL_H2),
+        ],
+    );
+    assert!(header.contains(&format!("const TC_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
+    assert_no_hand_written_constant([MODULE_BODY, KERNEL_BODY]);
 }
 
 /// The generated text parses and validates as WGSL (naga, as wgpu does), with the
@@ -321,30 +340,27 @@ fn the_f64_finish_pass_validates_and_takes_its_constants_from_rust() {
         assert_eq!(seen, declared, "every f64 constant read back");
     }
     let header = cpu.header();
-    for (name, value) in [
-        ("FIN_EPS", EPS),
-        ("FIN_EIGHT_EPS", 8.0 * EPS),
-        ("FIN_SIGN_SURE_EPS", SIGN_SURE * EPS),
-        ("FIN_TOUCH_EPS", TOUCH * EPS),
-        ("FIN_NEAR_DOUBLE", NEAR_DOUBLE),
-        ("FIN_DISC_NEAR", DISC_NEAR),
-        ("FIN_SMALL_ROOT", SMALL_ROOT),
-        ("FIN_POLISH_BELOW", POLISH_BELOW),
-        ("FIN_CHORD_SCALE", 1.0 + CHORD_SLACK),
-        ("FIN_OWN_ROOT_REACH", OWN_ROOT_REACH),
-        ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
-        ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
-    ] {
-        let line = format!("const TC_{name}: f64 = {};", literal_f64(value));
-        assert!(header.contains(&line), "{line} not in\n{header}");
-    }
+    assert_declares(
+        &header,
+        "f64",
+        literal_f64,
+        &[
+            ("FIN_EPS", EPS),
+            ("FIN_EIGHT_EPS", 8.0 * EPS),
+            ("FIN_SIGN_SURE_EPS", SIGN_SURE * EPS),
+            ("FIN_TOUCH_EPS", TOUCH * EPS),
+            ("FIN_NEAR_DOUBLE", NEAR_DOUBLE),
+            ("FIN_DISC_NEAR", DISC_NEAR),
+            ("FIN_SMALL_ROOT", SMALL_ROOT),
+            ("FIN_POLISH_BELOW", POLISH_BELOW),
+            ("FIN_CHORD_SCALE", 1.0 + CHORD_SLACK),
+            ("FIN_OWN_ROOT_REACH", OWN_ROOT_REACH),
+            ("FIN_TRISECT_FIT_0", trisect::FIT[0]),
+            ("FIN_TRISECT_HALF_RANGE", trisect::HALF_RANGE),
+        ],
+    );
     assert!(header.contains(&format!("const TC_FIN_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-    for line in FINISH_MODULE_BODY.lines().chain(FINISH_BODY.lines()) {
-        assert!(
-            !line.trim_start().starts_with("const "),
-            "hand-written: {line}"
-        );
-    }
+    assert_no_hand_written_constant([FINISH_MODULE_BODY, FINISH_BODY]);
 }
 
 /// Changing a Rust constant of the f64 path changes the f64 pass, in exactly that line.
