@@ -322,11 +322,7 @@ impl GpuIntersector {
         cull: GpuCull,
         rays: &[Ray],
     ) -> Result<Vec<F32Verdict>, GpuError> {
-        Ok(self
-            .explain(torus, cull, rays)?
-            .into_iter()
-            .map(|(v, _)| v)
-            .collect())
+        Ok(firsts(self.explain(torus, cull, rays)?))
     }
 
     /// [`GpuIntersector::intersect`] with, for each escalated ray, the step of the
@@ -505,11 +501,7 @@ impl GpuIntersector {
         cull: GpuCull,
         rays: &[Ray],
     ) -> Result<Vec<F32Hit>, GpuError> {
-        Ok(self
-            .intersect_finished_where(torus, cull, rays)?
-            .into_iter()
-            .map(|(hit, _)| hit)
-            .collect())
+        Ok(firsts(self.intersect_finished_where(torus, cull, rays)?))
     }
 
     /// [`GpuIntersector::intersect_finished`] with who answered each ray: the f32 kernel
@@ -668,4 +660,9 @@ impl GpuIntersector {
             .map_err(|e| GpuError::Readback(e.to_string()))?
             .map_err(|e| GpuError::Readback(e.to_string()))
     }
+}
+
+/// Each answer of `pairs` without what came with it (a diagnostic, who answered).
+fn firsts<A, B>(pairs: Vec<(A, B)>) -> Vec<A> {
+    pairs.into_iter().map(|(a, _)| a).collect()
 }
