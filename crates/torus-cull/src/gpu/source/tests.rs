@@ -265,6 +265,13 @@ fn the_f64_pass_is_the_f64_module_plus_its_bindings() {
     assert!(validate_f64(&format!("{module}\n{module}")).is_err());
 }
 
+/// The one line of `b` that differs from `a`'s (there must be exactly one).
+fn one_changed_line<'b>(a: &str, b: &'b str) -> &'b str {
+    let differing: Vec<(&str, &str)> = a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
+    assert_eq!(differing.len(), 1, "{differing:?}");
+    differing[0].1
+}
+
 /// Changing a Rust constant changes the kernel's text, in exactly that line.
 #[test]
 fn a_changed_constant_changes_the_kernel() {
@@ -275,13 +282,7 @@ fn a_changed_constant_changes_the_kernel() {
     };
     let (a, b) = (cpu.source(), changed.source());
     assert_ne!(a, b);
-    let differing: Vec<(&str, &str)> = a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
-    assert_eq!(differing.len(), 1, "{differing:?}");
-    assert!(
-        differing[0]
-            .1
-            .starts_with("const TC_SAFETY_REL: f32 = 0x1.000000p-11f;")
-    );
+    assert!(one_changed_line(&a, &b).starts_with("const TC_SAFETY_REL: f32 = 0x1.000000p-11f;"));
     let seed = KernelConstants {
         cbrt_seed: cpu.cbrt_seed + 1,
         ..cpu
@@ -372,9 +373,10 @@ fn a_changed_constant_changes_the_f64_pass() {
         ..cpu
     };
     let (a, b) = (cpu.source(), changed.source());
-    let differing: Vec<(&str, &str)> = a.lines().zip(b.lines()).filter(|(x, y)| x != y).collect();
-    assert_eq!(differing.len(), 1, "{differing:?}");
-    assert_eq!(differing[0].1, "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;");
+    assert_eq!(
+        one_changed_line(&a, &b),
+        "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;"
+    );
     assert_eq!(finish_source(), a);
 }
 
