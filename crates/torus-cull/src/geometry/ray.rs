@@ -336,12 +336,7 @@ impl<P: Precision> Ray<P> {
     /// assert!(Ray::new(Vec3::ZERO, Vec3::splat(1e20)).is_err()); // |d|² overflows
     /// ```
     pub fn new(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
-        Ray::with_range(
-            origin,
-            dir,
-            <P::Float as Scalar>::ZERO,
-            <P::Float as Scalar>::INFINITY,
-        )
+        Ray::with_range(origin, dir, P::Float::ZERO, P::Float::INFINITY)
     }
 
     /// A ray over `t ∈ [t_min, t_max]`.
@@ -417,12 +412,7 @@ impl<P: Precision> Ray<P> {
     /// [`Ray::literal`] on every other one: a neighbour that touches the origin's shape
     /// (interlocked links) would otherwise report a crossing the line does not have.
     pub fn from_surface(origin: P, dir: P) -> Result<Ray<P>, RayError<P>> {
-        Ray::from_surface_with_range(
-            origin,
-            dir,
-            <P::Float as Scalar>::ZERO,
-            <P::Float as Scalar>::INFINITY,
-        )
+        Ray::from_surface_with_range(origin, dir, P::Float::ZERO, P::Float::INFINITY)
     }
 
     /// [`Ray::from_surface`] over `t ∈ [t_min, t_max]`: the nearest crossing in the range
