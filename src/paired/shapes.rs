@@ -11,8 +11,7 @@ use super::stats::{QUIET_FRACTION, RatioEstimate, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use crate::workload::box_rays::box_rays;
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use torus_cull::Ray;
 
 /// One paired ratio of a shape's timing.
@@ -126,19 +125,6 @@ pub fn shape_records<S: TimedShape>(
         );
     }
     Ok(records)
-}
-
-/// One timed pass of `hit` over `rays`, the hits counted into a `black_box` so that no
-/// ray's work can be dropped; inlined into each caller's own monomorphized pass.
-#[inline(always)]
-pub fn timed_pass(rays: &[Ray], mut hit: impl FnMut(&Ray) -> bool) -> Duration {
-    let start = Instant::now();
-    let mut hits = 0usize;
-    for ray in black_box(rays) {
-        hits += usize::from(hit(ray));
-    }
-    black_box(hits);
-    start.elapsed()
 }
 
 /// A contender against a reference, by index into the contenders, with their names.
