@@ -607,6 +607,10 @@ const ALLOWED: &[(&str, &str)] = &[
         "removed; restored by the git show beside it",
     ),
     (
+        "results/0b97d73.json",
+        "removed; restored by the git show beside it",
+    ),
+    (
         "results/gpu-device-<UTC",
         "the folder benches/gpu_device.sh writes, named by the time of the run",
     ),
