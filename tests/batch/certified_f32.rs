@@ -97,18 +97,8 @@ fn generators_and_families_never_miss() {
 }
 
 fn unit(rng: &mut rand_pcg::Pcg64) -> glam::DVec3 {
-    use rand::RngExt;
-    loop {
-        let v = glam::DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        let l = v.length();
-        if l > 0.1 && l <= 1.0 {
-            return v / l;
-        }
-    }
+    // |v| > 0.1: the lab's rejection-sampled direction.
+    torus_cull_lab::random::ball_direction(rng, 0.01)
 }
 
 /// Scales from 1e-3 to 1e3, origins from 1.5 to 250·(R + r), at random poses; and
