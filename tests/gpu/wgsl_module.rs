@@ -216,6 +216,7 @@ fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
     );
     let mut failures = Vec::new();
     let (mut total, mut total_device) = (0, 0);
+    let clock = std::time::Instant::now();
     for (name, sets) in escalating_families(2) {
         let (mut rays_n, mut device, mut host, mut lib_device, mut lib_host) = (0, 0, 0, 0, 0);
         let (mut differ, mut missed, mut invented, mut same_who) = (0, 0, 0, 0);
@@ -294,7 +295,9 @@ fn the_f64_shader_gives_the_librarys_finished_answers_on_the_adapter() {
              device {lib_device:>4} host {lib_host}; same who {same_who}, differ {differ}, \
              both hit {both_hit} (same t bits {same_t}, worst |Δt|·|d| \
              {worst_vs_library:.1e}·(R+r)); vs f64 path missed {missed} invented \
-             {invented}, worst device t vs CPU {worst_vs_cpu:.1e}"
+             {invented}, worst device t vs CPU {worst_vs_cpu:.1e} ({} tori, {:.1} s in)",
+            sets.len(),
+            clock.elapsed().as_secs_f64()
         );
         if differ + missed + invented > 0 || host > lib_host {
             failures.push(format!(

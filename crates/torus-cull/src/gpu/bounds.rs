@@ -37,7 +37,7 @@ pub(crate) fn kernel_bounds(rr: f32) -> CullBounds {
     CullBounds::with_margin(1.0, rr, gpu_margin(rr))
 }
 
-/// The bounds as three rows of the kernel's uniform block (`Params.bounds_*`).
+/// The bounds as three rows of the kernel's parameter block (`Params.bounds_*`).
 pub(crate) fn bounds_rows(b: &CullBounds) -> [[f32; 4]; 3] {
     [
         [b.outer_safe, b.outer_safe_sq, b.minor_safe, b.minor_safe_sq],

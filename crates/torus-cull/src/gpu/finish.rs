@@ -32,7 +32,7 @@
 //! escalated, far origins and rays from surface points included, is finished on the
 //! device.
 //!
-//! **Buffers** (one bind group, four storage buffers and the kernel's uniform block):
+//! **Buffers** (one bind group, four storage buffers and the kernel's parameter block):
 //! the world rays as the caller gave them, `(o, t_min)` and `(d, t_max)` as f32 with the
 //! range clipped to where the bounding sphere can be (32 bytes a ray); the f32 kernel's
 //! records (read); the torus in f64 (centre, the rotation's columns, R, 1/R, r/R,
@@ -157,7 +157,7 @@ impl FinishPipeline {
             "torus-cull f64 finish",
             super::finish_source(),
             &[
-                B::Uniform,
+                B::Storage { read_only: true },
                 B::Storage { read_only: true },
                 B::Storage { read_only: true },
                 B::Storage { read_only: true },
@@ -171,7 +171,7 @@ impl FinishPipeline {
         Ok(FinishPipeline { pipeline, layout })
     }
 
-    /// The pass's buffers for `rays` rays a dispatch, bound beside the kernel's uniform
+    /// The pass's buffers for `rays` rays a dispatch, bound beside the kernel's parameter
     /// block `params` and result buffer `verdicts`.
     pub(crate) fn buffers(
         &self,

@@ -1,4 +1,4 @@
-//! The frame: the torus as the kernel's uniform block ([`Frame`], its params) and a ray
+//! The frame: the torus as the kernel's parameter block ([`Frame`], its params) and a ray
 //! packed for the kernel ([`Frame::prepare`], [`Frame::pack`]): the centre subtracted in
 //! f64, far origins moved to their foot point, surface rays with their cubic formed in f64
 //! (and started past their own root where the cubic proves nothing).
@@ -18,7 +18,7 @@ const FAR_REL: f64 = 1_048_576.0;
 /// point on the host, in f64, before the kernel sees them (see [`Frame::pack`]).
 const REBASE_REL: f64 = 2.0;
 
-/// The torus as the kernel's uniform block, and what packing a ray needs of it (f64).
+/// The torus as the kernel's parameter block, and what packing a ray needs of it (f64).
 pub(crate) struct Frame {
     torus: Torus,
     rows: [Vec3; 3],
@@ -142,7 +142,7 @@ impl Frame {
         packed
     }
 
-    /// The uniform block: the torus ([`Frame::torus_params`]); the count, the cull, the
+    /// The parameter block: the torus ([`Frame::torus_params`]); the count, the cull, the
     /// mode, and whether the kernel reads the surface records.
     pub(crate) fn params(&self, count: u32, cull: GpuCull, mode: Mode, surfaces: bool) -> Vec<u8> {
         let mut bytes = Vec::with_capacity(PARAMS_BYTES as usize);
@@ -229,7 +229,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_uniform_block_has_its_size() {
+    fn the_parameter_block_has_its_size() {
         let torus = Torus::canonical(4.0, 1.0).unwrap();
         let frame = Frame::of(&torus);
         let bytes = frame.params(7, GpuCull::Skala, Mode::CullOnly, false);

@@ -77,7 +77,7 @@ pub struct GpuIntersector {
     pub(crate) workgroup: u32,
 }
 
-/// The uniform block, the rays, their surface records, the results and their staging
+/// The parameter block, the rays, their surface records, the results and their staging
 /// copy, for up to `rays` rays a dispatch.
 pub(crate) struct Buffers {
     pub(crate) rays: usize,
@@ -169,7 +169,7 @@ impl GpuIntersector {
             "torus-cull",
             source,
             &[
-                B::Uniform,
+                B::Storage { read_only: true },
                 B::Storage { read_only: true },
                 B::Storage { read_only: false },
                 B::Storage { read_only: true },
@@ -240,7 +240,7 @@ impl GpuIntersector {
             (
                 "torus-cull params",
                 PARAMS_BYTES,
-                Use::UNIFORM | Use::COPY_DST,
+                Use::STORAGE | Use::COPY_DST,
             ),
             ("torus-cull rays", size, Use::STORAGE | Use::COPY_DST),
             (
@@ -401,7 +401,7 @@ impl GpuIntersector {
         Ok(())
     }
 
-    /// One dispatch of up to [`CHUNK`] packed rays with the uniform block `params`:
+    /// One dispatch of up to [`CHUNK`] packed rays with the parameter block `params`:
     /// upload, run, read back; one record `(t, n.xyz, code, why, 0, 0)` per ray.
     pub(crate) fn dispatch(
         &self,
@@ -582,7 +582,7 @@ impl GpuIntersector {
 }
 
 /// Uploads the surface records of `packed` where any ray has one; whether it did (the
-/// uniform block's `config.w`, [`Frame::params`]).
+/// parameter block's `config.w`, [`Frame::params`]).
 pub(crate) fn upload_surfaces(gpu: &GpuIntersector, buffers: &Buffers, packed: &[Packed]) -> bool {
     let any = packed.iter().any(Packed::has_surface);
     if any {

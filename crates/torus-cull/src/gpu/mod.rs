@@ -67,7 +67,7 @@
 //! reads both answers back.
 //!
 //! **The host, by part.** `cull.rs` ([`GpuCull`]), `wire.rs` (the bytes of a ray and a
-//! result record, the codes), `frame.rs` (the torus as the uniform block, a ray prepared
+//! result record, the codes), `frame.rs` (the torus as the parameter block, a ray prepared
 //! and packed), `intersector.rs` ([`GpuIntersector`]: device, pipelines, dispatch),
 //! `escalation.rs` ([`Escalation`], [`Finished`], [`FinishCounts`]), `finish.rs` (the f64
 //! pass), `module.rs` (the includable module's host side), `source.rs` (the WGSL text),

@@ -310,7 +310,7 @@ mod tests {
         Torus::new(Vec3::new(1.0, 2.0, 3.0), Vec3::new(0.2, 1.0, 0.1), 4.0, 1.0).unwrap()
     }
 
-    /// `TorusParams` is the kernel's uniform block less its `config` row.
+    /// `TorusParams` is the kernel's parameter block less its `config` row.
     #[test]
     fn the_params_are_the_kernels_block() {
         let t = torus();

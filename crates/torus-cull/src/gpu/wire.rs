@@ -1,5 +1,5 @@
 //! The wire format between the host and the kernel: the bytes of a ray and of a result
-//! record, the uniform block's size, the result codes and the kernel's mode.
+//! record, the parameter block's size, the result codes and the kernel's mode.
 
 /// Bytes per ray, in and out: two `vec4<f32>` each.
 pub(crate) const RAY_BYTES: u64 = 32;
@@ -16,7 +16,7 @@ pub(crate) const SURFACE_CUBIC: f32 = 1.0;
 /// The cubic, and the literal start in `start.z` to fall back on.
 pub(crate) const SURFACE_CUBIC_AND_START: f32 = 2.0;
 
-/// Size of the uniform block (`Params` in the kernel): eight 16-byte rows, the module's
+/// Size of the parameter block (`Params` in the kernel): eight 16-byte rows, the module's
 /// `TorusParams` (seven) and the kernel's `config`.
 pub(crate) const PARAMS_BYTES: u64 = 128;
 

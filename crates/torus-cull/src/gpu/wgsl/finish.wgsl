@@ -13,12 +13,13 @@
 // mirrors: finish_main -> crate::gpu::intersector::GpuIntersector::dispatch_with (the f64 pass)
 
 struct Params {
-    // The f32 kernel's uniform block: only config.x (rays in this dispatch) is read.
+    // The f32 kernel's parameter block: only config.x (rays in this dispatch) is read.
     torus: array<vec4<f32>, 7>,
     config: vec4<u32>,
 };
 
-@group(0) @binding(0) var<uniform> params: Params;
+// Storage, as in kernel.wgsl (lavapipe recompiles a kernel per change of an inlined uniform).
+@group(0) @binding(0) var<storage, read> params: Params;
 @group(0) @binding(1) var<storage, read> world: array<TorusWorldRay>;
 // The f32 kernel's records: (t, n.xyz) and (code, why, 0, 0).
 @group(0) @binding(2) var<storage, read> verdicts: array<vec4<f32>>;

@@ -15,7 +15,11 @@ struct Params {
     config: vec4<u32>,
 };
 
-@group(0) @binding(0) var<uniform> params: Params;
+// A read-only storage buffer, not a uniform one: Mesa's lavapipe inlines uniform values
+// that steer control flow (the cull, the mode, the count) and recompiles the whole kernel
+// whenever they change, about 0.1 s a dispatch, which made per-torus dispatches 500× slower
+// there. Every ray reads the same 128 bytes, which any GPU caches either way.
+@group(0) @binding(0) var<storage, read> params: Params;
 // TorusRay: (origin − centre, t_min) and (dir, t_max), both ends finite.
 @group(0) @binding(1) var<storage, read> rays: array<TorusRay>;
 @group(0) @binding(2) var<storage, read_write> results: array<vec4<f32>>;
