@@ -8,3 +8,5 @@ mod common;
 
 mod api_bit_patterns;
 mod layout;
+mod package;
+mod rust_version;

@@ -31,12 +31,15 @@
 //!
 //! ```toml
 //! [dependencies]
-//! torus-cull = { git = "…", default-features = false }
+//! # From a clone of the repository, beside your project (the crate is not yet on crates.io):
+//! torus-cull = { path = "../torus-cull/crates/torus-cull", default-features = false }
+//! # Once published, the same line reads:
+//! # torus-cull = { version = "0.1", default-features = false }
 //! ```
 //!
 //! The geometry, each cull's bound and soundness argument, the floating-point margin, the
-//! supported range and the seed paper's errata are written up in the repository's
-//! `docs/math.md`.
+//! supported range and the seed paper's errata are written up in `docs/math.md`, which
+//! ships in this package with the project's other pages (`docs/`).
 //!
 //! ```
 //! use torus_cull::{Cull, Ray, SkalaCull, Torus, intersect};
