@@ -277,6 +277,72 @@ impl Accum {
     }
 }
 
+/// The flags (or workload fields) that give a class's ν, Δφ and r_min/r_max, for
+/// [`refuse_class`]'s messages: `("--nu", "--delta-phi", "--bore-ratio")`.
+pub type ClassNames<'a> = (&'a str, &'a str, &'a str);
+
+/// Why the class `(nu, delta, ratio)` is one the check cannot build, before any work:
+/// its bend at every scale of [`SCALES`] is built (the library decides, at the poses'
+/// own radii), and a refusal names the flags of `names` and the allowed range. ν is
+/// `1 < nu <= MAX_NU`; with a bore, the bore's torus needs `R/r_min <= MAX_NU`, so
+/// `ratio >= nu/MAX_NU`, and the wall needs `r_max − r_min >= MIN_WALL_REL·(R + r_max)`,
+/// so `ratio <= 1 − MIN_WALL_REL·(nu + 1)`.
+pub fn refuse_class((nu, delta, ratio): (f64, f64, f64), names: ClassNames) -> Result<(), String> {
+    use torus_cull::MAX_NU;
+    use torus_cull::bend::{BendError, MIN_WALL_REL};
+    let (nu_name, delta_name, ratio_name) = names;
+    if !(nu.is_finite() && nu > 1.0 && nu <= MAX_NU) {
+        return Err(format!(
+            "{nu_name} {nu} is invalid (allowed: 1 < {nu_name} <= {MAX_NU})"
+        ));
+    }
+    let lo = nu / MAX_NU;
+    let hi = 1.0 - MIN_WALL_REL * (nu + 1.0);
+    let ratios = if lo <= hi {
+        format!("0, or {lo} <= {ratio_name} <= 1 - {MIN_WALL_REL:e}*(nu + 1) = {hi}")
+    } else {
+        format!("0 only (a bore needs nu/1000 = {lo} <= {ratio_name}, which leaves no wall)")
+    };
+    for scale in SCALES {
+        let spec = Spec::canonical(nu * scale, ratio * scale, scale, 0.0, delta);
+        match spec.bend() {
+            Ok(_) => {}
+            Err(BendError::Segment { .. }) => {
+                return Err(format!(
+                    "{delta_name} {delta} is invalid (allowed: 0 < {delta_name} <= 2*pi = {TAU})"
+                ));
+            }
+            Err(BendError::Bore { .. }) => {
+                return Err(format!(
+                    "{ratio_name} {ratio} is invalid (allowed: 0 <= {ratio_name} < 1)"
+                ));
+            }
+            Err(BendError::ThinWall { .. }) => {
+                return Err(format!(
+                    "{ratio_name} {ratio} at {nu_name} {nu} leaves a wall r_max - r_min = \
+                     {:e}*r_max, thinner than {MIN_WALL_REL:e}*(R + r_max), the thinnest the \
+                     bend is tested at (allowed at {nu_name} {nu}: {ratio_name} {ratios})",
+                    1.0 - ratio
+                ));
+            }
+            Err(BendError::Torus { which: "bore", .. }) => {
+                return Err(format!(
+                    "{ratio_name} {ratio} at {nu_name} {nu} gives the bore's torus nu = R/r_min \
+                     = {} (allowed: at most {MAX_NU}, so at {nu_name} {nu}: {ratio_name} {ratios})",
+                    nu / ratio
+                ));
+            }
+            Err(e) => {
+                return Err(format!(
+                    "{nu_name} {nu}, {delta_name} {delta}, {ratio_name} {ratio} at r_max = \
+                     {scale}: {e}"
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Rays `first..first + count` of class `(nu, delta, ratio)` in pose `pose`.
 fn check_pose(
     (nu, delta, ratio): (f64, f64, f64),
@@ -284,14 +350,17 @@ fn check_pose(
     pose: usize,
     (first, count): (usize, usize),
     seed: u64,
-) -> Accum {
+) -> Result<Accum, String> {
     let mut rng = rays::rng(
         seed ^ (class as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15)
             ^ (pose as u64 + 1).wrapping_mul(0xD1B5_4A32_D192_ED03),
     );
     let scale = SCALES[pose % SCALES.len()];
     let spec = Spec::canonical(nu * scale, ratio * scale, scale, 0.0, delta).posed(&mut rng);
-    let bend = spec.bend();
+    // The classes passed `refuse_class` at these radii; a pose moves and turns them only.
+    let bend = spec
+        .bend()
+        .map_err(|e| format!("{}: {spec:?}: {e}", class_label((nu, delta, ratio))))?;
     let whole = Spec {
         bore: 0.0,
         delta: TAU,
@@ -342,7 +411,7 @@ fn check_pose(
             acc.why.push(why);
         }
     }
-    acc
+    Ok(acc)
 }
 
 /// The whole outer torus is hit, its segment (without the bore) missed.
@@ -363,13 +432,19 @@ pub struct Checked {
 /// Every class of `all` ([`classes`]), `rays` rays each, on `threads` threads (the
 /// counts do not depend on it: each pose draws from its own seed); `progress(done, all)`
 /// in poses.
+///
+/// # Errors
+///
+/// A class whose bend the library refuses ([`refuse_class`] says which flag, before any
+/// work; here, the first pose refused, should a pose's bend be refused all the same).
 pub fn check(
     rays: usize,
     seed: u64,
     all: &[(f64, f64, f64)],
     threads: usize,
     progress: &(dyn Fn(usize, usize) + Sync),
-) -> Checked {
+) -> Result<Checked, String> {
+    let refused: Mutex<Option<String>> = Mutex::new(None);
     let poses = rays.div_ceil(POSE_RAYS);
     let jobs: Vec<(usize, usize)> = (0..all.len())
         .flat_map(|c| (0..poses).map(move |p| (c, p)))
@@ -385,13 +460,20 @@ pub fn check(
                     let Some(&(c, p)) = jobs.get(j) else { break };
                     let first = p * POSE_RAYS;
                     let count = POSE_RAYS.min(rays - first);
-                    let acc = check_pose(all[c], c, p, (first, count), seed);
-                    accums[c].lock().expect("no worker panicked").add(acc);
+                    match check_pose(all[c], c, p, (first, count), seed) {
+                        Ok(acc) => accums[c].lock().expect("no worker panicked").add(acc),
+                        Err(e) => {
+                            refused.lock().expect("no worker panicked").get_or_insert(e);
+                        }
+                    }
                     progress(done.fetch_add(1, Ordering::Relaxed) + 1, jobs.len());
                 }
             });
         }
     });
+    if let Some(e) = refused.into_inner().expect("no worker panicked") {
+        return Err(e);
+    }
     let mut records = Vec::with_capacity(all.len());
     let mut disagreements = Vec::new();
     for (&(nu, delta, ratio), acc) in all.iter().zip(accums) {
@@ -416,8 +498,8 @@ pub fn check(
         disagreements.extend(acc.why.into_iter().map(|w| (record.label(), w)));
         records.push(record);
     }
-    Checked {
+    Ok(Checked {
         records,
         disagreements,
-    }
+    })
 }

@@ -11,7 +11,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use std::f64::consts::TAU;
 use torus_cull::DRay;
-use torus_cull::bend::PipeBend;
+use torus_cull::bend::{BendError, PipeBend};
 
 /// A bend's parameters (the library's argument order).
 #[derive(Debug, Clone, Copy)]
@@ -66,8 +66,8 @@ impl Spec {
         self.major + self.tube
     }
 
-    /// The library's solid (panics on parameters it refuses).
-    pub fn bend(&self) -> PipeBend {
+    /// The library's solid, or the library's reason for refusing these parameters.
+    pub fn bend(&self) -> Result<PipeBend, BendError> {
         PipeBend::new_f64(
             self.center,
             self.axis,
@@ -78,7 +78,6 @@ impl Spec {
             self.start,
             self.delta,
         )
-        .unwrap_or_else(|e| panic!("{self:?}: {e}"))
     }
 
     /// The oracle's question for `ray` (its origin, direction and range).

@@ -6,6 +6,7 @@ use crate::console::out;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use torus_cull::MAX_NU;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
 use torus_cull_lab::workload::bend_spec::{bore_ratio_ok, delta_phi_ok};
 use torus_cull_lab::workload::spec::Workload;
@@ -23,15 +24,17 @@ pub struct BendArgs {
     /// The seed every pose draws its bend and rays from.
     #[arg(long, default_value_t = 20261128)]
     seed: u64,
-    /// ν = R/r_max of the classes, comma-separated (each finite, > 1).
+    /// ν = R/r_max of the classes, comma-separated (each 1 < ν <= 1000; with a bore
+    /// ratio > 0, ν <= 1000·ratio, the bore's torus's own ν = ν/ratio at most 1000).
     #[arg(long, value_delimiter = ',', default_value = "4")]
     nu: Vec<f64>,
     /// The segments Δφ of the classes in radians, comma-separated (each 0 < Δφ <= 2π;
     /// default 2π, π, π/2, π/6).
     #[arg(long = "delta-phi", value_delimiter = ',', allow_hyphen_values = true)]
     delta_phi: Vec<f64>,
-    /// r_min/r_max of the classes, comma-separated (each 0 <= ratio < 1; default 0, 0.5,
-    /// 0.9).
+    /// r_min/r_max of the classes, comma-separated (each 0, or ν/1000 <= ratio <= 1 −
+    /// 10⁻⁷·(ν + 1): the bore's torus's ν at most 1000, the wall r_max − r_min at least
+    /// 10⁻⁷·(R + r_max), the thinnest tested; default 0, 0.5, 0.9).
     #[arg(long = "bore-ratio", value_delimiter = ',', allow_hyphen_values = true)]
     bore_ratio: Vec<f64>,
     /// A workload file (or `quick`/`default`) whose `bend` key names the classes and the
@@ -66,6 +69,10 @@ pub fn run(args: BendArgs) -> CliResult {
                 )
             })?;
             let classes = bend_check::classes(&spec.nu, &spec.delta_phi, &spec.bore_ratio);
+            for &class in &classes {
+                bend_check::refuse_class(class, ("bend.nu", "bend.delta_phi", "bend.bore_ratio"))
+                    .map_err(|e| format!("--workload {}: {e}", file.display()))?;
+            }
             (classes, spec.rays, workload.seed)
         }
         None => (flag_classes(&args)?, args.rays, args.seed),
@@ -81,7 +88,7 @@ pub fn run(args: BendArgs) -> CliResult {
     );
     let checked = bend_check::check(rays, seed, &classes, threads, &|done, all| {
         heartbeat.update(done as u64, all as u64);
-    });
+    })?;
     out!("{}", bend_check::table(&checked.records))?;
     let failed: Vec<String> = checked
         .records
@@ -113,8 +120,14 @@ pub fn run(args: BendArgs) -> CliResult {
 /// The classes of --nu, --delta-phi and --bore-ratio (their defaults where not given),
 /// each value checked against its range.
 fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
-    if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
-        return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)"));
+    if let Some(nu) = args
+        .nu
+        .iter()
+        .find(|nu| !(nu.is_finite() && **nu > 1.0 && **nu <= MAX_NU))
+    {
+        return Err(format!(
+            "--nu {nu} is invalid (allowed: 1 < --nu <= {MAX_NU})"
+        ));
     }
     if let Some(d) = args.delta_phi.iter().find(|d| !delta_phi_ok(**d)) {
         return Err(format!(
@@ -133,9 +146,15 @@ fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
             given.to_vec()
         }
     };
-    Ok(bend_check::classes(
+    let classes = bend_check::classes(
         &args.nu,
         &or(&args.delta_phi, &bend_check::DELTAS),
         &or(&args.bore_ratio, &bend_check::RATIOS),
-    ))
+    );
+    // Each class's bend is built before any work: a bore ratio the library refuses at
+    // some ν (the bore's own ν above 1000, a wall below the thinnest tested) names both.
+    for &class in &classes {
+        bend_check::refuse_class(class, ("--nu", "--delta-phi", "--bore-ratio"))?;
+    }
+    Ok(classes)
 }

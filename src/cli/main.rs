@@ -156,7 +156,9 @@ enum Command {
         /// of the torus family (--exact f64 only).
         #[arg(long = "axial", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         axial: Option<f32>,
-        /// A pipe bend's bore r_min, 0 <= r_min < r (default 0): with --bore, --phi-start
+        /// A pipe bend's bore r_min: 0, or R/1000 <= r_min <= r - 1e-7·(R + r), the bore's
+        /// torus's ν at most 1000 and the wall no thinner than tested (default 0): with
+        /// --bore, --phi-start
         /// or --delta-phi the rows are answered for the solid of a pipe bend (centre 0,
         /// axis +y, φ = 0 along +x, φ growing toward −z) whose outer tube is --minor: its
         /// nearest crossing of any face, the torus culls on its outer torus, and the bend

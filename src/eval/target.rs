@@ -75,7 +75,12 @@ impl Target {
                 start.unwrap_or(0.0),
                 delta.unwrap_or(std::f64::consts::TAU),
             )
-            .map_err(|e| EvalError::Bend(bend_flag_error(&e)))?;
+            .map_err(|e| {
+                EvalError::Bend(bend_flag_error(
+                    &e,
+                    (f64::from(major), bore.unwrap_or(0.0), f64::from(minor)),
+                ))
+            })?;
             if bend.as_torus().is_err() {
                 return Ok(Target::Bend(Box::new(bend)));
             }
@@ -256,10 +261,26 @@ fn bend_query(bend: &PipeBend, ray: &DRay) -> BendQuery {
     )
 }
 
-/// A bend's error with the flags that gave the values.
-fn bend_flag_error(e: &torus_cull::bend::BendError) -> String {
-    use torus_cull::bend::BendError;
+/// A bend's error with the flags that gave the values (R, r_min and r_max as the bend
+/// took them).
+fn bend_flag_error(
+    e: &torus_cull::bend::BendError,
+    (major, bore, minor): (f64, f64, f64),
+) -> String {
+    use torus_cull::bend::{BendError, MIN_WALL_REL};
+    use torus_cull::{MAX_NU, TorusError};
     match e {
+        BendError::Torus {
+            which: "bore",
+            error: TorusError::TooThin { .. },
+        } => format!(
+            "--bore {bore} gives the bore's torus nu = --major/--bore = {} above {MAX_NU} \
+             (allowed: --bore 0, or --major/{MAX_NU} = {} <= --bore <= --minor - \
+             {MIN_WALL_REL:e}*(--major + --minor) = {})",
+            major / bore,
+            major / MAX_NU,
+            minor - MIN_WALL_REL * (major + minor)
+        ),
         BendError::Bore {
             bore_radius,
             tube_radius,
@@ -277,6 +298,17 @@ fn bend_flag_error(e: &torus_cull::bend::BendError) -> String {
                 std::f64::consts::TAU
             )
         }
+        BendError::ThinWall {
+            bore_radius,
+            tube_radius,
+            max_bore_radius,
+        } => format!(
+            "--bore {bore_radius} leaves a wall --minor - --bore = {:e}, thinner than \
+             {:e}*(--major + --minor), the thinnest a pipe bend is tested at (allowed: \
+             --bore 0, or 0 < --bore <= {max_bore_radius})",
+            tube_radius - bore_radius,
+            torus_cull::bend::MIN_WALL_REL
+        ),
         other => format!("--major/--minor/--bore: {other}"),
     }
 }

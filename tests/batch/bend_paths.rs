@@ -40,7 +40,7 @@ fn f32_and_lanes_give_the_solids_answer() {
                 for scale in [1e-3, 1.0, 1e3] {
                     let spec = Spec::canonical(nu * scale, ratio * scale, scale, 0.3, delta)
                         .posed(&mut rng);
-                    let bend = spec.bend();
+                    let bend = spec.bend().unwrap();
                     let cut = usize::from(bend.as_torus().is_err());
                     let mut rays64 = Vec::new();
                     for kind in RayKind::ALL {

@@ -2,9 +2,10 @@
 //! `compare` of two bend files; `eval` on a pipe bend's solid.
 
 use super::support::{
-    arg, assert_ok, cli, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused, stderr,
-    svgs, temp_path, torus_cull,
+    arg, assert_ok, cli, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused,
+    refused_at_once, stderr, svgs, temp_path, torus_cull,
 };
+use std::time::Instant;
 
 #[test]
 fn bend_check_at_a_tiny_size_is_clean() {
@@ -228,6 +229,15 @@ fn bad_bend_values_name_the_flag_and_the_range() {
             &["--bore", "0.5", "--exact", "gpu"],
             ["--exact gpu", "pipe bend"],
         ),
+        // Issue 52: the bore's own ν above 1000, and a wall below 10⁻⁷·(R + r_max).
+        (
+            &["--bore", "0.001"],
+            ["--bore 0.001", "0.004 <= --bore <= --minor"],
+        ),
+        (
+            &["--bore", "0.9999999"],
+            ["--bore 0.9999999", "0 < --bore <= 0.9999995"],
+        ),
     ] {
         let mut args = vec!["--major", "4", "--minor", "1"];
         args.extend_from_slice(extra);
@@ -325,5 +335,80 @@ fn bend_takes_its_classes_from_flags_or_a_workload_file() {
             err.contains("bends.json") && err.contains(expect),
             "{bend}: {err}"
         );
+    }
+}
+
+/// Issue 52: classes whose bend the library refuses (the bore's torus's ν above 1000,
+/// ν above 1000, a wall below 10⁻⁷·(R + r_max)) are refused before any work, exit 2,
+/// naming the flags and the range (they panicked at `Spec::bend`, exit 101); a workload
+/// file's names its fields. The issue's thin wall (10⁻⁶·r_max at ν = 4) is accepted and
+/// clean.
+#[test]
+fn bend_refuses_classes_it_cannot_build_before_any_work() {
+    let (dir, path) = temp_path("b.json");
+    let p = arg(&path);
+    for (args, needles) in [
+        (
+            &["--nu", "1000"][..],
+            &[
+                "--bore-ratio 0.5 at --nu 1000",
+                "nu = R/r_min = 2000",
+                "--bore-ratio 0 only",
+            ][..],
+        ),
+        (
+            &["--nu", "501"],
+            &["--bore-ratio 0.5 at --nu 501", "0.501 <= --bore-ratio <= "],
+        ),
+        (
+            &["--bore-ratio", "0.001"],
+            &[
+                "--bore-ratio 0.001 at --nu 4",
+                "nu = R/r_min = 4000",
+                "0.004 <= --bore-ratio",
+            ],
+        ),
+        (&["--nu", "1001"], &["--nu 1001", "1 < --nu <= 1000"]),
+        (
+            &["--bore-ratio", "0.9999999"],
+            &[
+                "--bore-ratio 0.9999999 at --nu 4",
+                "thinner than 1e-7*(R + r_max)",
+                "<= 1 - 1e-7*(nu + 1) = 0.9999995",
+            ],
+        ),
+    ] {
+        let mut all = vec!["bend", "--rays", "100", "--no-plots", "--out", p];
+        all.extend_from_slice(args);
+        let started = Instant::now();
+        let out = torus_cull(&all);
+        refused_at_once(&out, started, needles);
+        assert!(!path.exists(), "{args:?}: a file was written");
+    }
+    let workload = dir.path().join("bends.json");
+    std::fs::write(
+        &workload,
+        r#"{"name":"b","seed":1,"cases":["hole"],"nu":[2],"rays":1,"bend":{"nu":[4],"delta_phi":[1.0],"bore_ratio":[0.001],"rays":100}}"#,
+    )
+    .unwrap();
+    let started = Instant::now();
+    let out = cli(
+        "bend --workload {} --no-plots --out {}",
+        &[arg(&workload), p],
+    );
+    refused_at_once(
+        &out,
+        started,
+        &["bends.json", "bend.bore_ratio 0.001 at bend.nu 4"],
+    );
+    // The thin wall of the issue, and the thinnest at ν = 4, pass the check.
+    for ratio in ["0.999999", "0.9999995"] {
+        cli_ok(
+            "bend --bore-ratio {} --delta-phi 1 --rays 700 --no-plots --out {}",
+            &[ratio, p],
+        );
+        let file = read_json(&path);
+        assert_eq!(file["classes"][0]["exact"]["missed"], 0);
+        assert_eq!(file["classes"][0]["exact"]["wrong_value"], 0);
     }
 }

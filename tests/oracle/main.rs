@@ -24,3 +24,4 @@ mod point_queries;
 mod properties;
 mod saddle_rays;
 mod secondary_rays;
+mod thin_wall;

@@ -116,14 +116,28 @@ pub(super) struct OwnFaces {
 pub(super) fn own_faces(bend: &PipeBend, x: DVec3) -> OwnFaces {
     let size = bend.major_radius_f64() + bend.tube_radius_f64();
     let reach = FACE_REACH * size;
+    // A torus face's reach is at most a quarter of the wall: a point of one face of a
+    // thin wall lies a wall's thickness from the other, and taking both as its own would
+    // divide out the other face's root too (a ray from the bore across a wall of
+    // 10⁻⁶·r_max then missed its exit at t ≈ 10⁻⁶). With the wall at least
+    // `MIN_WALL_REL`·S (10⁻⁷·S) the reach stays above 2.5·10⁻⁸·S, far above a hit
+    // point's rounding.
+    let torus_reach = match bend.inner {
+        Some(_) => reach.min(0.25 * (bend.tube_radius_f64() - bend.bore_radius_f64())),
+        None => reach,
+    };
     let mut faces = [false; 4];
     let mut point = x;
     // A point within reach of a torus face is off the axis and the core circle (R > r),
-    // where the projection is the unique closest point.
+    // where the projection is the unique closest point. Of the two tori, the nearer (the
+    // reach already keeps them apart; the nearer is the one a rounding leaves it by).
+    let mut nearest = f64::INFINITY;
     for (i, torus) in [(0, Some(bend.outer)), (1, bend.inner)] {
         let Some(torus) = torus else { continue };
         let (on, _, signed_distance) = torus.tube().project(x);
-        if signed_distance.abs() <= reach {
+        if signed_distance.abs() <= torus_reach && signed_distance.abs() < nearest {
+            nearest = signed_distance.abs();
+            faces = [false; 4];
             faces[i] = true;
             point = on;
         }

@@ -37,7 +37,7 @@ mod wedge;
 pub use crossings::{BendCrossing, BendCrossings, BendHit};
 pub use f32::BendF32Hit;
 pub use point_query::BendProjection;
-pub use solid::{BendError, BendFace, PipeBend};
+pub use solid::{BendError, BendFace, MIN_WALL_REL, PipeBend};
 pub use wedge::WedgeCull;
 
 #[cfg(test)]

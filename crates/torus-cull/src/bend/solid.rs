@@ -6,6 +6,19 @@ use glam::DVec3;
 use std::f64::consts::TAU;
 use std::fmt;
 
+/// The thinnest wall a pipe bend takes, × (R + r_max): `r_max − r_min ≥ MIN_WALL_REL·(R +
+/// r_max)` for a bend with a bore.
+///
+/// Why a floor, and why relative to S = R + r_max: every length the solid's answers and
+/// their checks resolve scales with S. A marked origin's face is found within
+/// 10⁻⁶·S (at most a quarter of the wall, so the other face of the wall is never the
+/// origin's), the bend oracle marks faces within 10⁻⁸·S, holds answers to 10⁻⁹·S and its
+/// own error to 10⁻¹¹·S. A wall of 10⁻⁷·S is ten times the oracle's reach and a hundred
+/// times its tolerance, and the thin-wall tests (`tests/oracle/thin_wall.rs`) check every
+/// wall from 10⁻² down to it; a thinner wall is one no test tells apart from a sheet.
+/// At R/r_max = 4 that is r_min/r_max ≤ 1 − 5·10⁻⁷, at R/r_max = 1000 ≤ 1 − 1.001·10⁻⁴.
+pub const MIN_WALL_REL: f64 = 1e-7;
+
 /// A face of a pipe bend's boundary.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum BendFace {
@@ -74,6 +87,16 @@ pub enum BendError {
         /// r_max as given.
         tube_radius: f64,
     },
+    /// The wall `r_max − r_min` is thinner than [`MIN_WALL_REL`]`·(R + r_max)`, the
+    /// thinnest wall the tests hold the solid to (docs/bend.md, "Thin walls").
+    ThinWall {
+        /// r_min as given.
+        bore_radius: f64,
+        /// r_max as given.
+        tube_radius: f64,
+        /// The largest r_min accepted: `r_max − MIN_WALL_REL·(R + r_max)`.
+        max_bore_radius: f64,
+    },
     /// `start_phi` is not finite, or `delta_phi` is not in `(0, 2π]`.
     Segment {
         /// The parameter's name.
@@ -104,6 +127,17 @@ impl fmt::Display for BendError {
             } => write!(
                 f,
                 "bore_radius = {bore_radius} is invalid (allowed: 0 <= bore_radius < tube_radius = {tube_radius})"
+            ),
+            BendError::ThinWall {
+                bore_radius,
+                tube_radius,
+                max_bore_radius,
+            } => write!(
+                f,
+                "bore_radius = {bore_radius} leaves a wall tube_radius - bore_radius = {} thinner \
+                 than {MIN_WALL_REL:e}*(major_radius + tube_radius) (allowed: bore_radius = 0, \
+                 or 0 < bore_radius <= {max_bore_radius})",
+                tube_radius - bore_radius
             ),
             BendError::Segment { name, value } => write!(
                 f,
@@ -149,6 +183,17 @@ impl PipeBend {
             return Err(BendError::Bore {
                 bore_radius,
                 tube_radius,
+            });
+        }
+        let max_bore_radius = tube_radius - MIN_WALL_REL * (major_radius + tube_radius);
+        // The floor less a relative 10⁻⁶: the wall's difference and a caller's own
+        // `r_max·(1 − MIN_WALL_REL·(ν + 1))` round, and the bound itself must pass.
+        let floor = MIN_WALL_REL * (major_radius + tube_radius) * (1.0 - 1e-6);
+        if bore_radius > 0.0 && tube_radius - bore_radius < floor {
+            return Err(BendError::ThinWall {
+                bore_radius,
+                tube_radius,
+                max_bore_radius,
             });
         }
         let inner = if bore_radius > 0.0 {
