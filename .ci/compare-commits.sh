@@ -60,7 +60,9 @@ grep -q "records compared" "$tmp/step.log" || { cat "$tmp/step.log"; fail "compa
 
 for side in old new; do
   want=${!side}
-  got=$(sed -n 's/^ *"commit": "\([0-9a-f]*\)",$/\1/p' "$tmp/bench-compare/$side.json")
+  # Read as JSON (the files are compact, one line), not grepped.
+  got=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["meta"]["commit"])' \
+    "$tmp/bench-compare/$side.json")
   [ "$got" = "$want" ] || fail "$side.json has meta.commit '$got', its bench was built at $want"
 done
 echo "compare-commits: ok (OLD $old, NEW $new)"

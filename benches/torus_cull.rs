@@ -523,6 +523,15 @@ fn bench() -> Result<ExitCode, String> {
     results.meta.sizes = Some(sizes(&setup, complete, &timed_nus, bvh_spec.as_ref()));
     results.save(&path).map_err(|e| e.to_string())?;
     report(&results, &path, complete, registered.len());
+    if complete {
+        // The file to commit (issue 53): the records the docs quote, as `torus-cull
+        // summarize` writes them. The line does not end in `.json`, so that scripts reading
+        // the full file's `wrote …` line (.ci/bench-safety.sh) find one.
+        let to = torus_cull_lab::summary::default_path(&path);
+        let summary = torus_cull_lab::summary::summarize(&results, &path.display().to_string());
+        summary.save(&to).map_err(|e| e.to_string())?;
+        println!("wrote {} (the summary to commit)", to.display());
+    }
     if !false_rejects.is_empty() {
         eprintln!(
             "error: {} false rejects in the rejection sweep: {:?}",

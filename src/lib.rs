@@ -42,4 +42,5 @@ pub mod results_file;
 pub mod scene;
 pub mod scene_kind;
 pub mod solver_suite;
+pub mod summary;
 pub mod workload;

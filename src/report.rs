@@ -153,6 +153,7 @@ pub fn ratio_tables(results: &Results) -> String {
                 "bend_total_ns" => "pipe bend total (cull or wedge + exact intersection)",
                 "bvh_closest_ns" => "BVH closest-hit (camera rays, cull at the leaves)",
                 "bvh_anyhit_ns" => "BVH any-hit (shadow rays, cull at the leaves)",
+                "bvh_bounce_ns" => "BVH closest-hit of bounce rays (diffuse, from the camera hits)",
                 "bvh_batched_ns" => "BVH batched leaves (wavefront per torus)",
                 other => other,
             };

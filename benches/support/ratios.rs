@@ -32,7 +32,7 @@ pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
 }
 
 /// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
-/// `bvh_batched_ns`) on the same units: the bench's scenes at each of its ν, the scenes it
+/// `bvh_bounce_ns`, `bvh_batched_ns`) on the same units: the bench's scenes at each of its ν, the scenes it
 /// lacks and the torus family's at ν = 4, in [`BenchConfig::bvh_seconds`] over
 /// [`BenchConfig::bvh_runs`] runs (the README's BVH line quotes a bench).
 pub fn bvh(

@@ -2,7 +2,7 @@
 //! exit 1 on a regression.
 
 use super::CliResult;
-use crate::console::out;
+use crate::console::{out, outln};
 use std::path::Path;
 use std::process::ExitCode;
 use torus_cull_lab::compare::{self, Report, coverage};
@@ -32,6 +32,12 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
     let pair = format!("{} vs {}", old.display(), new.display());
     let report = match (&a, &b) {
         (ResultsFile::Results(a), ResultsFile::Results(b)) => {
+            // A summary against a full file: the full file's summary, as summarize writes it.
+            let (a, b, summarized) = torus_cull_lab::summary::alike(a, b);
+            if summarized {
+                outln!("one file is a summary (meta.summary_of): comparing the records it keeps")?;
+            }
+            let (a, b) = (a.as_ref(), b.as_ref());
             compare::check_unique(a).map_err(|e| format!("{}: {e}", old.display()))?;
             compare::check_unique(b).map_err(|e| format!("{}: {e}", new.display()))?;
             compare::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
@@ -100,6 +106,13 @@ pub fn intervals(runs: &[std::path::PathBuf]) -> CliResult {
                 .into());
             }
         }
+    }
+    // With a summary among them, every file as its summary: the records they all keep.
+    if loaded.iter().any(|r| r.meta.summary_of.is_some()) {
+        loaded = loaded
+            .iter()
+            .map(|r| torus_cull_lab::summary::summarize(r, ""))
+            .collect();
     }
     let names: Vec<String> = runs.iter().map(|p| p.display().to_string()).collect();
     let report = coverage::coverage(&loaded, &names)?;

@@ -21,6 +21,7 @@ mod gpu_info;
 mod plot;
 mod render;
 mod run;
+mod summarize;
 mod threads;
 mod time;
 
@@ -91,6 +92,16 @@ enum Command {
         /// written back to back (benches/honest_intervals.sh makes three).
         #[arg(required = true, num_args = 2..)]
         runs: Vec<PathBuf>,
+    },
+    /// Write the summary of a full results file (a `cargo bench` one): the records the docs
+    /// quote (headline ratios with their intervals, the rejection, solver, BVH and timing
+    /// tables, the metadata), small enough to commit. `compare` and `intervals` read it.
+    Summarize {
+        /// The full results JSON.
+        full: PathBuf,
+        /// Where to write the summary (default: FULL's name with `-summary`, beside it).
+        #[arg(long)]
+        out: Option<PathBuf>,
     },
     /// Render a many-torus scene and its cull map (PNG).
     Render {
@@ -258,6 +269,7 @@ fn main() -> ExitCode {
             seed,
         } => render::render(&scene, nu, &out, size, tori, seed),
         Command::Intervals { runs } => compare::intervals(&runs),
+        Command::Summarize { full, out } => summarize::summarize(&full, out.as_deref()),
         Command::Compare {
             old,
             new,

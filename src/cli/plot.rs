@@ -113,13 +113,14 @@ pub(crate) fn write_plots(
     })
 }
 
-/// Writes a check command's file to `path`: `file` as pretty JSON and a newline, a regular
+/// Writes a check command's file to `path`: `file` as compact JSON (one line, as results
+/// files are; see `Results::save`) and a newline, a regular
 /// file replaced atomically (a temp file, then renamed); then says so.
 pub(crate) fn write_check_file(
     path: &Path,
     file: &impl serde::Serialize,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let mut text = serde_json::to_string_pretty(file)?;
+    let mut text = serde_json::to_string(file)?;
     text.push('\n');
     torus_cull_lab::output::write_file(path, text.as_bytes())
         .map_err(|e| format!("--out {}: {e}", path.display()))?;

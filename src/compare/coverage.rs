@@ -425,6 +425,7 @@ mod tests {
         for (metric, reference) in [
             ("bvh_closest_ns", "none"),
             ("bvh_anyhit_ns", "none"),
+            ("bvh_bounce_ns", "none"),
             ("bvh_batched_ns", "none"),
             ("family_total_ns", "cychosz"),
             ("bend_total_ns", "cychosz"),

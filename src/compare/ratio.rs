@@ -283,6 +283,7 @@ pub(super) mod tests {
                 threads: None,
                 os: None,
                 device: None,
+                summary_of: None,
             },
             rejection: Vec::new(),
             timing,

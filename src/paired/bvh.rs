@@ -10,6 +10,11 @@
 //! - **any-hit** (`bvh_anyhit_ns`): one shadow ray per camera hit to the scene's light
 //!   ([`crate::scene::rays`]) through [`Scene::occluded_spawned`], stopping at the first
 //!   blocker;
+//! - **bounce** (`bvh_bounce_ns`): one diffuse bounce per camera hit
+//!   ([`crate::scene::rays::bounce_rays`], cosine-weighted about the normal on the side the
+//!   ray came from) through [`Scene::trace_spawned`], closest hit: the secondary rays a
+//!   path tracer spends most of its rays on, which start on a surface, so that their own
+//!   torus's foot point and range differ from a camera ray's (issue 53);
 //! - **batched leaves** (`bvh_batched_ns`): the camera rays through
 //!   [`crate::scene::LeafBatcher`] (every leaf candidate collected, then the wavefront torus
 //!   by torus), for each cull with a batch form.
@@ -17,7 +22,7 @@
 //! With [`BvhTiming::family`], one more unit: the torus family's shapes
 //! ([`FamilyScene`]: rings, elliptical tubes, horn and spindle tori, whole and cut pipe
 //! bends, each cull applied by the shape's own rule), timed closest-hit and any-hit (it
-//! has no batched form), recorded as the scene `family`.
+//! has no batched form), recorded as the scene `family`, with its bounce rays too.
 //!
 //! Each ratio is a cull's time over `none`'s and over `cychosz`'s under the same metric;
 //! a batched cull is also timed over its own scalar closest-hit traversal (reference
@@ -34,7 +39,7 @@ use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use crate::scene::family::FamilyScene;
-use crate::scene::rays::{Spawned, Surfaces, light, shadow_rays};
+use crate::scene::rays::{Spawned, Surfaces, bounce_rays, light, shadow_rays};
 use crate::scene::{LeafBatcher, Scene, SceneHit, SceneKind, TraceStats, same_hit};
 use crate::workload::CameraView;
 use glam::{DVec3, Vec3};
@@ -49,10 +54,12 @@ use torus_cull::{Cull, CullKind, CullVisitor, Named, NoCull, Ray};
 pub const BVH_CLOSEST: &str = "bvh_closest_ns";
 /// The any-hit (shadow ray) traversal's metric.
 pub const BVH_ANYHIT: &str = "bvh_anyhit_ns";
+/// The bounce rays' closest-hit traversal's metric.
+pub const BVH_BOUNCE: &str = "bvh_bounce_ns";
 /// The batched leaves' metric.
 pub const BVH_BATCHED: &str = "bvh_batched_ns";
 /// The BVH metrics, in table order.
-pub const BVH_METRICS: [&str; 3] = [BVH_CLOSEST, BVH_ANYHIT, BVH_BATCHED];
+pub const BVH_METRICS: [&str; 4] = [BVH_CLOSEST, BVH_ANYHIT, BVH_BOUNCE, BVH_BATCHED];
 /// The reference of a batched cull timed over its own scalar closest-hit traversal.
 pub const SCALAR_REFERENCE: &str = "scalar";
 
@@ -100,7 +107,7 @@ pub struct BvhTiming {
     pub seed: u64,
     /// Culls at the leaves (`none` and `cychosz` are timed in any case).
     pub culls: Vec<CullKind>,
-    /// Camera rays per timed pass (and at most as many shadow rays).
+    /// Camera rays per timed pass (and at most as many shadow rays, and bounce rays).
     pub rays: usize,
     /// Seconds in all, shared by the runs.
     pub seconds: f64,
@@ -172,6 +179,14 @@ impl UnitScene {
     }
 
     #[inline]
+    fn trace_spawned<C: Cull>(&self, cull: &C, s: &Spawned, stats: &mut TraceStats) -> SceneHit {
+        match self {
+            UnitScene::Tori(scene) => scene.trace_spawned(cull, s, stats),
+            UnitScene::Family(scene, _) => scene.trace_spawned(cull, s, stats),
+        }
+    }
+
+    #[inline]
     fn occluded_spawned<C: Cull>(&self, cull: &C, s: &Spawned, stats: &mut TraceStats) -> bool {
         match self {
             UnitScene::Tori(scene) => scene.occluded_spawned(cull, s, stats),
@@ -208,6 +223,7 @@ struct Unit {
     scene: UnitScene,
     camera: Vec<Ray>,
     shadow: Vec<Spawned>,
+    bounce: Vec<Spawned>,
     /// Its contenders (the family's scene has no batched leaves).
     lineup: Lineup,
     /// The batched leaves' buffers, kept from pass to pass as a renderer keeps them.
@@ -218,8 +234,8 @@ struct Unit {
 /// and contender.
 type Planned = (CullKind, &'static str, usize, Vec<(String, usize)>);
 
-/// The contenders of a unit: the culls' closest-hit passes, their any-hit passes, then
-/// the batched culls' passes.
+/// The contenders of a unit: the culls' closest-hit passes, their any-hit passes, their
+/// bounce passes, then the batched culls' passes.
 struct Lineup {
     culls: Vec<CullKind>,
     batched: Vec<BatchCull>,
@@ -243,7 +259,7 @@ impl Lineup {
     }
 
     fn len(&self) -> usize {
-        2 * self.culls.len() + self.batched.len()
+        3 * self.culls.len() + self.batched.len()
     }
 
     fn closest(&self, k: CullKind) -> usize {
@@ -257,10 +273,14 @@ impl Lineup {
         self.culls.len() + self.closest(k)
     }
 
+    fn bounce(&self, k: CullKind) -> usize {
+        2 * self.culls.len() + self.closest(k)
+    }
+
     fn batched(&self, k: CullKind) -> Option<usize> {
         let b = k.batched()?;
         let i = self.batched.iter().position(|&c| c == b)?;
-        Some(2 * self.culls.len() + i)
+        Some(3 * self.culls.len() + i)
     }
 
     /// (cull, metric, contender, [(reference name, reference contender)]) of every record.
@@ -280,6 +300,10 @@ impl Lineup {
         for &k in &self.culls {
             let anyhit = |c| Some(self.anyhit(c));
             out.push((k, BVH_ANYHIT, self.anyhit(k), against(&anyhit, k)));
+        }
+        for &k in &self.culls {
+            let bounce = |c| Some(self.bounce(c));
+            out.push((k, BVH_BOUNCE, self.bounce(k), against(&bounce, k)));
         }
         for &k in &self.culls {
             if let Some(i) = self.batched(k) {
@@ -328,8 +352,8 @@ pub fn time_bvh(
     combine_runs(&runs).map_err(BvhTimingError::Runs)
 }
 
-/// Every scene × ν (and the family's scene), built afresh, with its camera and shadow
-/// rays; checks that every cull gives `none`'s answers on them.
+/// Every scene × ν (and the family's scene), built afresh, with its camera, shadow and
+/// bounce rays; checks that every cull gives `none`'s answers on them.
 fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
     let scene_error = |e: crate::scene::SceneError| BvhTimingError::Scene(e.to_string());
     let mut scenes = Vec::new();
@@ -344,10 +368,10 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
     }
     let mut units = Vec::new();
     for scene in scenes {
-        let (camera, shadow) = unit_rays(&scene, timing.rays);
+        let (camera, shadow, bounce) = unit_rays(&scene, timing.rays, timing.seed);
         let lineup = Lineup::new(&timing.culls, matches!(scene, UnitScene::Tori(_)));
         for &cull in &lineup.culls {
-            if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow)) {
+            if let Some(e) = cull.visit(Agree(&scene, &camera, &shadow, &bounce)) {
                 let (name, nu) = scene.label();
                 return Err(BvhTimingError::Mismatch(format!(
                     "{} {name} nu={nu}: {e}",
@@ -359,6 +383,7 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
             scene,
             camera,
             shadow,
+            bounce,
             lineup,
             batcher: RefCell::new(LeafBatcher::new()),
         });
@@ -366,9 +391,10 @@ fn build_units(timing: &BvhTiming) -> Result<Vec<Unit>, BvhTimingError> {
     Ok(units)
 }
 
-/// `n` camera rays (every 4th of an image of about 4n pixels) and one shadow ray per hit
-/// of the whole image, evenly strided down to at most `n`.
-fn unit_rays(scene: &UnitScene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
+/// `n` camera rays (every 4th of an image of about 4n pixels), and one shadow ray and one
+/// diffuse bounce (drawn from `seed`) per hit of the whole image, each evenly strided down
+/// to at most `n`.
+fn unit_rays(scene: &UnitScene, n: usize, seed: u64) -> (Vec<Ray>, Vec<Spawned>, Vec<Spawned>) {
     let side = ((4 * n.max(1)) as f64).sqrt().ceil() as usize;
     let image = scene.camera_rays(side);
     let hits: Vec<_> = image
@@ -380,17 +406,20 @@ fn unit_rays(scene: &UnitScene, n: usize) -> (Vec<Ray>, Vec<Spawned>) {
     let shadow = shadow_rays(scene, &image, &hits, light(scene), 1.0);
     let stride = shadow.len().div_ceil(n.max(1)).max(1);
     let shadow = shadow.into_iter().step_by(stride).collect();
-    (camera, shadow)
+    let bounce = bounce_rays(scene, &image, &hits, seed, 1.0);
+    let stride = bounce.len().div_ceil(n.max(1)).max(1);
+    let bounce = bounce.into_iter().step_by(stride).collect();
+    (camera, shadow, bounce)
 }
 
 /// Whether a cull at the leaves answers as `none` does on a unit's rays: `None`, or the
 /// first ray that differs.
-struct Agree<'a>(&'a UnitScene, &'a [Ray], &'a [Spawned]);
+struct Agree<'a>(&'a UnitScene, &'a [Ray], &'a [Spawned], &'a [Spawned]);
 
 impl CullVisitor for Agree<'_> {
     type Output = Option<String>;
     fn visit<C: Cull>(self, cull: C) -> Option<String> {
-        let (scene, camera, shadow) = (self.0, self.1, self.2);
+        let (scene, camera, shadow, bounce) = (self.0, self.1, self.2, self.3);
         let mut stats = TraceStats::default();
         for ray in camera {
             let (a, b) = (
@@ -410,6 +439,15 @@ impl CullVisitor for Agree<'_> {
                 return Some(format!("any-hit {s:?}: {a} vs none {b}"));
             }
         }
+        for s in bounce {
+            let (a, b) = (
+                scene.trace_spawned(&cull, s, &mut stats),
+                scene.trace_spawned(&NoCull, s, &mut stats),
+            );
+            if !same_hit(a, b) {
+                return Some(format!("bounce {s:?}: {a:?} vs none {b:?}"));
+            }
+        }
         None
     }
 }
@@ -422,8 +460,10 @@ fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
         lineup.culls[i].visit(Closest(&unit.scene, &unit.camera))
     } else if i < 2 * n {
         lineup.culls[i - n].visit(AnyHit(&unit.scene, &unit.shadow))
+    } else if i < 3 * n {
+        lineup.culls[i - 2 * n].visit(Bounce(&unit.scene, &unit.bounce))
     } else {
-        let cull = lineup.batched[i - 2 * n];
+        let cull = lineup.batched[i - 3 * n];
         let UnitScene::Tori(scene) = &unit.scene else {
             unreachable!("the family's lineup has no batched contender")
         };
@@ -472,6 +512,25 @@ impl CullVisitor for AnyHit<'_> {
     }
 }
 
+/// A timed closest-hit pass over bounce rays, monomorphized per cull: [`Closest`]'s loop
+/// through the spawned rays' traversal.
+struct Bounce<'a>(&'a UnitScene, &'a [Spawned]);
+
+impl CullVisitor for Bounce<'_> {
+    type Output = Duration;
+    #[inline(never)]
+    fn visit<C: Cull>(self, cull: C) -> Duration {
+        let start = Instant::now();
+        let mut stats = TraceStats::default();
+        let mut hits = 0usize;
+        for s in black_box(self.1) {
+            hits += usize::from(self.0.trace_spawned(&cull, s, &mut stats).is_some());
+        }
+        black_box((hits, stats));
+        start.elapsed()
+    }
+}
+
 /// Appends one unit's records of one run, from its quiet rounds.
 fn push_records(
     records: &mut Vec<RatioRecord>,
@@ -484,10 +543,10 @@ fn push_records(
     let pick = |i: usize| quiet.iter().map(|&k| r.ns[i][k]).collect::<Vec<f64>>();
     let (scene, nu) = unit.scene.label();
     for (cull, metric, contender, references) in lineup.records() {
-        let rays = if metric == BVH_ANYHIT {
-            unit.shadow.len()
-        } else {
-            unit.camera.len()
+        let rays = match metric {
+            BVH_ANYHIT => unit.shadow.len(),
+            BVH_BOUNCE => unit.bounce.len(),
+            _ => unit.camera.len(),
         };
         for (reference, reference_index) in references {
             let bootstrap_seed = seed ^ (records.len() as u64 + 1).wrapping_mul(0x9E37_79B9);
@@ -550,14 +609,27 @@ mod tests {
             .iter()
             .filter(|k| k.batched().is_some())
             .count();
-        // Each cull over none and cychosz but itself, per metric; batched also over scalar.
-        assert_eq!(records.len(), 2 * (2 * n - 2) + (2 * batched - 2) + batched);
+        // Each cull over none and cychosz but itself, per metric (closest, any-hit,
+        // bounce); batched also over scalar.
+        assert_eq!(records.len(), 3 * (2 * n - 2) + (2 * batched - 2) + batched);
         for r in &records {
             assert!(r.ratio.is_finite() && r.ratio > 0.0, "{r:?}");
             assert_eq!(r.runs + r.runs_set_aside, 2, "{r:?}");
             assert!(BVH_METRICS.contains(&r.metric.as_str()));
         }
         assert!(records.iter().any(|r| r.reference == SCALAR_REFERENCE));
+        // Bounce rays: every cull over none, each with a between-run interval, on as many
+        // rays as the scene's hits gave (at most the camera rays' count).
+        let bounce: Vec<_> = records
+            .iter()
+            .filter(|r| r.metric == BVH_BOUNCE && r.reference == "none")
+            .collect();
+        assert_eq!(bounce.len(), n - 1, "{bounce:?}");
+        for r in bounce {
+            let [lo, hi] = r.ratio_ci_between.expect("a between-run interval");
+            assert!(lo <= r.ratio && r.ratio <= hi, "{r:?}");
+            assert!(r.rays > 0 && r.rays <= 32, "{r:?}");
+        }
     }
 
     /// The family's scene adds closest-hit and any-hit records under the scene name
@@ -577,8 +649,9 @@ mod tests {
             family: Some(4.0),
         };
         let records = time_bvh(&timing, &mut |_, _| {}).unwrap();
-        // none over cychosz, cychosz over none, skala over both; per metric.
-        assert_eq!(records.len(), 2 * 4, "{records:?}");
+        // none over cychosz, cychosz over none, skala over both; per metric (closest,
+        // any-hit, bounce).
+        assert_eq!(records.len(), 3 * 4, "{records:?}");
         for r in &records {
             assert_eq!((r.case.as_str(), r.nu), (FAMILY_SCENE, 4.0), "{r:?}");
             assert_ne!(r.metric, BVH_BATCHED, "{r:?}");

@@ -555,6 +555,7 @@ const ALLOWED: &[(&str, &str)] = &[
     ("results/<commit>-f32-check.json", "placeholder"),
     ("results/<commit>-family-time.json", "placeholder"),
     ("results/<commit>-bend-time.json", "placeholder"),
+    ("results/<commit>-summary.json", "placeholder"),
     ("results/<commit><suffix>.json", "placeholder"),
     ("results/<short", "`results/<short commit>…`: placeholder"),
     ("results/<old>.json", "placeholder"),
@@ -570,8 +571,8 @@ const ALLOWED: &[(&str, &str)] = &[
         "the charts git ignores: written, never committed",
     ),
     (
-        "results/895821e-bvh-*.svg",
-        "charts the bench writes, not committed",
+        "results/895821e-summary-bvh-*.svg",
+        "charts `plot` writes, not committed",
     ),
     // Removed on purpose: results/README.md names each with the git show that restores it.
     (
@@ -609,6 +610,30 @@ const ALLOWED: &[(&str, &str)] = &[
     (
         "results/0b97d73.json",
         "removed; restored by the git show beside it",
+    ),
+    (
+        "results/f53cc7f.json",
+        "removed (its summary stays); restored by the git show beside it",
+    ),
+    (
+        "results/8a180e4.json",
+        "removed (its summary stays); restored by the git show beside it",
+    ),
+    (
+        "results/d2c851c.json",
+        "removed (its summary stays); restored by the git show beside it",
+    ),
+    (
+        "results/dea7bb4.json",
+        "removed (its summary stays); restored by the git show beside it",
+    ),
+    (
+        "results/d0e47f6.json",
+        "removed (its summary stays); restored by the git show beside it",
+    ),
+    (
+        "results/895821e.json",
+        "removed (its summary stays); restored by the git show beside it",
     ),
     (
         "results/gpu-device-<UTC",

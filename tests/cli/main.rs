@@ -16,5 +16,6 @@ mod outputs_cli;
 mod results_compare;
 mod results_index;
 mod run_cli;
+mod summarize_cli;
 mod support;
 mod time_cli;

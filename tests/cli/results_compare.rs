@@ -32,6 +32,7 @@ fn sample() -> Results {
             threads: None,
             os: None,
             device: None,
+            summary_of: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -104,8 +105,11 @@ fn schema_round_trips_and_keeps_field_names() {
     r.save(&path).unwrap();
     assert_eq!(Results::load(&path).unwrap(), r);
     let text = std::fs::read_to_string(&path).unwrap();
+    // Written compact: one line of JSON and its newline (issue 53: the committed files).
+    assert_eq!(text.lines().count(), 1, "not compact: {text}");
+    assert!(text.ends_with("}\n"), "no final newline");
     for field in [
-        "\"schema_version\": 1",
+        "\"schema_version\":1",
         "\"commit\"",
         "\"dirty\"",
         "\"created\"",
@@ -114,7 +118,7 @@ fn schema_round_trips_and_keeps_field_names() {
         "\"workload\"",
         "\"workload_sha256\"",
         "\"rejection_rate\"",
-        "\"miss_capture\": null",
+        "\"miss_capture\":null",
         "\"false_rejects\"",
         "\"total_ns_ci\"",
         "\"speedup_vs_none\"",

@@ -2,6 +2,10 @@
 //! `results/` is linked there, every file linked there exists, and no SVG is committed
 //! (`torus-cull plot` redraws the charts from the JSON; `.gitignore` keeps them out).
 //!
+//! The committed results are held to a budget (issue 53): at most 30 MB in all, no file
+//! over 2 MB, every JSON compact (one line). A full bench commits its summary
+//! (`torus-cull summarize`); the full file's restore line goes in the index's "Removed files".
+//!
 //! The committed files are `git ls-files results`; where git or the repository is not
 //! there (a source tarball), every file under `results/` is taken as committed.
 
@@ -110,4 +114,78 @@ fn links_are_read_as_the_index_writes_them() {
                 [b](sub/b.json#meta) [c](https://example.org/c.json)";
     let got: Vec<_> = linked_json(text).into_iter().collect();
     assert_eq!(got, ["a.json", "sub/b.json"]);
+}
+
+/// The budget of the tracked `results/`: the tree travels to a device machine whole
+/// (docs/gpu.md: 64 MiB), and every bench adds to it.
+const RESULTS_BUDGET_BYTES: u64 = 30_000_000;
+/// No single tracked results file over this: a full bench's records go in the history, its
+/// summary in the tree.
+const RESULTS_FILE_MAX_BYTES: u64 = 2_000_000;
+
+/// What breaks the budget, given (path, size) of each tracked file: one line per file over
+/// [`RESULTS_FILE_MAX_BYTES`], and one for the total over [`RESULTS_BUDGET_BYTES`].
+fn budget_breaches(sizes: &[(String, u64)]) -> Vec<String> {
+    let mut out: Vec<String> = sizes
+        .iter()
+        .filter(|(_, n)| *n > RESULTS_FILE_MAX_BYTES)
+        .map(|(f, n)| format!("results/{f}: {n} bytes, over {RESULTS_FILE_MAX_BYTES}"))
+        .collect();
+    let total: u64 = sizes.iter().map(|(_, n)| n).sum();
+    if total > RESULTS_BUDGET_BYTES {
+        out.push(format!(
+            "tracked results/: {total} bytes in {} files, over {RESULTS_BUDGET_BYTES}",
+            sizes.len()
+        ));
+    }
+    out
+}
+
+#[test]
+fn tracked_results_stay_within_their_budget_and_compact() {
+    let sizes: Vec<(String, u64)> = committed_files()
+        .into_iter()
+        .map(|f| {
+            let path = root().join("results").join(&f);
+            let n = std::fs::metadata(&path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+                .len();
+            (f, n)
+        })
+        .collect();
+    let breaches = budget_breaches(&sizes);
+    assert!(
+        breaches.is_empty(),
+        "results/ over its budget (summarize a full bench, move the rest to \"Removed \
+         files\" in results/README.md with its git show line):\n{}",
+        breaches.join("\n")
+    );
+    let pretty: Vec<&String> = sizes
+        .iter()
+        .map(|(f, _)| f)
+        .filter(|f| f.ends_with(".json"))
+        .filter(|f| {
+            let text = std::fs::read(root().join("results").join(f)).unwrap();
+            text.iter().filter(|&&b| b == b'\n').count() > 1
+        })
+        .collect();
+    assert!(
+        pretty.is_empty(),
+        "results JSON not compact (python3 .ci/results-compact.py write FILE): {pretty:?}"
+    );
+}
+
+#[test]
+fn the_budget_names_each_file_over_it_and_the_total() {
+    let ok = [("a.json".to_string(), RESULTS_FILE_MAX_BYTES)];
+    assert!(budget_breaches(&ok).is_empty());
+    let big = [("a.json".to_string(), RESULTS_FILE_MAX_BYTES + 1)];
+    assert_eq!(budget_breaches(&big).len(), 1);
+    assert!(budget_breaches(&big)[0].contains("results/a.json"));
+    let many: Vec<(String, u64)> = (0..16)
+        .map(|i| (format!("f{i}.json"), RESULTS_FILE_MAX_BYTES))
+        .collect();
+    let got = budget_breaches(&many);
+    assert_eq!(got.len(), 1, "{got:?}");
+    assert!(got[0].contains("16 files"), "{got:?}");
 }

@@ -1,7 +1,7 @@
 //! `torus-cull time --bvh`: the paired ratios inside the BVH
 //! ([`torus_cull_lab::paired::bvh`]) on the workload's `bvh` scenes, written as the
 //! `ratio` section of a results file (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
-//! `bvh_batched_ns`) that `compare` and `intervals` read like the others.
+//! `bvh_bounce_ns`, `bvh_batched_ns`) that `compare` and `intervals` read like the others.
 
 use super::{TimeArgs, check_runs, check_seconds, check_writable, parse_culls, timing_sizes};
 use crate::console::{out, outln};

@@ -125,9 +125,10 @@ pub struct TimeArgs {
     runs: Option<u64>,
     /// Time inside the BVH instead (the workload's `bvh` scenes, `--nu` any ν, default
     /// the workload's; the scenes it lacks at ν = 4): each cull at the leaves over `none` and `cychosz`, per ray, for
-    /// closest-hit camera rays, any-hit shadow rays and batched leaves, `--runs` runs
-    /// (default 10) in this process; metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
-    /// `bvh_batched_ns`. Default file …-bvh-time.json.
+    /// closest-hit camera rays, any-hit shadow rays, closest-hit diffuse bounce rays from
+    /// the camera hits and batched leaves, `--runs` runs (default 10) in this process;
+    /// metrics `bvh_closest_ns`, `bvh_anyhit_ns`, `bvh_bounce_ns`, `bvh_batched_ns`.
+    /// Default file …-bvh-time.json.
     #[arg(long)]
     bvh: bool,
     /// Internal: this process is worker run K of a `--runs` timing (writes its records
