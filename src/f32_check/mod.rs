@@ -219,7 +219,8 @@ pub struct Tally {
     pub hits_answered: u64,
     /// Of those, the ones outside the tolerance.
     pub far: u64,
-    /// `|t − t_oracle|·|d| / (R + r)` over `hits_answered`; null when there are none.
+    /// `|t − t_oracle|·|d| / (R + r)` over `hits_answered` whose t is finite (a NaN or
+    /// infinite t is counted in `far`); null when there are none.
     pub t_error: Option<ErrorStats>,
 }
 
@@ -253,10 +254,13 @@ pub fn tally(rays: &[Labeled], intersector: impl Fn(&Torus, &Ray) -> Answer) -> 
             (OracleClass::Hit, Some(t)) => {
                 tally.hits_answered += 1;
                 match ray.t_error(t) {
-                    Some((err, within)) => {
+                    // A t that is not finite (a peer's NaN) is far, and stays out of the
+                    // stats: JSON has no NaN, and serde would write it as null.
+                    Some((err, within)) if err.is_finite() => {
                         errors.push(err);
                         tally.far += u64::from(!within);
                     }
+                    Some(_) => tally.far += 1,
                     // No root to compare to (never seen): it cannot be called near.
                     None => tally.far += 1,
                 }
@@ -681,5 +685,31 @@ mod tests {
         let t = tally(&rays, |_: &Torus, _: &Ray| F32Verdict::Escalate.into());
         assert_eq!((t.escalated, t.missed, t.spurious), (2, 0, 0));
         assert_eq!(t.escalation_rate, 1.0);
+    }
+
+    /// A peer's NaN t is far and stays out of the error stats, so the file holds no null
+    /// where a number belongs (f7cccf8-f32-check-spawned.json had `"max": null`).
+    #[test]
+    fn a_nan_t_is_far_and_out_of_the_stats() {
+        let torus = Torus::canonical(2.0, 1.0).unwrap();
+        let hit = Labeled::new(
+            torus,
+            Ray::new(glam::Vec3::new(-5.0, 0.0, 0.0), glam::Vec3::X).unwrap(),
+        );
+        let t = tally(&[hit], |_: &Torus, _: &Ray| Answer::plain(Some(f32::NAN)));
+        assert_eq!((t.hits_answered, t.far, t.t_error), (1, 1, None));
+        let other = Labeled::new(
+            torus,
+            Ray::new(glam::Vec3::new(-5.0, 0.25, 0.0), glam::Vec3::X).unwrap(),
+        );
+        let t = tally(&[hit, other], |_: &Torus, r: &Ray| {
+            let exact = other.first_root.unwrap() as f32;
+            Answer::plain(Some(if r.origin().y == 0.0 { f32::NAN } else { exact }))
+        });
+        assert_eq!((t.hits_answered, t.far), (2, 1));
+        let stats = t.t_error.expect("the finite t's stats");
+        assert!(stats.max.is_finite() && stats.max < 1e-6, "{stats:?}");
+        let json = serde_json::to_string(&t).unwrap();
+        assert!(!json.contains("null"), "{json}");
     }
 }
