@@ -8,3 +8,4 @@ mod common;
 
 mod api_bit_patterns;
 mod layout;
+mod refused_inputs;
