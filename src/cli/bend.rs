@@ -3,10 +3,12 @@
 
 use super::CliResult;
 use crate::console::out;
+use crate::whole::Whole;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
+use torus_cull_lab::number::Num;
 use torus_cull_lab::workload::bend_spec::{bore_ratio_ok, delta_phi_ok};
 use torus_cull_lab::workload::spec::Workload;
 
@@ -18,11 +20,11 @@ const MAX_RAYS: usize = 10_000_000;
 pub struct BendArgs {
     /// Rays per (ν, Δφ, r_min/r_max) class, cycling through the kinds random, cut-away,
     /// pipe axis, hole, cap edge, bore tangent and spawned (1 ..= 10 000 000).
-    #[arg(long, default_value_t = 20_000)]
-    rays: usize,
+    #[arg(long, default_value_t = Whole(20_000))]
+    rays: Whole,
     /// The seed every pose draws its bend and rays from.
-    #[arg(long, default_value_t = 20261128)]
-    seed: u64,
+    #[arg(long, default_value_t = Whole(20261128))]
+    seed: Whole,
     /// ν = R/r_max of the classes, comma-separated (each finite, > 1).
     #[arg(long, value_delimiter = ',', default_value = "4")]
     nu: Vec<f64>,
@@ -41,7 +43,7 @@ pub struct BendArgs {
     workload: Option<PathBuf>,
     /// Worker threads (default: the available cores); the counts do not depend on it.
     #[arg(long)]
-    threads: Option<usize>,
+    threads: Option<Whole>,
     /// Results JSON (default: results/<short commit>[-dirty]-bend.json). Its directory
     /// must exist.
     #[arg(long)]
@@ -66,11 +68,12 @@ pub fn run(args: BendArgs) -> CliResult {
                 )
             })?;
             let classes = bend_check::classes(&spec.nu, &spec.delta_phi, &spec.bore_ratio);
-            (classes, spec.rays, workload.seed)
+            let rays = i128::try_from(spec.rays).map_or(Whole(i128::MAX), Whole);
+            (classes, rays, workload.seed)
         }
-        None => (flag_classes(&args)?, args.rays, args.seed),
+        None => (flag_classes(&args)?, args.rays, args.seed.seed("--seed")?),
     };
-    super::plot::check_rays(rays, MAX_RAYS)?;
+    let rays = super::plot::check_rays(rays, MAX_RAYS)?;
     let threads = super::threads::pick(args.threads)?;
     // Before the work, not after it.
     let path = super::plot::check_file_out(args.out, "-bend", args.no_plots)?;
@@ -114,16 +117,21 @@ pub fn run(args: BendArgs) -> CliResult {
 /// each value checked against its range.
 fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
     if let Some(nu) = args.nu.iter().find(|nu| !(nu.is_finite() && **nu > 1.0)) {
-        return Err(format!("--nu {nu} is invalid (allowed: finite, > 1)"));
+        return Err(format!(
+            "--nu {} is invalid (allowed: finite, > 1)",
+            Num(*nu)
+        ));
     }
     if let Some(d) = args.delta_phi.iter().find(|d| !delta_phi_ok(**d)) {
         return Err(format!(
-            "--delta-phi {d} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})"
+            "--delta-phi {} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})",
+            Num(*d)
         ));
     }
     if let Some(r) = args.bore_ratio.iter().find(|r| !bore_ratio_ok(**r)) {
         return Err(format!(
-            "--bore-ratio {r} is invalid (allowed: 0 <= --bore-ratio < 1)"
+            "--bore-ratio {} is invalid (allowed: 0 <= --bore-ratio < 1)",
+            Num(*r)
         ));
     }
     let or = |given: &[f64], default: &[f64]| {
