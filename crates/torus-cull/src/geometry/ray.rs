@@ -657,12 +657,12 @@ mod tests {
         let range = DRay::with_range(DVec3::ZERO, DVec3::X, 2.0, 1.0).unwrap_err();
         assert_eq!(
             msg(&range),
-            "ray range [2, 1] is invalid (t_min finite, t_min ≤ t_max)"
+            "ray range [2, 1] is invalid (need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN)"
         );
         let range = Ray::with_range(Vec3::ZERO, Vec3::X, 2.0, 1.0).unwrap_err();
         assert_eq!(
             msg(&range),
-            "ray range [2, 1] is invalid (need finite t_min ≤ t_max)"
+            "ray range [2, 1] is invalid (need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN)"
         );
     }
 }

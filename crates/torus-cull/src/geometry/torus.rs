@@ -218,9 +218,16 @@ impl fmt::Display for TorusError {
 
 impl std::error::Error for TorusError {}
 
-/// A value in [`TorusError`]'s message, compact: `1e300`, not 301 digits.
+/// A value in [`TorusError`]'s message, compact: `1e300`, not 301 digits. A value that
+/// is an f32 (every radius of [`Torus::new`], widened) is written as that f32's shortest
+/// text, as typed: `3e-9`, not `3.000000026176508e-9`.
 fn num(v: f64) -> String {
-    super::ray::compact(v, v)
+    let narrow = v as f32;
+    if f64::from(narrow) == v {
+        super::ray::compact(narrow, v)
+    } else {
+        super::ray::compact(v, v)
+    }
 }
 
 /// A line in the torus frame: `origin + t·dir`, f32, `dir` non-zero but of any length.
