@@ -61,7 +61,7 @@ fn bvh_key(r: &BvhRecord) -> String {
 /// Refuses a file with two records under one key in a section: compare pairs records by
 /// key, and with two candidates it would silently pick one. The error names the section
 /// and the record. Also refuses a ratio that is not a positive finite number
-/// ([`ratio::check_ratios`]): a ratio of −1 would read as "−200 %".
+/// (`ratio::check_ratios`): a negative ratio would read as a change of −100 % or more.
 pub fn check_unique(r: &Results) -> Result<(), String> {
     ratio::check_ratios(&r.ratio)?;
     let twice = |section: &str, key: Option<String>| match key {
