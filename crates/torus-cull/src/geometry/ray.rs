@@ -290,6 +290,18 @@ pub(crate) fn compact<T: fmt::Display + fmt::LowerExp>(v: T, as_f64: f64) -> Str
     }
 }
 
+/// An f64 in an error message, [`compact`]; one that is an f32 (a radius of
+/// [`crate::Torus::new`], widened) as that f32's shortest text, as typed: `3e-9`, not
+/// `3.000000026176508e-9`.
+pub(crate) fn compact_value(v: f64) -> String {
+    let narrow = v as f32;
+    if f64::from(narrow) == v {
+        compact(narrow, v)
+    } else {
+        compact(v, v)
+    }
+}
+
 /// A vector in an error message, `[x, y, z]`, each component [`compact`].
 pub(crate) fn compact3<P: Precision>(v: P) -> String {
     let [x, y, z] = v.components().map(|c| compact(c, c.to_f64()));

@@ -1,7 +1,7 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
-use super::ray::{DRay, Precision, Ray, RayError};
+use super::ray::{DRay, Precision, Ray, RayError, compact_value as num};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
@@ -217,18 +217,6 @@ impl fmt::Display for TorusError {
 }
 
 impl std::error::Error for TorusError {}
-
-/// A value in [`TorusError`]'s message, compact: `1e300`, not 301 digits. A value that
-/// is an f32 (every radius of [`Torus::new`], widened) is written as that f32's shortest
-/// text, as typed: `3e-9`, not `3.000000026176508e-9`.
-fn num(v: f64) -> String {
-    let narrow = v as f32;
-    if f64::from(narrow) == v {
-        super::ray::compact(narrow, v)
-    } else {
-        super::ray::compact(v, v)
-    }
-}
 
 /// A line in the torus frame: `origin + t·dir`, f32, `dir` non-zero but of any length.
 ///
