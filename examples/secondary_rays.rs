@@ -45,7 +45,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let at = ray.at(hit.t);
             // Shadow ray to the light, from the surface.
             let to_light = light - at;
-            let shadow_ray = torus.spawn(&ray, hit.t, to_light)?.with_t_max(1.0);
+            let shadow_ray = torus.spawn(&ray, hit.t, to_light)?.with_t_max(1.0)?;
             shadow.rays += 1;
             let blocked = intersect_f32(&torus, &shadow_ray);
             shadow.escalated += usize::from(blocked.escalated);

@@ -29,9 +29,46 @@ impl From<f32> for Num {
     }
 }
 
+/// A field of the user's input echoed in a message, as typed but cut: its first
+/// [`Echo::KEPT`] characters and `…` when longer, so that a CSV field or a flag value of
+/// 100 000 digits is not printed whole (what is kept still shows what was typed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Echo<'a>(pub &'a str);
+
+impl Echo<'_> {
+    /// The characters kept of a longer field.
+    pub const KEPT: usize = 40;
+}
+
+impl fmt::Display for Echo<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0.char_indices().nth(Echo::KEPT) {
+            None => f.write_str(self.0),
+            Some((cut, _)) => write!(
+                f,
+                "{}… ({} characters)",
+                &self.0[..cut],
+                self.0.chars().count()
+            ),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::Num;
+    use super::{Echo, Num};
+
+    #[test]
+    fn long_fields_are_cut_when_echoed() {
+        assert_eq!(Echo("1.5").to_string(), "1.5");
+        let long = "9".repeat(100_000);
+        let shown = Echo(&long).to_string();
+        assert_eq!(shown, format!("{}… (100000 characters)", "9".repeat(40)));
+        // Cut at a character, not a byte.
+        let accents = Echo(&"é".repeat(41)).to_string();
+        assert_eq!(accents, format!("{}… (41 characters)", "é".repeat(40)));
+        assert_eq!(Echo(&"x".repeat(40)).to_string(), "x".repeat(40));
+    }
 
     #[test]
     fn huge_and_tiny_values_are_scientific_and_round_trip() {

@@ -65,7 +65,9 @@ pub fn render(scene: &Scene, size: usize) -> Rendered {
             let bounds = torus.bounds();
             cychosz_kept |= CychoszCull.keeps(bounds, line.origin, line.dir);
             skala_kept |= SkalaCull.keeps(bounds, line.origin, line.dir);
-            intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+            // t_max is a hit's t or +∞, never NaN.
+            let cut = ray.with_t_max(t_max).expect("t_max is not NaN");
+            intersect(torus, &cut).map_or(f32::INFINITY, |h| h.t)
         });
         let class = match hit {
             Some(_) => 0,

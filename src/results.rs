@@ -621,8 +621,8 @@ impl Results {
 /// checking its `schema_version`: other versions are refused with a clear error.
 pub fn read_json(path: &Path) -> Result<serde_json::Value, ResultsError> {
     let text = std::fs::read_to_string(path).map_err(|e| ResultsError::Io(path.into(), e))?;
-    let value: serde_json::Value =
-        serde_json::from_str(&text).map_err(|e| ResultsError::Parse(path.into(), e.to_string()))?;
+    let value: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| ResultsError::Parse(path.into(), json_error(&text, &e)))?;
     match value.get("schema_version") {
         Some(v) if v.as_u64() == Some(SCHEMA_VERSION as u64) => Ok(value),
         Some(v) => Err(ResultsError::Version(path.into(), v.clone())),
@@ -630,6 +630,27 @@ pub fn read_json(path: &Path) -> Result<serde_json::Value, ResultsError> {
             path.into(),
             "missing field `schema_version`".into(),
         )),
+    }
+}
+
+/// serde_json's message for `e`, and where the text holds a `NaN` or `Infinity` token at
+/// the error (what Python's `json.dump` writes for a non-finite float), that word: JSON
+/// has no such number, and "expected value at line 1 column 681" alone does not say so.
+fn json_error(text: &str, e: &serde_json::Error) -> String {
+    let line = text.lines().nth(e.line().saturating_sub(1)).unwrap_or("");
+    // The column is 1-based, in bytes; the token starts at it or one before (a sign).
+    let start = e.column().saturating_sub(2);
+    let near = line.get(start..).unwrap_or("");
+    let near = near.get(..near.len().min(12)).unwrap_or(near);
+    let token = ["NaN", "Infinity", "inf", "nan"]
+        .into_iter()
+        .find(|t| near.contains(t));
+    match token {
+        Some(t) => format!(
+            "{e}: `{t}` is not a JSON number (JSON has no NaN or Infinity; write a finite \
+             number, or null where the field allows it)"
+        ),
+        None => e.to_string(),
     }
 }
 

@@ -3,11 +3,13 @@
 
 use super::CliResult;
 use crate::console::out;
+use crate::whole::Whole;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull::MAX_NU;
 use torus_cull_lab::bend_check::{self, BendFile, ClassRecord};
+use torus_cull_lab::number::Num;
 use torus_cull_lab::workload::bend_spec::{bore_ratio_ok, delta_phi_ok};
 use torus_cull_lab::workload::spec::Workload;
 
@@ -19,11 +21,11 @@ const MAX_RAYS: usize = 10_000_000;
 pub struct BendArgs {
     /// Rays per (ν, Δφ, r_min/r_max) class, cycling through the kinds random, cut-away,
     /// pipe axis, hole, cap edge, bore tangent and spawned (1 ..= 10 000 000).
-    #[arg(long, default_value_t = 20_000)]
-    rays: usize,
+    #[arg(long, default_value_t = Whole(20_000))]
+    rays: Whole,
     /// The seed every pose draws its bend and rays from.
-    #[arg(long, default_value_t = 20261128)]
-    seed: u64,
+    #[arg(long, default_value_t = Whole(20261128))]
+    seed: Whole,
     /// ν = R/r_max of the classes, comma-separated (each 1 < ν <= 1000; with a bore
     /// ratio > 0, ν <= 1000·ratio, the bore's torus's own ν = ν/ratio at most 1000).
     #[arg(long, value_delimiter = ',', default_value = "4")]
@@ -44,7 +46,7 @@ pub struct BendArgs {
     workload: Option<PathBuf>,
     /// Worker threads (default: the available cores); the counts do not depend on it.
     #[arg(long)]
-    threads: Option<usize>,
+    threads: Option<Whole>,
     /// Results JSON (default: results/<short commit>[-dirty]-bend.json). Its directory
     /// must exist.
     #[arg(long)]
@@ -73,11 +75,12 @@ pub fn run(args: BendArgs) -> CliResult {
                 bend_check::refuse_class(class, ("bend.nu", "bend.delta_phi", "bend.bore_ratio"))
                     .map_err(|e| format!("--workload {}: {e}", file.display()))?;
             }
-            (classes, spec.rays, workload.seed)
+            let rays = i128::try_from(spec.rays).map_or(Whole(i128::MAX), Whole);
+            (classes, rays, workload.seed)
         }
-        None => (flag_classes(&args)?, args.rays, args.seed),
+        None => (flag_classes(&args)?, args.rays, args.seed.seed("--seed")?),
     };
-    super::plot::check_rays(rays, MAX_RAYS)?;
+    let rays = super::plot::check_rays(rays, MAX_RAYS)?;
     let threads = super::threads::pick(args.threads)?;
     // Before the work, not after it.
     let path = super::plot::check_file_out(args.out, "-bend", args.no_plots)?;
@@ -126,17 +129,20 @@ fn flag_classes(args: &BendArgs) -> Result<Vec<(f64, f64, f64)>, String> {
         .find(|nu| !(nu.is_finite() && **nu > 1.0 && **nu <= MAX_NU))
     {
         return Err(format!(
-            "--nu {nu} is invalid (allowed: 1 < --nu <= {MAX_NU})"
+            "--nu {} is invalid (allowed: 1 < --nu <= {MAX_NU})",
+            Num(*nu)
         ));
     }
     if let Some(d) = args.delta_phi.iter().find(|d| !delta_phi_ok(**d)) {
         return Err(format!(
-            "--delta-phi {d} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})"
+            "--delta-phi {} is invalid (allowed: 0 < --delta-phi <= 2*pi = {TAU})",
+            Num(*d)
         ));
     }
     if let Some(r) = args.bore_ratio.iter().find(|r| !bore_ratio_ok(**r)) {
         return Err(format!(
-            "--bore-ratio {r} is invalid (allowed: 0 <= --bore-ratio < 1)"
+            "--bore-ratio {} is invalid (allowed: 0 <= --bore-ratio < 1)",
+            Num(*r)
         ));
     }
     let or = |given: &[f64], default: &[f64]| {

@@ -6,6 +6,7 @@ use crate::console::{out, outln};
 use std::path::Path;
 use std::process::ExitCode;
 use torus_cull_lab::compare::{self, Report, coverage};
+use torus_cull_lab::number::Num;
 use torus_cull_lab::results_file::ResultsFile;
 
 /// `compare`'s options after the two files.
@@ -24,9 +25,11 @@ pub struct CompareOptions {
 pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
     let threshold = options.threshold;
     if !(threshold.is_finite() && threshold >= 0.0) {
-        return Err(
-            format!("--threshold {threshold} is invalid (allowed: a percentage >= 0)").into(),
-        );
+        return Err(format!(
+            "--threshold {} is invalid (allowed: a percentage >= 0)",
+            Num(threshold)
+        )
+        .into());
     }
     let (a, b) = (ResultsFile::load(old)?, ResultsFile::load(new)?);
     let pair = format!("{} vs {}", old.display(), new.display());

@@ -3,8 +3,9 @@
 
 use super::CliResult;
 use crate::console::{out, outln};
+use crate::whole::Whole;
 use indicatif::{ProgressBar, ProgressStyle};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::f32_check::{self, CheckFile, families};
 
@@ -18,11 +19,11 @@ const MAX_ROUNDS: u32 = 1000;
 #[derive(clap::Args)]
 pub struct F32CheckArgs {
     /// Rays per family.
-    #[arg(long, default_value_t = 20_000)]
-    rays: usize,
+    #[arg(long, default_value_t = Whole(20_000))]
+    rays: Whole,
     /// The seed every family draws its rays from.
-    #[arg(long, default_value_t = 20261121)]
-    seed: u64,
+    #[arg(long, default_value_t = Whole(20261121))]
+    seed: Whole,
     /// Results JSON (default: results/<short commit>[-dirty]-f32-check.json). Its
     /// directory must exist.
     #[arg(long)]
@@ -30,10 +31,10 @@ pub struct F32CheckArgs {
     /// Worker threads for the oracle's labels, 1 ..= 1024 (default: available cores); the timings
     /// run on one.
     #[arg(long)]
-    threads: Option<usize>,
+    threads: Option<Whole>,
     /// Timing rounds per family, 0 ..= 1000 (0: no timings).
-    #[arg(long, default_value_t = 5)]
-    rounds: u32,
+    #[arg(long, default_value_t = Whole(5))]
+    rounds: Whole,
     /// Skip the SVG plots (by default escalation, wrong answers, t error and ns per ray
     /// per family, next to the results file).
     #[arg(long)]
@@ -48,14 +49,9 @@ pub struct F32CheckArgs {
 /// missed a hit, answered a miss with a `t` or put a `t` outside the tolerance: the
 /// peer's speckles are what it measures, not a failure.
 pub fn run(args: F32CheckArgs) -> CliResult {
-    super::plot::check_rays(args.rays, MAX_RAYS)?;
-    if args.rounds > MAX_ROUNDS {
-        return Err(format!(
-            "--rounds {} is invalid (allowed: 0 ..= {MAX_ROUNDS})",
-            args.rounds
-        )
-        .into());
-    }
+    let rays = super::plot::check_rays(args.rays, MAX_RAYS)?;
+    let rounds: u32 = args.rounds.within("--rounds", (0, MAX_ROUNDS), "")?;
+    let seed = args.seed.seed("--seed")?;
     let threads = crate::threads::pick(args.threads)?;
     // Before the work, not after it.
     let path = crate::plot::check_file_out(args.out, "-f32-check", args.no_plots)?;
@@ -72,25 +68,14 @@ pub fn run(args: F32CheckArgs) -> CliResult {
             .expect("valid template")
             .progress_chars("=> "),
     );
-    let message = format!(
-        "f32-check: {} families x {} rays",
-        families.len(),
-        args.rays
-    );
+    let message = format!("f32-check: {} families x {} rays", families.len(), rays);
     bar.set_message(message.clone());
     let heartbeat = crate::console::Heartbeat::new(message, "families");
     heartbeat.update(0, families.len() as u64);
-    let records = f32_check::check(
-        &families,
-        args.rays,
-        args.seed,
-        threads,
-        args.rounds,
-        &|done, all| {
-            bar.set_position(done as u64);
-            heartbeat.update(done as u64, all as u64);
-        },
-    )?;
+    let records = f32_check::check(&families, rays, seed, threads, rounds, &|done, all| {
+        bar.set_position(done as u64);
+        heartbeat.update(done as u64, all as u64);
+    })?;
     bar.finish_and_clear();
 
     out!("{}", f32_check::table(&records))?;
@@ -99,16 +84,10 @@ pub fn run(args: F32CheckArgs) -> CliResult {
         .filter(|r| r.ours_failed())
         .map(|r| r.family.clone())
         .collect();
-    let file = CheckFile::new(records, args.rays, args.seed, threads);
+    let file = CheckFile::new(records, rays, seed, threads);
     super::plot::write_check_file(&path, &file)?;
     if !args.no_plots {
-        let dir = path
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
-        let stem = path
-            .file_stem()
-            .map_or("f32-check".into(), |s| s.to_string_lossy());
+        let (dir, stem) = super::plot::plot_place(&path, "f32-check");
         let written = f32_check::plot::plot_check(&file, &dir, &stem)?;
         outln!(
             "wrote {} plots to {}/{stem}-*.svg",

@@ -3,6 +3,7 @@
 
 use super::CliResult;
 use crate::console::out;
+use crate::whole::Whole;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use torus_cull_lab::family_check::{self, FamilyFile};
@@ -15,11 +16,11 @@ const MAX_RAYS: usize = 1_000_000;
 pub struct FamilyArgs {
     /// Rays per member class, cycling through the kinds uniform, grazing, axis/hole and
     /// spawned (1 ..= 1 000 000).
-    #[arg(long, default_value_t = 20_000)]
-    rays: usize,
+    #[arg(long, default_value_t = Whole(20_000))]
+    rays: Whole,
     /// The seed every member draws its pose and rays from.
-    #[arg(long, default_value_t = 20261127)]
-    seed: u64,
+    #[arg(long, default_value_t = Whole(20261127))]
+    seed: Whole,
     /// Results JSON (default: results/<short commit>[-dirty]-family.json). Its directory
     /// must exist.
     #[arg(long)]
@@ -33,16 +34,17 @@ pub struct FamilyArgs {
 /// Runs `family`. Exit 1 when a cull rejected a hit of the oracle, or the exact
 /// intersection missed or invented a hit.
 pub fn run(args: FamilyArgs) -> CliResult {
-    super::plot::check_rays(args.rays, MAX_RAYS)?;
+    let rays = super::plot::check_rays(args.rays, MAX_RAYS)?;
+    let seed = args.seed.seed("--seed")?;
     // Before the work, not after it.
     let path = super::plot::check_file_out(args.out, "-family", args.no_plots)?;
     let members = family_check::members().len();
     let heartbeat = crate::console::Heartbeat::new(
-        format!("family: {members} members x {} rays", args.rays),
+        format!("family: {members} members x {} rays", rays),
         "members",
     );
     heartbeat.update(0, members as u64);
-    let records = family_check::check(args.rays, args.seed, &|done, all| {
+    let records = family_check::check(rays, seed, &|done, all| {
         heartbeat.update(done as u64, all as u64);
     })?;
     out!("{}", family_check::table(&records))?;
@@ -51,7 +53,7 @@ pub fn run(args: FamilyArgs) -> CliResult {
         .filter(|r| r.false_rejects() > 0 || r.exact_wrong() > 0)
         .map(family_check::MemberRecord::label)
         .collect();
-    let file = FamilyFile::new(records, args.rays, args.seed);
+    let file = FamilyFile::new(records, rays, seed);
     super::plot::write_check_file(&path, &file)?;
     if !args.no_plots {
         super::plot::write_charts(&path, |dir, stem| {

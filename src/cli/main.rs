@@ -7,9 +7,10 @@
 //! is not an error: output stops, the files are still written, and the exit code is the
 //! command's own.
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use whole::Whole;
 
 mod bend;
 mod compare;
@@ -24,6 +25,7 @@ mod run;
 mod summarize;
 mod threads;
 mod time;
+mod whole;
 
 #[derive(Parser)]
 #[command(
@@ -50,7 +52,7 @@ enum Command {
         out: Option<PathBuf>,
         /// Worker threads, 1 ..= 1024 (default: available cores).
         #[arg(long)]
-        threads: Option<usize>,
+        threads: Option<Whole>,
         /// Skip the SVG plots.
         #[arg(long)]
         no_plots: bool,
@@ -116,14 +118,14 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
         /// Image side in pixels.
-        #[arg(long, default_value_t = 512)]
-        size: usize,
+        #[arg(long, default_value_t = Whole(512))]
+        size: Whole,
         /// Tori in the scene.
-        #[arg(long, default_value_t = 1000)]
-        tori: usize,
+        #[arg(long, default_value_t = Whole(1000))]
+        tori: Whole,
         /// Scene seed.
-        #[arg(long, default_value_t = 20261121)]
-        seed: u64,
+        #[arg(long, default_value_t = Whole(20261121))]
+        seed: Whole,
     },
     /// Write the SVG charts of a results file (run, time, cargo bench) or an f32-check file.
     Plot {
@@ -244,7 +246,10 @@ enum EvalPrecision {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // Every flag takes a leading '-' (src/cli/whole.rs), so a negative value meets the
+    // flag's own range check.
+    let matches = whole::negative_numbers(Cli::command()).get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     remove_temp_files_on_signals();
     let result = match cli.command {
         Command::Run {

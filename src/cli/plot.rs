@@ -3,6 +3,7 @@
 
 use super::CliResult;
 use crate::console::outln;
+use crate::whole::Whole;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull_lab::results::Results;
@@ -11,19 +12,14 @@ use torus_cull_lab::results_file::ResultsFile;
 /// Runs `plot`.
 pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
     let results = ResultsFile::load(file)?;
+    let (next_to_it, stem) = plot_place(file, "results");
     let dir = match out_dir {
         Some(dir) => {
             check_out_dir(&dir)?;
             dir
         }
-        None => file
-            .parent()
-            .filter(|p| !p.as_os_str().is_empty())
-            .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+        None => next_to_it,
     };
-    let stem = file
-        .file_stem()
-        .map_or("results".into(), |s| s.to_string_lossy());
     let written = match &results {
         ResultsFile::Results(r) => torus_cull_lab::plot::plot_results(r, &dir, &stem)?,
         ResultsFile::F32Check(c) => torus_cull_lab::f32_check::plot::plot_check(c, &dir, &stem)?,
@@ -62,14 +58,18 @@ fn check_out_dir(dir: &Path) -> Result<(), String> {
     }
 }
 
-/// The directory and file-name stem of the SVG charts of the results file `path`.
-fn plot_place(path: &Path) -> (PathBuf, String) {
+/// The directory and file-name stem of the SVG charts of the results file `path`. A bare
+/// file name's parent is the empty path, which is the working directory: it is named `.`
+/// here, once, so that no message says `/NAME-*.svg` (the root).
+/// `default_stem` names a path with no file name.
+pub(crate) fn plot_place(path: &Path, default_stem: &str) -> (PathBuf, String) {
     let dir = path
         .parent()
+        .filter(|p| !p.as_os_str().is_empty())
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
     let stem = path
         .file_stem()
-        .map_or("results".into(), |s| s.to_string_lossy().into_owned());
+        .map_or(default_stem.into(), |s| s.to_string_lossy().into_owned());
     (dir, stem)
 }
 
@@ -77,12 +77,7 @@ fn plot_place(path: &Path) -> (PathBuf, String) {
 /// may write next to `path` (`<stem>-*.svg`) that exists already must be a file that can
 /// be replaced, not a directory, as docs/results.md promises for every output.
 pub(crate) fn check_plot_paths(path: &Path) -> Result<(), String> {
-    let (dir, stem) = plot_place(path);
-    let dir = if dir.as_os_str().is_empty() {
-        PathBuf::from(".")
-    } else {
-        dir
-    };
+    let (dir, stem) = plot_place(path, "results");
     torus_cull_lab::plot::check_chart_paths(&dir, &stem)
         .map_err(|e| format!("{e} (a plot of --out {}; or --no-plots)", path.display()))
 }
@@ -93,7 +88,7 @@ pub(crate) fn write_charts(
     path: &Path,
     draw: impl FnOnce(&Path, &str) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let (dir, stem) = plot_place(path);
+    let (dir, stem) = plot_place(path, "results");
     let written = draw(&dir, &stem)?;
     outln!(
         "wrote {} plots to {}/{stem}-*.svg",
@@ -130,11 +125,8 @@ pub(crate) fn write_check_file(
 
 /// A check command's (`f32-check`, `family`, `bend`) `--rays`: 1 ..= `max`, else the
 /// message that says so.
-pub(crate) fn check_rays(rays: usize, max: usize) -> Result<(), Box<dyn std::error::Error>> {
-    if !(1..=max).contains(&rays) {
-        return Err(format!("--rays {rays} is invalid (allowed: 1 ..= {max})").into());
-    }
-    Ok(())
+pub(crate) fn check_rays(rays: Whole, max: usize) -> Result<usize, String> {
+    rays.within("--rays", (1, max), "")
 }
 
 /// Where a check command (`f32-check`, `family`, `bend`) writes its file: `--out`, or

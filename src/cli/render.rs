@@ -2,20 +2,25 @@
 
 use super::CliResult;
 use crate::console::outln;
+use crate::whole::Whole;
 use std::path::Path;
 use std::process::ExitCode;
 
 /// Runs `render`.
-pub fn render(scene: &str, nu: f64, out: &Path, size: usize, tori: usize, seed: u64) -> CliResult {
+pub fn render(
+    scene: &str,
+    nu: f64,
+    out: &Path,
+    size: Whole,
+    tori: Whole,
+    seed: Whole,
+) -> CliResult {
     let kind: torus_cull_lab::scene::SceneKind =
         scene.parse().map_err(|e| format!("--scene: {e}"))?;
     check_png_name(out)?;
-    if !(1..=8192).contains(&size) {
-        return Err(format!("--size {size} is invalid (allowed: 1 ..= 8192)").into());
-    }
-    if !(1..=1_000_000).contains(&tori) {
-        return Err(format!("--tori {tori} is invalid (allowed: 1 ..= 1000000)").into());
-    }
+    let size: usize = size.within("--size", (1, 8192), "")?;
+    let tori: usize = tori.within("--tori", (1, 1_000_000), "")?;
+    let seed = seed.seed("--seed")?;
     let scene = torus_cull_lab::scene::Scene::build(kind, nu, tori, seed)
         .map_err(|e| format!("--nu: {e}"))?;
     let map_path = out.with_file_name(format!(

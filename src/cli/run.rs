@@ -17,7 +17,7 @@ use torus_cull_lab::workload::spec::{self, Workload};
 pub fn run(
     workload: &Path,
     out: Option<PathBuf>,
-    threads: Option<usize>,
+    threads: Option<crate::whole::Whole>,
     no_plots: bool,
     culls: &[String],
 ) -> CliResult {

@@ -60,8 +60,10 @@ fn bvh_key(r: &BvhRecord) -> String {
 
 /// Refuses a file with two records under one key in a section: compare pairs records by
 /// key, and with two candidates it would silently pick one. The error names the section
-/// and the record.
+/// and the record. Also refuses a ratio that is not a positive finite number
+/// (`ratio::check_ratios`): a negative ratio would read as a change of −100 % or more.
 pub fn check_unique(r: &Results) -> Result<(), String> {
+    ratio::check_ratios(&r.ratio)?;
     let twice = |section: &str, key: Option<String>| match key {
         Some(key) => Err(format!(
             "record `{section} {key}` appears more than once (each case × ν × cull once per \
@@ -373,7 +375,12 @@ pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: boo
             );
         }
         let change = if row.old.is_finite() && row.new.is_finite() && row.old != 0.0 {
-            format!("{:+.2}%", (row.new / row.old - 1.0) * 100.0)
+            let percent = (row.new / row.old - 1.0) * 100.0;
+            if percent.abs() < 1e6 {
+                format!("{percent:+.2}%")
+            } else {
+                format!("{percent:+.2e}%")
+            }
         } else {
             "-".into()
         };
@@ -423,6 +430,9 @@ pub fn render(report: &Report, old_name: &str, new_name: &str, only_changes: boo
 fn fmt_value(v: f64) -> String {
     if v.is_nan() {
         "n/a".into()
+    } else if v.abs() >= 1e7 {
+        // Significant digits, not 309 of them: the table stays a table.
+        format!("{v:.4e}")
     } else if v.abs() >= 100.0 {
         format!("{v:.1}")
     } else {

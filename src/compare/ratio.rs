@@ -137,6 +137,33 @@ pub(super) fn ratio_key(r: &RatioRecord) -> String {
     key
 }
 
+/// Every ratio record's `ratio`, `ratio_ci` and `ratio_ci_between` a positive finite
+/// number: a time ratio is t(cull) / t(reference) of two positive times, and compare's
+/// percentages divide by it. The error names the record and the field.
+pub fn check_ratios(records: &[RatioRecord]) -> Result<(), String> {
+    for r in records {
+        let mut fields = vec![("ratio", r.ratio)];
+        fields.extend([
+            ("ratio_ci[0]", r.ratio_ci[0]),
+            ("ratio_ci[1]", r.ratio_ci[1]),
+        ]);
+        if let Some([lo, hi]) = r.ratio_ci_between {
+            fields.extend([("ratio_ci_between[0]", lo), ("ratio_ci_between[1]", hi)]);
+        }
+        for (field, v) in fields {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(format!(
+                    "ratio record `{}`: field `{field}` = {} is invalid (allowed: a finite \
+                     ratio > 0, t(cull) / t(reference))",
+                    ratio_key(r),
+                    crate::number::Num(v)
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 fn ratio_row(key: String, o: &RatioRecord, n: &RatioRecord, threshold: f64) -> Row {
     let change = n.ratio / o.ratio - 1.0;
     let (o_ci, n_ci, disjoint) = verdict_intervals(o, n);

@@ -54,7 +54,7 @@
 
 mod target;
 
-use crate::number::Num;
+use crate::number::{Echo, Num};
 use crate::oracle::{OracleClass, OracleLabel};
 use glam::{DVec3, Vec3};
 use std::fmt;
@@ -554,7 +554,7 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
     let number = |name: &str, field: &str| {
         field
             .parse::<T>()
-            .map_err(|_| format!("column {name}: '{field}' is not a number"))
+            .map_err(|_| format!("column {name}: '{}' is not a number", Echo(field)))
     };
     for (k, (name, field)) in names.iter().zip(&typed).enumerate() {
         match *name {
@@ -562,12 +562,14 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
                 let v = number(name, field)?;
                 if !v.finite() {
                     return Err(format!(
-                        "column t_min: {field} is not finite (allowed: 0 ≤ t_min ≤ t_max)"
+                        "column t_min: {} is not finite (allowed: 0 ≤ t_min ≤ t_max)",
+                        Echo(field)
                     ));
                 }
                 if v < T::ZERO {
                     return Err(format!(
-                        "column t_min: {field} is negative (allowed: 0 ≤ t_min ≤ t_max)"
+                        "column t_min: {} is negative (allowed: 0 ≤ t_min ≤ t_max)",
+                        Echo(field)
                     ));
                 }
                 fields.t_min = v;
@@ -580,7 +582,8 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
                     Some(std::cmp::Ordering::Greater | std::cmp::Ordering::Equal)
                 ) {
                     return Err(format!(
-                        "column t_max: {field} is not a number ≥ 0 (allowed: t_min ≤ t_max ≤ inf)"
+                        "column t_max: {} is not a number ≥ 0 (allowed: t_min ≤ t_max ≤ inf)",
+                        Echo(field)
                     ));
                 }
                 fields.t_max = v;
@@ -589,7 +592,12 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
                 fields.on_surface = match *field {
                     "0" => false,
                     "1" => true,
-                    _ => return Err(format!("column on_surface: '{field}' is not 0 or 1")),
+                    _ => {
+                        return Err(format!(
+                            "column on_surface: '{}' is not 0 or 1",
+                            Echo(field)
+                        ));
+                    }
                 };
             }
             _ => {
@@ -612,8 +620,8 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
         };
         return Err(format!(
             "columns t_min, t_max: t_min = {} > t_max = {} (allowed: 0 ≤ t_min ≤ t_max)",
-            typed_of("t_min"),
-            typed_of("t_max")
+            Echo(typed_of("t_min")),
+            Echo(typed_of("t_max"))
         ));
     }
     fields.typed = typed;
@@ -626,7 +634,10 @@ fn parse_row<'a, T: Float>(columns: &Columns, line: &'a str) -> Result<Fields<'a
 fn not_finite(name: &str, field: &str, (precision, max): (&str, Num)) -> String {
     let word = field.trim_start_matches(['+', '-']).to_ascii_lowercase();
     if matches!(word.as_str(), "inf" | "infinity" | "nan") {
-        return format!("column {name}: {field} is not finite (allowed: a finite number)");
+        return format!(
+            "column {name}: {} is not finite (allowed: a finite number)",
+            Echo(field)
+        );
     }
     let hint = if precision == "f32" {
         "; the rays are read as f32 (--precision f32, --exact f32 or gpu): \
@@ -634,14 +645,19 @@ fn not_finite(name: &str, field: &str, (precision, max): (&str, Num)) -> String 
     } else {
         ""
     };
-    format!("column {name}: {field} is out of {precision} range (allowed: |value| <= {max}){hint}")
+    format!(
+        "column {name}: {} is out of {precision} range (allowed: |value| <= {max}){hint}",
+        Echo(field)
+    )
 }
 
 /// How a refused ray is reported: the error, and the direction as typed.
 fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
     format!(
         "{e} (as typed: dx,dy,dz = {},{},{})",
-        fields[3], fields[4], fields[5]
+        Echo(fields[3]),
+        Echo(fields[4]),
+        Echo(fields[5])
     )
 }
 

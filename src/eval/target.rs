@@ -21,6 +21,7 @@
 //! torus, answered as without the flags.
 
 use super::EvalError;
+use crate::number::Num;
 use crate::oracle::bend::BendQuery;
 use crate::oracle::{OracleLabel, Query, classify_from_surface};
 use glam::{DVec3, Vec3};
@@ -64,7 +65,8 @@ impl Target {
         if bore.is_some() || start.is_some() || delta.is_some() {
             if axial.is_some_and(|b| b != minor) {
                 return Err(EvalError::Bend(
-                    "--axial with --bore/--phi-start/--delta-phi: a pipe bend's tube is                      circular (give --axial equal to --minor, or leave it out)"
+                    "--axial with --bore/--phi-start/--delta-phi: a pipe bend's tube is \
+                     circular (give --axial equal to --minor, or leave it out)"
                         .into(),
                 ));
             }
@@ -285,7 +287,9 @@ fn bend_flag_error(
             bore_radius,
             tube_radius,
         } => format!(
-            "--bore {bore_radius} is invalid (allowed: 0 <= --bore < --minor = {tube_radius})"
+            "--bore {} is invalid (allowed: 0 <= --bore < --minor = {})",
+            Num(*bore_radius),
+            Num(*tube_radius)
         ),
         BendError::Segment { name, value } => {
             let flag = if *name == "start_phi" {
@@ -294,7 +298,8 @@ fn bend_flag_error(
                 "--delta-phi"
             };
             format!(
-                "{flag} {value} is invalid (allowed: --phi-start finite; 0 < --delta-phi <= 2*pi = {})",
+                "{flag} {} is invalid (allowed: --phi-start finite; 0 < --delta-phi <= 2*pi = {})",
+                Num(*value),
                 std::f64::consts::TAU
             )
         }
@@ -308,6 +313,23 @@ fn bend_flag_error(
              --bore 0, or 0 < --bore <= {max_bore_radius})",
             tube_radius - bore_radius,
             torus_cull::bend::MIN_WALL_REL
+        ),
+        // Not the torus's "ring tori only": eval takes horn and spindle tori, a bend
+        // alone needs a hole for its tube.
+        BendError::Torus {
+            error:
+                torus_cull::TorusError::NoHole {
+                    major_radius,
+                    minor_radius,
+                },
+            ..
+        } => format!(
+            "--major {} --minor {}: a pipe bend needs R > r_max, the tube's outer radius \
+             (allowed: --major > --minor; R <= r_max is a horn or spindle, which eval takes \
+             without --bore/--phi-start/--delta-phi)",
+            // As typed: --major and --minor are read as f32.
+            Num::from(*major_radius as f32),
+            Num::from(*minor_radius as f32)
         ),
         other => format!("--major/--minor/--bore: {other}"),
     }

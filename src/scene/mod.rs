@@ -59,7 +59,9 @@ impl TraceStats {
         if !self.kept_by(cull, torus, ray) {
             return f32::INFINITY;
         }
-        intersect(torus, &ray.with_t_max(t_max)).map_or(f32::INFINITY, |h| h.t)
+        // t_max is a hit's t or +∞, never NaN.
+        let cut = ray.with_t_max(t_max).expect("t_max is not NaN");
+        intersect(torus, &cut).map_or(f32::INFINITY, |h| h.t)
     }
 }
 

@@ -107,7 +107,10 @@ pub fn shadow_rays(
             let (id, t) = (*hit)?;
             let at = ray.origin().as_dvec3() + ray.dir().as_dvec3() * f64::from(t);
             let dir = ((light - at) * f64::from(stretch)).as_vec3();
-            let ray = scene.spawn(id, ray, t, dir)?.with_t_max(1.0 / stretch);
+            let ray = scene
+                .spawn(id, ray, t, dir)?
+                .with_t_max(1.0 / stretch)
+                .ok()?;
             Some(Spawned { ray, from: id })
         })
         .collect()

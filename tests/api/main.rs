@@ -9,4 +9,5 @@ mod common;
 mod api_bit_patterns;
 mod layout;
 mod package;
+mod refused_inputs;
 mod rust_version;

@@ -11,6 +11,7 @@ mod eval_cli;
 mod f32_check;
 mod family_cli;
 mod issue36_cli;
+mod issue52_cli;
 mod nothing_lost_cli;
 mod outputs_cli;
 mod results_compare;

@@ -10,7 +10,7 @@ use torus_cull_lab::results::{
     TimingRecord, write_atomic,
 };
 
-fn sample() -> Results {
+pub(crate) fn sample() -> Results {
     Results {
         schema_version: SCHEMA_VERSION,
         meta: Meta {

@@ -187,7 +187,7 @@ fn an_origin_inside_the_tube_hits_where_the_ray_leaves() {
                 "the normal points along the leaving ray"
             );
             assert!(occluded(&torus, &ray));
-            let short = ray.with_t_max(hit.t * 0.5);
+            let short = ray.with_t_max(hit.t * 0.5).unwrap();
             assert_eq!(
                 occluded(&torus, &short),
                 intersect(&torus, &short).is_some()

@@ -404,7 +404,10 @@ where
     P::Float: From<f32>,
 {
     use torus_cull::Precision;
-    let cut = |t: f64| ray.with_t_max(<P as Precision>::Float::from(t as f32));
+    let cut = |t: f64| {
+        ray.with_t_max(<P as Precision>::Float::from(t as f32))
+            .expect("a finite t_max")
+    };
     match want {
         None => vec![(*ray, false)],
         Some(t) if t * 1e-3 > 4.0 * tol => vec![(cut(t * 0.999), false), (cut(t * 1.001), true)],

@@ -54,14 +54,14 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
         args.nu.clone()
     };
     check_seconds(args.seconds)?;
-    let runs = args.runs.unwrap_or(DEFAULT_BVH_RUNS);
+    let runs = match args.runs {
+        Some(runs) => runs.within("--runs", (1, super::MAX_RUNS), "")?,
+        None => DEFAULT_BVH_RUNS,
+    };
     check_runs(runs, args.seconds)?;
     let rays = match args.batch {
         None => DEFAULT_BVH_RAYS,
-        Some(b) if b >= 16 => b,
-        Some(b) => {
-            return Err(format!("--batch {b} is invalid with --bvh (allowed: >= 16)").into());
-        }
+        Some(b) => b.within("--batch", (16, usize::MAX), " with --bvh")?,
     };
     let path = match &args.out {
         Some(p) => p.clone(),

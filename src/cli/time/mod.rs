@@ -6,6 +6,7 @@ mod family;
 mod shapes;
 
 use crate::console::{out, outln};
+use crate::whole::Whole;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -13,6 +14,7 @@ use torus_cull::CullKind;
 use torus_cull::Named;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::measure::CountedCull;
+use torus_cull_lab::number::Num;
 use torus_cull_lab::paired::runs::combine_runs;
 use torus_cull_lab::paired::sweep::{
     DEFAULT_BATCH, PairedError, PairedOptions, REFERENCES, time_workload,
@@ -53,15 +55,15 @@ pub struct TimeArgs {
     finish: bool,
     /// With `--device gpu`: threads per workgroup of the kernel (32, 64, 128 or 256; the
     /// answers are the same, only the speed may differ). The results' device names it.
-    #[arg(long, default_value_t = 64)]
-    workgroup: u32,
+    #[arg(long, default_value_t = Whole(64))]
+    workgroup: Whole,
     /// Total measuring time in seconds, shared evenly by every case × ν.
     #[arg(long, default_value_t = 30.0)]
     seconds: f64,
     /// Rays per batch, timed by every contender in every round (default: 1024, or the
     /// workload's rays if fewer).
     #[arg(long)]
-    batch: Option<usize>,
+    batch: Option<Whole>,
     /// Results JSON (default: results/<short commit>[-dirty]-<workload>-time.json, or
     /// …-time.json for the workload named `default`; …-secondary-time.json with
     /// --secondary and …-gpu-time.json with --device gpu, so that neither replaces the
@@ -122,7 +124,7 @@ pub struct TimeArgs {
     /// show and `compare` judges by. More runs give a narrower between-run interval. 1:
     /// one run in this process, with the within-run interval only.
     #[arg(long)]
-    runs: Option<u64>,
+    runs: Option<Whole>,
     /// Time inside the BVH instead (the workload's `bvh` scenes, `--nu` any ν, default
     /// the workload's; the scenes it lacks at ν = 4): each cull at the leaves over `none` and `cychosz`, per ray, for
     /// closest-hit camera rays, any-hit shadow rays, closest-hit diffuse bounce rays from
@@ -168,7 +170,7 @@ enum Mode {
 /// Runs `torus-cull time`.
 pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     // Before any mode returns: a GPU flag on a CPU timing is refused, never ignored.
-    if args.device != Device::Gpu && args.workgroup != 64 {
+    if args.device != Device::Gpu && args.workgroup != Whole(64) {
         return Err("--workgroup sizes the GPU kernel: only with --device gpu".into());
     }
     for (given, flag) in [(args.family, "--family"), (args.bend, "--bend")] {
@@ -229,7 +231,11 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
             batch,
             GpuOptions {
                 finish: args.finish,
-                workgroup: args.workgroup,
+                workgroup: args.workgroup.within(
+                    "--workgroup",
+                    (32, 256),
+                    "; 32, 64, 128 or 256",
+                )?,
             },
             &path,
         )?;
@@ -268,9 +274,10 @@ pub fn run(args: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         return Ok(ExitCode::SUCCESS);
     }
     // Unless asked for, as many runs as `--seconds` allows, up to the default.
-    let runs = args.runs.unwrap_or_else(|| {
-        ((args.seconds / MIN_RUN_SECONDS).floor() as u64).clamp(1, DEFAULT_RUNS)
-    });
+    let runs = match args.runs {
+        Some(runs) => runs.within("--runs", (1, MAX_RUNS), "")?,
+        None => ((args.seconds / MIN_RUN_SECONDS).floor() as u64).clamp(1, DEFAULT_RUNS),
+    };
     check_runs(runs, args.seconds)?;
     let records = if runs == 1 {
         time_once(&options)?
@@ -334,8 +341,9 @@ fn check_runs(runs: u64, seconds: f64) -> Result<(), String> {
     }
     if seconds / (runs as f64) < MIN_RUN_SECONDS {
         return Err(format!(
-            "--seconds {seconds} is too short for --runs {runs} (allowed: seconds >= \
+            "--seconds {} is too short for --runs {runs} (allowed: seconds >= \
              {MIN_RUN_SECONDS} x runs = {}): give more seconds or fewer runs",
+            Num(seconds),
             MIN_RUN_SECONDS * runs as f64
         ));
     }
@@ -433,7 +441,8 @@ fn time_in_workers(plan: &WorkerPlan<'_>, runs: u64) -> Result<Vec<RatioRecord>,
 fn check_seconds(seconds: f64) -> Result<(), String> {
     if !(seconds.is_finite() && seconds > 0.0 && seconds <= MAX_SECONDS) {
         return Err(format!(
-            "--seconds {seconds} is invalid (allowed: 0 < seconds <= {MAX_SECONDS})"
+            "--seconds {} is invalid (allowed: 0 < seconds <= {MAX_SECONDS})",
+            Num(seconds)
         ));
     }
     Ok(())
@@ -441,17 +450,14 @@ fn check_seconds(seconds: f64) -> Result<(), String> {
 
 /// `--batch`: at least [`MIN_BATCH`] and at most the workload's rays (`file` names it);
 /// default [`DEFAULT_BATCH`], or the workload's rays if fewer.
-fn pick_batch(asked: Option<usize>, workload: &Workload, file: &Path) -> Result<usize, String> {
+fn pick_batch(asked: Option<Whole>, workload: &Workload, file: &Path) -> Result<usize, String> {
     let batch = match asked {
         None => DEFAULT_BATCH.min(workload.rays),
-        Some(b) if (MIN_BATCH..=workload.rays).contains(&b) => b,
-        Some(b) => {
-            return Err(format!(
-                "--batch {b} is invalid (allowed: {MIN_BATCH} ..= {}, the rays of workload {})",
-                workload.rays,
-                file.display()
-            ));
-        }
+        Some(b) => b.within(
+            "--batch",
+            (MIN_BATCH, workload.rays),
+            &format!(", the rays of workload {}", file.display()),
+        )?,
     };
     // Only the default can fall short: the workload itself has too few rays.
     if batch < MIN_BATCH {
@@ -475,13 +481,10 @@ const MAX_GPU_BATCH: usize = 1 << 25;
 
 /// `--batch` with `--device gpu`: drawn from the workload's generators at that count,
 /// whatever the workload's `rays`.
-fn pick_gpu_batch(asked: Option<usize>) -> Result<usize, String> {
+fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
     match asked {
         None => Ok(GPU_BATCH),
-        Some(b) if (MIN_BATCH..=MAX_GPU_BATCH).contains(&b) => Ok(b),
-        Some(b) => Err(format!(
-            "--batch {b} is invalid with --device gpu (allowed: {MIN_BATCH} ..= {MAX_GPU_BATCH})"
-        )),
+        Some(b) => b.within("--batch", (MIN_BATCH, MAX_GPU_BATCH), " with --device gpu"),
     }
 }
 

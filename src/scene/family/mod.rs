@@ -230,9 +230,9 @@ impl FamilyScene {
             return f32::INFINITY;
         }
         stats.quartic_solves += 1;
-        shape
-            .intersect(&ray.with_t_max(t_max))
-            .map_or(f32::INFINITY, |h| h.t)
+        // t_max is a hit's t or +∞, never NaN.
+        let cut = ray.with_t_max(t_max).expect("t_max is not NaN");
+        shape.intersect(&cut).map_or(f32::INFINITY, |h| h.t)
     }
 
     /// The nearest hit over every shape `i`, each on the ray `ray_for(i)`; ties keep the

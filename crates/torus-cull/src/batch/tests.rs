@@ -98,7 +98,10 @@ fn intersect_all_on_drays_is_the_scalar_answer() {
                 );
             }
             // A limited range too: t_max inside the tube.
-            let limited: Vec<DRay> = rays.iter().map(|r| r.with_t_max(2.5 * big)).collect();
+            let limited: Vec<DRay> = rays
+                .iter()
+                .map(|r| r.with_t_max(2.5 * big).unwrap())
+                .collect();
             rays.extend(limited);
             for cull in BATCHED.into_iter().chain([BatchCull::NoCull]) {
                 let stats = wavefront.intersect_all(&dispatch, cull, &torus, &rays, &mut all);

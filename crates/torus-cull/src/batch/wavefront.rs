@@ -163,7 +163,7 @@ impl Wavefront {
     /// let shadow = [
     ///     torus.spawn(&up, hit.t, Vec3::Y)?,     // up, through the tube: blocked by its top
     ///     torus.spawn(&up, hit.t, Vec3::NEG_Y)?, // down, away from the torus: clear
-    ///     torus.spawn(&up, hit.t, Vec3::Y)?.with_t_max(1.5), // a light inside the tube
+    ///     torus.spawn(&up, hit.t, Vec3::Y)?.with_t_max(1.5)?, // a light inside the tube
     /// ];
     /// let mut wavefront = Wavefront::new();
     /// let mut blocked = Vec::new();

@@ -358,14 +358,17 @@ impl PipeBend {
     ///
     /// # Errors
     ///
-    /// A [`RayError`], as [`Torus::spawn`]'s.
+    /// A [`RayError`], as [`Torus::spawn`]'s (size R + r_max in `OffSurface`'s tolerance,
+    /// the distance [`PipeBend::signed_distance`]'s).
     pub fn spawn<P: Precision>(
         &self,
         ray: &Ray<P>,
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        ray.spawn_onto(t, dir, |at| self.nearest_face_point(at))
+        let distance = |at| self.signed_distance(at).map_or(f64::INFINITY, f64::abs);
+        let size = self.major_radius_f64() + self.tube_radius_f64();
+        ray.spawn_onto(t, dir, size, distance, |at| self.nearest_face_point(at))
     }
 
     /// The point of the nearest face to the world point `p`, with the faces it lies on

@@ -31,7 +31,7 @@ pub struct F32Occluded {
 /// let to_light = Ray::with_range(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y, 0.0, 20.0)?;
 /// let answer = occluded_f32(&torus, &to_light);
 /// assert!(answer.occluded && !answer.escalated); // the tube, at t = 9, proved in f32
-/// assert!(!occluded_f32(&torus, &to_light.with_t_max(8.5)).occluded);
+/// assert!(!occluded_f32(&torus, &to_light.with_t_max(8.5)?).occluded);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[must_use]

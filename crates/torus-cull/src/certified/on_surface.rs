@@ -146,7 +146,7 @@ mod tests {
         };
         assert!((literal.t_min() - 1.0 / 6.0).abs() < 1e-6);
         // A range inside [0, t*]: nothing but the origin.
-        assert_eq!(start(&torus, &up.with_t_max(0.3)), Start::Miss);
+        assert_eq!(start(&torus, &up.with_t_max(0.3).unwrap()), Start::Miss);
         // Into the tube, or along the tangent plane: no start.
         let down = Ray::from_surface(Vec3::new(4.0, 1.0, 0.0), Vec3::NEG_Y).expect("ray");
         assert_eq!(start(&torus, &down), Start::Escalate);

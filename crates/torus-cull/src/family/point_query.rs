@@ -144,6 +144,28 @@ impl Toroid {
     }
 }
 
+impl Toroid {
+    /// The distance from `p` to the surface, for [`Toroid::spawn`]'s on-surface check: the
+    /// distance itself, but for an elliptical horn or spindle (whose closest point this
+    /// module does not compute) the distance to the whole ellipse in `p`'s meridian, a
+    /// lower bound (the apple's arc is part of that ellipse, and the nearest surface point
+    /// lies in `p`'s own meridian half-plane). +∞ for a non-finite point.
+    pub(super) fn distance_at_least(&self, p: DVec3) -> f64 {
+        match self.signed_distance(p) {
+            Ok(d) => d.abs(),
+            Err(FamilyPointError::Unsupported) => {
+                let Ok(x) = self.image().point_to_local_f64(p) else {
+                    return f64::INFINITY;
+                };
+                let q = DVec2::new(x.x.hypot(x.z) - self.major_radius_f64(), x.y);
+                let (a, b) = (self.radial_semi_axis_f64(), self.axial_semi_axis_f64());
+                (q - nearest_on_ellipse(a, b, q)).length()
+            }
+            Err(FamilyPointError::NonFinite(_)) => f64::INFINITY,
+        }
+    }
+}
+
 /// The nearest point of the circle of radius `a` about `(0, 0)` in `(u, v)`, limited to
 /// `u ≥ −R` (the apple) with its cusps as ends; `q = 0` gives the outer equator.
 fn nearest_on_apple(big: f64, a: f64, q: DVec2) -> DVec2 {

@@ -453,13 +453,25 @@ impl Toroid {
     ///
     /// # Errors
     ///
-    /// A [`RayError`] as [`crate::Torus::spawn`]'s, never a panic or a NaN ray.
+    /// A [`RayError`] as [`crate::Torus::spawn`]'s, never a panic or a NaN ray; size is
+    /// R + max(a, b) in `OffSurface`'s tolerance, and for an elliptical horn or spindle
+    /// (whose closest point is not computed) the distance is a lower bound, the distance
+    /// to the whole ellipse in the point's meridian, so a point near the ellipse's arc
+    /// past the axis is not refused.
     pub fn spawn<P: Precision>(
         &self,
         ray: &Ray<P>,
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        ray.spawn_onto(t, dir, |at| self.surface_point_near(at))
+        let size =
+            self.major_radius_f64() + self.radial_semi_axis_f64().max(self.axial_semi_axis_f64());
+        ray.spawn_onto(
+            t,
+            dir,
+            size,
+            |at| self.distance_at_least(at),
+            |at| self.surface_point_near(at),
+        )
     }
 }

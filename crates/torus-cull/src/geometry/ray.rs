@@ -45,6 +45,9 @@ pub(crate) mod sealed {
         const ZERO: Self;
         /// The smallest normal float: `|d|²` must reach it.
         const MIN_POSITIVE: Self;
+        /// The machine epsilon (2⁻²³ for f32, 2⁻⁵² for f64), widened to f64: a spawn's
+        /// tolerance for the rounding of a hit's `t`.
+        const EPSILON_F64: f64;
         fn finite(self) -> bool;
         fn nan(self) -> bool;
         fn min(self, other: Self) -> Self;
@@ -61,6 +64,7 @@ pub(crate) mod sealed {
                 const INFINITY: $f = <$f>::INFINITY;
                 const ZERO: $f = 0.0;
                 const MIN_POSITIVE: $f = <$f>::MIN_POSITIVE;
+                const EPSILON_F64: f64 = <$f>::EPSILON as f64;
                 #[inline(always)]
                 fn finite(self) -> bool {
                     self.is_finite()
@@ -145,7 +149,7 @@ pub(crate) mod sealed {
         internals_of_glam!(Vec3, f32);
         const NAME: &'static str = "f32";
         const HUGE: &'static str = "|d|² must be finite in f32: |d| < 1.8e19";
-        const RANGE: &'static str = "need finite t_min ≤ t_max";
+        const RANGE: &'static str = "need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN";
         #[inline(always)]
         fn to_dvec3(self) -> DVec3 {
             self.as_dvec3()
@@ -167,7 +171,7 @@ pub(crate) mod sealed {
         internals_of_glam!(DVec3, f64);
         const NAME: &'static str = "f64";
         const HUGE: &'static str = "|d|² overflows f64";
-        const RANGE: &'static str = "t_min finite, t_min ≤ t_max";
+        const RANGE: &'static str = "need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN";
         #[inline(always)]
         fn to_dvec3(self) -> DVec3 {
             self
@@ -205,7 +209,7 @@ pub(crate) mod sealed {
 /// assert!(DRay::new(DVec3::ZERO, DVec3::ZERO).is_err());
 /// assert!(DRay::new(DVec3::ZERO, DVec3::splat(1e300)).is_err()); // |d|² overflows
 /// // `at` and `with_t_max` are written once, for both precisions.
-/// let ray = DRay::new(DVec3::ZERO, DVec3::X * 2.0)?.with_t_max(3.0);
+/// let ray = DRay::new(DVec3::ZERO, DVec3::X * 2.0)?.with_t_max(3.0)?;
 /// assert_eq!((ray.at(1.5), ray.t_max()), (DVec3::new(3.0, 0.0, 0.0), 3.0));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -246,12 +250,29 @@ pub enum RayError<P: Precision = Vec3> {
     ZeroDirection(P),
     /// |d|² overflows the ray's float.
     HugeDirection(P),
-    /// `t_min` must be finite, `t_max` may be +∞, and `t_min ≤ t_max`.
+    /// `t_min` must be finite and ≥ 0 (the CLI's rule too: a ray starts at its origin),
+    /// `t_max` may be +∞ but not NaN, and `t_min ≤ t_max`; also [`Ray::with_t_max`] of a
+    /// NaN, so that a shadow ray with a NaN light distance is refused, not unbounded.
     BadRange {
         /// The lower end given.
         t_min: P::Float,
         /// The upper end given.
         t_max: P::Float,
+    },
+    /// A shape's `spawn` (`Torus::spawn`, `Toroid::spawn`, `PipeBend::spawn`) was given a
+    /// `t` whose point is not on the surface: farther from it than the tolerance
+    /// `ON_SURFACE_REL·size + 8·ε·|t|·|d|` ([`ON_SURFACE_REL`]; size = R + r, R + max(a, b)
+    /// or R + r_max; ε the machine epsilon of the ray's float, for the rounding of a far
+    /// hit's `t`). Such a `t` is not a hit's, and its point moved onto the surface would be
+    /// another point than the one the caller meant.
+    OffSurface {
+        /// The `t` given.
+        t: P::Float,
+        /// The distance of the point at `t` from the surface (for an elliptical horn or
+        /// spindle, a lower bound: `Toroid::spawn`).
+        distance: f64,
+        /// The tolerance it exceeds.
+        tolerance: f64,
     },
 }
 
@@ -266,6 +287,18 @@ pub(crate) fn compact<T: fmt::Display + fmt::LowerExp>(v: T, as_f64: f64) -> Str
         format!("{v}")
     } else {
         format!("{v:e}")
+    }
+}
+
+/// An f64 in an error message, [`compact`]; one that is an f32 (a radius of
+/// [`crate::Torus::new`], widened) as that f32's shortest text, as typed: `3e-9`, not
+/// `3.000000026176508e-9`.
+pub(crate) fn compact_value(v: f64) -> String {
+    let narrow = v as f32;
+    if f64::from(narrow) == v {
+        compact(narrow, v)
+    } else {
+        compact(v, v)
     }
 }
 
@@ -318,6 +351,21 @@ impl<P: Precision> fmt::Display for RayError<P> {
                     P::RANGE
                 )
             }
+            RayError::OffSurface {
+                t,
+                distance,
+                tolerance,
+            } => {
+                write!(
+                    f,
+                    "spawn at t = {}: the point there is {} from the surface, beyond the \
+                     on-surface tolerance {} (ON_SURFACE_REL·size + 8·ε·|t|·|d|): t is not \
+                     a hit of this shape",
+                    compact(*t, t.to_f64()),
+                    compact(*distance, *distance),
+                    compact(*tolerance, *tolerance)
+                )
+            }
         }
     }
 }
@@ -361,7 +409,8 @@ impl<P: Precision> Ray<P> {
         if !len_sq.finite() {
             return Err(RayError::HugeDirection(dir));
         }
-        if !t_min.finite() || t_max.nan() || t_min > t_max {
+        // A NaN t_min is not finite; −0 is 0, not below it.
+        if !t_min.finite() || t_min < P::Float::ZERO || t_max.nan() || t_min > t_max {
             return Err(RayError::BadRange { t_min, t_max });
         }
         Ok(Ray {
@@ -418,7 +467,7 @@ impl<P: Precision> Ray<P> {
     /// [`Ray::from_surface`] over `t ∈ [t_min, t_max]`: the nearest crossing in the range
     /// with `t > 0`, other than the origin's own. A shadow ray to a light at `t = 1` is
     /// `from_surface_with_range(p, light − p, 0.0, 1.0)` (or
-    /// [`Ray::from_surface`]`(…)?.`[`with_t_max`](Ray::with_t_max)`(1.0)`).
+    /// [`Ray::from_surface`]`(…)?.`[`with_t_max`](Ray::with_t_max)`(1.0)?`).
     ///
     /// ```
     /// use glam::Vec3;
@@ -444,13 +493,38 @@ impl<P: Precision> Ray<P> {
 
     /// The shapes' `spawn`: the point at `t`, formed in f64 and moved onto the surface by
     /// `onto` before it is rounded to `P`, as the origin of a [`Ray::from_surface`].
+    ///
+    /// First the point must be on the surface: `distance(at)` (the shape's distance, or a
+    /// lower bound of it; +∞ where it has none) at most `ON_SURFACE_REL·size +
+    /// 8·ε·|t|·|d|`, else [`RayError::OffSurface`]. The first term is
+    /// [`Ray::from_surface`]'s own bound, which covers a hit rounded to f32 within about
+    /// 1 600·size of the world origin; the second covers the rounding of a far hit's `t`
+    /// to the ray's float (½ε·|t|·|d|) with a factor 16 of room for the solver's error,
+    /// so that a renderer's hit on a small shape far from the camera is still a hit. A `t`
+    /// that is not a hit moves the point by about |t − t_hit|·|d|·|cos θ| off the surface,
+    /// far beyond it.
     pub(crate) fn spawn_onto(
         &self,
         t: P::Float,
         dir: P,
+        size: f64,
+        distance: impl Fn(DVec3) -> f64,
         onto: impl Fn(DVec3) -> DVec3,
     ) -> Result<Ray<P>, RayError<P>> {
         let at = self.origin.to_dvec3() + self.dir.to_dvec3() * t.to_f64();
+        if !at.is_finite() {
+            return Err(RayError::NonFiniteOrigin(P::from_dvec3(at)));
+        }
+        let travel = t.to_f64().abs() * self.dir.to_dvec3().length();
+        let tolerance = ON_SURFACE_REL * size + 8.0 * <P::Float as Scalar>::EPSILON_F64 * travel;
+        let distance = distance(at);
+        if distance.is_nan() || distance > tolerance {
+            return Err(RayError::OffSurface {
+                t,
+                distance,
+                tolerance,
+            });
+        }
         Ray::from_surface(P::from_dvec3(onto(at)), dir)
     }
 
@@ -501,14 +575,35 @@ impl<P: Precision> Ray<P> {
     }
 
     /// The same ray with its range cut to end at `t_max` (never widened, never below
-    /// `t_min`): what a traversal passes on once a closer hit is known.
+    /// `t_min`): what a traversal passes on once a closer hit is known, or a shadow ray
+    /// given its light's distance.
+    ///
+    /// # Errors
+    ///
+    /// [`RayError::BadRange`] for a NaN `t_max`: a shadow ray whose light distance is NaN
+    /// would otherwise keep its range (+∞) and see every occluder behind the light.
+    ///
+    /// ```
+    /// use glam::Vec3;
+    /// use torus_cull::Ray;
+    /// let ray = Ray::new(Vec3::ZERO, Vec3::X)?;
+    /// assert_eq!(ray.with_t_max(2.0)?.t_max(), 2.0);
+    /// assert_eq!(ray.with_t_max(2.0)?.with_t_max(5.0)?.t_max(), 2.0); // never widened
+    /// assert!(ray.with_t_max(f32::NAN).is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     #[inline]
-    #[must_use]
-    pub fn with_t_max(&self, t_max: P::Float) -> Ray<P> {
-        Ray {
+    pub fn with_t_max(&self, t_max: P::Float) -> Result<Ray<P>, RayError<P>> {
+        if t_max.nan() {
+            return Err(RayError::BadRange {
+                t_min: self.t_min,
+                t_max,
+            });
+        }
+        Ok(Ray {
             t_max: t_max.min(self.t_max).max(self.t_min),
             ..*self
-        }
+        })
     }
 
     /// The point `o + t·d`.
@@ -574,12 +669,12 @@ mod tests {
         let range = DRay::with_range(DVec3::ZERO, DVec3::X, 2.0, 1.0).unwrap_err();
         assert_eq!(
             msg(&range),
-            "ray range [2, 1] is invalid (t_min finite, t_min ≤ t_max)"
+            "ray range [2, 1] is invalid (need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN)"
         );
         let range = Ray::with_range(Vec3::ZERO, Vec3::X, 2.0, 1.0).unwrap_err();
         assert_eq!(
             msg(&range),
-            "ray range [2, 1] is invalid (need finite t_min ≤ t_max)"
+            "ray range [2, 1] is invalid (need 0 ≤ t_min ≤ t_max, t_min finite, t_max not NaN)"
         );
     }
 }

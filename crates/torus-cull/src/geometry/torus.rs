@@ -1,7 +1,7 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
-use super::ray::{DRay, Precision, Ray, RayError};
+use super::ray::{DRay, Precision, Ray, RayError, compact_value as num};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use std::fmt;
@@ -88,23 +88,23 @@ pub enum TorusError {
     BadRadius {
         /// Which radius.
         name: &'static str,
-        /// The value given.
-        value: f32,
+        /// The value given (an f32 radius widened exactly).
+        value: f64,
     },
     /// ν = R/r ≤ 1: a horn or spindle torus, which has no hole.
     NoHole {
         /// R as given.
-        major_radius: f32,
+        major_radius: f64,
         /// r as given.
-        minor_radius: f32,
+        minor_radius: f64,
     },
     /// ν = R/r > [`MAX_NU`]: a tube thinner than the tests prove the intersection and
     /// the culls right for.
     TooThin {
         /// R as given.
-        major_radius: f32,
+        major_radius: f64,
         /// r as given.
-        minor_radius: f32,
+        minor_radius: f64,
     },
     /// The centre has a NaN or infinite component.
     NonFiniteCenter(Vec3),
@@ -117,9 +117,9 @@ pub enum TorusError {
     /// longer conservative.
     OutOfRange {
         /// R as given.
-        major_radius: f32,
+        major_radius: f64,
         /// r as given.
-        minor_radius: f32,
+        minor_radius: f64,
     },
 }
 
@@ -157,26 +157,34 @@ impl fmt::Display for TorusError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             TorusError::BadRadius { name, value } => {
-                write!(f, "{name} = {value} is invalid (must be finite and > 0)")
+                write!(
+                    f,
+                    "{name} = {} is invalid (must be finite and > 0)",
+                    num(*value)
+                )
             }
             TorusError::NoHole {
                 major_radius,
                 minor_radius,
             } => write!(
                 f,
-                "major_radius = {major_radius}, minor_radius = {minor_radius}: nu = R/r = {} must be > 1 \
+                "major_radius = {}, minor_radius = {}: nu = R/r = {} must be > 1 \
                  (a horn or spindle torus has no hole; torus-cull supports ring tori only)",
-                major_radius / minor_radius
+                num(*major_radius),
+                num(*minor_radius),
+                num(major_radius / minor_radius)
             ),
             TorusError::TooThin {
                 major_radius,
                 minor_radius,
             } => write!(
                 f,
-                "major_radius = {major_radius}, minor_radius = {minor_radius}: nu = R/r = {:e} \
+                "major_radius = {}, minor_radius = {}: nu = R/r = {:e} \
                  is above the supported range (allowed: 1 < nu <= {MAX_NU}, where the \
                  intersection and the culls are tested; scale r up or split the scene)",
-                *major_radius as f64 / *minor_radius as f64
+                num(*major_radius),
+                num(*minor_radius),
+                major_radius / minor_radius
             ),
             TorusError::NotSimilarity => write!(
                 f,
@@ -197,10 +205,12 @@ impl fmt::Display for TorusError {
                 minor_radius,
             } => write!(
                 f,
-                "major_radius = {major_radius}, minor_radius = {minor_radius}: R + r = {} is outside \
+                "major_radius = {}, minor_radius = {}: R + r = {} is outside \
                  the supported range {MIN_OUTER_RADIUS:e} ..= {MAX_OUTER_RADIUS:e} (the f32 culls are \
                  not conservative beyond it; rescale the scene)",
-                major_radius + minor_radius
+                num(*major_radius),
+                num(*minor_radius),
+                num(major_radius + minor_radius)
             ),
         }
     }
@@ -240,9 +250,9 @@ impl Torus {
     /// `axis` (normalized here, in f64), R = `major_radius`, r = `minor_radius`.
     ///
     /// The same rules as [`Torus::new`], checked on the f64 values, with the same errors;
-    /// the values an error carries are rounded to f32. A centre beyond f32's range is
-    /// refused as [`TorusError::NonFiniteCenter`] (it is infinite where the culls and f32
-    /// rays work).
+    /// the radii an error carries are the f64 values given, the centre and axis are
+    /// rounded to f32. A centre beyond f32's range is refused as
+    /// [`TorusError::NonFiniteCenter`] (it is infinite where the culls and f32 rays work).
     ///
     /// ```
     /// use glam::DVec3;
@@ -601,7 +611,10 @@ impl Torus {
     /// A [`RayError`], never a panic or a NaN ray: `NonFiniteDirection` for a NaN or
     /// infinite component of `dir`, `ZeroDirection` / `HugeDirection` for a `dir` whose
     /// `|d|²` is not a normal finite float, `NonFiniteOrigin` when the point at `t` is not
-    /// finite (a NaN or infinite `t`, or a hit too far along for the ray's float).
+    /// finite (a NaN or infinite `t`, or a hit too far along for the ray's float),
+    /// `OffSurface` when it lies farther from the surface than
+    /// [`ON_SURFACE_REL`](crate::ON_SURFACE_REL)·(R + r) + 8·ε·|t|·|d| (ε the machine
+    /// epsilon of the ray's float): `t` is not a hit's.
     ///
     /// ```
     /// use glam::Vec3;
@@ -624,7 +637,9 @@ impl Torus {
         t: P::Float,
         dir: P,
     ) -> Result<Ray<P>, RayError<P>> {
-        ray.spawn_onto(t, dir, |at| self.nearest_surface_point(at))
+        let distance = |at| self.signed_distance(at).map_or(f64::INFINITY, f64::abs);
+        let size = self.major_f64 + self.minor_f64;
+        ray.spawn_onto(t, dir, size, distance, |at| self.nearest_surface_point(at))
     }
 
     /// [`Torus::spawn`] from a hit's point (`Hit::point`, in the ray's precision), for a
@@ -716,8 +731,8 @@ fn check_hole(major: f64, minor: f64) -> Result<(), TorusError> {
     let positive = |v: f64| v.is_finite() && v > 0.0;
     if positive(major) && positive(minor) && major <= minor {
         return Err(TorusError::NoHole {
-            major_radius: major as f32,
-            minor_radius: minor as f32,
+            major_radius: major,
+            minor_radius: minor,
         });
     }
     Ok(())
@@ -729,13 +744,12 @@ fn check_hole(major: f64, minor: f64) -> Result<(), TorusError> {
 fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<(), TorusError> {
     for (name, value) in [("major_radius", major), ("minor_radius", minor)] {
         if !(value.is_finite() && value > 0.0) {
-            return Err(TorusError::BadRadius {
-                name,
-                value: value as f32,
-            });
+            return Err(TorusError::BadRadius { name, value });
         }
     }
-    let (major_radius, minor_radius) = (major as f32, minor as f32);
+    // The values as given, f64 (an f32 radius widened exactly): rounded to f32, 10³⁰⁰
+    // would be reported as inf.
+    let (major_radius, minor_radius) = (major, minor);
     // In f64: R + r may overflow f32 while both radii are finite.
     if !(f64::from(MIN_OUTER_RADIUS)..=f64::from(MAX_OUTER_RADIUS)).contains(&(major + minor)) {
         return Err(TorusError::OutOfRange {

@@ -332,7 +332,7 @@ pub fn intersect<R: TorusRay>(torus: &Torus, ray: &R) -> Option<R::Hit> {
 /// let torus = Torus::canonical(4.0, 1.0)?;
 /// let to_light = Ray::with_range(Vec3::new(4.0, 10.0, 0.0), Vec3::NEG_Y, 0.0, 20.0)?;
 /// assert!(occluded(&torus, &to_light));
-/// assert!(!occluded(&torus, &to_light.with_t_max(8.5))); // the light is above the tube
+/// assert!(!occluded(&torus, &to_light.with_t_max(8.5)?)); // the light is above the tube
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[inline]

@@ -32,11 +32,11 @@ use crate::{Cull, Ray, Torus, intersect_culled};
 /// // The nearest hit over the scene: each object cut at the best t so far.
 /// let down = Ray::new(Vec3::new(1.0, 10.0, 0.0), Vec3::NEG_Y)?;
 /// let nearest = scene.iter().fold(None::<Hit>, |best, object| {
-///     let ray = best.map_or(down, |b| down.with_t_max(b.t));
+///     let ray = best.map_or(Ok(down), |b| down.with_t_max(b.t)).expect("t is not NaN");
 ///     object.cast_ray_and_get_normal(&ray).or(best)
 /// });
 /// assert!((nearest.expect("the small torus's top").t - 4.75).abs() < 1e-4);
-/// assert!(!scene[1].intersects_ray(&down.with_t_max(4.5)));
+/// assert!(!scene[1].intersects_ray(&down.with_t_max(4.5)?));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
@@ -48,7 +48,7 @@ use crate::{Cull, Ray, Torus, intersect_culled};
 /// let hit = torus.cast_ray_and_get_normal(&down).expect("the top of the tube");
 /// assert!((hit.t - 9.0).abs() < 1e-4 && (hit.normal - Vec3::Y).length() < 1e-4);
 /// assert_eq!(torus.cast_ray(&down), Some(hit.t));
-/// assert!(!torus.intersects_ray(&down.with_t_max(8.5)));
+/// assert!(!torus.intersects_ray(&down.with_t_max(8.5)?));
 /// // The same queries with a cull in front: the same answers, and a proven miss costs no
 /// // quartic.
 /// let culled = torus.with_cull(SkalaCull);
