@@ -14,6 +14,7 @@ mod conservative;
 mod errata;
 mod f64_rays;
 mod family;
+mod family_points;
 mod family_spindle;
 mod generators;
 mod intersect_adversarial;
