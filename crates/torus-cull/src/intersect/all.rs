@@ -24,6 +24,7 @@ use crate::num::{Sc, V3, sc};
 use crate::quartic::solve_depressed_monic;
 use crate::{Precision, Ray, Torus};
 use glam::{DVec3, Vec3};
+use std::cmp::Ordering;
 
 /// How a ray meets the surface at a [`Crossing`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -542,7 +543,10 @@ fn with_cusps(
             }
         }
     }
-    out[..n].sort_by(|a, b| a.key.total_cmp(&b.key));
+    if n > kept.len() {
+        // Stable, and −0 = +0: the solver's roots keep their order (and their t its sign).
+        out[..n].sort_by(|a, b| a.key.partial_cmp(&b.key).unwrap_or(Ordering::Equal));
+    }
     (out, n)
 }
 
