@@ -238,7 +238,13 @@ impl Toroid {
                 axial_semi_axis: axial,
             });
         }
-        if major / radial < MIN_FAMILY_NU {
+        // From f32 radii, ν as f32 divides it: 0.01 typed in f32 (0.0099999998) is 1/100.
+        let too_fat = if f64_geometry {
+            major / radial < MIN_FAMILY_NU
+        } else {
+            (major as f32) / (radial as f32) < MIN_FAMILY_NU as f32
+        };
+        if too_fat {
             return Err(ToroidError::TooFat {
                 major_radius: major,
                 radial_semi_axis: radial,
