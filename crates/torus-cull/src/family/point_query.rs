@@ -18,7 +18,7 @@
 //!
 //! **Error bound.** The point is on the surface to rounding and the signed distance within
 //! 10⁻¹³·(R + max(a, b) + |q|) of the exact one, q the point's offset from the tube's
-//! centre in its meridian (measured: tests/oracle/point_queries.rs, against a brute-force
+//! centre in its meridian (measured: tests/oracle/family_points.rs, against a brute-force
 //! reference on 10⁶ points).
 //!
 //! On the axis the meridian is the torus frame's x axis; on the core circle (`q = 0`)
