@@ -160,7 +160,7 @@ enum Command {
         #[arg(long = "major", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         major: f32,
         /// Minor radius r > 0: the tube's semi-axis in the equatorial plane (a). R > r is
-        /// a ring torus; R = r the horn and R < r the spindle (down to R/r = 0.5), whose
+        /// a ring torus; R = r the horn and R < r the spindle (down to R/r = 0.01), whose
         /// surface is the outer "apple".
         #[arg(long = "minor", allow_hyphen_values = true, value_parser = eval::parse_radius)]
         minor: f32,

@@ -2,8 +2,8 @@
 //! (`torus_cull::family::Toroid`) against the oracle, member class by member class.
 //!
 //! **Members.** Elliptical (and circular) ring tori with ν = R/a ∈ {1.25, 4, 16} and
-//! b/a ∈ {0.25, 0.5, 1, 2, 4}; horn and spindle tori with ν ∈ {1, 0.75, 0.5} and
-//! b/a ∈ {0.25, 1, 4}. a = 1; each member in a random pose (f64 centre and axis).
+//! b/a ∈ {0.25, 0.5, 1, 2, 4}; horn and spindle tori with ν ∈ {1, 0.75, 0.5, 0.3, 0.1,
+//! 0.01} (down to `MIN_FAMILY_NU`) and b/a ∈ {0.25, 1, 4}. a = 1; each member in a random pose (f64 centre and axis).
 //!
 //! **Rays** (f64, [`torus_cull::DRay`]; the culls see them rounded to f32 as always):
 //! `--rays N` per member, cycling through the kinds of [`rays::RayKind`] (uniform,
@@ -62,7 +62,7 @@ pub fn members() -> Vec<(f64, f64)> {
             all.push((nu, aspect));
         }
     }
-    for nu in [1.0, 0.75, 0.5] {
+    for nu in [1.0, 0.75, 0.5, 0.3, 0.1, 0.01] {
         for aspect in [0.25, 1.0, 4.0] {
             all.push((nu, aspect));
         }

@@ -43,14 +43,16 @@ fn bad_rows_stop_with_the_line_number() {
     let out = eval_file(dir.path(), "x,y,z\n1,2,3\n", "2", "1");
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("rays.csv:1: header"));
-    // r ≥ R is a horn or spindle torus (the apple), down to R/r = 0.5; fatter is refused.
-    let out = eval_file(dir.path(), &format!("{header}{good}"), "1", "2");
-    assert_ok(&out);
-    let out = eval_file(dir.path(), &format!("{header}{good}"), "0.9", "2");
+    // r ≥ R is a horn or spindle torus (the apple), down to R/r = 0.01; fatter is refused.
+    for major in ["1", "0.9", "0.02"] {
+        let out = eval_file(dir.path(), &format!("{header}{good}"), major, "2");
+        assert_ok(&out);
+    }
+    let out = eval_file(dir.path(), &format!("{header}{good}"), "0.019", "2");
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("--major 0.9") && err.contains("0.5 <= --major / --minor"),
+        err.contains("--major 0.019") && err.contains("0.01 <= --major / --minor"),
         "{err}"
     );
     // --out is written atomically: a bad row leaves no partial output behind.

@@ -14,7 +14,7 @@ use torus_cull_lab::oracle::family::{FamilyQuery, Passage as OraclePassage};
 use torus_cull_lab::workload::box_rays::box_rays;
 
 /// (R, a, b): ring tori at ν = 1.25, 4, 16 and b/a from 1/4 to 4, the horn, spindles.
-const MEMBERS: [(f64, f64, f64); 13] = [
+const MEMBERS: [(f64, f64, f64); 19] = [
     (1.25, 1.0, 0.25),
     (1.25, 1.0, 4.0),
     (4.0, 1.0, 0.25),
@@ -28,10 +28,16 @@ const MEMBERS: [(f64, f64, f64); 13] = [
     (0.75, 1.0, 1.0),
     (0.5, 1.0, 0.5),
     (0.5, 1.0, 4.0),
+    (0.3, 1.0, 1.0),
+    (0.3, 1.0, 0.25),
+    (0.1, 1.0, 1.0),
+    (0.1, 1.0, 4.0),
+    (0.01, 1.0, 1.0),
+    (0.01, 1.0, 0.25),
 ];
 
 /// A member at scale `scale` (R, a, b times it) and a random pose.
-fn posed(rng: &mut Pcg64, (big, a, b): (f64, f64, f64), scale: f64) -> Toroid {
+pub(crate) fn posed(rng: &mut Pcg64, (big, a, b): (f64, f64, f64), scale: f64) -> Toroid {
     let center = DVec3::new(
         rng.random_range(-3.0..3.0),
         rng.random_range(-3.0..3.0),
@@ -45,7 +51,13 @@ fn posed(rng: &mut Pcg64, (big, a, b): (f64, f64, f64), scale: f64) -> Toroid {
     Toroid::new_f64(center, axis, big * scale, a * scale, b * scale).unwrap()
 }
 
-fn query(member: &Toroid, origin: DVec3, dir: DVec3, t_min: f64, t_max: f64) -> FamilyQuery {
+pub(crate) fn query(
+    member: &Toroid,
+    origin: DVec3,
+    dir: DVec3,
+    t_min: f64,
+    t_max: f64,
+) -> FamilyQuery {
     FamilyQuery::new(
         member.center_f64(),
         member.axis_f64(),
@@ -59,7 +71,7 @@ fn query(member: &Toroid, origin: DVec3, dir: DVec3, t_min: f64, t_max: f64) -> 
     )
 }
 
-fn size(member: &Toroid) -> f64 {
+pub(crate) fn size(member: &Toroid) -> f64 {
     member.major_radius_f64()
         + member
             .radial_semi_axis_f64()
@@ -68,7 +80,7 @@ fn size(member: &Toroid) -> f64 {
 
 /// A world point of the member's surface at tube angle θ and angle φ about the axis, its
 /// outward normal, and a unit tangent there.
-fn surface_point(member: &Toroid, theta: f64, phi: f64) -> (DVec3, DVec3, DVec3) {
+pub(crate) fn surface_point(member: &Toroid, theta: f64, phi: f64) -> (DVec3, DVec3, DVec3) {
     let axis = member.axis_f64();
     let (e0, e1) = axis.any_orthonormal_pair();
     let radial = e0 * phi.cos() + e1 * phi.sin();
@@ -87,7 +99,7 @@ fn surface_point(member: &Toroid, theta: f64, phi: f64) -> (DVec3, DVec3, DVec3)
 /// The rays of one member: uniform at its box, grazing (tangent lines pushed ±10⁻⁸ …
 /// 10⁻³·size along the normal), and near the axis (through a ring's hole, a spindle's
 /// cusps); each with whether it is a grazing ray.
-fn rays(member: &Toroid, rng: &mut Pcg64, count: usize) -> Vec<(DRay, bool)> {
+pub(crate) fn rays(member: &Toroid, rng: &mut Pcg64, count: usize) -> Vec<(DRay, bool)> {
     let s = size(member);
     let (c, axis) = (member.center_f64(), member.axis_f64());
     let mut out = Vec::new();

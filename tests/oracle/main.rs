@@ -14,6 +14,8 @@ mod conservative;
 mod errata;
 mod f64_rays;
 mod family;
+mod family_points;
+mod family_spindle;
 mod generators;
 mod intersect_adversarial;
 mod intersect_all;

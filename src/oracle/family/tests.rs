@@ -14,8 +14,8 @@ use rand_pcg::Pcg64;
 
 const INF: f64 = f64::INFINITY;
 
-/// (R, a, b): rings, a horn and its taller twin, spindles.
-pub(super) const SHAPES: [(f64, f64, f64); 9] = [
+/// (R, a, b): rings, a horn and its taller twin, spindles (down to ν = 0.01).
+pub(super) const SHAPES: [(f64, f64, f64); 12] = [
     (4.0, 1.0, 1.0),
     (4.0, 1.0, 0.25),
     (4.0, 1.0, 4.0),
@@ -25,6 +25,9 @@ pub(super) const SHAPES: [(f64, f64, f64); 9] = [
     (0.75, 1.0, 1.0),
     (0.5, 1.0, 0.5),
     (0.5, 1.0, 2.0),
+    (0.3, 1.0, 0.25),
+    (0.1, 1.0, 4.0),
+    (0.01, 1.0, 1.0),
 ];
 
 pub(super) const SCALES: [f64; 3] = [1e-3, 1.0, 1e3];
@@ -269,15 +272,19 @@ fn rays_over_the_top_of_the_tube() {
                 (vec![], vec![])
             } else {
                 let z = ((big + w).powi(2) - big * big).sqrt();
-                (
+                // Where the chord's half-width w passes R (a fat spindle, near its top) the
+                // two stretches meet at the axis: one, |x| < R + w.
+                let across = if w > big {
+                    vec![(c - big - w, In), (c + big + w, Out)]
+                } else {
                     vec![
                         (c - big - w, In),
                         (c - big + w, Out),
                         (c + big - w, In),
                         (c + big + w, Out),
-                    ],
-                    vec![(c - z, In), (c + z, Out)],
-                )
+                    ]
+                };
+                (across, vec![(c - z, In), (c + z, Out)])
             };
             // A crossing near a tangency moves by rounding/√|δ|.
             let tol = 1e-15 * c / delta.abs().max(1e-6).sqrt() * 10.0;

@@ -10,8 +10,9 @@
 //! * `Ring` (R > r) → a ring [`Torus`] ([`torus_from_bevy`]) or its [`Toroid`]
 //!   ([`toroid_from_bevy`]);
 //! * `Horn` (R = r) and `Spindle` (R < r) → a [`Toroid`] of [`ToroidKind::Horn`] or
-//!   [`ToroidKind::Spindle`], whose surface is the outer "apple" (a spindle with
-//!   R/r below [`crate::family::MIN_FAMILY_NU`], 1/2, is refused as the family refuses it);
+//!   [`ToroidKind::Spindle`], whose surface is the outer "apple": any 0 < R < r down to
+//!   R/r = [`crate::family::MIN_FAMILY_NU`], 1/100 (a fatter spindle is refused as the
+//!   family refuses it, [`crate::family::ToroidError::TooFat`]);
 //! * `Invalid` (a radius non-positive, infinite or NaN) → [`BevyTorusError::Invalid`].
 //!
 //! **The ray cast** ([`BevyTorus::local_ray_cast`]) has the signature of Bevy's proposed

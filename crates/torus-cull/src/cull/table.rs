@@ -36,9 +36,9 @@ macro_rules! cull_table {
                 "Cychosz with the sphere replaced by the outer ellipsoid ρ² + (ν + 1)·y² ≤ (R + r)².";
             Quadric "quadric" quadric::QuadricCull [lanes gpu] [Ring Elliptic Spindle],
                 "The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².";
-            Discriminant "discriminant" discriminant::DiscriminantCull [lanes gpu] [Ring Elliptic Spindle],
+            Discriminant "discriminant" discriminant::DiscriminantCull [lanes gpu] [Ring Elliptic],
                 "The quartic's real-root classification (no root, no branch), in f32.";
-            DiscriminantF64 "discriminant_f64" discriminant::DiscriminantF64Cull [] [Ring Elliptic Spindle],
+            DiscriminantF64 "discriminant_f64" discriminant::DiscriminantF64Cull [] [Ring Elliptic],
                 "The same classification evaluated in f64.";
         }
     };
@@ -55,7 +55,12 @@ pub enum Shape {
     /// circular torus (R, a) on the line with y scaled by a/b (`crate::family`).
     Elliptic,
     /// A horn or spindle torus (R ≤ a, either tube): the apple, culled as its circular
-    /// image (R, a), whose padded bounds hold the apple.
+    /// image (R, a), whose padded bounds hold the apple. The two `discriminant` culls do
+    /// not take it: their padding argument (a hitting line keeps real roots under a
+    /// rounding smaller than the padding η) fails on the axis, which meets the quartic
+    /// of every padded image (R, a + η) in double roots at the cusps (the horn's centre),
+    /// the boundary Δ = 0, S = P² of their "no real root" set; lines down a spindle's axis
+    /// were rejected while they crossed the solid (docs/family.md).
     Spindle,
 }
 

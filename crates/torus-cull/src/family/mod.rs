@@ -29,6 +29,7 @@
 //! [`ToroidError::NotCircular`], and [`Toroid::intersect_f32`] answers them in f64,
 //! counted as escalated.
 
+mod ellipse;
 mod intersect;
 mod point_query;
 mod toroid;

@@ -211,7 +211,8 @@ fn bad_members_are_refused_by_name() {
     assert!(err(Toroid::canonical(4.0, f64::NAN, 1.0)).contains("radial_semi_axis"));
     assert!(err(Toroid::canonical(-1.0, 1.0, 1.0)).contains("major_radius"));
     assert!(err(Toroid::canonical(4.0, 1.0, 5.0)).contains("0.25 ..= 4"));
-    assert!(err(Toroid::canonical(0.4, 1.0, 1.0)).contains("below the supported 0.5"));
+    assert!(err(Toroid::canonical(0.009, 1.0, 1.0)).contains("below the supported 0.01"));
+    assert!(Toroid::canonical(0.01, 1.0, 4.0).is_ok());
     assert!(err(Toroid::canonical(2000.0, 1.0, 1.0)).contains("nu"));
     assert!(matches!(
         Toroid::canonical(0.5, 1.0, 1.0).unwrap().as_torus(),

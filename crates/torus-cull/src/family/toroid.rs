@@ -12,9 +12,12 @@ pub const MIN_ASPECT: f64 = 0.25;
 /// The largest tube aspect `b/a` accepted, 4.
 pub const MAX_ASPECT: f64 = 4.0;
 
-/// The smallest `ν = R/a` accepted, 1/2: the fattest spindle the tests prove. (Ring
-/// members keep [`crate::MAX_NU`] as their thinnest.)
-pub const MIN_FAMILY_NU: f64 = 0.5;
+/// The smallest `ν = R/a` accepted, 1/100: the fattest spindle the tests prove (the exact
+/// intersection and every cull that takes a spindle against the family oracle, at
+/// ν = 0.01, 0.1, 0.3 and 0.5, docs/family.md). Bevy and POV-Ray take any 0 < R < a; below 1/100 the apple and the lemon
+/// inside it are within 2R < a/50 of each other everywhere, and the library refuses
+/// rather than answers untested. (Ring members keep [`crate::MAX_NU`] as their thinnest.)
+pub const MIN_FAMILY_NU: f64 = 0.01;
 
 /// Which member of the family: Bevy's `TorusKind` without `Invalid` (refused instead).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -235,7 +238,13 @@ impl Toroid {
                 axial_semi_axis: axial,
             });
         }
-        if major / radial < MIN_FAMILY_NU {
+        // From f32 radii, ν as f32 divides it: 0.01 typed in f32 (0.0099999998) is 1/100.
+        let too_fat = if f64_geometry {
+            major / radial < MIN_FAMILY_NU
+        } else {
+            (major as f32) / (radial as f32) < MIN_FAMILY_NU as f32
+        };
+        if too_fat {
             return Err(ToroidError::TooFat {
                 major_radius: major,
                 radial_semi_axis: radial,

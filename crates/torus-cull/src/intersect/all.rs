@@ -24,6 +24,7 @@ use crate::num::{Sc, V3, sc};
 use crate::quartic::solve_depressed_monic;
 use crate::{Precision, Ray, Torus};
 use glam::{DVec3, Vec3};
+use std::cmp::Ordering;
 
 /// How a ray meets the surface at a [`Crossing`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -218,6 +219,9 @@ struct LineRoot {
     /// The origin's own root of a ray from a surface point: counted for the side, never
     /// reported.
     origin: bool,
+    /// A spindle's cusp where the line passes it ([`with_cusps`]): reported only where
+    /// the side changes there, never as a touch.
+    cusp: bool,
 }
 
 /// Every crossing of `ray` with the torus in `[t_min, t_max]`, sorted, each with its `t`,
@@ -345,12 +349,14 @@ pub(crate) fn line_crossings(
             key: 0.0,
             double: false,
             origin: true,
+            cusp: false,
         }; 4];
         for (slot, &(v, double)) in roots[1..].iter_mut().zip(&cubic[..n]) {
             *slot = LineRoot {
                 key: v,
                 double,
                 origin: false,
+                cusp: false,
             };
         }
         let mut n = n + 1;
@@ -388,9 +394,13 @@ pub(crate) fn line_crossings(
         let [c2, c1, c0] = coefficients(line.p, line.dh, sc(tube.minor_rel));
         let found = solve_depressed_monic(c2.v, c1.v, c0.v);
         let (mut roots, mut n) = pair_doubles(found.as_slice());
-        if roots_kept == Roots::Apple {
+        let apple = if roots_kept == Roots::Apple {
             n = keep_apple(&mut roots[..n], |r| line.p + line.dh * sc(r.key), tube.k);
-        }
+            let at = |u: f64| (line.p + line.dh * sc(u)).to_dvec3();
+            with_cusps(&roots[..n], line.dh.to_dvec3(), at, tube)
+        } else {
+            ([CUSP_FREE; 6], 0)
+        };
         let range = |u: f64| {
             if u < lo {
                 Place::Before
@@ -403,16 +413,21 @@ pub(crate) fn line_crossings(
         let emit = |r: &LineRoot, passage| {
             let u = sc(r.key);
             let t = line.t_at(u, sc(tube.major)).v;
-            emit(
-                t,
-                normal(line.p, line.dh, u, sc(tube.k)).to_dvec3(),
-                passage,
-            );
+            // At a cusp the surface has no normal (∇F = 0): the bisector of the two arcs'
+            // normals, along the axis (as the point queries give it).
+            // (A solver's root right at a cusp has ∇F = 0 too: the same.)
+            let n = normal(line.p, line.dh, u, sc(tube.k)).to_dvec3();
+            let n = if r.cusp || !n.is_finite() {
+                DVec3::new(0.0, (line.p + line.dh * u).y.v.signum(), 0.0)
+            } else {
+                n
+            };
+            emit(t, n, passage);
         };
         match roots_kept {
             Roots::All => walk(&roots[..n], range, emit),
             Roots::Apple => walk_by_side(
-                &roots[..n],
+                &apple.0[..apple.1],
                 range,
                 |u| in_apple(line.p + line.dh * sc(u), tube),
                 emit,
@@ -428,6 +443,7 @@ fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
         key: 0.0,
         double: false,
         origin: false,
+        cusp: false,
     }; 4];
     let (mut n, mut i) = (0, 0);
     while i < sorted.len() {
@@ -437,6 +453,7 @@ fn pair_doubles(sorted: &[f64]) -> ([LineRoot; 4], usize) {
             key: u,
             double,
             origin: false,
+            cusp: false,
         };
         n += 1;
         i += if double { 2 } else { 1 };
@@ -468,6 +485,71 @@ fn keep_apple(roots: &mut [LineRoot], at: impl Fn(&LineRoot) -> V3<Sc>, k: f64) 
     n
 }
 
+/// No root, for the arrays [`with_cusps`] fills.
+const CUSP_FREE: LineRoot = LineRoot {
+    key: 0.0,
+    double: false,
+    origin: false,
+    cusp: false,
+};
+
+/// How near the axis (units of R, times r/R) the line must pass a cusp's height for
+/// [`with_cusps`] to add the cusp: 10⁻⁴. Near a cusp the apple's root and the lemon's are
+/// a pair `y − y_c ≈ ±ρ/y_c` apart (a line parallel to the axis at ρ), which f64 loses
+/// (a complex pair) once 2ρ is below the quartic's rounding, `√ε·(r/R)²` ≈ 10⁻⁸·(r/R)²:
+/// inside this reach for every accepted ν ≥ 1/100 (r/R ≤ 100).
+const CUSP_REACH: f64 = 1e-4;
+
+/// The apple's roots `kept` (sorted) and the line's points at the cusps' heights
+/// `y = ±√((r/R)² − 1)` where it passes within [`CUSP_REACH`]·(r/R) of the axis there and
+/// no kept root lies within as much of that point along the line, sorted: `at(u)` is the
+/// scaled point at `u`, `dh` the unit direction.
+///
+/// A line through a spindle's cusp (the axis, for one) meets the apple and the lemon in a
+/// double root there, which f64 may return as a complex pair: both lost, and with them a
+/// crossing of the solid (a line down the axis from the centre, deep inside, was reported
+/// as a miss). [`walk_by_side`] reads the side off the solid on either hand of each cusp
+/// added, so a cusp added where the line only touches the surface changes nothing (the
+/// same side on both hands: not reported), and one where the solver lost the crossing is
+/// that crossing, within the pair's `ρ/y_c` of it.
+fn with_cusps(
+    kept: &[LineRoot],
+    dh: DVec3,
+    at: impl Fn(f64) -> DVec3,
+    tube: &Tube,
+) -> ([LineRoot; 6], usize) {
+    let mut out = [CUSP_FREE; 6];
+    out[..kept.len()].copy_from_slice(kept);
+    let mut n = kept.len();
+    let height = (tube.minor_rel * tube.minor_rel - 1.0).max(0.0).sqrt();
+    if dh.y != 0.0 && height > 0.0 {
+        let p = at(0.0);
+        for y in [-height, height] {
+            let u = (y - p.y) / dh.y;
+            let x = at(u);
+            // A kept root this near is the cusp's own (its double root split by rounding):
+            // the solver's answer stands.
+            let kept_here = kept
+                .iter()
+                .any(|r| (r.key - u).abs() <= CUSP_REACH * tube.minor_rel);
+            if u.is_finite() && !kept_here && x.x.hypot(x.z) <= CUSP_REACH * tube.minor_rel {
+                out[n] = LineRoot {
+                    key: u,
+                    double: false,
+                    origin: false,
+                    cusp: true,
+                };
+                n += 1;
+            }
+        }
+    }
+    if n > kept.len() {
+        // Stable, and −0 = +0: the solver's roots keep their order (and their t its sign).
+        out[..n].sort_by(|a, b| a.key.partial_cmp(&b.key).unwrap_or(Ordering::Equal));
+    }
+    (out, n)
+}
+
 /// [`walk`] for the apple's roots: the side between two consecutive roots is read off the
 /// solid itself, at the midpoint (`inside(key)`), not off the roots' parity, which the
 /// apple's singular points break (the horn's centre and the spindle's cusps are roots of
@@ -487,8 +569,11 @@ fn walk_by_side(
         if i > 0 && roots[i - 1].key == r.key {
             continue;
         }
-        let after = roots
-            .get(i + 1)
+        // The side up to the next root at another point (a cusp added where the solver
+        // kept its root repeats that root's key).
+        let after = roots[i + 1..]
+            .iter()
+            .find(|next| next.key != r.key)
             .is_some_and(|next| inside(0.5 * (r.key + next.key)));
         let at = if r.origin {
             Place::Before
@@ -504,7 +589,11 @@ fn walk_by_side(
                 (true, false) => Passage::Exit,
                 _ => Passage::Touch,
             };
-            emit(r, passage);
+            // A cusp with the same side on both hands is no point of the line's: only
+            // where the side changes there is it a crossing the solver lost.
+            if !(r.cusp && passage == Passage::Touch) {
+                emit(r, passage);
+            }
         }
         side = after;
     }
