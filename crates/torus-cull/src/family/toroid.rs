@@ -463,10 +463,8 @@ impl Toroid {
     /// # Errors
     ///
     /// A [`RayError`] as [`crate::Torus::spawn`]'s, never a panic or a NaN ray; size is
-    /// R + max(a, b) in `OffSurface`'s tolerance, and for an elliptical horn or spindle
-    /// (whose closest point is not computed) the distance is a lower bound, the distance
-    /// to the whole ellipse in the point's meridian, so a point near the ellipse's arc
-    /// past the axis is not refused.
+    /// R + max(a, b) in `OffSurface`'s tolerance, the distance [`Toroid::signed_distance`]'s
+    /// (every member has one).
     pub fn spawn<P: Precision>(
         &self,
         ray: &Ray<P>,
