@@ -85,6 +85,7 @@ pub mod intersect;
 mod names;
 mod num;
 pub mod quartic;
+mod solids;
 
 #[cfg(feature = "gpu")]
 pub mod gpu;
@@ -113,6 +114,10 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,
     Torus, TorusError,
+};
+pub use geometry::{
+    MAX_CROSSINGS, MAX_SPANS, NoFace, PointQueryError, Solid, SolidCrossing, SolidCrossings,
+    SolidF32Hit, SolidHit, SolidProjection, SolidSpan, SolidSpans,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,
