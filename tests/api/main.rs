@@ -10,3 +10,4 @@ mod api_bit_patterns;
 mod layout;
 mod package;
 mod rust_version;
+mod solid_client;
