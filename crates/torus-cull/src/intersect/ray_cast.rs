@@ -1,6 +1,7 @@
 //! The ray queries as one trait, in the manner of parry's `RayCast`: one required method
 //! (the nearest hit with its normal), the time-only and the yes/no queries provided.
-//! [`crate::Torus`] casts exactly; [`Culled`], a torus with a cull in front, casts through
+//! [`crate::Torus`] casts exactly (as do `Toroid` and `PipeBend`, through their own
+//! impls in the `solids` module); [`Culled`], a shape with a cull in front, casts through
 //! the cull. Both answer in the ray's own precision ([`TorusRay`]). The ray type is the
 //! trait's parameter, not its methods', so the trait is object safe: a mixed scene holds
 //! `Box<dyn RayCast>` (f32 rays) or `Box<dyn RayCast<DRay>>` (f64 rays).
