@@ -138,7 +138,7 @@ pub fn compare(
         .filter(|c| c.0 >= ray.t_min() && c.0 <= ray.t_max())
         .collect();
     let all = bend.intersect_all(ray);
-    let got = all.as_slice();
+    let got = all.crossings();
     let first = bend.intersect(ray);
     let mut why = Vec::new();
     match (want.first(), first) {
@@ -248,7 +248,7 @@ pub fn compare_spawned(
     let len = ray.dir().length();
     let got = bend.intersect(ray);
     let all = bend.intersect_all(ray);
-    let got_all = all.as_slice().first().copied();
+    let got_all = all.crossings().first().copied();
     let mut why = Vec::new();
     let moved: BendQuery = spec
         .query(ray)

@@ -261,7 +261,8 @@ impl Spec {
             return Some(bend.spawn(&any, 0.0, unit(rng)).unwrap());
         }
         let ray = self.random_ray(rng);
-        let all = bend.intersect_all(&ray).as_slice();
+        let all = bend.intersect_all(&ray);
+        let all = all.crossings();
         if all.is_empty() {
             return None;
         }

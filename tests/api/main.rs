@@ -11,3 +11,4 @@ mod layout;
 mod package;
 mod refused_inputs;
 mod rust_version;
+mod solid_client;

@@ -15,6 +15,12 @@
 //! * [`RayCast`]: the nearest hit, its `t` alone, or a shadow ray's bool, from a
 //!   [`Torus`] or from a torus behind a cull ([`Torus::with_cull`]); the free functions
 //!   [`intersect()`], [`intersect_culled`] and [`occluded()`] are what it calls.
+//! * [`Solid`]: one interface for the ring [`Torus`], the family's [`family::Toroid`] and
+//!   the [`bend::PipeBend`]: the world box, nearest hit and shadow test of f32 and f64
+//!   rays, every crossing and the spans ([`SolidCrossings`], iterated by reference), the
+//!   certified f32 answer, spawning a ray from a hit, inside, signed distance and closest
+//!   point, with one hit type carrying its face ([`SolidHit`]). All three are [`RayCast`]
+//!   too, bare or behind a cull, so a `Box<dyn RayCast>` holds any of them.
 //! * [`cull`]: one file per cull behind the one-method [`Cull`] trait, all conservative
 //!   (a rejected line provably misses), from Cychosz's sphere + slab ([`CychoszCull`]) and
 //!   Skala's circle test ([`SkalaCull`], the seed paper's misprints corrected) to the
@@ -85,6 +91,7 @@ pub mod intersect;
 mod names;
 mod num;
 pub mod quartic;
+mod solids;
 
 #[cfg(feature = "gpu")]
 pub mod gpu;
@@ -113,6 +120,10 @@ pub use geometry::{
     DRay, DRayError, FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS,
     NEAR_ORIGIN_REL, NonFinitePoint, ON_SURFACE_REL, Precision, Ray, RayError, SurfaceProjection,
     Torus, TorusError,
+};
+pub use geometry::{
+    MAX_CROSSINGS, MAX_SPANS, NoFace, PointQueryError, Solid, SolidCrossing, SolidCrossings,
+    SolidF32Hit, SolidHit, SolidProjection, SolidSpan, SolidSpans,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,

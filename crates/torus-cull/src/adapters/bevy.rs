@@ -262,3 +262,52 @@ impl BevyTorus {
         self.ray_cast(iso, ray, max_distance, true).is_some()
     }
 }
+
+/// Bevy's proposed `local_ray_cast` for any of the library's solids ([`crate::Solid`]: a
+/// [`Torus`], a [`Toroid`], a [`crate::bend::PipeBend`]), in the solid's frame: the
+/// library's nearest hit `t` within `max_distance` and its normal facing the ray;
+/// `solid = true` from inside (the surface included) gives distance 0 and the reversed
+/// direction as the normal, as [`BevyTorus::local_ray_cast`]. A ray or range the library
+/// refuses hits nothing.
+///
+/// ```
+/// use bevy_math::{Dir3, Vec3};
+/// use bevy_shape::Ray3d;
+/// use torus_cull::adapters::bevy::solid_ray_cast;
+/// use torus_cull::bend::PipeBend;
+/// // A bend with a bore of 0.5 in a tube of 1, over φ ∈ [−0.5, 0.5]: down through its top.
+/// let bend = PipeBend::canonical(4.0, 0.5, 1.0, -0.5, 1.0)?;
+/// let ray = Ray3d::new(Vec3::new(4.0, 10.0, 0.0), Dir3::NEG_Y);
+/// let hit = solid_ray_cast(&bend, ray, 100.0, false).expect("the top of the tube");
+/// assert_eq!((hit.distance, hit.normal), (9.0, Dir3::Y));
+/// // From the bore, solid or not: the bore is outside the solid, so its wall is hit.
+/// let up = Ray3d::new(Vec3::new(4.0, 0.0, 0.0), Dir3::Y);
+/// assert_eq!(solid_ray_cast(&bend, up, 100.0, true).unwrap().distance, 0.5);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn solid_ray_cast<S: crate::Solid + ?Sized>(
+    shape: &S,
+    ray: Ray3d,
+    max_distance: f32,
+    solid: bool,
+) -> Option<RayHit> {
+    let (origin, dir) = (from_bevy(ray.origin), from_bevy(*ray.direction));
+    let lib = Ray::with_range(origin, dir, 0.0, max_distance).ok()?;
+    if solid && shape.contains(origin.as_dvec3()).ok()? {
+        return Some(RayHit {
+            distance: 0.0,
+            normal: -ray.direction,
+        });
+    }
+    let hit = shape.hit(&lib)?;
+    let normal = if hit.front_face {
+        hit.normal
+    } else {
+        -hit.normal
+    };
+    Some(RayHit {
+        distance: hit.t,
+        normal: Dir3::new_unchecked(to_bevy(normal)),
+    })
+}

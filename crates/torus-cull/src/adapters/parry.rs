@@ -35,8 +35,9 @@
 //!   shape-cast queries between it and another shape with `Unsupported`; a custom
 //!   `QueryDispatcher` would be needed for those and is not provided.
 //!
-//! The family's [`crate::family::Toroid`] (elliptical tube, horn, spindle) is not adapted
-//! here.
+//! The family's [`crate::family::Toroid`] and the [`crate::bend::PipeBend`] are adapted
+//! over the [`crate::Solid`] interface by [`ParrySolid`] ([`ParryToroid`], [`ParryBend`]),
+//! with the same local queries and edges; their mass properties where a closed form exists.
 
 use crate::{Ray, Torus, TorusError, intersect};
 use glam::{DVec3, Quat, Vec3};
@@ -46,6 +47,9 @@ use parry3d::math::{Pose, Real, Vector};
 use parry3d::query::{PointProjection, PointQuery, Ray as ParryRay, RayCast, RayIntersection};
 use parry3d::shape::{FeatureId, Shape, ShapeType, SubShapeId, TypedShape};
 use std::f64::consts::PI;
+
+mod solid;
+pub use solid::{ParryAdapted, ParryBend, ParrySolid, ParryToroid};
 
 /// A ring torus in its own frame (centre at the origin, axis +y), as a parry3d shape:
 /// place it with a parry `Pose` (the pose's rotation takes +y to the torus axis). See the
@@ -103,13 +107,13 @@ impl ParryTorus {
 
 /// A parry vector as the library's glam vector (same f32 components).
 #[inline]
-fn from_parry(v: Vector) -> Vec3 {
+pub(super) fn from_parry(v: Vector) -> Vec3 {
     Vec3::from_array(v.to_array())
 }
 
 /// The library's glam vector as a parry vector (same f32 components).
 #[inline]
-fn to_parry(v: Vec3) -> Vector {
+pub(super) fn to_parry(v: Vec3) -> Vector {
     Vector::from_array(v.to_array())
 }
 

@@ -59,20 +59,58 @@ impl<P: Precision> BendHit<P> {
 /// Every crossing of a ray with a pipe bend in its range, sorted (at most ten).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BendCrossings<P: Precision = glam::Vec3> {
-    crossings: [Option<BendCrossing<P>>; 10],
+    crossings: [BendCrossing<P>; 10],
     len: usize,
     starts_inside: bool,
+    t_min: P::Float,
+    t_max: P::Float,
 }
 
 impl<P: Precision> BendCrossings<P> {
-    /// The crossings, ascending in `t`.
+    /// None yet, over the ray's range.
+    fn empty(ray: &Ray<P>, starts_inside: bool) -> BendCrossings<P> {
+        BendCrossings {
+            crossings: [BendCrossing {
+                t: <P::Float as Scalar>::ZERO,
+                normal: P::ZERO,
+                passage: Passage::Touch,
+                face: BendFace::Outer,
+            }; 10],
+            len: 0,
+            starts_inside,
+            t_min: ray.t_min(),
+            t_max: ray.t_max(),
+        }
+    }
+
+    /// The crossings, ascending in `t`, copied into a `Vec`.
+    #[deprecated(
+        since = "0.1.0",
+        note = "allocates: use `crossings()` (a slice), `iter()` or `for c in &crossings`"
+    )]
     #[must_use]
     pub fn as_slice(&self) -> Vec<BendCrossing<P>> {
-        self.crossings[..self.len]
-            .iter()
-            .flatten()
-            .copied()
-            .collect()
+        self.crossings().to_vec()
+    }
+
+    /// The crossings, ascending in `t`, without allocating.
+    #[inline]
+    #[must_use]
+    pub fn crossings(&self) -> &[BendCrossing<P>] {
+        &self.crossings[..self.len]
+    }
+
+    /// The crossings by reference, ascending (`for c in &crossings` says the same).
+    #[inline]
+    pub fn iter(&self) -> std::slice::Iter<'_, BendCrossing<P>> {
+        self.crossings().iter()
+    }
+
+    /// The ray's range `[t_min, t_max]` the crossings were found in.
+    #[inline]
+    #[must_use]
+    pub fn range(&self) -> (P::Float, P::Float) {
+        (self.t_min, self.t_max)
     }
 
     /// How many.
@@ -201,36 +239,29 @@ impl PipeBend {
     pub fn intersect_all<P: Precision>(&self, ray: &Ray<P>) -> BendCrossings<P> {
         if let Ok(torus) = self.as_torus() {
             let all = crate::intersect_all(torus, ray);
-            let mut out = BendCrossings {
-                crossings: [None; 10],
-                len: all.len(),
-                starts_inside: all.starts_inside(),
-            };
+            let mut out = BendCrossings::empty(ray, all.starts_inside());
+            out.len = all.len();
             for (slot, c) in out.crossings.iter_mut().zip(all.as_slice()) {
-                *slot = Some(BendCrossing {
+                *slot = BendCrossing {
                     t: c.t,
                     normal: c.normal,
                     passage: c.passage,
                     face: BendFace::Outer,
-                });
+                };
             }
             return out;
         }
         let (all, starts_inside) = self.walk(ray, false);
-        let mut out = BendCrossings {
-            crossings: [None; 10],
-            len: 0,
-            starts_inside,
-        };
+        let mut out = BendCrossings::empty(ray, starts_inside);
         for c in all.iter().flatten() {
             let t = <P::Float as Scalar>::from_f64(c.t);
             if t.finite() {
-                out.crossings[out.len] = Some(BendCrossing {
+                out.crossings[out.len] = BendCrossing {
                     t,
                     normal: P::from_dvec3(self.normal_to_world(c.normal)),
                     passage: c.passage,
                     face: c.face,
-                });
+                };
                 out.len += 1;
             }
         }

@@ -30,6 +30,7 @@
 
 mod crossings;
 mod f32;
+mod iter;
 mod point_query;
 mod solid;
 mod wedge;

@@ -204,7 +204,8 @@ fn near_tangent_spawned_rays_keep_their_next_crossing() {
         let size = r + r_max;
         let ray = DRay::from_surface(o, d).unwrap();
         let hit = bend.intersect(&ray).unwrap();
-        let all = bend.intersect_all(&ray).as_slice();
+        let all = bend.intersect_all(&ray);
+        let all = all.crossings();
         assert_eq!(
             (hit.face, hit.front_face),
             (face, passage == Passage::Enter),

@@ -17,10 +17,7 @@ fn vecgeom() -> PipeBend {
 
 fn crossings(bend: &PipeBend, ray: &DRay) -> Vec<(f64, Passage, BendFace)> {
     let all = bend.intersect_all(ray);
-    all.as_slice()
-        .iter()
-        .map(|c| (c.t, c.passage, c.face))
-        .collect()
+    all.iter().map(|c| (c.t, c.passage, c.face)).collect()
 }
 
 fn close(got: &[(f64, Passage, BendFace)], want: &[(f64, Passage, BendFace)]) -> bool {
@@ -48,11 +45,8 @@ fn the_whole_torus_answers_as_its_torus_bit_for_bit() {
         );
         let all = intersect_all(&torus, &ray);
         let mine = bend.intersect_all(&ray);
-        let ts: Vec<(f32, Vec3, Passage)> = mine
-            .as_slice()
-            .iter()
-            .map(|c| (c.t, c.normal, c.passage))
-            .collect();
+        let ts: Vec<(f32, Vec3, Passage)> =
+            mine.iter().map(|c| (c.t, c.normal, c.passage)).collect();
         let theirs: Vec<(f32, Vec3, Passage)> = all
             .as_slice()
             .iter()
@@ -80,7 +74,7 @@ fn vecgeom_solid_along_the_axes_and_through_the_caps() {
     let got = crossings(&bend, &down);
     assert!(close(&got, &want), "{got:?}");
     let all = bend.intersect_all(&down);
-    let n: Vec<DVec3> = all.as_slice().iter().map(|c| c.normal).collect();
+    let n: Vec<DVec3> = all.iter().map(|c| c.normal).collect();
     for (got, want) in n
         .iter()
         .zip([DVec3::Y, DVec3::NEG_Y, DVec3::Y, DVec3::NEG_Y])
@@ -167,7 +161,7 @@ fn rays_spawned_from_every_face_never_hit_their_origin() {
                 let on = bend.spawn(&ray, hit.t, ray.dir()).unwrap();
                 let all = bend.intersect_all(&on);
                 assert!(all.starts_inside(), "{ray:?} {hit:?}");
-                let first = all.as_slice()[0];
+                let first = all.crossings()[0];
                 assert_eq!(first.passage, Passage::Exit, "{ray:?} {hit:?}");
             }
         }

@@ -6,6 +6,10 @@ mod bounds;
 pub(crate) mod draw;
 mod point_query;
 pub(crate) mod ray;
+mod solid;
+mod solid_crossings;
+mod solid_hit;
+mod solid_query;
 mod torus;
 mod tube;
 
@@ -14,6 +18,12 @@ pub use point_query::{NonFinitePoint, SurfaceProjection};
 pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};
+pub use solid::Solid;
+pub use solid_crossings::{
+    MAX_CROSSINGS, MAX_SPANS, Passage, SolidCrossing, SolidCrossings, SolidSpan, SolidSpans,
+};
+pub use solid_hit::{NoFace, SolidF32Hit, SolidHit};
+pub use solid_query::{PointQueryError, SolidProjection};
 pub use torus::{
     FAR_LIMIT_REL, LocalLine, MAX_NU, MAX_OUTER_RADIUS, MIN_OUTER_RADIUS, NEAR_ORIGIN_REL, Torus,
     TorusError,

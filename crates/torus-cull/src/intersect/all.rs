@@ -26,17 +26,8 @@ use crate::{Precision, Ray, Torus};
 use glam::{DVec3, Vec3};
 use std::cmp::Ordering;
 
-/// How a ray meets the surface at a [`Crossing`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Passage {
-    /// The ray enters the solid torus: a span starts here.
-    Enter,
-    /// The ray leaves the solid torus: a span ends here.
-    Exit,
-    /// The ray touches the surface (a double root of the quartic: a tangent) and stays on
-    /// the side it was on. Reported once, not as a span of zero length.
-    Touch,
-}
+/// How a ray meets the surface at a [`Crossing`] (the solids' one passage type).
+pub use crate::geometry::Passage;
 
 /// One crossing of a ray with the torus surface, in the ray's precision.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -207,6 +198,45 @@ impl<P: Precision> Spans<P> {
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len == 0
+    }
+}
+
+impl<P: Precision> Crossings<P> {
+    /// The ray's range `[t_min, t_max]` the crossings were found in.
+    #[inline]
+    #[must_use]
+    pub fn range(&self) -> (P::Float, P::Float) {
+        (self.t_min, self.t_max)
+    }
+
+    /// The crossings by reference, ascending (`for c in &crossings` says the same).
+    #[inline]
+    pub fn iter(&self) -> std::slice::Iter<'_, Crossing<P>> {
+        self.as_slice().iter()
+    }
+}
+
+impl<P: Precision> Spans<P> {
+    /// The spans by reference, ascending (`for s in &spans` says the same).
+    #[inline]
+    pub fn iter(&self) -> std::slice::Iter<'_, Span<P>> {
+        self.as_slice().iter()
+    }
+}
+
+impl<'a, P: Precision> IntoIterator for &'a Crossings<P> {
+    type Item = &'a Crossing<P>;
+    type IntoIter = std::slice::Iter<'a, Crossing<P>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<'a, P: Precision> IntoIterator for &'a Spans<P> {
+    type Item = &'a Span<P>;
+    type IntoIter = std::slice::Iter<'a, Span<P>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
     }
 }
 

@@ -1,6 +1,7 @@
 //! The ray queries as one trait, in the manner of parry's `RayCast`: one required method
 //! (the nearest hit with its normal), the time-only and the yes/no queries provided.
-//! [`crate::Torus`] casts exactly; [`Culled`], a torus with a cull in front, casts through
+//! [`crate::Torus`] casts exactly (as do `Toroid` and `PipeBend`, through their own
+//! impls in the `solids` module); [`Culled`], a shape with a cull in front, casts through
 //! the cull. Both answer in the ray's own precision ([`TorusRay`]). The ray type is the
 //! trait's parameter, not its methods', so the trait is object safe: a mixed scene holds
 //! `Box<dyn RayCast>` (f32 rays) or `Box<dyn RayCast<DRay>>` (f64 rays).
@@ -91,13 +92,14 @@ impl<R: TorusRay> RayCast<R> for Torus {
     }
 }
 
-/// A torus with a cull in front of its exact intersection ([`Torus::with_cull`]): a
-/// [`RayCast`] whose cast is [`crate::intersect_culled`]. The cull never changes an
-/// answer; it only saves the quartic on the lines it proves to miss.
+/// A solid with a cull in front of its exact intersection ([`Torus::with_cull`],
+/// `Toroid::with_cull`, `PipeBend::with_cull`): a [`RayCast`] whose cast is the shape's
+/// culled intersection ([`crate::intersect_culled`] for a torus). The cull never changes
+/// an answer; it only saves the exact path on the lines it proves to miss.
 #[derive(Debug, Clone, Copy)]
-pub struct Culled<'a, C> {
-    torus: &'a Torus,
-    cull: C,
+pub struct Culled<'a, C, S: ?Sized = Torus> {
+    pub(crate) shape: &'a S,
+    pub(crate) cull: C,
 }
 
 impl Torus {
@@ -106,18 +108,18 @@ impl Torus {
     #[inline]
     #[must_use]
     pub fn with_cull<C: Cull>(&self, cull: C) -> Culled<'_, C> {
-        Culled { torus: self, cull }
+        Culled { shape: self, cull }
     }
 }
 
 impl<C: Cull, R: TorusRay> RayCast<R> for Culled<'_, C> {
     #[inline]
     fn cast_ray_and_get_normal(&self, ray: &R) -> Option<R::Hit> {
-        intersect_culled(&self.cull, self.torus, ray)
+        intersect_culled(&self.cull, self.shape, ray)
     }
 
     #[inline]
     fn intersects_ray(&self, ray: &R) -> bool {
-        crate::intersect::kept_by(&self.cull, self.torus, ray) && occluded(self.torus, ray)
+        crate::intersect::kept_by(&self.cull, self.shape, ray) && occluded(self.shape, ray)
     }
 }

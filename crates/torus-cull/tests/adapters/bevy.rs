@@ -10,7 +10,7 @@ use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
 use torus_cull::Ray;
 use torus_cull::adapters::bevy::{
-    BevyTorus, BevyTorusError, toroid_from_bevy, torus_from_bevy, world_aabb,
+    BevyTorus, BevyTorusError, solid_ray_cast, toroid_from_bevy, torus_from_bevy, world_aabb,
 };
 use torus_cull::family::{Toroid, ToroidError, ToroidKind};
 
@@ -153,6 +153,8 @@ fn the_ray_cast_is_the_familys_intersect_bit_for_bit() {
                 Dir3::new(BVec3::from_array(d.to_array())).unwrap(),
             );
             let got = torus.local_ray_cast(ray, max, solid);
+            // The interface's cast on the same member: the same answer.
+            assert_eq!(solid_ray_cast(member, ray, max, solid), got);
             let dir = lv(*ray.direction);
             let contains = member.contains(o.as_dvec3()).unwrap();
             inside += usize::from(contains);
@@ -321,4 +323,39 @@ fn the_world_box_agrees_with_bevys_bounded3d() {
         "bevy boxes: {equal} of {n} equal to Bevy's bit for bit; the largest difference {worst:e}·R; \
          surface samples outside Bevy's box {bevy_short} (none outside the library's)"
     );
+}
+
+/// The interface's cast on a pipe bend: the bend's own nearest hit, its normal facing the
+/// ray, bit for bit (a bend with a bore, over a segment).
+#[test]
+fn the_interface_cast_on_a_bend_is_the_bends_intersect() {
+    let bend = torus_cull::bend::PipeBend::canonical(4.0, 0.5, 1.2, 0.3, 2.5).unwrap();
+    let mut rng = Pcg64::seed_from_u64(0xbe71_0b3d);
+    let mut hits = 0;
+    for i in 0..500 {
+        let mut v = |a: f32| {
+            Vec3::new(
+                rng.random_range(-a..a),
+                rng.random_range(-a..a),
+                rng.random_range(-a..a),
+            )
+        };
+        let o = v(9.0);
+        let d = (v(5.0) * Vec3::new(1.0, 0.3, 1.0) - o).normalize_or(Vec3::X);
+        let ray = Ray3d::new(
+            BVec3::from_array(o.to_array()),
+            Dir3::new(BVec3::from_array(d.to_array())).unwrap(),
+        );
+        let (solid, d) = (i % 2 == 0, lv(*ray.direction)); // Dir3::new renormalizes
+        let got = solid_ray_cast(&bend, ray, f32::MAX, solid);
+        let want = if solid && bend.contains(o.as_dvec3()) {
+            Some((0.0, -d))
+        } else {
+            bend.intersect(&Ray::with_range(o, d, 0.0, f32::MAX).unwrap())
+                .map(|h| (h.t, if h.front_face { h.normal } else { -h.normal }))
+        };
+        assert_eq!(got.map(|h| (h.distance, lv(*h.normal))), want, "{o} {d}");
+        hits += usize::from(got.is_some());
+    }
+    assert!(hits > 100, "{hits}");
 }

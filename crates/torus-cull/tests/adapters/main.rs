@@ -5,3 +5,5 @@
 mod bevy;
 #[cfg(feature = "parry")]
 mod parry;
+#[cfg(feature = "parry")]
+mod parry_solid;
