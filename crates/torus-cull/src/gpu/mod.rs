@@ -98,6 +98,7 @@ pub(crate) mod finish;
 mod frame;
 mod intersector;
 mod module;
+pub(crate) mod scene;
 mod source;
 mod timing;
 mod wire;
@@ -106,6 +107,10 @@ pub use cull::GpuCull;
 pub use escalation::{Escalation, FinishCounts, Finished};
 pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE, WORKGROUP_SIZES};
 pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
+pub use scene::{
+    DIRECTION_RANGE, GpuScene, MAX_COORDINATE, Occlusion, STACK, SceneAnswer, SceneHit,
+    wgsl_scene_module,
+};
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
 };
