@@ -170,7 +170,7 @@ fn gpu_scene_matches_the_brute_force() {
                 tally.mismatches,
                 tally.device,
                 tally.host,
-                gpu_scene.depth()
+                gpu_scene.bvh().depth()
             );
             total.rays += tally.rays;
             total.hits += tally.hits;

@@ -98,7 +98,8 @@ pub(crate) mod finish;
 mod frame;
 mod intersector;
 mod module;
-pub(crate) mod scene;
+mod scene;
+pub(crate) mod scene_bvh;
 mod source;
 mod timing;
 mod wire;
@@ -107,9 +108,9 @@ pub use cull::GpuCull;
 pub use escalation::{Escalation, FinishCounts, Finished};
 pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE, WORKGROUP_SIZES};
 pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
-pub use scene::{
-    DIRECTION_RANGE, GpuScene, MAX_COORDINATE, Occlusion, STACK, SceneAnswer, SceneHit,
-    wgsl_scene_module,
+pub use scene::{GpuScene, Occlusion, SceneAnswer};
+pub use scene_bvh::{
+    DIRECTION_RANGE, MAX_COORDINATE, STACK, SceneBvh, SceneHit, wgsl_scene_module,
 };
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,

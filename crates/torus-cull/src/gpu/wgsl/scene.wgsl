@@ -19,9 +19,9 @@
 // Closest hit (any_hit false): the nearest proved hit over every torus in [t_min, t_max].
 // Any hit (any_hit true, a shadow ray): stops at the first proved hit in [t_min, t_max].
 //
-// mirrors: tc_scene_enters -> crate::gpu::scene::enters (in f64 on the host)
-// mirrors: tc_scene_leaf -> crate::gpu::scene::host_leaf
-// mirrors: torus_scene_trace -> crate::gpu::scene::GpuScene::host_trace (GpuScene::host_occluded for any_hit)
+// mirrors: tc_scene_enters -> crate::gpu::scene_bvh::enters (in f64 on the host)
+// mirrors: tc_scene_leaf -> crate::gpu::scene_bvh::host_leaf
+// mirrors: torus_scene_trace -> crate::gpu::scene_bvh::SceneBvh::host_trace (GpuScene::host_occluded for any_hit)
 
 // One BVH2 node (32 bytes): its box, and `count` = 0 for an inner node (children at
 // `index` and `index + 1`) or 1 for a leaf (`index` is the torus's index).

@@ -3,7 +3,7 @@
 // world ray over the leaf's clipped range; what it hands back (TORUS_F64_STATUS_HOST)
 // stays escalated, for the host.
 //
-// mirrors: tc_scene_escalated -> crate::gpu::scene::host_leaf (the f64 path, on the device)
+// mirrors: tc_scene_escalated -> crate::gpu::scene_bvh::host_leaf (the f64 path, on the device)
 
 fn tc_scene_escalated(ray: TorusRay, i: u32) -> TcSceneLeaf {
     let world = TorusWorldRay(ray.origin, ray.t_min, ray.direction, ray.t_max);
