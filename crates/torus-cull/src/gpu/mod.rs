@@ -71,7 +71,10 @@
 //! and packed), `intersector.rs` ([`GpuIntersector`]: device, pipelines, dispatch),
 //! `escalation.rs` ([`Escalation`], [`Finished`], [`FinishCounts`]), `finish.rs` (the f64
 //! pass), `module.rs` (the includable module's host side), `source.rs` (the WGSL text),
-//! `bounds.rs` (the culls' margin), `timing.rs` (the kernel timed alone).
+//! `bounds.rs` (the culls' margin), `timing.rs` (the kernel timed alone),
+//! `scene_bvh.rs` ([`SceneBvh`]: tori in an obvhs BVH2, laid out for the WGSL traversal,
+//! and the host's answer) and `scene.rs` ([`GpuScene`]: the traversal kernel, closest and
+//! any hit over many tori, docs/gpu.md "Tori in a GPU BVH").
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).

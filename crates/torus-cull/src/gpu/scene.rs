@@ -32,7 +32,7 @@
 //! A leaf it cannot prove goes to the f64 finish on the device (`wgsl/scene_f64.wgsl`)
 //! where the adapter has `SHADER_F64`; otherwise, or where that hands it back, the leaf
 //! stays unproved, the walk goes on, and the ray's answer is the host's (the f64 path
-//! over the BVH's candidates: [`GpuScene::host_trace`]). An unproved leaf is never taken
+//! over the BVH's candidates: [`SceneBvh::host_trace`]). An unproved leaf is never taken
 //! for a miss, and a closest-hit walk never stops early: it ends when the stack is empty.
 //!
 //! **What the host answers itself** (counted as [`Finished::Host`]): a ray from a surface
@@ -79,6 +79,9 @@ pub struct GpuScene {
     node_buffer: wgpu::Buffer,
     tori_buffer: wgpu::Buffer,
     tori64_buffer: Option<wgpu::Buffer>,
+    /// One dispatch at a time: each writes its header row into the node buffer before it
+    /// submits, so two threads' writes and submissions must not interleave.
+    dispatching: std::sync::Mutex<()>,
 }
 
 impl std::fmt::Debug for GpuScene {
@@ -138,6 +141,7 @@ impl GpuScene {
             node_buffer: storage(&device, "torus-cull scene nodes", 0),
             tori_buffer: storage(&device, "torus-cull scene tori", 0),
             tori64_buffer: None,
+            dispatching: std::sync::Mutex::new(()),
             device,
         };
         scene.node_buffer = scene.upload("torus-cull scene nodes", &scene.bvh.node_bytes());
@@ -224,6 +228,7 @@ impl GpuScene {
         mode: Mode,
         rays: &[Ray],
     ) -> Result<Vec<Option<[f32; 8]>>, GpuError> {
+        let _one_at_a_time = self.dispatching.lock().unwrap_or_else(|e| e.into_inner());
         let mut out = Vec::with_capacity(rays.len());
         for batch in rays.chunks(CHUNK) {
             let prepared: Vec<Option<[f32; 8]>> =

@@ -13,7 +13,7 @@ use obvhs::aabb::Aabb;
 use std::fmt::Write;
 
 /// Entries of the kernel's traversal stack: the BVH may be at most this deep less one
-/// (each popped inner node pushes two). A deeper tree is refused by [`GpuScene::new`].
+/// (each popped inner node pushes two). A deeper tree is refused by [`SceneBvh::new`].
 pub const STACK: u32 = 64;
 
 /// The largest coordinate of a torus's box or a ray's origin the kernel takes.
@@ -42,7 +42,7 @@ pub(crate) const STATUS_HOST: u32 = 2;
 /// The nearest hit of a ray in a [`super::GpuScene`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SceneHit {
-    /// The torus's index in the slice [`GpuScene::new`] was given.
+    /// The torus's index in the slice [`SceneBvh::new`] was given.
     pub torus: u32,
     /// t along the ray (units of its direction): within 2·10⁻⁴·(R + r)/|d| of the torus's
     /// first root in range where f32 proved it, to rounding where f64 gave it.
@@ -65,10 +65,10 @@ struct Node {
 /// the bindings `torus_scene_nodes` (binding 0), `torus_scene_tori` (1) and, where
 /// `f64`, `torus_scene_tori64` (2) at `@group(group)`, and
 /// `torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit`
-/// (`wgsl/scene.wgsl`). Fill the buffers with [`GpuScene::node_bytes`],
-/// [`GpuScene::tori_bytes`] and [`GpuScene::tori64_bytes`], each ray with
-/// [`GpuScene::prepare`]; an answer with status `TORUS_SCENE_HOST` is finished by
-/// [`GpuScene::host_trace`] (or [`GpuScene::host_occluded`]). `f64` needs
+/// (`wgsl/scene.wgsl`). Fill the buffers with [`SceneBvh::node_bytes`],
+/// [`SceneBvh::tori_bytes`] and [`SceneBvh::tori64_bytes`], each ray with
+/// [`SceneBvh::prepare`]; an answer with status `TORUS_SCENE_HOST` is finished by
+/// [`SceneBvh::host_trace`] (or [`SceneBvh::host_occluded`]). `f64` needs
 /// `wgpu::Features::SHADER_F64`.
 pub fn wgsl_scene_module(group: u32, f64: bool) -> String {
     let mut out = super::wgsl_module();
