@@ -202,13 +202,20 @@ impl SceneBvh {
             .collect()
     }
 
-    /// The tori buffer's bytes (`TorusSceneTorus`: `TorusParams`, then `(c, R + r)`).
+    /// The tori buffer's bytes (`TorusSceneTorus`: `TorusParams`, then `(c, R + r)`, with
+    /// `−(R + r)` where the centre is not an f32 value: that torus skips the f32 leaf).
     pub fn tori_bytes(&self) -> Vec<u8> {
         let mut words = Vec::with_capacity(self.tori.len() * 32);
         for t in &self.tori {
             words.extend(ModuleTorus::new(t).params());
             words.extend(t.center().to_array());
-            words.push(t.major_radius() + t.minor_radius());
+            // A centre given in f64 (`Torus::new_f64`) that f32 does not hold: the f32
+            // module's line error assumes o − c rounded once from the true difference,
+            // which an f32 centre no longer gives, so such a torus skips the f32 leaf
+            // (marked by a negative R + r) and goes to the f64 finish or the host.
+            let size = t.major_radius() + t.minor_radius();
+            let exact = t.center().as_dvec3() == t.center_f64();
+            words.push(if exact { size } else { -size });
         }
         as_bytes(&words)
     }

@@ -40,7 +40,8 @@ struct TorusSceneNodes {
     nodes: array<TorusSceneNode>,
 };
 
-// One torus (128 bytes): the f32 module's TorusParams and (centre, R + r).
+// One torus (128 bytes): the f32 module's TorusParams and (centre, R + r); w is −(R + r)
+// where the centre is not an f32 value (Torus::new_f64): that torus skips the f32 leaf.
 struct TorusSceneTorus {
     params: TorusParams,
     center: vec4<f32>,
@@ -109,7 +110,11 @@ fn tc_scene_leaf(ray: TorusRay, i: u32, hi_t: f32, cull: u32) -> TcSceneLeaf {
     let tor = torus_scene_tori[i];
     let v = ray.origin - tor.center.xyz;
     let dist = length(v);
-    let reach = (dist + 4.0 * tor.center.w) / length(ray.direction) * 1.001;
+    // center.w < 0: a centre f32 does not hold (Torus::new_f64), so `v` is off by up to
+    // ulp(|c|): the reach allows for it, and the f32 leaf is skipped.
+    let exact = tor.center.w > 0.0;
+    let reach = (dist + 4.0 * abs(tor.center.w) + 2.4e-7 * length(tor.center.xyz))
+        / length(ray.direction) * 1.001;
     let lo = max(ray.t_min, -reach);
     let hi = min(hi_t, reach);
     var leaf: TcSceneLeaf;
@@ -118,7 +123,7 @@ fn tc_scene_leaf(ray: TorusRay, i: u32, hi_t: f32, cull: u32) -> TcSceneLeaf {
         leaf.code = TORUS_MISS;
         return leaf;
     }
-    if (dist < TC_SCENE_FAR * tor.params.rot_x.w) {
+    if (exact && dist < TC_SCENE_FAR * tor.params.rot_x.w) {
         let h = torus_intersect(TorusRay(v, lo, ray.direction, hi), tor.params, cull);
         if (h.code == TORUS_HIT && h.t >= lo && h.t <= hi) {
             leaf.code = TORUS_HIT;
