@@ -31,7 +31,7 @@ use torus_cull_lab::workload::Case;
 use torus_cull_lab::workload::adversarial::SpecialCircle;
 
 /// The adapter, opened once for every test; `None` (after one loud line) without one.
-fn gpu() -> Option<&'static GpuIntersector> {
+pub(crate) fn gpu() -> Option<&'static GpuIntersector> {
     static GPU: OnceLock<Option<GpuIntersector>> = OnceLock::new();
     GPU.get_or_init(|| match GpuIntersector::new() {
         Ok(gpu) => {

@@ -7,4 +7,5 @@
 mod common;
 
 mod gpu;
+mod scene;
 mod wgsl_module;

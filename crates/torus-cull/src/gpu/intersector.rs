@@ -27,6 +27,9 @@ pub enum GpuError {
     Kernel(String),
     /// Reading the results back failed.
     Readback(String),
+    /// A scene the GPU BVH ([`super::GpuScene`]) cannot hold; the message names the
+    /// limit.
+    Scene(String),
 }
 
 impl fmt::Display for GpuError {
@@ -40,6 +43,7 @@ impl fmt::Display for GpuError {
             GpuError::RequestDevice(why) => write!(f, "the GPU adapter refused a device: {why}"),
             GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
             GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
+            GpuError::Scene(why) => write!(f, "the GPU scene: {why}"),
         }
     }
 }
@@ -146,7 +150,16 @@ impl GpuIntersector {
                 // adapter without it finishes escalated rays on the host.
                 required_features: adapter.features()
                     & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F64),
-                required_limits: wgpu::Limits::downlevel_defaults(),
+                // Five storage buffers for the f64 pass (its parameter block is one since
+                // the kernel's moved out of a uniform): the downlevel default is 4, which
+                // made the pass fail validation and every escalated ray go to the host.
+                required_limits: wgpu::Limits {
+                    max_storage_buffers_per_shader_stage: adapter
+                        .limits()
+                        .max_storage_buffers_per_shader_stage
+                        .min(8),
+                    ..wgpu::Limits::downlevel_defaults()
+                },
                 ..Default::default()
             })
             .await

@@ -71,7 +71,10 @@
 //! and packed), `intersector.rs` ([`GpuIntersector`]: device, pipelines, dispatch),
 //! `escalation.rs` ([`Escalation`], [`Finished`], [`FinishCounts`]), `finish.rs` (the f64
 //! pass), `module.rs` (the includable module's host side), `source.rs` (the WGSL text),
-//! `bounds.rs` (the culls' margin), `timing.rs` (the kernel timed alone).
+//! `bounds.rs` (the culls' margin), `timing.rs` (the kernel timed alone),
+//! `scene_bvh.rs` ([`SceneBvh`]: tori in an obvhs BVH2, laid out for the WGSL traversal,
+//! and the host's answer) and `scene.rs` ([`GpuScene`]: the traversal kernel, closest and
+//! any hit over many tori, docs/gpu.md "Tori in a GPU BVH").
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -98,6 +101,8 @@ pub(crate) mod finish;
 mod frame;
 mod intersector;
 mod module;
+mod scene;
+pub(crate) mod scene_bvh;
 mod source;
 mod timing;
 mod wire;
@@ -106,6 +111,10 @@ pub use cull::GpuCull;
 pub use escalation::{Escalation, FinishCounts, Finished};
 pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE, WORKGROUP_SIZES};
 pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
+pub use scene::{GpuScene, Occlusion, SceneAnswer};
+pub use scene_bvh::{
+    DIRECTION_RANGE, MAX_COORDINATE, STACK, SceneBvh, SceneHit, wgsl_scene_module,
+};
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
 };

@@ -390,6 +390,7 @@ fn wgsl_files() -> Vec<(&'static str, &'static str)> {
     (MODULE_FILES.1.iter().chain(FINISH_MODULE_FILES.1))
         .copied()
         .chain(entry_points)
+        .chain(crate::gpu::scene_bvh::SCENE_FILES)
         .collect()
 }
 
