@@ -364,3 +364,21 @@ fn even_tangents_at_the_foot_point_are_finished_on_the_device() {
     );
     assert!(counts[1] >= 100, "{counts:?}: too few reached the f64 pass");
 }
+
+/// Under `CI=true` the device's f64 pass must exist: CI's adapter (lavapipe) offers
+/// `SHADER_F64`, and where the pass fails to build every f64 test here prints SKIPPED and
+/// passes. That hid a regression once: a fifth storage buffer over wgpu's default limit
+/// of four switched the pass off on lavapipe. An adapter without f64 sets
+/// `TORUS_CULL_GPU_WITHOUT_F64=1` to run the rest.
+#[test]
+fn under_ci_the_device_finish_pass_exists() {
+    let Some(gpu) = gpu() else { return };
+    let allowed = std::env::var("TORUS_CULL_GPU_WITHOUT_F64").is_ok_and(|v| v == "1");
+    if crate::common::under_ci() && !allowed {
+        assert!(
+            gpu.finishes_on_device(),
+            "the device's f64 finish pass is unavailable under CI=true: {}",
+            gpu.device_finish_unavailable().unwrap_or_default()
+        );
+    }
+}
