@@ -133,6 +133,7 @@ fn shadow_rays(scene: &Scene, rays: &[Ray]) -> Vec<Ray> {
     rays.iter()
         .filter_map(|r| scene.brute_force(r).map(|(_, t)| (r, t)))
         .flat_map(|(r, t)| [r.with_t_max(0.5 * t), r.with_t_max(1.5 * t)])
+        .map(|r| r.expect("a hit's t is a valid t_max"))
         .collect()
 }
 
