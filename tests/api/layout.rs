@@ -616,6 +616,14 @@ const ALLOWED: &[(&str, &str)] = &[
         "removed (its summary stays); restored by the git show beside it",
     ),
     (
+        "results/bb215a7-dirty-bvh-time.json",
+        "removed (superseded by d62bb64's bench); restored by the git show beside it",
+    ),
+    (
+        "results/bb215a7-dirty-bvh-time-repeat.json",
+        "removed (superseded by d62bb64's bench); restored by the git show beside it",
+    ),
+    (
         "results/8a180e4.json",
         "removed (its summary stays); restored by the git show beside it",
     ),
