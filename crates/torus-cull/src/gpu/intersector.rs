@@ -660,19 +660,28 @@ pub(crate) fn compute_pipeline(
 }
 
 impl GpuIntersector {
-    /// Maps `slice` for reading and waits for it.
+    /// Maps `slice` for reading and waits for it ([`map_read`] on this device).
     pub(crate) fn map_read(&self, slice: &wgpu::BufferSlice<'_>) -> Result<(), GpuError> {
-        let (tx, rx) = mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |r| {
-            let _ = tx.send(r);
-        });
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| GpuError::Readback(e.to_string()))?;
-        rx.recv()
-            .map_err(|e| GpuError::Readback(e.to_string()))?
-            .map_err(|e| GpuError::Readback(e.to_string()))
+        map_read(&self.device, slice)
     }
+}
+
+/// Maps `slice` of a buffer on `device` for reading and waits for it: the one readback
+/// the kernel, its timing and the scene kernel share.
+pub(crate) fn map_read(
+    device: &wgpu::Device,
+    slice: &wgpu::BufferSlice<'_>,
+) -> Result<(), GpuError> {
+    let (tx, rx) = mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Readback(e.to_string()))?;
+    rx.recv()
+        .map_err(|e| GpuError::Readback(e.to_string()))?
+        .map_err(|e| GpuError::Readback(e.to_string()))
 }
 
 /// Each answer of `pairs` without what came with it (a diagnostic, who answered).

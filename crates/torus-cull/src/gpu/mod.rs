@@ -125,7 +125,9 @@ pub use wgpu;
 
 pub(crate) use escalation::{shifted, verdict};
 pub(crate) use frame::{Frame, Packed};
-pub(crate) use intersector::{Buffers, CHUNK, WORKGROUP, compute_pipeline, upload_surfaces};
+pub(crate) use intersector::{
+    Buffers, CHUNK, WORKGROUP, compute_pipeline, map_read, upload_surfaces,
+};
 pub(crate) use wire::{
     CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Mode, PARAMS_BYTES, RAY_BYTES, SURFACE_BYTES,
     as_bytes, decode_records,

@@ -294,16 +294,7 @@ impl GpuScene {
             encoder.copy_buffer_to_buffer(&rays_buffer, 0, &staging, 0, size);
             self.queue.submit([encoder.finish()]);
             let slice = staging.slice(..);
-            let (tx, rx) = std::sync::mpsc::channel();
-            slice.map_async(wgpu::MapMode::Read, move |r| {
-                let _ = tx.send(r);
-            });
-            self.device
-                .poll(wgpu::PollType::wait_indefinitely())
-                .map_err(|e| GpuError::Readback(e.to_string()))?;
-            rx.recv()
-                .map_err(|e| GpuError::Readback(e.to_string()))?
-                .map_err(|e| GpuError::Readback(e.to_string()))?;
+            super::map_read(&self.device, &slice)?;
             {
                 let view = slice
                     .get_mapped_range()
