@@ -1,11 +1,10 @@
-//! What the shape checks (`torus-cull family`, `torus-cull bend`) count alike: per ray
-//! kind, the oracle's labels; per cull, its rejections, its false rejects and its capture
-//! of the far misses. `compare` recomputes the capture from these counts.
+//! What `torus-cull check` counts for every shape: per ray kind, the oracle's labels;
+//! per cull, its rejections, its false rejects and its capture of the far misses.
+//! `compare` recomputes the capture from these counts.
 
 use crate::oracle::OracleClass;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
-use torus_cull::{CullKind, Named};
 
 /// `into.field += from.field` for each named count: the sum of two tallies of the same
 /// thing drawn on other rays.
@@ -111,18 +110,18 @@ pub fn rate_and_capture(rejection_rate: f64, capture: Option<f64>, unit: &str) -
     format!("{:.0}{unit}/{capture}{unit}", 100.0 * rejection_rate)
 }
 
-/// The per-cull part of a check's console table: a header (`first`, then each timed
-/// cull's name cut to `cell` characters) and a row per class (its label and its cells),
+/// The per-cull part of a check's console table: a header (`first`, then each of
+/// `names` cut to `cell` characters) and a row per class (its label and its cells),
 /// the first column `width` wide, each cell right-aligned in `cell`.
 pub fn cull_columns(
     out: &mut String,
     (first, width): (&str, usize),
     cell: usize,
+    names: &[String],
     rows: impl IntoIterator<Item = (String, Vec<String>)>,
 ) {
     let _ = write!(out, "{first:<width$}");
-    for c in CullKind::TIMED {
-        let name = c.name();
+    for name in names {
         let _ = write!(out, " {:>cell$}", name.get(..cell).unwrap_or(name));
     }
     let _ = writeln!(out);

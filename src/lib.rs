@@ -18,13 +18,11 @@
 //! * Test fixtures: [`errata`], the seed paper's culls as printed, which are **not
 //!   conservative**; they exist to prove that the oracle catches a broken cull.
 
-pub mod bend_check;
+pub mod check;
 pub mod check_counts;
 pub mod compare;
 pub mod errata;
 pub mod eval;
-pub mod f32_check;
-pub mod family_check;
 pub mod family_label;
 pub mod measure;
 pub mod named;

@@ -1,8 +1,7 @@
 //! SVG charts (plotters): rejection, capture, timing, BVH and paired-ratio figures
-//! against ν, the torus family check's capture and rejection per aspect b/a, and the
-//! bend check's against Δφ (`bend.rs`).
+//! against ν, and a check file's (`check.rs`: capture and rejection per cull against the
+//! shape's parameter; `answers.rs`: the intersectors' answers per class).
 
-use crate::family_check::{CullRecord, FamilyFile};
 use crate::results::{
     BvhRecord, CPU_DEVICE, EstimateRecord, F64_PRECISION, F64_REFERENCE, RatioRecord,
     RejectionRecord, Results, TimingRecord,
@@ -12,7 +11,8 @@ use std::collections::BTreeMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-pub mod bend;
+pub mod answers;
+pub mod check;
 
 /// One named line of (x, y) points.
 pub type Series = (String, Vec<(f64, f64)>);
@@ -335,72 +335,6 @@ pub fn plot_results(
     Ok(charts.written)
 }
 
-/// The charts of a `torus-cull family` file, written to `out_dir` (which must exist) as
-/// `<stem>-b<b/a>-capture.svg` and `…-rejection.svg`: per aspect b/a, each cull's
-/// capture of the far misses and its rejection rate against ν = R/a (horn and spindle
-/// members at ν ≤ 1), one line per cull; returns the paths written.
-pub fn plot_family(
-    file: &FamilyFile,
-    out_dir: &Path,
-    stem: &str,
-) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    let what = format!("{} rays a member", file.rays_per_member);
-    let mut charts = Charts::new(out_dir, stem, provenance(what, &file.meta), NU_AXIS)?;
-    let points: Vec<FamilyPoint<'_>> = file
-        .members
-        .iter()
-        .flat_map(|m| {
-            m.culls
-                .iter()
-                .filter(|c| c.accepts)
-                .map(move |c| FamilyPoint {
-                    group: format!("b{}", m.aspect),
-                    nu: m.nu,
-                    cull: c,
-                })
-        })
-        .collect();
-    group_charts(
-        &points,
-        &mut charts,
-        ("", "torus family, aspect "),
-        &[
-            (
-                "capture",
-                "capture of the misses beyond 1.25 eta, by nu = R/a",
-                "% of far misses rejected",
-                |p| p.cull.capture.map(|c| (100.0 * c, None)),
-            ),
-            (
-                "rejection",
-                "rejection rate, by nu = R/a",
-                "% of rays rejected",
-                |p| Some((100.0 * p.cull.rejection_rate, None)),
-            ),
-        ],
-    )?;
-    Ok(charts.written)
-}
-
-/// One cull on one family member, as a chart point (group: the aspect b/a).
-struct FamilyPoint<'a> {
-    group: String,
-    nu: f64,
-    cull: &'a CullRecord,
-}
-
-impl Record for FamilyPoint<'_> {
-    fn group(&self) -> String {
-        self.group.clone()
-    }
-    fn cull(&self) -> &str {
-        &self.cull.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
-    }
-}
-
 /// An estimate whose benchmark id reads `group/cull/ν` (`gpu_ns-hole/cychosz/2`,
 /// `total_ns-hole/skala/2`): one point of a chart per group.
 struct Estimate<'a> {
@@ -475,7 +409,7 @@ struct Charts<'a> {
     /// Workload and commit, appended to every title.
     provenance: String,
     /// The x axis's label.
-    x_label: &'static str,
+    x_label: String,
     written: Vec<PathBuf>,
 }
 
@@ -487,7 +421,7 @@ impl<'a> Charts<'a> {
         out_dir: &'a Path,
         stem: &'a str,
         provenance: String,
-        x_label: &'static str,
+        x_label: &str,
     ) -> Result<Charts<'a>, Box<dyn std::error::Error>> {
         let out_dir = if out_dir.as_os_str().is_empty() {
             Path::new(".")
@@ -501,7 +435,7 @@ impl<'a> Charts<'a> {
             out_dir,
             stem,
             provenance,
-            x_label,
+            x_label: x_label.into(),
             written: Vec::new(),
         })
     }
@@ -520,7 +454,7 @@ impl<'a> Charts<'a> {
         }
         let path = self.out_dir.join(format!("{}-{name}.svg", self.stem));
         let title = format!("{title} ({})", self.provenance);
-        write_chart(&path, &title, (self.x_label, y), &lines, zero)?;
+        write_chart(&path, &title, (&self.x_label, y), &lines, zero)?;
         self.written.push(path);
         Ok(())
     }

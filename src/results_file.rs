@@ -1,11 +1,10 @@
 //! Any file the tool writes for `plot` and `compare` to read: a results file (`run`,
-//! `time`, `cargo bench`), an f32-check file, a family-check file or a bend-check file,
-//! told apart by `meta.tool` (`f32-check`, `family`, `bend`) or, in files without it, by
-//! their own sections (`families`, `members`, `classes`).
+//! `time`, `cargo bench`) or a check file (`check`, every shape and precision), told apart
+//! by `meta.tool` (`check`). The three check kinds before it (`meta.tool` `family`, `bend`
+//! and `f32-check`, or without it their sections `members`, `classes`, `families`) are
+//! refused with the command that writes their counts now.
 
-use crate::bend_check::BendFile;
-use crate::f32_check::CheckFile;
-use crate::family_check::FamilyFile;
+use crate::check::record::{CheckFile, TOOL};
 use crate::results::{Results, ResultsError, read_json};
 use std::path::Path;
 
@@ -14,47 +13,49 @@ use std::path::Path;
 pub enum ResultsFile {
     /// `run`, `time` or `cargo bench`.
     Results(Results),
-    /// `f32-check`.
-    F32Check(CheckFile),
-    /// `family`.
-    Family(Box<FamilyFile>),
-    /// `bend`.
-    Bend(Box<BendFile>),
+    /// `check`.
+    Check(CheckFile),
 }
 
+/// The check kinds before `check`: (`meta.tool`, section, `check`'s flags for them).
+const OLD_CHECKS: [(&str, &str, &str); 3] = [
+    ("f32-check", "families", "--shape ring --precision f32"),
+    ("family", "members", "--shape family"),
+    ("bend", "classes", "--shape bend"),
+];
+
 impl ResultsFile {
-    /// Reads `path`, refusing other schema versions and files of neither kind (the error
-    /// names the file and the field).
+    /// Reads `path`, refusing other schema versions, the old check kinds and files of
+    /// neither kind (the error names the file and the field).
     pub fn load(path: &Path) -> Result<ResultsFile, ResultsError> {
         let value = read_json(path)?;
-        let parse = |e: serde_json::Error| ResultsError::Parse(path.into(), e.to_string());
+        let parse = |e: String| ResultsError::Parse(path.into(), e);
         let tool = value.pointer("/meta/tool").and_then(|t| t.as_str());
-        if tool == Some("f32-check") || value.get("families").is_some() {
-            serde_json::from_value(value)
-                .map(ResultsFile::F32Check)
-                .map_err(parse)
-        } else if tool == Some("family") || value.get("members").is_some() {
-            serde_json::from_value(value)
-                .map(|f| ResultsFile::Family(Box::new(f)))
-                .map_err(parse)
-        } else if tool == Some("bend") || value.get("classes").is_some() {
-            serde_json::from_value(value)
-                .map(|f| ResultsFile::Bend(Box::new(f)))
-                .map_err(parse)
-        } else {
-            serde_json::from_value(value)
-                .map(ResultsFile::Results)
-                .map_err(parse)
+        if tool == Some(TOOL) {
+            return serde_json::from_value(value)
+                .map(ResultsFile::Check)
+                .map_err(|e| parse(e.to_string()));
         }
+        let old = OLD_CHECKS
+            .iter()
+            .find(|(t, section, _)| tool == Some(*t) || value.get(section).is_some());
+        if let Some((old, _, flags)) = old {
+            return Err(parse(format!(
+                "a `{old}` check file (meta.tool `{old}`), a kind no longer read: check files \
+                 are now one kind, meta.tool `{TOOL}`; write one with `torus-cull check \
+                 {flags}` (the same rays and counts for the same flags and seed)"
+            )));
+        }
+        serde_json::from_value(value)
+            .map(ResultsFile::Results)
+            .map_err(|e| parse(e.to_string()))
     }
 
     /// What made the file, for messages: `meta.tool`, or `results` when unrecorded.
     pub fn tool(&self) -> &str {
         let meta = match self {
             ResultsFile::Results(r) => &r.meta,
-            ResultsFile::F32Check(c) => &c.meta,
-            ResultsFile::Family(f) => &f.meta,
-            ResultsFile::Bend(b) => &b.meta,
+            ResultsFile::Check(c) => &c.meta,
         };
         meta.tool.as_deref().unwrap_or("results")
     }

@@ -1,4 +1,4 @@
-//! `torus-cull compare OLD NEW`: the diff of two results files (or two f32-check files),
+//! `torus-cull compare OLD NEW`: the diff of two results files (or two check files),
 //! exit 1 on a regression.
 
 use super::CliResult;
@@ -46,17 +46,9 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
             compare::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
             compare::compare_across(a, b, threshold / 100.0, options.across_machines)
         }
-        (ResultsFile::F32Check(a), ResultsFile::F32Check(b)) => {
-            compare::f32_check::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
-            compare::f32_check::compare(a, b, threshold / 100.0, options.across_machines)
-        }
-        (ResultsFile::Family(a), ResultsFile::Family(b)) => {
-            compare::family::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
-            compare::family::compare(a, b, options.across_machines)
-        }
-        (ResultsFile::Bend(a), ResultsFile::Bend(b)) => {
-            compare::bend::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
-            compare::bend::compare(a, b, options.across_machines)
+        (ResultsFile::Check(a), ResultsFile::Check(b)) => {
+            compare::check::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
+            compare::check::compare(a, b, threshold / 100.0, options.across_machines)
         }
         _ => {
             return Err(format!(

@@ -12,12 +12,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use whole::Whole;
 
-mod bend;
+mod check;
 mod compare;
 mod console;
 mod eval;
-mod f32_check;
-mod family;
 mod gpu_info;
 mod plot;
 mod render;
@@ -135,20 +133,14 @@ enum Command {
         #[arg(long)]
         out_dir: Option<PathBuf>,
     },
-    /// Count the certified f32 intersection and the plain f32 closed form of shaders (the
-    /// peer) against the oracle, per ray family: missed and spurious hits, escalations, t
-    /// error. Exits 1 if ours missed a hit or gave a spurious or inaccurate one.
-    F32Check(f32_check::F32CheckArgs),
-    /// Check every cull and the exact intersection of the torus family (elliptical ring
-    /// tori, horn and spindle tori) against the oracle, member class by member class:
-    /// false rejects, rejection rate, capture of far misses, missed and invented hits.
-    /// Exits 1 on a false reject or a missed or invented hit.
-    Family(family::FamilyArgs),
-    /// Check every cull, alone and behind the wedge, and the exact intersection of the
-    /// pipe bend (a hollow core, a φ segment with end caps) against the bend oracle, per
-    /// (Δφ, r_min/r_max) class: false rejects, rejection rate, capture of far misses and
-    /// of the cut-away misses, missed, invented and wrong-face hits. Exits 1 on any.
-    Bend(bend::BendArgs),
+    /// Check every cull and intersector of one shape against the oracle, class by class:
+    /// false rejects, rejection rate, capture of far misses (and a shape's own captures),
+    /// missed, invented, misplaced hits and escalations of each intersector, at f64 (the
+    /// culls and the exact intersection) or f32 (the f32 paths). Exits 1 on a false
+    /// reject or a wrong answer of ours. Aliases: `torus-cull family`, `torus-cull bend`
+    /// (`check --shape family|bend`) and `torus-cull f32-check` (`check --shape ring
+    /// --precision f32`, its `--family` is `--class`).
+    Check(check::CheckArgs),
     /// The GPU adapter wgpu picks (a binary built with `--features gpu`), one `key: value`
     /// a line: adapter, device_type, backend, driver, software (a CPU rasteriser such as
     /// lavapipe), shader_f64, f64_finish_pass (and why not), timestamps. Exits 2 with one
@@ -248,7 +240,8 @@ enum EvalPrecision {
 fn main() -> ExitCode {
     // Every flag takes a leading '-' (src/cli/whole.rs), so a negative value meets the
     // flag's own range check.
-    let matches = whole::negative_numbers(Cli::command()).get_matches();
+    let argv = check::expand_aliases(std::env::args_os().collect());
+    let matches = whole::negative_numbers(Cli::command()).get_matches_from(argv);
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     remove_temp_files_on_signals();
     let result = match cli.command {
@@ -260,9 +253,7 @@ fn main() -> ExitCode {
             culls,
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
-        Command::F32Check(args) => f32_check::run(args),
-        Command::Family(args) => family::run(args),
-        Command::Bend(args) => bend::run(args),
+        Command::Check(args) => check::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
         Command::Render {

@@ -1,5 +1,4 @@
-//! `torus-cull plot`: the SVG figures of a results file, an f32-check file or a
-//! family-check file or a bend-check file.
+//! `torus-cull plot`: the SVG figures of a results file or a check file.
 
 use super::CliResult;
 use crate::console::outln;
@@ -22,9 +21,7 @@ pub fn plot(file: &Path, out_dir: Option<PathBuf>) -> CliResult {
     };
     let written = match &results {
         ResultsFile::Results(r) => torus_cull_lab::plot::plot_results(r, &dir, &stem)?,
-        ResultsFile::F32Check(c) => torus_cull_lab::f32_check::plot::plot_check(c, &dir, &stem)?,
-        ResultsFile::Family(f) => torus_cull_lab::plot::plot_family(f, &dir, &stem)?,
-        ResultsFile::Bend(b) => torus_cull_lab::plot::bend::plot_bend(b, &dir, &stem)?,
+        ResultsFile::Check(c) => torus_cull_lab::plot::check::plot_check(c, &dir, &stem)?,
     };
     if written.is_empty() {
         return Err(format!(
@@ -83,7 +80,7 @@ pub(crate) fn check_plot_paths(path: &Path) -> Result<(), String> {
 }
 
 /// The SVG charts of the file `path`, next to it and named after it, drawn by `draw(dir,
-/// stem)` (`plot_results` for `run` and `time`, `plot_family`, `plot_bend`).
+/// stem)` (`plot_results` for `run` and `time`, `plot_check` for `check`).
 pub(crate) fn write_charts(
     path: &Path,
     draw: impl FnOnce(&Path, &str) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>>,
@@ -123,13 +120,13 @@ pub(crate) fn write_check_file(
     Ok(())
 }
 
-/// A check command's (`f32-check`, `family`, `bend`) `--rays`: 1 ..= `max`, else the
+/// `check`'s `--rays`: 1 ..= `max`, else the
 /// message that says so.
 pub(crate) fn check_rays(rays: Whole, max: usize) -> Result<usize, String> {
     rays.within("--rays", (1, max), "")
 }
 
-/// Where a check command (`f32-check`, `family`, `bend`) writes its file: `--out`, or
+/// Where `check` writes its file: `--out`, or
 /// `results/<commit><suffix>.json` (its folder made); checked writable, and its charts'
 /// paths too unless `no_plots`, before any work, so a finished run is never lost to them.
 pub(crate) fn check_file_out(

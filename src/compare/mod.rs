@@ -27,11 +27,8 @@
 //! not regressions; the CLI then exits 2, as it does when the two files share no record,
 //! so that a vacuous comparison never passes a CI gate.
 
-pub mod bend;
-mod counted;
+pub mod check;
 pub mod coverage;
-pub mod f32_check;
-pub mod family;
 pub mod machine;
 mod ratio;
 mod rows;

@@ -55,7 +55,7 @@ pub struct Report {
 }
 
 /// The sections whose verdicts are timings: a fact about the machine as much as the code.
-pub(super) const TIMED_SECTIONS: [&str; 4] = ["timing", "ratio", "f32-check timing", "estimate"];
+pub(super) const TIMED_SECTIONS: [&str; 4] = ["timing", "ratio", "check timing", "estimate"];
 
 /// The flag of a timed value that moved by `change` (relative, positive slower) without
 /// a disjoint slowdown: noise when it grew past `threshold`, `faster` when it fell past

@@ -11,7 +11,7 @@ use crate::dispatch_levels;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use torus_cull::batch::{BatchCull, Wavefront};
 use torus_cull::{DRay, Ray};
-use torus_cull_lab::bend_check::rays::{RayKind, draw};
+use torus_cull_lab::check::shapes::bend::rays::{RayKind, draw};
 
 /// The f64 ray rounded to f32, a surface ray staying one (`None` where f32 refuses it).
 fn f32_ray(ray: &DRay) -> Option<Ray> {

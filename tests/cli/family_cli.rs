@@ -1,10 +1,7 @@
 //! The torus family on the command line: `eval --axial` and horn/spindle tori, the
-//! circular ring torus's rows unchanged, and `torus-cull family` at a tiny size.
+//! circular ring torus's rows unchanged (the family's check: check_cli.rs).
 
-use super::support::{
-    arg, assert_ok, cli_ok, compare_clean_and_worse, eval_rows, read_json, refused, stderr, svgs,
-    temp_path, torus_cull,
-};
+use super::support::{arg, eval_rows, stderr, torus_cull};
 use std::path::Path;
 
 #[test]
@@ -122,73 +119,4 @@ fn circular_ring_rows_are_unchanged() {
             );
         }
     }
-}
-
-#[test]
-fn family_check_at_a_tiny_size_is_clean() {
-    let (dir, path) = temp_path("family.json");
-    let out = torus_cull(&["family", "--rays", "48", "--out", arg(&path)]);
-    assert_ok(&out);
-    let file = read_json(&path);
-    assert_eq!(file["meta"]["tool"], "family");
-    let members = file["members"].as_array().unwrap();
-    assert_eq!(members.len(), 33);
-    for m in members {
-        let culls = m["culls"].as_array().unwrap();
-        assert_eq!(culls.len(), torus_cull::CullKind::TIMED.len());
-        for c in culls {
-            assert_eq!(c["false_rejects"], 0, "{m}");
-        }
-        for key in [
-            "intersect_missed",
-            "intersect_invented",
-            "all_missed",
-            "all_invented",
-        ] {
-            assert_eq!(m["exact"][key], 0, "{key}: {m}");
-        }
-        let rays: u64 = m["kinds"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|k| k["rays"].as_u64().unwrap())
-            .sum();
-        assert_eq!(rays, 48);
-    }
-    // Its charts, next to it: capture and rejection rate per aspect b/a (five aspects);
-    // `plot` draws the same from the file, and `--no-plots` writes none.
-    let written = svgs(dir.path());
-    assert_eq!(written.len(), 10, "{written:?}");
-    assert!(
-        written.contains(&"family-b0.25-capture.svg".to_string()),
-        "{written:?}"
-    );
-    let again = tempfile::tempdir().unwrap();
-    cli_ok(
-        "plot {} --out-dir {}",
-        &[arg(&path), again.path().to_str().unwrap()],
-    );
-    assert_eq!(svgs(again.path()), written);
-    // `compare` reads two family files: the same file is clean; a false reject added, or a
-    // capture lowered, is a regression (exit 1); files of other rays are refused (exit 2).
-    let p = arg(&path);
-    let mut worse: serde_json::Value = file.clone();
-    worse["members"][3]["culls"][5]["false_rejects"] = 1.into();
-    let cull = &mut worse["members"][7]["culls"][8];
-    let far = cull["far_misses"].as_u64().unwrap();
-    cull["far_misses"] = (far + 1).into();
-    compare_clean_and_worse(p, &worse, again.path());
-    let other = again.path().join("other.json");
-    cli_ok(
-        "family --rays 8 --no-plots --seed 5 --out {}",
-        &[arg(&other)],
-    );
-    let out = torus_cull(&["compare", p, arg(&other)]);
-    refused(&out);
-    assert!(stderr(&out).contains("workload_sha256"), "{}", stderr(&out));
-    let bare = tempfile::tempdir().unwrap();
-    let quiet = bare.path().join("family.json");
-    let out = torus_cull(&["family", "--rays", "8", "--no-plots", "--out", arg(&quiet)]);
-    assert_ok(&out);
-    assert!(svgs(bare.path()).is_empty());
 }

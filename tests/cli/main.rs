@@ -7,8 +7,9 @@
 mod common;
 
 mod bend_cli;
+mod check_cli;
+mod check_ring_f32;
 mod eval_cli;
-mod f32_check;
 mod family_cli;
 mod issue36_cli;
 mod issue52_cli;

@@ -7,7 +7,7 @@
 #![cfg(unix)]
 
 use crate::support::{
-    BIN, arg, assert_ok, cli, eval_to, refused, svgs, temp_path, torus_cull, words,
+    BIN, arg, assert_ok, cli, eval_to, read_json, refused, svgs, temp_path, torus_cull, words,
 };
 use std::io::{Read, Write};
 use std::os::unix::fs::{FileTypeExt, PermissionsExt};
@@ -374,9 +374,10 @@ fn render_refuses_a_name_that_is_not_png() {
     assert!(std::fs::read(&out).unwrap().starts_with(b"\x89PNG"));
 }
 
-/// Issue 29: `f32-check` writes its plots, and its file goes through `plot` and `compare`
-/// (both refused it: "missing field `rejection`"); one ray per family shows ν as one
-/// value, not "3.145-3", and the f64 time sits on the f32 path's row.
+/// Issue 29: `f32-check` (`check --shape ring --precision f32`) writes its plots, and its
+/// file goes through `plot` and `compare` (both refused it: "missing field
+/// `rejection`"); one ray per family keeps its ν as one value, not "3.145-3", and the f64
+/// time has a line of its own beside the f32 path's.
 #[test]
 fn f32_check_files_are_plotted_and_compared() {
     let (dir, json) = temp_path("f.json");
@@ -392,18 +393,26 @@ fn f32_check_files_are_plotted_and_compared() {
             "f-wrong.svg"
         ]
     );
-    let inner = table
-        .lines()
-        .find(|l| l.starts_with("tangent_1e-6_inner_equator"))
+    let file = read_json(&json);
+    let inner = file["classes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["label"] == "tangent_1e-6_inner_equator")
         .unwrap();
-    let nu = inner.split_whitespace().nth(1).unwrap();
-    assert!(nu.parse::<f64>().is_ok(), "ν '{nu}' in: {inner}");
-    // Each family's f32 line carries both times; its cert line neither.
+    assert_eq!(
+        inner["params"]["nu_lo"], inner["params"]["nu_hi"],
+        "{inner}"
+    );
+    // Each family's f32 line carries its time, and the f64 intersection a line of its own.
     let mut hole_edge = table.lines().skip_while(|l| !l.starts_with("hole_edge"));
-    let (cert, f32_line) = (hole_edge.next().unwrap(), hole_edge.next().unwrap());
-    // who, esc%, missed, spurious, far, three t errors, ns/ray, f64 ns/ray.
-    assert_eq!(f32_line.split_whitespace().count(), 10, "{f32_line}");
-    assert!(cert.trim_end().ends_with(" -"), "{cert}");
+    let lines: Vec<&str> = hole_edge.by_ref().take(4).collect();
+    assert!(lines[1].trim_start().starts_with("f32"), "{lines:?}");
+    assert!(!lines[1].trim_end().ends_with(" -"), "{lines:?}");
+    assert!(
+        lines[3].trim_start().starts_with("f64_intersect"),
+        "{lines:?}"
+    );
     let again = dir.path().join("again");
     std::fs::create_dir(&again).unwrap();
     let o = torus_cull(&["plot", arg(&json), "--out-dir", arg(&again)]);

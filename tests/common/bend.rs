@@ -1,5 +1,5 @@
 //! Pipe bends for the oracle tests: the bend, its rays and the judge of the exact
-//! intersection live in the lab (`torus_cull_lab::bend_check`), one home shared with
+//! intersection live in the lab (`torus_cull_lab::check::shapes::bend`), one home shared with
 //! `torus-cull bend`; the wedge-alone shorthand and the ambiguity band stay here.
 #![allow(
     unused_imports,
@@ -10,14 +10,14 @@ use torus_cull::bend::PipeBend;
 use torus_cull::{DRay, NoCull};
 use torus_cull_lab::oracle::AMBIGUITY_REL;
 
-pub use torus_cull_lab::bend_check::exact::{TOL, Tally, face, from_surface_reference};
-pub use torus_cull_lab::bend_check::rays::{Spec, rng, unit};
+pub use torus_cull_lab::check::shapes::bend::exact::{TOL, Tally, face, from_surface_reference};
+pub use torus_cull_lab::check::shapes::bend::rays::{Spec, rng, unit};
 
 /// Compares `intersect` and `intersect_all` on the literal `ray` with the oracle
-/// (`bend_check::exact::compare`, labelling the ray itself).
+/// (`check::shapes::bend::exact::compare`, labelling the ray itself).
 pub fn compare(spec: &Spec, bend: &PipeBend, ray: &DRay) -> (Tally, Option<String>) {
     let label = spec.query(ray).classify();
-    torus_cull_lab::bend_check::exact::compare(spec, bend, ray, &label)
+    torus_cull_lab::check::shapes::bend::exact::compare(spec, bend, ray, &label)
 }
 
 /// The wedge alone, for capture counts.

@@ -93,7 +93,7 @@ pub fn on_two_threads<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync)
 
 /// The f32-check's spawned secondary-ray families (issue 26: bounces with two t_min,
 /// grazing, across, saddle), in the order the tests report them.
-pub fn spawned_families() -> Vec<torus_cull_lab::f32_check::families::Family> {
+pub fn spawned_families() -> Vec<torus_cull_lab::check::shapes::ring::families::Family> {
     let names = [
         "spawned_bounce",
         "spawned_bounce_scene_eps",
@@ -101,7 +101,7 @@ pub fn spawned_families() -> Vec<torus_cull_lab::f32_check::families::Family> {
         "spawned_across",
         "spawned_saddle",
     ];
-    let all = torus_cull_lab::f32_check::families::all();
+    let all = torus_cull_lab::check::shapes::ring::families::all();
     names
         .iter()
         .map(|name| {

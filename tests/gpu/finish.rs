@@ -12,7 +12,7 @@ use super::*;
 /// path's, checked in tests/oracle/secondary_rays.rs).
 #[test]
 fn spawned_secondary_families_through_the_kernel_against_the_oracle() {
-    use torus_cull_lab::f32_check::{Answer, Labeled, tally};
+    use torus_cull_lab::check::shapes::ring::{Answer, Labeled, tally};
     let Some(gpu) = gpu() else { return };
     for family in crate::common::spawned_families() {
         let name = &family.name;

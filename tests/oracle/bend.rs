@@ -261,7 +261,7 @@ fn grazing_sweeps_across_a_metre_torus() {
 
 #[test]
 fn the_cut_away_arc_the_pipes_axis_the_hollow_core_and_the_caps_edges() {
-    // The ray kinds of `torus-cull bend` (`bend_check::rays`), at the test's size.
+    // The ray kinds of `torus-cull bend` (`check::shapes::bend::rays`), at the test's size.
     let mut rng = rng(0xa1c);
     let mut total = Tally::default();
     for delta in [PI, FRAC_PI_2, PI / 6.0] {
@@ -439,7 +439,7 @@ fn rays_spawned_from_every_face() {
                 let spec = Spec::canonical(nu, ratio, 1.0, 0.0, delta).posed(&mut rng);
                 let bend = spec.bend().unwrap();
                 // From a random crossing of a random ray, or from a cap's point (its edges
-                // included): `bend_check::rays`' spawned rays, counted by the oracle's faces
+                // included): `check::shapes::bend::rays`' spawned rays, counted by the oracle's faces
                 // at the origin.
                 let mut rays = Vec::new();
                 for _ in 0..270 {

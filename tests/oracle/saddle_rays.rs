@@ -21,7 +21,7 @@ use crate::common::from_surface_reference;
 use glam::{DVec3, Vec3};
 use torus_cull::batch::{BatchCull, Dispatch, Wavefront};
 use torus_cull::{DRay, Ray, Torus, intersect, intersect_all, intersect_f32, occluded};
-use torus_cull_lab::f32_check::families::{saddle_direction, tube_point};
+use torus_cull_lab::check::shapes::ring::families::{saddle_direction, tube_point};
 
 const NUS: [f64; 5] = [1.01, 1.5, 4.0, 32.0, 1000.0];
 const MAJORS: [f64; 3] = [1e-3, 1.0, 1e3];

@@ -4,7 +4,7 @@
 //! posed at random: rays across the wall (from outside and from the bore), along it,
 //! tangent to the outer and to the bore face within a fraction of the wall, through a
 //! cap's thin annulus, and rays spawned from either face (half of them aimed into the
-//! wall). Literal rays are judged by `bend_check::exact::compare`, spawned ones by
+//! wall). Literal rays are judged by `check::shapes::bend::exact::compare`, spawned ones by
 //! `compare_spawned` (the oracle's on-surface rule); the certified f32 path's proved
 //! answers (a cut bend's misses) against the oracle on the f32 ray.
 //!
@@ -19,7 +19,7 @@ use rand_pcg::Pcg64;
 use std::f64::consts::{PI, TAU};
 use torus_cull::bend::{BendError, MIN_WALL_REL, PipeBend};
 use torus_cull::{DRay, Ray};
-use torus_cull_lab::bend_check::exact::compare_spawned;
+use torus_cull_lab::check::shapes::bend::exact::compare_spawned;
 use torus_cull_lab::oracle::OracleClass;
 
 /// The walls, × r_max.

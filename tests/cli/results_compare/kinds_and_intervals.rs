@@ -46,33 +46,46 @@ fn first_line_is_not_blank_and_long_keys_stay_aligned() {
     assert!(ends.windows(2).all(|w| w[0] == w[1]), "{rejection:#?}");
 }
 
-/// Issue 29: two f32-check files compare family by family; more missed hits is a
-/// regression; an f32-check file against a results file is refused, naming both tools.
+/// Issue 29: two check files compare class by class; more missed hits of ours is a
+/// regression; a check file against a results file is refused, naming both tools.
 #[test]
-fn f32_check_files_compare_and_mixed_kinds_are_refused() {
-    use torus_cull_lab::f32_check::{CheckFile, FamilyRecord, Tally};
-    let tally = |missed: u64| Tally {
-        escalated: 1,
-        escalation_rate: 0.01,
-        missed,
-        spurious: 0,
-        hits_answered: 50,
-        far: 0,
-        t_error: None,
+fn check_files_compare_and_mixed_kinds_are_refused() {
+    use torus_cull_lab::check::record::{AnswerRecord, ChartAxes, CheckFile, ClassRecord};
+    let answer = |who: &str, ours: bool, missed: u64| {
+        let mut a = AnswerRecord::new(who, ours, &["far", "missed", "spurious"]);
+        a.wrong.insert("missed".into(), missed);
+        a.counts.insert("escalated".into(), 1);
+        a.counts.insert("hits_answered".into(), 50);
+        a
     };
-    let family = |missed: u64| FamilyRecord {
-        family: "hole".into(),
-        nu: Some(2.0),
-        nu_range: [2.0, 2.0],
+    let family = |missed: u64| ClassRecord {
+        label: "hole 2".into(),
         rays: 100,
-        hits: 50,
-        misses: 50,
-        ambiguous: 0,
-        certified: tally(missed),
-        f32_path: tally(missed),
-        peer: tally(3),
-        ns_per_ray: None,
+        answers: vec![
+            answer("cert", true, missed),
+            answer("f32", true, missed),
+            answer("peer", false, 3),
+        ],
+        ..ClassRecord::default()
     };
+    let file = |classes| CheckFile {
+        schema_version: torus_cull_lab::check::record::SCHEMA_VERSION,
+        meta: sample().meta,
+        shape: "ring".into(),
+        precision: "f32".into(),
+        rays_per_class: 100,
+        seed: 1,
+        oracle: "oracle".into(),
+        constants: Default::default(),
+        chart: ChartAxes {
+            x: "nu".into(),
+            x_title: "nu".into(),
+            group_by: Vec::new(),
+        },
+        classes,
+    };
+    let mut good = file(vec![family(0)]);
+    good.meta.tool = Some("check".into());
     let dir = tempfile::tempdir().unwrap();
     let (a, b, c) = (
         dir.path().join("a.json"),
@@ -82,10 +95,9 @@ fn f32_check_files_compare_and_mixed_kinds_are_refused() {
     let write = |path: &Path, f: &CheckFile| {
         write_atomic(path, serde_json::to_string(f).unwrap().as_bytes()).unwrap();
     };
-    let good = CheckFile::new(vec![family(0)], 100, 1, 1);
     write(&a, &good);
     let mut bad = good.clone();
-    bad.families[0] = family(2);
+    bad.classes[0] = family(2);
     write(&b, &bad);
     let (code, out, err) = compare_cli(&[arg(&a), arg(&a)]);
     assert_eq!(code, 0, "{out}{err}");
@@ -93,16 +105,13 @@ fn f32_check_files_compare_and_mixed_kinds_are_refused() {
     let (code, out, _) = compare_cli(&[arg(&a), arg(&b)]);
     assert_eq!(code, 1, "{out}");
     assert!(
-        out.contains("REGRESSION: missed/spurious/far 0/0/0 -> 2/0/0"),
+        out.contains("REGRESSION: far/missed/spurious answers 0 -> 2"),
         "{out}"
     );
     sample().save(&c).unwrap();
     let (code, _, err) = compare_cli(&[arg(&a), arg(&c)]);
     assert_eq!(code, 2, "{err}");
-    assert!(
-        err.contains("`f32-check`") && err.contains("`run`"),
-        "{err}"
-    );
+    assert!(err.contains("`check`") && err.contains("`run`"), "{err}");
 }
 
 /// Issue 29: a file with only `estimates` (`time --device gpu`, a filtered bench) is

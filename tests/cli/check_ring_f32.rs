@@ -1,4 +1,5 @@
-//! Issue 19's f32 check, on a few thousand rays per family: ours (the certified f32
+//! Issue 19's f32 check (`check --shape ring --precision f32`, alias `f32-check`), on a
+//! few thousand rays per family: ours (the certified f32
 //! verdict and the whole f32 path) never misses a definite hit, never answers a definite
 //! miss with a `t`, and every accepted `t` is within 2e-4·(R + r) + 4 ulp of the oracle's
 //! first root, on every family; the peer (the plain f32 closed form of shaders) is
@@ -7,7 +8,8 @@
 use crate::support::assert_ok;
 use std::process::Command;
 use std::sync::OnceLock;
-use torus_cull_lab::f32_check::{self, CheckFile, FamilyRecord, families};
+use torus_cull_lab::check::record::{AnswerRecord, CheckFile, ClassRecord};
+use torus_cull_lab::check::shapes::ring::{self as f32_check, RingF32, families};
 use torus_cull_lab::oracle::OracleClass;
 use torus_cull_lab::peer_f32::intersect_peer_f64;
 
@@ -15,14 +17,83 @@ const BIN: &str = env!("CARGO_BIN_EXE_torus-cull");
 const RAYS: usize = 3000;
 const SEED: u64 = 20261121;
 
-/// Every family's record, computed once for the whole test binary (no timings).
-fn records() -> &'static [FamilyRecord] {
-    static RECORDS: OnceLock<Vec<FamilyRecord>> = OnceLock::new();
+/// One family's record as the tests read it: the class and its three intersectors.
+struct FamilyRecord {
+    family: String,
+    nu: Option<f64>,
+    rays: u64,
+    hits: u64,
+    misses: u64,
+    ambiguous: u64,
+    certified: Tally,
+    f32_path: Tally,
+    peer: Tally,
+}
+
+/// One intersector's counts.
+#[derive(Debug)]
+struct Tally {
+    escalated: u64,
+    escalation_rate: f64,
+    missed: u64,
+    spurious: u64,
+    far: u64,
+    hits_answered: u64,
+    t_error: Option<torus_cull_lab::check::record::ErrorStats>,
+}
+
+impl Tally {
+    fn of(a: &AnswerRecord, rays: u64) -> Tally {
+        Tally {
+            escalated: a.count("escalated"),
+            escalation_rate: a.count("escalated") as f64 / rays as f64,
+            missed: a.wrong["missed"],
+            spurious: a.wrong["spurious"],
+            far: a.wrong["far"],
+            hits_answered: a.count("hits_answered"),
+            t_error: a.t_error,
+        }
+    }
+}
+
+impl FamilyRecord {
+    fn of(c: &ClassRecord) -> FamilyRecord {
+        let who = |w: &str| Tally::of(c.answers.iter().find(|a| a.who == w).unwrap(), c.rays);
+        let (hits, misses, ambiguous) = c.labels();
+        FamilyRecord {
+            family: c.words["family"].clone(),
+            nu: c.params.get("nu").copied(),
+            rays: c.rays,
+            hits,
+            misses,
+            ambiguous,
+            certified: who("cert"),
+            f32_path: who("f32"),
+            peer: who("peer"),
+        }
+    }
+}
+
+/// Every family's record, computed once for the whole test binary (no timings), and the
+/// records as the check writes them.
+fn checked() -> &'static (Vec<ClassRecord>, Vec<FamilyRecord>) {
+    static RECORDS: OnceLock<(Vec<ClassRecord>, Vec<FamilyRecord>)> = OnceLock::new();
     RECORDS.get_or_init(|| {
         let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-        f32_check::check(&families::all(), RAYS, SEED, threads, 0, &|_, _| {})
-            .expect("every family generates")
+        let shape = RingF32 {
+            families: families::all(),
+            rounds: 0,
+        };
+        let all: Vec<usize> = (0..shape.families.len()).collect();
+        let checked = torus_cull_lab::check::check(&shape, &all, (RAYS, SEED), threads, &|_, _| {})
+            .expect("every family generates");
+        let view = checked.records.iter().map(FamilyRecord::of).collect();
+        (checked.records, view)
     })
+}
+
+fn records() -> &'static [FamilyRecord] {
+    &checked().1
 }
 
 fn is_tangent(r: &FamilyRecord) -> bool {
@@ -76,7 +147,7 @@ fn the_peer_shows_speckles_on_the_tangent_families() {
         "{wrong} of {rays}: fewer speckles than 1 %"
     );
     // The table shows them.
-    let table = f32_check::table(records());
+    let table = torus_cull_lab::check::table::table(&checked().0);
     for r in &tangent {
         assert!(table.contains(&r.family), "{}", r.family);
     }
@@ -207,11 +278,18 @@ fn the_cli_writes_the_json_and_refuses_bad_outputs() {
         "{stdout}"
     );
     let file: CheckFile = serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap();
-    assert_eq!(file.schema_version, f32_check::SCHEMA_VERSION);
-    assert_eq!(file.meta.tool.as_deref(), Some("f32-check"));
-    assert_eq!(file.rays_per_family, 40);
-    assert_eq!(file.families.len(), families::all().len());
-    assert!(file.families.iter().all(|f| f.ns_per_ray.is_some()));
+    assert_eq!(
+        file.schema_version,
+        torus_cull_lab::check::record::SCHEMA_VERSION
+    );
+    assert_eq!(file.meta.tool.as_deref(), Some("check"));
+    assert_eq!(
+        (file.shape.as_str(), file.precision.as_str()),
+        ("ring", "f32")
+    );
+    assert_eq!(file.rays_per_class, 40);
+    assert_eq!(file.classes.len(), families::all().len());
+    assert!(file.classes.iter().all(|f| f.ns_per_ray.is_some()));
     // No temp file is left next to it: the file and its four plots (issue 29).
     let mut names: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()

@@ -1,4 +1,5 @@
-//! The f32 check (issue 19): the certified f32 intersection, the whole f32 path and the
+//! `torus-cull check --shape ring --precision f32` (alias `torus-cull f32-check`; issue
+//! 19): the certified f32 intersection, the whole f32 path and the
 //! plain f32 closed form of shaders ([`crate::peer_f32`]) counted against the
 //! oracle on the same rays, family by family ([`families`]).
 //!
@@ -18,14 +19,16 @@
 //!   for the whole f32 path ([`torus_cull::intersect_f32`]) it is answered by f64 and counted.
 
 pub mod families;
-pub mod plot;
 
+use crate::check::CheckShape;
+pub use crate::check::record::ErrorStats;
+use crate::check::record::{AnswerRecord, ClassRecord, KindRecord};
 use crate::oracle::{
     OracleClass, Query, classify_from_surface, first_crossing_from_surface, reference_roots,
 };
 use families::Family;
 use serde::{Deserialize, Serialize};
-use std::fmt::Write;
+use std::collections::BTreeMap;
 use torus_cull::{F32Hit, F32Verdict, Ray, Torus, intersect_f32, intersect_f32_certified};
 
 pub use crate::peer_f32::intersect_peer_f32;
@@ -35,8 +38,8 @@ pub const TOLERANCE_REL: f64 = 2e-4;
 /// The tolerance's part in ulps of `t`.
 pub const TOLERANCE_ULPS: f64 = 4.0;
 
-/// The schema version of the f32-check JSON.
-pub const SCHEMA_VERSION: u32 = 1;
+/// The seed `--seed` defaults to.
+pub const SEED: u64 = 20261121;
 
 /// One ray with the oracle's label.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -176,34 +179,6 @@ pub fn peer(torus: &Torus, ray: &Ray) -> Answer {
     Answer::plain(intersect_peer_f32(torus, ray))
 }
 
-/// Median, p99 and max of a set of errors (nearest rank).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct ErrorStats {
-    /// Median.
-    pub median: f64,
-    /// 99th percentile.
-    pub p99: f64,
-    /// Maximum.
-    pub max: f64,
-}
-
-impl ErrorStats {
-    /// The stats of `errors`; `None` when empty.
-    pub fn of(mut errors: Vec<f64>) -> Option<ErrorStats> {
-        if errors.is_empty() {
-            return None;
-        }
-        errors.sort_by(f64::total_cmp);
-        let rank =
-            |q: f64| errors[((q * errors.len() as f64).ceil() as usize).clamp(1, errors.len()) - 1];
-        Some(ErrorStats {
-            median: rank(0.5),
-            p99: rank(0.99),
-            max: errors[errors.len() - 1],
-        })
-    }
-}
-
 /// One intersector's counts on one family (see the module docs).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Tally {
@@ -299,14 +274,14 @@ pub struct Timings {
 /// Time the f32 path, the peer and the f64 intersection on the same rays, in `rounds`
 /// interleaved rounds (the order rotating from round to round); each one's minimum per
 /// ray. Indicative only: on a loaded machine use paired timings for claims.
-pub fn time(rays: &[Labeled], rounds: u32) -> Timings {
+pub fn time(rays: &[(Torus, Ray)], rounds: u32) -> Timings {
     use std::hint::black_box;
     use std::time::Instant;
     let run = |f: &dyn Fn(&Torus, &Ray) -> bool| {
         let start = Instant::now();
         let mut n = 0u32;
         for r in rays {
-            n += u32::from(f(black_box(&r.torus), black_box(&r.ray)));
+            n += u32::from(f(black_box(&r.0), black_box(&r.1)));
         }
         black_box(n);
         start.elapsed().as_secs_f64() * 1e9 / rays.len().max(1) as f64
@@ -332,250 +307,150 @@ pub fn time(rays: &[Labeled], rounds: u32) -> Timings {
     }
 }
 
-/// One family's figures.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct FamilyRecord {
-    /// The family's name.
-    pub family: String,
-    /// ν, or null where ν is drawn per ray (log-uniform in `nu_range`).
-    pub nu: Option<f64>,
-    /// The ν the family's rays span.
-    pub nu_range: [f64; 2],
-    /// Rays.
-    pub rays: u64,
-    /// Oracle definite hits.
-    pub hits: u64,
-    /// Oracle definite misses.
-    pub misses: u64,
-    /// Oracle ambiguous (counted by nothing but `rays`).
-    pub ambiguous: u64,
-    /// The certified verdict alone ([`intersect_f32_certified`]).
-    pub certified: Tally,
-    /// The whole f32 path ([`intersect_f32`]).
-    pub f32_path: Tally,
-    /// The plain f32 closed form of shaders ([`intersect_peer_f32`]).
-    pub peer: Tally,
-    /// ns per ray, null when not timed.
-    pub ns_per_ray: Option<Timings>,
-}
-
-impl FamilyRecord {
-    /// Whether ours (the certified verdict or the whole f32 path) missed a hit, reported
-    /// a spurious one or put a `t` outside the tolerance.
-    pub fn ours_failed(&self) -> bool {
-        self.certified.failed() || self.f32_path.failed()
+/// A family's label: its name, and its ν when it has one (the workload generators'
+/// families share a name across ν).
+pub fn family_label(family: &Family) -> String {
+    match family.nu() {
+        Some(nu) => format!("{} {nu}", family.name),
+        None => family.name.clone(),
     }
 }
 
-/// Count and (with `rounds > 0`) time one family on labelled rays.
-pub fn record(family: &Family, rays: &[Labeled], rounds: u32) -> FamilyRecord {
+/// The tally as an answer record: `missed`, `spurious` and `far` its wrong answers,
+/// `escalated` and `hits_answered` its counts, and its t error's stats.
+fn answer(who: &str, ours: bool, t: &Tally) -> AnswerRecord {
+    let mut a = AnswerRecord::new(who, ours, &[]);
+    for (k, v) in [
+        ("missed", t.missed),
+        ("spurious", t.spurious),
+        ("far", t.far),
+    ] {
+        a.wrong.insert(k.into(), v);
+    }
+    for (k, v) in [
+        ("escalated", t.escalated),
+        ("hits_answered", t.hits_answered),
+    ] {
+        a.counts.insert(k.into(), v);
+    }
+    a.t_error = t.t_error;
+    a
+}
+
+/// Count one family on labelled rays: the certified verdict (`cert`), the whole f32
+/// path (`f32`), both ours, and the peer (`peer`), measured, not held to the rules.
+pub fn record(family: &Family, rays: &[Labeled]) -> ClassRecord {
     let count = |c: OracleClass| rays.iter().filter(|r| r.class == c).count() as u64;
-    let nu_range = match family.nu() {
+    let nus = rays
+        .iter()
+        .map(|r| f64::from(r.torus.major_radius()) / f64::from(r.torus.minor_radius()));
+    let [lo, hi] = match family.nu() {
         Some(nu) => [nu, nu],
-        None => {
-            let nus = rays
-                .iter()
-                .map(|r| f64::from(r.torus.major_radius()) / f64::from(r.torus.minor_radius()));
-            let lo = nus.clone().fold(f64::INFINITY, f64::min);
-            let hi = nus.fold(f64::NEG_INFINITY, f64::max);
-            [lo, hi]
-        }
+        None => [
+            nus.clone().fold(f64::INFINITY, f64::min),
+            nus.fold(f64::NEG_INFINITY, f64::max),
+        ],
     };
-    FamilyRecord {
-        family: family.name.clone(),
-        nu: family.nu(),
-        nu_range,
+    let mut params: BTreeMap<String, f64> =
+        [("nu_lo".to_string(), lo), ("nu_hi".into(), hi)].into();
+    if let Some(nu) = family.nu() {
+        params.insert("nu".into(), nu);
+    }
+    let kind = KindRecord {
+        kind: "all".into(),
         rays: rays.len() as u64,
         hits: count(OracleClass::Hit),
         misses: count(OracleClass::Miss),
         ambiguous: count(OracleClass::Ambiguous),
-        certified: tally(rays, certified),
-        f32_path: tally(rays, f32_path),
-        peer: tally(rays, peer),
-        ns_per_ray: (rounds > 0).then(|| time(rays, rounds)),
-    }
-}
-
-/// Generate, label, count and time every family: the labelling on `threads` threads, the
-/// timings afterwards on one. `progress(done, total)` is called as families finish.
-pub fn check(
-    families: &[Family],
-    rays: usize,
-    seed: u64,
-    threads: usize,
-    rounds: u32,
-    progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Vec<FamilyRecord>, crate::workload::GenerateError> {
-    use std::sync::Mutex;
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    let next = AtomicUsize::new(0);
-    let done = AtomicUsize::new(0);
-    let labeled: Mutex<Vec<Option<Result<Vec<Labeled>, _>>>> =
-        Mutex::new(vec![None; families.len()]);
-    std::thread::scope(|s| {
-        for _ in 0..threads.max(1) {
-            s.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(family) = families.get(i) else {
-                        break;
-                    };
-                    let result = family.generate(rays, seed).map(|pairs| label(&pairs));
-                    labeled.lock().expect("no worker panics holding it")[i] = Some(result);
-                    progress(done.fetch_add(1, Ordering::Relaxed) + 1, families.len());
-                }
-            });
-        }
-    });
-    let labeled = labeled.into_inner().expect("no worker panicked");
-    families
-        .iter()
-        .zip(labeled)
-        .map(|(family, rays)| {
-            let rays = rays.expect("every family was labelled")?;
-            Ok(record(family, &rays, rounds))
-        })
-        .collect()
-}
-
-/// The f32-check JSON file.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct CheckFile {
-    /// Always [`SCHEMA_VERSION`].
-    pub schema_version: u32,
-    /// Provenance, as in the results files (`meta.workload` is `f32-check`,
-    /// `meta.workload_sha256` hashes the family list and sizes, `meta.tool` is
-    /// `f32-check`).
-    pub meta: crate::results::Meta,
-    /// Rays per family.
-    pub rays_per_family: u64,
-    /// The tolerance on an accepted `t`: `rel`·(R + r) + `ulps`·ulp(t).
-    pub tolerance: Tolerance,
-    /// One record per family, in table order.
-    pub families: Vec<FamilyRecord>,
-}
-
-/// The tolerance on an accepted `t`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Tolerance {
-    /// × (R + r).
-    pub rel: f64,
-    /// × ulp(t).
-    pub ulps: f64,
-}
-
-impl CheckFile {
-    /// A file for `families` drawn with `rays` per family from `seed`.
-    pub fn new(families: Vec<FamilyRecord>, rays: usize, seed: u64, threads: usize) -> CheckFile {
-        let mut spec = format!("f32-check v{SCHEMA_VERSION} rays {rays} seed {seed}");
-        for f in &families {
-            let _ = write!(spec, " {}@{:?}", f.family, f.nu);
-        }
-        let workload = crate::workload::spec::Workload::drawn("f32-check", seed, rays, &spec);
-        let mut meta = crate::results::Results::new(&workload, "f32-check").meta;
-        meta.threads = Some(threads as u64);
-        CheckFile {
-            schema_version: SCHEMA_VERSION,
-            meta,
-            rays_per_family: rays as u64,
-            tolerance: Tolerance {
-                rel: TOLERANCE_REL,
-                ulps: TOLERANCE_ULPS,
-            },
-            families,
-        }
-    }
-}
-
-fn opt_stats(s: Option<ErrorStats>) -> [String; 3] {
-    match s {
-        None => ["-".into(), "-".into(), "-".into()],
-        Some(s) => [s.median, s.p99, s.max].map(|v| format!("{v:.1e}")),
-    }
-}
-
-/// The table's columns; `family` to `amb` are filled on each family's first line only,
-/// `f64 ns/ray` on its `f32` line, beside the f32 path's own time.
-const TABLE_HEADER: [&str; 16] = [
-    "family",
-    "nu",
-    "rays",
-    "hit",
-    "miss",
-    "amb",
-    "who",
-    "esc%",
-    "missed",
-    "spurious",
-    "far",
-    "t err med",
-    "p99",
-    "max",
-    "ns/ray",
-    "f64 ns/ray",
-];
-
-/// The table: per family one line each for the certified verdict (`cert`), the whole f32
-/// path (`f32`) and the peer (`peer`): escalated %, missed, spurious, far, the t error
-/// (× (R + r)) and ns per ray.
-pub fn table(records: &[FamilyRecord]) -> String {
-    let rows: Vec<[String; 16]> = records.iter().flat_map(family_rows).collect();
-    let mut out = aligned(&TABLE_HEADER.map(String::from), &rows);
-    out.push_str(&totals(records));
-    out
-}
-
-/// `r`'s three lines of the table: `cert`, `f32` and `peer`.
-fn family_rows(r: &FamilyRecord) -> Vec<[String; 16]> {
-    let nu = match r.nu {
-        Some(nu) => format!("{nu}"),
-        None => nu_span(r.nu_range),
     };
-    let lines = [
-        ("cert", &r.certified, None),
-        ("f32", &r.f32_path, r.ns_per_ray.map(|t| t.f32_path)),
-        ("peer", &r.peer, r.ns_per_ray.map(|t| t.peer)),
-    ];
-    let row = |i: usize, (who, t, ns): (&str, &Tally, Option<f64>)| {
-        let first = i == 0;
-        let lead = |s: String| if first { s } else { String::new() };
-        // The peer never escalates: it has no f64 to hand a ray to.
-        let esc = if who == "peer" {
-            "-".to_string()
-        } else {
-            format!("{:.2}", 100.0 * t.escalation_rate)
-        };
-        let [med, p99, max] = opt_stats(t.t_error);
-        [
-            lead(r.family.clone()),
-            lead(nu.clone()),
-            lead(r.rays.to_string()),
-            lead(r.hits.to_string()),
-            lead(r.misses.to_string()),
-            lead(r.ambiguous.to_string()),
-            who.to_string(),
-            esc,
-            t.missed.to_string(),
-            t.spurious.to_string(),
-            t.far.to_string(),
-            med,
-            p99,
-            max,
-            ns.map_or_else(|| "-".into(), |v| format!("{v:.1}")),
-            // On the f32 path's row, beside the time it is the scale for.
-            if who == "f32" {
-                r.ns_per_ray
-                    .map_or_else(|| "-".into(), |t| format!("{:.1}", t.f64_intersect))
-            } else {
-                String::new()
-            },
+    ClassRecord {
+        label: family_label(family),
+        params,
+        words: [("family".to_string(), family.name.clone())].into(),
+        rays: rays.len() as u64,
+        kinds: vec![kind],
+        culls: Vec::new(),
+        captures: Vec::new(),
+        answers: vec![
+            answer("cert", true, &tally(rays, certified)),
+            answer("f32", true, &tally(rays, f32_path)),
+            answer("peer", false, &tally(rays, peer)),
+        ],
+        ns_per_ray: None,
+    }
+}
+
+/// The ring torus's f32 paths as a check's shape: the ray [`families`], timed in
+/// `rounds` rounds after the counts (0: not timed).
+pub struct RingF32 {
+    /// The families, in order.
+    pub families: Vec<Family>,
+    /// Timing rounds per family.
+    pub rounds: u32,
+}
+
+impl CheckShape for RingF32 {
+    fn name(&self) -> &'static str {
+        "ring"
+    }
+    fn precision(&self) -> &'static str {
+        "f32"
+    }
+    fn oracle(&self) -> &'static str {
+        "oracle (Query; on-surface rule for rays from a surface point)"
+    }
+    fn constants(&self) -> Vec<(&'static str, f64)> {
+        vec![
+            ("tolerance_rel", TOLERANCE_REL),
+            ("tolerance_ulps", TOLERANCE_ULPS),
         ]
-    };
-    lines
-        .into_iter()
-        .enumerate()
-        .map(|(i, l)| row(i, l))
-        .collect()
+    }
+    fn chart(&self) -> (&'static str, &'static str, &'static [&'static str]) {
+        ("nu_lo", "ν = R/r (log scale)", &[])
+    }
+    fn labels(&self) -> Vec<String> {
+        self.families.iter().map(family_label).collect()
+    }
+    fn spec(&self) -> String {
+        String::new()
+    }
+    fn jobs(&self, _rays: usize) -> usize {
+        1
+    }
+    fn check_job(
+        &self,
+        index: usize,
+        _job: usize,
+        rays: usize,
+        seed: u64,
+    ) -> Result<(ClassRecord, Vec<String>), String> {
+        let family = &self.families[index];
+        let pairs = family
+            .generate(rays, seed)
+            .map_err(|e| format!("{}: {e}", family.name))?;
+        Ok((record(family, &label(&pairs)), Vec::new()))
+    }
+    fn after(&self, index: usize, record: &mut ClassRecord, rays: usize, seed: u64) {
+        if self.rounds == 0 {
+            return;
+        }
+        // Drawn again (the draw is deterministic and cheap), so that the labelled rays
+        // need not be kept for every family at once.
+        let Ok(pairs) = self.families[index].generate(rays, seed) else {
+            return;
+        };
+        let t = time(&pairs, self.rounds);
+        record.ns_per_ray = Some(
+            [
+                ("f32", t.f32_path),
+                ("peer", t.peer),
+                ("f64_intersect", t.f64_intersect),
+                ("rounds", f64::from(t.rounds)),
+            ]
+            .map(|(k, v)| (k.to_string(), v))
+            .into(),
+        );
+    }
 }
 
 /// The ν a family without one ν spans, `lo..hi` to four significant digits, or one value
@@ -585,55 +460,6 @@ pub fn nu_span([lo, hi]: [f64; 2]) -> String {
     let sig = |v: f64| crate::number::Num(format!("{v:.3e}").parse().unwrap_or(v)).to_string();
     let (lo, hi) = (sig(lo), sig(hi));
     if lo == hi { lo } else { format!("{lo}..{hi}") }
-}
-
-/// `header` and `rows` in columns as wide as their widest cell: family, nu and who to the
-/// left, numbers to the right; no trailing blanks.
-fn aligned(header: &[String; 16], rows: &[[String; 16]]) -> String {
-    let mut widths = header.each_ref().map(|h| h.len());
-    for row in rows {
-        for (w, cell) in widths.iter_mut().zip(row) {
-            *w = (*w).max(cell.chars().count());
-        }
-    }
-    let mut out = String::new();
-    for cells in std::iter::once(header).chain(rows) {
-        for (i, (cell, w)) in cells.iter().zip(&widths).enumerate() {
-            let sep = if i == 0 { "" } else { "  " };
-            if i < 2 || i == 6 {
-                let _ = write!(out, "{sep}{cell:<w$}");
-            } else {
-                let _ = write!(out, "{sep}{cell:>w$}");
-            }
-        }
-        let trimmed = out.trim_end().len();
-        out.truncate(trimmed);
-        out.push('\n');
-    }
-    out
-}
-
-/// The totals over every family, after a blank line.
-fn totals(records: &[FamilyRecord]) -> String {
-    let sum = |f: &dyn Fn(&FamilyRecord) -> u64| records.iter().map(f).sum::<u64>();
-    format!(
-        "\ntotal: {} rays ({} hit, {} miss, {} ambiguous); missed/spurious/far: cert {}/{}/{}, \
-         f32 {}/{}/{}, peer {}/{}/{}; escalated {}\n",
-        sum(&|r| r.rays),
-        sum(&|r| r.hits),
-        sum(&|r| r.misses),
-        sum(&|r| r.ambiguous),
-        sum(&|r| r.certified.missed),
-        sum(&|r| r.certified.spurious),
-        sum(&|r| r.certified.far),
-        sum(&|r| r.f32_path.missed),
-        sum(&|r| r.f32_path.spurious),
-        sum(&|r| r.f32_path.far),
-        sum(&|r| r.peer.missed),
-        sum(&|r| r.peer.spurious),
-        sum(&|r| r.peer.far),
-        sum(&|r| r.certified.escalated),
-    )
 }
 
 #[cfg(test)]

@@ -1,117 +1,128 @@
-//! The charts of an f32-check file: one row per family (the families are not a scale,
-//! so each chart is a dot plot with the family names down the left), one marker per
-//! intersector. Written by `f32-check` next to its file and by `plot FILE`.
+//! The intersectors' charts of a check file whose answers carry t errors (`torus-cull
+//! check --precision f32`): one row per class (the classes are not a scale, so each
+//! chart is a dot plot with the class labels down the left), one marker per intersector.
+//! Written by `check` next to its file and by `plot FILE`.
 //!
-//! - `<stem>-escalation.svg`: the rays the f32 path handed to f64, in % of the family.
-//! - `<stem>-wrong.svg`: missed + spurious answers in % of the family, for the f32 path
-//!   (0 everywhere, or f32-check fails) and the peer.
-//! - `<stem>-t_error.svg`: the p99 t error, × (R + r), of the f32 path and the peer, on a
-//!   log axis (a family with no hit answered has no dot).
-//! - `<stem>-ns_per_ray.svg`: the f32 path, the peer and the f64 intersection, ns per ray
-//!   (only when the file was timed).
+//! - `<stem>-escalation.svg`: the rays each intersector handed to f64, in % of the class.
+//! - `<stem>-wrong.svg`: its wrong answers in % of the class (0 everywhere for ours, or
+//!   the check fails; a peer's are what it is measured for).
+//! - `<stem>-t_error.svg`: the p99 t error, × the shape's size, on a log axis (a class
+//!   with no hit answered has no dot).
+//! - `<stem>-ns_per_ray.svg`: ns per ray of each timed intersector (only when the file
+//!   was timed).
 
-use super::{CheckFile, FamilyRecord};
+use crate::check::record::{AnswerRecord, CheckFile, ClassRecord};
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
-/// One intersector's value per family (`None`: no dot).
-type Column = (&'static str, Vec<Option<f64>>);
+/// One intersector's value per class (`None`: no dot).
+type Column = (String, Vec<Option<f64>>);
 
-/// The marker colours: the f32 path, the peer, the f64 intersection.
+/// The marker colours, in the intersectors' order.
 const COLOURS: [RGBColor; 3] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(120, 120, 120),
 ];
 
+/// One column per intersector of the first class that `keep`s, its value per class by
+/// `value` (classes are paired by the intersector's name).
+fn columns(
+    classes: &[ClassRecord],
+    keep: impl Fn(&AnswerRecord) -> bool,
+    value: impl Fn(&ClassRecord, &AnswerRecord) -> Option<f64>,
+) -> Vec<Column> {
+    let Some(first) = classes.first() else {
+        return Vec::new();
+    };
+    first
+        .answers
+        .iter()
+        .filter(|a| keep(a))
+        .map(|a| {
+            let values = classes
+                .iter()
+                .map(|c| {
+                    let same = c.answers.iter().find(|b| b.who == a.who)?;
+                    value(c, same)
+                })
+                .collect();
+            (a.who.clone(), values)
+        })
+        .collect()
+}
+
 /// Writes every chart of `file` to `out_dir` (which must exist), named `<stem>-*.svg`;
 /// returns the paths written.
-pub fn plot_check(
+pub fn plot_answers(
     file: &CheckFile,
     out_dir: &Path,
     stem: &str,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
-    let f = &file.families;
-    let names: Vec<String> = f.iter().map(row_name).collect();
-    let pct = |v: f64| Some(100.0 * v);
-    let of_rays = |r: &FamilyRecord, n: u64| pct(n as f64 / r.rays.max(1) as f64);
+    let f = &file.classes;
+    let names: Vec<String> = f.iter().map(|c| c.label.clone()).collect();
+    let of_rays = |c: &ClassRecord, n: u64| Some(100.0 * n as f64 / c.rays.max(1) as f64);
     let provenance = format!(
-        "{} rays a family, {}{}",
-        file.rays_per_family,
+        "{} rays a class, {}{}",
+        file.rays_per_class,
         file.meta.commit.as_deref().unwrap_or("no commit"),
         if file.meta.dirty { "-dirty" } else { "" }
     );
-    let mut charts: Vec<(&str, String, &str, Vec<Column>, bool)> = vec![
+    let mut charts: Vec<(&str, &str, &str, Vec<Column>, bool)> = vec![
         (
             "escalation",
-            "f32 path: rays escalated to f64".into(),
-            "% of the family's rays",
-            vec![(
-                "f32 path",
-                f.iter().map(|r| pct(r.f32_path.escalation_rate)).collect(),
-            )],
+            "rays escalated to f64",
+            "% of the class's rays",
+            columns(
+                f,
+                |a| a.counts.contains_key("escalated"),
+                |c, a| of_rays(c, a.count("escalated")),
+            ),
             false,
         ),
         (
             "wrong",
-            "missed + spurious answers".into(),
-            "% of the family's rays",
-            vec![
-                (
-                    "f32 path",
-                    f.iter()
-                        .map(|r| of_rays(r, r.f32_path.missed + r.f32_path.spurious))
-                        .collect(),
-                ),
-                (
-                    "peer (shader closed form)",
-                    f.iter()
-                        .map(|r| of_rays(r, r.peer.missed + r.peer.spurious))
-                        .collect(),
-                ),
-            ],
+            "wrong answers",
+            "% of the class's rays",
+            columns(f, |_| true, |c, a| of_rays(c, a.wrong_answers())),
             false,
         ),
         (
             "t_error",
-            "p99 t error of the hits answered".into(),
-            "|t - t_oracle|·|d| / (R + r), log scale",
-            vec![
-                (
-                    "f32 path",
-                    f.iter()
-                        .map(|r| r.f32_path.t_error.map(|e| e.p99))
-                        .collect(),
-                ),
-                (
-                    "peer (shader closed form)",
-                    f.iter().map(|r| r.peer.t_error.map(|e| e.p99)).collect(),
-                ),
-            ],
+            "p99 t error of the hits answered",
+            "|t - t_oracle|·|d| / size, log scale",
+            columns(f, |a| a.t_error.is_some(), |_, a| a.t_error.map(|e| e.p99)),
             true,
         ),
     ];
-    if f.iter().any(|r| r.ns_per_ray.is_some()) {
-        let ns = |pick: fn(&super::Timings) -> f64| -> Vec<Option<f64>> {
-            f.iter().map(|r| r.ns_per_ray.as_ref().map(pick)).collect()
-        };
+    if let Some(ns) = f.iter().find_map(|c| c.ns_per_ray.as_ref()) {
+        let timed: Vec<Column> = ns
+            .keys()
+            .filter(|k| *k != "rounds")
+            .map(|k| {
+                let values = f
+                    .iter()
+                    .map(|c| c.ns_per_ray.as_ref().and_then(|n| n.get(k)).copied())
+                    .collect();
+                (k.clone(), values)
+            })
+            .collect();
         charts.push((
             "ns_per_ray",
-            "ns per ray (minimum of rounds, one thread)".into(),
+            "ns per ray (minimum of rounds, one thread)",
             "ns per ray, log scale",
-            vec![
-                ("f32 path", ns(|t| t.f32_path)),
-                ("peer (shader closed form)", ns(|t| t.peer)),
-                ("f64 intersect", ns(|t| t.f64_intersect)),
-            ],
+            timed,
             true,
         ));
     }
     let mut written = Vec::new();
     for (name, title, x_label, columns, log) in charts {
+        if columns.is_empty() {
+            continue;
+        }
         let path = out_dir.join(format!("{stem}-{name}.svg"));
         let mut svg = String::new();
-        let title = format!("f32-check: {title} ({provenance})");
+        let title = format!("{} {}: {title} ({provenance})", file.shape, file.precision);
         draw(&mut svg, &title, x_label, &names, &columns, log)
             .map_err(|e| format!("{}: {e}", path.display()))?;
         crate::output::write_file(&path, svg.as_bytes())
@@ -121,15 +132,7 @@ pub fn plot_check(
     Ok(written)
 }
 
-/// A family's row label: its name, and its ν (or ν range).
-fn row_name(r: &FamilyRecord) -> String {
-    match r.nu {
-        Some(nu) => format!("{} ν={nu}", r.family),
-        None => format!("{} ν={}", r.family, super::nu_span(r.nu_range)),
-    }
-}
-
-/// One dot plot: a row per family, `x` linear from 0 or (with `log`) log10 of the
+/// One dot plot: a row per class, `x` linear from 0 or (with `log`) log10 of the
 /// positive values; a legend above the plot.
 fn draw(
     svg: &mut String,
