@@ -57,7 +57,7 @@ pub fn line_chart(
     write_chart(path, title, (NU_AXIS, y_label), &lines, y_from_zero)
 }
 
-/// The x axis of every chart but the bend check's.
+/// The x axis of every chart but a check file's (its shape names its own).
 const NU_AXIS: &str = "ν = R/r (log scale)";
 
 /// One line of a chart: its points (x, y, optional 95 % interval of y) and its colour

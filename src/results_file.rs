@@ -1,8 +1,8 @@
 //! Any file the tool writes for `plot` and `compare` to read: a results file (`run`,
 //! `time`, `cargo bench`) or a check file (`check`, every shape and precision), told apart
-//! by `meta.tool` (`check`). The three check kinds before it (`meta.tool` `family`, `bend`
-//! and `f32-check`, or without it their sections `members`, `classes`, `families`) are
-//! refused with the command that writes their counts now.
+//! by `meta.tool` (`check`). The check kinds before it, one per shape
+//! ([`crate::check::shapes::OLD_KINDS`]), are refused with the command that writes their
+//! counts now.
 
 use crate::check::record::{CheckFile, TOOL};
 use crate::results::{Results, ResultsError, read_json};
@@ -17,13 +17,6 @@ pub enum ResultsFile {
     Check(CheckFile),
 }
 
-/// The check kinds before `check`: (`meta.tool`, section, `check`'s flags for them).
-const OLD_CHECKS: [(&str, &str, &str); 3] = [
-    ("f32-check", "families", "--shape ring --precision f32"),
-    ("family", "members", "--shape family"),
-    ("bend", "classes", "--shape bend"),
-];
-
 impl ResultsFile {
     /// Reads `path`, refusing other schema versions, the old check kinds and files of
     /// neither kind (the error names the file and the field).
@@ -36,7 +29,7 @@ impl ResultsFile {
                 .map(ResultsFile::Check)
                 .map_err(|e| parse(e.to_string()));
         }
-        let old = OLD_CHECKS
+        let old = crate::check::shapes::OLD_KINDS
             .iter()
             .find(|(t, section, _)| tool == Some(*t) || value.get(section).is_some());
         if let Some((old, _, flags)) = old {

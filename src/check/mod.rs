@@ -22,38 +22,53 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// (from its flags); `index` below is the class's place among them, which seeds its rays,
 /// so that a subset of the classes draws the same rays as the whole.
 pub trait CheckShape: Sync {
-    /// The shape's name (`--shape`).
-    fn name(&self) -> &'static str;
-    /// `f64` or `f32`.
-    fn precision(&self) -> &'static str;
-    /// Which oracle labels the rays, in the file.
-    fn oracle(&self) -> &'static str;
-    /// The tolerances and thresholds of the counts, in the file.
-    fn constants(&self) -> Vec<(&'static str, f64)>;
-    /// What the charts put on x (a key of the classes' `params`), its axis title, and the
-    /// parameters whose values make one chart's group.
-    fn chart(&self) -> (&'static str, &'static str, &'static [&'static str]);
+    /// What the shape is, for the file and the charts.
+    fn about(&self) -> About;
     /// The classes' labels, in order.
     fn labels(&self) -> Vec<String>;
-    /// What the file's workload hash is over, besides the rays, the seed and the labels.
-    fn spec(&self) -> String;
     /// Jobs per class for `rays` rays per class.
     fn jobs(&self, rays: usize) -> usize;
-    /// Job `job` of class `index`: its record (with the class's label, parameters and
-    /// words) and up to a few disagreements described for the console.
+    /// One job: its record (with the class's label, parameters and words) and up to a
+    /// few disagreements described for the console.
     ///
     /// # Errors
     ///
     /// A class the shape cannot build or a ray the oracle cannot label, named.
-    fn check_job(
-        &self,
-        index: usize,
-        job: usize,
-        rays: usize,
-        seed: u64,
-    ) -> Result<(ClassRecord, Vec<String>), String>;
+    fn check_job(&self, job: Job) -> Result<(ClassRecord, Vec<String>), String>;
     /// After every class is counted, on one thread: the timings, where the shape has any.
-    fn after(&self, _index: usize, _record: &mut ClassRecord, _rays: usize, _seed: u64) {}
+    fn after(&self, _job: Job, _record: &mut ClassRecord) {}
+}
+
+/// One job of a check: the `job`-th of class `index`, of `rays` rays per class drawn
+/// from `seed`.
+#[derive(Debug, Clone, Copy)]
+pub struct Job {
+    /// The class's place among the shape's classes.
+    pub index: usize,
+    /// The job's place in its class.
+    pub job: usize,
+    /// Rays per class.
+    pub rays: usize,
+    /// The check's seed.
+    pub seed: u64,
+}
+
+/// What a shape is, for the file and the charts.
+#[derive(Debug, Clone)]
+pub struct About {
+    /// The shape's name (`--shape`).
+    pub name: &'static str,
+    /// `f64` or `f32`.
+    pub precision: &'static str,
+    /// Which oracle labels the rays, in the file.
+    pub oracle: &'static str,
+    /// The tolerances and thresholds of the counts, in the file.
+    pub constants: Vec<(&'static str, f64)>,
+    /// What the charts put on x (a key of the classes' `params`), its axis title, and the
+    /// parameters whose values make one chart's group.
+    pub chart: (&'static str, &'static str, &'static [&'static str]),
+    /// What the file's workload hash is over, besides the rays, the seed and the labels.
+    pub spec: String,
 }
 
 /// Disagreements kept per class for the console.
@@ -94,7 +109,13 @@ pub fn check(
         for _ in 0..threads.max(1) {
             s.spawn(|| {
                 while let Some(&(c, j)) = jobs.get(next.fetch_add(1, Ordering::Relaxed)) {
-                    match shape.check_job(selected[c], j, rays, seed) {
+                    let job = Job {
+                        index: selected[c],
+                        job: j,
+                        rays,
+                        seed,
+                    };
+                    match shape.check_job(job) {
                         Ok((record, why)) => {
                             let mut slot = classes[c].lock().expect("no worker panicked");
                             match slot.as_mut() {
@@ -126,7 +147,13 @@ pub fn check(
             .expect("no worker panicked")
             .ok_or_else(|| format!("class {index}: no job ran (0 rays?)"))?;
         record.finish();
-        shape.after(index, &mut record, rays, seed);
+        let job = Job {
+            index,
+            job: 0,
+            rays,
+            seed,
+        };
+        shape.after(job, &mut record);
         disagreements.extend(why.into_iter().map(|w| (record.label.clone(), w)));
         records.push(record);
     }
@@ -139,10 +166,11 @@ pub fn check(
 impl CheckFile {
     /// The file of `records`, checked on `shape` with `rays` per class from `seed`.
     pub fn new(shape: &dyn CheckShape, records: Vec<ClassRecord>, rays: usize, seed: u64) -> Self {
-        let (name, precision) = (shape.name(), shape.precision());
+        let about = shape.about();
+        let (name, precision) = (about.name, about.precision);
         let mut spec = format!(
             "{TOOL} v{SCHEMA_VERSION} {name} {precision} rays {rays} seed {seed} {}",
-            shape.spec()
+            about.spec
         );
         for r in &records {
             let _ = write!(spec, " [{}]", r.label);
@@ -150,7 +178,7 @@ impl CheckFile {
         let workload_name = format!("{TOOL}-{name}-{precision}");
         let workload = crate::workload::spec::Workload::drawn(&workload_name, seed, rays, &spec);
         let meta = crate::results::Results::new(&workload, TOOL).meta;
-        let (x, title, group_by) = shape.chart();
+        let (x, title, group_by) = about.chart;
         CheckFile {
             schema_version: SCHEMA_VERSION,
             meta,
@@ -158,9 +186,9 @@ impl CheckFile {
             precision: precision.into(),
             rays_per_class: rays as u64,
             seed,
-            oracle: shape.oracle().into(),
-            constants: shape
-                .constants()
+            oracle: about.oracle.into(),
+            constants: about
+                .constants
                 .into_iter()
                 .map(|(k, v)| (k.into(), v))
                 .collect(),

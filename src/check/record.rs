@@ -1,5 +1,5 @@
 //! The one check file (`meta.tool` = `check`) and its records, for every shape and
-//! precision: a class of rays (a member, a bend class, a ray family) holds its oracle
+//! precision: a class of rays (a shape's member, a ray family) holds its oracle
 //! labels per ray kind, each cull's counts, the captures a shape adds (the wedge's
 //! cut-away misses) and each intersector's answers against the oracle.
 //!
@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// The check file's schema: the results files' (`read_json` holds every file to it); the
-/// kind is `meta.tool` = [`TOOL`] (before, the three kinds `family`, `bend`, `f32-check`).
+/// kind is `meta.tool` = [`TOOL`] (before, one kind per shape, refused by `results_file`).
 pub const SCHEMA_VERSION: u32 = crate::results::SCHEMA_VERSION;
 
 /// The file's `meta.tool`.
@@ -49,7 +49,7 @@ impl CullRecord {
 }
 
 /// A share of some misses that one cull rejects, beyond the far misses every cull is held
-/// to (the bend's cut-away misses and the wedge alone).
+/// to (a segment's cut-away misses and the cull that cuts the segment).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct CaptureRecord {
     /// What the misses are (`cut-away`).

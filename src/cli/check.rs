@@ -120,6 +120,7 @@ pub fn run(args: CheckArgs) -> CliResult {
     };
     let built = shapes::build(&options)?;
     let shape = built.shape.as_ref();
+    let about = shape.about();
     let (rays, seed) = match built.rays_seed {
         Some((rays, seed)) => (i128::try_from(rays).map_or(Whole(i128::MAX), Whole), seed),
         None => {
@@ -139,7 +140,7 @@ pub fn run(args: CheckArgs) -> CliResult {
             if kept.is_empty() {
                 return Err(format!(
                     "--class {part}: no class of --shape {} has it in its label (e.g. {})",
-                    shape.name(),
+                    about.name,
                     labels.first().map_or("", String::as_str)
                 )
                 .into());
@@ -148,14 +149,14 @@ pub fn run(args: CheckArgs) -> CliResult {
         }
     };
     // Before the work, not after it.
-    let suffix = format!("-check-{}-{}", shape.name(), shape.precision());
+    let suffix = format!("-check-{}-{}", about.name, about.precision);
     let path = super::plot::check_file_out(args.out, &suffix, args.no_plots)?;
     let jobs = selected.len() * shape.jobs(rays);
     let heartbeat = crate::console::Heartbeat::new(
         format!(
             "check {} {}: {} classes x {rays} rays",
-            shape.name(),
-            shape.precision(),
+            about.name,
+            about.precision,
             selected.len()
         ),
         "jobs",

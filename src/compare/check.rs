@@ -5,8 +5,8 @@
 //! * **check** rows (`<class> <cull>`): the capture of the far misses, recomputed from its
 //!   counts; a changed count is flagged `changed`; a new false reject or a lower capture
 //!   is a **regression**.
-//! * **check capture** rows (`<class> <name>`, a shape's own capture: the bend's
-//!   cut-away misses and the wedge): lower is a **regression**.
+//! * **check capture** rows (`<class> <name>`, a shape's own capture, of misses only
+//!   its own cull is held to): lower is a **regression**.
 //! * **check answers** rows (`<class> <who>`, one per intersector): more wrong answers of
 //!   ours (missed, invented, wrong face or value, spurious, far) than before is a
 //!   **regression**; a peer's (not ours) are shown and decide nothing. The value is the

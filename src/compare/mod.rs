@@ -11,12 +11,9 @@
 //!   is a single criterion figure with no interval, so a change beyond the threshold is
 //!   shown as `no verdict (no interval)` and decides nothing.
 //!
-//! * **family** (two `torus-cull family` files, `family.rs`): per member class and cull, a
-//!   new false reject or a lower capture is a regression, and so are more missed or
-//!   invented hits of the exact intersection.
-//! * **bend** (two `torus-cull bend` files, `bend.rs`): per class and cull (alone and
-//!   behind the wedge), a new false reject or a lower capture is a regression, as are a
-//!   lower capture of the cut-away misses and more missed, invented or wrong-face hits.
+//! * **check** (two `torus-cull check` files, any shape and precision, `check.rs`): per
+//!   class and cull a new false reject or a lower capture is a regression, as are a lower
+//!   capture of a shape's own and more wrong answers of our intersectors.
 //!
 //! Records on one side only are listed. The exit code is 1 if any regression is flagged,
 //! and 1 too when records of the old file are missing from the new one (a run that lost

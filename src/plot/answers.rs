@@ -52,12 +52,11 @@ fn columns(
         .collect()
 }
 
-/// Writes every chart of `file` to `out_dir` (which must exist), named `<stem>-*.svg`;
-/// returns the paths written.
+/// Writes every chart of `file` as `<prefix>-<chart>.svg` (`prefix`: the directory, which
+/// must exist, joined with the file's stem); returns the paths written.
 pub fn plot_answers(
     file: &CheckFile,
-    out_dir: &Path,
-    stem: &str,
+    prefix: &Path,
 ) -> Result<Vec<PathBuf>, Box<dyn std::error::Error>> {
     let f = &file.classes;
     let names: Vec<String> = f.iter().map(|c| c.label.clone()).collect();
@@ -120,7 +119,9 @@ pub fn plot_answers(
         if columns.is_empty() {
             continue;
         }
-        let path = out_dir.join(format!("{stem}-{name}.svg"));
+        let mut path = prefix.as_os_str().to_owned();
+        path.push(format!("-{name}.svg"));
+        let path = PathBuf::from(path);
         let mut svg = String::new();
         let title = format!("{} {}: {title} ({provenance})", file.shape, file.precision);
         draw(&mut svg, &title, x_label, &names, &columns, log)

@@ -60,7 +60,8 @@ pub fn plot_check(
     let mut written = charts.written;
     let measured = file.classes.iter().flat_map(|c| &c.answers);
     if measured.clone().any(|a| a.t_error.is_some()) {
-        written.extend(super::answers::plot_answers(file, out_dir, stem)?);
+        let prefix = charts_dir(out_dir).join(stem);
+        written.extend(super::answers::plot_answers(file, &prefix)?);
     }
     Ok(written)
 }
@@ -81,5 +82,14 @@ impl Record for CheckPoint<'_> {
     }
     fn nu(&self) -> f64 {
         self.x
+    }
+}
+
+/// `out_dir`, or `.` for the empty path (the parent of a bare file name).
+fn charts_dir(out_dir: &Path) -> &Path {
+    if out_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        out_dir
     }
 }

@@ -13,6 +13,14 @@ use std::path::PathBuf;
 /// The shapes, as `--shape` names them, and the precisions each is checked at.
 pub const SHAPES: [(&str, &str); 3] = [("family", "f64"), ("bend", "f64"), ("ring", "f32")];
 
+/// The check files before `check`, one kind per shape: (`meta.tool`, the section that
+/// told a file without it apart, `check`'s flags for the same counts).
+pub const OLD_KINDS: [(&str, &str, &str); 3] = [
+    ("f32-check", "families", "--shape ring --precision f32"),
+    ("family", "members", "--shape family"),
+    ("bend", "classes", "--shape bend"),
+];
+
 /// What a shape's own part of the check is asked: each option belongs to some shapes
 /// only, and a shape refuses the ones it does not take (never ignores them).
 #[derive(Debug, Clone, Default)]

@@ -1,8 +1,8 @@
 pub mod exact;
 pub mod rays;
 
-use crate::check::CheckShape;
 use crate::check::record::{AnswerRecord, CaptureRecord, ClassRecord, CullRecord, KindRecord};
+use crate::check::{About, CheckShape, Job};
 use crate::oracle::{OracleClass, OracleLabel};
 use exact::Tally;
 use rays::{RayKind, Spec};
@@ -63,48 +63,35 @@ pub struct BendShape {
 }
 
 impl CheckShape for BendShape {
-    fn name(&self) -> &'static str {
-        "bend"
-    }
-    fn precision(&self) -> &'static str {
-        "f64"
-    }
-    fn oracle(&self) -> &'static str {
-        "oracle::bend (BendQuery; on-surface rule for spawned rays)"
-    }
-    fn constants(&self) -> Vec<(&'static str, f64)> {
-        vec![
-            ("eta_rel", ETA_REL),
-            ("capture_etas", CAPTURE_ETAS),
-            ("exact_tol_rel", exact::TOL),
-        ]
-    }
-    fn chart(&self) -> (&'static str, &'static str, &'static [&'static str]) {
-        (
-            "delta_phi_deg",
-            "Δφ in degrees (log scale)",
-            &["bore_ratio", "nu"],
-        )
+    fn about(&self) -> About {
+        About {
+            name: "bend",
+            precision: "f64",
+            oracle: "oracle::bend (BendQuery; on-surface rule for spawned rays)",
+            constants: vec![
+                ("eta_rel", ETA_REL),
+                ("capture_etas", CAPTURE_ETAS),
+                ("exact_tol_rel", exact::TOL),
+            ],
+            chart: (
+                "delta_phi_deg",
+                "Δφ in degrees (log scale)",
+                &["bore_ratio", "nu"],
+            ),
+            spec: format!("pose {POSE_RAYS} scales {SCALES:?}"),
+        }
     }
     fn labels(&self) -> Vec<String> {
         self.classes.iter().map(|&c| class_label(c)).collect()
     }
-    fn spec(&self) -> String {
-        format!("pose {POSE_RAYS} scales {SCALES:?}")
-    }
     fn jobs(&self, rays: usize) -> usize {
         rays.div_ceil(POSE_RAYS)
     }
-    fn check_job(
-        &self,
-        index: usize,
-        job: usize,
-        rays: usize,
-        seed: u64,
-    ) -> Result<(ClassRecord, Vec<String>), String> {
-        let first = job * POSE_RAYS;
-        let count = POSE_RAYS.min(rays - first);
-        check_pose(self.classes[index], index, job, (first, count), seed)
+    fn check_job(&self, job: Job) -> Result<(ClassRecord, Vec<String>), String> {
+        let first = job.job * POSE_RAYS;
+        let count = POSE_RAYS.min(job.rays - first);
+        let class = self.classes[job.index];
+        check_pose(class, job.index, job.job, (first, count), job.seed)
     }
 }
 

@@ -31,8 +31,8 @@
 
 pub mod rays;
 
-use crate::check::CheckShape;
 use crate::check::record::{AnswerRecord, ClassRecord, CullRecord, KindRecord};
+use crate::check::{About, CheckShape, Job};
 use crate::family_label;
 use crate::oracle::OracleClass;
 use glam::DVec3;
@@ -88,39 +88,25 @@ pub fn label((nu, aspect): (f64, f64)) -> String {
 pub struct FamilyShape;
 
 impl CheckShape for FamilyShape {
-    fn name(&self) -> &'static str {
-        "family"
-    }
-    fn precision(&self) -> &'static str {
-        "f64"
-    }
-    fn oracle(&self) -> &'static str {
-        "oracle::family (FamilyQuery; on-surface rule for spawned rays)"
-    }
-    fn constants(&self) -> Vec<(&'static str, f64)> {
-        vec![("eta_rel", ETA_REL), ("capture_etas", CAPTURE_ETAS)]
-    }
-    fn chart(&self) -> (&'static str, &'static str, &'static [&'static str]) {
-        ("nu", "ν = R/a (log scale)", &["aspect"])
+    fn about(&self) -> About {
+        About {
+            name: "family",
+            precision: "f64",
+            oracle: "oracle::family (FamilyQuery; on-surface rule for spawned rays)",
+            constants: vec![("eta_rel", ETA_REL), ("capture_etas", CAPTURE_ETAS)],
+            chart: ("nu", "ν = R/a (log scale)", &["aspect"]),
+            spec: String::new(),
+        }
     }
     fn labels(&self) -> Vec<String> {
         members().into_iter().map(label).collect()
     }
-    fn spec(&self) -> String {
-        String::new()
-    }
     fn jobs(&self, _rays: usize) -> usize {
         1
     }
-    fn check_job(
-        &self,
-        index: usize,
-        _job: usize,
-        rays: usize,
-        seed: u64,
-    ) -> Result<(ClassRecord, Vec<String>), String> {
-        let m = members()[index];
-        Ok((check_member(m, index, rays, seed)?, Vec::new()))
+    fn check_job(&self, job: Job) -> Result<(ClassRecord, Vec<String>), String> {
+        let m = members()[job.index];
+        Ok((check_member(m, job.index, job.rays, job.seed)?, Vec::new()))
     }
 }
 

@@ -20,9 +20,9 @@
 
 pub mod families;
 
-use crate::check::CheckShape;
 pub use crate::check::record::ErrorStats;
 use crate::check::record::{AnswerRecord, ClassRecord, KindRecord};
+use crate::check::{About, CheckShape, Job};
 use crate::oracle::{
     OracleClass, Query, classify_from_surface, first_crossing_from_surface, reference_roots,
 };
@@ -390,66 +390,49 @@ pub struct RingF32 {
 }
 
 impl CheckShape for RingF32 {
-    fn name(&self) -> &'static str {
-        "ring"
-    }
-    fn precision(&self) -> &'static str {
-        "f32"
-    }
-    fn oracle(&self) -> &'static str {
-        "oracle (Query; on-surface rule for rays from a surface point)"
-    }
-    fn constants(&self) -> Vec<(&'static str, f64)> {
-        vec![
-            ("tolerance_rel", TOLERANCE_REL),
-            ("tolerance_ulps", TOLERANCE_ULPS),
-        ]
-    }
-    fn chart(&self) -> (&'static str, &'static str, &'static [&'static str]) {
-        ("nu_lo", "ν = R/r (log scale)", &[])
+    fn about(&self) -> About {
+        About {
+            name: "ring",
+            precision: "f32",
+            oracle: "oracle (Query; on-surface rule for rays from a surface point)",
+            constants: vec![
+                ("tolerance_rel", TOLERANCE_REL),
+                ("tolerance_ulps", TOLERANCE_ULPS),
+            ],
+            chart: ("nu_lo", "ν = R/r (log scale)", &[]),
+            spec: String::new(),
+        }
     }
     fn labels(&self) -> Vec<String> {
         self.families.iter().map(family_label).collect()
     }
-    fn spec(&self) -> String {
-        String::new()
-    }
     fn jobs(&self, _rays: usize) -> usize {
         1
     }
-    fn check_job(
-        &self,
-        index: usize,
-        _job: usize,
-        rays: usize,
-        seed: u64,
-    ) -> Result<(ClassRecord, Vec<String>), String> {
-        let family = &self.families[index];
+    fn check_job(&self, job: Job) -> Result<(ClassRecord, Vec<String>), String> {
+        let family = &self.families[job.index];
         let pairs = family
-            .generate(rays, seed)
+            .generate(job.rays, job.seed)
             .map_err(|e| format!("{}: {e}", family.name))?;
         Ok((record(family, &label(&pairs)), Vec::new()))
     }
-    fn after(&self, index: usize, record: &mut ClassRecord, rays: usize, seed: u64) {
+    fn after(&self, job: Job, record: &mut ClassRecord) {
         if self.rounds == 0 {
             return;
         }
         // Drawn again (the draw is deterministic and cheap), so that the labelled rays
         // need not be kept for every family at once.
-        let Ok(pairs) = self.families[index].generate(rays, seed) else {
+        let Ok(pairs) = self.families[job.index].generate(job.rays, job.seed) else {
             return;
         };
         let t = time(&pairs, self.rounds);
-        record.ns_per_ray = Some(
-            [
-                ("f32", t.f32_path),
-                ("peer", t.peer),
-                ("f64_intersect", t.f64_intersect),
-                ("rounds", f64::from(t.rounds)),
-            ]
-            .map(|(k, v)| (k.to_string(), v))
-            .into(),
-        );
+        let ns = [
+            ("f32", t.f32_path),
+            ("peer", t.peer),
+            ("f64_intersect", t.f64_intersect),
+            ("rounds", f64::from(t.rounds)),
+        ];
+        record.ns_per_ray = Some(ns.map(|(k, v)| (k.to_string(), v)).into());
     }
 }
 
@@ -485,17 +468,16 @@ mod tests {
         assert_eq!(ErrorStats::of(Vec::new()), None);
     }
 
+    /// The ray along +x from (−5, y, 0) on the torus R = 2, r = 1, labelled.
+    fn along_x(y: f32) -> Labeled {
+        let torus = Torus::canonical(2.0, 1.0).unwrap();
+        let ray = Ray::new(glam::Vec3::new(-5.0, y, 0.0), glam::Vec3::X).unwrap();
+        Labeled::new(torus, ray)
+    }
+
     #[test]
     fn tally_counts_missed_spurious_far_and_escalations() {
-        let torus = Torus::canonical(2.0, 1.0).unwrap();
-        let hit = Labeled::new(
-            torus,
-            Ray::new(glam::Vec3::new(-5.0, 0.0, 0.0), glam::Vec3::X).unwrap(),
-        );
-        let miss = Labeled::new(
-            torus,
-            Ray::new(glam::Vec3::new(-5.0, 5.0, 0.0), glam::Vec3::X).unwrap(),
-        );
+        let (hit, miss) = (along_x(0.0), along_x(5.0));
         assert_eq!(hit.class, OracleClass::Hit);
         assert!((hit.first_root.unwrap() - 2.0).abs() < 1e-12);
         assert_eq!(miss.class, OracleClass::Miss);
@@ -517,17 +499,10 @@ mod tests {
     /// where a number belongs (f7cccf8-f32-check-spawned.json had `"max": null`).
     #[test]
     fn a_nan_t_is_far_and_out_of_the_stats() {
-        let torus = Torus::canonical(2.0, 1.0).unwrap();
-        let hit = Labeled::new(
-            torus,
-            Ray::new(glam::Vec3::new(-5.0, 0.0, 0.0), glam::Vec3::X).unwrap(),
-        );
+        let hit = along_x(0.0);
         let t = tally(&[hit], |_: &Torus, _: &Ray| Answer::plain(Some(f32::NAN)));
         assert_eq!((t.hits_answered, t.far, t.t_error), (1, 1, None));
-        let other = Labeled::new(
-            torus,
-            Ray::new(glam::Vec3::new(-5.0, 0.25, 0.0), glam::Vec3::X).unwrap(),
-        );
+        let other = along_x(0.25);
         let t = tally(&[hit, other], |_: &Torus, r: &Ray| {
             let exact = other.first_root.unwrap() as f32;
             Answer::plain(Some(if r.origin().y == 0.0 { f32::NAN } else { exact }))
