@@ -552,7 +552,10 @@ const ALLOWED: &[(&str, &str)] = &[
     ),
     ("results/<commit>.json", "placeholder"),
     ("results/<commit>-run.json", "placeholder"),
-    ("results/<commit>-check-<shape>-<precision>.json", "placeholder"),
+    (
+        "results/<commit>-check-<shape>-<precision>.json",
+        "placeholder",
+    ),
     ("results/<commit>-family-time.json", "placeholder"),
     ("results/<commit>-bend-time.json", "placeholder"),
     ("results/<commit>-summary.json", "placeholder"),
