@@ -6,6 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod adversarial_rows;
 mod bend_cli;
 mod eval_cli;
 mod f32_check;
