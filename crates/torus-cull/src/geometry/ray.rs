@@ -34,8 +34,17 @@ impl Precision for DVec3 {
 
 pub(crate) mod sealed {
     use super::Precision;
-    use crate::geometry::torus::{LocalLine, Torus};
     use glam::{DVec3, Vec3};
+
+    /// A ray seen as the precision it is: what code generic over [`Precision`] matches on
+    /// to call a precision's own path. Each impl of [`Internals::view`] returns one fixed
+    /// variant, so after inlining the match costs nothing.
+    pub enum RayView<'a> {
+        /// An f32 ray.
+        F32(&'a super::Ray),
+        /// An f64 ray.
+        F64(&'a super::DRay),
+    }
 
     /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
     pub trait Scalar: Copy + PartialOrd {
@@ -121,8 +130,8 @@ pub(crate) mod sealed {
         fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
         where
             Self: Precision;
-        /// [`crate::Torus::line_to_local`] of a ray of this precision.
-        fn cull_line(torus: &Torus, ray: &super::Ray<Self>) -> LocalLine
+        /// The ray as the precision it is ([`RayView`]).
+        fn view(ray: &super::Ray<Self>) -> RayView<'_>
         where
             Self: Precision;
     }
@@ -162,8 +171,8 @@ pub(crate) mod sealed {
             Some(rays)
         }
         #[inline(always)]
-        fn cull_line(torus: &Torus, ray: &super::Ray) -> LocalLine {
-            torus.ray_line(ray)
+        fn view(ray: &super::Ray) -> RayView<'_> {
+            RayView::F32(ray)
         }
     }
 
@@ -183,9 +192,9 @@ pub(crate) mod sealed {
         fn as_f32_rays(_: &[super::DRay]) -> Option<&[super::Ray]> {
             None
         }
-        #[inline]
-        fn cull_line(torus: &Torus, ray: &super::DRay) -> LocalLine {
-            torus.dray_line(ray)
+        #[inline(always)]
+        fn view(ray: &super::DRay) -> RayView<'_> {
+            RayView::F64(ray)
         }
     }
 }

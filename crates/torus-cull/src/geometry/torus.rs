@@ -1,6 +1,7 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
+use super::ray::sealed::RayView;
 use super::ray::{DRay, Precision, Ray, RayError, compact_value as num};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
@@ -516,12 +517,15 @@ impl Torus {
     #[inline(always)]
     #[must_use]
     pub fn line_to_local<P: Precision>(&self, ray: &Ray<P>) -> LocalLine {
-        P::cull_line(self, ray)
+        match P::view(ray) {
+            RayView::F32(ray) => self.ray_line(ray),
+            RayView::F64(ray) => self.dray_line(ray),
+        }
     }
 
     /// [`Torus::line_to_local`] of an f32 [`Ray`].
     #[inline]
-    pub(super) fn ray_line(&self, ray: &Ray) -> LocalLine {
+    fn ray_line(&self, ray: &Ray) -> LocalLine {
         let relative = ray.origin() - self.center;
         // An overflowed (infinite) square fails the test too and takes the f64 path.
         if relative.length_squared() <= self.near_origin_sq {
@@ -668,7 +672,7 @@ impl Torus {
     }
 
     /// [`Torus::line_to_local`] of an f64 [`DRay`].
-    pub(super) fn dray_line(&self, ray: &DRay) -> LocalLine {
+    fn dray_line(&self, ray: &DRay) -> LocalLine {
         let (o, d) = self.line_to_local_f64(ray);
         if !self.placeable(o) {
             return self.unplaceable(d);
