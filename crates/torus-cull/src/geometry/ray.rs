@@ -36,14 +36,16 @@ pub(crate) mod sealed {
     use super::Precision;
     use glam::{DVec3, Vec3};
 
-    /// A ray seen as the precision it is: what code generic over [`Precision`] matches on
-    /// to call a precision's own path. Each impl of [`Internals::view`] returns one fixed
-    /// variant, so after inlining the match costs nothing.
-    pub enum RayView<'a> {
-        /// An f32 ray.
-        F32(&'a super::Ray),
-        /// An f64 ray.
-        F64(&'a super::DRay),
+    /// What answers for a ray of either precision, one method each: [`Internals::line_of`]
+    /// calls the one of the ray's precision. (The torus's culled line is one; the trait
+    /// keeps this file from naming the torus, which imports it.)
+    pub trait PerPrecision {
+        /// The answer.
+        type Out;
+        /// For an f32 ray.
+        fn of_f32(&self, ray: &super::Ray) -> Self::Out;
+        /// For an f64 ray.
+        fn of_f64(&self, ray: &super::DRay) -> Self::Out;
     }
 
     /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
@@ -130,8 +132,8 @@ pub(crate) mod sealed {
         fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
         where
             Self: Precision;
-        /// The ray as the precision it is ([`RayView`]).
-        fn view(ray: &super::Ray<Self>) -> RayView<'_>
+        /// `target`'s answer for a ray of this precision ([`PerPrecision`]).
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::Ray<Self>) -> T::Out
         where
             Self: Precision;
     }
@@ -171,8 +173,8 @@ pub(crate) mod sealed {
             Some(rays)
         }
         #[inline(always)]
-        fn view(ray: &super::Ray) -> RayView<'_> {
-            RayView::F32(ray)
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::Ray) -> T::Out {
+            target.of_f32(ray)
         }
     }
 
@@ -192,9 +194,9 @@ pub(crate) mod sealed {
         fn as_f32_rays(_: &[super::DRay]) -> Option<&[super::Ray]> {
             None
         }
-        #[inline(always)]
-        fn view(ray: &super::DRay) -> RayView<'_> {
-            RayView::F64(ray)
+        #[inline]
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::DRay) -> T::Out {
+            target.of_f64(ray)
         }
     }
 }
