@@ -9,6 +9,7 @@ mod common;
 mod api_bit_patterns;
 mod layout;
 mod package;
+mod phi_convention;
 mod refused_inputs;
 mod rust_version;
 mod solid_client;

@@ -6,6 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod adversarial_rows;
 mod bend_cli;
 mod check_cli;
 mod check_ring_f32;

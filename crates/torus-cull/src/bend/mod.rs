@@ -33,13 +33,15 @@ mod f32;
 mod iter;
 mod point_query;
 mod solid;
+mod spawn;
 mod wedge;
+mod wedge_cull;
 
 pub use crossings::{BendCrossing, BendCrossings, BendHit};
 pub use f32::BendF32Hit;
 pub use point_query::BendProjection;
 pub use solid::{BendError, BendFace, MIN_WALL_REL, PipeBend};
-pub use wedge::WedgeCull;
+pub use wedge_cull::WedgeCull;
 
 #[cfg(test)]
 mod near_tangent_tests;

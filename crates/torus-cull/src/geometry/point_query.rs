@@ -135,7 +135,8 @@ impl Torus {
 
     /// The surface point at tube angle θ (0 on the outer equator, π/2 on the top circle,
     /// toward +axis) and angle φ about the axis (0 on the torus frame's x axis, growing
-    /// toward its z axis): `((R + r cos θ) cos φ, r sin θ, (R + r cos θ) sin φ)` in the
+    /// right-handed about the axis, toward its −z axis: the one φ of every shape,
+    /// docs/math.md §1): `((R + r cos θ) cos φ, r sin θ, −(R + r cos θ) sin φ)` in the
     /// torus frame, world space. The inverse of [`Torus::surface_coords`].
     #[must_use]
     pub fn point_at(&self, theta: f64, phi: f64) -> DVec3 {
@@ -144,13 +145,14 @@ impl Torus {
         self.point_to_world_f64(DVec3::new(
             rho * phi.cos(),
             small * theta.sin(),
-            rho * phi.sin(),
+            -rho * phi.sin(),
         ))
     }
 
     /// The surface coordinates `(θ, φ)`, each in `(−π, π]`, of the closest surface point to
     /// `p` (as [`Torus::point_at`] names them; θ = 0 on the core circle, φ = 0 on the axis:
-    /// the choices of the module docs). A texture's `(u, v)` is `(φ + π, θ + π)/2π`.
+    /// the choices of the module docs; φ = atan2(−z, x)). A texture's `(u, v)` is
+    /// `(φ + π, θ + π)/2π`.
     ///
     /// # Errors
     ///
@@ -158,7 +160,8 @@ impl Torus {
     pub fn surface_coords(&self, p: DVec3) -> Result<(f64, f64), NonFinitePoint> {
         let x = self.point_to_local_f64(p)?;
         let rho = x.x.hypot(x.z);
-        let phi = if rho > 0.0 { x.z.atan2(x.x) } else { 0.0 };
+        // `-x.z`, not `x.z`: φ grows right-handed about +y, from +x toward −z.
+        let phi = if rho > 0.0 { (-x.z).atan2(x.x) } else { 0.0 };
         let (off, y) = (rho - self.major_radius_f64(), x.y);
         let theta = if off == 0.0 && y == 0.0 {
             0.0

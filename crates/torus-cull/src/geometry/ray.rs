@@ -34,8 +34,19 @@ impl Precision for DVec3 {
 
 pub(crate) mod sealed {
     use super::Precision;
-    use crate::geometry::torus::{LocalLine, Torus};
     use glam::{DVec3, Vec3};
+
+    /// What answers for a ray of either precision, one method each: [`Internals::line_of`]
+    /// calls the one of the ray's precision. (The torus's culled line is one; the trait
+    /// keeps this file from naming the torus, which imports it.)
+    pub trait PerPrecision {
+        /// The answer.
+        type Out;
+        /// For an f32 ray.
+        fn of_f32(&self, ray: &super::Ray) -> Self::Out;
+        /// For an f64 ray.
+        fn of_f64(&self, ray: &super::DRay) -> Self::Out;
+    }
 
     /// What the crate needs of a ray's float ([`Precision::Float`]), out of the docs.
     pub trait Scalar: Copy + PartialOrd {
@@ -121,8 +132,8 @@ pub(crate) mod sealed {
         fn as_f32_rays(rays: &[super::Ray<Self>]) -> Option<&[super::Ray]>
         where
             Self: Precision;
-        /// [`crate::Torus::line_to_local`] of a ray of this precision.
-        fn cull_line(torus: &Torus, ray: &super::Ray<Self>) -> LocalLine
+        /// `target`'s answer for a ray of this precision ([`PerPrecision`]).
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::Ray<Self>) -> T::Out
         where
             Self: Precision;
     }
@@ -162,8 +173,8 @@ pub(crate) mod sealed {
             Some(rays)
         }
         #[inline(always)]
-        fn cull_line(torus: &Torus, ray: &super::Ray) -> LocalLine {
-            torus.ray_line(ray)
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::Ray) -> T::Out {
+            target.of_f32(ray)
         }
     }
 
@@ -184,8 +195,8 @@ pub(crate) mod sealed {
             None
         }
         #[inline]
-        fn cull_line(torus: &Torus, ray: &super::DRay) -> LocalLine {
-            torus.dray_line(ray)
+        fn line_of<T: PerPrecision>(target: &T, ray: &super::DRay) -> T::Out {
+            target.of_f64(ray)
         }
     }
 }

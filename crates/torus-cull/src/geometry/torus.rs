@@ -1,6 +1,7 @@
 //! The torus: pose, validation and the rigid world→torus-frame transform.
 
 use super::bounds::CullBounds;
+use super::ray::sealed::PerPrecision;
 use super::ray::{DRay, Precision, Ray, RayError, compact_value as num};
 use super::tube::Tube;
 use glam::{DMat3, DVec3, Mat3, Vec3};
@@ -516,7 +517,7 @@ impl Torus {
     #[inline(always)]
     #[must_use]
     pub fn line_to_local<P: Precision>(&self, ray: &Ray<P>) -> LocalLine {
-        P::cull_line(self, ray)
+        P::line_of(self, ray)
     }
 
     /// [`Torus::line_to_local`] of an f32 [`Ray`].
@@ -771,6 +772,19 @@ fn validate_image(center: DVec3, axis: DVec3, major: f64, minor: f64) -> Result<
         return Err(TorusError::BadAxis(axis.as_vec3()));
     }
     Ok(())
+}
+
+/// The culls' line of a ray of either precision ([`Torus::line_to_local`]).
+impl PerPrecision for Torus {
+    type Out = LocalLine;
+    #[inline(always)]
+    fn of_f32(&self, ray: &Ray) -> LocalLine {
+        self.ray_line(ray)
+    }
+    #[inline]
+    fn of_f64(&self, ray: &DRay) -> LocalLine {
+        self.dray_line(ray)
+    }
 }
 
 /// A proper rotation taking the unit vector `axis` to +y.

@@ -108,7 +108,7 @@ fn tangents_are_an_orthonormal_frame_and_point_at_derivatives() {
                 a.dot(b).abs(),
                 (a.length() - 1.0).abs(),
                 (b.length() - 1.0).abs(),
-                (b.cross(a) - normal).length(),
+                (a.cross(b) - normal).length(),
             ]
             .into_iter()
             .fold(0.0, f64::max);
@@ -131,7 +131,7 @@ fn tangents_are_an_orthonormal_frame_and_point_at_derivatives() {
     let hit = intersect(&torus, &ray).unwrap();
     let frame = torus.tangents(torus.hit_uv(&hit));
     let n = hit.normal.as_dvec3();
-    assert!(frame.around_tube.cross(frame.along_ring).dot(n) > 1.0 - 1e-6);
+    assert!(frame.along_ring.cross(frame.around_tube).dot(n) > 1.0 - 1e-6);
     println!(
         "tangents: worst orthonormality {worst_orth:.2e}, worst finite difference {worst_fd:.2e}"
     );
