@@ -431,7 +431,7 @@ fn no_circle_at_any_depth() {
         let tree = Tree::load(&root().join(krate.dir), krate.root_file, skip);
         let (count, found) = cycles(&tree);
         assert!(
-            count > 50,
+            count > 20,
             "{}: only {count} imports between modules read: the reader is broken",
             krate.name
         );
