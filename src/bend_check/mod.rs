@@ -214,6 +214,7 @@ impl BendFile {
             pose: crate::workload::Pose::Random,
             bvh: None,
             bend: None,
+            shapes: None,
             sha256,
         };
         let meta = crate::results::Results::new(&workload, "bend").meta;

@@ -1,0 +1,177 @@
+//! A workload file's `shapes` key: the torus-family members and pipe bends that
+//! `torus-cull run` sweeps besides the ring torus of `cases` × `nu`.
+//!
+//! ```json
+//! "shapes": { "rays": 4000,
+//!   "family": { "nu": [16, 4, 1.25, 1, 0.5, 0.3, 0.1], "aspects": [0.25, 0.5, 1, 2, 4] },
+//!   "bends": { "nu": [4], "segments_deg": [360, 180, 90, 30], "bores": [0, 0.5, 0.9] } }
+//! ```
+//!
+//! `family`: one member per (ν, b/a), ν = R/a (> 1 a ring, elliptical where b/a ≠ 1; = 1
+//! the horn; < 1 a spindle), a = 1. `bends`: one bend per (ν, Δφ, r_min/r_max), ν =
+//! R/r_max, Δφ the segment in degrees, r_min/r_max the bore's share of the tube. Each
+//! member draws `rays` rays; either list may be left out, not both.
+
+use super::bend_spec::bore_ratio_ok;
+use crate::number::Num;
+use serde::Deserialize;
+use torus_cull::MAX_NU;
+use torus_cull::family::{MAX_ASPECT, MIN_ASPECT, MIN_FAMILY_NU};
+
+/// The most rays per member.
+pub const MAX_SHAPE_RAYS: i64 = 10_000_000;
+
+/// Δφ in radians of a segment of `deg` degrees (360 is exactly 2π, the whole ring).
+pub fn segment_radians(deg: f64) -> f64 {
+    deg.to_radians().min(std::f64::consts::TAU)
+}
+
+/// The members of a workload's `shapes` key.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShapesSpec {
+    /// Rays per member.
+    pub rays: usize,
+    /// The family members (ν = R/a, b/a), ν outermost, in file order.
+    pub family: Vec<(f64, f64)>,
+    /// The bends (ν = R/r_max, Δφ in degrees, r_min/r_max), ν outermost, in file order.
+    pub bends: Vec<(f64, f64, f64)>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawShapes {
+    rays: i64,
+    #[serde(default)]
+    family: Option<RawFamily>,
+    #[serde(default)]
+    bends: Option<RawBends>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawFamily {
+    nu: Vec<f64>,
+    aspects: Vec<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawBends {
+    nu: Vec<f64>,
+    segments_deg: Vec<f64>,
+    bores: Vec<f64>,
+}
+
+/// (the field at fault, what is wrong and what is allowed).
+type FieldError = (String, String);
+
+/// Checks one list `shapes.<name>`: not empty, no value twice, and every value `ok`; a
+/// fault names `shapes.<name>[i]` and `allowed`.
+fn check_list(
+    name: &str,
+    values: &[f64],
+    ok: impl Fn(f64) -> bool,
+    allowed: &str,
+) -> Result<(), FieldError> {
+    let field = format!("shapes.{name}");
+    if values.is_empty() {
+        return Err((
+            field,
+            format!("must list at least one value (allowed: {allowed})"),
+        ));
+    }
+    for (i, &v) in values.iter().enumerate() {
+        if !ok(v) {
+            return Err((
+                format!("{field}[{i}]"),
+                format!("{} is invalid (allowed: {allowed})", Num(v)),
+            ));
+        }
+        if values[..i].contains(&v) {
+            return Err((
+                format!("{field}[{i}]"),
+                format!("{} is listed twice", Num(v)),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The `shapes` key's value, checked field by field (rays, family.nu, family.aspects,
+/// bends.nu, bends.segments_deg, bends.bores). Whether the library builds each bend (a
+/// bore's torus, the wall) is asked before the sweep (`shape_sweep::refuse_bends`), which
+/// names these fields too.
+pub(super) fn parse_shapes(value: serde_json::Value) -> Result<ShapesSpec, FieldError> {
+    let raw: RawShapes = serde_json::from_value(value).map_err(|e| {
+        (
+            "shapes".to_string(),
+            format!(
+                "{e} (expected rays and at least one of family {{nu, aspects}}, \
+                 bends {{nu, segments_deg, bores}})"
+            ),
+        )
+    })?;
+    if !(1..=MAX_SHAPE_RAYS).contains(&raw.rays) {
+        return Err((
+            "shapes.rays".into(),
+            format!("{} is invalid (allowed: 1 ..= {MAX_SHAPE_RAYS})", raw.rays),
+        ));
+    }
+    if raw.family.is_none() && raw.bends.is_none() {
+        return Err((
+            "shapes".into(),
+            "names no shape (allowed: a `family` key, a `bends` key, or both)".into(),
+        ));
+    }
+    let mut family = Vec::new();
+    if let Some(f) = raw.family {
+        check_list(
+            "family.nu",
+            &f.nu,
+            |nu| (MIN_FAMILY_NU..=MAX_NU).contains(&nu),
+            &format!(
+                "{MIN_FAMILY_NU} <= nu = R/a <= {MAX_NU}: > 1 a ring, 1 the horn, < 1 a spindle"
+            ),
+        )?;
+        check_list(
+            "family.aspects",
+            &f.aspects,
+            |b| (MIN_ASPECT..=MAX_ASPECT).contains(&b),
+            &format!("{MIN_ASPECT} <= b/a <= {MAX_ASPECT}"),
+        )?;
+        for &nu in &f.nu {
+            family.extend(f.aspects.iter().map(|&aspect| (nu, aspect)));
+        }
+    }
+    let mut bends = Vec::new();
+    if let Some(b) = raw.bends {
+        check_list(
+            "bends.nu",
+            &b.nu,
+            |nu| nu.is_finite() && nu > 1.0 && nu <= MAX_NU,
+            &format!("1 < nu = R/r_max <= {MAX_NU}"),
+        )?;
+        check_list(
+            "bends.segments_deg",
+            &b.segments_deg,
+            |d| d > 0.0 && d <= 360.0,
+            "0 < segment <= 360 degrees",
+        )?;
+        check_list(
+            "bends.bores",
+            &b.bores,
+            bore_ratio_ok,
+            "0 <= r_min/r_max < 1",
+        )?;
+        for &nu in &b.nu {
+            for &deg in &b.segments_deg {
+                bends.extend(b.bores.iter().map(|&bore| (nu, deg, bore)));
+            }
+        }
+    }
+    Ok(ShapesSpec {
+        rays: raw.rays as usize,
+        family,
+        bends,
+    })
+}
