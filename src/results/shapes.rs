@@ -53,3 +53,21 @@ impl ShapeRecord {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::results::Results;
+
+    /// A file from before the shapes (no `shapes` key) loads with none, and a file with
+    /// none is written without the key, byte for byte as before.
+    #[test]
+    fn files_without_shapes_load_and_are_written_as_before() {
+        let workload = crate::workload::spec::Workload::drawn("t", 1, 1, "t");
+        let r = Results::new(&workload, "run");
+        let text = serde_json::to_string(&r).unwrap();
+        assert!(!text.contains("shapes"), "{text}");
+        let back: Results = serde_json::from_str(&text).unwrap();
+        assert!(back.shapes.is_empty());
+        assert_eq!(back, r);
+    }
+}

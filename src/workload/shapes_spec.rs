@@ -175,3 +175,95 @@ pub(super) fn parse_shapes(value: serde_json::Value) -> Result<ShapesSpec, Field
         bends,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::spec::{Workload, WorkloadError};
+    use std::path::Path;
+
+    fn parse(shapes: &str) -> Result<Workload, WorkloadError> {
+        let text = format!(
+            r#"{{"name":"t","seed":7,"cases":["uniform"],"nu":[4],"rays":10,"shapes":{shapes}}}"#
+        );
+        Workload::parse(text.as_bytes(), Path::new("w.json"))
+    }
+
+    #[test]
+    fn members_are_the_products_in_file_order() {
+        let w = parse(
+            r#"{"rays":5,"family":{"nu":[4,0.5],"aspects":[1,0.25]},
+                "bends":{"nu":[4],"segments_deg":[360,30],"bores":[0,0.5]}}"#,
+        )
+        .unwrap();
+        let s = w.shapes.unwrap();
+        assert_eq!(s.rays, 5);
+        assert_eq!(s.family, [(4.0, 1.0), (4.0, 0.25), (0.5, 1.0), (0.5, 0.25)]);
+        assert_eq!(s.bends[0], (4.0, 360.0, 0.0));
+        assert_eq!(s.bends.len(), 4);
+        assert_eq!(super::segment_radians(360.0), std::f64::consts::TAU);
+        let w = parse(r#"{"rays":5,"bends":{"nu":[2],"segments_deg":[90],"bores":[0]}}"#).unwrap();
+        assert!(w.shapes.unwrap().family.is_empty());
+        // A file without the key has no shapes.
+        let plain = br#"{"name":"t","seed":7,"cases":["uniform"],"nu":[4],"rays":10}"#;
+        assert_eq!(
+            Workload::parse(plain, Path::new("w.json")).unwrap().shapes,
+            None
+        );
+    }
+
+    #[test]
+    fn bad_shapes_name_file_field_and_range() {
+        for (shapes, needle) in [
+            (
+                r#"{"rays":0,"family":{"nu":[4],"aspects":[1]}}"#,
+                "field `shapes.rays`: 0 is invalid (allowed: 1 ..= 10000000)",
+            ),
+            (
+                r#"{"rays":5}"#,
+                "field `shapes`: names no shape (allowed: a `family` key, a `bends` key, or both)",
+            ),
+            (
+                r#"{"rays":5,"family":{"nu":[0.001],"aspects":[1]}}"#,
+                "field `shapes.family.nu[0]`: 0.001 is invalid (allowed: 0.01 <= nu = R/a <= 1000",
+            ),
+            (
+                r#"{"rays":5,"family":{"nu":[4,4],"aspects":[1]}}"#,
+                "field `shapes.family.nu[1]`: 4 is listed twice",
+            ),
+            (
+                r#"{"rays":5,"family":{"nu":[],"aspects":[1]}}"#,
+                "field `shapes.family.nu`: must list at least one value",
+            ),
+            (
+                r#"{"rays":5,"family":{"nu":[4],"aspects":[8]}}"#,
+                "field `shapes.family.aspects[0]`: 8 is invalid (allowed: 0.25 <= b/a <= 4)",
+            ),
+            (
+                r#"{"rays":5,"bends":{"nu":[1],"segments_deg":[90],"bores":[0]}}"#,
+                "field `shapes.bends.nu[0]`: 1 is invalid (allowed: 1 < nu = R/r_max <= 1000)",
+            ),
+            (
+                r#"{"rays":5,"bends":{"nu":[4],"segments_deg":[400],"bores":[0]}}"#,
+                "field `shapes.bends.segments_deg[0]`: 400 is invalid (allowed: 0 < segment <= 360 degrees)",
+            ),
+            (
+                r#"{"rays":5,"bends":{"nu":[4],"segments_deg":[90],"bores":[1]}}"#,
+                "field `shapes.bends.bores[0]`: 1 is invalid (allowed: 0 <= r_min/r_max < 1)",
+            ),
+            (
+                r#"{"rays":5,"bends":{"nu":[4],"segments_deg":[90]}}"#,
+                "field `shapes`: missing field `bores`",
+            ),
+            (
+                r#"{"rays":5,"family":{"nu":[4],"aspects":[1],"colour":1}}"#,
+                "field `shapes`: unknown field `colour`",
+            ),
+        ] {
+            let e = parse(shapes).unwrap_err().to_string();
+            assert!(
+                e.starts_with("workload w.json: ") && e.contains(needle),
+                "{shapes}\n  gave: {e}"
+            );
+        }
+    }
+}

@@ -8,6 +8,7 @@ mod common;
 
 mod bend_cli;
 mod eval_cli;
+mod eval_wedge_cli;
 mod f32_check;
 mod family_cli;
 mod issue36_cli;
@@ -17,6 +18,7 @@ mod outputs_cli;
 mod results_compare;
 mod results_index;
 mod run_cli;
+mod run_shapes_cli;
 mod summarize_cli;
 mod support;
 mod time_cli;
