@@ -147,3 +147,36 @@ fn a_bend_the_library_does_not_build_is_refused_before_the_work() {
     );
     assert!(!out.exists());
 }
+
+#[test]
+fn compare_pairs_the_shape_records_and_flags_a_new_false_reject() {
+    let (dir, out) = temp_path("old.json");
+    let workload = shapes_workload(dir.path());
+    assert_ok(&cli(
+        "run --workload {} --out {} --no-plots",
+        &[arg(&workload), arg(&out)],
+    ));
+    // The same file against itself: every shape record paired, nothing flagged.
+    let o = cli("compare {} {}", &[arg(&out), arg(&out)]);
+    assert_ok(&o);
+    let same = stdout(&o);
+    assert!(!same.contains("REGRESSION") && !same.contains("disagrees"), "{same}");
+    // A false reject on the horn: a regression, named by member and cull.
+    let mut worse = Results::load(&out).unwrap();
+    let horn = worse
+        .shapes
+        .iter_mut()
+        .find(|s| s.shape == "horn" && s.counts.cull == "skala")
+        .unwrap();
+    horn.counts.false_rejects = 1;
+    let new = dir.path().join("new.json");
+    std::fs::write(&new, serde_json::to_string(&worse).unwrap()).unwrap();
+    let o = cli("compare {} {}", &[arg(&out), arg(&new)]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let text = stdout(&o);
+    assert!(
+        text.contains("horn nu=1 b/a=0.5 skala")
+            && text.contains("REGRESSION: false rejects 0 -> 1"),
+        "{text}"
+    );
+}
