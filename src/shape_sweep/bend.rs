@@ -12,16 +12,6 @@ use crate::workload::shapes_spec::{ShapesSpec, segment_radians};
 use torus_cull::bend::PipeBend;
 use torus_cull::{Cull, CullKind, CullVisitor, DRay, NoCull};
 
-/// The kinds `run` draws: the check's but the spawned rays (module docs of `shape_sweep`).
-const KINDS: [RayKind; 6] = [
-    RayKind::Random,
-    RayKind::CutAway,
-    RayKind::PipeAxis,
-    RayKind::Hole,
-    RayKind::CapEdge,
-    RayKind::BoreTangent,
-];
-
 /// A stream of its own for the run's bends (not the bend check's rays).
 const SALT: u64 = 0x5EED_BE4D_0000_0002;
 
@@ -105,8 +95,13 @@ pub(super) fn pose(
     let bend = shape
         .bend()
         .map_err(|e| format!("{member}: {shape:?}: {e}"))?;
+    // The check's kinds but the spawned rays (module docs of `shape_sweep`).
+    let kinds: Vec<RayKind> = RayKind::ALL
+        .into_iter()
+        .filter(|&k| k != RayKind::Spawned)
+        .collect();
     let drawn: Vec<DRay> = (unit.first..unit.first + unit.count)
-        .map(|i| rays::draw(&shape, &bend, KINDS[i % KINDS.len()], &mut rng).0)
+        .map(|i| rays::draw(&shape, &bend, kinds[i % kinds.len()], &mut rng).0)
         .collect();
     let labels: Vec<OracleLabel> = drawn.iter().map(|r| shape.query(r).classify()).collect();
     let forms = forms(culls);

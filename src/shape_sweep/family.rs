@@ -12,9 +12,6 @@ use rand_pcg::Pcg64;
 use torus_cull::family::{Toroid, ToroidKind};
 use torus_cull::{Cull, CullVisitor, DRay};
 
-/// The kinds `run` draws: the check's but the spawned rays (module docs of `shape_sweep`).
-const KINDS: [RayKind; 3] = [RayKind::Uniform, RayKind::Grazing, RayKind::AxisHole];
-
 /// A stream of its own for the run's member `index` (not the family check's rays).
 const SALT: u64 = 0x5EED_F00D_0000_0001;
 
@@ -54,8 +51,13 @@ pub(super) fn member(
         Pcg64::seed_from_u64(seed ^ SALT ^ (index as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15));
     let toroid = posed((nu, aspect), &mut rng)?;
     let label_of = format!("{} nu={nu} b/a={aspect}", shape_name(&toroid, aspect));
+    // The check's kinds but the spawned rays (module docs of `shape_sweep`).
+    let kinds: Vec<RayKind> = RayKind::ALL
+        .into_iter()
+        .filter(|&k| k != RayKind::Spawned)
+        .collect();
     let drawn: Vec<DRay> = (0..rays)
-        .map(|i| rays::draw(&toroid, KINDS[i % KINDS.len()], &mut rng))
+        .map(|i| rays::draw(&toroid, kinds[i % kinds.len()], &mut rng))
         .collect();
     let labels = drawn
         .iter()

@@ -160,7 +160,10 @@ fn compare_pairs_the_shape_records_and_flags_a_new_false_reject() {
     let o = cli("compare {} {}", &[arg(&out), arg(&out)]);
     assert_ok(&o);
     let same = stdout(&o);
-    assert!(!same.contains("REGRESSION") && !same.contains("disagrees"), "{same}");
+    assert!(
+        !same.contains("REGRESSION") && !same.contains("disagrees"),
+        "{same}"
+    );
     // A false reject on the horn: a regression, named by member and cull.
     let mut worse = Results::load(&out).unwrap();
     let horn = worse
