@@ -140,7 +140,20 @@ pub(super) fn parse_shapes(value: serde_json::Value) -> Result<ShapesSpec, Field
             &format!("{MIN_ASPECT} <= b/a <= {MAX_ASPECT}"),
         )?;
         for &nu in &f.nu {
-            family.extend(f.aspects.iter().map(|&aspect| (nu, aspect)));
+            for &aspect in &f.aspects {
+                // The library decides what it builds: a refusal names both fields.
+                torus_cull::family::Toroid::canonical(nu, 1.0, aspect).map_err(|e| {
+                    (
+                        "shapes.family".to_string(),
+                        format!(
+                            "the member nu = {} with b/a = {} is refused: {e}",
+                            Num(nu),
+                            Num(aspect)
+                        ),
+                    )
+                })?;
+                family.push((nu, aspect));
+            }
         }
     }
     let mut bends = Vec::new();
