@@ -39,6 +39,7 @@ pub mod results;
 pub mod results_file;
 pub mod scene;
 pub mod scene_kind;
+pub mod shape_sweep;
 pub mod solver_suite;
 pub mod summary;
 pub mod workload;

@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 
 pub mod answers;
 pub mod check;
+mod shapes;
 
 /// One named line of (x, y) points.
 pub type Series = (String, Vec<(f64, f64)>);
@@ -59,6 +60,9 @@ pub fn line_chart(
 
 /// The x axis of every chart but a check file's (its shape names its own).
 const NU_AXIS: &str = "ν = R/r (log scale)";
+
+/// The x axis of a bend's charts: its segment.
+const DELTA_AXIS: &str = "Δφ in degrees (log scale)";
 
 /// One line of a chart: its points (x, y, optional 95 % interval of y) and its colour
 /// index (the series' place among all the file's culls, so a cull keeps its colour).
@@ -332,6 +336,10 @@ pub fn plot_results(
     if results.timing.is_empty() && results.ratio.is_empty() {
         estimate_charts(&results.estimates, &mut charts)?;
     }
+    let what = results.meta.workload.clone();
+    let mut bends = Charts::new(out_dir, stem, provenance(what, &results.meta), DELTA_AXIS)?;
+    shapes::charts(&results.shapes, &mut charts, &mut bends)?;
+    charts.written.extend(bends.written);
     Ok(charts.written)
 }
 

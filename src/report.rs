@@ -1,11 +1,25 @@
 //! Plain-text tables of a results file, as `run` and `cargo bench` print them.
 
+mod shapes;
+
 use crate::results::{CPU_DEVICE, F64_REFERENCE, RatioRecord, Results, TimingRecord};
 use std::fmt::Write;
 
 /// One table per case: rows ν, columns culls, cells `value(record)` formatted by `fmt`.
 fn table<R>(
     records: &[R],
+    key: impl Fn(&R) -> (&str, f64, &str),
+    cell: impl Fn(&R) -> String,
+    title: impl Fn(&str) -> String,
+) -> String {
+    grid(records, "nu", key, cell, title)
+}
+
+/// [`table`] with rows named `row` (`nu`, `bore`): one table per group, rows the key's
+/// number, columns its name.
+fn grid<R>(
+    records: &[R],
+    row: &str,
     key: impl Fn(&R) -> (&str, f64, &str),
     cell: impl Fn(&R) -> String,
     title: impl Fn(&str) -> String,
@@ -59,7 +73,7 @@ fn table<R>(
                     .unwrap_or(5)
             })
             .collect();
-        let _ = write!(out, "{:>7}", "nu");
+        let _ = write!(out, "{row:>7}");
         for (c, width) in culls.iter().zip(&widths) {
             let _ = write!(out, " {c:>width$}");
         }
@@ -84,6 +98,22 @@ pub fn miss_capture_tables(results: &Results) -> String {
         |r| r.miss_capture.map_or("n/a".into(), |c| format!("{c:.3}")),
         |case| format!("{case}: miss capture (rejected / misses)"),
     )
+}
+
+/// The other shapes' miss capture (`results.shapes`): per b/a of the family, rows ν
+/// (ring, horn, spindle alike), columns culls, `-` where the cull declines the shape; per
+/// bend ν and segment, rows the bore, columns culls, each cell the cull alone and behind
+/// the segment's wedge (`none`'s: the wedge alone).
+pub fn shape_tables(results: &Results) -> String {
+    shapes::tables(&results.shapes, |cells, row, title| {
+        grid(
+            cells,
+            row,
+            |c: &shapes::Cell| (c.group.as_str(), c.row, c.column.as_str()),
+            |c| c.text.clone(),
+            title,
+        )
+    })
 }
 
 /// The scalar-mode timing records (one ray at a time, f64).

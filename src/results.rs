@@ -3,6 +3,8 @@
 //! atomically, so an interrupted run never leaves half a file. Field names are stable;
 //! new fields may be added.
 
+pub mod shapes;
+
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -36,6 +38,10 @@ pub struct Results {
     /// by `torus-cull time` and `cargo bench`; absent from older files).
     #[serde(default)]
     pub ratio: Vec<RatioRecord>,
+    /// Rejection counts per torus-family member or pipe bend × cull (filled by `run` from
+    /// a workload's `shapes` key; absent from older files and when there are none).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub shapes: Vec<shapes::ShapeRecord>,
 }
 
 /// Provenance of a results file.
@@ -597,6 +603,7 @@ impl Results {
             solver: Vec::new(),
             estimates: Vec::new(),
             ratio: Vec::new(),
+            shapes: Vec::new(),
         }
     }
 

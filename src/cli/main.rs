@@ -38,7 +38,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run a workload: rejection counts for every case × ν × cull, tables, JSON and plots.
+    /// Run a workload: rejection counts for every case × ν × cull, and for every family
+    /// member and pipe bend of its `shapes` × cull, tables, JSON and plots.
     Run {
         /// Workload: `default` or `quick` (built into the binary), or a workload file.
         #[arg(long, default_value = "default")]
@@ -168,7 +169,9 @@ enum Command {
         /// axis +y, φ = 0 along +x, φ growing toward −z) whose outer tube is --minor: its
         /// nearest crossing of any face, the torus culls on its outer torus, and the bend
         /// oracle (--exact f64, or f32: the misses of the outer torus proved in f32, the
-        /// rest escalated; a whole bend is the ring torus).
+        /// rest escalated; a whole bend is the ring torus). A bend's rows add after the
+        /// culls' columns `wedge` (the segment's wedge alone) and `wedge+<cull>` (each cull
+        /// but none behind the wedge), as `bend` and `time --bend` price them.
         #[arg(long = "bore", allow_hyphen_values = true)]
         bore: Option<f64>,
         /// The bend's segment start φ₀ in radians, finite (default 0).

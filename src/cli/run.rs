@@ -9,7 +9,9 @@ use torus_cull::Named;
 use torus_cull_lab::measure::{self, CountedCull, FalseReject};
 use torus_cull_lab::output;
 use torus_cull_lab::report;
+use torus_cull_lab::results::shapes::ShapeRecord;
 use torus_cull_lab::results::{self, RejectionRecord, Results};
+use torus_cull_lab::shape_sweep::{self, ShapeFalseReject};
 use torus_cull_lab::workload::GenerateError;
 use torus_cull_lab::workload::spec::{self, Workload};
 
@@ -31,23 +33,40 @@ pub fn run(
     if spec::built_in(workload_path).is_none() {
         output::check_not_input(("--out", &path), &[("--workload", workload_path)])?;
     }
+    if let Some(shapes) = &workload.shapes {
+        // Before the sweep: a bend the library does not build must not cost the run.
+        shape_sweep::refuse_bends(shapes).map_err(|e| {
+            format!(
+                "workload {}: field `shapes.bends`: {e}",
+                workload_path.display()
+            )
+        })?;
+    }
     if !no_plots {
         crate::plot::check_plot_paths(&path)?;
     }
-    let (records, false_rejects) = sweep(&workload, &culls, threads)?;
+    let (records, false_rejects, (shape_records, shape_false_rejects)) =
+        sweep(&workload, &culls, threads)?;
     let mut results = Results::new(&workload, "run");
     results.meta.sizes = Some(results::Sizes::rejection_only(workload.rays as u64));
     results.meta.threads = Some(threads as u64);
     results.rejection = records;
+    results.shapes = shape_records;
     out!("{}", report::miss_capture_tables(&results))?;
+    out!("{}", report::shape_tables(&results))?;
     print_false_reject_total(&results, &culls)?;
     results.save(&path)?;
     outln!("wrote {}", path.display())?;
     if !no_plots {
         crate::plot::write_plots(&results, &path)?;
     }
-    if !false_rejects.is_empty() {
+    if !false_rejects.is_empty() || !shape_false_rejects.is_empty() {
         report_false_rejects(&false_rejects, workload.seed);
+        report_shape_false_rejects(&shape_false_rejects, workload.seed);
+        eprintln!(
+            "error: {} false rejects: a cull rejected rays the oracle calls hits",
+            false_rejects.len() + shape_false_rejects.len()
+        );
         return Ok(ExitCode::from(1));
     }
     Ok(ExitCode::SUCCESS)
@@ -88,29 +107,47 @@ fn out_path(out: Option<PathBuf>, workload: &Workload) -> Result<PathBuf, String
     Ok(path)
 }
 
-/// The rejection sweep, with a progress bar (or, off a terminal, a heartbeat) in rays.
-fn sweep(
-    workload: &Workload,
-    culls: &[CountedCull],
-    threads: usize,
-) -> Result<(Vec<RejectionRecord>, Vec<FalseReject>), GenerateError> {
+/// The ring's sweep and the other shapes' records with their false rejects.
+type Swept = (
+    Vec<RejectionRecord>,
+    Vec<FalseReject>,
+    (Vec<ShapeRecord>, Vec<ShapeFalseReject>),
+);
+
+/// The rejection sweep of the ring, then of the workload's other shapes, with a progress
+/// bar (or, off a terminal, a heartbeat) in rays.
+fn sweep(workload: &Workload, culls: &[CountedCull], threads: usize) -> Result<Swept, String> {
     let units = measure::units(workload).len() as u64;
-    let bar = ProgressBar::new(units * workload.rays as u64).with_style(
+    let shape_rays = workload.shapes.as_ref().map_or(0, shape_sweep::rays);
+    let total = units * workload.rays as u64 + shape_rays;
+    let bar = ProgressBar::new(total).with_style(
         ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rays ({eta})")
             .expect("valid template")
             .progress_chars("=> "),
     );
-    let message = format!("{}: {} case x nu", workload.name, units);
+    let members = workload
+        .shapes
+        .as_ref()
+        .map_or(0, |s| s.family.len() + s.bends.len());
+    let message = match members {
+        0 => format!("{}: {} case x nu", workload.name, units),
+        m => format!("{}: {} case x nu, {m} shapes", workload.name, units),
+    };
     bar.set_message(message.clone());
     let heartbeat = crate::console::Heartbeat::new(format!("run {message}"), "rays");
-    let total = units * workload.rays as u64;
     heartbeat.update(0, total);
-    let swept = measure::rejection_sweep(workload, culls, threads, &|n| {
+    let progress = |n| {
         bar.inc(n);
         heartbeat.update(bar.position(), total);
-    })?;
+    };
+    let (records, false_rejects) = measure::rejection_sweep(workload, culls, threads, &progress)
+        .map_err(|e: GenerateError| e.to_string())?;
+    let shapes = match &workload.shapes {
+        Some(spec) => shape_sweep::sweep(spec, culls, workload.seed, threads, &progress)?,
+        None => (Vec::new(), Vec::new()),
+    };
     bar.finish_and_clear();
-    Ok(swept)
+    Ok((records, false_rejects, shapes))
 }
 
 /// The project's central claim, stated every time: the false rejects among the rays.
@@ -130,11 +167,29 @@ fn print_false_reject_total(results: &Results, culls: &[CountedCull]) -> std::io
         "{rejected_hits} false rejects in {rays} rays (each checked by {} culls; {ambiguous} \
          rays the oracle calls ambiguous are not counted)",
         culls.len()
+    )?;
+    if results.shapes.is_empty() {
+        return Ok(());
+    }
+    // Each member's rays once: its records of the first cull.
+    let first = || {
+        results
+            .shapes
+            .iter()
+            .filter(|r| r.counts.cull == culls[0].name())
+    };
+    let rays: u64 = first().map(|r| r.counts.rays).sum();
+    let ambiguous: u64 = first().map(|r| r.counts.ambiguous).sum();
+    let members = first().count();
+    let rejected_hits: u64 = results.shapes.iter().map(|r| r.counts.false_rejects).sum();
+    outln!(
+        "{rejected_hits} false rejects in {rays} rays of {members} family members and bends \
+         (each checked by every cull, a bend's also behind its wedge; {ambiguous} rays the \
+         shapes' oracles call ambiguous are not counted)"
     )
 }
 
-/// The first 20 false rejects on stderr, each with what it takes to replay it, and their
-/// count.
+/// The first 20 false rejects of the ring on stderr, each with what it takes to replay it.
 fn report_false_rejects(false_rejects: &[FalseReject], workload_seed: u64) {
     for f in false_rejects.iter().take(20) {
         eprintln!(
@@ -151,8 +206,16 @@ fn report_false_rejects(false_rejects: &[FalseReject], workload_seed: u64) {
             f.margin
         );
     }
-    eprintln!(
-        "error: {} false rejects: a cull rejected rays the oracle calls hits",
-        false_rejects.len()
-    );
+}
+
+/// The first 20 false rejects on the family and the bends on stderr, each with what it
+/// takes to replay it.
+fn report_shape_false_rejects(false_rejects: &[ShapeFalseReject], workload_seed: u64) {
+    for f in false_rejects.iter().take(20) {
+        eprintln!(
+            "FALSE REJECT: cull {} on {} ray #{} (workload seed {workload_seed}; {}): origin \
+             {} dir {} margin {:e}",
+            f.cull, f.member, f.index, f.pose, f.origin, f.dir, f.margin
+        );
+    }
 }

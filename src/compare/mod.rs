@@ -2,7 +2,8 @@
 //!
 //! * **rejection**: the same workload and seed must give identical counts, so any changed
 //!   count is flagged `changed`; a new false reject or a lower miss capture is a
-//!   **regression**.
+//!   **regression**. The `shapes` records (`run`'s family members and bends, `shapes.rs`)
+//!   likewise, per member and cull.
 //! * **timing**: `total_ns` slower by more than the threshold *and* with disjoint
 //!   confidence intervals is a regression; anything else is noise.
 //! * **ratio**: when both files have paired ratio records, they give the timing verdicts
@@ -29,6 +30,7 @@ pub mod coverage;
 pub mod machine;
 mod ratio;
 mod rows;
+mod shapes;
 
 pub use rows::{Report, Row};
 
@@ -69,6 +71,7 @@ pub fn check_unique(r: &Results) -> Result<(), String> {
     twice("timing", first_duplicate(&r.timing, timing_key))?;
     twice("bvh", first_duplicate(&r.bvh, bvh_key))?;
     twice("ratio", first_duplicate(&r.ratio, ratio::ratio_key))?;
+    twice("shapes", shapes::duplicate(&r.shapes))?;
     twice(
         "estimate",
         first_duplicate(&r.estimates, |e| e.benchmark.clone()),
@@ -111,6 +114,7 @@ pub fn compare_across(
     ) {
         report.rows.push(rejection_row(key, o, n));
     }
+    shapes::rows(&old.shapes, &new.shapes, &mut report);
     for (key, o, n) in pair_up(&old.timing, &new.timing, timing_key, &mut report, "timing") {
         report.rows.push(timing_row(key, o, n, threshold));
     }

@@ -318,6 +318,7 @@ pub(super) mod tests {
             solver: Vec::new(),
             estimates: Vec::new(),
             ratio,
+            shapes: Vec::new(),
         }
     }
 

@@ -46,6 +46,11 @@
 //! circular ring torus (no `--axial`, or `--axial` = `--minor`, with R > r) answers
 //! exactly as it always has.
 //!
+//! **The pipe bend** (`--bore`, `--phi-start`, `--delta-phi`; [`Target::with_bend`]): its
+//! rows add after the cull columns the wedge's ([`bend_wedge_columns`]): `wedge`, the
+//! segment's wedge alone, then `wedge+<cull>` for each cull but `none`, the forms `bend`
+//! and `time --bend` price; the header names them.
+//!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
 //! an `on_surface` other than 0 or 1, an `on_surface` origin off the surface) ends it with
@@ -73,6 +78,21 @@ pub const OPTIONAL_COLUMNS: [&str; 3] = ["t_min", "t_max", "on_surface"];
 /// The output header.
 pub const OUTPUT_HEADER: &str = "index,oracle,margin,t_hit,none,sphere,aabb,cychosz,\
     thick_cylinder,skala,ellipsoid,quadric,discriminant,discriminant_f64";
+
+/// The columns a pipe bend's rows add after the culls' (`--bore`, `--phi-start`,
+/// `--delta-phi`): `wedge`, the segment's wedge alone (`PipeBend::wedge_cull(NoCull)`),
+/// then `wedge+<cull>`, each cull but `none` ([`torus_cull::CullKind::TIMED`] order) on the
+/// outer torus behind the wedge: the forms `bend` and `time --bend` price. 1 keeps, 0
+/// rejects; a rejected ray is one the oracle calls a miss.
+pub fn bend_wedge_columns() -> Vec<String> {
+    torus_cull::CullKind::TIMED
+        .iter()
+        .map(|&c| match c {
+            torus_cull::CullKind::NoCull => "wedge".to_string(),
+            c => format!("wedge+{}", torus_cull::Named::name(c)),
+        })
+        .collect()
+}
 
 /// The GPU columns' culls, in [`torus_cull::CullKind::TIMED`] order: every cull with a batch form.
 pub const GPU_CULLS: [torus_cull::batch::BatchCull; 9] = torus_cull::batch::BATCHED;
@@ -247,16 +267,22 @@ pub fn eval_target_csv(
             Vec::new().into_iter(),
         )
     };
+    // A bend's rows end with the wedge's columns (`--exact gpu` refused it above).
+    let wedge = if target.is_bend() {
+        format!(",{}", bend_wedge_columns().join(","))
+    } else {
+        String::new()
+    };
     if precision == Precision::CertifiedGpu {
         writeln!(output, "{}", gpu_output_header())?;
     } else if precision == Precision::CertifiedF32 {
         writeln!(
             output,
-            "{}",
+            "{}{wedge}",
             OUTPUT_HEADER.replace(",t_hit,", ",t_hit,escalated,")
         )?;
     } else {
-        writeln!(output, "{OUTPUT_HEADER}")?;
+        writeln!(output, "{OUTPUT_HEADER}{wedge}")?;
     }
     let mut index = 0usize;
     for (i, line) in lines.enumerate() {

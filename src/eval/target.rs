@@ -183,7 +183,8 @@ impl Target {
         }
     }
 
-    /// Each of [`CullKind::TIMED`]'s verdicts on the ray (true keeps), in that order.
+    /// Each of [`CullKind::TIMED`]'s verdicts on the ray (true keeps), in that order; for a
+    /// pipe bend then the wedge's, alone and behind each cull but `none`.
     pub fn keeps<P: Precision>(&self, ray: &Ray<P>) -> Vec<bool> {
         match self {
             Target::Ring(torus) => {
@@ -198,11 +199,21 @@ impl Target {
                 .iter()
                 .map(|cull| toroid.kept_by(cull, ray))
                 .collect(),
-            Target::Bend(bend) => CullKind::TIMED
-                .iter()
-                .map(|cull| bend.kept_by(cull, ray))
-                .collect(),
+            Target::Bend(bend) => {
+                // Each cull on the outer torus, then the wedge alone and behind each cull
+                // but `none` ([`super::bend_wedge_columns`]), as `bend` and `time` price them.
+                let alone = CullKind::TIMED.iter().map(|cull| bend.kept_by(cull, ray));
+                let wedged = CullKind::TIMED
+                    .iter()
+                    .map(|&cull| bend.kept_by(&bend.wedge_cull(cull), ray));
+                alone.chain(wedged).collect()
+            }
         }
+    }
+
+    /// Whether the rows are a pipe bend's, with the wedge columns.
+    pub fn is_bend(&self) -> bool {
+        matches!(self, Target::Bend(_))
     }
 
     /// An `on_surface` row's origin must be a surface point: within

@@ -20,6 +20,7 @@ mod grazing;
 mod hole;
 mod outer_band;
 pub mod secondary;
+pub mod shapes_spec;
 pub mod spec;
 mod uniform;
 

@@ -7,6 +7,7 @@
 //! Unknown fields are errors. Every error names the file, the field and what is allowed.
 
 use super::bend_spec::{BendSpec, parse_bend};
+use super::shapes_spec::{ShapesSpec, parse_shapes};
 use super::{Case, Pose};
 use crate::scene_kind::SceneKind;
 use serde::Deserialize;
@@ -55,6 +56,8 @@ pub struct Workload {
     pub bvh: Option<BvhSpec>,
     /// The pipe bends, if the file has a `bend` key (`torus-cull bend --workload`).
     pub bend: Option<BendSpec>,
+    /// The family members and bends `run` sweeps, if the file has a `shapes` key.
+    pub shapes: Option<ShapesSpec>,
     /// SHA-256 of the file's bytes, hex.
     pub sha256: String,
 }
@@ -73,6 +76,8 @@ struct RawWorkload {
     bvh: Option<serde_json::Value>,
     #[serde(default)]
     bend: Option<serde_json::Value>,
+    #[serde(default)]
+    shapes: Option<serde_json::Value>,
 }
 
 /// The `bvh` key: many-torus scenes for the BVH bench and `render`.
@@ -150,6 +155,7 @@ impl Workload {
             pose: Pose::Random,
             bvh: None,
             bend: None,
+            shapes: None,
             sha256: hex(&Sha256::digest(spec.as_bytes())),
         }
     }
@@ -179,7 +185,7 @@ impl Workload {
             file: path.to_path_buf(),
             field: None,
             message: format!(
-                "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh, bend)"
+                "{e} (expected an object with fields name, seed, cases, nu, rays, and optional pose, bvh, bend, shapes)"
             ),
         })?;
         validate(raw, hex(&Sha256::digest(bytes))).map_err(|(field, message)| WorkloadError {
@@ -195,7 +201,7 @@ impl Workload {
 type FieldError = (String, String);
 
 /// The workload `raw` describes, checked one field at a time in a fixed order (name,
-/// cases, nu, rays, seed, pose, bvh, bend): of a file's several faults, the same one is
+/// cases, nu, rays, seed, pose, bvh, bend, shapes): of a file's several faults, the same one is
 /// named.
 fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
     check_name(&raw.name)?;
@@ -206,6 +212,7 @@ fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
     let pose = parse_pose(raw.pose.as_deref())?;
     let bvh = raw.bvh.map(parse_bvh).transpose()?;
     let bend = raw.bend.map(parse_bend).transpose()?;
+    let shapes = raw.shapes.map(parse_shapes).transpose()?;
     Ok(Workload {
         name: raw.name,
         seed,
@@ -215,6 +222,7 @@ fn validate(raw: RawWorkload, sha256: String) -> Result<Workload, FieldError> {
         pose,
         bvh,
         bend,
+        shapes,
         sha256,
     })
 }

@@ -44,10 +44,20 @@ fn eval_answers_the_pipe_bends_solid() {
     assert_eq!(rows[1][1], "hit");
     assert!((t(1) - 2.0).abs() < 1e-9, "{:?}", rows[1]);
     // Through the cut-away arc (φ = π): a miss the whole torus would hit, which every
-    // torus cull keeps (they bound the outer torus).
+    // torus cull keeps (they bound the outer torus); the wedge columns after them reject it.
     assert_eq!(rows[2][1], "miss");
     assert_eq!(rows[2][3], "");
-    assert!(rows[2][4..].iter().all(|k| k == "1"), "{:?}", rows[2]);
+    let culls = torus_cull::CullKind::TIMED.len();
+    assert!(
+        rows[2][4..4 + culls].iter().all(|k| k == "1"),
+        "{:?}",
+        rows[2]
+    );
+    assert!(
+        rows[2][4 + culls..].iter().all(|k| k == "0"),
+        "{:?}",
+        rows[2]
+    );
     // Onto the start cap (the half-plane φ = 0, z = 0) at ρ = 4.75, in the annulus.
     assert_eq!(rows[3][1], "hit");
     assert!((t(3) - 10.0).abs() < 1e-9, "{:?}", rows[3]);

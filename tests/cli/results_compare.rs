@@ -95,6 +95,7 @@ pub(crate) fn sample() -> Results {
         solver: Vec::new(),
         estimates: Vec::new(),
         ratio: Vec::new(),
+        shapes: Vec::new(),
     }
 }
 

@@ -48,7 +48,11 @@ fn quick_workload_writes_results_and_plots() {
                 .is_some_and(|x| x == "svg")
         })
         .count();
-    assert_eq!(svgs, 10);
+    // The ring's 10; per b/a of the family (5) and per bore of the bends (3), 2 more.
+    assert_eq!(svgs, 10 + 2 * (5 + 3));
+    // Every member of the family and every bend has its records, with no false reject.
+    assert_eq!(r.shapes.len(), 35 * culls + 12 * 2 * culls);
+    assert!(r.shapes.iter().all(|x| x.counts.false_rejects == 0));
 }
 
 #[test]
