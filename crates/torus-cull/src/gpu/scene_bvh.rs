@@ -5,6 +5,7 @@
 //! [`super::GpuScene`] (`scene.rs`); the layout and the method are in its module docs
 //! and in docs/gpu.md, "Tori in a GPU BVH".
 
+use super::scene_spawned::{OWN_CERTIFY, OWN_ESCALATE, OWN_MISS};
 use super::{GpuError, ModuleTorus, as_bytes};
 use crate::{Ray, Torus};
 use glam::{DVec3, Vec3};
@@ -33,6 +34,10 @@ pub(crate) const WIDEN: f32 = 3.814_697_3e-6; // 2⁻¹⁸
 /// An origin farther than this many R from a torus's centre skips the f32 module there,
 /// as the library's host does (`Escalation::FarOrigin`).
 pub(crate) const FAR: f32 = 1_048_576.0; // 2²⁰
+
+/// A leaf's plan (`TcScenePlan.code`, `wgsl/scene.wgsl`) to run the module: a code the
+/// module's results (`TORUS_MISS`, `_HIT`, `_ESCALATE`, `_KEPT`) do not use.
+const PLAN_RUN: u32 = u32::MAX - 1;
 
 /// `status` of a traced ray: a proved miss, a hit, or the host's.
 pub(crate) const STATUS_MISS: u32 = 0;
@@ -119,8 +124,16 @@ fn scene_header() -> String {
          const TORUS_SCENE_MISS: u32 = {STATUS_MISS}u;\n\
          const TORUS_SCENE_HIT: u32 = {STATUS_HIT}u;\n\
          const TORUS_SCENE_HOST: u32 = {STATUS_HOST}u;\n\
-         const TORUS_SCENE_NONE: u32 = {}u;\n",
-        u32::MAX
+         const TORUS_SCENE_NONE: u32 = {}u;\n\
+         const TC_SCENE_REBASE: f32 = {:e};\n\
+         const TC_SCENE_F32_MAX: f32 = {:e};\n\
+         const TORUS_SCENE_OWN_CERTIFY: u32 = {OWN_CERTIFY}u;\n\
+         const TORUS_SCENE_OWN_MISS: u32 = {OWN_MISS}u;\n\
+         const TORUS_SCENE_OWN_ESCALATE: u32 = {OWN_ESCALATE}u;\n\
+         const TC_SCENE_RUN: u32 = {PLAN_RUN}u;\n",
+        u32::MAX,
+        super::frame::REBASE_REL,
+        f32::MAX,
     )
 }
 
@@ -249,8 +262,13 @@ impl SceneBvh {
     /// ([`crate::intersect()`]) at every leaf whose box the ray enters, in f64, the
     /// nearest kept (the lowest index on a tie, as a brute force in index order).
     pub fn host_trace(&self, ray: &Ray) -> Option<SceneHit> {
+        self.host_trace_skipping(ray, None)
+    }
+
+    /// [`SceneBvh::host_trace`] over every torus but `skip`.
+    pub(crate) fn host_trace_skipping(&self, ray: &Ray, skip: Option<u32>) -> Option<SceneHit> {
         let mut best: Option<SceneHit> = None;
-        self.walk(ray, |i| {
+        self.walk(ray, skip, |i| {
             if let Some(h) = host_leaf(&self.tori[i as usize], ray) {
                 if best.is_none_or(|b| h.t < b.t || (h.t == b.t && i < b.torus)) {
                     best = Some(SceneHit {
@@ -267,12 +285,17 @@ impl SceneBvh {
 
     /// The host's any-hit answer ([`crate::occluded()`] at the leaves the ray enters).
     pub fn host_occluded(&self, ray: &Ray) -> bool {
-        self.walk(ray, |i| crate::occluded(&self.tori[i as usize], ray))
+        self.host_occluded_skipping(ray, None)
+    }
+
+    /// [`SceneBvh::host_occluded`] over every torus but `skip`.
+    pub(crate) fn host_occluded_skipping(&self, ray: &Ray, skip: Option<u32>) -> bool {
+        self.walk(ray, skip, |i| crate::occluded(&self.tori[i as usize], ray))
     }
 
     /// Calls `leaf(torus)` at each leaf whose box the ray's range enters (in f64, widened
-    /// by 10⁻⁹ of each slab), until it returns true.
-    fn walk(&self, ray: &Ray, mut leaf: impl FnMut(u32) -> bool) -> bool {
+    /// by 10⁻⁹ of each slab), but `skip`'s, until it returns true.
+    fn walk(&self, ray: &Ray, skip: Option<u32>, mut leaf: impl FnMut(u32) -> bool) -> bool {
         let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
         let range = (f64::from(ray.t_min()), f64::from(ray.t_max()));
         let mut stack = vec![0u32];
@@ -283,7 +306,7 @@ impl SceneBvh {
             }
             if n.count == 0 {
                 stack.extend([n.index, n.index + 1]);
-            } else if leaf(n.index) {
+            } else if Some(n.index) != skip && leaf(n.index) {
                 return true;
             }
         }
