@@ -70,6 +70,7 @@ fn check_closest(
     tally: &mut Tally,
 ) {
     let answers = gpu_scene.trace(cull, rays).expect("trace");
+    assert_eq!(answers.len(), rays.len());
     for (ray, answer) in rays.iter().zip(answers) {
         let cpu = scene.brute_force(ray);
         judge_closest(scene, |_| *ray, answer, cpu, (what, cull), tally);
@@ -88,6 +89,7 @@ fn check_closest_from(
 ) {
     let spawned: Vec<SpawnedRay> = rays.iter().map(spawned_ray).collect();
     let answers = gpu_scene.trace_from(cull, &spawned).expect("trace_from");
+    assert_eq!(answers.len(), rays.len());
     for (s, answer) in rays.iter().zip(answers) {
         let cpu = scene.brute_force_spawned(s);
         let literal = s.literal();
@@ -156,6 +158,7 @@ fn check_any(
     tally: &mut Tally,
 ) {
     let answers = gpu_scene.occluded(cull, rays).expect("occluded");
+    assert_eq!(answers.len(), rays.len());
     for (ray, answer) in rays.iter().zip(answers) {
         count(tally, answer.by);
         let cpu = scene.brute_force_occluded(ray);
@@ -186,6 +189,7 @@ fn check_any_from(
     let answers = gpu_scene
         .occluded_from(cull, &spawned)
         .expect("occluded_from");
+    assert_eq!(answers.len(), rays.len());
     for (s, answer) in rays.iter().zip(answers) {
         count(tally, answer.by);
         let cpu = scene.brute_force_occluded_spawned(s);
@@ -381,7 +385,8 @@ fn into_and_along(
 }
 
 /// Without the device's f64 (turned off), an unproved leaf sends the ray to the host,
-/// which answers it with the f64 path over the BVH's candidates: still 0 mismatches.
+/// which answers it with the f64 path over the BVH's candidates: still 0 mismatches, for
+/// world rays and for rays spawned on a hit (bounces, into the tube, grazing, shadow rays).
 #[test]
 fn gpu_scene_without_f64_finishes_on_the_host() {
     if gpu().is_none() {
@@ -395,10 +400,16 @@ fn gpu_scene_without_f64_finishes_on_the_host() {
     let mut rays = scene.camera_rays(6);
     rays.extend(scene.random_rays(36, 11));
     let shadows = shadow_rays(&scene, &rays);
+    let hits: Vec<_> = rays.iter().map(|r| scene.brute_force(r)).collect();
+    let mut bounces = bounce_rays(&scene, &rays, &hits, 5, 1.0);
+    bounces.extend(into_and_along(&scene, &rays, &hits, 1.0));
+    let lights = spawned_shadows(&scene, &rays, &hits, light(&scene), 1.0);
     let mut tally = Tally::default();
     for cull in [GpuCull::ALL[0], GpuCull::ALL[GpuCull::ALL.len() - 1]] {
         check_closest(&scene, &gpu_scene, cull, &rays, "host-only", &mut tally);
         check_any(&scene, &gpu_scene, cull, &shadows, "host-only", &mut tally);
+        check_closest_from(&scene, &gpu_scene, cull, &bounces, "host-only", &mut tally);
+        check_any_from(&scene, &gpu_scene, cull, &lights, "host-only", &mut tally);
     }
     let _ = writeln!(std::io::stderr(), "GPU scene without f64: {tally:?}");
     assert_eq!(tally.mismatches, 0, "{tally:?}");
@@ -476,6 +487,93 @@ fn gpu_scene_refuses_what_it_cannot_hold() {
         answers[1].hit.map(|h| h.t),
         intersect(&torus, &spawned).map(|h| h.t)
     );
+    // Named with its torus, the device answers it (the surface path) as the CPU does: the
+    // ray up leaves the torus, the ray down through the tube exits it.
+    let into = torus
+        .spawn(&down, hit.t, Vec3::new(0.1, -1.0, 0.05))
+        .expect("spawned");
+    let own = SpawnedRay {
+        ray: spawned,
+        from: 0,
+    };
+    let through = SpawnedRay { ray: into, from: 0 };
+    let from = scene
+        .trace_from(GpuCull::ALL[0], &[own, through])
+        .expect("trace_from");
+    assert!(intersect(&torus, &into).is_some());
+    for (answer, ray) in from.iter().zip([spawned, into]) {
+        assert_ne!(answer.by, Finished::Host);
+        let (gpu_t, cpu_t) = (
+            answer.hit.map(|h| h.t),
+            intersect(&torus, &ray).map(|h| h.t),
+        );
+        assert!(
+            gpu_t == cpu_t
+                || gpu_t
+                    .zip(cpu_t)
+                    .is_some_and(|(g, c)| (g - c).abs() <= tolerance(&torus, &ray, c)),
+            "{gpu_t:?} vs {cpu_t:?}"
+        );
+    }
+    // A torus the scene does not hold is an error naming the ray and the range.
+    let stray = SpawnedRay { from: 1, ..own };
+    let err = scene
+        .trace_from(GpuCull::ALL[0], &[own, stray])
+        .expect_err("no torus 1");
+    assert!(
+        err.to_string().contains("spawned ray 1") && err.to_string().contains("allowed: 0 ..= 0"),
+        "{err}"
+    );
+    let err = scene
+        .occluded_from(GpuCull::ALL[0], &[stray])
+        .expect_err("no torus 1");
+    assert!(err.to_string().contains("spawned ray 0"), "{err}");
+}
+
+/// The torus family's members: the circular ring ones are taken (as the certified f32 path
+/// takes them, the same answers as the `Torus`); a horn, a spindle and an elliptical tube
+/// are refused in words, naming the member and why.
+#[test]
+fn gpu_scene_takes_the_familys_ring_members_only() {
+    let Some(gpu) = gpu() else { return };
+    use torus_cull::family::{Toroid, ToroidError, ToroidKind};
+    let ring = Toroid::new(Vec3::ZERO, Vec3::Y, 1.0, 0.25, 0.25).expect("ring");
+    let torus = Torus::new(Vec3::ZERO, Vec3::Y, 1.0, 0.25).expect("torus");
+    let scene = GpuScene::from_family(gpu, &[ring]).expect("a circular ring member");
+    let down = Ray::new(Vec3::new(1.0, 5.0, 0.0), Vec3::NEG_Y).unwrap();
+    let hit = scene.trace(GpuCull::ALL[0], &[down]).expect("trace")[0].hit;
+    assert_eq!(hit.map(|h| h.torus), Some(0));
+    let cpu = intersect(&torus, &down).expect("a hit").t;
+    assert!(hit.is_some_and(|h| (h.t - cpu).abs() <= tolerance(&torus, &down, cpu)));
+    for (member, kind) in [
+        (
+            Toroid::new(Vec3::ZERO, Vec3::Y, 1.0, 1.0, 1.0),
+            ToroidKind::Horn,
+        ),
+        (
+            Toroid::new(Vec3::ZERO, Vec3::Y, 0.5, 1.0, 1.0),
+            ToroidKind::Spindle,
+        ),
+        (
+            Toroid::new(Vec3::ZERO, Vec3::Y, 1.0, 0.25, 0.5),
+            ToroidKind::Ring,
+        ),
+    ] {
+        let member = member.expect("a valid member");
+        let err = GpuScene::from_family(gpu, &[ring, member]).expect_err("refused");
+        match &err {
+            GpuError::Member {
+                index: 1,
+                error: ToroidError::NotCircular { kind: k, .. },
+            } => assert_eq!(*k, kind),
+            e => panic!("{e:?}"),
+        }
+        let words = err.to_string();
+        assert!(
+            words.contains("family member 1") && words.contains("not a circular ring torus"),
+            "{words}"
+        );
+    }
 }
 
 /// A torus whose centre f32 does not hold (`Torus::new_f64`, 10³ from the world origin,

@@ -30,6 +30,16 @@ pub enum GpuError {
     /// A scene the GPU BVH ([`super::GpuScene`]) cannot hold; the message names the
     /// limit.
     Scene(String),
+    /// A member of the torus family the GPU scene does not take
+    /// ([`super::GpuScene::from_family`]): it takes what the certified f32 path takes,
+    /// the circular ring members ([`crate::family::Toroid::as_torus`]); `error` says which
+    /// member it is (horn, spindle, elliptical tube) and why.
+    Member {
+        /// The member's index in the slice given.
+        index: usize,
+        /// Why ([`crate::family::ToroidError::NotCircular`]).
+        error: crate::family::ToroidError,
+    },
 }
 
 impl fmt::Display for GpuError {
@@ -44,6 +54,9 @@ impl fmt::Display for GpuError {
             GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
             GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
             GpuError::Scene(why) => write!(f, "the GPU scene: {why}"),
+            GpuError::Member { index, error } => {
+                write!(f, "the GPU scene: family member {index}: {error}")
+            }
         }
     }
 }

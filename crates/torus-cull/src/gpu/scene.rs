@@ -195,6 +195,20 @@ impl GpuScene {
         Ok(scene)
     }
 
+    /// [`GpuScene::new`] over members of the torus family: the circular ring members
+    /// ([`SceneBvh::from_family`]).
+    ///
+    /// # Errors
+    ///
+    /// [`GpuError::Member`] for a member that is not a circular ring torus (its index and
+    /// why); then as [`GpuScene::new`].
+    pub fn from_family(
+        gpu: &GpuIntersector,
+        members: &[crate::family::Toroid],
+    ) -> Result<GpuScene, GpuError> {
+        GpuScene::new(gpu, &super::scene_bvh::ring_tori(members)?)
+    }
+
     fn upload(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
         let buffer = storage(&self.device, label, bytes.len() as u64);
         self.queue.write_buffer(&buffer, 0, bytes);
@@ -352,10 +366,12 @@ impl GpuScene {
             placeholder[32] = f32::from_bits(u32::MAX);
         }
         for batch in records.chunks(CHUNK) {
-            let words: Vec<f32> = batch
+            let mut words: Vec<f32> = batch
                 .iter()
                 .flat_map(|p| p.unwrap_or(placeholder))
                 .collect();
+            // Whole 32-byte records, so that the read back decodes every word.
+            words.resize(words.len().next_multiple_of(8), 0.0);
             let header = [
                 batch.len() as u32,
                 cull.code(),
@@ -397,6 +413,13 @@ impl GpuScene {
             )?;
             // Each ray's answer is over the first 8 of its N words.
             let words: Vec<f32> = read.into_iter().flatten().flatten().collect();
+            if words.len() < batch.len() * N {
+                return Err(GpuError::Readback(format!(
+                    "{} words read back for {} rays of {N}",
+                    words.len(),
+                    batch.len()
+                )));
+            }
             out.extend(
                 batch
                     .iter()

@@ -7,6 +7,7 @@
 
 use super::scene_spawned::{OWN_CERTIFY, OWN_ESCALATE, OWN_MISS};
 use super::{GpuError, ModuleTorus, as_bytes};
+use crate::family::Toroid;
 use crate::{Ray, Torus};
 use glam::{DVec3, Vec3};
 use obvhs::BvhBuildParams;
@@ -180,6 +181,20 @@ impl SceneBvh {
         })
     }
 
+    /// [`SceneBvh::new`] over members of the torus family: the circular ring members, as
+    /// the certified f32 path takes them ([`crate::family::Toroid::as_torus`], the same
+    /// answers bit for bit as the [`Torus`]).
+    ///
+    /// # Errors
+    ///
+    /// [`GpuError::Member`] for the first member that is not a circular ring torus (a
+    /// horn, a spindle, an elliptical tube: the kernel's module, its f64 finish and the
+    /// culls' bounds are the circular ring's), naming its index and why; then as
+    /// [`SceneBvh::new`].
+    pub fn from_family(members: &[Toroid]) -> Result<SceneBvh, GpuError> {
+        SceneBvh::new(&ring_tori(members)?)
+    }
+
     /// Nodes in the BVH.
     pub fn node_count(&self) -> u32 {
         self.nodes.len() as u32
@@ -312,6 +327,19 @@ impl SceneBvh {
         }
         false
     }
+}
+
+/// The family's members as the tori they are ([`SceneBvh::from_family`]).
+pub(crate) fn ring_tori(members: &[Toroid]) -> Result<Vec<Torus>, GpuError> {
+    members
+        .iter()
+        .enumerate()
+        .map(|(index, m)| {
+            m.as_torus()
+                .copied()
+                .map_err(|error| GpuError::Member { index, error })
+        })
+        .collect()
 }
 
 /// The f64 path for one leaf on the host: the ray's nearest hit on `torus`.
