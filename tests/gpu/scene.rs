@@ -515,6 +515,43 @@ fn gpu_scene_refuses_what_it_cannot_hold() {
             "{gpu_t:?} vs {cpu_t:?}"
         );
     }
+    // From the top of the tube along the tangent plane (the origin's root double: the
+    // host forms no cubic), and across the hole to the far side's top: the device's f64
+    // finish from the surface answers the own torus where f32 proves nothing.
+    let top = Vec3::new(1.0, 0.25, 0.0);
+    let grazing: Vec<SpawnedRay> = [Vec3::Z, Vec3::X, Vec3::NEG_X, Vec3::new(-1.0, -1e-3, 0.0)]
+        .into_iter()
+        .map(|d| SpawnedRay {
+            ray: Ray::from_surface(top, d).expect("ray"),
+            from: 0,
+        })
+        .collect();
+    let answers = scene
+        .trace_from(GpuCull::ALL[0], &grazing)
+        .expect("trace_from");
+    let mut on_device = 0;
+    for (s, answer) in grazing.iter().zip(&answers) {
+        let (gpu_t, cpu_t) = (
+            answer.hit.map(|h| h.t),
+            intersect(&torus, &s.ray).map(|h| h.t),
+        );
+        assert!(
+            gpu_t == cpu_t
+                || gpu_t
+                    .zip(cpu_t)
+                    .is_some_and(|(g, c)| (g - c).abs() <= tolerance(&torus, &s.ray, c)),
+            "{:?}: {gpu_t:?} vs {cpu_t:?}",
+            s.ray
+        );
+        on_device += usize::from(answer.by == Finished::Device);
+    }
+    if scene.finishes_on_device() {
+        // Measured on lavapipe: the three rays in the tangent plane.
+        assert!(
+            on_device >= 2,
+            "{on_device} own-torus answers from the f64 finish"
+        );
+    }
     // A torus the scene does not hold is an error naming the ray and the range.
     let stray = SpawnedRay { from: 1, ..own };
     let err = scene

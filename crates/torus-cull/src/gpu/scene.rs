@@ -1,6 +1,7 @@
 //! Tori in a GPU BVH ([`GpuScene`]): a WGSL compute traversal of an obvhs BVH2 over ring
 //! tori, with a cull and the certified f32 intersection at each leaf, closest hit and any
-//! hit (shadow rays with a `t_max`).
+//! hit (shadow rays with a `t_max`), for world rays and for secondary rays spawned on a
+//! torus of the scene ([`SpawnedRay`], `scene_spawned.rs`).
 //!
 //! **Why BVH2.** obvhs builds BVH2 and CWBVH. CWBVH traverses incoherent rays about 2×
 //! faster than the earlier binary traversal on NVIDIA hardware (Ylitie et al., HPG 2017),
@@ -22,22 +23,28 @@
 //! - tori in f64 (`TorusParams64`, 136 bytes each, [`super::ModuleTorus::params64`]):
 //!   only where the device finishes in f64.
 //! - rays, read and overwritten in place: in, `(o, t_min)`, `(d, t_max)` with the range
-//!   clipped on the host to where the scene's bounding sphere is (finite ends); out,
-//!   `(t, n.xyz)` and `(torus, status, f64 leaves, leaves)` as f32.
+//!   clipped on the host to where the scene's bounding sphere is (finite ends), and for a
+//!   spawned ray (`scene_from_main`) its `TorusSceneOwn` after them
+//!   ([`SceneBvh::prepare_from`], [`SPAWNED_WORDS`] words a ray in all); out, `(t, n.xyz)`
+//!   and `(torus, status, f64 leaves, leaves)` as f32 over the ray's first 8 words.
 //!
 //! **The kernel** (`wgsl/scene.wgsl`) pops a node, tests its box against `[t_min, the
 //! nearest hit so far]` (a slab test widened by 2⁻¹⁸ of each slab's size, so no box a
 //! true hit lies in is skipped), pushes an inner node's children (the nearer last) and
-//! at a leaf runs the f32 module on `o − c` with the range clipped to the torus's reach.
-//! A leaf it cannot prove goes to the f64 finish on the device (`wgsl/scene_f64.wgsl`)
+//! at a leaf runs the f32 module with the range clipped to the torus's reach, on the ray
+//! as the single-torus host packs it ([`super::Frame`]'s `pack`): where the shader has f64,
+//! `o − c` from the f64 centre and a far origin moved to its foot point, in f64 on the
+//! device (`wgsl/scene_f64.wgsl`), else `o − c` in f32 (`wgsl/scene_host.wgsl`); a spawned
+//! ray's own torus runs the module's surface path on the host's record. A leaf it cannot
+//! prove goes to the f64 finish on the device (`wgsl/scene_f64.wgsl`)
 //! where the adapter has `SHADER_F64`; otherwise, or where that hands it back, the leaf
 //! stays unproved, the walk goes on, and the ray's answer is the host's (the f64 path
 //! over the BVH's candidates: [`SceneBvh::host_trace`]). An unproved leaf is never taken
 //! for a miss, and a closest-hit walk never stops early: it ends when the stack is empty.
 //!
 //! **What the host answers itself** (counted as [`Finished::Host`]): a ray from a surface
-//! point ([`Ray::from_surface`]: its own torus needs the surface path, not yet in the
-//! kernel); an origin with a coordinate beyond [`super::MAX_COORDINATE`], a direction whose
+//! point given without its torus ([`Ray::from_surface`] names no shape: [`GpuScene::trace`]
+//! answers it as [`crate::intersect()`] over every torus would); an origin with a coordinate beyond [`super::MAX_COORDINATE`], a direction whose
 //! largest component is outside [`DIRECTION_RANGE`], or a range the bounding sphere
 //! cannot clip to finite f32 (the slab test's products stay finite within those).
 

@@ -70,12 +70,14 @@ struct Node {
 /// ([`super::wgsl_module`]), the f64 finish ([`super::wgsl_finish_module`]) where `f64`,
 /// the bindings `torus_scene_nodes` (binding 0), `torus_scene_tori` (1) and, where
 /// `f64`, `torus_scene_tori64` (2) at `@group(group)`, and
-/// `torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit`
+/// `torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit` and, for a
+/// ray spawned on a torus, `torus_scene_trace_from(ray, own: TorusSceneOwn, cull, any_hit)`
 /// (`wgsl/scene.wgsl`). Fill the buffers with [`SceneBvh::node_bytes`],
 /// [`SceneBvh::tori_bytes`] and [`SceneBvh::tori64_bytes`], each ray with
-/// [`SceneBvh::prepare`]; an answer with status `TORUS_SCENE_HOST` is finished by
-/// [`SceneBvh::host_trace`] (or [`SceneBvh::host_occluded`]). `f64` needs
-/// `wgpu::Features::SHADER_F64`.
+/// [`SceneBvh::prepare`] (a spawned one with [`SceneBvh::prepare_from`]); an answer with
+/// status `TORUS_SCENE_HOST` is finished by [`SceneBvh::host_trace`] (or
+/// [`SceneBvh::host_occluded`], [`SceneBvh::host_trace_from`],
+/// [`SceneBvh::host_occluded_from`]). `f64` needs `wgpu::Features::SHADER_F64`.
 pub fn wgsl_scene_module(group: u32, f64: bool) -> String {
     let mut out = super::wgsl_module();
     if f64 {
@@ -231,7 +233,8 @@ impl SceneBvh {
     }
 
     /// The tori buffer's bytes (`TorusSceneTorus`: `TorusParams`, then `(c, R + r)`, with
-    /// `−(R + r)` where the centre is not an f32 value: that torus skips the f32 leaf).
+    /// `−(R + r)` where the centre is not an f32 value: without f64 in the shader that
+    /// torus skips the f32 leaf; with it, the leaf forms `o − c` from the f64 centre).
     pub fn tori_bytes(&self) -> Vec<u8> {
         let mut words = Vec::with_capacity(self.tori.len() * 32);
         for t in &self.tori {
@@ -239,8 +242,8 @@ impl SceneBvh {
             words.extend(t.center().to_array());
             // A centre given in f64 (`Torus::new_f64`) that f32 does not hold: the f32
             // module's line error assumes o − c rounded once from the true difference,
-            // which an f32 centre no longer gives, so such a torus skips the f32 leaf
-            // (marked by a negative R + r) and goes to the f64 finish or the host.
+            // which an f32 centre no longer gives, so without f64 in the shader such a
+            // torus skips the f32 leaf (marked by a negative R + r) and goes to the host.
             let size = t.major_radius() + t.minor_radius();
             let exact = t.center().as_dvec3() == t.center_f64();
             words.push(if exact { size } else { -size });
