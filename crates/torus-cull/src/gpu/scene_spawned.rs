@@ -132,3 +132,52 @@ impl SceneBvh {
 pub(crate) fn host_own_leaf(torus: &Torus, ray: &Ray) -> Option<crate::Hit> {
     crate::intersect(torus, ray)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// A spawned ray's record: the literal ray's world record, its own torus's module ray
+    /// and surface record as the single-torus kernel gets them, its index and what to do;
+    /// a literal ray names no torus; a torus the scene lacks is an error naming the range;
+    /// the host's answer is the brute force's (own torus on the surface ray).
+    #[test]
+    fn a_spawned_ray_carries_its_torus_and_its_surface_record() {
+        let tori = [
+            Torus::new(Vec3::ZERO, Vec3::Y, 1.0, 0.25).unwrap(),
+            Torus::new(Vec3::new(1.2, 0.0, 0.0), Vec3::Z, 1.0, 0.25).unwrap(),
+        ];
+        let bvh = SceneBvh::new(&tori).unwrap();
+        let down = Ray::new(Vec3::new(1.0, 5.0, 0.0), Vec3::NEG_Y).unwrap();
+        let hit = crate::intersect(&tori[0], &down).expect("a hit");
+        let into = tori[0]
+            .spawn(&down, hit.t, Vec3::new(0.1, -1.0, 0.05))
+            .unwrap();
+        let spawned = SpawnedRay { ray: into, from: 0 };
+        let words = bvh.prepare_from(&spawned).unwrap().expect("on the device");
+        assert_eq!(words[..8], bvh.prepare(&into.literal()).unwrap());
+        let own = ModuleTorus::new(&tori[0]).prepare(&into).from_surface();
+        assert_eq!(words[8..16], own.words);
+        assert_eq!(words[16..32], own.surface);
+        assert_eq!(words[32].to_bits(), 0);
+        assert!([OWN_CERTIFY, OWN_MISS, OWN_ESCALATE].contains(&words[33].to_bits()));
+        let literal = SpawnedRay { ray: down, from: 1 };
+        let words = bvh.prepare_from(&literal).unwrap().unwrap();
+        assert_eq!(words[32].to_bits(), u32::MAX);
+        let stray = SpawnedRay { from: 2, ..spawned };
+        let err = bvh.prepare_from(&stray).unwrap_err();
+        assert!(err.to_string().contains("allowed: 0 ..= 1"), "{err}");
+        // The host: the own torus sees the surface ray, the other one the literal ray.
+        let brute = [
+            crate::intersect(&tori[0], &into).map(|h| (0, h.t)),
+            crate::intersect(&tori[1], &into.literal()).map(|h| (1, h.t)),
+        ]
+        .into_iter()
+        .flatten()
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+        let host = bvh.host_trace_from(&spawned).unwrap();
+        assert_eq!(host.map(|h| (h.torus, h.t)), brute);
+        assert!(brute.is_some());
+    }
+}
