@@ -2,7 +2,9 @@
 //! (`torus_cull::gpu::wgsl_scene_module`): 1 000 tori in an obvhs BVH2, one camera ray
 //! per pixel traced with `torus_scene_trace` behind Skala's cull, and every pixel's hit
 //! checked against the CPU (`torus_cull::intersect` over all 1 000 tori, the nearest
-//! kept). The renderer owns the device, its rays and its output (group 1); the module's
+//! kept); then one mirror bounce per hit, spawned on the hit torus (`Torus::spawn`) and
+//! traced with `torus_scene_trace_from` (that torus on its surface path, the others on the
+//! literal ray), checked the same way. The renderer owns the device, its rays and its output (group 1); the module's
 //! bindings are at group 0 ([`SceneBvh`]'s bytes). Where the adapter offers
 //! `SHADER_F64` the shader includes the f64 finish, so no ray needs the host; otherwise
 //! the rays the shader marks `TORUS_SCENE_HOST` are finished by `SceneBvh::host_trace`.
@@ -12,7 +14,7 @@
 use glam::Vec3;
 use std::sync::mpsc;
 use torus_cull::gpu::wgpu::{self, util::DeviceExt};
-use torus_cull::gpu::{SceneBvh, wgsl_scene_module};
+use torus_cull::gpu::{SPAWNED_WORDS, SceneBvh, SpawnedRay, wgsl_scene_module};
 use torus_cull::{Ray, Torus, intersect};
 
 /// The renderer's part of the shader: its rays and its output, and the call.
@@ -30,6 +32,28 @@ fn shade(@builtin(global_invocation_id) gid: vec3<u32>) {
     let torus = select(-1.0, f32(h.torus), h.status == TORUS_SCENE_HIT);
     pixel_hits[2u * i] = vec4<f32>(h.t, h.normal);
     pixel_hits[2u * i + 1u] = vec4<f32>(torus, f32(h.status), 0.0, 0.0);
+}
+
+// A ray spawned on a hit: the world ray, then its own torus's record (SceneBvh::prepare_from).
+struct BounceRay {
+    ray: TorusRay,
+    own: TorusSceneOwn,
+};
+
+@group(1) @binding(2) var<storage, read> bounce_rays: array<BounceRay>;
+@group(1) @binding(3) var<storage, read_write> bounce_hits: array<vec4<f32>>;
+
+@compute @workgroup_size(64)
+fn bounce(@builtin(global_invocation_id) gid: vec3<u32>) {
+    let i = gid.x;
+    if (i >= arrayLength(&bounce_rays)) {
+        return;
+    }
+    let b = bounce_rays[i];
+    let h = torus_scene_trace_from(b.ray, b.own, TORUS_CULL_SKALA, false);
+    let torus = select(-1.0, f32(h.torus), h.status == TORUS_SCENE_HIT);
+    bounce_hits[2u * i] = vec4<f32>(h.t, h.normal);
+    bounce_hits[2u * i + 1u] = vec4<f32>(torus, f32(h.status), 0.0, 0.0);
 }
 "#;
 
@@ -94,14 +118,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         label: Some("renderer with the torus scene"),
         source: wgpu::ShaderSource::Wgsl(source.into()),
     });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("shade"),
-        layout: None,
-        module: &module,
-        entry_point: Some("shade"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
     let storage = |label, contents: &[u8], extra| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some(label),
@@ -113,68 +129,87 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let nodes = storage("nodes", &bvh.node_bytes(), none);
     let tori_buffer = storage("tori", &bvh.tori_bytes(), none);
     let tori64 = f64.then(|| storage("tori f64", &bvh.tori64_bytes(), none));
+    let mut scene_buffers = vec![&nodes, &tori_buffer];
+    scene_buffers.extend(tori64.as_ref());
+    // One pass of `entry` over `count` records `words`: the answers, 8 words a ray.
+    let run = |entry: &str,
+               words: &[f32],
+               count: usize|
+     -> Result<Vec<f32>, Box<dyn std::error::Error>> {
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: None,
+            module: &module,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        let input = storage("rays", &bytes, none);
+        let size = count as u64 * 32;
+        let output = storage(
+            "hits",
+            &vec![0; size as usize],
+            wgpu::BufferUsages::COPY_SRC,
+        );
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("staging"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let group = |index: u32, buffers: &[&wgpu::Buffer], first: u32| {
+            let entries: Vec<wgpu::BindGroupEntry> = buffers
+                .iter()
+                .zip(first..)
+                .map(|(b, binding)| wgpu::BindGroupEntry {
+                    binding,
+                    resource: b.as_entire_binding(),
+                })
+                .collect();
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: &pipeline.get_bind_group_layout(index),
+                entries: &entries,
+            })
+        };
+        let scene_group = group(0, &scene_buffers, 0);
+        // The pixels' buffers at bindings 0 and 1, the bounces' at 2 and 3.
+        let first = if entry == "shade" { 0 } else { 2 };
+        let ray_group = group(1, &[&input, &output], first);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_compute_pass(&Default::default());
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &scene_group, &[]);
+            pass.set_bind_group(1, &ray_group, &[]);
+            pass.dispatch_workgroups(count.div_ceil(64) as u32, 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&output, 0, &staging, 0, size);
+        queue.submit([encoder.finish()]);
+        let (tx, rx) = mpsc::channel();
+        staging
+            .slice(..)
+            .map_async(wgpu::MapMode::Read, move |r| drop(tx.send(r)));
+        device.poll(wgpu::PollType::wait_indefinitely())?;
+        rx.recv()??;
+        let records = staging
+            .slice(..)
+            .get_mapped_range()?
+            .chunks_exact(4)
+            .map(|b| f32::from_le_bytes(b.try_into().expect("4 bytes")))
+            .collect();
+        Ok(records)
+    };
     // Every ray is in the kernel's domain here; a renderer would trace the `None`s on the
     // host (`bvh.host_trace`).
     let words: Vec<f32> = rays
         .iter()
         .flat_map(|r| bvh.prepare(r).expect("a camera ray the kernel takes"))
         .collect();
-    let ray_bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-    let pixel_rays = storage("pixel rays", &ray_bytes, none);
-    let size = ray_bytes.len() as u64;
-    let hits = storage(
-        "pixel hits",
-        &vec![0; size as usize],
-        wgpu::BufferUsages::COPY_SRC,
-    );
-    let staging = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("staging"),
-        size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let group = |index: u32, buffers: &[&wgpu::Buffer]| {
-        let entries: Vec<wgpu::BindGroupEntry> = buffers
-            .iter()
-            .zip(0..)
-            .map(|(b, binding)| wgpu::BindGroupEntry {
-                binding,
-                resource: b.as_entire_binding(),
-            })
-            .collect();
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(index),
-            entries: &entries,
-        })
-    };
-    let mut scene_buffers = vec![&nodes, &tori_buffer];
-    scene_buffers.extend(tori64.as_ref());
-    let scene_group = group(0, &scene_buffers);
-    let pixel_group = group(1, &[&pixel_rays, &hits]);
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &scene_group, &[]);
-        pass.set_bind_group(1, &pixel_group, &[]);
-        pass.dispatch_workgroups(rays.len().div_ceil(64) as u32, 1, 1);
-    }
-    encoder.copy_buffer_to_buffer(&hits, 0, &staging, 0, size);
-    queue.submit([encoder.finish()]);
-    let (tx, rx) = mpsc::channel();
-    staging
-        .slice(..)
-        .map_async(wgpu::MapMode::Read, move |r| drop(tx.send(r)));
-    device.poll(wgpu::PollType::wait_indefinitely())?;
-    rx.recv()??;
-    let records: Vec<f32> = staging
-        .slice(..)
-        .get_mapped_range()?
-        .chunks_exact(4)
-        .map(|b| f32::from_le_bytes(b.try_into().expect("4 bytes")))
-        .collect();
+    let records = run("shade", &words, rays.len())?;
     let (mut hits_seen, mut host, mut mismatches) = (0, 0, 0);
+    let mut bounces = Vec::new();
     for (ray, r) in rays.iter().zip(records.chunks_exact(8)) {
         let gpu = match r[5] as u32 {
             1 => Some((r[4] as u32, r[0])),
@@ -191,23 +226,74 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .filter_map(|(i, t)| intersect(t, ray).map(|h| (i as u32, h.t)))
             .min_by(|a, b| a.1.total_cmp(&b.1));
         hits_seen += usize::from(cpu.is_some());
-        let same = match (gpu, cpu) {
-            (None, None) => true,
-            (Some((i, t)), Some((j, u))) => i == j && (t - u).abs() <= 2.5e-4 * 1.25 + 4e-7 * u,
-            _ => false,
+        mismatches += usize::from(!same(gpu, cpu));
+        // A mirror bounce from the CPU's hit, spawned on its torus.
+        if let Some((i, t)) = cpu {
+            let n = intersect(&tori[i as usize], ray).expect("the hit").normal;
+            let d = ray.dir().normalize();
+            let dir = d - 2.0 * d.dot(n) * n;
+            if let Ok(ray) = tori[i as usize].spawn(ray, t, dir) {
+                bounces.push(SpawnedRay { ray, from: i });
+            }
+        }
+    }
+    let words: Vec<f32> = bounces
+        .iter()
+        .flat_map(|b| -> [f32; SPAWNED_WORDS] {
+            bvh.prepare_from(b)
+                .expect("a torus of the scene")
+                .expect("a bounce the kernel takes")
+        })
+        .collect();
+    let records = run("bounce", &words, bounces.len())?;
+    let (mut bounce_hits, mut bounce_host, mut bounce_mismatches) = (0, 0, 0);
+    for (b, r) in bounces.iter().zip(records.chunks_exact(8)) {
+        let gpu = match r[5] as u32 {
+            1 => Some((r[4] as u32, r[0])),
+            0 => None,
+            _ => {
+                bounce_host += 1;
+                bvh.host_trace_from(b)?.map(|h| (h.torus, h.t))
+            }
         };
-        mismatches += usize::from(!same);
+        // The CPU: its own torus on the surface ray, every other on the literal one.
+        let literal = b.ray.literal();
+        let cpu = tori
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| {
+                let seen = if i as u32 == b.from { &b.ray } else { &literal };
+                intersect(t, seen).map(|h| (i as u32, h.t))
+            })
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        bounce_hits += usize::from(cpu.is_some());
+        bounce_mismatches += usize::from(!same(gpu, cpu));
     }
     println!(
         "{} ({:?}), f64 in the shader: {f64}: {} rays over {} tori, {hits_seen} hits, \
-         {host} finished on the host, {mismatches} differ from the CPU",
+         {host} finished on the host, {mismatches} differ from the CPU; {} bounces, \
+         {bounce_hits} hits, {bounce_host} finished on the host, {bounce_mismatches} differ",
         adapter.get_info().name,
         adapter.get_info().device_type,
         rays.len(),
-        tori.len()
+        tori.len(),
+        bounces.len()
     );
-    if mismatches > 0 {
-        return Err(format!("{mismatches} pixels differ from the CPU").into());
+    if mismatches + bounce_mismatches > 0 {
+        return Err(format!(
+            "{mismatches} pixels and {bounce_mismatches} bounces differ from the CPU"
+        )
+        .into());
     }
     Ok(())
+}
+
+/// The same hit or miss, the same torus, t within the certified f32 bound (2·10⁻⁴·(R + r)
+/// for unit-length directions, R + r = 1.25) and rounding.
+fn same(gpu: Option<(u32, f32)>, cpu: Option<(u32, f32)>) -> bool {
+    match (gpu, cpu) {
+        (None, None) => true,
+        (Some((i, t)), Some((j, u))) => i == j && (t - u).abs() <= 2.5e-4 * 1.25 + 4e-7 * u,
+        _ => false,
+    }
 }

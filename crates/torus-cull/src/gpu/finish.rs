@@ -181,14 +181,7 @@ impl FinishPipeline {
         verdicts: &wgpu::Buffer,
     ) -> FinishBuffers {
         let size = rays as u64 * super::RAY_BYTES;
-        let buffer = |label, size, usage| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
+        let buffer = |label, size, usage| super::dispatch::buffer(device, label, size, usage);
         use wgpu::BufferUsages as Use;
         let world = buffer("torus-cull world rays", size, Use::STORAGE | Use::COPY_DST);
         let torus = buffer(
@@ -206,20 +199,12 @@ impl FinishPipeline {
             size,
             Use::MAP_READ | Use::COPY_DST,
         );
-        let entries = [params, &world, verdicts, &torus, &finished];
-        let entries: Vec<wgpu::BindGroupEntry> = entries
-            .iter()
-            .enumerate()
-            .map(|(k, b)| wgpu::BindGroupEntry {
-                binding: k as u32,
-                resource: b.as_entire_binding(),
-            })
-            .collect();
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("torus-cull f64 finish bind group"),
-            layout: &self.layout,
-            entries: &entries,
-        });
+        let bind_group = super::dispatch::bind_group(
+            device,
+            &self.layout,
+            "torus-cull f64 finish bind group",
+            &[params, &world, verdicts, &torus, &finished],
+        );
         FinishBuffers {
             world,
             torus,

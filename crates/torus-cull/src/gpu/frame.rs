@@ -16,7 +16,7 @@ const FAR_REL: f64 = 1_048_576.0;
 
 /// Origins farther than this many (R + r) from the centre are moved to their line's foot
 /// point on the host, in f64, before the kernel sees them (see [`Frame::pack`]).
-const REBASE_REL: f64 = 2.0;
+pub(crate) const REBASE_REL: f64 = 2.0;
 
 /// The torus as the kernel's parameter block, and what packing a ray needs of it (f64).
 pub(crate) struct Frame {

@@ -1,16 +1,16 @@
 //! The intersector: a wgpu device with the kernel compiled ([`GpuIntersector`]), its
-//! buffers, the pipelines and the dispatch (upload, run, read back), and the f64 finish
-//! pass chained in the same command buffer.
+//! buffers, the pipelines and the dispatch (upload, then `dispatch.rs`'s run and read
+//! back), and the f64 finish pass chained in the same command buffer.
 
-use super::finish;
 use super::{
     Escalation, Finished, Frame, GpuCull, Mode, PARAMS_BYTES, Packed, RAY_BYTES, SURFACE_BYTES,
-    as_bytes, decode_records, kernel_source, shifted, verdict,
+    as_bytes, compute_pipeline, kernel_source, shifted, verdict,
 };
+use super::{dispatch, finish};
 use crate::certified::{F32Hit, F32Verdict};
 use crate::{Ray, Torus};
 use std::fmt;
-use std::sync::{Mutex, mpsc};
+use std::sync::Mutex;
 
 /// The Debian package that gives a machine without a GPU a software Vulkan adapter.
 pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
@@ -30,6 +30,16 @@ pub enum GpuError {
     /// A scene the GPU BVH ([`super::GpuScene`]) cannot hold; the message names the
     /// limit.
     Scene(String),
+    /// A member of the torus family the GPU scene does not take
+    /// ([`super::GpuScene::from_family`]): it takes what the certified f32 path takes,
+    /// the circular ring members ([`crate::family::Toroid::as_torus`]); `error` says which
+    /// member it is (horn, spindle, elliptical tube) and why.
+    Member {
+        /// The member's index in the slice given.
+        index: usize,
+        /// Why ([`crate::family::ToroidError::NotCircular`]).
+        error: crate::family::ToroidError,
+    },
 }
 
 impl fmt::Display for GpuError {
@@ -44,6 +54,9 @@ impl fmt::Display for GpuError {
             GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
             GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
             GpuError::Scene(why) => write!(f, "the GPU scene: {why}"),
+            GpuError::Member { index, error } => {
+                write!(f, "the GPU scene: family member {index}: {error}")
+            }
         }
     }
 }
@@ -79,6 +92,9 @@ pub struct GpuIntersector {
     pub(crate) device_finish: bool,
     /// Threads per workgroup of the kernel (one of [`WORKGROUP_SIZES`]).
     pub(crate) workgroup: u32,
+    /// The scene kernels compiled so far, shared by every [`super::GpuScene`] on this
+    /// device (the text depends on f64 alone, not on the scene).
+    pub(crate) scene_kernels: super::scene::Kernels,
 }
 
 /// The parameter block, the rays, their surface records, the results and their staging
@@ -210,6 +226,7 @@ impl GpuIntersector {
             finish,
             device_finish: true,
             workgroup: threads,
+            scene_kernels: Default::default(),
         })
     }
 
@@ -240,14 +257,7 @@ impl GpuIntersector {
     /// Buffers for `rays` rays a dispatch.
     pub(crate) fn buffers(&self, rays: usize) -> Buffers {
         let size = rays as u64 * RAY_BYTES;
-        let buffer = |label, size, usage| {
-            self.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size,
-                usage,
-                mapped_at_creation: false,
-            })
-        };
+        let buffer = |label, size, usage| dispatch::buffer(&self.device, label, size, usage);
         use wgpu::BufferUsages as Use;
         let [params, input, surfaces, output, staging] = [
             (
@@ -265,28 +275,12 @@ impl GpuIntersector {
             ("torus-cull staging", size, Use::MAP_READ | Use::COPY_DST),
         ]
         .map(|(label, size, usage)| buffer(label, size, usage));
-        let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("torus-cull bind group"),
-            layout: &self.layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: params.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: input.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: output.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: surfaces.as_entire_binding(),
-                },
-            ],
-        });
+        let bind_group = dispatch::bind_group(
+            &self.device,
+            &self.layout,
+            "torus-cull bind group",
+            &[&params, &input, &output, &surfaces],
+        );
         let finish = match &self.finish {
             Ok(pass) if self.device_finish => {
                 Some(pass.buffers(&self.device, rays, &params, &output))
@@ -450,59 +444,44 @@ impl GpuIntersector {
         self.queue.write_buffer(input, 0, &as_bytes(&words));
         let bytes = packed.len() as u64 * RAY_BYTES;
         let groups = packed.len().div_ceil(self.workgroup as usize) as u32;
-        let mut encoder = self
-            .device
-            .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                label: Some("torus-cull dispatch"),
+        let mut passes = vec![dispatch::Pass {
+            pipeline: &self.pipeline,
+            bind_group,
+            groups,
+        }];
+        let mut reads = vec![dispatch::Read {
+            source: output,
+            staging,
+            bytes,
+        }];
+        if let (Some(input), Some(fb), Ok(pass)) = (finish, &buffers.finish, &self.finish) {
+            let world: Vec<f32> = input.world.iter().flatten().copied().collect();
+            let instructions: Vec<f32> = input.instructions.iter().flatten().copied().collect();
+            self.queue.write_buffer(&fb.torus, 0, input.torus);
+            self.queue.write_buffer(&fb.world, 0, &as_bytes(&world));
+            self.queue
+                .write_buffer(&fb.finished, 0, &as_bytes(&instructions));
+            passes.push(dispatch::Pass {
+                pipeline: &pass.pipeline,
+                bind_group: &fb.bind_group,
+                groups,
             });
-        {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("torus-cull pass"),
-                timestamp_writes: None,
+            reads.push(dispatch::Read {
+                source: &fb.finished,
+                staging: &fb.staging,
+                bytes,
             });
-            pass.set_pipeline(&self.pipeline);
-            pass.set_bind_group(0, bind_group, &[]);
-            pass.dispatch_workgroups(groups, 1, 1);
         }
-        encoder.copy_buffer_to_buffer(output, 0, staging, 0, bytes);
-        let second = match (finish, &buffers.finish, &self.finish) {
-            (Some(input), Some(fb), Ok(pass)) => {
-                let world: Vec<f32> = input.world.iter().flatten().copied().collect();
-                let instructions: Vec<f32> = input.instructions.iter().flatten().copied().collect();
-                self.queue.write_buffer(&fb.torus, 0, input.torus);
-                self.queue.write_buffer(&fb.world, 0, &as_bytes(&world));
-                self.queue
-                    .write_buffer(&fb.finished, 0, &as_bytes(&instructions));
-                {
-                    let mut second = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                        label: Some("torus-cull f64 finish pass"),
-                        timestamp_writes: None,
-                    });
-                    second.set_pipeline(&pass.pipeline);
-                    second.set_bind_group(0, &fb.bind_group, &[]);
-                    second.dispatch_workgroups(groups, 1, 1);
-                }
-                encoder.copy_buffer_to_buffer(&fb.finished, 0, &fb.staging, 0, bytes);
-                Some(&fb.staging)
-            }
-            _ => None,
-        };
-        self.queue.submit([encoder.finish()]);
-        let read = |staging: &wgpu::Buffer| -> Result<Vec<[f32; 8]>, GpuError> {
-            let slice = staging.slice(..bytes);
-            self.map_read(&slice)?;
-            let records = {
-                let view = slice
-                    .get_mapped_range()
-                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-                decode_records(&view).collect()
-            };
-            staging.unmap();
-            Ok(records)
-        };
-        let records = read(staging)?;
-        let finished = second.map(read).transpose()?;
-        Ok((records, finished))
+        let mut read = dispatch::run(
+            &self.device,
+            &self.queue,
+            "torus-cull dispatch",
+            &passes,
+            &reads,
+        )?
+        .into_iter();
+        let records = read.next().expect("the kernel's records");
+        Ok((records, read.next()))
     }
 
     /// [`GpuIntersector::intersect`], finished: every escalated ray is answered in f64,
@@ -610,78 +589,11 @@ pub(crate) fn upload_surfaces(gpu: &GpuIntersector, buffers: &Buffers, packed: &
 /// pass's `(t, n.xyz, point.xyz, status)` where it ran.
 pub(crate) type Dispatched = (Vec<[f32; 8]>, Option<Vec<[f32; 8]>>);
 
-/// A compute pipeline of the WGSL `source` at `entry_point`, and its bind group layout:
-/// binding k is a buffer of type `bindings[k]`, visible to compute. The kernel and the f64
-/// finish pass are built so; a caller wraps this in a validation error scope to get a
-/// shader that does not compile on the adapter back as an error.
-pub(crate) fn compute_pipeline(
-    device: &wgpu::Device,
-    label: &str,
-    source: String,
-    bindings: &[wgpu::BufferBindingType],
-    entry_point: &str,
-) -> (wgpu::ComputePipeline, wgpu::BindGroupLayout) {
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(&format!("{label} module")),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
-    });
-    let entries: Vec<wgpu::BindGroupLayoutEntry> = bindings
-        .iter()
-        .zip(0..)
-        .map(|(&ty, binding)| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::COMPUTE,
-            ty: wgpu::BindingType::Buffer {
-                ty,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        })
-        .collect();
-    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some(&format!("{label} bindings")),
-        entries: &entries,
-    });
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some(&format!("{label} layout")),
-        bind_group_layouts: &[Some(&layout)],
-        immediate_size: 0,
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some(&format!("{label} pipeline")),
-        layout: Some(&pipeline_layout),
-        module: &module,
-        entry_point: Some(entry_point),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    (pipeline, layout)
-}
-
 impl GpuIntersector {
-    /// Maps `slice` for reading and waits for it ([`map_read`] on this device).
+    /// Maps `slice` for reading and waits for it ([`super::map_read`] on this device).
     pub(crate) fn map_read(&self, slice: &wgpu::BufferSlice<'_>) -> Result<(), GpuError> {
-        map_read(&self.device, slice)
+        super::map_read(&self.device, slice)
     }
-}
-
-/// Maps `slice` of a buffer on `device` for reading and waits for it: the one readback
-/// the kernel, its timing and the scene kernel share.
-pub(crate) fn map_read(
-    device: &wgpu::Device,
-    slice: &wgpu::BufferSlice<'_>,
-) -> Result<(), GpuError> {
-    let (tx, rx) = mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| GpuError::Readback(e.to_string()))?;
-    rx.recv()
-        .map_err(|e| GpuError::Readback(e.to_string()))?
-        .map_err(|e| GpuError::Readback(e.to_string()))
 }
 
 /// Each answer of `pairs` without what came with it (a diagnostic, who answered).

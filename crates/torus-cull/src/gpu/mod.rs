@@ -72,9 +72,11 @@
 //! `escalation.rs` ([`Escalation`], [`Finished`], [`FinishCounts`]), `finish.rs` (the f64
 //! pass), `module.rs` (the includable module's host side), `source.rs` (the WGSL text),
 //! `bounds.rs` (the culls' margin), `timing.rs` (the kernel timed alone),
+//! `dispatch.rs` (the one dispatch path: pipeline, buffers, bind group, passes, read back),
 //! `scene_bvh.rs` ([`SceneBvh`]: tori in an obvhs BVH2, laid out for the WGSL traversal,
-//! and the host's answer) and `scene.rs` ([`GpuScene`]: the traversal kernel, closest and
-//! any hit over many tori, docs/gpu.md "Tori in a GPU BVH").
+//! and the host's answer), `scene_spawned.rs` ([`SpawnedRay`]: secondary rays, their own
+//! torus on the surface path) and `scene.rs` ([`GpuScene`]: the traversal kernel, closest
+//! and any hit over many tori, docs/gpu.md "Tori in a GPU BVH").
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -96,6 +98,7 @@
 
 mod bounds;
 mod cull;
+mod dispatch;
 mod escalation;
 pub(crate) mod finish;
 mod frame;
@@ -103,6 +106,7 @@ mod intersector;
 mod module;
 mod scene;
 pub(crate) mod scene_bvh;
+mod scene_spawned;
 mod source;
 mod timing;
 mod wire;
@@ -115,6 +119,7 @@ pub use scene::{GpuScene, Occlusion, SceneAnswer};
 pub use scene_bvh::{
     DIRECTION_RANGE, MAX_COORDINATE, STACK, SceneBvh, SceneHit, wgsl_scene_module,
 };
+pub use scene_spawned::{SPAWNED_WORDS, SpawnedRay};
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
 };
@@ -123,11 +128,10 @@ pub use timing::{FinishTime, KernelTime, ResidentRays};
 /// [`wgsl_module`]): a renderer that includes the module uses the same version.
 pub use wgpu;
 
+pub(crate) use dispatch::{compute_pipeline, map_read};
 pub(crate) use escalation::{shifted, verdict};
 pub(crate) use frame::{Frame, Packed};
-pub(crate) use intersector::{
-    Buffers, CHUNK, WORKGROUP, compute_pipeline, map_read, upload_surfaces,
-};
+pub(crate) use intersector::{Buffers, CHUNK, WORKGROUP, upload_surfaces};
 pub(crate) use wire::{
     CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Mode, PARAMS_BYTES, RAY_BYTES, SURFACE_BYTES,
     as_bytes, decode_records,

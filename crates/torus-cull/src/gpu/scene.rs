@@ -1,6 +1,7 @@
 //! Tori in a GPU BVH ([`GpuScene`]): a WGSL compute traversal of an obvhs BVH2 over ring
 //! tori, with a cull and the certified f32 intersection at each leaf, closest hit and any
-//! hit (shadow rays with a `t_max`).
+//! hit (shadow rays with a `t_max`), for world rays and for secondary rays spawned on a
+//! torus of the scene ([`SpawnedRay`], `scene_spawned.rs`).
 //!
 //! **Why BVH2.** obvhs builds BVH2 and CWBVH. CWBVH traverses incoherent rays about 2×
 //! faster than the earlier binary traversal on NVIDIA hardware (Ylitie et al., HPG 2017),
@@ -22,26 +23,33 @@
 //! - tori in f64 (`TorusParams64`, 136 bytes each, [`super::ModuleTorus::params64`]):
 //!   only where the device finishes in f64.
 //! - rays, read and overwritten in place: in, `(o, t_min)`, `(d, t_max)` with the range
-//!   clipped on the host to where the scene's bounding sphere is (finite ends); out,
-//!   `(t, n.xyz)` and `(torus, status, f64 leaves, leaves)` as f32.
+//!   clipped on the host to where the scene's bounding sphere is (finite ends), and for a
+//!   spawned ray (`scene_from_main`) its `TorusSceneOwn` after them
+//!   ([`SceneBvh::prepare_from`], [`SPAWNED_WORDS`] words a ray in all); out, `(t, n.xyz)`
+//!   and `(torus, status, f64 leaves, leaves)` as f32 over the ray's first 8 words.
 //!
 //! **The kernel** (`wgsl/scene.wgsl`) pops a node, tests its box against `[t_min, the
 //! nearest hit so far]` (a slab test widened by 2⁻¹⁸ of each slab's size, so no box a
 //! true hit lies in is skipped), pushes an inner node's children (the nearer last) and
-//! at a leaf runs the f32 module on `o − c` with the range clipped to the torus's reach.
-//! A leaf it cannot prove goes to the f64 finish on the device (`wgsl/scene_f64.wgsl`)
+//! at a leaf runs the f32 module with the range clipped to the torus's reach, on the ray
+//! as the single-torus host packs it ([`super::Frame`]'s `pack`): where the shader has f64,
+//! `o − c` from the f64 centre and a far origin moved to its foot point, in f64 on the
+//! device (`wgsl/scene_f64.wgsl`), else `o − c` in f32 (`wgsl/scene_host.wgsl`); a spawned
+//! ray's own torus runs the module's surface path on the host's record. A leaf it cannot
+//! prove goes to the f64 finish on the device (`wgsl/scene_f64.wgsl`)
 //! where the adapter has `SHADER_F64`; otherwise, or where that hands it back, the leaf
 //! stays unproved, the walk goes on, and the ray's answer is the host's (the f64 path
 //! over the BVH's candidates: [`SceneBvh::host_trace`]). An unproved leaf is never taken
 //! for a miss, and a closest-hit walk never stops early: it ends when the stack is empty.
 //!
 //! **What the host answers itself** (counted as [`Finished::Host`]): a ray from a surface
-//! point ([`Ray::from_surface`]: its own torus needs the surface path, not yet in the
-//! kernel); an origin with a coordinate beyond [`super::MAX_COORDINATE`], a direction whose
+//! point given without its torus ([`Ray::from_surface`] names no shape: [`GpuScene::trace`]
+//! answers it as [`crate::intersect()`] over every torus would); an origin with a coordinate beyond [`super::MAX_COORDINATE`], a direction whose
 //! largest component is outside [`DIRECTION_RANGE`], or a range the bounding sphere
 //! cannot clip to finite f32 (the slab test's products stay finite within those).
 
 use super::scene_bvh::{STATUS_HIT, STATUS_MISS};
+use super::scene_spawned::{SPAWNED_WORDS, SpawnedRay};
 use super::{Finished, GpuCull, GpuError, GpuIntersector, SceneBvh, SceneHit, as_bytes};
 use crate::{Ray, Torus};
 use glam::Vec3;
@@ -74,8 +82,12 @@ pub struct GpuScene {
     f64: bool,
     device: wgpu::Device,
     queue: wgpu::Queue,
-    pipeline: wgpu::ComputePipeline,
-    layout: wgpu::BindGroupLayout,
+    /// `scene_main`, for world rays.
+    kernel: Kernel,
+    /// The device's compiled scene kernels: `scene_from_main`, for spawned rays, is
+    /// compiled on the first [`GpuScene::trace_from`] or [`GpuScene::occluded_from`] on
+    /// the device (the surface path makes it the larger kernel).
+    kernels: Kernels,
     node_buffer: wgpu::Buffer,
     tori_buffer: wgpu::Buffer,
     tori64_buffer: Option<wgpu::Buffer>,
@@ -103,6 +115,55 @@ pub(crate) fn kernel_source(f64: bool) -> String {
     )
 }
 
+/// A compiled entry point of the scene kernel and its bind group layout.
+#[derive(Clone)]
+pub(crate) struct Kernel {
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+}
+
+/// A device's scene kernels by (f64, entry point), compiled once: naga and the driver
+/// take about a second for the larger one on lavapipe, which every scene would pay again.
+pub(crate) type Kernels = std::sync::Arc<std::sync::Mutex<Vec<(bool, &'static str, Kernel)>>>;
+
+impl Kernel {
+    /// `entry` of [`kernel_source`]`(f64)` from `kernels`, compiled there first if it is
+    /// not yet (the validation error in words).
+    fn get(
+        kernels: &Kernels,
+        device: &wgpu::Device,
+        f64: bool,
+        entry: &'static str,
+    ) -> Result<Kernel, GpuError> {
+        let mut cache = kernels.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, _, k)) = cache.iter().find(|(f, e, _)| *f == f64 && *e == entry) {
+            return Ok(k.clone());
+        }
+        let kernel = Kernel::compile(device, f64, entry)?;
+        cache.push((f64, entry, kernel.clone()));
+        Ok(kernel)
+    }
+
+    /// `entry` of [`kernel_source`]`(f64)`, or the validation error in words.
+    fn compile(device: &wgpu::Device, f64: bool, entry: &str) -> Result<Kernel, GpuError> {
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        use wgpu::BufferBindingType as B;
+        let mut bindings = vec![B::Storage { read_only: true }; if f64 { 3 } else { 2 }];
+        bindings.push(B::Storage { read_only: false });
+        let (pipeline, layout) = super::compute_pipeline(
+            device,
+            "torus-cull scene",
+            kernel_source(f64),
+            &bindings,
+            entry,
+        );
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(GpuError::Kernel(format!("the scene kernel ({entry}): {e}")));
+        }
+        Ok(Kernel { pipeline, layout })
+    }
+}
+
 impl GpuScene {
     /// Builds an obvhs BVH2 over `tori` (one torus a leaf) on the host and uploads it to
     /// `gpu`'s device, with the kernel compiled: in f64 where `gpu` finishes on the
@@ -118,26 +179,14 @@ impl GpuScene {
         let bvh = SceneBvh::new(tori)?;
         let f64 = gpu.finishes_on_device();
         let device = gpu.device.clone();
-        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        use wgpu::BufferBindingType as B;
-        let mut bindings = vec![B::Storage { read_only: true }; if f64 { 3 } else { 2 }];
-        bindings.push(B::Storage { read_only: false });
-        let (pipeline, layout) = super::compute_pipeline(
-            &device,
-            "torus-cull scene",
-            kernel_source(f64),
-            &bindings,
-            "scene_main",
-        );
-        if let Some(e) = pollster::block_on(scope.pop()) {
-            return Err(GpuError::Kernel(format!("the scene kernel: {e}")));
-        }
+        let kernels = gpu.scene_kernels.clone();
+        let kernel = Kernel::get(&kernels, &device, f64, "scene_main")?;
         let mut scene = GpuScene {
             bvh,
             f64,
             queue: gpu.queue.clone(),
-            pipeline,
-            layout,
+            kernel,
+            kernels,
             node_buffer: storage(&device, "torus-cull scene nodes", 0),
             tori_buffer: storage(&device, "torus-cull scene tori", 0),
             tori64_buffer: None,
@@ -153,8 +202,31 @@ impl GpuScene {
         Ok(scene)
     }
 
+    /// [`GpuScene::new`] over members of the torus family: the circular ring members
+    /// ([`SceneBvh::from_family`]).
+    ///
+    /// # Errors
+    ///
+    /// [`GpuError::Member`] for a member that is not a circular ring torus (its index and
+    /// why); then as [`GpuScene::new`].
+    pub fn from_family(
+        gpu: &GpuIntersector,
+        members: &[crate::family::Toroid],
+    ) -> Result<GpuScene, GpuError> {
+        GpuScene::new(gpu, &super::scene_bvh::ring_tori(members)?)
+    }
+
     fn upload(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
         let buffer = storage(&self.device, label, bytes.len() as u64);
+        self.queue.write_buffer(&buffer, 0, bytes);
+        buffer
+    }
+
+    /// A storage buffer the kernel writes, holding `bytes`, that can be copied out.
+    fn upload_rw(&self, label: &str, bytes: &[u8]) -> wgpu::Buffer {
+        use wgpu::BufferUsages as Use;
+        let usage = Use::STORAGE | Use::COPY_DST | Use::COPY_SRC;
+        let buffer = super::dispatch::buffer(&self.device, label, bytes.len() as u64, usage);
         self.queue.write_buffer(&buffer, 0, bytes);
         buffer
     }
@@ -168,91 +240,145 @@ impl GpuScene {
     /// miss and torus as [`crate::intersect()`] over all tori, t within the tolerance of
     /// [`SceneHit::t`].
     ///
+    /// A ray from a surface point ([`Ray::from_surface`]) is answered on the host, its
+    /// mark seen by every torus (as [`crate::intersect()`] over all tori sees it): name the
+    /// torus it starts on with [`GpuScene::trace_from`] to trace it on the device.
+    ///
     /// # Errors
     ///
     /// [`GpuError::Readback`] where the device's results cannot be read.
     pub fn trace(&self, cull: GpuCull, rays: &[Ray]) -> Result<Vec<SceneAnswer>, GpuError> {
-        let records = self.dispatch(cull, Mode::Closest, rays)?;
+        let records: Vec<Option<[f32; 8]>> = rays.iter().map(|r| self.bvh.prepare(r)).collect();
+        let records = self.dispatch(cull, Mode::Closest, &records)?;
         Ok(rays
             .iter()
             .zip(records)
-            .map(|(ray, record)| match record {
-                Some(r) if r[5] == STATUS_HIT as f32 && r[4] >= 0.0 => SceneAnswer {
-                    hit: Some(SceneHit {
-                        torus: r[4] as u32,
-                        t: r[0],
-                        normal: Vec3::new(r[1], r[2], r[3]),
-                    }),
-                    by: device_by(&r),
-                },
-                Some(r) if r[5] == STATUS_MISS as f32 => SceneAnswer {
-                    hit: None,
-                    by: device_by(&r),
-                },
-                _ => SceneAnswer {
-                    hit: self.bvh.host_trace(ray),
-                    by: Finished::Host,
-                },
-            })
+            .map(|(ray, record)| closest(record).unwrap_or_else(|| host(self.bvh.host_trace(ray))))
             .collect())
     }
 
+    /// The nearest hit of each secondary ray ([`SpawnedRay`]: spawned on a torus of the
+    /// scene): its own torus on the surface path (the module's
+    /// `torus_intersect_from_surface`, its origin's root divided out), every other on the
+    /// literal ray, as the CPU's brute force over the scene answers it
+    /// ([`SceneBvh::host_trace_from`]).
+    ///
+    /// # Errors
+    ///
+    /// [`GpuError::Scene`] for a ray whose torus is not in the scene (naming the ray);
+    /// [`GpuError::Readback`] where the device's results cannot be read.
+    pub fn trace_from(
+        &self,
+        cull: GpuCull,
+        rays: &[SpawnedRay],
+    ) -> Result<Vec<SceneAnswer>, GpuError> {
+        let records = self.prepare_from(rays)?;
+        let records = self.dispatch(cull, Mode::ClosestFrom, &records)?;
+        rays.iter()
+            .zip(records)
+            .map(|(ray, record)| match closest(record) {
+                Some(answer) => Ok(answer),
+                None => Ok(host(self.bvh.host_trace_from(ray)?)),
+            })
+            .collect()
+    }
+
     /// Whether any torus blocks each ray within its range (shadow rays), with `cull` at
-    /// the leaves; the walk stops at the first proved hit.
+    /// the leaves; the walk stops at the first proved hit. A ray from a surface point is
+    /// answered on the host, as in [`GpuScene::trace`] ([`GpuScene::occluded_from`] traces
+    /// it on the device).
     ///
     /// # Errors
     ///
     /// As [`GpuScene::trace`].
     pub fn occluded(&self, cull: GpuCull, rays: &[Ray]) -> Result<Vec<Occlusion>, GpuError> {
-        let records = self.dispatch(cull, Mode::Any, rays)?;
+        let records: Vec<Option<[f32; 8]>> = rays.iter().map(|r| self.bvh.prepare(r)).collect();
+        let records = self.dispatch(cull, Mode::Any, &records)?;
         Ok(rays
             .iter()
             .zip(records)
-            .map(|(ray, record)| match record {
-                Some(r) if r[5] == STATUS_HIT as f32 || r[5] == STATUS_MISS as f32 => Occlusion {
-                    occluded: r[5] == STATUS_HIT as f32,
-                    by: device_by(&r),
-                },
-                _ => Occlusion {
+            .map(|(ray, record)| {
+                any(record).unwrap_or_else(|| Occlusion {
                     occluded: self.bvh.host_occluded(ray),
                     by: Finished::Host,
-                },
+                })
             })
             .collect())
     }
 
-    /// One record per ray from the kernel, `None` for a ray the host answers.
-    fn dispatch(
+    /// [`GpuScene::occluded`] of secondary rays (shadow rays from a hit): the own torus on
+    /// the surface path, every other on the literal ray ([`SceneBvh::host_occluded_from`]).
+    ///
+    /// # Errors
+    ///
+    /// As [`GpuScene::trace_from`].
+    pub fn occluded_from(
+        &self,
+        cull: GpuCull,
+        rays: &[SpawnedRay],
+    ) -> Result<Vec<Occlusion>, GpuError> {
+        let records = self.prepare_from(rays)?;
+        let records = self.dispatch(cull, Mode::AnyFrom, &records)?;
+        rays.iter()
+            .zip(records)
+            .map(|(ray, record)| match any(record) {
+                Some(answer) => Ok(answer),
+                None => Ok(Occlusion {
+                    occluded: self.bvh.host_occluded_from(ray)?,
+                    by: Finished::Host,
+                }),
+            })
+            .collect()
+    }
+
+    /// Each spawned ray's kernel record, the error naming the first ray whose torus is not
+    /// in the scene.
+    fn prepare_from(
+        &self,
+        rays: &[SpawnedRay],
+    ) -> Result<Vec<Option<[f32; SPAWNED_WORDS]>>, GpuError> {
+        rays.iter()
+            .enumerate()
+            .map(|(k, r)| {
+                self.bvh
+                    .prepare_from(r)
+                    .map_err(|e| GpuError::Scene(format!("spawned ray {k}: {e}")))
+            })
+            .collect()
+    }
+
+    /// One record `(t, n.xyz, torus, status, f64 leaves, leaves)` per ray from the
+    /// kernel, `None` for a ray the host answers (`records[k]` is `None`); each record in
+    /// is `N` words (8: a world ray; [`SPAWNED_WORDS`]: a spawned ray).
+    fn dispatch<const N: usize>(
         &self,
         cull: GpuCull,
         mode: Mode,
-        rays: &[Ray],
+        records: &[Option<[f32; N]>],
     ) -> Result<Vec<Option<[f32; 8]>>, GpuError> {
+        let kernel = match mode {
+            Mode::Closest | Mode::Any => self.kernel.clone(),
+            Mode::ClosestFrom | Mode::AnyFrom => {
+                Kernel::get(&self.kernels, &self.device, self.f64, "scene_from_main")?
+            }
+        };
         let _one_at_a_time = self.dispatching.lock().unwrap_or_else(|e| e.into_inner());
-        let mut out = Vec::with_capacity(rays.len());
-        for batch in rays.chunks(CHUNK) {
-            let prepared: Vec<Option<[f32; 8]>> =
-                batch.iter().map(|r| self.bvh.prepare(r)).collect();
-            let words: Vec<f32> = prepared
+        let mut out = Vec::with_capacity(records.len());
+        // A ray the host answers goes as a harmless placeholder: the origin, a unit
+        // direction, an empty range (t_min 1 > t_max 0), no torus of its own.
+        let mut placeholder = [0.0f32; N];
+        placeholder[3] = 1.0;
+        placeholder[4] = 1.0;
+        if N > 32 {
+            placeholder[32] = f32::from_bits(u32::MAX);
+        }
+        for batch in records.chunks(CHUNK) {
+            let mut words: Vec<f32> = batch
                 .iter()
-                .flat_map(|p| p.unwrap_or([0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0]))
+                .flat_map(|p| p.unwrap_or(placeholder))
                 .collect();
-            let bytes = as_bytes(&words);
-            let size = bytes.len() as u64;
-            use wgpu::BufferUsages as Use;
-            let rays_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("torus-cull scene rays"),
-                size,
-                usage: Use::STORAGE | Use::COPY_DST | Use::COPY_SRC,
-                mapped_at_creation: false,
-            });
-            let staging = self.device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("torus-cull scene staging"),
-                size,
-                usage: Use::MAP_READ | Use::COPY_DST,
-                mapped_at_creation: false,
-            });
-            self.queue.write_buffer(&rays_buffer, 0, &bytes);
+            // Whole 32-byte records, so that the read back decodes every word.
+            words.resize(words.len().next_multiple_of(8), 0.0);
             let header = [
                 batch.len() as u32,
                 cull.code(),
@@ -261,48 +387,52 @@ impl GpuScene {
             ];
             let header: Vec<u8> = header.iter().flat_map(|w| w.to_le_bytes()).collect();
             self.queue.write_buffer(&self.node_buffer, 0, &header);
+            let bytes = (words.len() * 4) as u64;
+            let rays_buffer = self.upload_rw("torus-cull scene rays", &as_bytes(&words));
+            let staging = super::dispatch::buffer(
+                &self.device,
+                "torus-cull scene staging",
+                bytes,
+                wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            );
             let mut buffers = vec![&self.node_buffer, &self.tori_buffer];
             buffers.extend(self.tori64_buffer.as_ref());
             buffers.push(&rays_buffer);
-            let entries: Vec<wgpu::BindGroupEntry> = buffers
-                .iter()
-                .zip(0..)
-                .map(|(b, binding)| wgpu::BindGroupEntry {
-                    binding,
-                    resource: b.as_entire_binding(),
-                })
-                .collect();
-            let bind_group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("torus-cull scene bind group"),
-                layout: &self.layout,
-                entries: &entries,
-            });
-            let mut encoder = self
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor {
-                    label: Some("torus-cull scene"),
-                });
-            {
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                    label: Some("torus-cull scene pass"),
-                    timestamp_writes: None,
-                });
-                pass.set_pipeline(&self.pipeline);
-                pass.set_bind_group(0, &bind_group, &[]);
-                pass.dispatch_workgroups(batch.len().div_ceil(64) as u32, 1, 1);
+            let read = super::dispatch::run(
+                &self.device,
+                &self.queue,
+                "torus-cull scene",
+                &[super::dispatch::Pass {
+                    pipeline: &kernel.pipeline,
+                    bind_group: &super::dispatch::bind_group(
+                        &self.device,
+                        &kernel.layout,
+                        "torus-cull scene bind group",
+                        &buffers,
+                    ),
+                    groups: batch.len().div_ceil(64) as u32,
+                }],
+                &[super::dispatch::Read {
+                    source: &rays_buffer,
+                    staging: &staging,
+                    bytes,
+                }],
+            )?;
+            // Each ray's answer is over the first 8 of its N words.
+            let words: Vec<f32> = read.into_iter().flatten().flatten().collect();
+            if words.len() < batch.len() * N {
+                return Err(GpuError::Readback(format!(
+                    "{} words read back for {} rays of {N}",
+                    words.len(),
+                    batch.len()
+                )));
             }
-            encoder.copy_buffer_to_buffer(&rays_buffer, 0, &staging, 0, size);
-            self.queue.submit([encoder.finish()]);
-            let slice = staging.slice(..);
-            super::map_read(&self.device, &slice)?;
-            {
-                let view = slice
-                    .get_mapped_range()
-                    .map_err(|e| GpuError::Readback(format!("{e:?}")))?;
-                let records = super::decode_records(&view);
-                out.extend(prepared.iter().zip(records).map(|(p, r)| p.map(|_| r)));
-            }
-            staging.unmap();
+            out.extend(
+                batch
+                    .iter()
+                    .zip(words.chunks_exact(N))
+                    .map(|(p, w)| p.map(|_| w[..8].try_into().expect("8 words"))),
+            );
         }
         Ok(out)
     }
@@ -313,10 +443,52 @@ impl GpuScene {
     }
 }
 
+/// The header row's mode (bit 0: any hit; `wgsl/scene_kernel.wgsl`), and the entry point:
+/// `scene_from_main` for spawned records ([`SPAWNED_WORDS`] words a ray).
 #[derive(Debug, Clone, Copy)]
 enum Mode {
     Closest = 0,
     Any = 1,
+    ClosestFrom = 2,
+    AnyFrom = 3,
+}
+
+/// A closest-hit answer from the device's record, `None` where the host answers.
+fn closest(record: Option<[f32; 8]>) -> Option<SceneAnswer> {
+    match record {
+        Some(r) if r[5] == STATUS_HIT as f32 && r[4] >= 0.0 => Some(SceneAnswer {
+            hit: Some(SceneHit {
+                torus: r[4] as u32,
+                t: r[0],
+                normal: Vec3::new(r[1], r[2], r[3]),
+            }),
+            by: device_by(&r),
+        }),
+        Some(r) if r[5] == STATUS_MISS as f32 => Some(SceneAnswer {
+            hit: None,
+            by: device_by(&r),
+        }),
+        _ => None,
+    }
+}
+
+/// An any-hit answer from the device's record, `None` where the host answers.
+fn any(record: Option<[f32; 8]>) -> Option<Occlusion> {
+    match record {
+        Some(r) if r[5] == STATUS_HIT as f32 || r[5] == STATUS_MISS as f32 => Some(Occlusion {
+            occluded: r[5] == STATUS_HIT as f32,
+            by: device_by(&r),
+        }),
+        _ => None,
+    }
+}
+
+/// The host's closest-hit answer.
+fn host(hit: Option<SceneHit>) -> SceneAnswer {
+    SceneAnswer {
+        hit,
+        by: Finished::Host,
+    }
 }
 
 /// Who answered a ray the device answered.
@@ -329,10 +501,6 @@ fn device_by(record: &[f32; 8]) -> Finished {
 }
 
 fn storage(device: &wgpu::Device, label: &str, size: u64) -> wgpu::Buffer {
-    device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some(label),
-        size: size.max(16),
-        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    })
+    let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
+    super::dispatch::buffer(device, label, size, usage)
 }

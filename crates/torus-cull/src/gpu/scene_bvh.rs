@@ -5,7 +5,9 @@
 //! [`super::GpuScene`] (`scene.rs`); the layout and the method are in its module docs
 //! and in docs/gpu.md, "Tori in a GPU BVH".
 
+use super::scene_spawned::{OWN_CERTIFY, OWN_ESCALATE, OWN_MISS};
 use super::{GpuError, ModuleTorus, as_bytes};
+use crate::family::Toroid;
 use crate::{Ray, Torus};
 use glam::{DVec3, Vec3};
 use obvhs::BvhBuildParams;
@@ -33,6 +35,10 @@ pub(crate) const WIDEN: f32 = 3.814_697_3e-6; // 2⁻¹⁸
 /// An origin farther than this many R from a torus's centre skips the f32 module there,
 /// as the library's host does (`Escalation::FarOrigin`).
 pub(crate) const FAR: f32 = 1_048_576.0; // 2²⁰
+
+/// A leaf's plan (`TcScenePlan.code`, `wgsl/scene.wgsl`) to run the module: a code the
+/// module's results (`TORUS_MISS`, `_HIT`, `_ESCALATE`, `_KEPT`) do not use.
+const PLAN_RUN: u32 = u32::MAX - 1;
 
 /// `status` of a traced ray: a proved miss, a hit, or the host's.
 pub(crate) const STATUS_MISS: u32 = 0;
@@ -64,12 +70,14 @@ struct Node {
 /// ([`super::wgsl_module`]), the f64 finish ([`super::wgsl_finish_module`]) where `f64`,
 /// the bindings `torus_scene_nodes` (binding 0), `torus_scene_tori` (1) and, where
 /// `f64`, `torus_scene_tori64` (2) at `@group(group)`, and
-/// `torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit`
+/// `torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit` and, for a
+/// ray spawned on a torus, `torus_scene_trace_from(ray, own: TorusSceneOwn, cull, any_hit)`
 /// (`wgsl/scene.wgsl`). Fill the buffers with [`SceneBvh::node_bytes`],
 /// [`SceneBvh::tori_bytes`] and [`SceneBvh::tori64_bytes`], each ray with
-/// [`SceneBvh::prepare`]; an answer with status `TORUS_SCENE_HOST` is finished by
-/// [`SceneBvh::host_trace`] (or [`SceneBvh::host_occluded`]). `f64` needs
-/// `wgpu::Features::SHADER_F64`.
+/// [`SceneBvh::prepare`] (a spawned one with [`SceneBvh::prepare_from`]); an answer with
+/// status `TORUS_SCENE_HOST` is finished by [`SceneBvh::host_trace`] (or
+/// [`SceneBvh::host_occluded`], [`SceneBvh::host_trace_from`],
+/// [`SceneBvh::host_occluded_from`]). `f64` needs `wgpu::Features::SHADER_F64`.
 pub fn wgsl_scene_module(group: u32, f64: bool) -> String {
     let mut out = super::wgsl_module();
     if f64 {
@@ -119,8 +127,16 @@ fn scene_header() -> String {
          const TORUS_SCENE_MISS: u32 = {STATUS_MISS}u;\n\
          const TORUS_SCENE_HIT: u32 = {STATUS_HIT}u;\n\
          const TORUS_SCENE_HOST: u32 = {STATUS_HOST}u;\n\
-         const TORUS_SCENE_NONE: u32 = {}u;\n",
-        u32::MAX
+         const TORUS_SCENE_NONE: u32 = {}u;\n\
+         const TC_SCENE_REBASE: f32 = {:e};\n\
+         const TC_SCENE_F32_MAX: f32 = {:e};\n\
+         const TORUS_SCENE_OWN_CERTIFY: u32 = {OWN_CERTIFY}u;\n\
+         const TORUS_SCENE_OWN_MISS: u32 = {OWN_MISS}u;\n\
+         const TORUS_SCENE_OWN_ESCALATE: u32 = {OWN_ESCALATE}u;\n\
+         const TC_SCENE_RUN: u32 = {PLAN_RUN}u;\n",
+        u32::MAX,
+        super::frame::REBASE_REL,
+        f32::MAX,
     )
 }
 
@@ -167,6 +183,20 @@ impl SceneBvh {
         })
     }
 
+    /// [`SceneBvh::new`] over members of the torus family: the circular ring members, as
+    /// the certified f32 path takes them ([`crate::family::Toroid::as_torus`], the same
+    /// answers bit for bit as the [`Torus`]).
+    ///
+    /// # Errors
+    ///
+    /// [`GpuError::Member`] for the first member that is not a circular ring torus (a
+    /// horn, a spindle, an elliptical tube: the kernel's module, its f64 finish and the
+    /// culls' bounds are the circular ring's), naming its index and why; then as
+    /// [`SceneBvh::new`].
+    pub fn from_family(members: &[Toroid]) -> Result<SceneBvh, GpuError> {
+        SceneBvh::new(&ring_tori(members)?)
+    }
+
     /// Nodes in the BVH.
     pub fn node_count(&self) -> u32 {
         self.nodes.len() as u32
@@ -203,7 +233,8 @@ impl SceneBvh {
     }
 
     /// The tori buffer's bytes (`TorusSceneTorus`: `TorusParams`, then `(c, R + r)`, with
-    /// `−(R + r)` where the centre is not an f32 value: that torus skips the f32 leaf).
+    /// `−(R + r)` where the centre is not an f32 value: without f64 in the shader that
+    /// torus skips the f32 leaf; with it, the leaf forms `o − c` from the f64 centre).
     pub fn tori_bytes(&self) -> Vec<u8> {
         let mut words = Vec::with_capacity(self.tori.len() * 32);
         for t in &self.tori {
@@ -211,8 +242,8 @@ impl SceneBvh {
             words.extend(t.center().to_array());
             // A centre given in f64 (`Torus::new_f64`) that f32 does not hold: the f32
             // module's line error assumes o − c rounded once from the true difference,
-            // which an f32 centre no longer gives, so such a torus skips the f32 leaf
-            // (marked by a negative R + r) and goes to the f64 finish or the host.
+            // which an f32 centre no longer gives, so without f64 in the shader such a
+            // torus skips the f32 leaf (marked by a negative R + r) and goes to the host.
             let size = t.major_radius() + t.minor_radius();
             let exact = t.center().as_dvec3() == t.center_f64();
             words.push(if exact { size } else { -size });
@@ -249,8 +280,13 @@ impl SceneBvh {
     /// ([`crate::intersect()`]) at every leaf whose box the ray enters, in f64, the
     /// nearest kept (the lowest index on a tie, as a brute force in index order).
     pub fn host_trace(&self, ray: &Ray) -> Option<SceneHit> {
+        self.host_trace_skipping(ray, None)
+    }
+
+    /// [`SceneBvh::host_trace`] over every torus but `skip`.
+    pub(crate) fn host_trace_skipping(&self, ray: &Ray, skip: Option<u32>) -> Option<SceneHit> {
         let mut best: Option<SceneHit> = None;
-        self.walk(ray, |i| {
+        self.walk(ray, skip, |i| {
             if let Some(h) = host_leaf(&self.tori[i as usize], ray) {
                 if best.is_none_or(|b| h.t < b.t || (h.t == b.t && i < b.torus)) {
                     best = Some(SceneHit {
@@ -267,12 +303,17 @@ impl SceneBvh {
 
     /// The host's any-hit answer ([`crate::occluded()`] at the leaves the ray enters).
     pub fn host_occluded(&self, ray: &Ray) -> bool {
-        self.walk(ray, |i| crate::occluded(&self.tori[i as usize], ray))
+        self.host_occluded_skipping(ray, None)
+    }
+
+    /// [`SceneBvh::host_occluded`] over every torus but `skip`.
+    pub(crate) fn host_occluded_skipping(&self, ray: &Ray, skip: Option<u32>) -> bool {
+        self.walk(ray, skip, |i| crate::occluded(&self.tori[i as usize], ray))
     }
 
     /// Calls `leaf(torus)` at each leaf whose box the ray's range enters (in f64, widened
-    /// by 10⁻⁹ of each slab), until it returns true.
-    fn walk(&self, ray: &Ray, mut leaf: impl FnMut(u32) -> bool) -> bool {
+    /// by 10⁻⁹ of each slab), but `skip`'s, until it returns true.
+    fn walk(&self, ray: &Ray, skip: Option<u32>, mut leaf: impl FnMut(u32) -> bool) -> bool {
         let (o, d) = (ray.origin().as_dvec3(), ray.dir().as_dvec3());
         let range = (f64::from(ray.t_min()), f64::from(ray.t_max()));
         let mut stack = vec![0u32];
@@ -283,12 +324,25 @@ impl SceneBvh {
             }
             if n.count == 0 {
                 stack.extend([n.index, n.index + 1]);
-            } else if leaf(n.index) {
+            } else if Some(n.index) != skip && leaf(n.index) {
                 return true;
             }
         }
         false
     }
+}
+
+/// The family's members as the tori they are ([`SceneBvh::from_family`]).
+pub(crate) fn ring_tori(members: &[Toroid]) -> Result<Vec<Torus>, GpuError> {
+    members
+        .iter()
+        .enumerate()
+        .map(|(index, m)| {
+            m.as_torus()
+                .copied()
+                .map_err(|error| GpuError::Member { index, error })
+        })
+        .collect()
 }
 
 /// The f64 path for one leaf on the host: the ray's nearest hit on `torus`.

@@ -10,18 +10,28 @@
 //   torus_scene_tori: array<TorusSceneTorus>   (128 bytes a torus)
 //   torus_scene_tori64: array<TorusParams64>   (136 bytes a torus; the f64 variant only)
 //
-// THE PUBLIC ENTRY POINT:
+// THE PUBLIC ENTRY POINTS:
 //
 //   fn torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit
+//   fn torus_scene_trace_from(ray: TorusRay, own: TorusSceneOwn, cull: u32,
+//                             any_hit: bool) -> TorusSceneHit
 //
 // `ray` is the world ray (origin, t_min, direction, t_max), its range clipped on the host
-// to where the scene's bounding sphere can be (GpuScene::prepare: finite ends).
+// to where the scene's bounding sphere can be (SceneBvh::prepare: finite ends).
 // Closest hit (any_hit false): the nearest proved hit over every torus in [t_min, t_max].
 // Any hit (any_hit true, a shadow ray): stops at the first proved hit in [t_min, t_max].
+// torus_scene_trace_from is a secondary ray spawned on torus own.info.x (a bounce or a
+// shadow ray from a hit, torus_cull::Ray::from_surface): that torus sees the ray from
+// its surface point (the module's torus_intersect_from_surface on the host's record,
+// SceneBvh::prepare_from), every other torus the literal ray.
 //
 // mirrors: tc_scene_enters -> crate::gpu::scene_bvh::enters (in f64 on the host)
+// mirrors: tc_scene_decided -> none (a plan with its answer)
+// mirrors: tc_scene_own_plan -> crate::gpu::scene_spawned::host_own_leaf
 // mirrors: tc_scene_leaf -> crate::gpu::scene_bvh::host_leaf
-// mirrors: torus_scene_trace -> crate::gpu::scene_bvh::SceneBvh::host_trace (GpuScene::host_occluded for any_hit)
+// mirrors: tc_scene_walk -> crate::gpu::scene_bvh::SceneBvh::host_trace (host_occluded for any_hit)
+// mirrors: torus_scene_trace -> crate::gpu::scene_bvh::SceneBvh::host_trace
+// mirrors: torus_scene_trace_from -> crate::gpu::scene_spawned::host_trace_from
 
 // One BVH2 node (32 bytes): its box, and `count` = 0 for an inner node (children at
 // `index` and `index + 1`) or 1 for a leaf (`index` is the torus's index).
@@ -45,6 +55,20 @@ struct TorusSceneNodes {
 struct TorusSceneTorus {
     params: TorusParams,
     center: vec4<f32>,
+};
+
+// What a ray spawned on a torus brings for that torus (112 bytes, seven vec4;
+// SceneBvh::prepare_from): `ray`, the module's TorusRay for it (o − c and the range, the
+// start past the origin's own root, as ModuleTorus::prepare makes it), `surface`, its
+// TorusSurfaceRay (the cubic left once that root is divided out, formed in f64 on the
+// host), and `info`: x the torus's index (TORUS_SCENE_NONE: no torus of its own, a literal
+// ray), y what to do there: TORUS_SCENE_OWN_CERTIFY (torus_intersect_from_surface),
+// TORUS_SCENE_OWN_MISS (the host proved it: the range ends before any other crossing) or
+// TORUS_SCENE_OWN_ESCALATE (neither: the f64 finish from the surface, or the host).
+struct TorusSceneOwn {
+    ray: TorusRay,
+    surface: TorusSurfaceRay,
+    info: vec4<u32>,
 };
 
 // The answer of torus_scene_trace. status: TORUS_SCENE_HIT (t, normal, torus: the
@@ -101,50 +125,121 @@ fn tc_scene_enters(o: vec3<f32>, d: vec3<f32>, lo: vec3<f32>, hi: vec3<f32>, lo_
     return near <= far;
 }
 
-// One torus against the ray over [t_min, hi_t]: the certified f32 module on o − c (an
-// f32 subtraction, the value the library's host rounds to), the range clipped to
-// |t| ≤ L = (|o − c| + 4(R + r))/|d| (no root lies beyond: |t·d| ≤ |o − c| + R + r, and
-// the factor 4 and 1.001 cover f32's rounding of L); an origin beyond 2²⁰·R escalates,
-// as the library's host does. Escalated: tc_scene_escalated (f64 or the host).
-fn tc_scene_leaf(ray: TorusRay, i: u32, hi_t: f32, cull: u32) -> TcSceneLeaf {
+// What a leaf runs (tc_scene_plan, tc_scene_own_plan): `code` TC_SCENE_RUN, the module on
+// `ray` (in the torus's frame: o − c, or its foot point), its t shifted back by t0 (two
+// f32, hi + lo: the shift where the origin was moved); or the leaf's answer already
+// decided: TORUS_HIT (t, normal), TORUS_MISS, TORUS_ESCALATE (the f64 finish, or the host).
+struct TcScenePlan {
+    ray: TorusRay,
+    t0: vec2<f32>,
+    code: u32,
+    t: f32,
+    normal: vec3<f32>,
+};
+
+fn tc_scene_decided(code: u32) -> TcScenePlan {
+    var plan: TcScenePlan;
+    plan.t0 = vec2<f32>(0.0);
+    plan.code = code;
+    plan.t = 0.0;
+    plan.normal = vec3<f32>(0.0);
+    return plan;
+}
+
+// A spawned ray's own torus (TorusSceneOwn), as torus_intersect_from_surface takes it: the
+// cubic over the ray's whole range first (its first crossing past the origin's own root:
+// one beyond the nearest hit so far, hi_t, is no nearer hit, within the promised
+// 2·10⁻⁴·(R + r)/|d|); where the cubic proves nothing, the literal ray from the stretch it
+// proved clear (or, with no such stretch, from the host's start past the root where the
+// record holds one), which the leaf runs through the one module call it shares with every
+// other torus. (torus_intersect_from_surface would try the host's start after a failed
+// literal try from the cubic's: here that second try is the f64 finish's.)
+fn tc_scene_own_plan(own: TorusSceneOwn, hi_t: f32) -> TcScenePlan {
+    if (own.info.y == TORUS_SCENE_OWN_MISS) {
+        return tc_scene_decided(TORUS_MISS);
+    }
+    if (own.info.y != TORUS_SCENE_OWN_CERTIFY) {
+        return tc_scene_decided(TORUS_ESCALATE);
+    }
+    let holds = own.surface.start.w;
+    var start = own.ray.t_min;
+    if (holds == 1.0 || holds == 2.0) {
+        let whole = TorusRay(own.ray.origin, own.surface.start.z, own.ray.direction, own.ray.t_max);
+        let cubic = tc_surface_decide(whole, own.surface, torus_scene_tori[own.info.x].params);
+        if (cubic.code == TORUS_HIT && cubic.t > hi_t) {
+            return tc_scene_decided(TORUS_MISS);
+        }
+        if (cubic.code != TORUS_ESCALATE) {
+            var plan = tc_scene_decided(cubic.code);
+            plan.t = cubic.t;
+            plan.normal = cubic.normal;
+            return plan;
+        }
+        if (cubic.t >= 0.0) {
+            start = max(whole.t_min, cubic.t);
+        } else if (holds != 2.0) {
+            return tc_scene_decided(TORUS_ESCALATE);
+        }
+    }
+    var plan = tc_scene_decided(TC_SCENE_RUN);
+    plan.ray = TorusRay(own.ray.origin, start, own.ray.direction, min(own.ray.t_max, hi_t));
+    return plan;
+}
+
+// One torus against the ray over [t_min, hi_t]: the range clipped to |t| ≤ L = (|o − c| +
+// 4(R + r))/|d| (no root lies beyond: |t·d| ≤ |o − c| + R + r, and the factor 4 and 1.001
+// cover f32's rounding of L; the centre's own rounding where f32 does not hold it); the
+// plan (tc_scene_plan: scene_f64.wgsl moves the origin to its foot point in f64 first, as
+// the library's host does; scene_host.wgsl sends o − c in f32; a spawned ray's own torus,
+// `mine`, tc_scene_own_plan), the certified f32 module behind the cull, then, where that
+// proves nothing, tc_scene_escalated (the f64 finish, from the surface for `mine`, or the
+// host). One call of each, so that the shader holds one copy of the module and the finish.
+fn tc_scene_leaf(ray: TorusRay, i: u32, hi_t: f32, cull: u32, mine: bool, own: TorusSceneOwn)
+    -> TcSceneLeaf {
     let tor = torus_scene_tori[i];
-    let v = ray.origin - tor.center.xyz;
-    let dist = length(v);
-    // center.w < 0: a centre f32 does not hold (Torus::new_f64), so `v` is off by up to
-    // ulp(|c|): the reach allows for it, and the f32 leaf is skipped.
-    let exact = tor.center.w > 0.0;
-    let reach = (dist + 4.0 * abs(tor.center.w) + 2.4e-7 * length(tor.center.xyz))
-        / length(ray.direction) * 1.001;
+    let reach = (length(ray.origin - tor.center.xyz) + 4.0 * abs(tor.center.w)
+        + 2.4e-7 * length(tor.center.xyz)) / length(ray.direction) * 1.001;
     let lo = max(ray.t_min, -reach);
     let hi = min(hi_t, reach);
     var leaf: TcSceneLeaf;
     leaf.by_f64 = false;
+    leaf.code = TORUS_MISS;
     if (lo > hi) {
-        leaf.code = TORUS_MISS;
         return leaf;
     }
-    if (exact && dist < TC_SCENE_FAR * tor.params.rot_x.w) {
-        let h = torus_intersect(TorusRay(v, lo, ray.direction, hi), tor.params, cull);
-        if (h.code == TORUS_HIT && h.t >= lo && h.t <= hi) {
-            leaf.code = TORUS_HIT;
-            leaf.t = h.t;
-            leaf.normal = h.normal;
-            return leaf;
-        }
-        if (h.code == TORUS_MISS) {
-            leaf.code = TORUS_MISS;
-            return leaf;
-        }
+    var plan: TcScenePlan;
+    if (mine) {
+        plan = tc_scene_own_plan(own, hi);
+    } else {
+        plan = tc_scene_plan(ray, i, lo, hi);
     }
-    return tc_scene_escalated(TorusRay(ray.origin, lo, ray.direction, hi), i);
+    if (plan.code == TC_SCENE_RUN) {
+        let h = torus_intersect(plan.ray, tor.params, cull);
+        plan.code = h.code;
+        plan.t = tc_scene_shift(h.t, plan.t0);
+        plan.normal = h.normal;
+    }
+    if (plan.code == TORUS_HIT && plan.t >= lo && plan.t <= hi) {
+        leaf.code = TORUS_HIT;
+        leaf.t = plan.t;
+        leaf.normal = plan.normal;
+        return leaf;
+    }
+    if (plan.code == TORUS_MISS) {
+        return leaf;
+    }
+    return tc_scene_escalated(TorusRay(ray.origin, lo, ray.direction, hi), i, mine);
 }
 
-// The closest hit, or with any_hit the first proved one: a stack walk from the root,
-// each node's box tested when it is popped against [t_min, the nearest hit so far], the
-// nearer child pushed last. A leaf the f32 module and the f64 finish could not prove
-// marks the ray for the host (TORUS_SCENE_HOST) and the walk goes on (an any-hit walk
-// that later proves a hit still answers it: one proved blocker suffices).
-fn torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit {
+// The walk from the root, each node's box tested when it is popped against [t_min, the
+// nearest hit so far], the nearer child pushed last; at each leaf, tc_scene_leaf (a
+// spawned ray's own torus, own.info.x where `spawned`, on its surface path). A leaf the
+// f32 module and the f64 finish could not prove marks the ray for the host
+// (TORUS_SCENE_HOST) and the walk goes on (an any-hit walk that later proves a hit still
+// answers it: one proved blocker suffices). A closest-hit walk ends when the stack is
+// empty.
+fn tc_scene_walk(ray: TorusRay, cull: u32, any_hit: bool, spawned: bool, own: TorusSceneOwn)
+    -> TorusSceneHit {
     var out: TorusSceneHit;
     out.status = TORUS_SCENE_MISS;
     out.torus = TORUS_SCENE_NONE;
@@ -177,7 +272,8 @@ fn torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit {
             continue;
         }
         out.leaves += 1u;
-        let leaf = tc_scene_leaf(ray, node.index, best, cull);
+        let mine = spawned && node.index == own.info.x;
+        let leaf = tc_scene_leaf(ray, node.index, best, cull, mine, own);
         if (leaf.by_f64) {
             out.f64_leaves += 1u;
         }
@@ -198,4 +294,18 @@ fn torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit {
         out.status = TORUS_SCENE_HOST;
     }
     return out;
+}
+
+// The closest hit, or with any_hit the first proved one, over every torus.
+fn torus_scene_trace(ray: TorusRay, cull: u32, any_hit: bool) -> TorusSceneHit {
+    var none: TorusSceneOwn;
+    none.info = vec4<u32>(TORUS_SCENE_NONE, 0u, 0u, 0u);
+    return tc_scene_walk(ray, cull, any_hit, false, none);
+}
+
+// The same for a ray spawned on torus own.info.x (TorusSceneOwn): that torus on its
+// surface path, every other on the literal ray.
+fn torus_scene_trace_from(ray: TorusRay, own: TorusSceneOwn, cull: u32, any_hit: bool)
+    -> TorusSceneHit {
+    return tc_scene_walk(ray, cull, any_hit, own.info.x != TORUS_SCENE_NONE, own);
 }
