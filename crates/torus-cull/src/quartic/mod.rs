@@ -45,6 +45,7 @@ mod close_pairs;
 mod corpus;
 mod discriminant;
 mod even;
+mod first_root;
 // The fma-free sign of p² − 4r that the GPU's f64 pass computes, proved here (tests only:
 // the CPU's own even quartic uses a fused multiply-add).
 #[cfg(test)]
@@ -62,8 +63,9 @@ mod tests;
 pub(crate) mod trisect;
 
 pub use all_roots::{solve_depressed_monic, solve_quartic};
+pub use first_root::first_root_depressed;
+pub(crate) use first_root::{WIDEN, first_root_in_range};
 pub use nearest::nearest_root_depressed;
-pub(crate) use nearest::nearest_root_in_range;
 
 pub use roots::RealRoots;
 
