@@ -251,78 +251,110 @@ impl Piece {
         self.at_extremum(p, q, r)
     }
 
-    /// `g0, g1 ≥ 0` with the slope from `< 0` to `> 0`: the extremum decides (module docs).
-    #[cold]
+    /// `g0, g1 > 0` with the slope from `< 0` to `> 0`: Newton's steps on `g′` toward the
+    /// minimum `m`, from the secant's root, stopping as soon as a point with `g < 0` shows
+    /// two roots (the first then lies left of it), the two end tangents prove `g` above
+    /// [`TOUCH`]'s bound on the whole piece, or `m` is found and `g(m)` decides (module
+    /// docs).
     fn at_extremum(&self, p: f64, q: f64, r: f64) -> Option<f64> {
         let Piece {
-            x0, x1, e0, e1, s, ..
+            x0,
+            x1,
+            g0,
+            e0,
+            g1,
+            e1,
+            s,
         } = *self;
-        let m = extremum(p, q, r, x0, x1, e0, e1, s);
-        let (f, _) = value(p, q, r, m);
-        let g = s * f;
-        let bound = EPS * magnitude(p, q, r, m);
-        if g > TOUCH * bound {
-            return None;
+        // Left of m (g′ < 0) and right of it (g′ > 0), each with g > 0, g′ there.
+        let (mut xa, mut ga, mut ea) = (x0, g0, e0);
+        let (mut xb, mut gb, mut eb) = (x1, g1, e1);
+        let mut x = xa - ea * ((xb - xa) / (eb - ea));
+        if !(x > xa && x < xb) {
+            x = 0.5 * (xa + xb);
         }
-        if g >= -SIGN_SURE * bound {
-            return Some(m);
+        let mut last = xb - xa;
+        for _ in 0..MAX_STEPS {
+            let u2 = x * x;
+            let (f, df) = value(p, q, r, x);
+            let (g, e) = (s * f, s * df);
+            let d2 = s * (12.0 * u2 + 2.0 * p);
+            let bound = EPS * magnitude(p, q, r, x);
+            if g < -SIGN_SURE * bound {
+                // Two roots, the first in (xa, x).
+                return Some(first_of_pair(p, q, r, s, (xa, ga, ea), (x, g, e, d2)));
+            }
+            if e < 0.0 {
+                (xa, ga, ea) = (x, g, e);
+            } else if e > 0.0 {
+                (xb, gb, eb) = (x, g, e);
+            } else {
+                return None;
+            }
+            // The tangents at xa and xb lie below the convex g: their crossing bounds its
+            // minimum from below.
+            let cross = (gb - ga + ea * xa - eb * xb) / (ea - eb);
+            let floor = ga + ea * (cross - xa);
+            if floor > TOUCH * bound {
+                return None;
+            }
+            let step = e / d2;
+            let next = x - step;
+            let newton = next > xa && next < xb && step.abs() <= 0.75 * last;
+            let next = if newton { next } else { split(xa, xb) };
+            // m to the last bits (|f‴/(2f″)|·δ² below 2ε|u| for a short step, or f′
+            // within its rounding): g(m) within TOUCH's bound above 0 is a double root.
+            let slope_noise = SIGN_SURE * EPS * ((4.0 * u2 + 2.0 * p.abs()) * x.abs() + q.abs());
+            let converged = newton
+                && (e.abs() <= slope_noise
+                    || step.abs() <= SHORT * x.abs()
+                        && step * step * (24.0 * x).abs() <= 4.0 * EPS * x.abs() * d2.abs());
+            if converged || !(next > xa && next < xb) {
+                let m = if next > xa && next < xb { next } else { x };
+                let (f, df) = value(p, q, r, m);
+                let (g, bound) = (s * f, EPS * magnitude(p, q, r, m));
+                if g > TOUCH * bound {
+                    return None;
+                }
+                if g >= -SIGN_SURE * bound {
+                    // A double root (module docs), or a pair within rounding of one.
+                    return Some(m);
+                }
+                let d2 = s * (12.0 * m * m + 2.0 * p);
+                return Some(first_of_pair(p, q, r, s, (xa, ga, ea), (m, g, s * df, d2)));
+            }
+            last = (next - x).abs();
+            x = next;
         }
-        let d2 = s * (12.0 * m * m + 2.0 * p);
-        let start = m - (-2.0 * g / d2).sqrt();
-        let start = if start > x0 && start < m {
-            start
-        } else {
-            0.5 * (x0 + m)
-        };
-        // f at x0 has the sign of g0 > 0 times s.
-        Some(refine(p, q, r, x0, m, s < 0.0, start))
+        None
     }
 }
 
-/// The extremum of `f` in `(x0, x1)`, where `g′ = s·f′` goes from `e0 < 0` to `e1 > 0`
-/// and is increasing: Newton's steps on `f′` from the secant's root, inside the bracket.
-#[allow(clippy::too_many_arguments)]
-fn extremum(p: f64, q: f64, r: f64, x0: f64, x1: f64, e0: f64, e1: f64, s: f64) -> f64 {
-    let _ = r;
-    let (mut a, mut b) = (x0, x1);
-    let mut x = x0 - e0 * ((x1 - x0) / (e1 - e0));
-    if !(x > a && x < b) {
-        x = 0.5 * (a + b);
-    }
-    let mut last = b - a;
-    for _ in 0..MAX_STEPS {
-        let u2 = x * x;
-        let e = s * ((4.0 * u2 + 2.0 * p) * x + q);
-        if e == 0.0 {
-            return x;
-        }
-        if e < 0.0 {
-            a = x;
-        } else {
-            b = x;
-        }
-        let d2 = s * (12.0 * u2 + 2.0 * p);
-        let step = e / d2;
-        let next = x - step;
-        let newton = next > a && next < b && step.abs() <= 0.75 * last;
-        let next = if newton { next } else { split(a, b) };
-        // The next Newton error, |f‴/(2f″)|·δ² with f‴ = 24u, below 2ε|u| for a short
-        // step, or f′ within its rounding (an extremum near 0): converged.
-        let slope_noise = SIGN_SURE * EPS * ((4.0 * u2 + 2.0 * p.abs()) * x.abs() + q.abs());
-        if newton
-            && (e.abs() <= slope_noise
-                || step.abs() <= SHORT * x.abs()
-                    && step * step * (12.0 * x).abs() <= 2.0 * EPS * x.abs() * d2.abs())
-        {
-            return next;
-        }
-        if !(next > a && next < b) {
-            return x;
-        }
-        last = (next - x).abs();
-        x = next;
-    }
-    x
+/// The first of two roots on a piece where `g = s·f` is convex: `g > 0` with `g′ < 0` at
+/// `xa`, `g < 0` at `x` (with `g′`, `g″` there). Refined on `(xa, x)` from the left root
+/// of the parabola at `x`, or from Newton's point from `xa`, which lies left of the root
+/// (`g` is convex and `g(xa) > 0`).
+fn first_of_pair(
+    p: f64,
+    q: f64,
+    r: f64,
+    s: f64,
+    (xa, ga, ea): (f64, f64, f64),
+    (x, g, e, d2): (f64, f64, f64, f64),
+) -> f64 {
+    let left = xa - ga / ea;
+    let vertex = x - e / d2;
+    let depth = g - 0.5 * e * (e / d2);
+    let start = vertex - (-2.0 * depth / d2).sqrt();
+    let start = if start > left && start < x {
+        start
+    } else if left > xa && left < x {
+        left
+    } else {
+        0.5 * (xa + x)
+    };
+    // f at xa has the sign of g > 0 times s.
+    refine(p, q, r, xa, x, s < 0.0, start)
 }
 
 /// The root of `f` in `[a, b]`, where `f` is monotone with `f(a) < 0` iff `neg_at_a`,
@@ -339,16 +371,18 @@ fn refine(p: f64, q: f64, r: f64, mut a: f64, mut b: f64, neg_at_a: bool, mut x:
         } else {
             b = x;
         }
-        let step = f / df;
+        // Halley's step (cubic convergence): δ = f f′ / (f′² − f f″/2).
+        let d2 = 12.0 * x * x + 2.0 * p;
+        let step = (f * df) / (df * df - 0.5 * f * d2);
         let next = x - step;
         let newton = next > a && next < b && step.abs() <= 0.75 * last;
         if newton {
-            let d2 = 12.0 * x * x + 2.0 * p;
-            // The next step's size |f″/(2f′)|·δ² below 2ε|u|, or f within rounding. The
-            // prediction takes f″ at x, so it holds only for a step too short for f″ to
-            // change much (one at an inflection point would predict 0).
+            // The next error, about K·δ³ with K = (f″/2f′)² + |f‴/6f′| (f‴ = 24u), below
+            // 2ε|u|, or f within rounding. K is taken at x, so the prediction holds only
+            // for a step too short for it to change much.
+            let k = 0.25 * (d2 / df) * (d2 / df) + (4.0 * x / df).abs();
             let tiny = step.abs() <= SHORT * next.abs()
-                && step * step * d2.abs() <= 4.0 * EPS * next.abs() * df.abs();
+                && step.abs() * step * step * k <= 2.0 * EPS * next.abs();
             if tiny || f.abs() <= SIGN_SURE * EPS * magnitude(p, q, r, x) {
                 return next;
             }
