@@ -3,9 +3,9 @@
 //! high-precision reference roots.
 //!
 //! Every solver answers the renderer's question, the nearest root at or after the ray's
-//! origin (t ≥ 0): ours directly (`torus_cull`: [`first_root_depressed`], the bracketed
-//! walk the scalar intersection uses; `torus_cull_ferrari`: [`nearest_root_depressed`],
-//! the closed form it replaced, kept so that new / old is paired in one run), the all-roots solvers
+//! origin (t ≥ 0): ours directly (`torus_cull`: [`nearest_root_depressed`], the closed
+//! form the scalar intersection uses; `torus_cull_first`: [`first_root_depressed`], issue
+//! 61's bracketed walk, paired against it in one run), the all-roots solvers
 //! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking, and
 //! `polycool` 0.4 (Yuksel's monotone pieces) by its roots in `[lo, B]`.
 //! Accuracy is counted on that nearest root by [`NearestScore`], the count
@@ -55,7 +55,7 @@ fn ours_first(c: &[f64; 3], lo: f64) -> Option<f64> {
 }
 
 #[inline(always)]
-fn ours_ferrari(c: &[f64; 3], lo: f64) -> Option<f64> {
+fn ours_nearest(c: &[f64; 3], lo: f64) -> Option<f64> {
     nearest_root_depressed(c[0], c[1], c[2], lo, f64::INFINITY)
 }
 
@@ -102,8 +102,8 @@ pub type Solver = (&'static str, fn(&[f64; 3], f64) -> Option<f64>);
 
 /// Ours first; the ratio tables compare everyone with `roots_0.0.8`.
 pub const SOLVERS: [Solver; 6] = [
-    ("torus_cull", ours_first),
-    ("torus_cull_ferrari", ours_ferrari),
+    ("torus_cull", ours_nearest),
+    ("torus_cull_first", ours_first),
     ("torus_cull_all", ours_all),
     ("roots_0.0.8", roots_crate),
     ("kurbo_0.13", kurbo_crate),
@@ -199,15 +199,16 @@ fn paired_vs_roots(
     let quiet = quiet_rounds(&rounds.ns, &eligible, QUIET_FRACTION);
     let pick = |i: usize| quiet.iter().map(|&k| rounds.ns[i][k]).collect::<Vec<f64>>();
     let work = sets.len().max(1) as f64;
-    // New / old on the same rounds (printed, not recorded: the records pair with `roots`).
+    // The walk over the closed form on the same rounds (printed, not recorded: the
+    // records pair with `roots`).
     let (new, old) = (
+        names.iter().position(|n| *n == "torus_cull_first"),
         names.iter().position(|n| *n == "torus_cull"),
-        names.iter().position(|n| *n == "torus_cull_ferrari"),
     );
     if let (Some(new), Some(old)) = (new, old) {
         if let Some(e) = ratio_estimate(&pick(new), &pick(old), work, seed ^ 0xf1) {
             println!(
-                "solver-{family}: paired torus_cull / torus_cull_ferrari {:.3} [{:.3}, {:.3}] over {} rounds",
+                "solver-{family}: paired torus_cull_first / torus_cull {:.3} [{:.3}, {:.3}] over {} rounds",
                 e.ratio, e.ratio_ci[0], e.ratio_ci[1], e.rounds
             );
         }

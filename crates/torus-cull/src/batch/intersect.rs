@@ -270,7 +270,6 @@ impl<S: Simd> NearestRoot<F64s<S>> for Lanes {
         c0: F64s<S>,
         lo: F64s<S>,
         hi: F64s<S>,
-        _chord_sq: F64s<S>,
     ) -> (F64s<S>, M64s<S>) {
         nearest_root(c2, c1, c0, lo, hi)
     }

@@ -6,40 +6,33 @@
 //! then `t` and the normal. Early exits are "no lane still live" (`.any()`), which at width
 //! 1 is the scalar `if`, so the scalar path skips the quartic on a chord miss exactly as a
 //! hand-written one would. Only the solver differs between the two instantiations
-//! ([`NearestRoot`]): the scalar one is the bracketed first-root walk of
-//! [`crate::quartic`] over the chord, the lane one the closed form's common path, which
-//! flags the lanes it leaves to the scalar solver.
+//! ([`NearestRoot`]): the scalar one is the careful solver of [`crate::quartic`], the lane
+//! one its common path, which flags the lanes it leaves to the careful one.
 
 use super::reduce::{chord_in_range, coefficients, foot_line, normal};
 use crate::geometry::Tube;
 use crate::num::V3;
 use crate::num::{Real, RealMask, Sc, sc, sc_mask};
-use crate::quartic::{WIDEN, first_root_in_range, nearest_root_depressed, out_of_range};
+use crate::quartic::{nearest_root_depressed, nearest_root_in_range};
 
 /// The nearest root a driver instantiation uses.
 pub(crate) trait NearestRoot<R: Real> {
     /// The nearest root of `u⁴ + c2 u² + c1 u + c0` in `[lo, hi]` (NaN for none), and the
-    /// lanes left to the careful scalar solver. Every root lies on the bounding sphere's
-    /// chord, `u² ≤ chord_sq` ([`super::reduce::FootLine::chord_sq`]).
-    fn nearest(c2: R, c1: R, c0: R, lo: R, hi: R, chord_sq: R) -> (R, R::Mask);
+    /// lanes left to the careful scalar solver.
+    fn nearest(c2: R, c1: R, c0: R, lo: R, hi: R) -> (R, R::Mask);
 }
 
-/// The scalar solver ([`crate::quartic`]'s bracketed first-root walk over the chord):
-/// every root decided, no lane left over. `CHECKED` keeps the coefficient range check
-/// (for raw, unvalidated input), whose rare hits go to the closed form's scaled path.
+/// The scalar solver ([`crate::quartic`]): every root decided, no lane left over.
+/// `CHECKED` keeps its coefficient range check (for raw, unvalidated input).
 pub(crate) struct Careful<const CHECKED: bool>;
 
 impl<const CHECKED: bool> NearestRoot<Sc> for Careful<CHECKED> {
     #[inline(always)]
-    fn nearest(c2: Sc, c1: Sc, c0: Sc, lo: Sc, hi: Sc, chord_sq: Sc) -> (Sc, <Sc as Real>::Mask) {
-        let u = if CHECKED && out_of_range(c2.v, c1.v, c0.v) {
+    fn nearest(c2: Sc, c1: Sc, c0: Sc, lo: Sc, hi: Sc) -> (Sc, <Sc as Real>::Mask) {
+        let u = if CHECKED {
             nearest_root_depressed(c2.v, c1.v, c0.v, lo.v, hi.v)
         } else {
-            // The chord's half-length, widened by 2⁻²⁰ (relative and absolute) for the
-            // rounding of the coefficients and of the chord itself: a tangent's double
-            // root moves by √ε, and the chord test's own slack is 10⁻¹² of R².
-            let h = chord_sq.v.max(0.0).sqrt() * (1.0 + WIDEN) + WIDEN;
-            first_root_in_range(c2.v, c1.v, c0.v, lo.v, hi.v, h)
+            nearest_root_in_range(c2.v, c1.v, c0.v, lo.v, hi.v)
         };
         (sc(u.unwrap_or(f64::NAN)), sc_mask(false))
     }
@@ -78,7 +71,7 @@ pub(crate) fn nearest_hit<R: Real, N: NearestRoot<R>>(
         return None;
     }
     let [c2, c1, c0] = coefficients(line.p, line.dh, t_min.k(tube.minor_rel));
-    let (u, cold) = N::nearest(c2, c1, c0, lo, hi, chord_sq);
+    let (u, cold) = N::nearest(c2, c1, c0, lo, hi);
     let hit = reaches & !u.is_nan() & !cold;
     let fallback = reaches & cold;
     if !(hit | fallback).any() {

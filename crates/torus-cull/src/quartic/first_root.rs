@@ -1,43 +1,48 @@
 //! The renderer's query by a **bracketed walk** (issue 61): the first real root of
 //! `f(u) = u⁴ + p u² + q u + r` in `[lo, hi]`, found without the resolvent and without the
-//! roots past it.
+//! roots past it. Measured slower than the closed form ([`super::nearest_root_depressed`])
+//! on uniform lines and about even on tangent ones (docs/math.md, "The bracketed
+//! first-root walk"), so [`crate::intersect()`] keeps the closed form; this is the
+//! library's second answer to the same question, held to the same tests.
 //!
 //! **Pieces.** `f″ = 12u² + 2p` vanishes only at `±w`, `w = √(−p/6)` (for `p < 0`), so
 //! those two points split any interval into at most three pieces on each of which `f` is
 //! convex or concave: `f′` is monotone there, so a piece holds at most one extremum and
-//! at most two roots. No cubic is solved to find the pieces (the derivative's roots are
-//! only needed on the one piece whose ends have the same sign and whose slope changes
-//! sign, and there by Newton's steps on `f′`, from the secant). This is C. Yuksel's
-//! "High-Performance Polynomial Root Finding for Graphics" (HPG 2022) cut down to a
-//! quartic without a cubic term: the split one degree further down, where it is a
-//! square root.
+//! at most two roots. No cubic is solved to find the pieces (the derivative's root is
+//! only sought on a piece whose ends have the same sign and whose slope changes sign).
+//! This is C. Yuksel's "High-Performance Polynomial Root Finding for Graphics" (HPG 2022)
+//! cut down to a quartic without a cubic term: the split one degree further down, where
+//! it is a square root.
 //!
 //! **The walk**, near to far, stops at the first piece that holds a root. With `g = ±f`
 //! convex on a piece `[x₀, x₁]`:
-//! - `g(x₀) < 0`: a root iff `g(x₁) ≥ 0`, one crossing, approached by Newton from `x₁`
-//!   (Fourier's side: `g g″ > 0` there, so the steps never overshoot);
+//! - `g(x₀) < 0`: a root iff `g(x₁) ≥ 0`, one crossing, approached from `x₁`;
 //! - `g(x₀) > 0`, `g′(x₀) ≥ 0`: none (`g` only grows); `g(x₁) < 0`: one crossing,
 //!   approached from `x₀`; `g′(x₁) ≤ 0`: none (`g ≥ g(x₁) > 0`);
-//! - otherwise the extremum `m` (`g′(m) = 0`) decides, exactly as the closed form's
-//!   near-double pairs are decided ([`super::factor`]): `g(m)` beyond
-//!   [`TOUCH`]`·ε·Σ|cᵢ||m|ⁱ` above zero, no root; within [`SIGN_SURE`]`·ε·Σ` of zero (or
-//!   above it within `TOUCH`'s), a double root at `m`, a tangent that is never lost;
-//!   below, two roots `m ± √(−2g/g″)`, the first refined on `[x₀, m]`.
+//! - otherwise Newton's steps on `g′` seek the minimum `m` from the secant's root, and
+//!   stop at the first point where `g < −`[`SIGN_SURE`]`·ε·Σ|cᵢ||u|ⁱ` (two roots: the
+//!   first is refined left of it, from the parabola there), or where the two outermost
+//!   tangents, which lie below the convex `g`, prove it above [`TOUCH`]`·ε·Σ` on the whole
+//!   piece (none). At `m` itself `g(m)` decides exactly as the closed form's near-double
+//!   pairs are decided ([`super::factor`]): above `TOUCH·ε·Σ` none; from
+//!   `−SIGN_SURE·ε·Σ` to that, a double root at `m`, a tangent that is never lost; below,
+//!   two roots, the first refined on `[x₀, m]`.
 //!
 //! A piece end at `±w` where `|f|` is within `TOUCH·ε·Σ` is a root too: an extremum that
 //! rounding put on the wrong side of the inflection point is not lost there.
 //!
-//! **Steps.** Each refinement keeps a bracket with a sign change and takes Newton's step
-//! where it stays inside and is at most ¾ of the last, bisecting otherwise. It stops
-//! when the step's predicted successor, `|f″/(2f′)|·δ²`, is below `2ε·|u|` (the last step
-//! is taken), when `|f|` is within Horner's rounding `8ε·Σ|cᵢ||u|ⁱ` (then the point is a
-//! root of a quartic within rounding of the given one: the error is `8κε|u|`, κ the
-//! root's condition number), or when the bracket is down to adjacent floats.
+//! **Steps.** Each refinement keeps a bracket with a sign change and takes Halley's step
+//! `f f′/(f′² − f f″/2)` where it stays inside and is at most ¾ of the last, bisecting
+//! (in magnitude across binades) otherwise. It stops when the step's predicted successor,
+//! `K·δ³` with `K = (f″/2f′)² + |f‴/6f′|`, is below `2ε·|u|` for a step under 2⁻¹⁶`|u|`
+//! (the last step is taken), when `|f|` is within Horner's rounding `8ε·Σ|cᵢ||u|ⁱ` (then
+//! the point is a root of a quartic within rounding of the given one: the error is
+//! `8κε|u|`, κ the root's condition number), or when the bracket is down to adjacent
+//! floats.
 //!
-//! **Range.** The caller gives `[lo, hi]` and a bound `h` with every root of interest in
-//! `[−h, h]`: the bounding sphere's chord ([`crate::intersect()`]), or, for the public
-//! [`first_root_depressed`], `max(1, √S)` with `S = max(0, −p) + |q| + max(0, −r)`: for
-//! `|u| ≥ 1`, `f(u) ≥ u⁴ − S u² > 0` beyond it.
+//! **Range.** The walk covers `[max(lo, −h), min(hi, h)]` for a bound `h` on every root:
+//! the smaller of `max(1, √S)`, `S = max(0, −p) + |q| + max(0, −r)` (for `|u| ≥ 1`,
+//! `f(u) ≥ u⁴ − S u² > 0` beyond it), and Fujiwara's bound rounded up to a power of two.
 //!
 //! An even quartic (`q = 0`) and the discriminant's early exit are shared with
 //! [`super::nearest_root_depressed`], so every tangent those decide by an exact sign is
@@ -96,7 +101,8 @@ pub fn first_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<
     if super::out_of_range(p, q, r) {
         return super::nearest_root_depressed(p, q, r, lo, hi);
     }
-    first_root_in_range(p, q, r, lo, hi, coefficient_bound(p, q, r))
+    // The bound is computed only for a quartic past the discriminant's early exit.
+    first_root_in_range(p, q, r, lo, hi, || coefficient_bound(p, q, r))
 }
 
 /// A bound `h` with every real root of `u⁴ + p u² + q u + r` in `(−h, h)`, the smaller
@@ -105,7 +111,7 @@ pub fn first_root_depressed(p: f64, q: f64, r: f64, lo: f64, hi: f64) -> Option<
 /// a power of two from the exponents alone (tight within 4× at any scale, where `√S` is
 /// the scale squared for roots far from 1).
 #[inline(always)]
-pub(crate) fn coefficient_bound(p: f64, q: f64, r: f64) -> f64 {
+fn coefficient_bound(p: f64, q: f64, r: f64) -> f64 {
     let s = (-p).max(0.0) + q.abs() + (-r).max(0.0);
     let near_one = s.max(1.0).sqrt() * (1.0 + WIDEN);
     // 2^e > |x| for e = the biased exponent − 1022 (≥ −1022); ⌈e/k⌉ by an integer
@@ -126,13 +132,21 @@ pub(crate) fn coefficient_bound(p: f64, q: f64, r: f64) -> f64 {
 const SHORT: f64 = 1.52587890625e-5; // 2⁻¹⁶
 
 /// The relative widening of a bound on the roots, for the rounding of its computation.
-pub(crate) const WIDEN: f64 = 9.5367431640625e-7; // 2⁻²⁰
+const WIDEN: f64 = 9.5367431640625e-7; // 2⁻²⁰
 
-/// [`first_root_depressed`] for coefficients within 2^±100, with a bound `h` that every
+/// [`first_root_depressed`] for coefficients within 2^±100, with a bound `h()` that every
 /// root in `[lo, hi]` is known to lie within (`|u| ≤ h`): the walk covers
-/// `[max(lo, −h), min(hi, h)]`.
+/// `[max(lo, −h), min(hi, h)]`. A caller that knows a tighter interval (the bounding
+/// sphere's chord) can pass it here.
 #[inline(always)]
-pub(crate) fn first_root_in_range(p: f64, q: f64, r: f64, lo: f64, hi: f64, h: f64) -> Option<f64> {
+fn first_root_in_range(
+    p: f64,
+    q: f64,
+    r: f64,
+    lo: f64,
+    hi: f64,
+    h: impl FnOnce() -> f64,
+) -> Option<f64> {
     if surely_no_real_root(p, q, r) {
         return None;
     }
@@ -146,6 +160,7 @@ pub(crate) fn first_root_in_range(p: f64, q: f64, r: f64, lo: f64, hi: f64, h: f
         return (best != f64::INFINITY).then_some(best);
     }
     // Both finite and not NaN from here on (lo, hi and h are).
+    let h = h();
     let (a, b) = (lo.max(-h), hi.min(h));
     if a > b {
         return None;

@@ -64,8 +64,8 @@ pub(crate) mod trisect;
 
 pub use all_roots::{solve_depressed_monic, solve_quartic};
 pub use first_root::first_root_depressed;
-pub(crate) use first_root::{WIDEN, first_root_in_range};
 pub use nearest::nearest_root_depressed;
+pub(crate) use nearest::nearest_root_in_range;
 
 pub use roots::RealRoots;
 
