@@ -3,7 +3,9 @@
 //! high-precision reference roots.
 //!
 //! Every solver answers the renderer's question, the nearest root at or after the ray's
-//! origin (t ≥ 0): ours directly ([`nearest_root_depressed`]), the all-roots solvers
+//! origin (t ≥ 0): ours directly (`torus_cull`: [`nearest_root_depressed`], the closed
+//! form the scalar intersection uses; `torus_cull_first`: [`first_root_depressed`], issue
+//! 61's bracketed walk, paired against it in one run), the all-roots solvers
 //! (ours, `roots` 0.0.8, `kurbo` 0.13's Algorithm 1010) by solving and then picking, and
 //! `polycool` 0.4 (Yuksel's monotone pieces) by its roots in `[lo, B]`.
 //! Accuracy is counted on that nearest root by [`NearestScore`], the count
@@ -16,7 +18,7 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::{Duration, Instant, SystemTime};
 use torus_cull::batch::{Dispatch, Quartics, nearest_roots};
-use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
+use torus_cull::quartic::{first_root_depressed, nearest_root_depressed, solve_depressed_monic};
 use torus_cull_lab::paired::stats::{QUIET_FRACTION, quiet_rounds};
 use torus_cull_lab::paired::{Schedule, interleave, ratio_estimate};
 use torus_cull_lab::results::{SolverPairedRatio, SolverRecord};
@@ -45,6 +47,11 @@ fn nearest_at_or_after(roots: &[f64], lo: f64) -> Option<f64> {
         .copied()
         .filter(|&u| u >= lo)
         .min_by(f64::total_cmp)
+}
+
+#[inline(always)]
+fn ours_first(c: &[f64; 3], lo: f64) -> Option<f64> {
+    first_root_depressed(c[0], c[1], c[2], lo, f64::INFINITY)
 }
 
 #[inline(always)]
@@ -94,8 +101,9 @@ const POLYCOOL_X_ERROR: f64 = 1e-14;
 pub type Solver = (&'static str, fn(&[f64; 3], f64) -> Option<f64>);
 
 /// Ours first; the ratio tables compare everyone with `roots_0.0.8`.
-pub const SOLVERS: [Solver; 5] = [
+pub const SOLVERS: [Solver; 6] = [
     ("torus_cull", ours_nearest),
+    ("torus_cull_first", ours_first),
     ("torus_cull_all", ours_all),
     ("roots_0.0.8", roots_crate),
     ("kurbo_0.13", kurbo_crate),
@@ -149,6 +157,7 @@ const REFERENCE: &str = "roots_0.0.8";
 /// shuffled order, for about 3 s at the default size (0.3 s or more), and the ratio is
 /// the median over the quietest rounds, with its bootstrap interval ([`torus_cull_lab::paired`]).
 fn paired_vs_roots(
+    family: &str,
     sets: &[SolverCase],
     q: &Quartics,
     dispatch: &Dispatch,
@@ -190,6 +199,20 @@ fn paired_vs_roots(
     let quiet = quiet_rounds(&rounds.ns, &eligible, QUIET_FRACTION);
     let pick = |i: usize| quiet.iter().map(|&k| rounds.ns[i][k]).collect::<Vec<f64>>();
     let work = sets.len().max(1) as f64;
+    // The walk over the closed form on the same rounds (printed, not recorded: the
+    // records pair with `roots`).
+    let (new, old) = (
+        names.iter().position(|n| *n == "torus_cull_first"),
+        names.iter().position(|n| *n == "torus_cull"),
+    );
+    if let (Some(new), Some(old)) = (new, old) {
+        if let Some(e) = ratio_estimate(&pick(new), &pick(old), work, seed ^ 0xf1) {
+            println!(
+                "solver-{family}: paired torus_cull_first / torus_cull {:.3} [{:.3}, {:.3}] over {} rounds",
+                e.ratio, e.ratio_ci[0], e.ratio_ci[1], e.rounds
+            );
+        }
+    }
     (0..names.len())
         .map(|i| {
             let e = ratio_estimate(&pick(i), &pick(reference), work, seed ^ i as u64)?;
@@ -216,7 +239,7 @@ pub fn records(
         let q = quartics(sets);
         let mut batch = Vec::new();
         nearest_roots(dispatch, &q, &mut batch);
-        let paired = paired_vs_roots(sets, &q, dispatch, 0x5017_0000 + f as u64);
+        let paired = paired_vs_roots(family, sets, &q, dispatch, 0x5017_0000 + f as u64);
         for (name, paired) in solver_names().zip(paired) {
             let solve = SOLVERS.iter().find(|(n, _)| *n == name).map(|(_, f)| *f);
             let mut score = NearestScore::default();

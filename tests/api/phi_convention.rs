@@ -24,7 +24,7 @@ fn check(center: DVec3, axis: DVec3) {
         assert!((back - phi).abs() < 1e-12, "φ {phi} came back as {back}");
         // A quarter of the way from the outer equator to the inner: ρ = R + r/2, inside.
         let inward = on_surface + (torus.point_at(PI, phi) - on_surface) * 0.25;
-        let in_segment = phi >= PI / 4.0 && phi <= 3.0 * PI / 4.0;
+        let in_segment = (PI / 4.0..=3.0 * PI / 4.0).contains(&phi);
         assert_eq!(
             bend.contains(inward),
             in_segment,

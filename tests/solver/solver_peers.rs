@@ -6,7 +6,7 @@
 //! printed (`--nocapture`) for docs/solver.md.
 
 use std::path::Path;
-use torus_cull::quartic::{nearest_root_depressed, solve_depressed_monic};
+use torus_cull::quartic::{first_root_depressed, nearest_root_depressed, solve_depressed_monic};
 use torus_cull_lab::solver_suite::{FAMILIES, NearestScore, family_cases};
 use torus_cull_lab::workload::spec::Workload;
 
@@ -25,9 +25,13 @@ fn nearest_at_or_after(roots: &[f64], lo: f64) -> Option<f64> {
 
 type Solver = (&'static str, fn(&[f64; 3], f64) -> Option<f64>);
 
-const SOLVERS: [Solver; 5] = [
+const SOLVERS: [Solver; 6] = [
     ("torus_cull", |c, lo| {
         nearest_root_depressed(c[0], c[1], c[2], lo, f64::INFINITY)
+    }),
+    // Issue 61's bracketed walk, held to the same count.
+    ("torus_cull_first", |c, lo| {
+        first_root_depressed(c[0], c[1], c[2], lo, f64::INFINITY)
     }),
     ("torus_cull_all", |c, lo| {
         nearest_at_or_after(solve_depressed_monic(c[0], c[1], c[2]).as_slice(), lo)

@@ -32,7 +32,7 @@
 //! solvers were before and are now.
 
 use super::corpus::score::nearest_unused;
-use super::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
+use super::{first_root_depressed, nearest_root_depressed, solve_depressed_monic, solve_quartic};
 
 const EPS: f64 = f64::EPSILON;
 
@@ -313,8 +313,12 @@ impl Tally {
     }
 }
 
-/// Scores `nearest_root_depressed` on the grid.
-pub(super) fn score_nearest(grid: &[Quartic]) -> Tally {
+/// Scores a nearest-root query (`nearest_root_depressed`, `first_root_depressed`) on the
+/// grid.
+pub(super) fn score_nearest(
+    grid: &[Quartic],
+    nearest: impl Fn(f64, f64, f64, f64, f64) -> Option<f64>,
+) -> Tally {
     let mut tally = Tally::default();
     for quartic in grid {
         tally.quartics += 1;
@@ -330,7 +334,7 @@ pub(super) fn score_nearest(grid: &[Quartic]) -> Tally {
             } else {
                 0.5 * quartic.roots[i - 1] + 0.5 * x
             };
-            let got = nearest_root_depressed(p, q, r, lo, f64::INFINITY);
+            let got = nearest(p, q, r, lo, f64::INFINITY);
             let line = || {
                 format!(
                     "{} (p, q, r = {p:?}, {q:?}, {r:?}): from {lo:e}: {got:?}, want {x:?} ± {tol:e}",
@@ -393,7 +397,8 @@ pub(super) fn score_all(grid: &[Quartic], solve: impl Fn(&Quartic) -> Vec<f64>) 
 #[test]
 fn close_pairs_of_large_roots_are_found_by_every_solver() {
     let grid = grid();
-    let nearest = score_nearest(&grid);
+    let nearest = score_nearest(&grid, nearest_root_depressed);
+    let first = score_nearest(&grid, first_root_depressed);
     let depressed = score_all(&grid, |c| {
         solve_depressed_monic(c.p, c.q, c.r).as_slice().to_vec()
     });
@@ -404,6 +409,7 @@ fn close_pairs_of_large_roots_are_found_by_every_solver() {
     println!("close-pair grid: |p| up to {largest_p:e}");
     for (what, tally) in [
         ("nearest_root_depressed", &nearest),
+        ("first_root_depressed", &first),
         ("solve_depressed_monic", &depressed),
         ("solve_quartic", &general),
     ] {
@@ -415,7 +421,7 @@ fn close_pairs_of_large_roots_are_found_by_every_solver() {
     // Every constructed quartic kept its real roots apart through the rounding of p, q, r.
     assert_eq!(grid.len(), 1 + 7 * 5 * 5 * 2);
     assert!(largest_p > 1e11);
-    for tally in [&nearest, &depressed, &general] {
+    for tally in [&nearest, &first, &depressed, &general] {
         assert!(
             tally.missed.is_empty() && tally.spurious.is_empty(),
             "{}",

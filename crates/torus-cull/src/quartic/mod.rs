@@ -30,7 +30,10 @@
 //! `resolvent.rs` (the cubic in `m²`), `cube_root.rs` (its cube root and trisection without
 //! libm), `factor.rs` (Ferrari's split and near-double factors), `pieces.rs` (every real
 //! root by monotone pieces: `solve_quartic`'s path where the depression cannot be
-//! trusted), `roots.rs` ([`RealRoots`]); `corpus/` (tests: the published quartic corpus,
+//! trusted), `first_root.rs` ([`first_root_depressed`]: the same question as
+//! [`nearest_root_depressed`] answered by a bracketed walk over convexity pieces, issue
+//! 61; measured slower on uniform lines, so not on the intersect path), `roots.rs`
+//! ([`RealRoots`]); `corpus/` (tests: the published quartic corpus,
 //! its reference roots derived exactly by `corpus/cases.py`); `close_pairs.rs` (tests: a
 //! grid of close pairs of large roots, issue 36).
 //!
@@ -45,6 +48,7 @@ mod close_pairs;
 mod corpus;
 mod discriminant;
 mod even;
+mod first_root;
 // The fma-free sign of p² − 4r that the GPU's f64 pass computes, proved here (tests only:
 // the CPU's own even quartic uses a fused multiply-add).
 #[cfg(test)]
@@ -62,6 +66,7 @@ mod tests;
 pub(crate) mod trisect;
 
 pub use all_roots::{solve_depressed_monic, solve_quartic};
+pub use first_root::first_root_depressed;
 pub use nearest::nearest_root_depressed;
 pub(crate) use nearest::nearest_root_in_range;
 

@@ -178,7 +178,7 @@ fn by_pieces(c: &[f64], out: &mut [f64; 4]) -> usize {
 /// orders of magnitude (so a root near 0 next to a bound of 10¹⁰⁰ takes tens of steps, not
 /// hundreds).
 #[inline]
-fn split(x: f64, y: f64) -> f64 {
+pub(super) fn split(x: f64, y: f64) -> f64 {
     let candidate = if x > 0.0 && y > 4.0 * x || y < 0.0 && x < 4.0 * y {
         (x * y).sqrt().copysign(y)
     } else if x < 0.0 && y > 0.0 {

@@ -449,40 +449,44 @@ fn structured_depressed_grid_agrees_between_the_solvers() {
                 let first_in = |lo: f64, hi: f64| got.iter().copied().find(|&x| x >= lo && x <= hi);
                 for (lo, hi) in [(0.0, f64::INFINITY), (f64::NEG_INFINITY, 0.0), (-1.0, 1.0)] {
                     let want = first_in(lo, hi);
-                    let near = nearest_root_depressed(p, q, r, lo, hi);
-                    // Accurate to a few ε of the roots' scale X, in absolute terms: a root
-                    // within that of the interval's end may fall either side of it.
-                    let x = p
-                        .abs()
-                        .sqrt()
-                        .max(q.abs().cbrt())
-                        .max(r.abs().sqrt().sqrt());
-                    let tol = 1e-9 * x;
-                    let near_end = |b: f64| (b - lo).abs() <= tol || (b - hi).abs() <= tol;
-                    let a_root_at_the_end =
-                        |a: f64| near_end(a) && got.iter().any(|g| (g - a).abs() <= tol);
-                    // The nearest-root path decides near-double pairs at the quartic's scale
-                    // X (its contract: a few ε·X in absolute terms): it may return a root of
-                    // a quartic within ε·X⁴ of this one, or miss a pair that such a change
-                    // makes complex (two roots within 10⁻⁶X).
-                    let phantom = |a: f64| eval(&c, a).0.abs() <= 1e3 * EPS * x.powi(4);
-                    let paired =
-                        |b: f64| got.iter().filter(|g| (*g - b).abs() <= 1e-6 * x).count() >= 2;
-                    let same = match (near, want) {
-                        (Some(a), Some(b)) => {
-                            (a - b).abs() <= tol
-                                || a_root_at_the_end(a)
-                                || (a < b && phantom(a))
-                                || (a > b && (paired(b) || near_end(b)))
-                        }
-                        (Some(a), None) => a_root_at_the_end(a) || phantom(a),
-                        (None, Some(b)) => near_end(b) || paired(b),
-                        (None, None) => true,
-                    };
-                    assert!(
-                        same,
-                        "{c:?} in [{lo}, {hi}]: nearest {near:?}, all roots {all:?}"
-                    );
+                    for near in [
+                        nearest_root_depressed(p, q, r, lo, hi),
+                        first_root_depressed(p, q, r, lo, hi),
+                    ] {
+                        // Accurate to a few ε of the roots' scale X, in absolute terms: a root
+                        // within that of the interval's end may fall either side of it.
+                        let x = p
+                            .abs()
+                            .sqrt()
+                            .max(q.abs().cbrt())
+                            .max(r.abs().sqrt().sqrt());
+                        let tol = 1e-9 * x;
+                        let near_end = |b: f64| (b - lo).abs() <= tol || (b - hi).abs() <= tol;
+                        let a_root_at_the_end =
+                            |a: f64| near_end(a) && got.iter().any(|g| (g - a).abs() <= tol);
+                        // The nearest-root path decides near-double pairs at the quartic's scale
+                        // X (its contract: a few ε·X in absolute terms): it may return a root of
+                        // a quartic within ε·X⁴ of this one, or miss a pair that such a change
+                        // makes complex (two roots within 10⁻⁶X).
+                        let phantom = |a: f64| eval(&c, a).0.abs() <= 1e3 * EPS * x.powi(4);
+                        let paired =
+                            |b: f64| got.iter().filter(|g| (*g - b).abs() <= 1e-6 * x).count() >= 2;
+                        let same = match (near, want) {
+                            (Some(a), Some(b)) => {
+                                (a - b).abs() <= tol
+                                    || a_root_at_the_end(a)
+                                    || (a < b && phantom(a))
+                                    || (a > b && (paired(b) || near_end(b)))
+                            }
+                            (Some(a), None) => a_root_at_the_end(a) || phantom(a),
+                            (None, Some(b)) => near_end(b) || paired(b),
+                            (None, None) => true,
+                        };
+                        assert!(
+                            same,
+                            "{c:?} in [{lo}, {hi}]: nearest {near:?}, all roots {all:?}"
+                        );
+                    }
                 }
             }
         }

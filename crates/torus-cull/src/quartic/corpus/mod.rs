@@ -21,7 +21,7 @@
 mod cases;
 pub(super) mod score;
 
-use super::{nearest_root_depressed, solve_depressed_monic, solve_quartic};
+use super::{first_root_depressed, nearest_root_depressed, solve_depressed_monic, solve_quartic};
 use cases::{CASES, Case};
 use score::Score;
 
@@ -68,4 +68,17 @@ fn nearest_root_depressed_on_the_corpus() {
         score.nearest(case.name, pqr, case.depressed_roots, nearest_root_depressed);
     }
     score.assert_clean("nearest_root_depressed");
+}
+
+#[test]
+fn first_root_depressed_on_the_corpus() {
+    // The bracketed walk (issue 61) held to the nearest-root query's score.
+    let mut score = Score::default();
+    for case in CASES {
+        let Some(pqr) = depressed(case) else {
+            continue;
+        };
+        score.nearest(case.name, pqr, case.depressed_roots, first_root_depressed);
+    }
+    score.assert_clean("first_root_depressed");
 }
