@@ -2,9 +2,19 @@
 //! R = 1 (the kernel's line is scaled by 1/R), with the tube padded by the GPU's margin
 //! [`gpu_margin`] instead of the CPU's η = [`crate::cull::SAFETY_REL`]·(R + r).
 
-use super::source::{LINE_ABS, LINE_ABS_DIST, LINE_REL};
 use crate::certified::certificate::U32;
 use crate::cull::{CullBounds, SAFETY_REL};
+
+/// The kernel's line error, relative part: the computed point q + u·d̂ stands within
+/// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
+/// at u (units of R; derived in `wgsl/module/trace.wgsl`, about twice the first-order bound).
+pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
+
+/// The kernel's line error, per unit of the origin's distance |o − c|/R.
+pub(crate) const LINE_ABS_DIST: f32 = (32.0 * U32) as f32;
+
+/// The kernel's line error, constant part (it covers the host's f64 foot point too).
+pub(crate) const LINE_ABS: f32 = (32.0 * U32) as f32;
 
 /// The GPU's margin for the culls at R = 1 and tube radius `rr` = r/R (as the kernel
 /// gets it, rounded to f32), rounded up:

@@ -6,62 +6,11 @@ use super::{
     Escalation, Finished, Frame, GpuCull, Mode, PARAMS_BYTES, Packed, RAY_BYTES, SURFACE_BYTES,
     as_bytes, compute_pipeline, kernel_source, shifted, verdict,
 };
-use super::{dispatch, finish};
+use super::{GpuError, dispatch, finish};
 use crate::certified::{F32Hit, F32Verdict};
 use crate::{Ray, Torus};
 use std::fmt;
 use std::sync::Mutex;
-
-/// The Debian package that gives a machine without a GPU a software Vulkan adapter.
-pub const SOFTWARE_VULKAN_PACKAGE: &str = "mesa-vulkan-drivers";
-
-/// Why the GPU path could not run.
-#[derive(Debug, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum GpuError {
-    /// No adapter (no Vulkan, Metal or DX12 device, and no software Vulkan).
-    NoAdapter(String),
-    /// The adapter refused a device.
-    RequestDevice(String),
-    /// The kernel did not compile or validate on this adapter.
-    Kernel(String),
-    /// Reading the results back failed.
-    Readback(String),
-    /// A scene the GPU BVH ([`super::GpuScene`]) cannot hold; the message names the
-    /// limit.
-    Scene(String),
-    /// A member of the torus family the GPU scene does not take
-    /// ([`super::GpuScene::from_family`]): it takes what the certified f32 path takes,
-    /// the circular ring members ([`crate::family::Toroid::as_torus`]); `error` says which
-    /// member it is (horn, spindle, elliptical tube) and why.
-    Member {
-        /// The member's index in the slice given.
-        index: usize,
-        /// Why ([`crate::family::ToroidError::NotCircular`]).
-        error: crate::family::ToroidError,
-    },
-}
-
-impl fmt::Display for GpuError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            GpuError::NoAdapter(why) => write!(
-                f,
-                "no GPU adapter ({why}); on a machine without a GPU install the Debian \
-                 package {SOFTWARE_VULKAN_PACKAGE} (Mesa's software Vulkan, lavapipe)"
-            ),
-            GpuError::RequestDevice(why) => write!(f, "the GPU adapter refused a device: {why}"),
-            GpuError::Kernel(why) => write!(f, "the WGSL kernel failed on this adapter: {why}"),
-            GpuError::Readback(why) => write!(f, "reading the GPU results back failed: {why}"),
-            GpuError::Scene(why) => write!(f, "the GPU scene: {why}"),
-            GpuError::Member { index, error } => {
-                write!(f, "the GPU scene: family member {index}: {error}")
-            }
-        }
-    }
-}
-
-impl std::error::Error for GpuError {}
 
 /// Rays per dispatch: 32 bytes in and 32 out each, 32 MiB per buffer (within WebGPU's
 /// downlevel limit of 128 MiB per storage binding and 65 535 workgroups of 64).
@@ -94,7 +43,7 @@ pub struct GpuIntersector {
     pub(crate) workgroup: u32,
     /// The scene kernels compiled so far, shared by every [`super::GpuScene`] on this
     /// device (the text depends on f64 alone, not on the scene).
-    pub(crate) scene_kernels: super::scene::Kernels,
+    pub(crate) scene_kernels: super::scene_kernel::Kernels,
 }
 
 /// The parameter block, the rays, their surface records, the results and their staging

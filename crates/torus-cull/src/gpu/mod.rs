@@ -99,21 +99,25 @@
 mod bounds;
 mod cull;
 mod dispatch;
+mod error;
 mod escalation;
 pub(crate) mod finish;
+mod finish_words;
 mod frame;
 mod intersector;
 mod module;
 mod scene;
 pub(crate) mod scene_bvh;
+mod scene_kernel;
 mod scene_spawned;
 mod source;
 mod timing;
 mod wire;
 
 pub use cull::GpuCull;
+pub use error::{GpuError, SOFTWARE_VULKAN_PACKAGE};
 pub use escalation::{Escalation, FinishCounts, Finished};
-pub use intersector::{GpuError, GpuIntersector, SOFTWARE_VULKAN_PACKAGE, WORKGROUP_SIZES};
+pub use intersector::{GpuIntersector, WORKGROUP_SIZES};
 pub use module::{ModuleHit, ModuleHit64, ModuleTorus, PreparedRay, PreparedRay64};
 pub use scene::{GpuScene, Occlusion, SceneAnswer};
 pub use scene_bvh::{

@@ -372,7 +372,8 @@ mod tests {
     /// instruction), and `finish_with_device` decides who answers as the library does.
     #[test]
     fn the_f64_inputs_and_the_answer_are_the_library_passes() {
-        use super::super::finish::{Instruction, Status, torus_bytes};
+        use super::super::finish::torus_bytes;
+        use super::super::finish_words::{Instruction, Status};
         let t = torus();
         let module = ModuleTorus::new(&t);
         assert_eq!(module.params64_bytes(), torus_bytes(&t));

@@ -5,7 +5,6 @@
 //! [`super::GpuScene`] (`scene.rs`); the layout and the method are in its module docs
 //! and in docs/gpu.md, "Tori in a GPU BVH".
 
-use super::scene_spawned::{OWN_CERTIFY, OWN_ESCALATE, OWN_MISS};
 use super::{GpuError, ModuleTorus, as_bytes};
 use crate::family::Toroid;
 use crate::{Ray, Torus};
@@ -13,6 +12,13 @@ use glam::{DVec3, Vec3};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb;
 use std::fmt::Write;
+
+/// The own torus: run the module's surface path.
+pub(crate) const OWN_CERTIFY: u32 = 0;
+/// The own torus: the host proved a miss.
+pub(crate) const OWN_MISS: u32 = 1;
+/// The own torus: neither; the f64 finish from the surface, or the host.
+pub(crate) const OWN_ESCALATE: u32 = 2;
 
 /// Entries of the kernel's traversal stack: the BVH may be at most this deep less one
 /// (each popped inner node pushes two). A deeper tree is refused by [`SceneBvh::new`].
@@ -464,11 +470,11 @@ mod tests {
         use wgpu::naga;
         for (source, caps) in [
             (
-                super::super::scene::kernel_source(false),
+                super::super::scene_kernel::kernel_source(false),
                 naga::valid::Capabilities::default(),
             ),
             (
-                super::super::scene::kernel_source(true),
+                super::super::scene_kernel::kernel_source(true),
                 naga::valid::Capabilities::FLOAT64,
             ),
             (

@@ -17,16 +17,10 @@
 //! proved the range ends before any other crossing) or [`OWN_ESCALATE`] (the f64 finish
 //! from the surface on the device, `TORUS_F64_SURFACE_ALWAYS`, else the host).
 
+use super::scene_bvh::{OWN_CERTIFY, OWN_ESCALATE, OWN_MISS};
 use super::{GpuError, ModuleTorus, SceneBvh, SceneHit};
 use crate::certified::F32Verdict;
 use crate::{Ray, Torus};
-
-/// The own torus: run the module's surface path.
-pub(crate) const OWN_CERTIFY: u32 = 0;
-/// The own torus: the host proved a miss.
-pub(crate) const OWN_MISS: u32 = 1;
-/// The own torus: neither; the f64 finish from the surface, or the host.
-pub(crate) const OWN_ESCALATE: u32 = 2;
 
 /// Words in a spawned ray's kernel record: the world ray (8), the own torus's `TorusRay`
 /// (8), its `TorusSurfaceRay` (16), `(torus, what to do, 0, 0)` (4, `u32` bits).

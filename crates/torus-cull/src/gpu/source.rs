@@ -23,6 +23,7 @@ use crate::quartic::resolvent::{DISC_NEAR, POLISH_BELOW, SMALL_ROOT};
 use crate::quartic::{EPS, trisect};
 use std::fmt::Write;
 
+use super::bounds::{LINE_ABS, LINE_ABS_DIST, LINE_REL};
 use super::{CODE_ESCALATE, CODE_HIT, CODE_KEPT, CODE_MISS, Escalation, GpuCull};
 
 /// The files of one WGSL text, in order: the text they make, concatenated as they are, and
@@ -56,17 +57,6 @@ const KERNEL_BODY: &str = include_str!("wgsl/kernel.wgsl");
 /// `a·b + c` into an fma, division is good to 2.5 ulp, `sqrt` is not correctly rounded on
 /// every device, and subnormals may flush.
 pub(crate) const GPU_ROUNDING_FACTOR: f32 = 4.0;
-
-/// The kernel's line error, relative part: the computed point q + u·d̂ stands within
-/// `LINE_REL·(|q| + |u|) + LINE_ABS_DIST·|o − c|/R + LINE_ABS` of the true line's point
-/// at u (units of R; derived in `wgsl/module/trace.wgsl`, about twice the first-order bound).
-pub(crate) const LINE_REL: f32 = (48.0 * U32) as f32;
-
-/// The kernel's line error, per unit of the origin's distance |o − c|/R.
-pub(crate) const LINE_ABS_DIST: f32 = (32.0 * U32) as f32;
-
-/// The kernel's line error, constant part (it covers the host's f64 foot point too).
-pub(crate) const LINE_ABS: f32 = (32.0 * U32) as f32;
 
 /// "Finite" below this magnitude in the kernel (WGSL may assume no infinities or NaNs,
 /// so the kernel never makes one on purpose and tests magnitudes instead).
@@ -329,11 +319,11 @@ impl FinishConstants {
         let _ = writeln!(out, "const TC_FIN_CODE_MISS: u32 = {CODE_MISS}u;");
         let _ = writeln!(out, "const TC_FIN_CODE_HIT: u32 = {CODE_HIT}u;");
         out.push_str("// The host's instructions and the answer's status (torus_cull::gpu).\n");
-        for (name, code) in super::finish::Instruction::ALL
+        for (name, code) in super::finish_words::Instruction::ALL
             .iter()
             .map(|i| (i.name(), *i as u32))
             .chain(
-                super::finish::Status::ALL
+                super::finish_words::Status::ALL
                     .iter()
                     .map(|s| (s.name(), *s as u32)),
             )

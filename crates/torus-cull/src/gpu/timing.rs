@@ -11,7 +11,8 @@
 //! apart).
 
 use super::escalation::FinishCounts;
-use super::finish::{self, Status};
+use super::finish;
+use super::finish_words::Status;
 use super::{Buffers, CHUNK, Escalation, Frame, GpuCull, GpuError, GpuIntersector, RAY_BYTES};
 use super::{Mode, WORKGROUP, as_bytes, decode_records, shifted, upload_surfaces, verdict};
 use crate::Ray;
