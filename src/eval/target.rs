@@ -107,9 +107,8 @@ impl Target {
             Target::Family(toroid) => toroid.as_torus().map_err(|e| EvalError::Mode {
                 mode,
                 message: format!(
-                    "{} torus (shape {:?}, R = {}, a = {}, b = {}): {e}; use --exact f64",
+                    "{} torus (R = {}, a = {}, b = {}): {e}; use --exact f64",
                     kind_name(toroid),
-                    toroid.shape(),
                     toroid.major_radius_f64(),
                     toroid.radial_semi_axis_f64(),
                     toroid.axial_semi_axis_f64()

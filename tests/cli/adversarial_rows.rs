@@ -3,7 +3,10 @@
 //! spindles down to ν = 0.02, pipe bends) in `--exact f64`, `--precision f32` and
 //! `--exact f32` gives the outputs whose SHA-256 and exit codes
 //! `data/adversarial_rows.sha256` holds. Those were checked byte for byte against the
-//! commit before the shape interface (7a4c61d) with `data/nothing_lost_compare.sh`.
+//! commit before the shape interface (7a4c61d) with `data/nothing_lost_compare.sh`; blessed
+//! again when a bend's rows gained the `wedge` and `wedge+<cull>` columns (every other
+//! column byte-identical, no wedge form rejecting an oracle hit) and when the refusal of
+//! `--exact f32` for a non-circular member lost its "(shape Spindle" for a horn.
 //! A change that moves an answer fails here; one that means to (a new solver's last
 //! digits, say) compares the two binaries with that script first, then writes the new
 //! digests with `TORUS_CULL_BLESS=1`.

@@ -77,13 +77,13 @@ fn bad_family_values_name_the_flag_and_the_range() {
         ),
         (
             &["--major", "0.5", "--minor", "1", "--exact", "f32"],
-            ["--exact f32", "Spindle"],
+            ["--exact f32", "a spindle torus"],
         ),
         (
             &[
                 "--major", "4", "--minor", "1", "--axial", "2", "--exact", "f32",
             ],
-            ["--exact f32", "Elliptic"],
+            ["--exact f32", "an elliptical ring torus"],
         ),
     ] {
         let err = eval_rows(csv, args).expect_err("refused");

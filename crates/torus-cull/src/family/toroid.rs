@@ -136,8 +136,13 @@ impl fmt::Display for ToroidError {
             ToroidError::Torus(e) => write!(f, "{e}"),
             ToroidError::NotCircular { kind, aspect } => write!(
                 f,
-                "a {kind:?} torus with tube aspect b/a = {aspect} is not a circular ring torus: \
-                 this path (SIMD lanes, certified f32, GPU) takes ring tori with a = b only"
+                "a {} torus with tube aspect b/a = {aspect} is not a circular ring torus: \
+                 this path (SIMD lanes, certified f32, GPU) takes ring tori with a = b only",
+                match kind {
+                    ToroidKind::Ring => "ring",
+                    ToroidKind::Horn => "horn",
+                    ToroidKind::Spindle => "spindle",
+                }
             ),
         }
     }
