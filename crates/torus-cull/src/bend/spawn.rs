@@ -23,7 +23,7 @@ impl PipeBend {
     ///
     /// # Errors
     ///
-    /// A [`RayError`], as [`Torus::spawn`]'s (size R + r_max in `OffSurface`'s tolerance,
+    /// A [`RayError`], as [`crate::Torus::spawn`]'s (size R + r_max in `OffSurface`'s tolerance,
     /// the distance [`PipeBend::signed_distance`]'s).
     pub fn spawn<P: Precision>(
         &self,
