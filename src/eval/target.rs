@@ -19,6 +19,16 @@
 //! face; `--exact f32` answers it by [`PipeBend::intersect_f32`] (its misses of the outer
 //! torus proved in f32, the rest escalated). A whole bend (no bore, Δφ = 2π) is the ring
 //! torus, answered as without the flags.
+//!
+//! **Through the shape interface** where it has the verb: the nearest `t` in either
+//! precision ([`torus_cull::RayCast`], every shape's), the certified f32 answer
+//! ([`Solid::hit_f32_certified`]) and the distance of an `on_surface` origin
+//! ([`Solid::signed_distance`], the ring torus's and the bend's). What stays per shape,
+//! explicitly: the construction from the flags and their errors, the refusals of the
+//! certified and GPU paths, the oracle (one per shape), the family member's on-surface
+//! rule (its oracle's nearest point: the interface refuses an elliptical horn's
+//! distance), and the cull columns: the interface has no cull verb (its `Culled` answers
+//! cull-and-hit, not the verdict), and a bend's row adds the wedge's columns.
 
 use super::EvalError;
 use crate::number::Num;
@@ -27,7 +37,7 @@ use crate::oracle::{OracleLabel, Query, classify_from_surface};
 use glam::{DVec3, Vec3};
 use torus_cull::bend::PipeBend;
 use torus_cull::family::{Toroid, ToroidError};
-use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, Torus};
+use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, RayCast, Solid, Torus};
 
 /// The torus `eval` answers for.
 #[derive(Debug, Clone)]
@@ -137,15 +147,15 @@ impl Target {
         }
     }
 
-    /// The certified f32 path's nearest `t` and whether it escalated to f64: the ring
-    /// torus's [`torus_cull::intersect_f32`], the pipe bend's [`PipeBend::intersect_f32`].
+    /// The certified f32 path's nearest `t` and whether it escalated to f64: the shape's
+    /// [`Solid::hit_f32_certified`] (the ring torus's `intersect_f32`, the pipe bend's
+    /// `PipeBend::intersect_f32`). Any other family member is refused first, by
+    /// [`Target::check_certified_f32`]: its certified answer proves nothing in f32.
     pub fn certified_f32(&self, ray: &Ray) -> Result<(Option<f32>, bool), EvalError> {
-        if let Target::Bend(bend) = self {
-            let answer = bend.intersect_f32(ray);
-            return Ok((answer.hit.map(|h| h.t), answer.escalated));
-        }
-        let answer = torus_cull::intersect_f32(self.as_torus("--exact f32")?, ray);
-        Ok((answer.hit.map(|h| h.t), answer.escalated))
+        Ok(match self {
+            Target::Bend(bend) => certified(bend.as_ref(), ray),
+            _ => certified(self.as_torus("--exact f32")?, ray),
+        })
     }
 
     /// The oracle's label of the ray over its range: the literal ray's, or by the
@@ -173,12 +183,22 @@ impl Target {
         }
     }
 
-    /// The exact intersection's nearest `t` in range.
+    /// The exact intersection's nearest `t` in range: the shape's own, through the
+    /// interface ([`Target::caster`]).
     pub fn t_hit<P: Precision>(&self, ray: &Ray<P>) -> Option<P::Float> {
+        self.caster::<P>().cast_ray(ray)
+    }
+
+    /// The shape as the interface's ray caster in the ray's precision: [`RayCast`], which
+    /// every [`Solid`] implements for f32 and f64 rays (the torus's `intersect`, the
+    /// toroid's and the bend's, the bend's face dropped: eval prints no face). `dyn`, not
+    /// generic: one call a row of a text file, untimed, and one match instead of one per
+    /// verb; [`Solid`] itself cannot be the object here, its `Face` differing per shape.
+    fn caster<P: Precision>(&self) -> &dyn RayCast<Ray<P>> {
         match self {
-            Target::Ring(torus) => torus_cull::intersect(torus, ray).map(|h| h.t),
-            Target::Family(toroid) => toroid.intersect(ray).map(|h| h.t),
-            Target::Bend(bend) => bend.intersect(ray).map(|h| h.t),
+            Target::Ring(torus) => torus,
+            Target::Family(toroid) => toroid,
+            Target::Bend(bend) => bend.as_ref(),
         }
     }
 
@@ -221,14 +241,17 @@ impl Target {
     pub fn check_on_surface(&self, origin: DVec3) -> Result<(), String> {
         let (off, bound, size) = match self {
             Target::Ring(torus) => {
-                let (major, minor) = (torus.major_radius_f64(), torus.minor_radius_f64());
-                let rho = origin.x.hypot(origin.z);
-                let off = ((rho - major).hypot(origin.y) - minor).abs();
-                (off, ON_SURFACE_REL * (major + minor), "(R + r)")
+                let size = torus.major_radius_f64() + torus.minor_radius_f64();
+                (
+                    surface_off(torus, origin)?,
+                    ON_SURFACE_REL * size,
+                    "(R + r)",
+                )
             }
             Target::Family(toroid) => {
                 // The family oracle's own nearest surface point, and (E − 1)·min(a, b) for
-                // a point it leaves where it is (on the axis, at a cusp).
+                // a point it leaves where it is (on the axis, at a cusp): the interface's
+                // distance refuses an elliptical horn or spindle.
                 let query = crate::family_label::query(
                     toroid,
                     &DRay::new(origin, DVec3::Y).map_err(|e| e.to_string())?,
@@ -239,11 +262,11 @@ impl Target {
             }
             Target::Bend(bend) => {
                 let size = bend.major_radius_f64() + bend.tube_radius_f64();
-                let off = bend
-                    .signed_distance(origin)
-                    .map_err(|e| e.to_string())?
-                    .abs();
-                (off, ON_SURFACE_REL * size, "(R + r_max)")
+                (
+                    surface_off(bend.as_ref(), origin)?,
+                    ON_SURFACE_REL * size,
+                    "(R + r_max)",
+                )
             }
         };
         if off > bound {
@@ -255,6 +278,21 @@ impl Target {
         }
         Ok(())
     }
+}
+
+/// [`Solid::hit_f32_certified`]'s `t` and whether it escalated.
+fn certified<S: Solid>(shape: &S, ray: &Ray) -> (Option<f32>, bool) {
+    let answer = shape.hit_f32_certified(ray);
+    (answer.hit.map(|h| h.t), answer.escalated)
+}
+
+/// |[`Solid::signed_distance`]|: how far `origin` lies from the shape's surface (the ring
+/// torus's |hypot(ρ − R, y) − r|, the bend's nearest face's).
+fn surface_off<S: Solid>(shape: &S, origin: DVec3) -> Result<f64, String> {
+    Ok(shape
+        .signed_distance(origin)
+        .map_err(|e| e.to_string())?
+        .abs())
 }
 
 /// The bend oracle's question for `ray` against `bend` (its canonical frame).

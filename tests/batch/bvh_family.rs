@@ -186,3 +186,28 @@ fn scenes_refuse_a_bad_scale() {
         }
     }
 }
+
+/// The BVH's leaf boxes, now the shape interface's `Solid::world_aabb`, are the boxes the
+/// scene always gave: a toroid's own `world_aabb`, a bend's outer torus's (the whole ring,
+/// holding any segment). A tighter box for a cut bend would change the BVH and its timings:
+/// it must come as a decision of its own, proved conservative, not through this interface.
+#[test]
+fn family_boxes_are_the_shapes_own_and_a_bends_outer_torus() {
+    use torus_cull_lab::scene::family::FamilyShape;
+    let scene = FamilyScene::build(24, 11, 1.0, 1.5).unwrap();
+    let mut bends = 0;
+    for shape in &scene.shapes {
+        let want = match shape {
+            FamilyShape::Toroid(t) => t.world_aabb(),
+            FamilyShape::Bend(b) => {
+                bends += 1;
+                b.outer().world_aabb()
+            }
+        };
+        assert_eq!(shape.world_box(), want, "{:?}", shape.class());
+    }
+    assert_eq!(
+        bends, 8,
+        "24 shapes cycle through 6 classes, 2 of them bends"
+    );
+}
