@@ -91,13 +91,15 @@ fn cull_switch() -> String {
 }
 
 /// The module's body (the intersection as WGSL functions, no bindings): the head files,
-/// each GPU cull's file in the table's order, the generated dispatch, the tail files.
+/// the generated `TcBounds` (`super::bounds::bounds_wgsl`), each GPU cull's file in the
+/// table's order, the generated dispatch, the tail files.
 /// Every shared number comes from the generated header.
 fn module_body() -> String {
     let culls: String = CULL_FILES.iter().map(|&(_, text)| text).collect();
     format!(
-        "{}{culls}\n{}\n{}",
+        "{}{}\n{culls}\n{}\n{}",
         MODULE_HEAD.0,
+        super::bounds::bounds_wgsl(),
         cull_switch(),
         MODULE_TAIL.0
     )

@@ -401,8 +401,9 @@ fn wgsl_files() -> Vec<(&'static str, &'static str)> {
 fn the_bodies_are_their_files_in_order() {
     let text = |files: &[(&str, &str)]| -> String { files.iter().map(|&(_, t)| t).collect() };
     let module = format!(
-        "{}{}\n{}\n{}",
+        "{}{}\n{}\n{}\n{}",
         text(MODULE_HEAD.1),
+        crate::gpu::bounds::bounds_wgsl(),
         text(CULL_FILES),
         cull_switch(),
         text(MODULE_TAIL.1)

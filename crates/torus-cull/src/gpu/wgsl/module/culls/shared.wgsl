@@ -14,12 +14,12 @@
 // WGSL may assume no infinities or NaNs: every division below has a divisor bounded
 // away from 0, where the CPU's divides by 0 and lets ±∞ decide.
 //
-// The culls' shared parts: the bounds the host packs into TorusParams (TcBounds), the
-// running error bound (TcEv) and the point error. Each cull is its own file,
-// culls/<name>.wgsl, with `fn tc_<name>_keeps(b: TcBounds, q: vec3<f32>, dh: vec3<f32>) -> bool`;
+// The culls' shared parts: the running error bound (TcEv) and the point error. The bounds
+// the host packs into TorusParams, TcBounds and tc_bounds_of, are generated from the
+// table of per-torus constants (src/geometry/bounds.rs; src/gpu/bounds.rs writes them).
+// Each cull is its own file, culls/<name>.wgsl, with `fn tc_<name>_keeps(b: TcBounds, q: vec3<f32>, dh: vec3<f32>) -> bool`;
 // the dispatch `tc_cull_keeps` is generated from the table of culls (src/gpu/source.rs).
 //
-// mirrors: tc_bounds_of -> crate::gpu::bounds::bounds_rows (the rows it unpacks)
 // mirrors: tc_ev_exact -> none (the GPU culls' running error bound)
 // mirrors: tc_ev_round -> none
 // mirrors: tc_ev_add -> none
@@ -29,32 +29,6 @@
 // mirrors: tc_ev_positive -> none
 // mirrors: tc_ev_maybe_nonnegative -> none
 // mirrors: tc_point_error -> none (the GPU's point error)
-
-struct TcBounds {
-    outer: f32,
-    outer_sq: f32,
-    minor: f32,
-    minor_sq: f32,
-    inner_sq: f32,
-    y_scale: f32,
-    slab: f32,
-    hyperboloid: f32,
-    minor_rel_sq: f32,
-};
-
-fn tc_bounds_of(torus: TorusParams) -> TcBounds {
-    var b: TcBounds;
-    b.outer = torus.bounds_a.x;
-    b.outer_sq = torus.bounds_a.y;
-    b.minor = torus.bounds_a.z;
-    b.minor_sq = torus.bounds_a.w;
-    b.inner_sq = torus.bounds_b.x;
-    b.y_scale = torus.bounds_b.y;
-    b.slab = torus.bounds_b.z;
-    b.hyperboloid = torus.bounds_b.w;
-    b.minor_rel_sq = torus.bounds_c.x;
-    return b;
-}
 
 // A value and a bound on its distance from the exact value of the same expression on
 // exact inputs: |v − exact| ≤ e. Each operation adds its own rounding, G·u·|result|
