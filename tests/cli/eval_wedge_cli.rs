@@ -4,7 +4,7 @@
 
 use crate::support::{arg, stdout, temp_path, torus_cull};
 use torus_cull::{CullKind, Named};
-use torus_cull_lab::eval::{OUTPUT_HEADER, bend_wedge_columns};
+use torus_cull_lab::eval::{bend_wedge_columns, output_header};
 
 /// The quarter bend R = 4, r_min = 0.5, r_max = 1, φ from 0 to π/2.
 const BEND: [&str; 8] = [
@@ -68,7 +68,7 @@ fn a_bends_rows_carry_the_wedge_and_a_wedge_rejected_ray_is_a_miss() {
     assert_eq!(wedge[5], "wedge+skala");
     assert_eq!(wedge.len(), CullKind::TIMED.len());
     let (header, rows) = eval(&rays_csv(3000), &BEND);
-    assert_eq!(header, format!("{OUTPUT_HEADER},{}", wedge.join(",")));
+    assert_eq!(header, format!("{},{}", output_header(), wedge.join(",")));
     let culls = CullKind::TIMED.len();
     let (mut hits, mut wedge_only) = (0, 0);
     for row in &rows {

@@ -113,8 +113,9 @@ fn circular_ring_rows_are_unchanged() {
             args.extend_from_slice(mode);
             let out = torus_cull(&args);
             assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+            // A cull newer than the pins adds a column they leave out.
             assert!(
-                String::from_utf8(out.stdout).unwrap() == expected,
+                super::support::pinned_columns(&out.stdout) == expected.as_bytes(),
                 "{args:?}: the rows changed"
             );
         }

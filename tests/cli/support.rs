@@ -199,3 +199,68 @@ pub fn eval_rows(csv: &str, args: &[&str]) -> Result<Vec<Vec<String>>, String> {
         .map(|l| l.split(',').map(str::to_string).collect())
         .collect())
 }
+
+/// The culls whose columns the pinned `eval` outputs hold (`data/ring_rays.*.expected`,
+/// `data/adversarial_rows.sha256`): the table's rows when they were blessed.
+pub const PINNED_CULLS: [&str; 10] = [
+    "none",
+    "sphere",
+    "aabb",
+    "cychosz",
+    "thick_cylinder",
+    "skala",
+    "ellipsoid",
+    "quadric",
+    "discriminant",
+    "discriminant_f64",
+];
+
+/// `eval`'s stdout as the pins hold it: without the columns (`<cull>`, `wedge+<cull>`,
+/// `gpu_<cull>`) of a cull added to the table after [`PINNED_CULLS`], so that a new row
+/// leaves every pinned answer to be checked byte for byte (its own column is checked
+/// by the oracle's conservativeness tests, which take every cull of the table). With no
+/// newer cull, the text itself.
+pub fn pinned_columns(out: &[u8]) -> Vec<u8> {
+    use torus_cull::{CullKind, Named};
+    for cull in PINNED_CULLS {
+        assert!(
+            CullKind::TIMED.iter().any(|&c| c.name() == cull),
+            "the pinned cull {cull} is no longer in the table: bless the pins again"
+        );
+    }
+    let newer: Vec<&str> = CullKind::TIMED
+        .iter()
+        .map(|&c| c.name())
+        .filter(|n| !PINNED_CULLS.contains(n))
+        .collect();
+    let text = String::from_utf8_lossy(out);
+    let Some(header) = text.lines().next().filter(|_| !newer.is_empty()) else {
+        return out.to_vec();
+    };
+    let keep: Vec<bool> = header
+        .split(',')
+        .map(|c| {
+            let cull = c
+                .strip_prefix("wedge+")
+                .or_else(|| c.strip_prefix("gpu_"))
+                .unwrap_or(c);
+            !newer.contains(&cull)
+        })
+        .collect();
+    let mut kept = String::new();
+    for line in text.split_inclusive('\n') {
+        let (body, end) = match line.strip_suffix('\n') {
+            Some(body) => (body, "\n"),
+            None => (line, ""),
+        };
+        let fields: Vec<&str> = body
+            .split(',')
+            .zip(keep.iter().chain(std::iter::repeat(&true)))
+            .filter(|&(_, &k)| k)
+            .map(|(f, _)| f)
+            .collect();
+        kept.push_str(&fields.join(","));
+        kept.push_str(end);
+    }
+    kept.into_bytes()
+}

@@ -38,6 +38,10 @@ const ALLOWED: &[(&str, &str)] = &[
     ("results/NEW.json", "placeholder"),
     ("crates/torus-cull/src/cull/<name>.rs", "a new cull's file"),
     (
+        "crates/torus-cull/src/gpu/wgsl/module/culls/<name>.wgsl",
+        "a new cull's WGSL file",
+    ),
+    (
         "results/latest",
         "`results/latest….json`: what a build outside git writes",
     ),

@@ -79,58 +79,34 @@ pub(crate) trait CullKernel: Copy {
     fn keeps_lanes<R: Real32>(self, b: &LaneBounds<R>, o: V3<R>, d: V3<R>) -> R::Mask;
 }
 
-/// A torus's [`CullBounds`] in lanes: each constant in every lane, made once per torus
-/// (per batch, or per scalar call, where it is free) instead of in every kernel step.
-#[doc(hidden)]
-#[derive(Debug, Clone, Copy)]
-pub struct LaneBounds<R> {
-    /// R.
-    pub major_radius: R,
-    /// r (unpadded, for the paper-as-printed variants).
-    pub minor_radius: R,
-    /// r_η = r + η.
-    pub minor_safe: R,
-    /// r_η².
-    pub minor_safe_sq: R,
-    /// R + r_η.
-    pub outer_safe: R,
-    /// (R + r_η)².
-    pub outer_safe_sq: R,
-    /// (R − r_η)², or 0 when the padded hole closes.
-    pub inner_safe_sq: R,
-    /// √(ν_η + 1), rounded down.
-    pub ellipsoid_y_scale: R,
-    /// √(ν_η + 1)·r_η.
-    pub ellipsoid_slab: R,
-    /// (ν_η − 1)/(ν_η + 1), rounded down, or 0 when the padded hole closes.
-    pub hyperboloid_y_coef: R,
-    /// 1/R².
-    pub inv_major_sq: R,
-    /// (r_η/R)².
-    pub minor_rel_sq: R,
-}
-
-impl<R: Real> LaneBounds<R> {
-    /// `b`'s constants in every lane, with `like`'s SIMD token (see [`CullBounds`] for
-    /// what each one is).
-    #[inline(always)]
-    pub fn new(b: &CullBounds, like: R) -> Self {
-        LaneBounds {
-            major_radius: like.k(b.major_radius),
-            minor_radius: like.k(b.minor_radius),
-            minor_safe: like.k(b.minor_safe),
-            minor_safe_sq: like.k(b.minor_safe_sq),
-            outer_safe: like.k(b.outer_safe),
-            outer_safe_sq: like.k(b.outer_safe_sq),
-            inner_safe_sq: like.k(b.inner_safe_sq),
-            ellipsoid_y_scale: like.k(b.ellipsoid_y_scale),
-            ellipsoid_slab: like.k(b.ellipsoid_slab),
-            hyperboloid_y_coef: like.k(b.hyperboloid_y_coef),
-            inv_major_sq: like.k(b.inv_major_sq),
-            minor_rel_sq: like.k(b.minor_rel_sq),
+/// `LaneBounds` from the rows of the table of per-torus constants
+/// (`crate::geometry::cull_bounds_table`) that have the form `lanes`.
+macro_rules! define_lane_bounds {
+    ($($field:ident: $ty:ty [$($lanes:ident $($gpu:ident $wgsl:ident)?)?], $doc:literal;)*) => {
+        /// A torus's [`CullBounds`] in lanes: each constant in every lane, made once per
+        /// torus (per batch, or per scalar call, where it is free) instead of in every
+        /// kernel step.
+        #[doc(hidden)]
+        #[derive(Debug, Clone, Copy)]
+        pub struct LaneBounds<R> {
+            $($(#[doc = $doc] #[cfg_attr(any(), doc = stringify!($lanes))] pub $field: R,)?)*
         }
-    }
+
+        impl<R: Real> LaneBounds<R> {
+            /// `b`'s constants in every lane, with `like`'s SIMD token (see [`CullBounds`]
+            /// for what each one is).
+            #[inline(always)]
+            pub fn new(b: &CullBounds, like: R) -> Self {
+                LaneBounds {
+                    $($($field: define_lane_bounds!(@k like, b.$field, $lanes),)?)*
+                }
+            }
+        }
+    };
+    // A field of a row with the form `$flag`: the flag only selects the row.
+    (@k $like:ident, $value:expr, $flag:ident) => { $like.k($value) };
 }
+crate::geometry::cull_bounds_table!(define_lane_bounds);
 
 /// The kernel at width 1: the scalar cull.
 #[inline(always)]

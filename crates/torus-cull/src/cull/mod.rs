@@ -30,23 +30,16 @@
 //! covered; lines built by hand must stay within that distance. The squares in the culls
 //! bound the torus size: see [`crate::MIN_OUTER_RADIUS`] and [`crate::MAX_OUTER_RADIUS`].
 
-mod aabb;
-mod cychosz;
-mod discriminant;
-mod ellipsoid;
 pub(crate) mod kernel;
-mod none;
-mod quadric;
 mod registry;
-mod skala;
-mod sphere;
 mod steps;
 pub(crate) mod table;
-mod thick_cylinder;
 
 pub use crate::geometry::{CullBounds, SAFETY_REL};
-// Every cull type of the table (`AabbCull`, `CychoszCull`, …), from its module.
+// Every cull's module (`aabb`, `cychosz`, …) and its type (`AabbCull`, `CychoszCull`, …),
+// from the table's rows.
 use table::export_culls;
+export_culls!(modules);
 export_culls!(cull);
 #[doc(hidden)]
 pub use kernel::LaneBounds;

@@ -5,7 +5,7 @@
 //! dispatch from an enum to the cull's type.
 //!
 //! A row is `Variant "name" module::Type [forms] [shapes], "doc"` (`module`: the cull's
-//! file in `cull/`); each enum names the cull by the same variant, and the type is
+//! file in `cull/`, declared from the row, one row a file); each enum names the cull by the same variant, and the type is
 //! re-exported from `cull` and the crate root by [`export_culls`]:
 //! - `lanes`: the type is also a [`super::kernel::CullKernel`] and runs in the batch
 //!   paths;
@@ -38,7 +38,7 @@ macro_rules! cull_table {
                 "The outer ellipsoid ∩ the slab ∩ the inner hyperboloid ρ² − (ν − 1)·y² ≥ (R − r)².";
             Discriminant "discriminant" discriminant::DiscriminantCull [lanes gpu] [Ring Elliptic],
                 "The quartic's real-root classification (no root, no branch), in f32.";
-            DiscriminantF64 "discriminant_f64" discriminant::DiscriminantF64Cull [] [Ring Elliptic],
+            DiscriminantF64 "discriminant_f64" discriminant_f64::DiscriminantF64Cull [] [Ring Elliptic],
                 "The same classification evaluated in f64.";
         }
     };
@@ -66,8 +66,10 @@ pub enum Shape {
 
 /// The cull types, re-exported where the crate makes them public: `export_culls!(cull)`
 /// in `cull` (from each cull's module), `export_culls!(root)` at the crate root (from
-/// `cull`). A new row is exported with no line to add.
+/// `cull`); `export_culls!(modules)` declares each row's module in `cull`. A new row is
+/// declared and exported with no line to add.
 macro_rules! export_culls {
+    (modules) => { $crate::cull::table::cull_table!(export_culls @modules); };
     (cull) => { $crate::cull::table::cull_table!(export_culls @cull); };
     (root) => { $crate::cull::table::cull_table!(export_culls @root); };
     // (`export_culls` must be in scope where it is called: `cull_table!` calls it back by
@@ -83,6 +85,13 @@ macro_rules! export_culls {
         [$($forms:ident)*] [$($shape:ident)*], $doc:literal;
     )*) => {
         $(pub use crate::cull::$ty;)*
+    };
+    // Each row's module, `cull/<module>.rs` (one cull type a file, so no module twice).
+    (@modules $(
+        $kind:ident $name:literal $module:ident :: $ty:ident
+        [$($forms:ident)*] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        $(mod $module;)*
     };
 }
 pub(crate) use export_culls;

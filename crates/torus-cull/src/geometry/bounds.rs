@@ -10,54 +10,69 @@ use crate::num::round::down;
 /// measurable in rejection rate (it only keeps lines that pass within η of the surface).
 pub const SAFETY_REL: f32 = 1.0 / 4096.0;
 
-/// Per-torus constants for the culls, in f32, with the safety margin folded in.
+/// **The one table of the culls' per-torus constants.** Calls `$then! { rows }`: every
+/// list of them comes from these rows: the fields of [`CullBounds`] (here), the lanes'
+/// `LaneBounds` (`cull/kernel.rs`), the GPU's parameter rows and the WGSL `TcBounds`
+/// (`gpu/bounds.rs`). A row is `field: type [forms], "doc";`, its value computed in
+/// [`CullBounds::with_margin`] (the struct literal there fails to compile without it):
+/// - `lanes`: an f32 the lane kernels read, `LaneBounds::field`;
+/// - `lanes gpu name`: also packed for the kernel, in row order, read in WGSL as
+///   `TcBounds::name` (three `vec4<f32>` of `TorusParams` hold at most 10 of them).
 ///
-/// Owned by its [`crate::Torus`] (computed once in [`crate::Torus::new`], read with
-/// [`crate::Torus::bounds`]): bounds exist only for a torus the constructor accepted, so a
-/// cull can be handed neither another torus's constants nor those of a torus without a
-/// hole (R ≤ r, where the padded hole test would reject lines that hit).
-///
-/// ```compile_fail
-/// // Not constructible outside the crate: R < r has no bounds, only a `TorusError`.
-/// let bounds = torus_cull::CullBounds::new(1.0, 2.0);
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CullBounds {
-    /// R.
-    pub(crate) major_radius: f32,
-    /// r (unpadded, for the paper-as-printed variants).
-    pub(crate) minor_radius: f32,
-    /// r_η = r + η: the padded tube radius used by every timed cull.
-    pub(crate) minor_safe: f32,
-    /// r_η².
-    pub(crate) minor_safe_sq: f32,
-    /// (R + r_η)²: the padded bounding sphere.
-    pub(crate) outer_safe_sq: f32,
-    /// R + r_η.
-    pub(crate) outer_safe: f32,
-    /// R − r_η: the padded hole radius (≥ 0 is not guaranteed for ν near 1).
-    pub(crate) inner_safe: f32,
-    /// (R − r_η)², or 0 when the padded hole closes.
-    pub(crate) inner_safe_sq: f32,
-    /// s = √(ν_η + 1) with ν_η = R/r_η, rounded down: scaling y by s turns the padded
-    /// outer ellipsoid ρ² + (ν_η + 1)·y² ≤ (R + r_η)² into the sphere of radius R + r_η.
-    /// Rounding s down only widens the ellipsoid.
-    pub(crate) ellipsoid_y_scale: f32,
-    /// s·r_η: the slab |y| ≤ r_η in the y-scaled coordinates.
-    pub(crate) ellipsoid_slab: f32,
-    /// (ν_η − 1)/(ν_η + 1) = (R − r_η)/(R + r_η), rounded down, or 0 when the padded hole
-    /// closes: the inner hyperboloid ρ² − (ν_η − 1)·y² ≥ (R − r_η)² in the y-scaled
-    /// coordinates is ρ² − this·y′² ≥ (R − r_η)². Rounding down only widens it.
-    pub(crate) hyperboloid_y_coef: f32,
-    /// 1/R²: the discriminant works at R = 1.
-    pub(crate) inv_major_sq: f32,
-    /// (r_η/R)²: the padded tube radius at R = 1.
-    pub(crate) minor_rel_sq: f32,
-    /// 1/R² in f64, for `discriminant_f64`.
-    pub(crate) inv_major_sq_f64: f64,
-    /// (r_η/R)² in f64, from the f32 r_η and R, for `discriminant_f64`.
-    pub(crate) minor_rel_sq_f64: f64,
+/// Adding a per-torus constant is a row here and its line in `with_margin`.
+macro_rules! cull_bounds_table {
+    ($then:ident) => {
+        $then! {
+            major_radius: f32 [lanes], "R.";
+            minor_radius: f32 [lanes], "r (unpadded, for the paper-as-printed variants).";
+            outer_safe: f32 [lanes gpu outer], "R + r_η.";
+            outer_safe_sq: f32 [lanes gpu outer_sq], "(R + r_η)²: the padded bounding sphere.";
+            minor_safe: f32 [lanes gpu minor],
+                "r_η = r + η: the padded tube radius used by every timed cull.";
+            minor_safe_sq: f32 [lanes gpu minor_sq], "r_η².";
+            inner_safe: f32 [],
+                "R − r_η: the padded hole radius (≥ 0 is not guaranteed for ν near 1).";
+            inner_safe_sq: f32 [lanes gpu inner_sq], "(R − r_η)², or 0 when the padded hole closes.";
+            ellipsoid_y_scale: f32 [lanes gpu y_scale],
+                "s = √(ν_η + 1) with ν_η = R/r_η, rounded down: scaling y by s turns the padded \
+                 outer ellipsoid ρ² + (ν_η + 1)·y² ≤ (R + r_η)² into the sphere of radius R + r_η. \
+                 Rounding s down only widens the ellipsoid.";
+            ellipsoid_slab: f32 [lanes gpu slab], "s·r_η: the slab |y| ≤ r_η in the y-scaled coordinates.";
+            hyperboloid_y_coef: f32 [lanes gpu hyperboloid],
+                "(ν_η − 1)/(ν_η + 1) = (R − r_η)/(R + r_η), rounded down, or 0 when the padded \
+                 hole closes: the inner hyperboloid ρ² − (ν_η − 1)·y² ≥ (R − r_η)² in the \
+                 y-scaled coordinates is ρ² − this·y′² ≥ (R − r_η)². Rounding down only widens it.";
+            inv_major_sq: f32 [lanes], "1/R²: the discriminant works at R = 1.";
+            minor_rel_sq: f32 [lanes gpu minor_rel_sq], "(r_η/R)²: the padded tube radius at R = 1.";
+            inv_major_sq_f64: f64 [], "1/R² in f64, for `discriminant_f64`.";
+            minor_rel_sq_f64: f64 [],
+                "(r_η/R)² in f64, from the f32 r_η and R, for `discriminant_f64`.";
+        }
+    };
 }
+pub(crate) use cull_bounds_table;
+
+/// [`CullBounds`] from the rows of [`cull_bounds_table`].
+macro_rules! define_cull_bounds {
+    ($($field:ident: $ty:ty [$($forms:tt)*], $doc:literal;)*) => {
+        /// Per-torus constants for the culls, in f32, with the safety margin folded in.
+        ///
+        /// Owned by its [`crate::Torus`] (computed once in [`crate::Torus::new`], read with
+        /// [`crate::Torus::bounds`]): bounds exist only for a torus the constructor accepted, so a
+        /// cull can be handed neither another torus's constants nor those of a torus without a
+        /// hole (R ≤ r, where the padded hole test would reject lines that hit).
+        ///
+        /// ```compile_fail
+        /// // Not constructible outside the crate: R < r has no bounds, only a `TorusError`.
+        /// let bounds = torus_cull::CullBounds::new(1.0, 2.0);
+        /// ```
+        #[derive(Debug, Clone, Copy, PartialEq)]
+        pub struct CullBounds {
+            $(#[doc = $doc] pub(crate) $field: $ty,)*
+        }
+    };
+}
+cull_bounds_table!(define_cull_bounds);
 
 impl CullBounds {
     /// Bounds for R = `major_radius`, r = `minor_radius`: only [`crate::Torus::new`]'s

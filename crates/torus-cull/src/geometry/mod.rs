@@ -13,6 +13,7 @@ mod solid_query;
 mod torus;
 mod tube;
 
+pub(crate) use bounds::cull_bounds_table;
 pub use bounds::{CullBounds, SAFETY_REL};
 pub use point_query::{NonFinitePoint, SurfaceProjection};
 pub(crate) use tube::Tube;

@@ -47,18 +47,63 @@ pub(crate) fn kernel_bounds(rr: f32) -> CullBounds {
     CullBounds::with_margin(1.0, rr, gpu_margin(rr))
 }
 
-/// The bounds as three rows of the kernel's parameter block (`Params.bounds_*`).
+/// `GPU_BOUNDS` from the rows of the table of per-torus constants
+/// (`crate::geometry::cull_bounds_table`) with the form `gpu`.
+macro_rules! define_gpu_bounds {
+    ($($field:ident: $ty:ty [$($lanes:ident $($gpu:ident $wgsl:ident)?)?], $doc:literal;)*) => {
+        /// The constants the kernel's culls read, in the table's order (the slots of
+        /// `bounds_a`, `bounds_b`, `bounds_c`): each its WGSL name in `TcBounds` and its
+        /// value in the kernel's [`CullBounds`].
+        const GPU_BOUNDS: &[(&str, fn(&CullBounds) -> f32)] = &[
+            $($($((stringify!($wgsl), |b: &CullBounds| -> f32 { b.$field }),)?)?)*
+        ];
+    };
+}
+crate::geometry::cull_bounds_table!(define_gpu_bounds);
+
+/// The slots of `TorusParams`'s three bounds rows: the culls' constants ([`GPU_BOUNDS`])
+/// then two for diagnostics, R − r_η and η_gpu (no cull reads them).
+const SLOTS: usize = 12;
+const _: () = assert!(
+    GPU_BOUNDS.len() + 2 <= SLOTS,
+    "TorusParams holds 10 culls' constants: a new one needs a fourth bounds row"
+);
+
+/// The bounds as three rows of the kernel's parameter block (`Params.bounds_*`): the
+/// constants of [`GPU_BOUNDS`] in order, then R − r_η and η_gpu, then zeros.
 pub(crate) fn bounds_rows(b: &CullBounds) -> [[f32; 4]; 3] {
+    let mut slots = [0.0f32; SLOTS];
+    let n = GPU_BOUNDS.len();
+    for (slot, (_, value)) in slots.iter_mut().zip(GPU_BOUNDS) {
+        *slot = value(b);
+    }
+    slots[n] = b.inner_safe;
+    slots[n + 1] = gpu_margin_of(b);
     [
-        [b.outer_safe, b.outer_safe_sq, b.minor_safe, b.minor_safe_sq],
-        [
-            b.inner_safe_sq,
-            b.ellipsoid_y_scale,
-            b.ellipsoid_slab,
-            b.hyperboloid_y_coef,
-        ],
-        [b.minor_rel_sq, b.inner_safe, gpu_margin_of(b), 0.0],
+        [slots[0], slots[1], slots[2], slots[3]],
+        [slots[4], slots[5], slots[6], slots[7]],
+        [slots[8], slots[9], slots[10], slots[11]],
     ]
+}
+
+/// The WGSL `TcBounds` (the culls' constants by name) and `tc_bounds_of`, which unpacks
+/// them from a `TorusParams` in [`bounds_rows`]'s slots: generated from [`GPU_BOUNDS`]
+/// (mirrors `bounds_rows`), so that the two cannot disagree.
+pub(crate) fn bounds_wgsl() -> String {
+    let mut fields = String::new();
+    let mut reads = String::new();
+    for (i, (name, _)) in GPU_BOUNDS.iter().enumerate() {
+        let row = ["a", "b", "c"][i / 4];
+        let lane = ["x", "y", "z", "w"][i % 4];
+        fields.push_str(&format!("    {name}: f32,\n"));
+        reads.push_str(&format!("    b.{name} = torus.bounds_{row}.{lane};\n"));
+    }
+    format!(
+        "// The culls' per-torus constants (generated from the table in src/geometry/bounds.rs;\n\
+         // the host packs them: torus_cull::gpu::bounds::bounds_rows).\n\
+         struct TcBounds {{\n{fields}}};\n\n\
+         fn tc_bounds_of(torus: TorusParams) -> TcBounds {{\n    var b: TcBounds;\n{reads}    return b;\n}}\n"
+    )
 }
 
 /// The margin the bounds were made with (for the kernel's diagnostics): r_η − r.
@@ -81,6 +126,37 @@ mod tests {
             let b = kernel_bounds(rr);
             assert!(b.minor_safe >= rr + eta * (1.0 - 1e-6));
             assert_eq!(b.major_radius, 1.0);
+        }
+    }
+
+    /// The generated packing is `TorusParams`'s documented layout (api.wgsl; a renderer
+    /// fills it from `ModuleTorus::params`), and the WGSL reads each constant from its
+    /// slot.
+    #[test]
+    fn the_bounds_rows_keep_the_params_layout() {
+        let b = kernel_bounds(0.25);
+        assert_eq!(
+            bounds_rows(&b),
+            [
+                [b.outer_safe, b.outer_safe_sq, b.minor_safe, b.minor_safe_sq],
+                [
+                    b.inner_safe_sq,
+                    b.ellipsoid_y_scale,
+                    b.ellipsoid_slab,
+                    b.hyperboloid_y_coef
+                ],
+                [b.minor_rel_sq, b.inner_safe, gpu_margin_of(&b), 0.0],
+            ]
+        );
+        let wgsl = bounds_wgsl();
+        for read in [
+            "b.outer = torus.bounds_a.x;",
+            "b.minor_sq = torus.bounds_a.w;",
+            "b.inner_sq = torus.bounds_b.x;",
+            "b.hyperboloid = torus.bounds_b.w;",
+            "b.minor_rel_sq = torus.bounds_c.x;",
+        ] {
+            assert!(wgsl.contains(read), "{read} in\n{wgsl}");
         }
     }
 }

@@ -34,23 +34,79 @@ macro_rules! wgsl_files {
     };
 }
 
-/// The module's files (`wgsl/module/*.wgsl`), in the order of [`MODULE_BODY`]: each the
-/// WGSL side of the Rust modules its header's `mirrors:` lines name.
-const MODULE_FILES: (&str, &[(&str, &str)]) = wgsl_files!(
+/// The module's files before the culls' (`wgsl/module/*.wgsl`, then the culls' shared
+/// parts, `culls/shared.wgsl`), in the order of [`module_body`]: each the WGSL side of the
+/// Rust modules its header's `mirrors:` lines name.
+const MODULE_HEAD: (&str, &[(&str, &str)]) = wgsl_files!(
     "wgsl/module/api.wgsl",
     "wgsl/module/solver.wgsl",
     "wgsl/module/certificate.wgsl",
-    "wgsl/module/culls.wgsl",
-    "wgsl/module/trace.wgsl",
-    "wgsl/module/surface.wgsl",
+    "wgsl/module/culls/shared.wgsl",
 );
 
-/// The module's body (the intersection as WGSL functions, no bindings): every shared
-/// number comes from the generated header.
-const MODULE_BODY: &str = MODULE_FILES.0;
+/// The module's files after the culls' dispatch, in the order of [`module_body`].
+const MODULE_TAIL: (&str, &[(&str, &str)]) =
+    wgsl_files!("wgsl/module/trace.wgsl", "wgsl/module/surface.wgsl",);
+
+/// `CULL_FILES` from the rows of the table of culls (`cull/table.rs`) that have a `gpu`
+/// form: each row's file `wgsl/module/culls/<name>.wgsl`, which declares
+/// `fn tc_<name>_keeps(b: TcBounds, q: vec3<f32>, dh: vec3<f32>) -> bool`.
+macro_rules! cull_wgsl_files {
+    ($(
+        $kind:ident $name:literal $module:ident :: $ty:ident
+        [$($lanes:ident $($gpu:ident)?)?] [$($shape:ident)*], $doc:literal;
+    )*) => {
+        /// Each GPU cull's WGSL file `(path under src/gpu, text)`, in [`GpuCull::ALL`]'s
+        /// order (the table's).
+        const CULL_FILES: &[(&str, &str)] = &[$($($((
+            cull_wgsl_files!(@path $name $gpu),
+            include_str!(cull_wgsl_files!(@path $name $gpu)),
+        ),)?)?)*];
+    };
+    (@path $name:literal $gpu:ident) => { concat!("wgsl/module/culls/", $name, ".wgsl") };
+}
+crate::cull::table::cull_table!(cull_wgsl_files);
+
+/// The kernel's cull dispatch `tc_cull_keeps`, generated from [`GpuCull::ALL`] (the table
+/// of culls): a case per cull, `TORUS_CULL_<NAME>` (the header's codes) calling its
+/// file's `tc_<name>_keeps`; an unknown code keeps the line (conservative).
+fn cull_switch() -> String {
+    let mut out = String::from(
+        "// The cull `code` (GpuCull::ALL's order) on the scaled line: true keeps it. Generated\n\
+         // from the table of culls (torus_cull::gpu::source); mirrors\n\
+         // crate::cull::kernel::keeps_scalar (the dispatch).\n\
+         fn tc_cull_keeps(code: u32, b: TcBounds, q: vec3<f32>, dh: vec3<f32>) -> bool {\n    \
+         switch code {\n",
+    );
+    for cull in GpuCull::ALL {
+        let name = cull.name();
+        let code = name.to_uppercase();
+        let _ = writeln!(
+            out,
+            "        case TORUS_CULL_{code}: {{\n            return tc_{name}_keeps(b, q, dh);\n        }}"
+        );
+    }
+    out.push_str("        default: {\n            return true;\n        }\n    }\n}\n");
+    out
+}
+
+/// The module's body (the intersection as WGSL functions, no bindings): the head files,
+/// the generated `TcBounds` (`super::bounds::bounds_wgsl`), each GPU cull's file in the
+/// table's order, the generated dispatch, the tail files.
+/// Every shared number comes from the generated header.
+fn module_body() -> String {
+    let culls: String = CULL_FILES.iter().map(|&(_, text)| text).collect();
+    format!(
+        "{}{}\n{culls}\n{}\n{}",
+        MODULE_HEAD.0,
+        super::bounds::bounds_wgsl(),
+        cull_switch(),
+        MODULE_TAIL.0
+    )
+}
 
 /// The library kernel's bindings and entry point (`wgsl/kernel.wgsl`), around
-/// [`MODULE_BODY`].
+/// [`module_body`].
 const KERNEL_BODY: &str = include_str!("wgsl/kernel.wgsl");
 
 /// The GPU's factor on every rounding term in u = 2⁻²⁴: WGSL may or may not contract
@@ -192,7 +248,7 @@ impl KernelConstants {
 
     /// The module's WGSL text ([`wgsl_module`]) with these constants.
     pub fn module(&self) -> String {
-        format!("{}\n{MODULE_BODY}", self.header())
+        format!("{}\n{}", self.header(), module_body())
     }
 
     /// The kernel's full WGSL text: the module ([`KernelConstants::module`]) and the

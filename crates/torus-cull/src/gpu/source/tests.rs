@@ -81,7 +81,7 @@ fn every_shared_constant_comes_from_rust() {
         ],
     );
     assert!(header.contains(&format!("const TC_CBRT_SEED: u32 = {CBRT_F32_SEED}u;")));
-    assert_no_hand_written_constant([MODULE_BODY, KERNEL_BODY]);
+    assert_no_hand_written_constant([&module_body(), KERNEL_BODY]);
 }
 
 /// The generated text parses and validates as WGSL (naga, as wgpu does), with the
@@ -387,18 +387,34 @@ fn wgsl_files() -> Vec<(&'static str, &'static str)> {
         ("wgsl/kernel.wgsl", KERNEL_BODY),
         ("wgsl/finish.wgsl", FINISH_BODY),
     ];
-    (MODULE_FILES.1.iter().chain(FINISH_MODULE_FILES.1))
+    (MODULE_HEAD.1.iter().chain(CULL_FILES).chain(MODULE_TAIL.1))
+        .chain(FINISH_MODULE_FILES.1)
         .copied()
         .chain(entry_points)
         .chain(crate::gpu::scene_bvh::SCENE_FILES)
         .collect()
 }
 
-/// The module texts are their files concatenated as they are, in order.
+/// The module texts are their files concatenated as they are, in order: the f32 module's
+/// head, its culls in the table's order, the generated dispatch, its tail.
 #[test]
 fn the_bodies_are_their_files_in_order() {
-    let module: String = MODULE_FILES.1.iter().map(|&(_, text)| text).collect();
-    assert_eq!(module, MODULE_BODY);
+    let text = |files: &[(&str, &str)]| -> String { files.iter().map(|&(_, t)| t).collect() };
+    let module = format!(
+        "{}{}\n{}\n{}\n{}",
+        text(MODULE_HEAD.1),
+        crate::gpu::bounds::bounds_wgsl(),
+        text(CULL_FILES),
+        cull_switch(),
+        text(MODULE_TAIL.1)
+    );
+    assert_eq!(module, module_body());
+    let paths: Vec<String> = CULL_FILES.iter().map(|&(p, _)| p.to_string()).collect();
+    let want: Vec<String> = GpuCull::ALL
+        .iter()
+        .map(|c| format!("wgsl/module/culls/{}.wgsl", c.name()))
+        .collect();
+    assert_eq!(paths, want);
     let finish: String = FINISH_MODULE_FILES
         .1
         .iter()
