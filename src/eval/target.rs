@@ -184,7 +184,7 @@ impl Target {
     }
 
     /// The exact intersection's nearest `t` in range: the shape's own, through the
-    /// interface ([`Target::caster`]).
+    /// interface (`Target::caster`).
     pub fn t_hit<P: Precision>(&self, ray: &Ray<P>) -> Option<P::Float> {
         self.caster::<P>().cast_ray(ray)
     }

@@ -7,7 +7,7 @@ use super::CullBounds;
 use crate::num::sc;
 use glam::Vec3;
 
-/// [`DiscriminantCull`] evaluated in f64 from the f32 line: same bound and padding, about
+/// [`DiscriminantCull`](super::discriminant::DiscriminantCull) evaluated in f64 from the f32 line: same bound and padding, about
 /// 2⁻²⁹ times the rounding of the f32 arithmetic (the f32 line itself, from the
 /// world → torus transform, still needs the padding). Scalar only: it has no batch form.
 #[derive(Debug, Clone, Copy, Default)]
