@@ -9,6 +9,7 @@
 //! radians, r_min/r_max the bore's share of the tube), posed and scaled as the command
 //! does; the workload's `seed` seeds them.
 
+use super::field_list::{FieldError, Repeats, check_list};
 use serde::Deserialize;
 use std::f64::consts::TAU;
 use torus_cull::MAX_NU;
@@ -48,34 +49,6 @@ struct RawBend {
     rays: i64,
 }
 
-/// (the field at fault, what is wrong and what is allowed).
-type FieldError = (String, String);
-
-/// Checks one list: not empty, and every value `ok`; a fault names `bend.<name>[i]` and
-/// `allowed`.
-fn check_list(
-    name: &str,
-    values: &[f64],
-    ok: impl Fn(f64) -> bool,
-    allowed: &str,
-) -> Result<(), FieldError> {
-    if values.is_empty() {
-        return Err((
-            format!("bend.{name}"),
-            format!("must list at least one value (allowed: {allowed})"),
-        ));
-    }
-    for (i, &v) in values.iter().enumerate() {
-        if !ok(v) {
-            return Err((
-                format!("bend.{name}[{i}]"),
-                format!("{} is invalid (allowed: {allowed})", crate::number::Num(v)),
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// The `bend` key's value, checked field by field (nu, delta_phi, bore_ratio, rays).
 pub(super) fn parse_bend(value: serde_json::Value) -> Result<BendSpec, FieldError> {
     let raw: RawBend = serde_json::from_value(value).map_err(|e| {
@@ -85,22 +58,25 @@ pub(super) fn parse_bend(value: serde_json::Value) -> Result<BendSpec, FieldErro
         )
     })?;
     check_list(
-        "nu",
+        "bend.nu",
         &raw.nu,
         |nu| nu.is_finite() && nu > 1.0 && nu <= MAX_NU,
         &format!("1 < nu <= {MAX_NU}"),
+        Repeats::Allowed,
     )?;
     check_list(
-        "delta_phi",
+        "bend.delta_phi",
         &raw.delta_phi,
         delta_phi_ok,
         "0 < delta_phi <= 2*pi = 6.283185307179586",
+        Repeats::Allowed,
     )?;
     check_list(
-        "bore_ratio",
+        "bend.bore_ratio",
         &raw.bore_ratio,
         bore_ratio_ok,
         "0 <= bore_ratio < 1",
+        Repeats::Allowed,
     )?;
     if !(1..=MAX_BEND_RAYS).contains(&raw.rays) {
         return Err((

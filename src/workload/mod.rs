@@ -16,6 +16,7 @@ pub mod adversarial;
 pub mod bend_spec;
 pub mod box_rays;
 mod camera;
+mod field_list;
 mod grazing;
 mod hole;
 mod outer_band;

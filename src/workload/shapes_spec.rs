@@ -13,6 +13,7 @@
 //! member draws `rays` rays; either list may be left out, not both.
 
 use super::bend_spec::bore_ratio_ok;
+use super::field_list::{FieldError, Repeats, check_list};
 use crate::number::Num;
 use serde::Deserialize;
 use torus_cull::MAX_NU;
@@ -62,41 +63,6 @@ struct RawBends {
     bores: Vec<f64>,
 }
 
-/// (the field at fault, what is wrong and what is allowed).
-type FieldError = (String, String);
-
-/// Checks one list `shapes.<name>`: not empty, no value twice, and every value `ok`; a
-/// fault names `shapes.<name>[i]` and `allowed`.
-fn check_list(
-    name: &str,
-    values: &[f64],
-    ok: impl Fn(f64) -> bool,
-    allowed: &str,
-) -> Result<(), FieldError> {
-    let field = format!("shapes.{name}");
-    if values.is_empty() {
-        return Err((
-            field,
-            format!("must list at least one value (allowed: {allowed})"),
-        ));
-    }
-    for (i, &v) in values.iter().enumerate() {
-        if !ok(v) {
-            return Err((
-                format!("{field}[{i}]"),
-                format!("{} is invalid (allowed: {allowed})", Num(v)),
-            ));
-        }
-        if values[..i].contains(&v) {
-            return Err((
-                format!("{field}[{i}]"),
-                format!("{} is listed twice", Num(v)),
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// The `shapes` key's value, checked field by field (rays, family.nu, family.aspects,
 /// bends.nu, bends.segments_deg, bends.bores). Whether the library builds each bend (a
 /// bore's torus, the wall) is asked before the sweep (`shape_sweep::refuse_bends`), which
@@ -126,18 +92,20 @@ pub(super) fn parse_shapes(value: serde_json::Value) -> Result<ShapesSpec, Field
     let mut family = Vec::new();
     if let Some(f) = raw.family {
         check_list(
-            "family.nu",
+            "shapes.family.nu",
             &f.nu,
             |nu| (MIN_FAMILY_NU..=MAX_NU).contains(&nu),
             &format!(
                 "{MIN_FAMILY_NU} <= nu = R/a <= {MAX_NU}: > 1 a ring, 1 the horn, < 1 a spindle"
             ),
+            Repeats::Refused,
         )?;
         check_list(
-            "family.aspects",
+            "shapes.family.aspects",
             &f.aspects,
             |b| (MIN_ASPECT..=MAX_ASPECT).contains(&b),
             &format!("{MIN_ASPECT} <= b/a <= {MAX_ASPECT}"),
+            Repeats::Refused,
         )?;
         for &nu in &f.nu {
             for &aspect in &f.aspects {
@@ -159,22 +127,25 @@ pub(super) fn parse_shapes(value: serde_json::Value) -> Result<ShapesSpec, Field
     let mut bends = Vec::new();
     if let Some(b) = raw.bends {
         check_list(
-            "bends.nu",
+            "shapes.bends.nu",
             &b.nu,
             |nu| nu.is_finite() && nu > 1.0 && nu <= MAX_NU,
             &format!("1 < nu = R/r_max <= {MAX_NU}"),
+            Repeats::Refused,
         )?;
         check_list(
-            "bends.segments_deg",
+            "shapes.bends.segments_deg",
             &b.segments_deg,
             |d| d > 0.0 && d <= 360.0,
             "0 < segment <= 360 degrees",
+            Repeats::Refused,
         )?;
         check_list(
-            "bends.bores",
+            "shapes.bends.bores",
             &b.bores,
             bore_ratio_ok,
             "0 <= r_min/r_max < 1",
+            Repeats::Refused,
         )?;
         for &nu in &b.nu {
             for &deg in &b.segments_deg {
