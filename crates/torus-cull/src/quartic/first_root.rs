@@ -272,18 +272,11 @@ impl Piece {
     /// [`TOUCH`]'s bound on the whole piece, or `m` is found and `g(m)` decides (module
     /// docs).
     fn at_extremum(&self, p: f64, q: f64, r: f64) -> Option<f64> {
-        let Piece {
-            x0,
-            x1,
-            g0,
-            e0,
-            g1,
-            e1,
-            s,
-        } = *self;
-        // Left of m (g′ < 0) and right of it (g′ > 0), each with g > 0, g′ there.
-        let (mut xa, mut ga, mut ea) = (x0, g0, e0);
-        let (mut xb, mut gb, mut eb) = (x1, g1, e1);
+        let s = self.s;
+        // Left of m (g′ < 0) and right of it (g′ > 0), each with g > 0, g′ there: the
+        // piece's ends, narrowed as the steps go.
+        let (mut xa, mut ga, mut ea) = (self.x0, self.g0, self.e0);
+        let (mut xb, mut gb, mut eb) = (self.x1, self.g1, self.e1);
         let mut x = xa - ea * ((xb - xa) / (eb - ea));
         if !(x > xa && x < xb) {
             x = 0.5 * (xa + xb);

@@ -58,27 +58,23 @@ fn solve_depressed_monic_on_the_corpus() {
     score.assert_clean("solve_depressed_monic");
 }
 
+/// Both nearest-root queries, each scored on its own: `nearest_root_depressed`, and the
+/// bracketed walk `first_root_depressed` (issue 61) held to the same score.
 #[test]
-fn nearest_root_depressed_on_the_corpus() {
-    let mut score = Score::default();
-    for case in CASES {
-        let Some(pqr) = depressed(case) else {
-            continue;
-        };
-        score.nearest(case.name, pqr, case.depressed_roots, nearest_root_depressed);
+fn nearest_root_queries_on_the_corpus() {
+    type Query = fn(f64, f64, f64, f64, f64) -> Option<f64>;
+    let queries: [(&str, Query); 2] = [
+        ("nearest_root_depressed", nearest_root_depressed),
+        ("first_root_depressed", first_root_depressed),
+    ];
+    for (query_name, query) in queries {
+        let mut score = Score::default();
+        for case in CASES {
+            let Some(pqr) = depressed(case) else {
+                continue;
+            };
+            score.nearest(case.name, pqr, case.depressed_roots, query);
+        }
+        score.assert_clean(query_name);
     }
-    score.assert_clean("nearest_root_depressed");
-}
-
-#[test]
-fn first_root_depressed_on_the_corpus() {
-    // The bracketed walk (issue 61) held to the nearest-root query's score.
-    let mut score = Score::default();
-    for case in CASES {
-        let Some(pqr) = depressed(case) else {
-            continue;
-        };
-        score.nearest(case.name, pqr, case.depressed_roots, first_root_depressed);
-    }
-    score.assert_clean("first_root_depressed");
 }
