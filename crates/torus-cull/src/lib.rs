@@ -123,7 +123,7 @@ pub use geometry::{
 };
 pub use geometry::{
     MAX_CROSSINGS, MAX_SPANS, NoFace, PointQueryError, Solid, SolidCrossing, SolidCrossings,
-    SolidF32Hit, SolidHit, SolidProjection, SolidSpan, SolidSpans,
+    SolidF32Hit, SolidHit, SolidProjection, SolidSpan, SolidSpans, SpanOf,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,

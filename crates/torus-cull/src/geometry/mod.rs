@@ -20,8 +20,9 @@ pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};
 pub use solid::Solid;
+pub(crate) use solid_crossings::pair_spans;
 pub use solid_crossings::{
-    MAX_CROSSINGS, MAX_SPANS, Passage, SolidCrossing, SolidCrossings, SolidSpan, SolidSpans,
+    MAX_CROSSINGS, MAX_SPANS, Passage, SolidCrossing, SolidCrossings, SolidSpan, SolidSpans, SpanOf,
 };
 pub use solid_hit::{NoFace, SolidF32Hit, SolidHit};
 pub use solid_query::{PointQueryError, SolidProjection};

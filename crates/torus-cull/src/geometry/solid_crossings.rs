@@ -7,6 +7,7 @@
 
 use super::ray::Precision;
 use super::ray::sealed::Scalar;
+use crate::num::fixed_list;
 
 /// How a ray meets the surface at a crossing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -53,20 +54,77 @@ impl<P: Precision, F> SolidCrossing<P, F> {
     }
 }
 
-/// A stretch `[t_enter, t_exit]` of the ray's range inside the solid. `enter` is `None`
-/// where the range starts inside (`t_enter = t_min`), `exit` where it ends inside
-/// (`t_exit = t_max`).
+/// A stretch `[t_enter, t_exit]` of a ray's range inside a solid, `T` the ray's float and
+/// `C` the solid's crossing type: one struct for the ring torus's [`crate::Span`] and every
+/// solid's [`SolidSpan`], so that one pairing (`pair_spans`) builds both. `enter` is
+/// `None` where the range starts inside (`t_enter = t_min`), `exit` where it ends inside
+/// (`t_exit = t_max`, possibly +∞, or a crossing left out because its `t` overflows the
+/// ray's float).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
-pub struct SolidSpan<P: Precision, F> {
+pub struct SpanOf<T, C> {
     /// Where the span starts.
-    pub t_enter: P::Float,
+    pub t_enter: T,
     /// Where the span ends.
-    pub t_exit: P::Float,
+    pub t_exit: T,
     /// The crossing that opens the span, unless it opens at `t_min`.
-    pub enter: Option<SolidCrossing<P, F>>,
+    pub enter: Option<C>,
     /// The crossing that closes the span, unless it runs to `t_max`.
-    pub exit: Option<SolidCrossing<P, F>>,
+    pub exit: Option<C>,
+}
+
+/// A stretch of the ray's range inside a solid, with the faces of its crossings.
+pub type SolidSpan<P, F> = SpanOf<<P as Precision>::Float, SolidCrossing<P, F>>;
+
+impl<T: Scalar, C> SpanOf<T, C> {
+    /// The filler of a span list's unused slots.
+    pub(crate) const EMPTY: Self = SpanOf {
+        t_enter: T::ZERO,
+        t_exit: T::ZERO,
+        enter: None,
+        exit: None,
+    };
+}
+
+/// Pairs `crossings` (`(t, passage, crossing)`, ascending; entries and exits alternate, an
+/// entry first unless the ray `starts_inside`) into the stretches of `[t_min, t_max]`
+/// inside the solid, written to `out` in order; returns how many (those past `out`'s
+/// length are dropped). A span opens at an entry, or at `t_min` for a ray that starts
+/// inside, and closes at the next exit, or at `t_max`; touches open none. Entering and
+/// leaving come from the roots' parity, not from `d·n` (`intersect/all.rs`), so the
+/// alternation holds by construction.
+pub(crate) fn pair_spans<T: Copy, C: Copy>(
+    crossings: impl IntoIterator<Item = (T, Passage, C)>,
+    starts_inside: bool,
+    (t_min, t_max): (T, T),
+    out: &mut [SpanOf<T, C>],
+) -> usize {
+    let mut len = 0;
+    let mut push = |(t_enter, enter), t_exit, exit| {
+        if let Some(slot) = out.get_mut(len) {
+            *slot = SpanOf {
+                t_enter,
+                t_exit,
+                enter,
+                exit,
+            };
+            len += 1;
+        }
+    };
+    let mut open = starts_inside.then_some((t_min, None));
+    for (t, passage, c) in crossings {
+        match passage {
+            Passage::Enter => open = Some((t, Some(c))),
+            // Alternation makes `open` set here; a missing one can only be the range's
+            // start.
+            Passage::Exit => push(open.take().unwrap_or((t_min, None)), t, Some(c)),
+            Passage::Touch => {}
+        }
+    }
+    if let Some(start) = open {
+        push(start, t_max, None);
+    }
+    len
 }
 
 /// Every crossing in `[t_min, t_max]`, ascending in `t`, and the ray's side at `t_min`.
@@ -117,82 +175,31 @@ impl<P: Precision, F: Copy + Default> SolidCrossings<P, F> {
     }
 
     /// The crossings paired into the stretches of the range inside the solid, ascending
-    /// (the ring torus's `Crossings::spans`, over any face type). Touches open no span.
+    /// (`pair_spans`, as the ring torus's `Crossings::spans`). Touches open no span.
     pub fn spans(&self) -> SolidSpans<P, F> {
-        let empty = SolidSpan {
-            t_enter: <P::Float as Scalar>::ZERO,
-            t_exit: <P::Float as Scalar>::ZERO,
-            enter: None,
-            exit: None,
-        };
-        let mut out = SolidSpans {
-            spans: [empty; MAX_SPANS],
-            len: 0,
-        };
-        let push = |out: &mut SolidSpans<P, F>, (t_enter, enter), t_exit, exit| {
-            if let Some(slot) = out.spans.get_mut(out.len) {
-                *slot = SolidSpan {
-                    t_enter,
-                    t_exit,
-                    enter,
-                    exit,
-                };
-                out.len += 1;
-            }
-        };
-        let mut open = self.starts_inside.then_some((self.t_min, None));
-        for &c in self.as_slice() {
-            match c.passage {
-                Passage::Enter => open = Some((c.t, Some(c))),
-                // Alternation makes `open` set here; a missing one can only be the range's
-                // start.
-                Passage::Exit => push(
-                    &mut out,
-                    open.take().unwrap_or((self.t_min, None)),
-                    c.t,
-                    Some(c),
-                ),
-                Passage::Touch => {}
-            }
-        }
-        if let Some(start) = open {
-            push(&mut out, start, self.t_max, None);
-        }
-        out
+        let mut spans = [SpanOf::EMPTY; MAX_SPANS];
+        let crossings = self.iter().map(|&c| (c.t, c.passage, c));
+        let len = pair_spans(crossings, self.starts_inside, self.range(), &mut spans);
+        SolidSpans { spans, len }
     }
 }
 
-impl<P: Precision, F> SolidCrossings<P, F> {
+fixed_list! {
     /// The crossings, ascending in `t`: entries and exits alternate (an entry first unless
-    /// [`SolidCrossings::starts_inside`]), touches anywhere between them.
-    #[inline]
-    #[must_use]
-    pub fn as_slice(&self) -> &[SolidCrossing<P, F>] {
-        &self.crossings[..self.len]
-    }
+    /// [`SolidCrossings::starts_inside`]), touches anywhere between them (a touch counts
+    /// once).
+    impl[P: Precision, F] SolidCrossings<P, F>, crossings: [SolidCrossing<P, F>], "crossings"
+}
 
-    /// The crossings by reference, ascending.
-    #[inline]
-    pub fn iter(&self) -> std::slice::Iter<'_, SolidCrossing<P, F>> {
-        self.as_slice().iter()
-    }
+fixed_list! {
+    /// The spans, ascending.
+    impl[P: Precision, F] SolidSpans<P, F>, spans: [SolidSpan<P, F>], "spans"
+}
 
-    /// How many crossings (a touch counts once).
-    #[inline]
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// No crossing in range (the ray may still lie wholly inside).
-    #[inline]
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
+impl<P: Precision, F> SolidCrossings<P, F> {
     /// Whether the ray is inside the solid at `t_min` (for a ray from a surface point:
-    /// just past its origin).
+    /// just past its origin). No crossing in range with this true: the whole range lies
+    /// inside.
     #[inline]
     #[must_use]
     pub fn starts_inside(&self) -> bool {
@@ -204,50 +211,5 @@ impl<P: Precision, F> SolidCrossings<P, F> {
     #[must_use]
     pub fn range(&self) -> (P::Float, P::Float) {
         (self.t_min, self.t_max)
-    }
-}
-
-impl<P: Precision, F> SolidSpans<P, F> {
-    /// The spans, ascending.
-    #[inline]
-    #[must_use]
-    pub fn as_slice(&self) -> &[SolidSpan<P, F>] {
-        &self.spans[..self.len]
-    }
-
-    /// The spans by reference, ascending.
-    #[inline]
-    pub fn iter(&self) -> std::slice::Iter<'_, SolidSpan<P, F>> {
-        self.as_slice().iter()
-    }
-
-    /// How many spans.
-    #[inline]
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// The range holds no point inside the solid (touches aside).
-    #[inline]
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-}
-
-impl<'a, P: Precision, F> IntoIterator for &'a SolidCrossings<P, F> {
-    type Item = &'a SolidCrossing<P, F>;
-    type IntoIter = std::slice::Iter<'a, SolidCrossing<P, F>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
-}
-
-impl<'a, P: Precision, F> IntoIterator for &'a SolidSpans<P, F> {
-    type Item = &'a SolidSpan<P, F>;
-    type IntoIter = std::slice::Iter<'a, SolidSpan<P, F>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
     }
 }

@@ -18,9 +18,9 @@
 
 use super::from_surface::{SurfaceCubic, cubic_roots, starts_on_the_surface};
 use super::reduce::{coefficients, foot_line, normal};
-use crate::geometry::Tube;
 use crate::geometry::ray::sealed::Scalar;
-use crate::num::{Sc, V3, sc};
+use crate::geometry::{SpanOf, Tube, pair_spans};
+use crate::num::{Sc, V3, fixed_list, sc};
 use crate::quartic::solve_depressed_monic;
 use crate::{Precision, Ray, Torus};
 use glam::{DVec3, Vec3};
@@ -41,23 +41,9 @@ pub struct Crossing<P: Precision = Vec3> {
     pub passage: Passage,
 }
 
-/// A stretch `[t_enter, t_exit]` of the ray's range inside the solid torus.
-///
-/// `enter` is `None` for a ray that is already inside at `t_min` (then `t_enter = t_min`),
-/// and `exit` is `None` for one still inside at `t_max` (then `t_exit = t_max`, possibly
-/// +∞, or a crossing left out because its `t` overflows the ray's float).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub struct Span<P: Precision = Vec3> {
-    /// Where the span starts.
-    pub t_enter: P::Float,
-    /// Where the span ends.
-    pub t_exit: P::Float,
-    /// The crossing that opens the span, unless it opens at `t_min`.
-    pub enter: Option<Crossing<P>>,
-    /// The crossing that closes the span, unless it runs to `t_max`.
-    pub exit: Option<Crossing<P>>,
-}
+/// A stretch `[t_enter, t_exit]` of the ray's range inside the solid torus ([`SpanOf`],
+/// the one span type of every solid, over the torus's [`Crossing`]).
+pub type Span<P = Vec3> = SpanOf<<P as Precision>::Float, Crossing<P>>;
 
 /// Every crossing of a ray with the torus in `[t_min, t_max]`, sorted by `t` (at most
 /// four: a quartic's roots), and the ray's side at `t_min`: what [`intersect_all`]
@@ -97,29 +83,6 @@ impl<P: Precision> Crossings<P> {
         }
     }
 
-    /// The crossings, ascending in `t`: entries and exits alternate (an entry first unless
-    /// [`Crossings::starts_inside`]), with touches anywhere between them.
-    #[inline]
-    #[must_use]
-    pub fn as_slice(&self) -> &[Crossing<P>] {
-        &self.crossings[..self.len]
-    }
-
-    /// How many crossings (0 to 4; a touch counts once).
-    #[inline]
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// No crossing in range (the ray may still lie wholly inside: see
-    /// [`Crossings::starts_inside`]).
-    #[inline]
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
     /// Whether the ray is inside the solid torus at `t_min` (for a ray from a surface
     /// point: just past its origin).
     #[inline]
@@ -128,116 +91,33 @@ impl<P: Precision> Crossings<P> {
         self.starts_inside
     }
 
-    /// The crossings paired into the stretches of the range inside the solid, ascending.
-    /// Touches open no span.
+    /// The crossings paired into the stretches of the range inside the solid, ascending
+    /// (`pair_spans`, as every solid's). Touches open no span.
     pub fn spans(&self) -> Spans<P> {
-        let zero = Crossing {
-            t: <P::Float as Scalar>::ZERO,
-            normal: P::ZERO,
-            passage: Passage::Touch,
-        };
-        let mut out = Spans {
-            spans: [Span {
-                t_enter: zero.t,
-                t_exit: zero.t,
-                enter: None,
-                exit: None,
-            }; 2],
-            len: 0,
-        };
-        let mut open = self.starts_inside.then_some((self.t_min, None));
-        let push = |out: &mut Spans<P>, (t_enter, enter), t_exit, exit| {
-            if out.len < 2 {
-                out.spans[out.len] = Span {
-                    t_enter,
-                    t_exit,
-                    enter,
-                    exit,
-                };
-                out.len += 1;
-            }
-        };
-        for &c in self.as_slice() {
-            match c.passage {
-                Passage::Enter => open = Some((c.t, Some(c))),
-                // Alternation makes `open` set here; a missing one can only be the range's
-                // start.
-                Passage::Exit => push(
-                    &mut out,
-                    open.take().unwrap_or((self.t_min, None)),
-                    c.t,
-                    Some(c),
-                ),
-                Passage::Touch => {}
-            }
-        }
-        if let Some(start) = open {
-            push(&mut out, start, self.t_max, None);
-        }
-        out
-    }
-}
-
-impl<P: Precision> Spans<P> {
-    /// The spans, ascending.
-    #[inline]
-    #[must_use]
-    pub fn as_slice(&self) -> &[Span<P>] {
-        &self.spans[..self.len]
+        let mut spans = [SpanOf::EMPTY; 2];
+        let crossings = self.iter().map(|&c| (c.t, c.passage, c));
+        let len = pair_spans(crossings, self.starts_inside, self.range(), &mut spans);
+        Spans { spans, len }
     }
 
-    /// How many spans (0 to 2).
-    #[inline]
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// The ray's range holds no point inside the solid (touches aside).
-    #[inline]
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-}
-
-impl<P: Precision> Crossings<P> {
     /// The ray's range `[t_min, t_max]` the crossings were found in.
     #[inline]
     #[must_use]
     pub fn range(&self) -> (P::Float, P::Float) {
         (self.t_min, self.t_max)
     }
-
-    /// The crossings by reference, ascending (`for c in &crossings` says the same).
-    #[inline]
-    pub fn iter(&self) -> std::slice::Iter<'_, Crossing<P>> {
-        self.as_slice().iter()
-    }
 }
 
-impl<P: Precision> Spans<P> {
-    /// The spans by reference, ascending (`for s in &spans` says the same).
-    #[inline]
-    pub fn iter(&self) -> std::slice::Iter<'_, Span<P>> {
-        self.as_slice().iter()
-    }
+fixed_list! {
+    /// The crossings, ascending in `t`: entries and exits alternate (an entry first unless
+    /// [`Crossings::starts_inside`]), with touches anywhere between them (0 to 4; a touch
+    /// counts once).
+    impl[P: Precision] Crossings<P>, crossings: [Crossing<P>], "crossings"
 }
 
-impl<'a, P: Precision> IntoIterator for &'a Crossings<P> {
-    type Item = &'a Crossing<P>;
-    type IntoIter = std::slice::Iter<'a, Crossing<P>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
-}
-
-impl<'a, P: Precision> IntoIterator for &'a Spans<P> {
-    type Item = &'a Span<P>;
-    type IntoIter = std::slice::Iter<'a, Span<P>>;
-    fn into_iter(self) -> Self::IntoIter {
-        self.iter()
-    }
+fixed_list! {
+    /// The spans, ascending (0 to 2).
+    impl[P: Precision] Spans<P>, spans: [Span<P>], "spans"
 }
 
 /// A root of the whole line's quartic in the foot-point frame, at `key`: `u`, or for a ray

@@ -16,6 +16,7 @@
 //! same bits at every width; the bit-identity of scalar and lane verdicts rests on that.
 
 pub mod cube_root;
+pub(crate) mod fixed_list;
 pub mod isa;
 pub mod lanes;
 pub mod poly;
@@ -24,6 +25,7 @@ pub(crate) mod round;
 pub mod v3;
 
 pub(crate) use cube_root::CBRT_RANGE;
+pub(crate) use fixed_list::fixed_list;
 pub use isa::{Dispatch, ISA_ENV, Isa, IsaError};
 pub use lanes::{F32s, F64s, M64s};
 pub(crate) use poly::poly5;

@@ -1,5 +1,7 @@
 //! The solver's answer: up to four real roots in a fixed array, no allocation.
 
+use crate::num::fixed_list;
+
 /// Up to four real roots, sorted ascending. A double root is reported twice.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct RealRoots {
@@ -7,25 +9,12 @@ pub struct RealRoots {
     pub(super) len: usize,
 }
 
+fixed_list! {
+    /// The roots, ascending (0 to 4, with multiplicity).
+    impl[] RealRoots, roots: [f64], "roots"
+}
+
 impl RealRoots {
-    /// The roots, ascending.
-    #[inline]
-    pub fn as_slice(&self) -> &[f64] {
-        &self.roots[..self.len]
-    }
-
-    /// How many real roots (with multiplicity), 0 to 4.
-    #[inline]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    /// No real root.
-    #[inline]
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
     #[inline]
     pub(super) fn push(&mut self, x: f64) {
         // A quartic has at most four roots; each of the two factors pushes at most two.
