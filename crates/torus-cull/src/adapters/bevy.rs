@@ -209,24 +209,9 @@ impl BevyTorus {
     /// docs: the library's `t` and normal, `solid`'s meaning).
     #[must_use]
     pub fn local_ray_cast(&self, ray: Ray3d, max_distance: f32, solid: bool) -> Option<RayHit> {
-        let (origin, dir) = (from_bevy(ray.origin), from_bevy(*ray.direction));
-        let lib = Ray::with_range(origin, dir, 0.0, max_distance).ok()?;
-        if solid && self.toroid.contains(origin.as_dvec3()).ok()? {
-            return Some(RayHit {
-                distance: 0.0,
-                normal: -ray.direction,
-            });
-        }
-        let hit = self.toroid.intersect(&lib)?;
-        let normal = if hit.front_face {
-            hit.normal
-        } else {
-            -hit.normal
-        };
-        Some(RayHit {
-            distance: hit.t,
-            normal: Dir3::new_unchecked(to_bevy(normal)),
-        })
+        // The member is a Solid: its hit is `Toroid::intersect`, its inside test
+        // `Toroid::contains`, so the generic cast is this one.
+        solid_ray_cast(&self.toroid, ray, max_distance, solid)
     }
 
     /// [`BevyTorus::local_ray_cast`] of the torus posed by `iso`: the ray moved into its
