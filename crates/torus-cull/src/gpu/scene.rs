@@ -190,13 +190,10 @@ impl GpuScene {
     ///
     /// [`GpuError::Readback`] where the device's results cannot be read.
     pub fn trace(&self, cull: GpuCull, rays: &[Ray]) -> Result<Vec<SceneAnswer>, GpuError> {
-        let records: Vec<Option<[f32; 8]>> = rays.iter().map(|r| self.bvh.prepare(r)).collect();
-        let records = self.dispatch(cull, Mode::Closest, &records)?;
-        Ok(rays
-            .iter()
-            .zip(records)
-            .map(|(ray, record)| closest(record).unwrap_or_else(|| host(self.bvh.host_trace(ray))))
-            .collect())
+        let records = self.dispatch(cull, Mode::Closest, &self.prepare(rays))?;
+        device_or_host(rays, records, closest, |ray| {
+            Ok(host(self.bvh.host_trace(ray)))
+        })
     }
 
     /// The nearest hit of each secondary ray ([`SpawnedRay`]: spawned on a torus of the
@@ -214,15 +211,10 @@ impl GpuScene {
         cull: GpuCull,
         rays: &[SpawnedRay],
     ) -> Result<Vec<SceneAnswer>, GpuError> {
-        let records = self.prepare_from(rays)?;
-        let records = self.dispatch(cull, Mode::ClosestFrom, &records)?;
-        rays.iter()
-            .zip(records)
-            .map(|(ray, record)| match closest(record) {
-                Some(answer) => Ok(answer),
-                None => Ok(host(self.bvh.host_trace_from(ray)?)),
-            })
-            .collect()
+        let records = self.dispatch(cull, Mode::ClosestFrom, &self.prepare_from(rays)?)?;
+        device_or_host(rays, records, closest, |ray| {
+            Ok(host(self.bvh.host_trace_from(ray)?))
+        })
     }
 
     /// Whether any torus blocks each ray within its range (shadow rays), with `cull` at
@@ -234,18 +226,10 @@ impl GpuScene {
     ///
     /// As [`GpuScene::trace`].
     pub fn occluded(&self, cull: GpuCull, rays: &[Ray]) -> Result<Vec<Occlusion>, GpuError> {
-        let records: Vec<Option<[f32; 8]>> = rays.iter().map(|r| self.bvh.prepare(r)).collect();
-        let records = self.dispatch(cull, Mode::Any, &records)?;
-        Ok(rays
-            .iter()
-            .zip(records)
-            .map(|(ray, record)| {
-                any(record).unwrap_or_else(|| Occlusion {
-                    occluded: self.bvh.host_occluded(ray),
-                    by: Finished::Host,
-                })
-            })
-            .collect())
+        let records = self.dispatch(cull, Mode::Any, &self.prepare(rays))?;
+        device_or_host(rays, records, any, |ray| {
+            Ok(host_occlusion(self.bvh.host_occluded(ray)))
+        })
     }
 
     /// [`GpuScene::occluded`] of secondary rays (shadow rays from a hit): the own torus on
@@ -259,18 +243,15 @@ impl GpuScene {
         cull: GpuCull,
         rays: &[SpawnedRay],
     ) -> Result<Vec<Occlusion>, GpuError> {
-        let records = self.prepare_from(rays)?;
-        let records = self.dispatch(cull, Mode::AnyFrom, &records)?;
-        rays.iter()
-            .zip(records)
-            .map(|(ray, record)| match any(record) {
-                Some(answer) => Ok(answer),
-                None => Ok(Occlusion {
-                    occluded: self.bvh.host_occluded_from(ray)?,
-                    by: Finished::Host,
-                }),
-            })
-            .collect()
+        let records = self.dispatch(cull, Mode::AnyFrom, &self.prepare_from(rays)?)?;
+        device_or_host(rays, records, any, |ray| {
+            Ok(host_occlusion(self.bvh.host_occluded_from(ray)?))
+        })
+    }
+
+    /// Each world ray's kernel record (`None` for a ray the host answers).
+    fn prepare(&self, rays: &[Ray]) -> Vec<Option<[f32; 8]>> {
+        rays.iter().map(|r| self.bvh.prepare(r)).collect()
     }
 
     /// Each spawned ray's kernel record, the error naming the first ray whose torus is not
@@ -431,6 +412,29 @@ fn host(hit: Option<SceneHit>) -> SceneAnswer {
         hit,
         by: Finished::Host,
     }
+}
+
+/// The host's occlusion answer.
+fn host_occlusion(occluded: bool) -> Occlusion {
+    Occlusion {
+        occluded,
+        by: Finished::Host,
+    }
+}
+
+/// Each ray's answer: the device's where its record carries one (`device`: [`closest`]
+/// or [`any`]), else the host's (`host`, whose error stops the whole batch). The four
+/// scene queries differ only in their record, their mode and these two.
+fn device_or_host<R, A>(
+    rays: &[R],
+    records: Vec<Option<[f32; 8]>>,
+    device: fn(Option<[f32; 8]>) -> Option<A>,
+    host: impl Fn(&R) -> Result<A, GpuError>,
+) -> Result<Vec<A>, GpuError> {
+    rays.iter()
+        .zip(records)
+        .map(|(ray, record)| device(record).map_or_else(|| host(ray), Ok))
+        .collect()
 }
 
 /// Who answered a ray the device answered.
