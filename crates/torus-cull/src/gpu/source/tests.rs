@@ -2,6 +2,7 @@
 //! and the `mirrors:` headers of the WGSL files (each named Rust function exists).
 
 use super::*;
+use wgpu::naga::valid::Capabilities;
 
 /// The hexadecimal literal read back (as WGSL reads it) is the same f32.
 fn parse_hex(text: &str) -> f32 {
@@ -88,7 +89,6 @@ fn every_shared_constant_comes_from_rust() {
 /// CPU's constants and with a changed one: no adapter needed.
 #[test]
 fn the_kernel_validates() {
-    use wgpu::naga;
     for constants in [
         KernelConstants::CPU,
         KernelConstants {
@@ -96,14 +96,7 @@ fn the_kernel_validates() {
             ..KernelConstants::CPU
         },
     ] {
-        let module = naga::front::wgsl::parse_str(&constants.source())
-            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&constants.source())));
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::default(),
-        )
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{e:?}"));
+        validate(&constants.source(), Capabilities::default()).unwrap_or_else(|e| panic!("{e}"));
     }
 }
 
@@ -112,19 +105,11 @@ fn the_kernel_validates() {
 /// host decodes with.
 #[test]
 fn the_kernel_is_the_module_plus_its_bindings() {
-    use wgpu::naga;
     let module = wgsl_module();
     let kernel = kernel_source();
     assert!(kernel.starts_with(&module));
     assert!(kernel.contains(KERNEL_BODY));
-    let parsed = naga::front::wgsl::parse_str(&module)
-        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&module)));
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::default(),
-    )
-    .validate(&parsed)
-    .unwrap_or_else(|e| panic!("{e:?}"));
+    let parsed = validate(&module, Capabilities::default()).unwrap_or_else(|e| panic!("{e}"));
     assert_includable(
         &module,
         &parsed,
@@ -209,15 +194,14 @@ fn assert_prefixed(module: &wgpu::naga::Module, at_least: usize) {
     );
 }
 
-fn validate_f64(text: &str) -> Result<wgpu::naga::Module, String> {
+/// `text` parsed and validated as WGSL with `capabilities` (naga, as wgpu does: no
+/// adapter needed), or the parse error as naga prints it, or the validation error.
+fn validate(text: &str, capabilities: Capabilities) -> Result<wgpu::naga::Module, String> {
     use wgpu::naga;
     let module = naga::front::wgsl::parse_str(text).map_err(|e| e.emit_to_string(text))?;
-    naga::valid::Validator::new(
-        naga::valid::ValidationFlags::all(),
-        naga::valid::Capabilities::FLOAT64,
-    )
-    .validate(&module)
-    .map_err(|e| format!("{e:?}"))?;
+    naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
+        .validate(&module)
+        .map_err(|e| format!("{e:?}"))?;
     Ok(module)
 }
 
@@ -231,7 +215,7 @@ fn the_f64_pass_is_the_f64_module_plus_its_bindings() {
     let pass = finish_source();
     assert!(pass.starts_with(&module));
     assert!(pass.ends_with(FINISH_BODY));
-    let parsed = validate_f64(&module).unwrap_or_else(|e| panic!("{e}"));
+    let parsed = validate(&module, Capabilities::FLOAT64).unwrap_or_else(|e| panic!("{e}"));
     assert_includable(
         &module,
         &parsed,
@@ -259,10 +243,10 @@ fn the_f64_pass_is_the_f64_module_plus_its_bindings() {
         format!("{f32_text}\n{module}"),
         format!("{module}\n{f32_text}"),
     ] {
-        let parsed = validate_f64(&both).unwrap_or_else(|e| panic!("{e}"));
+        let parsed = validate(&both, Capabilities::FLOAT64).unwrap_or_else(|e| panic!("{e}"));
         assert_prefixed(&parsed, 100);
     }
-    assert!(validate_f64(&format!("{module}\n{module}")).is_err());
+    assert!(validate(&format!("{module}\n{module}"), Capabilities::FLOAT64).is_err());
 }
 
 /// The one line of `b` that differs from `a`'s (there must be exactly one).
@@ -272,24 +256,6 @@ fn one_changed_line<'b>(a: &str, b: &'b str) -> &'b str {
     differing[0].1
 }
 
-/// Changing a Rust constant changes the kernel's text, in exactly that line.
-#[test]
-fn a_changed_constant_changes_the_kernel() {
-    let cpu = KernelConstants::CPU;
-    let changed = KernelConstants {
-        safety_rel: cpu.safety_rel * 2.0,
-        ..cpu
-    };
-    let (a, b) = (cpu.source(), changed.source());
-    assert_ne!(a, b);
-    assert!(one_changed_line(&a, &b).starts_with("const TC_SAFETY_REL: f32 = 0x1.000000p-11f;"));
-    let seed = KernelConstants {
-        cbrt_seed: cpu.cbrt_seed + 1,
-        ..cpu
-    };
-    assert_ne!(seed.source(), a);
-    assert_eq!(kernel_source(), a);
-}
 /// The f64 finish pass parses and validates as WGSL with naga's `FLOAT64` capability
 /// (what `SHADER_F64` enables), with the CPU's constants and with a changed one, and
 /// every threshold is the Rust value, to the bit.
@@ -304,15 +270,8 @@ fn the_f64_finish_pass_validates_and_takes_its_constants_from_rust() {
             ..cpu
         },
     ] {
-        let text = constants.source();
-        let module = naga::front::wgsl::parse_str(&text)
-            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&text)));
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::FLOAT64,
-        )
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{e:?}"));
+        let module =
+            validate(&constants.source(), Capabilities::FLOAT64).unwrap_or_else(|e| panic!("{e}"));
         assert!(module.entry_points.iter().any(|e| e.name == "finish_main"));
         // naga reads every f64 literal as Rust does: its constant table holds the
         // header's values to the bit.
@@ -364,20 +323,43 @@ fn the_f64_finish_pass_validates_and_takes_its_constants_from_rust() {
     assert_no_hand_written_constant([FINISH_MODULE_BODY, FINISH_BODY]);
 }
 
-/// Changing a Rust constant of the f64 path changes the f64 pass, in exactly that line.
+/// Changing a Rust constant changes the text in exactly that line, for the f32 kernel and
+/// for the f64 pass; the CPU's constants are the text that ships. The kernel's cube-root
+/// seed, an integer, is one of its constants too.
 #[test]
-fn a_changed_constant_changes_the_f64_pass() {
-    let cpu = FinishConstants::CPU;
-    let changed = FinishConstants {
-        near_double: cpu.near_double * 2.0,
-        ..cpu
+fn a_changed_constant_changes_exactly_its_line() {
+    let (kernel, finish) = (KernelConstants::CPU, FinishConstants::CPU);
+    let doubled_safety = KernelConstants {
+        safety_rel: kernel.safety_rel * 2.0,
+        ..kernel
     };
-    let (a, b) = (cpu.source(), changed.source());
-    assert_eq!(
-        one_changed_line(&a, &b),
-        "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;"
-    );
-    assert_eq!(finish_source(), a);
+    let doubled_near_double = FinishConstants {
+        near_double: finish.near_double * 2.0,
+        ..finish
+    };
+    // (the text that ships, the CPU's constants', one constant doubled, its new line)
+    for (shipped, cpu, changed, line) in [
+        (
+            kernel_source(),
+            kernel.source(),
+            doubled_safety.source(),
+            "const TC_SAFETY_REL: f32 = 0x1.000000p-11f; // 4.8828125e-4",
+        ),
+        (
+            finish_source(),
+            finish.source(),
+            doubled_near_double.source(),
+            "const TC_FIN_NEAR_DOUBLE: f64 = 2e-7lf;",
+        ),
+    ] {
+        assert_eq!(one_changed_line(&cpu, &changed), line);
+        assert_eq!(shipped, cpu);
+    }
+    let seed = KernelConstants {
+        cbrt_seed: kernel.cbrt_seed + 1,
+        ..kernel
+    };
+    assert_ne!(seed.source(), kernel.source());
 }
 
 /// The WGSL files of both modules and of the library's two entry points, each with its
