@@ -115,25 +115,33 @@ pub(crate) mod sealed {
     impl<P: Precision> FromExact for Hit<P> {
         #[inline(always)]
         fn from_exact(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Hit<P>> {
-            let t_p = <P::Float as Scalar>::from_f64(t);
-            t_p.finite().then(|| Hit {
-                t: t_p,
-                normal: P::from_dvec3(normal),
-                point: P::from_dvec3(origin + dir * t),
-                front_face: dir.dot(normal) < 0.0,
-            })
+            rounded(t, normal, |_| origin + dir * t, dir.dot(normal) < 0.0)
         }
 
         #[inline(always)]
         fn from_proved(t: f64, normal: DVec3, origin: DVec3, dir: DVec3) -> Option<Hit<P>> {
-            let t_p = <P::Float as Scalar>::from_f64(t);
-            t_p.finite().then(|| Hit {
-                t: t_p,
-                normal: P::from_dvec3(normal),
-                point: P::from_dvec3(origin + dir * t_p.to_f64()),
-                front_face: true,
-            })
+            rounded(t, normal, |t_p| origin + dir * t_p, true)
         }
+    }
+
+    /// The hit at `t` rounded to the ray's float (`None` when it does not fit), with the
+    /// normal and `point(t rounded, back in f64)` rounded too. The two ways of making a
+    /// hit differ only in the point (at the exact `t`, or at the rounded `t` the proof
+    /// is about) and in how `front_face` is known.
+    #[inline(always)]
+    fn rounded<P: Precision>(
+        t: f64,
+        normal: DVec3,
+        point: impl FnOnce(f64) -> DVec3,
+        front_face: bool,
+    ) -> Option<Hit<P>> {
+        let t_p = <P::Float as Scalar>::from_f64(t);
+        t_p.finite().then(|| Hit {
+            t: t_p,
+            normal: P::from_dvec3(normal),
+            point: P::from_dvec3(point(t_p.to_f64())),
+            front_face,
+        })
     }
 
     pub trait Sealed {
