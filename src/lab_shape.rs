@@ -58,6 +58,27 @@ pub trait LabShape: Sync {
     }
 }
 
+/// The oracle's labels of `rays` ([`LabShape::label`]); an error names `what` and the
+/// ray's index counted from `first`.
+///
+/// # Errors
+///
+/// The first ray the oracle cannot answer.
+pub fn labels<S: LabShape>(
+    shape: &S,
+    rays: &[DRay],
+    (what, first): (&str, usize),
+) -> Result<Vec<OracleLabel>, String> {
+    rays.iter()
+        .enumerate()
+        .map(|(i, ray)| {
+            shape
+                .label(ray)
+                .map_err(|e| format!("{what}, ray {}: {e}", first + i))
+        })
+        .collect()
+}
+
 /// One column of cull verdicts: a cull, alone or behind the shape's guard.
 #[derive(Debug, Clone)]
 pub struct Form {

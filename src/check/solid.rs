@@ -8,7 +8,7 @@ use super::record::{AnswerRecord, ClassRecord, CullRecord, KindRecord};
 use super::{About, CheckShape, Job};
 use crate::lab_shape::{self, LabShape};
 use crate::measure::CountedCull;
-use crate::oracle::{OracleClass, OracleLabel};
+use crate::oracle::OracleClass;
 use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use torus_cull::{Cull, CullKind, DRay, Solid};
@@ -85,15 +85,7 @@ where
         let rays: Vec<DRay> = (0..job.rays)
             .map(|i| (self.draw)(shape, i, &mut rng))
             .collect();
-        let labels = rays
-            .iter()
-            .enumerate()
-            .map(|(i, ray)| {
-                shape
-                    .label(ray)
-                    .map_err(|e| format!("{name}, ray {i}: {e}"))
-            })
-            .collect::<Result<Vec<OracleLabel>, String>>()?;
+        let labels = lab_shape::labels(shape, &rays, (name, 0))?;
         let mut kinds = KindRecord::zeroed(["drawn"]);
         for l in &labels {
             kinds[0].count(l.class);

@@ -154,16 +154,14 @@ impl Tally {
     }
 }
 
-/// A member's parameters as its records carry them.
+/// A member's parameters as its records carry them ([`ShapeRecord`]'s fields of the same
+/// names): `shape` (`ring`, `elliptic`, `horn`, `spindle`, `bend`, or a test's own),
+/// `aspect` b/a, `bore` r_min/r_max, `segment_deg` Δφ in degrees.
 #[derive(Debug, Clone, Default)]
 pub struct Params {
-    /// `ring`, `elliptic`, `horn`, `spindle`, `bend`, or a test's own shape.
     pub shape: String,
-    /// b/a.
     pub aspect: Option<f64>,
-    /// r_min/r_max.
     pub bore: Option<f64>,
-    /// Δφ in degrees.
     pub segment_deg: Option<f64>,
 }
 
@@ -279,15 +277,7 @@ pub fn sweep_shape<S: LabShape>(
     culls: &[CountedCull],
     (member, nu, params): (&Member, f64, Params),
 ) -> Result<Unit, String> {
-    let labels = rays
-        .iter()
-        .enumerate()
-        .map(|(i, ray)| {
-            shape
-                .label(ray)
-                .map_err(|e| format!("{}, ray {}: {e}", member.label, member.first + i))
-        })
-        .collect::<Result<Vec<OracleLabel>, String>>()?;
+    let labels = lab_shape::labels(shape, rays, (&member.label, member.first))?;
     let forms = lab_shape::forms(shape, culls);
     let mut tally = Tally::new(forms.len());
     tally.label(&labels);
