@@ -1,12 +1,12 @@
 //! What the lab asks of a shape beyond the library's [`Solid`]: its oracle, the culls it
-//! accepts, and the guard it may put in front of every cull (a pipe bend's wedge). The
+//! accepts, and the guard it may put in front of every cull (a segment's wedge). The
 //! lab's cull columns (`eval`), `run`'s shape sweep and the check's cull counts are
 //! written once against it ([`forms`], [`Form::kept`]); each shape's impl lives in its own
 //! folder (`check/shapes/<shape>/`), and a test's shape implements it in the test.
 //!
 //! **Why a trait of its own, over an associated [`Solid`].** The library's shapes answer
 //! the geometry; the oracle that judges them is the lab's, and a shape's oracle may need
-//! more than the library keeps (a posed bend's φ = 0 direction). So a lab shape *has* a
+//! more than the library keeps (a posed segment's φ = 0 direction). So a lab shape *has* a
 //! solid ([`LabShape::solid`]) rather than being one, and a wrapper carries the rest.
 //!
 //! **Monomorphic.** A form's verdicts over a batch of rays go through
@@ -33,7 +33,7 @@ pub trait LabShape: Sync {
     fn label(&self, ray: &DRay) -> Result<OracleLabel, String>;
 
     /// The shape's size, the unit of its margins (R + r for a torus, R + max(a, b) for
-    /// a family member, R + r_max for a bend).
+    /// a family member, R + r_max for a tube with a bore).
     fn size(&self) -> f64;
 
     /// Whether `cull` is proved conservative for this shape; a declined cull keeps every
@@ -43,8 +43,8 @@ pub trait LabShape: Sync {
         true
     }
 
-    /// The name of the shape's own test in front of every cull (`wedge` for a cut pipe
-    /// bend), or `None`.
+    /// The name of the shape's own test in front of every cull (`wedge` for a segment of
+    /// a torus), or `None`.
     fn guard(&self) -> Option<&'static str> {
         None
     }

@@ -27,7 +27,7 @@ pub fn count_culls<S: Solid, C: Cull>(
     }
 }
 
-/// The culls' margin η = `ETA_REL`·size, as the family's and the bend's checks take it;
+/// The culls' margin η = `ETA_REL`·size, as the library's shapes' checks take it;
 /// a miss counts for the capture when its margin exceeds `CAPTURE_ETAS`·η.
 pub const ETA_REL: f64 = 1.0 / 4096.0;
 
