@@ -159,10 +159,21 @@ impl Tally {
 /// `aspect` b/a, `bore` r_min/r_max, `segment_deg` Δφ in degrees.
 #[derive(Debug, Clone, Default)]
 pub struct Params {
-    pub shape: String,
-    pub aspect: Option<f64>,
-    pub bore: Option<f64>,
-    pub segment_deg: Option<f64>,
+    shape: String,
+    aspect: Option<f64>,
+    bore: Option<f64>,
+    segment_deg: Option<f64>,
+}
+
+impl Params {
+    /// A shape's name with none of the family's and the bends' parameters (a shape of
+    /// another kind, a test's own).
+    pub fn named(shape: &str) -> Params {
+        Params {
+            shape: shape.into(),
+            ..Params::default()
+        }
+    }
 }
 
 /// Rays of every member of `spec`: what the progress bar counts.

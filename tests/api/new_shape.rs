@@ -317,10 +317,7 @@ fn a_new_shape_runs_through_the_shape_sweep_with_no_false_reject() {
             pose: format!("{ball:?}"),
             first: 0,
         };
-        let params = Params {
-            shape: "ball".into(),
-            ..Params::default()
-        };
+        let params = Params::named("ball");
         let unit = shape_sweep::sweep_shape(ball, &rays, &timed(), (&member, 4.0, params))
             .expect("the ball's oracle labels every literal ray");
         assert!(unit.false_rejects.is_empty(), "{:?}", unit.false_rejects);
