@@ -24,6 +24,7 @@ pub mod compare;
 pub mod errata;
 pub mod eval;
 pub mod family_label;
+pub mod lab_shape;
 pub mod measure;
 pub mod named;
 pub mod number;

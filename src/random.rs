@@ -16,15 +16,27 @@ pub fn unit_vector(rng: &mut impl Rng) -> DVec3 {
 /// when it lies in the unit ball and |v|² > `floor` (shorter ones are redrawn: their
 /// direction is mostly rounding). A check's rays depend on its `floor`: keep it.
 pub fn ball_direction(rng: &mut impl Rng, floor: f64) -> DVec3 {
+    let v = ball_point(rng, floor);
+    v / v.length_squared().sqrt()
+}
+
+/// [`ball_direction`]'s point before it is made unit: in the unit ball, |v|² > `floor`
+/// (a caller that takes any length, the same stream).
+pub fn ball_point(rng: &mut impl Rng, floor: f64) -> DVec3 {
     loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
+        let v = cube_point(rng, 1.0);
         let l2 = v.length_squared();
         if l2 > floor && l2 <= 1.0 {
-            return v / l2.sqrt();
+            return v;
         }
     }
+}
+
+/// A point uniform in the cube [-`half`, `half`]³ (x, y, z drawn in turn).
+pub fn cube_point(rng: &mut impl Rng, half: f64) -> DVec3 {
+    DVec3::new(
+        rng.random_range(-half..half),
+        rng.random_range(-half..half),
+        rng.random_range(-half..half),
+    )
 }

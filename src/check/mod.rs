@@ -11,6 +11,7 @@
 
 pub mod record;
 pub mod shapes;
+pub mod solid;
 pub mod table;
 
 use record::{CheckFile, ClassRecord, SCHEMA_VERSION, TOOL};

@@ -57,6 +57,7 @@
 //! an error naming the input, the line number and the column, and the command exits
 //! non-zero: no answer is ever silently wrong or skipped.
 
+mod shape;
 mod target;
 
 use crate::number::{Echo, Num};
@@ -67,6 +68,7 @@ use std::io::{BufRead, Write};
 use torus_cull::family::ToroidError;
 use torus_cull::{DRay, Ray, Torus, TorusError};
 
+pub use shape::{EvalShape, form_keeps, guard_columns};
 pub use target::{BendFlags, Target, size};
 
 /// The input header's six required columns.
@@ -237,13 +239,26 @@ pub fn eval_target_csv(
     precision: Precision,
     input: impl BufRead,
     input_name: &str,
+    output: impl Write,
+) -> Result<usize, EvalError> {
+    eval_shape_csv(&target, precision, input, input_name, output)
+}
+
+/// [`eval_csv`] for any [`EvalShape`]: a [`Target`] of the flags, or any lab shape
+/// ([`crate::lab_shape::LabShape`]: a test's own shape answers its rows through the same
+/// path, its cull columns from the interface's `kept_by`).
+///
+/// # Errors
+///
+/// A mode the shape refuses, a malformed row (named by input and line), an i/o error.
+pub fn eval_shape_csv<T: EvalShape>(
+    target: &T,
+    precision: Precision,
+    input: impl BufRead,
+    input_name: &str,
     mut output: impl Write,
 ) -> Result<usize, EvalError> {
-    match precision {
-        Precision::CertifiedF32 => target.check_certified_f32()?,
-        Precision::CertifiedGpu => _ = target.as_torus("--exact gpu")?,
-        _ => {}
-    }
+    target.check_mode(precision)?;
     let row_error = |line: usize, message: String| EvalError::Row {
         input: input_name.to_string(),
         line,
@@ -265,7 +280,7 @@ pub fn eval_target_csv(
     let header = lines.next().transpose().map_err(|e| not_text(1, e))?;
     let columns = check_header(header, &row_error)?;
     let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
-        let (lines, answers) = read_for_gpu(&target, &columns, lines, &row_error)?;
+        let (lines, answers) = read_for_gpu(target, &columns, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
             answers.into_iter(),
@@ -277,11 +292,11 @@ pub fn eval_target_csv(
         )
     };
     // A bend's rows end with the wedge's columns (`--exact gpu` refused it above).
-    let wedge = if target.is_bend() {
-        format!(",{}", bend_wedge_columns().join(","))
-    } else {
-        String::new()
-    };
+    let wedge: String = target
+        .guard_columns()
+        .iter()
+        .map(|c| format!(",{c}"))
+        .collect();
     if precision == Precision::CertifiedGpu {
         writeln!(output, "{}", gpu_output_header())?;
     } else if precision == Precision::CertifiedF32 {
@@ -300,7 +315,7 @@ pub fn eval_target_csv(
         if line.trim().is_empty() {
             continue;
         }
-        let row = evaluate(&target, &columns, precision, &line, &mut gpu_answers)
+        let row = evaluate(target, &columns, precision, &line, &mut gpu_answers)
             .map_err(|m| row_error(line_no, m))?;
         write_row(&mut output, index, &row)?;
         index += 1;
@@ -372,8 +387,8 @@ impl Columns {
 
 /// The GPU answers every row at once: all rows are read first (a malformed row still
 /// stops the run with its line number, before the adapter is opened).
-fn read_for_gpu(
-    target: &Target,
+fn read_for_gpu<T: EvalShape>(
+    target: &T,
     columns: &Columns,
     lines: impl Iterator<Item = std::io::Result<String>>,
     row_error: &impl Fn(usize, String) -> EvalError,
@@ -386,7 +401,7 @@ fn read_for_gpu(
             rays.push(parse_ray(target, columns, line).map_err(|m| row_error(i + 2, m))?);
         }
     }
-    let answers = gpu_answers(target.as_torus("--exact gpu")?, &rays)?;
+    let answers = gpu_answers(target.gpu_torus()?, &rays)?;
     Ok((lines, answers))
 }
 
@@ -413,8 +428,8 @@ struct Row {
 }
 
 /// Parses one row in the given precision and answers it.
-fn evaluate(
-    target: &Target,
+fn evaluate<T: EvalShape>(
+    target: &T,
     columns: &Columns,
     precision: Precision,
     line: &str,
@@ -424,7 +439,7 @@ fn evaluate(
         let ray = parse_dray(target, columns, line)?;
         return Ok(Row {
             label: target.oracle(&ray)?,
-            t_hit: target.t_hit(&ray).map(|t| Num(t).to_string()),
+            t_hit: target.t_hit_f64(&ray).map(|t| Num(t).to_string()),
             escalated: None,
             finished: None,
             keeps: target.keeps(&ray),
@@ -446,7 +461,7 @@ fn evaluate(
                 Some(answer.keeps),
             )
         }
-        _ => (target.t_hit(&ray), None, None, None),
+        _ => (target.t_hit_f32(&ray), None, None, None),
     };
     Ok(Row {
         label: target.oracle(&DRay::from(ray))?,
@@ -696,7 +711,7 @@ fn as_typed(e: impl fmt::Display, fields: &[&str]) -> String {
     )
 }
 
-fn parse_ray(target: &Target, columns: &Columns, line: &str) -> Result<Ray, String> {
+fn parse_ray<T: EvalShape>(target: &T, columns: &Columns, line: &str) -> Result<Ray, String> {
     let f = parse_row::<f32>(columns, line)?;
     let v = f.six;
     let (o, d) = (Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]));
@@ -709,7 +724,7 @@ fn parse_ray(target: &Target, columns: &Columns, line: &str) -> Result<Ray, Stri
     .map_err(|e| as_typed(e, &f.typed))
 }
 
-fn parse_dray(target: &Target, columns: &Columns, line: &str) -> Result<DRay, String> {
+fn parse_dray<T: EvalShape>(target: &T, columns: &Columns, line: &str) -> Result<DRay, String> {
     let f = parse_row::<f64>(columns, line)?;
     let v = f.six;
     let (o, d) = (DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5]));

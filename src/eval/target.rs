@@ -7,37 +7,41 @@
 //! member is answered by [`Toroid::intersect`] (f64 and f32 rays), its culls by
 //! [`Toroid::kept_by`] (a cull that does not accept its shape keeps every ray), its
 //! oracle column by the family oracle ([`crate::family_label`]), and its `on_surface`
-//! origins are checked against its own surface (the family oracle's nearest point). The certified f32 path and the GPU take a [`Torus`]: a family
-//! member is refused there ([`Toroid::as_torus`]), the error naming the mode and the shape.
+//! origins are checked against its own surface (the family oracle's nearest point). The
+//! certified f32 path and the GPU take a [`Torus`]: a family member is refused there ([`Toroid::as_torus`]), the error naming the mode and the shape.
 //!
 //! **The pipe bend** (`--bore r_min`, `--phi-start φ₀`, `--delta-phi Δφ`): the solid of
 //! [`PipeBend::canonical`] (centre 0, axis +y, φ = 0 along +x), answered by
 //! [`PipeBend::intersect`] (its nearest crossing of any face), its culls by
 //! [`PipeBend::kept_by`] (the torus cull on the outer torus, a whole-line test), its
-//! oracle column by the bend oracle ([`BendQuery`], the on-surface rule for `on_surface`
-//! rows), and an `on_surface` origin must lie within [`ON_SURFACE_REL`]·(R + r_max) of a
-//! face; `--exact f32` answers it by [`PipeBend::intersect_f32`] (its misses of the outer
+//! oracle column by the bend oracle ([`crate::oracle::bend::BendQuery`], the on-surface rule for `on_surface`
+//! rows), and an `on_surface` origin must lie within [`torus_cull::ON_SURFACE_REL`]·(R +
+//! r_max) of a face; `--exact f32` answers it by [`PipeBend::intersect_f32`] (its misses of the outer
 //! torus proved in f32, the rest escalated). A whole bend (no bore, Δφ = 2π) is the ring
 //! torus, answered as without the flags.
 //!
-//! **Through the shape interface** where it has the verb: the nearest `t` in either
-//! precision ([`torus_cull::RayCast`], every shape's), the certified f32 answer
-//! ([`Solid::hit_f32_certified`]) and the distance of an `on_surface` origin
-//! ([`Solid::signed_distance`], the ring torus's and the bend's). What stays per shape,
+//! **Through the shape interfaces**: the nearest `t` in either precision
+//! ([`torus_cull::RayCast`], every shape's), the certified f32 answer
+//! ([`Solid::hit_f32_certified`]), the distance of an `on_surface` origin
+//! ([`Solid::signed_distance`], the ring torus's and the bend's), the oracle column (each
+//! shape's [`LabShape::label`]) and the cull columns ([`form_keeps`]: the interface's
+//! `kept_by` per cull form, a bend's wedge forms after the culls). What stays per shape,
 //! explicitly: the construction from the flags and their errors, the refusals of the
-//! certified and GPU paths, the oracle (one per shape), the family member's on-surface
-//! rule (its oracle's nearest point: the interface refuses an elliptical horn's
-//! distance), and the cull columns: the interface has no cull verb (its `Culled` answers
-//! cull-and-hit, not the verdict), and a bend's row adds the wedge's columns.
+//! certified and GPU paths, and the family member's on-surface rule (its oracle's nearest
+//! point: the interface refuses an elliptical horn's distance). [`super::EvalShape`] is
+//! what `eval` asks; any [`LabShape`] answers it as well as a `Target`.
 
 use super::EvalError;
+use super::shape::{EvalShape, form_keeps, guard_columns, on_surface_bound};
+use crate::check::shapes::bend::PosedBend;
+use crate::check::shapes::bend::rays::Spec;
+use crate::lab_shape::LabShape;
 use crate::number::Num;
-use crate::oracle::bend::BendQuery;
-use crate::oracle::{OracleLabel, Query, classify_from_surface};
+use crate::oracle::OracleLabel;
 use glam::{DVec3, Vec3};
 use torus_cull::bend::PipeBend;
 use torus_cull::family::{Toroid, ToroidError};
-use torus_cull::{CullKind, DRay, ON_SURFACE_REL, Precision, Ray, RayCast, Solid, Torus};
+use torus_cull::{DRay, Precision, Ray, RayCast, Solid, Torus};
 
 /// The torus `eval` answers for.
 #[derive(Debug, Clone)]
@@ -46,8 +50,9 @@ pub enum Target {
     Ring(Torus),
     /// Any other member of the family.
     Family(Toroid),
-    /// A pipe bend with a bore or a φ segment (boxed: it holds two tori).
-    Bend(Box<PipeBend>),
+    /// A pipe bend with a bore or a φ segment, with the parameters its oracle takes
+    /// (boxed: it holds two tori).
+    Bend(Box<PosedBend>),
 }
 
 /// `--bore`, `--phi-start`, `--delta-phi` as given (each `None` when absent).
@@ -94,7 +99,14 @@ impl Target {
                 ))
             })?;
             if bend.as_torus().is_err() {
-                return Ok(Target::Bend(Box::new(bend)));
+                let spec = Spec::canonical(
+                    bend.major_radius_f64(),
+                    bend.bore_radius_f64(),
+                    bend.tube_radius_f64(),
+                    bend.start_phi(),
+                    bend.delta_phi(),
+                );
+                return Ok(Target::Bend(Box::new(PosedBend { spec, bend })));
             }
         }
         let circular = axial.is_none_or(|b| b == minor);
@@ -124,14 +136,14 @@ impl Target {
                     toroid.axial_semi_axis_f64()
                 ),
             }),
-            Target::Bend(bend) => Err(EvalError::Mode {
+            Target::Bend(posed) => Err(EvalError::Mode {
                 mode,
                 message: format!(
                     "a pipe bend (R = {}, r_min = {}, r_max = {}, Δφ = {}): {}; use --exact f64",
-                    bend.major_radius_f64(),
-                    bend.bore_radius_f64(),
-                    bend.tube_radius_f64(),
-                    bend.delta_phi(),
+                    posed.bend.major_radius_f64(),
+                    posed.bend.bore_radius_f64(),
+                    posed.bend.tube_radius_f64(),
+                    posed.bend.delta_phi(),
                     torus_cull::bend::BendError::NotWhole
                 ),
             }),
@@ -153,33 +165,19 @@ impl Target {
     /// [`Target::check_certified_f32`]: its certified answer proves nothing in f32.
     pub fn certified_f32(&self, ray: &Ray) -> Result<(Option<f32>, bool), EvalError> {
         Ok(match self {
-            Target::Bend(bend) => certified(bend.as_ref(), ray),
+            Target::Bend(posed) => certified(&posed.bend, ray),
             _ => certified(self.as_torus("--exact f32")?, ray),
         })
     }
 
     /// The oracle's label of the ray over its range: the literal ray's, or by the
-    /// on-surface rule. A line the oracle cannot answer is an error for its row.
+    /// on-surface rule ([`LabShape::label`] of each shape). A line the oracle cannot
+    /// answer is an error for its row.
     pub fn oracle(&self, ray: &DRay) -> Result<OracleLabel, String> {
         match self {
-            Target::Ring(torus) => {
-                let query = Query::dray(torus, ray);
-                query.check_reach()?;
-                Ok(if ray.starts_on_surface() {
-                    classify_from_surface(&query)
-                } else {
-                    query.classify()
-                })
-            }
-            Target::Family(toroid) => crate::family_label::label(toroid, ray),
-            Target::Bend(bend) => {
-                let query = bend_query(bend, ray);
-                Ok(if ray.starts_on_surface() {
-                    query.classify_from_surface()
-                } else {
-                    query.classify()
-                })
-            }
+            Target::Ring(torus) => torus.label(ray),
+            Target::Family(toroid) => toroid.label(ray),
+            Target::Bend(posed) => posed.label(ray),
         }
     }
 
@@ -198,56 +196,32 @@ impl Target {
         match self {
             Target::Ring(torus) => torus,
             Target::Family(toroid) => toroid,
-            Target::Bend(bend) => bend.as_ref(),
+            Target::Bend(posed) => &posed.bend,
         }
     }
 
-    /// Each of [`CullKind::TIMED`]'s verdicts on the ray (true keeps), in that order; for a
-    /// pipe bend then the wedge's, alone and behind each cull but `none`.
+    /// Each of [`torus_cull::CullKind::TIMED`]'s verdicts on the ray (true keeps), in that order; for a
+    /// pipe bend then the wedge's, alone and behind each cull but `none`
+    /// ([`super::bend_wedge_columns`]), as `bend` and `time` price them: every shape's
+    /// through the interface's [`torus_cull::Solid::kept_by`] ([`form_keeps`]).
     pub fn keeps<P: Precision>(&self, ray: &Ray<P>) -> Vec<bool> {
         match self {
-            Target::Ring(torus) => {
-                // The culls' own input: far origins go to the foot point, as in a renderer.
-                let line = torus.line_to_local(ray);
-                CullKind::TIMED
-                    .iter()
-                    .map(|cull| cull.keeps(torus.bounds(), line.origin, line.dir))
-                    .collect()
-            }
-            Target::Family(toroid) => CullKind::TIMED
-                .iter()
-                .map(|cull| toroid.kept_by(cull, ray))
-                .collect(),
-            Target::Bend(bend) => {
-                // Each cull on the outer torus, then the wedge alone and behind each cull
-                // but `none` ([`super::bend_wedge_columns`]), as `bend` and `time` price them.
-                let alone = CullKind::TIMED.iter().map(|cull| bend.kept_by(cull, ray));
-                let wedged = CullKind::TIMED
-                    .iter()
-                    .map(|&cull| bend.kept_by(&bend.wedge_cull(cull), ray));
-                alone.chain(wedged).collect()
-            }
+            Target::Ring(torus) => form_keeps(torus, ray),
+            Target::Family(toroid) => form_keeps(toroid, ray),
+            Target::Bend(posed) => form_keeps(posed.as_ref(), ray),
         }
-    }
-
-    /// Whether the rows are a pipe bend's, with the wedge columns.
-    pub fn is_bend(&self) -> bool {
-        matches!(self, Target::Bend(_))
     }
 
     /// An `on_surface` row's origin must be a surface point: within
-    /// [`ON_SURFACE_REL`]·(R + r) of the ring torus's surface, or
-    /// [`ON_SURFACE_REL`]·(R + max(a, b)) of a family member's (docs/math.md §9).
+    /// [`torus_cull::ON_SURFACE_REL`]·(R + r) of the ring torus's surface, or
+    /// [`torus_cull::ON_SURFACE_REL`]·(R + max(a, b)) of a family member's (docs/math.md §9).
     pub fn check_on_surface(&self, origin: DVec3) -> Result<(), String> {
-        let (off, bound, size) = match self {
-            Target::Ring(torus) => {
-                let size = torus.major_radius_f64() + torus.minor_radius_f64();
-                (
-                    surface_off(torus, origin)?,
-                    ON_SURFACE_REL * size,
-                    "(R + r)",
-                )
-            }
+        match self {
+            Target::Ring(torus) => on_surface_bound(
+                surface_off(torus, origin)?,
+                torus.major_radius_f64() + torus.minor_radius_f64(),
+                "(R + r)",
+            ),
             Target::Family(toroid) => {
                 // The family oracle's own nearest surface point, and (E − 1)·min(a, b) for
                 // a point it leaves where it is (on the axis, at a cusp): the interface's
@@ -258,25 +232,61 @@ impl Target {
                 );
                 let moved = (query.on_surface().origin - origin).length();
                 let off = moved.max(query.g(0.0).abs());
-                (off, ON_SURFACE_REL * size(toroid), "(R + max(a, b))")
+                on_surface_bound(off, size(toroid), "(R + max(a, b))")
             }
-            Target::Bend(bend) => {
-                let size = bend.major_radius_f64() + bend.tube_radius_f64();
-                (
-                    surface_off(bend.as_ref(), origin)?,
-                    ON_SURFACE_REL * size,
-                    "(R + r_max)",
-                )
-            }
-        };
-        if off > bound {
-            return Err(format!(
-                "column on_surface: 1, but the origin is {off:.3e} from the surface (allowed: ≤ \
-                 {ON_SURFACE_REL:e}·{size} = {bound:e}, docs/math.md §9): not a surface point; \
-                 give 0 for a literal ray"
-            ));
+            Target::Bend(posed) => on_surface_bound(
+                surface_off(&posed.bend, origin)?,
+                posed.size(),
+                "(R + r_max)",
+            ),
         }
-        Ok(())
+    }
+}
+
+/// `eval`'s questions of the flags' shapes: the methods above, the GPU's and the
+/// certified path's refusals named per shape.
+impl EvalShape for Target {
+    fn check_mode(&self, precision: super::Precision) -> Result<(), EvalError> {
+        match precision {
+            super::Precision::CertifiedF32 => self.check_certified_f32(),
+            super::Precision::CertifiedGpu => self.as_torus("--exact gpu").map(|_| ()),
+            _ => Ok(()),
+        }
+    }
+
+    fn gpu_torus(&self) -> Result<&Torus, EvalError> {
+        self.as_torus("--exact gpu")
+    }
+
+    fn oracle(&self, ray: &DRay) -> Result<OracleLabel, String> {
+        Target::oracle(self, ray)
+    }
+
+    fn t_hit_f32(&self, ray: &Ray) -> Option<f32> {
+        self.t_hit(ray)
+    }
+
+    fn t_hit_f64(&self, ray: &DRay) -> Option<f64> {
+        self.t_hit(ray)
+    }
+
+    fn certified_f32(&self, ray: &Ray) -> Result<(Option<f32>, bool), EvalError> {
+        Target::certified_f32(self, ray)
+    }
+
+    fn keeps<P: Precision>(&self, ray: &Ray<P>) -> Vec<bool> {
+        Target::keeps(self, ray)
+    }
+
+    fn guard_columns(&self) -> Vec<String> {
+        match self {
+            Target::Bend(posed) => guard_columns(posed.as_ref()),
+            _ => Vec::new(),
+        }
+    }
+
+    fn check_on_surface(&self, origin: DVec3) -> Result<(), String> {
+        Target::check_on_surface(self, origin)
     }
 }
 
@@ -293,22 +303,6 @@ fn surface_off<S: Solid>(shape: &S, origin: DVec3) -> Result<f64, String> {
         .signed_distance(origin)
         .map_err(|e| e.to_string())?
         .abs())
-}
-
-/// The bend oracle's question for `ray` against `bend` (its canonical frame).
-fn bend_query(bend: &PipeBend, ray: &DRay) -> BendQuery {
-    BendQuery::new(
-        (DVec3::ZERO, DVec3::Y, DVec3::X),
-        (
-            bend.major_radius_f64(),
-            bend.bore_radius_f64(),
-            bend.tube_radius_f64(),
-        ),
-        (bend.start_phi(), bend.delta_phi()),
-        ray.origin(),
-        ray.dir(),
-        (ray.t_min(), ray.t_max()),
-    )
 }
 
 /// A bend's error with the flags that gave the values (R, r_min and r_max as the bend

@@ -73,31 +73,40 @@ pub enum Face {
     EndCap,
 }
 
-/// One question to the bend oracle: the line `origin + t dir`, `t ∈ [t_min, t_max]` (either
-/// end may be infinite), against the bend with centre `center`, axis `axis`, φ = 0 along
-/// `phi_zero` (its part across the axis), R = `major`, r_min = `bore` (0: none), r_max =
-/// `tube`, segment `[start_phi, start_phi + delta_phi]`; all f64, world frame.
-///
-/// Methods panic on a zero or non-finite direction or axis, `phi_zero` along the axis,
-/// radii not `0 ≤ bore < tube`, R > 0, Δφ not in (0, 2π], or a bad range.
+/// A pipe bend in the world, f64: centre `center`, axis `axis`, φ = 0 along `phi_zero`
+/// (its part across the axis), R = `major`, r_min = `bore` (0: none), r_max = `tube`,
+/// segment `[start, start + delta]` (the library's argument order). The bend part of a
+/// [`BendQuery`], and the check's bend (`check::shapes::bend::rays`).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BendQuery {
-    /// The bend's centre.
+pub struct Spec {
+    /// The centre.
     pub center: DVec3,
-    /// Its axis (any length).
+    /// The axis (any length).
     pub axis: DVec3,
     /// The direction of φ = 0 (its part across the axis).
     pub phi_zero: DVec3,
     /// R.
     pub major: f64,
-    /// r_min (0 for a solid tube).
+    /// r_min (0: no bore).
     pub bore: f64,
     /// r_max.
     pub tube: f64,
     /// φ₀.
-    pub start_phi: f64,
+    pub start: f64,
     /// Δφ.
-    pub delta_phi: f64,
+    pub delta: f64,
+}
+
+/// One question to the bend oracle: the line `origin + t dir`, `t ∈ [t_min, t_max]` (either
+/// end may be infinite), against the bend `bend`; all f64, world frame. The bend's
+/// parameters read through it (`query.major`: [`std::ops::Deref`] to [`Spec`]).
+///
+/// Methods panic on a zero or non-finite direction or axis, `phi_zero` along the axis,
+/// radii not `0 ≤ bore < tube`, R > 0, Δφ not in (0, 2π], or a bad range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BendQuery {
+    /// The bend.
+    pub bend: Spec,
     /// The line's origin.
     pub origin: DVec3,
     /// The line's direction.
@@ -106,6 +115,19 @@ pub struct BendQuery {
     pub t_min: f64,
     /// The range's end.
     pub t_max: f64,
+}
+
+impl std::ops::Deref for BendQuery {
+    type Target = Spec;
+    fn deref(&self) -> &Spec {
+        &self.bend
+    }
+}
+
+impl std::ops::DerefMut for BendQuery {
+    fn deref_mut(&mut self) -> &mut Spec {
+        &mut self.bend
+    }
 }
 
 /// The bend's frame and the line's projection, computed once per question.
@@ -155,7 +177,7 @@ impl Frame {
             q.tube
         );
         assert!(
-            q.start_phi.is_finite() && q.delta_phi > 0.0 && q.delta_phi <= TAU,
+            q.start.is_finite() && q.delta > 0.0 && q.delta <= TAU,
             "bad segment"
         );
         assert!(q.t_min <= q.t_max, "bad range [{}, {}]", q.t_min, q.t_max);
@@ -164,20 +186,20 @@ impl Frame {
         assert!(across.length() > 0.0, "phi_zero along the axis");
         let e0 = across.normalize();
         let e1 = a.cross(e0);
-        let end = q.start_phi + q.delta_phi;
+        let end = q.start + q.delta;
         Frame {
             c: q.center,
             a,
             e0,
             e1,
-            s: DVec2::new(q.start_phi.cos(), q.start_phi.sin()),
+            s: DVec2::new(q.start.cos(), q.start.sin()),
             e: DVec2::new(end.cos(), end.sin()),
-            wedge: q.delta_phi < TAU,
+            wedge: q.delta < TAU,
             major: q.major,
             bore: q.bore,
             tube: q.tube,
-            start_phi: q.start_phi,
-            delta_phi: q.delta_phi,
+            start_phi: q.start,
+            delta_phi: q.delta,
         }
     }
 
@@ -247,20 +269,22 @@ impl BendQuery {
     pub fn new(
         (center, axis, phi_zero): (DVec3, DVec3, DVec3),
         (major, bore, tube): (f64, f64, f64),
-        (start_phi, delta_phi): (f64, f64),
+        (start, delta): (f64, f64),
         origin: DVec3,
         dir: DVec3,
         (t_min, t_max): (f64, f64),
     ) -> BendQuery {
         BendQuery {
-            center,
-            axis,
-            phi_zero,
-            major,
-            bore,
-            tube,
-            start_phi,
-            delta_phi,
+            bend: Spec {
+                center,
+                axis,
+                phi_zero,
+                major,
+                bore,
+                tube,
+                start,
+                delta,
+            },
             origin,
             dir,
             t_min,

@@ -3,14 +3,12 @@
 //! turn, the bend oracle's labels and each cull's verdicts, alone, with the wedge alone,
 //! and behind the wedge.
 
-use super::{Params, ShapeFalseReject, Tally, Unit, name};
+use super::{Member, Params, Unit, sweep_shape};
 use crate::check::shapes::bend::rays::{self, RayKind, Spec};
-use crate::check::shapes::bend::{POSE_RAYS, SCALES, refuse_class};
+use crate::check::shapes::bend::{POSE_RAYS, PosedBend, SCALES, refuse_class};
 use crate::measure::CountedCull;
-use crate::oracle::OracleLabel;
 use crate::workload::shapes_spec::{ShapesSpec, segment_radians};
-use torus_cull::bend::PipeBend;
-use torus_cull::{Cull, CullKind, CullVisitor, DRay, NoCull};
+use torus_cull::DRay;
 
 /// A stream of its own for the run's bends (not the bend check's rays).
 const SALT: u64 = 0x5EED_BE4D_0000_0002;
@@ -60,20 +58,6 @@ pub(super) fn units(spec: &ShapesSpec) -> Vec<PoseUnit> {
     all
 }
 
-/// The names of a bend's cull forms: each cull, `wedge`, then `wedge+<cull>` for each
-/// cull but `none` (whose wedge form is `wedge`).
-fn forms(culls: &[CountedCull]) -> Vec<(String, bool)> {
-    let mut all: Vec<(String, bool)> = culls.iter().map(|&c| (name(c), true)).collect();
-    all.push(("wedge".into(), true));
-    for &c in culls
-        .iter()
-        .filter(|&&c| c != CountedCull::Timed(CullKind::NoCull))
-    {
-        all.push((format!("wedge+{}", name(c)), true));
-    }
-    all
-}
-
 /// One pose of one bend.
 pub(super) fn pose(
     unit: &PoseUnit,
@@ -92,73 +76,25 @@ pub(super) fn pose(
     let shape = Spec::canonical(nu * scale, ratio * scale, scale, 0.0, delta).posed(&mut rng);
     let member = format!("bend nu={nu} dphi={deg} bore={ratio}");
     // `refuse_bends` passed these radii; a pose moves and turns them only.
-    let bend = shape
-        .bend()
-        .map_err(|e| format!("{member}: {shape:?}: {e}"))?;
+    let posed = PosedBend::new(shape).map_err(|e| format!("{member}: {shape:?}: {e}"))?;
     // The check's kinds but the spawned rays (module docs of `shape_sweep`).
     let kinds: Vec<RayKind> = RayKind::ALL
         .into_iter()
         .filter(|&k| k != RayKind::Spawned)
         .collect();
     let drawn: Vec<DRay> = (unit.first..unit.first + unit.count)
-        .map(|i| rays::draw(&shape, &bend, kinds[i % kinds.len()], &mut rng).0)
+        .map(|i| rays::draw(&shape, &posed.bend, kinds[i % kinds.len()], &mut rng).0)
         .collect();
-    let labels: Vec<OracleLabel> = drawn.iter().map(|r| shape.query(r).classify()).collect();
-    let forms = forms(culls);
-    let mut tally = Tally::new(forms.len());
-    tally.label(&labels);
-    let mut verdicts: Vec<Vec<bool>> = culls
-        .iter()
-        .map(|&c| c.visit(Verdicts(&bend, &drawn, false)))
-        .collect();
-    verdicts.push(Verdicts(&bend, &drawn, true).visit(NoCull));
-    for &c in culls
-        .iter()
-        .filter(|&&c| c != CountedCull::Timed(CullKind::NoCull))
-    {
-        verdicts.push(c.visit(Verdicts(&bend, &drawn, true)));
-    }
-    let mut false_rejects = Vec::new();
-    for (j, kept) in verdicts.iter().enumerate() {
-        for i in tally.verdicts(j, &labels, kept) {
-            false_rejects.push(ShapeFalseReject {
-                member: member.clone(),
-                pose: format!("{shape:?}"),
-                cull: forms[j].0.clone(),
-                index: unit.first + i,
-                origin: drawn[i].origin(),
-                dir: drawn[i].dir(),
-                margin: labels[i].margin,
-            });
-        }
-    }
-    Ok(Unit {
-        nu,
-        params: Params {
-            shape: "bend".into(),
-            bore: Some(ratio),
-            segment_deg: Some(deg),
-            ..Params::default()
-        },
-        forms,
-        tally,
-        false_rejects,
-    })
-}
-
-/// The cull's verdict on each ray against the bend's outer torus (`true` keeps), behind
-/// the segment's wedge if asked.
-struct Verdicts<'a>(&'a PipeBend, &'a [DRay], bool);
-
-impl CullVisitor for Verdicts<'_> {
-    type Output = Vec<bool>;
-    fn visit<C: Cull>(self, cull: C) -> Vec<bool> {
-        let Verdicts(bend, rays, wedge) = self;
-        if wedge {
-            let cull = bend.wedge_cull(cull);
-            rays.iter().map(|r| bend.kept_by(&cull, r)).collect()
-        } else {
-            rays.iter().map(|r| bend.kept_by(&cull, r)).collect()
-        }
-    }
+    let member = Member {
+        label: member,
+        pose: format!("{shape:?}"),
+        first: unit.first,
+    };
+    let params = Params {
+        shape: "bend".into(),
+        bore: Some(ratio),
+        segment_deg: Some(deg),
+        ..Params::default()
+    };
+    sweep_shape(&posed, &drawn, culls, (&member, nu, params))
 }

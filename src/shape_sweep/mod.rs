@@ -19,6 +19,7 @@
 mod bend;
 mod family;
 
+use crate::lab_shape::{self, LabShape};
 use crate::measure::CountedCull;
 use crate::oracle::{OracleClass, OracleLabel};
 use crate::results::RejectionRecord;
@@ -27,7 +28,7 @@ use crate::workload::shapes_spec::ShapesSpec;
 use glam::DVec3;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use torus_cull::Named;
+use torus_cull::DRay;
 
 pub use bend::refuse_bends;
 
@@ -53,13 +54,17 @@ pub struct ShapeFalseReject {
 
 /// One member's (or one bend pose's) rays and counts while they are drawn.
 #[derive(Debug, Clone, Default)]
-struct Tally {
-    rays: u64,
-    hits: u64,
-    misses: u64,
-    ambiguous: u64,
+pub struct Tally {
+    /// Rays labelled.
+    pub rays: u64,
+    /// The oracle's hits.
+    pub hits: u64,
+    /// Its misses.
+    pub misses: u64,
+    /// Its ambiguous rays.
+    pub ambiguous: u64,
     /// Per cull form: rejected, false rejects.
-    rejected: Vec<(u64, u64)>,
+    pub rejected: Vec<(u64, u64)>,
 }
 
 impl Tally {
@@ -149,13 +154,26 @@ impl Tally {
     }
 }
 
-/// A member's parameters as its records carry them.
+/// A member's parameters as its records carry them ([`ShapeRecord`]'s fields of the same
+/// names): `shape` (`ring`, `elliptic`, `horn`, `spindle`, `bend`, or a test's own),
+/// `aspect` b/a, `bore` r_min/r_max, `segment_deg` Δφ in degrees.
 #[derive(Debug, Clone, Default)]
-struct Params {
+pub struct Params {
     shape: String,
     aspect: Option<f64>,
     bore: Option<f64>,
     segment_deg: Option<f64>,
+}
+
+impl Params {
+    /// A shape's name with none of the family's and the bends' parameters (a shape of
+    /// another kind, a test's own).
+    pub fn named(shape: &str) -> Params {
+        Params {
+            shape: shape.into(),
+            ..Params::default()
+        }
+    }
 }
 
 /// Rays of every member of `spec`: what the progress bar counts.
@@ -229,18 +247,78 @@ pub fn sweep(
     Ok((records, false_rejects))
 }
 
-/// One unit's tally and the names of its cull forms.
-struct Unit {
-    nu: f64,
-    params: Params,
+/// One unit's tally and the names of its cull forms: a member (or one bend pose) swept.
+pub struct Unit {
+    /// The member's ν.
+    pub nu: f64,
+    /// Its parameters.
+    pub params: Params,
     /// Per form: its name and whether it accepts the shape.
-    forms: Vec<(String, bool)>,
-    tally: Tally,
-    false_rejects: Vec<ShapeFalseReject>,
+    pub forms: Vec<(String, bool)>,
+    /// Its counts.
+    pub tally: Tally,
+    /// The rays a form rejected although the oracle calls them hits.
+    pub false_rejects: Vec<ShapeFalseReject>,
+}
+
+/// What a swept shape's false rejects are reported with: the member's words, its pose
+/// and the first index of its rays.
+#[derive(Debug, Clone)]
+pub struct Member {
+    /// The member (`spindle nu=0.5 b/a=4`).
+    pub label: String,
+    /// Its pose and radii, in full.
+    pub pose: String,
+    /// The index of its first ray among the member's.
+    pub first: usize,
+}
+
+/// Sweeps `shape` over `rays` with `culls`, through the interface alone: each ray
+/// labelled by the shape's oracle ([`LabShape::label`]), each cull form's verdicts
+/// ([`lab_shape::forms`]: the culls, then the shape's guard alone and behind each cull)
+/// from [`torus_cull::Solid::kept_by`]; `nu` and `params` go into the records. Every
+/// shape of `run`'s sweep goes through here, and a test's own shape can.
+///
+/// # Errors
+///
+/// A ray the oracle cannot answer, named with the member and the ray's index.
+pub fn sweep_shape<S: LabShape>(
+    shape: &S,
+    rays: &[DRay],
+    culls: &[CountedCull],
+    (member, nu, params): (&Member, f64, Params),
+) -> Result<Unit, String> {
+    let labels = lab_shape::labels(shape, rays, (&member.label, member.first))?;
+    let forms = lab_shape::forms(shape, culls);
+    let mut tally = Tally::new(forms.len());
+    tally.label(&labels);
+    let mut false_rejects = Vec::new();
+    for (j, form) in forms.iter().enumerate() {
+        let kept = form.kept(shape, rays);
+        for i in tally.verdicts(j, &labels, &kept) {
+            false_rejects.push(ShapeFalseReject {
+                member: member.label.clone(),
+                pose: member.pose.clone(),
+                cull: form.name.clone(),
+                index: member.first + i,
+                origin: rays[i].origin(),
+                dir: rays[i].dir(),
+                margin: labels[i].margin,
+            });
+        }
+    }
+    Ok(Unit {
+        nu,
+        params,
+        forms: forms.into_iter().map(|f| (f.name, f.accepts)).collect(),
+        tally,
+        false_rejects,
+    })
 }
 
 impl Unit {
-    fn records(&self) -> impl Iterator<Item = ShapeRecord> + '_ {
+    /// The unit's records, one per cull form.
+    pub fn records(&self) -> impl Iterator<Item = ShapeRecord> + '_ {
         self.forms
             .iter()
             .enumerate()
@@ -271,9 +349,4 @@ fn parallel<T: Send>(n: usize, threads: usize, f: &(dyn Fn(usize) -> T + Sync)) 
         .into_iter()
         .map(|r| r.expect("every unit ran"))
         .collect()
-}
-
-/// `cull`'s name.
-fn name(cull: CountedCull) -> String {
-    cull.name().to_string()
 }

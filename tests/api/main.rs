@@ -8,6 +8,7 @@ mod common;
 
 mod api_bit_patterns;
 mod layout;
+mod new_shape;
 mod package;
 mod phi_convention;
 mod refused_inputs;

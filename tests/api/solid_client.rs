@@ -565,3 +565,72 @@ fn a_scene_of_dyn_ray_cast_holds_every_shape() {
     }
     assert!(hits > 200, "{hits} hits");
 }
+
+/// The cull verb ([`Solid::kept_by`]) answers as each shape's own cull step, for every
+/// timed cull, f32 and f64 rays (the torus's: the line in its frame against its bounds;
+/// the toroid's and the bend's `kept_by`, the bend's also behind its wedge); it rejects
+/// some rays, and never one the shape's own `intersect` hits.
+#[test]
+fn the_cull_verb_answers_as_each_shapes_own_cull_step() {
+    /// Counts `verb` against `own` on every ray, f64 and f32; the rejected count.
+    fn agree(
+        rays: &[DRay],
+        verb: impl Fn(&DRay, &Ray) -> (bool, bool),
+        own: impl Fn(&DRay, &Ray) -> (bool, bool),
+        hit: impl Fn(&DRay) -> bool,
+    ) -> usize {
+        let mut rejected = 0;
+        for r64 in rays {
+            let r = f32_ray(r64);
+            let got = verb(r64, &r);
+            assert_eq!(got, own(r64, &r), "{r64:?}");
+            rejected += usize::from(!got.0);
+            assert!(got.0 || !hit(r64), "a hit rejected: {r64:?}");
+        }
+        rejected
+    }
+    let mut rejected = 0;
+    for cull in CullKind::TIMED {
+        for (i, torus) in tori().iter().enumerate() {
+            let line = |r: &Ray| {
+                let l = torus.line_to_local(r);
+                cull.keeps(torus.bounds(), l.origin, l.dir)
+            };
+            let line64 = |r: &DRay| {
+                let l = torus.line_to_local(r);
+                cull.keeps(torus.bounds(), l.origin, l.dir)
+            };
+            rejected += agree(
+                &rays(11 + i as u64, torus.center_f64()),
+                |r64, r| (torus.kept_by(&cull, r64), Solid::kept_by(torus, &cull, r)),
+                |r64, r| (line64(r64), line(r)),
+                |r64| intersect(torus, r64).is_some(),
+            );
+        }
+        for (i, toroid) in toroids().iter().enumerate() {
+            rejected += agree(
+                &rays(101 + i as u64, toroid.center_f64()),
+                |r64, r| {
+                    (
+                        Solid::kept_by(toroid, &cull, r64),
+                        Solid::kept_by(toroid, &cull, r),
+                    )
+                },
+                |r64, r| (toroid.kept_by(&cull, r64), toroid.kept_by(&cull, r)),
+                |r64| toroid.intersect(r64).is_some(),
+            );
+        }
+        for (i, bend) in bends().iter().enumerate() {
+            let wedged = bend.wedge_cull(cull);
+            for c in [&cull as &dyn torus_cull::Cull, &wedged] {
+                rejected += agree(
+                    &rays(1001 + i as u64, bend.outer().center_f64()),
+                    |r64, r| (Solid::kept_by(bend, c, r64), Solid::kept_by(bend, c, r)),
+                    |r64, r| (bend.kept_by(c, r64), bend.kept_by(c, r)),
+                    |r64| bend.intersect(r64).is_some(),
+                );
+            }
+        }
+    }
+    assert!(rejected > 0, "no cull rejected a ray");
+}

@@ -122,14 +122,15 @@ pub use geometry::{
     Torus, TorusError,
 };
 pub use geometry::{
-    MAX_CROSSINGS, MAX_SPANS, NoFace, PointQueryError, Solid, SolidCrossing, SolidCrossings,
-    SolidF32Hit, SolidHit, SolidProjection, SolidSpan, SolidSpans, SpanOf,
+    MAX_CROSSINGS, MAX_SPANS, NoFace, PointQueryError, SolidCrossing, SolidCrossings, SolidF32Hit,
+    SolidHit, SolidProjection, SolidSpan, SolidSpans, SpanOf,
 };
 pub use intersect::{
     Crossing, Crossings, Culled, DHit, Hit, Passage, RayCast, Span, Spans, SurfaceCoords,
     SurfaceTangents, TorusRay, intersect, intersect_all, intersect_culled, occluded,
 };
 pub use names::{Named, UnknownName};
+pub use solids::Solid;
 
 /// The README's examples, compiled and run by `cargo test --doc`.
 #[cfg(doctest)]

@@ -182,7 +182,7 @@ fn the_whole_torus_is_the_family_oracles() {
     for _ in 0..2000 {
         let mut q = random_query(&mut rng);
         q.bore = 0.0;
-        q.delta_phi = 2.0 * PI;
+        q.delta = 2.0 * PI;
         let family = FamilyQuery::new(
             q.center, q.axis, q.major, q.tube, q.tube, q.origin, q.dir, q.t_min, q.t_max,
         );

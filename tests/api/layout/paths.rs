@@ -41,6 +41,16 @@ const ALLOWED: &[(&str, &str)] = &[
         "crates/torus-cull/src/gpu/wgsl/module/culls/<name>.wgsl",
         "a new cull's WGSL file",
     ),
+    ("crates/torus-cull/src/<shape>/", "a new shape's folder"),
+    (
+        "crates/torus-cull/src/solids/<shape>.rs",
+        "a new shape's Solid impl",
+    ),
+    (
+        "src/check/shapes/<shape>/mod.rs",
+        "a new shape's LabShape impl",
+    ),
+    ("src/oracle/<shape>.rs", "a new shape's oracle"),
     (
         "results/latest",
         "`results/latest….json`: what a build outside git writes",

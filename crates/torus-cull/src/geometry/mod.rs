@@ -6,7 +6,6 @@ mod bounds;
 pub(crate) mod draw;
 mod point_query;
 pub(crate) mod ray;
-mod solid;
 mod solid_crossings;
 mod solid_hit;
 mod solid_query;
@@ -19,7 +18,6 @@ pub use point_query::{NonFinitePoint, SurfaceProjection};
 pub(crate) use tube::Tube;
 
 pub use ray::{DRay, DRayError, ON_SURFACE_REL, Precision, Ray, RayError};
-pub use solid::Solid;
 pub(crate) use solid_crossings::pair_spans;
 pub use solid_crossings::{
     MAX_CROSSINGS, MAX_SPANS, Passage, SolidCrossing, SolidCrossings, SolidSpan, SolidSpans, SpanOf,

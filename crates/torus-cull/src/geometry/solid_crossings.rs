@@ -1,4 +1,4 @@
-//! Every crossing of a ray with a [`super::Solid`], and the spans inside it: fixed
+//! Every crossing of a ray with a [`crate::Solid`], and the spans inside it: fixed
 //! capacity, no allocation, iterated by reference (`for c in &crossings`) or as slices.
 //!
 //! A pipe bend crosses a line at most ten times (two tori, four each, and two caps), so

@@ -1,16 +1,16 @@
-//! What a [`super::Solid`] answers for one ray: the nearest hit with its face, and the
+//! What a [`crate::Solid`] answers for one ray: the nearest hit with its face, and the
 //! certified f32 answer with whether f64 had to finish it.
 
 use super::ray::Precision;
 use glam::Vec3;
 
 /// The face of a solid whose surface is one face: a ring torus or a family member
-/// ([`super::Solid::Face`] of `Torus` and `Toroid`). A pipe bend names its faces
+/// ([`crate::Solid::Face`] of `Torus` and `Toroid`). A pipe bend names its faces
 /// (`BendFace`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct NoFace;
 
-/// The nearest hit of a ray on a [`super::Solid`], in the ray's precision: the fields of
+/// The nearest hit of a ray on a [`crate::Solid`], in the ray's precision: the fields of
 /// the ring torus's `Hit` and the face struck ([`NoFace`] for a one-face solid).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
@@ -42,7 +42,7 @@ impl<P: Precision, F> SolidHit<P, F> {
 }
 
 /// The nearest hit of an f32 ray as the certified f32 path finishes it
-/// ([`super::Solid::hit_f32_certified`]): f32's answer where it proved one, the f64
+/// ([`crate::Solid::hit_f32_certified`]): f32's answer where it proved one, the f64
 /// solid's where it could not (`escalated`). Either way `hit` is the shape's f32 answer.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
@@ -61,7 +61,7 @@ impl<F> SolidF32Hit<F> {
     }
 }
 
-/// The hit alone, as [`super::Solid::hit`] answers.
+/// The hit alone, as [`crate::Solid::hit`] answers.
 impl<F> From<SolidF32Hit<F>> for Option<SolidHit<Vec3, F>> {
     fn from(answer: SolidF32Hit<F>) -> Self {
         answer.hit

@@ -1,4 +1,4 @@
-//! What a [`super::Solid`]'s point queries answer: the closest surface point with its
+//! What a [`crate::Solid`]'s point queries answer: the closest surface point with its
 //! face, and one error for a point they refuse.
 
 use super::point_query::{NonFinitePoint, SurfaceProjection};
@@ -6,7 +6,7 @@ use super::solid_hit::NoFace;
 use glam::DVec3;
 use std::fmt;
 
-/// The closest surface point of a [`super::Solid`] to a query point, in f64.
+/// The closest surface point of a [`crate::Solid`] to a query point, in f64.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub struct SolidProjection<F> {
@@ -18,6 +18,21 @@ pub struct SolidProjection<F> {
     pub signed_distance: f64,
     /// The face the point was taken from.
     pub face: F,
+}
+
+impl<F> SolidProjection<F> {
+    /// A projection from its fields (a solid of your own: the struct is
+    /// `#[non_exhaustive]`, so this is how a shape outside the library answers
+    /// [`crate::Solid::project_point`]).
+    #[must_use]
+    pub const fn new(point: DVec3, normal: DVec3, signed_distance: f64, face: F) -> Self {
+        SolidProjection {
+            point,
+            normal,
+            signed_distance,
+            face,
+        }
+    }
 }
 
 /// A ring torus's or family member's projection, on its one face.
@@ -32,7 +47,7 @@ impl From<SurfaceProjection> for SolidProjection<NoFace> {
     }
 }
 
-/// Why a [`super::Solid`]'s point query was refused.
+/// Why a [`crate::Solid`]'s point query was refused.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[non_exhaustive]
 pub enum PointQueryError {

@@ -48,8 +48,9 @@ impl From<BendProjection> for SolidProjection<BendFace> {
 
 /// [`PipeBend::intersect`], `occluded`, `intersect_all`, `intersect_f32` (a whole bend's
 /// hits and misses proved in f32; a cut bend's misses of the outer torus from outside the
-/// outer tube, every other ray the f64 solid's), [`PipeBend::spawn`] and the point
-/// queries. The world box is the outer torus's (the whole ring's, holding any segment).
+/// outer tube, every other ray the f64 solid's), [`PipeBend::spawn`],
+/// [`PipeBend::kept_by`] and the point queries. The world box is the outer torus's (the whole
+/// ring's, holding any segment).
 impl Solid for PipeBend {
     type Face = BendFace;
 
@@ -57,41 +58,14 @@ impl Solid for PipeBend {
         self.outer().world_aabb()
     }
 
-    fn hit(&self, ray: &Ray) -> Option<SolidHit<Vec3, BendFace>> {
-        self.intersect(ray).map(SolidHit::from)
-    }
-
-    fn hit_f64(&self, ray: &DRay) -> Option<SolidHit<DVec3, BendFace>> {
-        self.intersect(ray).map(SolidHit::from)
-    }
-
-    fn occluded(&self, ray: &Ray) -> bool {
-        PipeBend::occluded(self, ray)
-    }
-
-    fn occluded_f64(&self, ray: &DRay) -> bool {
-        PipeBend::occluded(self, ray)
-    }
-
-    fn crossings(&self, ray: &Ray) -> SolidCrossings<Vec3, BendFace> {
-        self.intersect_all(ray).into()
-    }
-
-    fn crossings_f64(&self, ray: &DRay) -> SolidCrossings<DVec3, BendFace> {
-        self.intersect_all(ray).into()
-    }
-
-    fn hit_f32_certified(&self, ray: &Ray) -> SolidF32Hit<BendFace> {
-        self.intersect_f32(ray).into()
-    }
-
-    fn spawn(&self, ray: &Ray, t: f32, dir: Vec3) -> Result<Ray, RayError> {
-        PipeBend::spawn(self, ray, t, dir)
-    }
-
-    fn spawn_f64(&self, ray: &DRay, t: f64, dir: DVec3) -> Result<DRay, DRayError> {
-        PipeBend::spawn(self, ray, t, dir)
-    }
+    ray_verbs!(
+        PipeBend::intersect,
+        PipeBend::occluded,
+        PipeBend::intersect_all,
+        PipeBend::spawn,
+        PipeBend::intersect_f32,
+        PipeBend::kept_by
+    );
 
     /// [`PipeBend::contains`], which answers `false` for a non-finite point: refused here
     /// first, as the other shapes refuse it.

@@ -5,7 +5,7 @@ use crate::family::{FamilyPointError, Toroid};
 use crate::geometry::{
     NoFace, PointQueryError, SolidCrossings, SolidF32Hit, SolidHit, SolidProjection,
 };
-use crate::{Cull, Culled, DRay, DRayError, Ray, RayCast, RayError, Solid, TorusRay};
+use crate::{Cull, Culled, DRay, DRayError, Precision, Ray, RayCast, RayError, Solid, TorusRay};
 use glam::{DVec3, Vec3};
 
 /// The text of [`FamilyPointError::Unsupported`] as the interface's error.
@@ -23,7 +23,7 @@ impl From<FamilyPointError> for PointQueryError {
 
 /// [`Toroid::intersect`], `occluded`, `intersect_all`, `intersect_f32` (a circular ring
 /// member's hits and misses proved in f32, every other member escalated),
-/// [`Toroid::spawn`] and the point queries.
+/// [`Toroid::spawn`], [`Toroid::kept_by`] and the point queries.
 impl Solid for Toroid {
     type Face = NoFace;
 
@@ -31,53 +31,16 @@ impl Solid for Toroid {
         Toroid::world_aabb(self)
     }
 
-    fn hit(&self, ray: &Ray) -> Option<SolidHit<Vec3, NoFace>> {
-        self.intersect(ray).map(SolidHit::from)
-    }
+    ray_verbs!(
+        Toroid::intersect,
+        Toroid::occluded,
+        Toroid::intersect_all,
+        Toroid::spawn,
+        Toroid::intersect_f32,
+        Toroid::kept_by
+    );
 
-    fn hit_f64(&self, ray: &DRay) -> Option<SolidHit<DVec3, NoFace>> {
-        self.intersect(ray).map(SolidHit::from)
-    }
-
-    fn occluded(&self, ray: &Ray) -> bool {
-        Toroid::occluded(self, ray)
-    }
-
-    fn occluded_f64(&self, ray: &DRay) -> bool {
-        Toroid::occluded(self, ray)
-    }
-
-    fn crossings(&self, ray: &Ray) -> SolidCrossings<Vec3, NoFace> {
-        self.intersect_all(ray).into()
-    }
-
-    fn crossings_f64(&self, ray: &DRay) -> SolidCrossings<DVec3, NoFace> {
-        self.intersect_all(ray).into()
-    }
-
-    fn hit_f32_certified(&self, ray: &Ray) -> SolidF32Hit<NoFace> {
-        self.intersect_f32(ray).into()
-    }
-
-    fn spawn(&self, ray: &Ray, t: f32, dir: Vec3) -> Result<Ray, RayError> {
-        Toroid::spawn(self, ray, t, dir)
-    }
-
-    fn spawn_f64(&self, ray: &DRay, t: f64, dir: DVec3) -> Result<DRay, DRayError> {
-        Toroid::spawn(self, ray, t, dir)
-    }
-
-    fn contains(&self, p: DVec3) -> Result<bool, PointQueryError> {
-        Ok(Toroid::contains(self, p)?)
-    }
-
-    fn signed_distance(&self, p: DVec3) -> Result<f64, PointQueryError> {
-        Ok(Toroid::signed_distance(self, p)?)
-    }
-
-    fn project_point(&self, p: DVec3) -> Result<SolidProjection<NoFace>, PointQueryError> {
-        Ok(Toroid::project_point(self, p)?.into())
-    }
+    point_verbs!(Toroid);
 }
 
 /// [`Toroid::intersect`]; the bool is [`Toroid::occluded`].

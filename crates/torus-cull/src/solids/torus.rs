@@ -7,7 +7,7 @@ use crate::geometry::{
 };
 use crate::intersect::{Crossing, Crossings, Hit};
 use crate::{
-    DRay, DRayError, Precision, Ray, RayError, Solid, Torus, intersect, intersect_all,
+    Cull, DRay, DRayError, Precision, Ray, RayError, Solid, Torus, intersect, intersect_all,
     intersect_f32, occluded,
 };
 use glam::{DVec3, Vec3};
@@ -56,7 +56,8 @@ impl From<F32Hit> for SolidF32Hit<NoFace> {
 }
 
 /// [`intersect()`], [`occluded()`], [`intersect_all`], [`intersect_f32`] (hits and misses
-/// proved in f32), [`Torus::spawn`] and the point queries.
+/// proved in f32), [`Torus::spawn`], the cull step of [`crate::intersect_culled`] and the
+/// point queries.
 impl Solid for Torus {
     type Face = NoFace;
 
@@ -64,51 +65,22 @@ impl Solid for Torus {
         Torus::world_aabb(self)
     }
 
-    fn hit(&self, ray: &Ray) -> Option<SolidHit<Vec3, NoFace>> {
-        intersect(self, ray).map(SolidHit::from)
-    }
+    ray_verbs!(
+        intersect,
+        occluded,
+        intersect_all,
+        Torus::spawn,
+        intersect_f32,
+        kept_by
+    );
 
-    fn hit_f64(&self, ray: &DRay) -> Option<SolidHit<DVec3, NoFace>> {
-        intersect(self, ray).map(SolidHit::from)
-    }
+    point_verbs!(Torus);
+}
 
-    fn occluded(&self, ray: &Ray) -> bool {
-        occluded(self, ray)
-    }
-
-    fn occluded_f64(&self, ray: &DRay) -> bool {
-        occluded(self, ray)
-    }
-
-    fn crossings(&self, ray: &Ray) -> SolidCrossings<Vec3, NoFace> {
-        intersect_all(self, ray).into()
-    }
-
-    fn crossings_f64(&self, ray: &DRay) -> SolidCrossings<DVec3, NoFace> {
-        intersect_all(self, ray).into()
-    }
-
-    fn hit_f32_certified(&self, ray: &Ray) -> SolidF32Hit<NoFace> {
-        intersect_f32(self, ray).into()
-    }
-
-    fn spawn(&self, ray: &Ray, t: f32, dir: Vec3) -> Result<Ray, RayError> {
-        Torus::spawn(self, ray, t, dir)
-    }
-
-    fn spawn_f64(&self, ray: &DRay, t: f64, dir: DVec3) -> Result<DRay, DRayError> {
-        Torus::spawn(self, ray, t, dir)
-    }
-
-    fn contains(&self, p: DVec3) -> Result<bool, PointQueryError> {
-        Ok(Torus::contains(self, p)?)
-    }
-
-    fn signed_distance(&self, p: DVec3) -> Result<f64, PointQueryError> {
-        Ok(Torus::signed_distance(self, p)?)
-    }
-
-    fn project_point(&self, p: DVec3) -> Result<SolidProjection<NoFace>, PointQueryError> {
-        Ok(Torus::project_point(self, p)?.into())
-    }
+/// [`Torus::with_cull`]'s step ([`crate::intersect_culled`]'s): the ray's line in the
+/// torus frame against the torus's own bounds; in the order the other shapes'
+/// `kept_by` take their arguments.
+#[inline]
+fn kept_by<C: Cull + ?Sized, P: Precision>(torus: &Torus, cull: &C, ray: &Ray<P>) -> bool {
+    crate::intersect::kept_by(cull, torus, ray)
 }

@@ -2,12 +2,15 @@ pub mod exact;
 pub mod rays;
 
 use crate::check::record::{AnswerRecord, CaptureRecord, ClassRecord, CullRecord, KindRecord};
+use crate::check::solid::count_culls;
 use crate::check::{About, CheckShape, Job};
+use crate::lab_shape::LabShape;
 use crate::oracle::{OracleClass, OracleLabel};
 use exact::Tally;
 use rays::{RayKind, Spec};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use torus_cull::{CullKind, DRay, Named, NoCull};
+use torus_cull::bend::PipeBend;
+use torus_cull::{Cull, CullKind, DRay, NoCull, Precision, Ray};
 
 /// The seed `--seed` defaults to.
 pub const SEED: u64 = 20261128;
@@ -30,6 +33,62 @@ pub const SCALES: [f64; 3] = [1e-3, 1.0, 1e3];
 
 /// Rays per pose.
 pub const POSE_RAYS: usize = 1000;
+
+/// A pipe bend with the parameters its oracle takes (the library's [`PipeBend`] keeps no
+/// φ = 0 direction of its own): the lab's bend ([`LabShape`]).
+#[derive(Debug, Clone)]
+pub struct PosedBend {
+    /// Its parameters, for the oracle.
+    pub spec: Spec,
+    /// The library's solid of `spec`.
+    pub bend: PipeBend,
+}
+
+impl PosedBend {
+    /// The bend of `spec`, or the library's reason for refusing it.
+    ///
+    /// # Errors
+    ///
+    /// The library's [`torus_cull::bend::BendError`].
+    pub fn new(spec: Spec) -> Result<PosedBend, torus_cull::bend::BendError> {
+        Ok(PosedBend {
+            bend: spec.bend()?,
+            spec,
+        })
+    }
+}
+
+/// The bend oracle (the on-surface rule for a ray from the surface), R + r_max, and the
+/// segment's wedge as the guard in front of every cull (`PipeBend::wedge_cull`).
+impl LabShape for PosedBend {
+    type Solid = PipeBend;
+
+    fn solid(&self) -> &PipeBend {
+        &self.bend
+    }
+
+    fn label(&self, ray: &DRay) -> Result<OracleLabel, String> {
+        let query = self.spec.query(ray);
+        Ok(if ray.starts_on_surface() {
+            query.classify_from_surface()
+        } else {
+            query.classify()
+        })
+    }
+
+    fn size(&self) -> f64 {
+        self.spec.size()
+    }
+
+    fn guard(&self) -> Option<&'static str> {
+        Some("wedge")
+    }
+
+    fn guarded_kept<C: Cull, P: Precision>(&self, cull: C, rays: &[Ray<P>]) -> Vec<bool> {
+        let wedged = self.bend.wedge_cull(cull);
+        rays.iter().map(|r| self.bend.kept_by(&wedged, r)).collect()
+    }
+}
 
 /// The classes (ν, Δφ, r_min/r_max) of every ν of `nus`, Δφ of `deltas` and ratio of
 /// `ratios`, ν outermost (the command's default: [`DELTAS`] × [`RATIOS`]).
@@ -250,17 +309,11 @@ fn check_pose(
             q.classify()
         };
         kinds[k].count(label.class);
-        let n = CullKind::TIMED.len();
         let far_miss = !spawned && label.class == OracleClass::Miss && label.margin > far;
-        for (j, record) in culls.iter_mut().enumerate() {
-            let kept = if j < n {
-                bend.kept_by(&CullKind::TIMED[j], &ray)
-            } else {
-                bend.kept_by(&wedges[j - n], &ray)
-            };
-            let hit = label.class == OracleClass::Hit;
-            record.counts.count(kept, hit, far_miss);
-        }
+        let hit = label.class == OracleClass::Hit;
+        let (alone, behind) = culls.split_at_mut(CullKind::TIMED.len());
+        count_culls(&bend, &CullKind::TIMED, alone, &ray, (hit, far_miss));
+        count_culls(&bend, &wedges, behind, &ray, (hit, far_miss));
         if !spawned && label.class == OracleClass::Miss && is_cut_away(&whole, &segment, &ray) {
             cut_away.misses += 1;
             cut_away.rejected += u64::from(!bend.kept_by(&alone_wedge, &ray));

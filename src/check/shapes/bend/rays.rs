@@ -13,26 +13,9 @@ use std::f64::consts::TAU;
 use torus_cull::DRay;
 use torus_cull::bend::{BendError, PipeBend};
 
-/// A bend's parameters (the library's argument order).
-#[derive(Debug, Clone, Copy)]
-pub struct Spec {
-    /// The centre.
-    pub center: DVec3,
-    /// The axis (any length).
-    pub axis: DVec3,
-    /// The direction of φ = 0 (its part across the axis).
-    pub phi_zero: DVec3,
-    /// R.
-    pub major: f64,
-    /// r_min (0: no bore).
-    pub bore: f64,
-    /// r_max.
-    pub tube: f64,
-    /// φ₀.
-    pub start: f64,
-    /// Δφ.
-    pub delta: f64,
-}
+/// A bend's parameters: the bend oracle's ([`crate::oracle::bend::Spec`], the part of its
+/// question that is the bend); here, what the check's rays and poses make of them.
+pub use crate::oracle::bend::Spec;
 
 impl Spec {
     /// The bend in its canonical frame (centre 0, axis +y, φ = 0 along +x).
@@ -82,14 +65,13 @@ impl Spec {
 
     /// The oracle's question for `ray` (its origin, direction and range).
     pub fn query(&self, ray: &DRay) -> BendQuery {
-        BendQuery::new(
-            (self.center, self.axis, self.phi_zero),
-            (self.major, self.bore, self.tube),
-            (self.start, self.delta),
-            ray.origin(),
-            ray.dir(),
-            (ray.t_min(), ray.t_max()),
-        )
+        BendQuery {
+            bend: *self,
+            origin: ray.origin(),
+            dir: ray.dir(),
+            t_min: ray.t_min(),
+            t_max: ray.t_max(),
+        }
     }
 
     /// The world point of local (φ, ψ, D): φ about the axis, ψ around the tube from the

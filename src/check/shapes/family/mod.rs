@@ -32,11 +32,12 @@
 pub mod rays;
 
 use crate::check::record::{AnswerRecord, ClassRecord, CullRecord, KindRecord};
+use crate::check::solid::count_culls;
 use crate::check::{About, CheckShape, Job};
 use crate::family_label;
 use crate::oracle::OracleClass;
 use glam::DVec3;
-use rand::{RngExt, SeedableRng};
+use rand::SeedableRng;
 use rand_pcg::Pcg64;
 use rays::RayKind;
 use torus_cull::family::{Toroid, ToroidError};
@@ -110,25 +111,28 @@ impl CheckShape for FamilyShape {
     }
 }
 
-/// The member (ν, b/a) with a = 1 in a random pose drawn from `rng`.
+/// The member (ν, b/a) with a = 1 in a random pose drawn from `rng`: its centre uniform
+/// in the cube of half-side 2·(R + max(a, b)) about the origin, then its axis by `axis`
+/// (the check's and `run`'s sweep's each draw it their own way: each keeps its stream).
+///
+/// # Errors
+///
+/// The library's refusal of the member.
+pub fn posed_member(
+    (nu, aspect): (f64, f64),
+    rng: &mut Pcg64,
+    axis: impl FnOnce(&mut Pcg64) -> DVec3,
+) -> Result<Toroid, ToroidError> {
+    let center = crate::random::cube_point(rng, 2.0) * (nu + aspect.max(1.0));
+    Toroid::new_f64(center, axis(rng), nu, 1.0, aspect)
+}
+
+/// The check's member: [`posed_member`] with any axis of the unit ball longer than
+/// 10⁻³ in square, as drawn (not made unit).
 fn member(nu: f64, aspect: f64, rng: &mut Pcg64) -> Result<Toroid, ToroidError> {
-    let size = nu + aspect.max(1.0);
-    let center = DVec3::new(
-        rng.random_range(-2.0..2.0),
-        rng.random_range(-2.0..2.0),
-        rng.random_range(-2.0..2.0),
-    ) * size;
-    let axis = loop {
-        let v = DVec3::new(
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-            rng.random_range(-1.0..1.0),
-        );
-        if v.length_squared() > 1e-3 && v.length_squared() <= 1.0 {
-            break v;
-        }
-    };
-    Toroid::new_f64(center, axis, nu, 1.0, aspect)
+    posed_member((nu, aspect), rng, |rng| {
+        crate::random::ball_point(rng, 1e-3)
+    })
 }
 
 /// Checks one member class with `rays` rays: its record, labelled as [`label`].
@@ -158,16 +162,12 @@ pub fn check_member(
         let label = family_label::label(&toroid, &ray)
             .map_err(|e| format!("member nu={nu} b/a={aspect}, ray {i}: {e}"))?;
         kinds[k].count(label.class);
-        for (cull, record) in CullKind::TIMED.iter().zip(&mut culls) {
-            // A spawned ray's line passes through its own surface point: no line cull can
-            // reject it, so its misses are left out of the capture.
-            let literal = RayKind::ALL[k] != RayKind::Spawned;
-            let far_miss = literal && label.class == OracleClass::Miss && label.margin > far;
-            let hit = label.class == OracleClass::Hit;
-            record
-                .counts
-                .count(toroid.kept_by(cull, &ray), hit, far_miss);
-        }
+        // A spawned ray's line passes through its own surface point: no line cull can
+        // reject it, so its misses are left out of the capture.
+        let literal = RayKind::ALL[k] != RayKind::Spawned;
+        let far_miss = literal && label.class == OracleClass::Miss && label.margin > far;
+        let hit = label.class == OracleClass::Hit;
+        count_culls(&toroid, &CullKind::TIMED, &mut culls, &ray, (hit, far_miss));
         if label.class == OracleClass::Ambiguous {
             continue;
         }
@@ -208,4 +208,26 @@ pub fn check_member(
         answers: vec![first_hit, all_first],
         ns_per_ray: None,
     })
+}
+
+/// A family member to the lab: its oracle ([`family_label::label`]), its size
+/// R + max(a, b), and the culls whose table row names its shape.
+impl crate::lab_shape::LabShape for Toroid {
+    type Solid = Toroid;
+
+    fn solid(&self) -> &Toroid {
+        self
+    }
+
+    fn label(&self, ray: &torus_cull::DRay) -> Result<crate::oracle::OracleLabel, String> {
+        family_label::label(self, ray)
+    }
+
+    fn size(&self) -> f64 {
+        rays::size(self)
+    }
+
+    fn accepts<C: torus_cull::Cull + ?Sized>(&self, cull: &C) -> bool {
+        cull.shapes().contains(&self.shape())
+    }
 }

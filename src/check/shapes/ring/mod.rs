@@ -445,6 +445,30 @@ pub fn nu_span([lo, hi]: [f64; 2]) -> String {
     if lo == hi { lo } else { format!("{lo}..{hi}") }
 }
 
+/// The ring torus to the lab: the circular oracle ([`Query::dray`], refusing a line it
+/// cannot reach; the on-surface rule for a ray from the surface) and its size R + r.
+impl crate::lab_shape::LabShape for Torus {
+    type Solid = Torus;
+
+    fn solid(&self) -> &Torus {
+        self
+    }
+
+    fn label(&self, ray: &torus_cull::DRay) -> Result<crate::oracle::OracleLabel, String> {
+        let query = Query::dray(self, ray);
+        query.check_reach()?;
+        Ok(if ray.starts_on_surface() {
+            classify_from_surface(&query)
+        } else {
+            query.classify()
+        })
+    }
+
+    fn size(&self) -> f64 {
+        self.major_radius_f64() + self.minor_radius_f64()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,10 +2,11 @@
 //! verbs with the same signatures for every shape) and parry's `Shape: RayCast +
 //! PointQuery` (a new shape is one impl, and the compiler names what it lacks).
 
-use super::ray::{DRay, DRayError, Ray, RayError};
-use super::solid_crossings::SolidCrossings;
-use super::solid_hit::{SolidF32Hit, SolidHit};
-use super::solid_query::{PointQueryError, SolidProjection};
+use crate::Cull;
+use crate::geometry::{
+    DRay, DRayError, PointQueryError, Precision, Ray, RayError, SolidCrossings, SolidF32Hit,
+    SolidHit, SolidProjection,
+};
 use glam::{DVec3, Vec3};
 use std::fmt;
 
@@ -24,7 +25,7 @@ use std::fmt;
 /// * [`Solid::hit`] / [`Solid::hit_f64`]: the nearest crossing in range, with its unit
 ///   outward normal, point, `front_face` and [`Solid::Face`]: the torus's
 ///   `intersect`, the toroid's and the bend's `intersect` (the bend's face named, the
-///   others' [`super::NoFace`]).
+///   others' [`crate::NoFace`]).
 /// * [`Solid::occluded`] / [`Solid::occluded_f64`]: a shadow ray's bool, for less than a
 ///   hit (`occluded` of each).
 /// * [`Solid::crossings`] / [`Solid::crossings_f64`]: every crossing in range, ascending,
@@ -37,6 +38,12 @@ use std::fmt;
 ///   `PipeBend` its misses of the outer torus from outside the outer tube, the rest
 ///   escalated (`PipeBend::intersect_f32`). The hit always equals [`Solid::hit`]'s but
 ///   for the certified path's f32 rounding where it proved one.
+/// * [`Solid::kept_by`]: a cull's verdict on the ray's line, `false` only where the line
+///   provably misses the solid: the torus's [`crate::Torus::with_cull`] step, the
+///   toroid's [`crate::family::Toroid::kept_by`] (the cull on the circular image, declined
+///   and keeping every ray where the cull does not accept the member's shape), the bend's
+///   [`crate::bend::PipeBend::kept_by`] (the cull on the outer torus; a
+///   [`crate::bend::WedgeCull`] adds the segment's wedge).
 /// * [`Solid::spawn`] / [`Solid::spawn_f64`]: the secondary ray leaving the hit at `t`
 ///   on `ray`, its origin moved onto the surface (the face, for a bend) and marked as
 ///   starting there, so the next [`Solid::hit`] skips the origin's own root.
@@ -46,7 +53,9 @@ use std::fmt;
 ///   distance of an elliptical horn or spindle ([`PointQueryError::Unsupported`]).
 ///
 /// The trait is object safe: a scene of one face type holds `Box<dyn Solid<Face = F>>`;
-/// of any shape, `Box<dyn crate::RayCast>`, which all three implement too.
+/// of any shape, `Box<dyn crate::RayCast>`, which all three implement too. Its one generic
+/// verb, [`Solid::kept_by`], is for a concrete shape (`where Self: Sized`), so that a
+/// loop over rays stays monomorphic in the cull.
 ///
 /// ```
 /// use glam::{DVec3, Vec3};
@@ -74,7 +83,7 @@ use std::fmt;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub trait Solid {
-    /// The face type of the solid's hits, crossings and projections: [`super::NoFace`]
+    /// The face type of the solid's hits, crossings and projections: [`crate::NoFace`]
     /// for a one-face solid, `BendFace` for a pipe bend.
     type Face: Copy + Default + PartialEq + fmt::Debug;
 
@@ -108,6 +117,28 @@ pub trait Solid {
     /// nothing (trait docs: what each shape proves).
     #[must_use]
     fn hit_f32_certified(&self, ray: &Ray) -> SolidF32Hit<Self::Face>;
+
+    /// Whether `cull` keeps the ray: `false` only if the ray's line provably misses the
+    /// solid, so a renderer skips the exact intersection for it; `true` otherwise,
+    /// including every ray of a shape the cull is not proved for (the cull is declined).
+    ///
+    /// **Why one verb generic over the cull and the precision.** A cull is a test on the
+    /// line in the frame of a torus that bounds the solid (the torus itself, a toroid's
+    /// circular image, a bend's outer torus), taken in f32 whatever the ray's precision
+    /// ([`Cull::keeps`]): so one method answers an f32 [`Ray`] and an f64 [`DRay`] alike
+    /// (`Ray<P>`), where the exact verbs come in twins. It is generic in `C`, not
+    /// `&dyn Cull`, so that a loop over rays calls the cull's kernel directly (a shared
+    /// indirect call cost 7–10 % on the family's ring members); `C: ?Sized` still takes
+    /// a `&dyn Cull` where the cull is chosen at run time. `where Self: Sized` keeps the
+    /// trait object safe.
+    ///
+    /// **Conservative:** the solid must lie inside the bounding torus the cull is applied
+    /// to (with the culls' margin, [`crate::CullBounds`]); a new shape without such a
+    /// torus keeps every ray.
+    #[must_use]
+    fn kept_by<C: Cull + ?Sized, P: Precision>(&self, cull: &C, ray: &Ray<P>) -> bool
+    where
+        Self: Sized;
 
     /// The secondary f32 ray leaving the hit at `t` on `ray` in direction `dir`.
     ///
