@@ -542,6 +542,44 @@ fn f_prime_candidates_give_the_same_class() {
     }
 }
 
+/// `classify_unless` stops early only where the full label would be thrown away, and
+/// otherwise gives that label bit for bit: for a threshold at the band (the `hole`
+/// sampler's) and at a grazing push's lower edge, on every kind of random line.
+#[test]
+fn classify_unless_is_classify_where_it_does_not_stop() {
+    let mut rng = Pcg64::seed_from_u64(7);
+    let (mut stopped, mut kept) = (0, 0);
+    for nu in NUS {
+        let (big, small) = (nu, 1.0);
+        for i in 0..1200 {
+            let pose = Pose::random(&mut rng, big, small);
+            let (o, d, t0, t1, name) = random_line(&mut rng, &pose, i % 6);
+            let query = pose.query(o, d, t0, t1);
+            let label = query.classify();
+            for floor in [pose.band(), -1e-4 * small - 1e-6 * (big + small)] {
+                let rejects = |m: f64| m <= floor;
+                match query.classify_unless(rejects) {
+                    None => {
+                        assert!(rejects(label.margin), "nu {nu} {name} #{i}: {label:?}");
+                        stopped += 1;
+                    }
+                    Some(l) => {
+                        assert_eq!(l.class, label.class, "nu {nu} {name} #{i}");
+                        assert_eq!(l.margin.to_bits(), label.margin.to_bits(), "{name} #{i}");
+                        assert!(!rejects(l.margin), "nu {nu} {name} #{i}: {l:?}");
+                        kept += 1;
+                    }
+                }
+            }
+        }
+    }
+    // Both ways are exercised.
+    assert!(
+        stopped > 1000 && kept > 1000,
+        "stopped {stopped}, kept {kept}"
+    );
+}
+
 #[test]
 fn f32_wrappers_agree_with_sampling_on_random_rays() {
     let mut rng = Pcg64::seed_from_u64(5);

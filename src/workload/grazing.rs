@@ -1,7 +1,7 @@
 //! `grazing`: lines tangent to the surface, pushed off it by a signed fraction of r.
 
 use super::{Batch, Frame, GenerateError, rejection_sample};
-use crate::oracle::classify;
+use crate::oracle::Query;
 use glam::DVec3;
 use rand::RngExt;
 use rand_pcg::Pcg64;
@@ -44,7 +44,10 @@ pub(super) fn fill(
         let d = along_ring * alpha.cos() + along_tube * alpha.sin();
         let touch = point + normal * offset;
         let ray = frame.ray(touch - d * frame.outer(), d);
-        if (classify(&frame.torus, &ray).margin - offset).abs() <= tolerance {
+        // A candidate is thrown away as soon as its margin is proved below δ·r − tolerance.
+        let too_deep = |m: f64| m - offset < -tolerance;
+        let label = Query::ray(&frame.torus, &ray).classify_unless(too_deep);
+        if label.is_some_and(|l| (l.margin - offset).abs() <= tolerance) {
             batch.rays.push(ray);
             batch.offsets.push(offset);
         }

@@ -1,7 +1,8 @@
 //! `hole`: lines that fall through the hole.
 
 use super::{Batch, Frame, GenerateError, rejection_sample, unit_vector};
-use crate::oracle::{OracleClass, classify};
+use crate::oracle::OracleClass::Miss;
+use crate::oracle::{OracleLabel, Query};
 use glam::DVec3;
 use rand::RngExt;
 use rand_pcg::Pcg64;
@@ -28,7 +29,13 @@ pub(super) fn fill(
         let crossing = DVec3::new(rho * phi.cos(), 0.0, rho * phi.sin());
         let d = unit_vector(rng);
         let ray = frame.ray(crossing - d * back, d);
-        if classify(&frame.torus, &ray).class == OracleClass::Miss {
+        // A candidate is thrown away as soon as its margin is proved not above the band.
+        let query = Query::ray(&frame.torus, &ray);
+        let not_miss = |m| OracleLabel::from_margin(m, query.major, query.minor).class != Miss;
+        if query
+            .classify_unless(not_miss)
+            .is_some_and(|label| label.class == Miss)
+        {
             batch.rays.push(ray);
         }
     })
