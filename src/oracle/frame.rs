@@ -51,9 +51,15 @@ pub(super) fn s_of_t(s0: f64, len: f64, t: f64) -> f64 {
 /// (ρ, y) of the point `p + s u`: its distance from the axis and its height along it,
 /// from the point itself.
 pub(super) fn meridian(p: DVec3, u: DVec3, axis: DVec3, s: f64) -> (f64, f64) {
-    let x = p + s * u;
-    let y = x.dot(axis);
-    ((x - y * axis).length(), y)
+    let (y, radial) = across_axis(p + s * u, axis);
+    (radial.length(), y)
+}
+
+/// A point relative to the centre split along the unit `axis`: its height `y` on the axis
+/// and its part across it, `rel − y·axis` (of length ρ, the distance from the axis).
+pub(super) fn across_axis(rel: DVec3, axis: DVec3) -> (f64, DVec3) {
+    let y = rel.dot(axis);
+    (y, rel - axis * y)
 }
 
 /// a·b − c·d to about one rounding of the result (Kahan's algorithm with a fused
