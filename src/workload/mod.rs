@@ -190,9 +190,13 @@ pub fn generate(
         camera: None,
     };
     match case {
-        Case::Hole => hole::fill(&frame, count, &mut rng, &mut batch)?,
+        Case::Hole => rejection_sample(&mut batch, count, hole::MAX_TRIES_PER_RAY, |b| {
+            hole::candidate(&frame, &mut rng, b)
+        })?,
         Case::OuterBand => outer_band::fill(&frame, count, &mut rng, &mut batch),
-        Case::Grazing => grazing::fill(&frame, count, &mut rng, &mut batch)?,
+        Case::Grazing => rejection_sample(&mut batch, count, grazing::MAX_TRIES_PER_RAY, |b| {
+            grazing::candidate(&frame, &mut rng, b)
+        })?,
         Case::Uniform => uniform::fill(&frame, count, &mut rng, &mut batch),
         Case::Camera => camera::fill(&frame, count, &mut rng, &mut batch),
     }
