@@ -1,7 +1,7 @@
 //! `grazing`: lines tangent to the surface, pushed off it by a signed fraction of r.
 
 use super::{Batch, Frame};
-use crate::oracle::Query;
+use crate::oracle::{OracleLabel, Query};
 use glam::DVec3;
 use rand::RngExt;
 use rand_pcg::Pcg64;
@@ -16,7 +16,8 @@ pub const GRAZING_TOLERANCE_REL: f64 = 1e-6;
 /// Candidates per requested ray before giving up.
 pub(super) const MAX_TRIES_PER_RAY: usize = 200;
 
-/// One candidate of the rejection sampling ([`super::rejection_sample`]).
+/// One candidate of the rejection sampling ([`super::rejection_sample`]): pushed to `batch`
+/// if kept, and its oracle label returned.
 ///
 /// Distribution: a tangent point uniform in the torus parameters (φ, θ), a direction of
 /// uniform angle in the tangent plane there, and the line pushed along the outward normal
@@ -24,7 +25,7 @@ pub(super) const MAX_TRIES_PER_RAY: usize = 200;
 /// line. A candidate whose closest approach is not at its tangent point (on the saddle
 /// side a tangent line can dip into the tube elsewhere) is redrawn, so every ray's oracle
 /// margin is within `GRAZING_TOLERANCE_REL·(R + r)` of δ·r.
-pub(super) fn candidate(frame: &Frame, rng: &mut Pcg64, batch: &mut Batch) {
+pub(super) fn candidate(frame: &Frame, rng: &mut Pcg64, batch: &mut Batch) -> Option<OracleLabel> {
     let (big_r, small_r) = (frame.major, frame.minor);
     let offset = GRAZING_OFFSETS[batch.rays.len() % GRAZING_OFFSETS.len()] * small_r;
     let phi = rng.random_range(0.0..std::f64::consts::TAU);
@@ -43,9 +44,10 @@ pub(super) fn candidate(frame: &Frame, rng: &mut Pcg64, batch: &mut Batch) {
     // A candidate is thrown away as soon as its margin is proved below δ·r − tolerance.
     let tolerance = GRAZING_TOLERANCE_REL * frame.outer();
     let too_deep = |m: f64| m - offset < -tolerance;
-    let label = Query::ray(&frame.torus, &ray).classify_unless(too_deep);
-    if label.is_some_and(|l| (l.margin - offset).abs() <= tolerance) {
-        batch.rays.push(ray);
-        batch.offsets.push(offset);
-    }
+    let label = Query::ray(&frame.torus, &ray)
+        .classify_unless(too_deep)
+        .filter(|l| (l.margin - offset).abs() <= tolerance)?;
+    batch.rays.push(ray);
+    batch.offsets.push(offset);
+    Some(label)
 }
