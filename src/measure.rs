@@ -5,7 +5,7 @@
 use crate::errata::PrintedCull;
 use crate::oracle::{OracleClass, OracleLabel, classify};
 use crate::results::RejectionRecord;
-use crate::workload::{Batch, Case, GenerateError, generate, spec::Workload};
+use crate::workload::{Batch, Case, GenerateError, generate_labeled, spec::Workload};
 use torus_cull::{Cull, CullKind, CullVisitor, Named, Ray};
 
 /// A cull the harness can count: a real one, or a paper-as-printed test fixture (counted
@@ -85,8 +85,8 @@ impl LabeledBatch {
         case: Case,
         nu: f64,
     ) -> Result<LabeledBatch, GenerateError> {
-        let batch = generate(case, nu, workload.rays, workload.seed, workload.pose)?;
-        Ok(LabeledBatch::label(batch))
+        let (batch, labels) = generate_labeled(workload, case, nu)?;
+        Ok(LabeledBatch { batch, labels })
     }
 
     /// Label an existing batch.

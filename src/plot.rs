@@ -344,39 +344,14 @@ pub fn plot_results(
 }
 
 /// An estimate whose benchmark id reads `group/cull/ν` (`gpu_ns-hole/cychosz/2`,
-/// `total_ns-hole/skala/2`): one point of a chart per group.
-struct Estimate<'a> {
-    group: &'a str,
-    cull: &'a str,
-    nu: f64,
-    record: &'a EstimateRecord,
-}
-
-impl<'a> Estimate<'a> {
-    /// `None` for an id of another shape (the solver and BVH benchmarks).
-    fn of(record: &'a EstimateRecord) -> Option<Estimate<'a>> {
-        let mut parts = record.benchmark.split('/');
-        let (group, cull, nu) = (parts.next()?, parts.next()?, parts.next()?);
-        let nu: f64 = nu.parse().ok()?;
-        (parts.next().is_none() && nu.is_finite()).then_some(Estimate {
-            group,
-            cull,
-            nu,
-            record,
-        })
-    }
-}
-
-impl Record for Estimate<'_> {
-    fn group(&self) -> String {
-        self.group.to_string()
-    }
-    fn cull(&self) -> &str {
-        self.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
-    }
+/// `total_ns-hole/skala/2`) placed by it: one point of a chart per group; `None` for an id
+/// of another shape (the solver and BVH benchmarks).
+fn placed_estimate(record: &EstimateRecord) -> Option<Placed<'_, EstimateRecord>> {
+    let mut parts = record.benchmark.split('/');
+    let (group, cull, nu) = (parts.next()?, parts.next()?, parts.next()?);
+    let x: f64 = nu.parse().ok()?;
+    let place = Place::new(group.to_string(), cull, x);
+    (parts.next().is_none() && x.is_finite()).then_some(Placed { place, record })
 }
 
 /// One chart per estimate group: ns per element against ν, one line per cull, with the
@@ -385,8 +360,9 @@ fn estimate_charts(
     records: &[EstimateRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let estimates: Vec<Estimate> = records.iter().filter_map(Estimate::of).collect();
-    for group in ordered(estimates.iter().map(Record::group)) {
+    let estimates: Vec<Placed<EstimateRecord>> =
+        records.iter().filter_map(placed_estimate).collect();
+    for group in ordered(estimates.iter().map(|e| e.place().group)) {
         let pts = lines(&estimates, &group, |e| {
             Some((e.record.ns_per_element, Some(e.record.ns_per_element_ci)))
         });
@@ -485,7 +461,7 @@ fn group_charts<R: Record>(
     (name_prefix, title_prefix): (&str, &str),
     specs: &[GroupChart<R>],
 ) -> Result<(), Box<dyn std::error::Error>> {
-    for group in ordered(records.iter().map(Record::group)) {
+    for group in ordered(records.iter().map(|r| r.place().group)) {
         for &(suffix, title, y, value) in specs {
             charts.chart(
                 format!("{name_prefix}{group}-{suffix}"),
@@ -550,11 +526,11 @@ fn ratio_charts(
     records: &[RatioRecord],
     charts: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    for group in ordered(records.iter().map(Record::group)) {
+    for group in ordered(records.iter().map(|r| r.place().group)) {
         let ratios = lines(records, &group, |r| {
             Some((r.ratio, Some(r.ratio_ci_between.unwrap_or(r.ratio_ci))))
         });
-        let Some(first) = records.iter().find(|r| r.group() == group) else {
+        let Some(first) = records.iter().find(|r| r.place().group == group) else {
             continue;
         };
         charts.chart(
@@ -594,14 +570,17 @@ fn lines<R: Record>(
     group: &str,
     y: impl Fn(&R) -> Option<(f64, Option<[f64; 2]>)>,
 ) -> Vec<Line> {
-    ordered(records.iter().map(|r| r.cull().to_string()))
+    ordered(records.iter().map(|r| r.place().cull.to_string()))
         .into_iter()
         .enumerate()
         .map(|(colour, cull)| {
             let pts = records
                 .iter()
-                .filter(|r| r.group() == group && r.cull() == cull)
-                .filter_map(|r| y(r).map(|(v, ci)| (r.nu(), v, ci)))
+                .filter_map(|r| {
+                    let place = r.place();
+                    (place.group == group && place.cull == cull).then_some((place.x, r))
+                })
+                .filter_map(|(x, r)| y(r).map(|(v, ci)| (x, v, ci)))
                 .collect();
             Line {
                 name: cull,
@@ -612,28 +591,48 @@ fn lines<R: Record>(
         .collect()
 }
 
-/// What the charts need of a record: its chart (case, or scene and ray set), its series
-/// (the cull) and its x (ν).
+/// Where a record sits on the charts: its chart (`group`: the case, or the scene and ray
+/// set, …), its line (the cull) and its x (ν, or the shape's own parameter).
+#[derive(Clone)]
+struct Place<'a> {
+    group: String,
+    cull: &'a str,
+    x: f64,
+}
+
+impl<'a> Place<'a> {
+    fn new(group: String, cull: &'a str, x: f64) -> Place<'a> {
+        Place { group, cull, x }
+    }
+}
+
+/// What the charts need of a record: its [`Place`].
 trait Record {
-    fn group(&self) -> String;
-    fn cull(&self) -> &str;
-    fn nu(&self) -> f64;
+    fn place(&self) -> Place<'_>;
+}
+
+/// A record with its place worked out beforehand, where the place is not among its fields
+/// (an estimate's benchmark id, a check class's parameters, a family member's aspect).
+struct Placed<'a, R> {
+    place: Place<'a>,
+    record: &'a R,
+}
+
+impl<R> Record for Placed<'_, R> {
+    fn place(&self) -> Place<'_> {
+        self.place.clone()
+    }
 }
 
 impl Record for RejectionRecord {
-    fn group(&self) -> String {
-        self.case.clone()
-    }
-    fn cull(&self) -> &str {
-        &self.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
+    fn place(&self) -> Place<'_> {
+        Place::new(self.case.clone(), &self.cull, self.nu)
     }
 }
 
+/// Each mode, precision and device on charts of its own.
 impl Record for TimingRecord {
-    fn group(&self) -> String {
+    fn place(&self) -> Place<'_> {
         let mut group = self.case.clone();
         if self.is_batch() {
             group += "-batch";
@@ -644,37 +643,27 @@ impl Record for TimingRecord {
         if self.device != CPU_DEVICE {
             group += &format!("-{}", self.device);
         }
-        group
-    }
-    fn cull(&self) -> &str {
-        &self.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
+        Place::new(group, &self.cull, self.nu)
     }
 }
 
 impl Record for BvhRecord {
-    fn group(&self) -> String {
-        format!("{}-{}", self.scene, self.ray_set)
-    }
-    fn cull(&self) -> &str {
-        &self.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
+    fn place(&self) -> Place<'_> {
+        Place::new(
+            format!("{}-{}", self.scene, self.ray_set),
+            &self.cull,
+            self.nu,
+        )
     }
 }
 
 impl Record for RatioRecord {
-    fn group(&self) -> String {
-        format!("{}-{}-vs-{}", self.case, self.metric, self.reference)
-    }
-    fn cull(&self) -> &str {
-        &self.cull
-    }
-    fn nu(&self) -> f64 {
-        self.nu
+    fn place(&self) -> Place<'_> {
+        Place::new(
+            format!("{}-{}-vs-{}", self.case, self.metric, self.reference),
+            &self.cull,
+            self.nu,
+        )
     }
 }
 

@@ -332,32 +332,25 @@ pub(super) mod tests {
 
     #[test]
     fn ratio_verdicts_need_the_threshold_and_disjoint_intervals() {
-        let old = results(
-            vec![
-                record("skala", 0.80, [0.79, 0.81]),
-                record("aabb", 0.80, [0.79, 0.81]),
-                record("sphere", 0.80, [0.70, 0.90]),
-                record("thick_cylinder", 0.80, [0.79, 0.81]),
-                record("none", 1.20, [1.19, 1.21]),
-                record("aabb_alone", 0.50, [0.49, 0.51]),
-            ],
-            Vec::new(),
-        );
-        let new = results(
-            vec![
-                // 25 % worse, intervals apart: a regression.
-                record("skala", 1.00, [0.99, 1.01]),
-                // 5 % worse, under the 10 % threshold: nothing.
-                record("aabb", 0.84, [0.835, 0.845]),
-                // 25 % worse, but the intervals overlap: noise.
-                record("sphere", 1.00, [0.85, 1.15]),
-                // 25 % better, apart: faster.
-                record("thick_cylinder", 0.60, [0.59, 0.61]),
-                // A cull-alone ratio 30 % worse, apart: shown, not a regression.
-                record("aabb_alone", 0.65, [0.64, 0.66]),
-            ],
-            Vec::new(),
-        );
+        // Each cull's (ratio, interval) in the old file and in the new one.
+        let pairs = [
+            ("skala", (0.80, [0.79, 0.81]), (1.00, [0.99, 1.01])), // 25 % worse, apart: regression
+            ("aabb", (0.80, [0.79, 0.81]), (0.84, [0.835, 0.845])), // 5 % worse: under 10 %
+            ("sphere", (0.80, [0.70, 0.90]), (1.00, [0.85, 1.15])), // overlapping: noise
+            ("thick_cylinder", (0.80, [0.79, 0.81]), (0.60, [0.59, 0.61])), // 25 % better: faster
+            ("aabb_alone", (0.50, [0.49, 0.51]), (0.65, [0.64, 0.66])), // alone: no verdict
+        ];
+        let mut old: Vec<RatioRecord> = pairs
+            .iter()
+            .map(|&(cull, (ratio, ci), _)| record(cull, ratio, ci))
+            .collect();
+        // Only in the old file.
+        old.push(record("none", 1.20, [1.19, 1.21]));
+        let new = pairs
+            .iter()
+            .map(|&(cull, _, (ratio, ci))| record(cull, ratio, ci))
+            .collect();
+        let (old, new) = (results(old, Vec::new()), results(new, Vec::new()));
         let report = compare(&old, &new, 0.10);
         assert_eq!(report.regressions(), 1);
         let skala = flags_of(&report, "skala");
@@ -415,36 +408,28 @@ pub(super) mod tests {
 
     #[test]
     fn a_faster_reference_is_not_a_slower_cull() {
-        let against = |cull: &str, reference: &str, ratio: f64, ns: f64, ref_ns: f64| RatioRecord {
-            reference: reference.into(),
-            metric: "total_ns".into(),
-            ns_per_ray: ns,
-            reference_ns_per_ray: ref_ns,
-            ..record(cull, ratio, [ratio * 0.99, ratio * 1.01])
-        };
-        let old = results(
-            vec![
-                against("skala", "none", 0.5, 50.0, 100.0),
-                against("cychosz", "none", 0.8, 80.0, 100.0),
-                against("none", "cychosz", 1.25, 100.0, 80.0),
-                against("skala", "cychosz", 0.625, 50.0, 80.0),
-                against("aabb", "cychosz", 0.9, 72.0, 80.0),
-            ],
-            Vec::new(),
-        );
-        let new = results(
-            vec![
-                // The intersection 40 % faster: skala's ratio against none 0.5 -> 0.8.
-                against("skala", "none", 0.8, 48.0, 60.0),
-                against("cychosz", "none", 1.0, 60.0, 60.0),
-                against("none", "cychosz", 1.0, 60.0, 60.0),
-                // cychosz 25 % faster, skala the same: its ratio grew 28 %.
-                against("skala", "cychosz", 0.8, 48.0, 60.0),
-                // aabb itself 50 % slower against an unchanged reference: a regression.
-                against("aabb", "cychosz", 1.35, 108.0, 80.0),
-            ],
-            Vec::new(),
-        );
+        // (cull, reference): (ratio, ns, reference's ns) in the old file and in the new one.
+        let pairs = [
+            // The intersection 40 % faster: skala's ratio against none 0.5 -> 0.8.
+            (("skala", "none"), (0.5, 50.0, 100.0), (0.8, 48.0, 60.0)),
+            (("cychosz", "none"), (0.8, 80.0, 100.0), (1.0, 60.0, 60.0)),
+            (("none", "cychosz"), (1.25, 100.0, 80.0), (1.0, 60.0, 60.0)),
+            // cychosz 25 % faster, skala the same: its ratio grew 28 %.
+            (("skala", "cychosz"), (0.625, 50.0, 80.0), (0.8, 48.0, 60.0)),
+            // aabb itself 50 % slower against an unchanged reference: a regression.
+            (("aabb", "cychosz"), (0.9, 72.0, 80.0), (1.35, 108.0, 80.0)),
+        ];
+        let against =
+            |(cull, reference): (&str, &str), (ratio, ns, ref_ns): (f64, f64, f64)| RatioRecord {
+                reference: reference.into(),
+                metric: "total_ns".into(),
+                ns_per_ray: ns,
+                reference_ns_per_ray: ref_ns,
+                ..record(cull, ratio, [ratio * 0.99, ratio * 1.01])
+            };
+        let file = |records: Vec<RatioRecord>| results(records, Vec::new());
+        let old = file(pairs.iter().map(|&(k, old, _)| against(k, old)).collect());
+        let new = file(pairs.iter().map(|&(k, _, new)| against(k, new)).collect());
         let report = compare(&old, &new, 0.10);
         let flagged: Vec<_> = report.rows.iter().filter(|r| r.regression).collect();
         assert_eq!(flagged.len(), 1, "{:#?}", report.rows);

@@ -4,6 +4,7 @@
 use super::Query;
 use super::interval::{bisect, cubic_real_roots};
 use glam::DVec3;
+use std::ops::ControlFlow;
 
 /// Up to how far from the foot point, in units of R + r, the origin may be for the plain
 /// foot point `q − (q·u) u` (error about 1e-16·|q|, a fifth of the ambiguity band there);
@@ -50,9 +51,15 @@ pub(super) fn s_of_t(s0: f64, len: f64, t: f64) -> f64 {
 /// (ρ, y) of the point `p + s u`: its distance from the axis and its height along it,
 /// from the point itself.
 pub(super) fn meridian(p: DVec3, u: DVec3, axis: DVec3, s: f64) -> (f64, f64) {
-    let x = p + s * u;
-    let y = x.dot(axis);
-    ((x - y * axis).length(), y)
+    let (y, radial) = across_axis(p + s * u, axis);
+    (radial.length(), y)
+}
+
+/// A point relative to the centre split along the unit `axis`: its height `y` on the axis
+/// and its part across it, `rel − y·axis` (of length ρ, the distance from the axis).
+pub(super) fn across_axis(rel: DVec3, axis: DVec3) -> (f64, DVec3) {
+    let y = rel.dot(axis);
+    (y, rel - axis * y)
 }
 
 /// a·b − c·d to about one rounding of the result (Kahan's algorithm with a fused
@@ -214,16 +221,44 @@ impl LineFrame {
         vec![self.s_m - off, self.s_m, self.s_m + off]
     }
 
-    /// Every critical point of D (both kinds) and every breakpoint, within [lo, hi].
+    /// Every critical point of D (both kinds) and every breakpoint, within [lo, hi]: those
+    /// of [`LineFrame::each_d_candidate`], collected in its order.
+    pub(super) fn d_candidates(&self, lo: f64, hi: f64) -> Vec<f64> {
+        let mut out = Vec::new();
+        let _ = self.each_d_candidate(lo, hi, &mut |s| {
+            out.push(s);
+            ControlFlow::Continue(())
+        });
+        out
+    }
+
+    /// Hands `visit` every critical point of D (both kinds) and every breakpoint within
+    /// [lo, hi], the breakpoints first, then each monotone piece's root from left to right;
+    /// stops where `visit` breaks. One candidate at a time, so that a caller who has its
+    /// answer after a few (a margin already too low) need not bisect the other pieces.
     ///
     /// Critical points satisfy |x·u| = R|A(s − s_m)|/ρ ≤ R√A ≤ R, so they lie in
     /// |s + p·u| ≤ R; the scan covers a little more.
-    pub(super) fn d_candidates(&self, lo: f64, hi: f64) -> Vec<f64> {
+    pub(super) fn each_d_candidate(
+        &self,
+        lo: f64,
+        hi: f64,
+        visit: &mut dyn FnMut(f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let mut in_range = |s: f64| {
+            if s >= lo && s <= hi {
+                visit(s)
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
         let reach = 1.01 * self.major + self.e.abs() + f64::MIN_POSITIVE;
         let mut cuts = vec![-reach];
         cuts.extend(self.breakpoints().into_iter().filter(|s| s.abs() < reach));
         cuts.push(reach);
-        let mut out: Vec<f64> = cuts[1..cuts.len() - 1].to_vec();
+        for &s in &cuts[1..cuts.len() - 1] {
+            in_range(s)?;
+        }
         for w in cuts.windows(2) {
             let (a, b) = (w[0], w[1]);
             if a >= b {
@@ -232,18 +267,19 @@ impl LineFrame {
             let ha = self.half_slope(a, 1.0);
             let hb = self.half_slope(b, -1.0);
             if ha == 0.0 {
-                out.push(a);
+                in_range(a)?;
             }
             if hb == 0.0 {
-                out.push(b);
+                in_range(b)?;
             }
             if (ha < 0.0) != (hb < 0.0) && ha != 0.0 && hb != 0.0 {
                 // Inside the open piece ρ > 0 (or m2 > 0), so the plain formula is fine.
-                out.extend(bisect(&|s| self.half_slope(s, 0.0), a, b, ha));
+                if let Some(s) = bisect(&|s| self.half_slope(s, 0.0), a, b, ha) {
+                    in_range(s)?;
+                }
             }
         }
-        out.retain(|&s| s >= lo && s <= hi);
-        out
+        ControlFlow::Continue(())
     }
 
     /// The real roots of F′(s), F the torus quartic written in s:

@@ -29,7 +29,7 @@
 //!   the range: hit or miss, ambiguous within the band of `t_max`; the margin is that of
 //!   the range, negative (the ray runs inside the tube).
 
-use super::frame::LineFrame;
+use super::frame::{LineFrame, across_axis};
 use super::spawned_rule::{SpawnedLine, miss_by};
 use super::{OracleClass, OracleLabel, Query, reference_roots};
 use glam::DVec3;
@@ -124,8 +124,7 @@ fn decide(query: &Query) -> Option<(OracleLabel, Option<f64>)> {
 fn moved_onto_surface(query: &Query) -> (DVec3, f64) {
     let axis = query.axis.normalize();
     let rel = query.o - query.center;
-    let y = rel.dot(axis);
-    let radial = rel - axis * y;
+    let (_, radial) = across_axis(rel, axis);
     let rho = radial.length();
     if rho.is_nan() || rho <= 0.0 {
         return (query.o, 0.0);
@@ -145,8 +144,7 @@ fn moved_onto_surface(query: &Query) -> (DVec3, f64) {
 fn off_surface_at(query: &Query, x: DVec3) -> (f64, DVec3) {
     let axis = query.axis.normalize();
     let rel = x - query.center;
-    let y = rel.dot(axis);
-    let radial = rel - axis * y;
+    let (_, radial) = across_axis(rel, axis);
     let rho = radial.length();
     let core = if rho > 0.0 {
         radial * (query.major / rho)

@@ -9,13 +9,10 @@ use rand_pcg::Pcg64;
 const NUS: [f64; 4] = [1.1, 2.0, 10.0, 32.0];
 const INF: f64 = f64::INFINITY;
 
-/// A torus pose in f64: centre, unit axis and two unit vectors completing the frame.
+/// A torus pose in f64: its frame and its radii.
 #[derive(Clone, Copy)]
 struct Pose {
-    c: DVec3,
-    a: DVec3,
-    x: DVec3,
-    z: DVec3,
+    frame: Frame,
     big: f64,
     small: f64,
 }
@@ -23,35 +20,22 @@ struct Pose {
 impl Pose {
     fn canonical(big: f64, small: f64) -> Pose {
         Pose {
-            c: DVec3::ZERO,
-            a: DVec3::Y,
-            x: DVec3::X,
-            z: DVec3::Z,
+            frame: Frame::CANONICAL,
             big,
             small,
         }
     }
     fn random(rng: &mut Pcg64, big: f64, small: f64) -> Pose {
-        let (c, a, x, z) = random_frame(rng, big);
         Pose {
-            c,
-            a,
-            x,
-            z,
+            frame: Frame::random(rng, big),
             big,
             small,
         }
     }
-    fn point(&self, l: DVec3) -> DVec3 {
-        self.c + l.x * self.x + l.y * self.a + l.z * self.z
-    }
-    fn dir(&self, l: DVec3) -> DVec3 {
-        l.x * self.x + l.y * self.a + l.z * self.z
-    }
     fn query(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Query {
         Query {
-            center: self.c,
-            axis: self.a,
+            center: self.frame.c,
+            axis: self.frame.a,
             major: self.big,
             minor: self.small,
             o,
@@ -71,9 +55,10 @@ impl Pose {
     }
     /// g = D − r at o + t d, straight from the definition in world coordinates.
     fn g(&self, o: DVec3, d: DVec3, t: f64) -> f64 {
-        let x = o + t * d - self.c;
-        let y = x.dot(self.a);
-        ((x - y * self.a).length() - self.big).hypot(y) - self.small
+        let (c, a) = (self.frame.c, self.frame.a);
+        let x = o + t * d - c;
+        let y = x.dot(a);
+        ((x - y * a).length() - self.big).hypot(y) - self.small
     }
     fn band(&self) -> f64 {
         AMBIGUITY_REL * (self.big + self.small)
@@ -94,17 +79,47 @@ pub(super) fn unit(rng: &mut Pcg64) -> DVec3 {
     crate::random::ball_direction(rng, 1e-4)
 }
 
-/// A random pose's frame: a centre within ±5 `scale` on each axis, a unit axis, and two
-/// unit vectors completing the frame: (c, a, x, z).
-pub(super) fn random_frame(rng: &mut Pcg64, scale: f64) -> (DVec3, DVec3, DVec3, DVec3) {
-    let a = unit(rng);
-    let (x, z) = a.any_orthonormal_pair();
-    let c = DVec3::new(
-        rng.random_range(-5.0..5.0),
-        rng.random_range(-5.0..5.0),
-        rng.random_range(-5.0..5.0),
-    ) * scale;
-    (c, a, x, z)
+/// A test pose's frame: its centre `c`, unit axis `a` and two unit vectors `x`, `z`
+/// completing it; the ring's and the family's tests give their lines in it (the torus
+/// frame) and place them in the world with it.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Frame {
+    pub(super) c: DVec3,
+    pub(super) a: DVec3,
+    pub(super) x: DVec3,
+    pub(super) z: DVec3,
+}
+
+impl Frame {
+    /// Centred at the origin, the axis +y.
+    pub(super) const CANONICAL: Frame = Frame {
+        c: DVec3::ZERO,
+        a: DVec3::Y,
+        x: DVec3::X,
+        z: DVec3::Z,
+    };
+
+    /// A centre within ±5 `scale` on each axis and a random unit axis.
+    pub(super) fn random(rng: &mut Pcg64, scale: f64) -> Frame {
+        let a = unit(rng);
+        let (x, z) = a.any_orthonormal_pair();
+        let c = DVec3::new(
+            rng.random_range(-5.0..5.0),
+            rng.random_range(-5.0..5.0),
+            rng.random_range(-5.0..5.0),
+        ) * scale;
+        Frame { c, a, x, z }
+    }
+
+    /// The world point of the torus-frame point `l`.
+    pub(super) fn point(&self, l: DVec3) -> DVec3 {
+        self.c + l.x * self.x + l.y * self.a + l.z * self.z
+    }
+
+    /// The world direction of the torus-frame direction `l`.
+    pub(super) fn dir(&self, l: DVec3) -> DVec3 {
+        l.x * self.x + l.y * self.a + l.z * self.z
+    }
 }
 
 fn close(a: f64, b: f64, tol: f64) -> bool {
@@ -242,7 +257,7 @@ fn exact_grazing_lines_have_margin_equal_to_the_push() {
         ] {
             for delta in [1e-2, -1e-2, 1e-4, -1e-4, 1e-6, -1e-6] {
                 for (pt, dir) in exact_tangents(big, small, delta * small) {
-                    let (o, d) = (pose.point(pt - 3.0 * dir), pose.dir(dir) * 0.7);
+                    let (o, d) = (pose.frame.point(pt - 3.0 * dir), pose.frame.dir(dir) * 0.7);
                     let l = pose.label(o, d, -INF, INF);
                     // Rounding of the pose: ~1e-16 of |c| ≤ 9R.
                     let tol = 1e-13 * (big + small);
@@ -304,7 +319,7 @@ fn random_grazing_lines_touch_at_the_push() {
             let dir = psi.cos() * e_m + psi.sin() * e_phi;
             let delta = [1e-2, -1e-2, 1e-4, -1e-4, 1e-6, -1e-6][rng.random_range(0..6)];
             let push = delta * small;
-            let (o, d) = (pose.point(surf + push * n), pose.dir(dir));
+            let (o, d) = (pose.frame.point(surf + push * n), pose.frame.dir(dir));
             let tol = 1e-13 * (big + small);
             // The pushed point is at D = r + push and D′ = n·u = 0 there.
             assert!(close(pose.g(o, d, 0.0), push, tol));
@@ -361,8 +376,8 @@ fn random_line(
         _ => far_kind(rng, 100.0 * big, outer),
     };
     let (back, scale, t0, t1) = random_back_and_reach(rng, name, 100.0 * big, outer);
-    let o = pose.point(point - back * dir);
-    let d = pose.dir(dir) * scale;
+    let o = pose.frame.point(point - back * dir);
+    let d = pose.frame.dir(dir) * scale;
     (o, d, t0, t1, name)
 }
 
@@ -479,7 +494,7 @@ fn methods_agree_on_random_lines() {
                 counts[l.class as usize] += 1;
                 // Roots lie on the surface and their count fits the class.
                 let roots = pose.roots(o, d, t0, t1);
-                let scale = big + small + (o - pose.c).length().min(1e3 * big);
+                let scale = big + small + (o - pose.frame.c).length().min(1e3 * big);
                 for &t in &roots {
                     assert!(pose.g(o, d, t).abs() <= 1e-13 * scale, "{ctx} root {t}");
                     assert!(t >= t0 && t <= t1);
@@ -540,6 +555,44 @@ fn f_prime_candidates_give_the_same_class() {
             }
         }
     }
+}
+
+/// `classify_unless` stops early only where the full label would be thrown away, and
+/// otherwise gives that label bit for bit: for a threshold at the band (the `hole`
+/// sampler's) and at a grazing push's lower edge, on every kind of random line.
+#[test]
+fn classify_unless_is_classify_where_it_does_not_stop() {
+    let mut rng = Pcg64::seed_from_u64(7);
+    let (mut stopped, mut kept) = (0, 0);
+    for nu in NUS {
+        let (big, small) = (nu, 1.0);
+        for i in 0..1200 {
+            let pose = Pose::random(&mut rng, big, small);
+            let (o, d, t0, t1, name) = random_line(&mut rng, &pose, i % 6);
+            let query = pose.query(o, d, t0, t1);
+            let label = query.classify();
+            for floor in [pose.band(), -1e-4 * small - 1e-6 * (big + small)] {
+                let rejects = |m: f64| m <= floor;
+                match query.classify_unless(rejects) {
+                    None => {
+                        assert!(rejects(label.margin), "nu {nu} {name} #{i}: {label:?}");
+                        stopped += 1;
+                    }
+                    Some(l) => {
+                        assert_eq!(l.class, label.class, "nu {nu} {name} #{i}");
+                        assert_eq!(l.margin.to_bits(), label.margin.to_bits(), "{name} #{i}");
+                        assert!(!rejects(l.margin), "nu {nu} {name} #{i}: {l:?}");
+                        kept += 1;
+                    }
+                }
+            }
+        }
+    }
+    // Both ways are exercised.
+    assert!(
+        stopped > 1000 && kept > 1000,
+        "stopped {stopped}, kept {kept}"
+    );
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! left out); and, where the intersectors' t errors were measured, their answers per
 //! class ([`super::answers`]).
 
-use super::{Charts, Record, group_charts, provenance};
+use super::{Charts, Place, Placed, group_charts, provenance};
 use crate::check::record::{CheckFile, CullRecord};
 use std::path::{Path, PathBuf};
 
@@ -19,7 +19,7 @@ pub fn plot_check(
     let axes = &file.chart;
     let what = format!("{} rays a class", file.rays_per_class);
     let mut charts = Charts::new(out_dir, stem, provenance(what, &file.meta), &axes.x_title)?;
-    let points: Vec<CheckPoint<'_>> = file
+    let points: Vec<Placed<'_, CullRecord>> = file
         .classes
         .iter()
         .flat_map(|c| {
@@ -33,10 +33,9 @@ pub fn plot_check(
             c.culls
                 .iter()
                 .filter(|c| c.accepts)
-                .map(move |cull| CheckPoint {
-                    group: group.clone(),
-                    x,
-                    cull,
+                .map(move |cull| Placed {
+                    place: Place::new(group.clone(), &cull.cull, x),
+                    record: cull,
                 })
         })
         .collect();
@@ -50,10 +49,10 @@ pub fn plot_check(
                 "capture",
                 "capture of the misses beyond 1.25 eta",
                 "% of far misses rejected",
-                |p| p.cull.capture.map(|c| (100.0 * c, None)),
+                |p| p.record.capture.map(|c| (100.0 * c, None)),
             ),
             ("rejection", "rejection rate", "% of rays rejected", |p| {
-                Some((100.0 * p.cull.rejection_rate, None))
+                Some((100.0 * p.record.rejection_rate, None))
             }),
         ],
     )?;
@@ -64,25 +63,6 @@ pub fn plot_check(
         written.extend(super::answers::plot_answers(file, &prefix)?);
     }
     Ok(written)
-}
-
-/// One cull on one class, as a chart point.
-struct CheckPoint<'a> {
-    group: String,
-    x: f64,
-    cull: &'a CullRecord,
-}
-
-impl Record for CheckPoint<'_> {
-    fn group(&self) -> String {
-        self.group.clone()
-    }
-    fn cull(&self) -> &str {
-        &self.cull.cull
-    }
-    fn nu(&self) -> f64 {
-        self.x
-    }
 }
 
 /// `out_dir`, or `.` for the empty path (the parent of a bare file name).

@@ -4,27 +4,11 @@
 //! Δφ, one line per cull and per `wedge+<cull>` (and `wedge`, the wedge alone). A cull
 //! that declines a member's shape has no point there.
 
-use super::{Charts, GroupChart, Record, group_charts};
+use super::{Charts, GroupChart, Place, Placed, group_charts};
 use crate::results::shapes::ShapeRecord;
 
 /// One shape record as a chart point: its group and its x (ν, or Δφ for a bend).
-struct Point<'a> {
-    group: String,
-    x: f64,
-    record: &'a ShapeRecord,
-}
-
-impl Record for Point<'_> {
-    fn group(&self) -> String {
-        self.group.clone()
-    }
-    fn cull(&self) -> &str {
-        &self.record.counts.cull
-    }
-    fn nu(&self) -> f64 {
-        self.x
-    }
-}
+type Point<'a> = Placed<'a, ShapeRecord>;
 
 /// Miss capture and rejection rate, as `run`'s ring charts.
 fn specs<'a>() -> [GroupChart<Point<'a>>; 2] {
@@ -62,17 +46,16 @@ pub(super) fn charts(
     bends: &mut Charts<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
     fn point(r: &ShapeRecord) -> Point<'_> {
-        match (r.aspect, r.segment_deg) {
-            (Some(aspect), _) => Point {
-                group: format!("b{aspect}"),
-                x: r.counts.nu,
-                record: r,
-            },
-            (None, deg) => Point {
-                group: format!("bend-bore{}-nu{}", r.bore.unwrap_or_default(), r.counts.nu),
-                x: deg.unwrap_or(360.0),
-                record: r,
-            },
+        let (group, x) = match (r.aspect, r.segment_deg) {
+            (Some(aspect), _) => (format!("b{aspect}"), r.counts.nu),
+            (None, deg) => (
+                format!("bend-bore{}-nu{}", r.bore.unwrap_or_default(), r.counts.nu),
+                deg.unwrap_or(360.0),
+            ),
+        };
+        Placed {
+            place: Place::new(group, &r.counts.cull, x),
+            record: r,
         }
     }
     let (of_family, of_bends): (Vec<Point<'_>>, Vec<Point<'_>>) = records

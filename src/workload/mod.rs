@@ -29,6 +29,7 @@ pub use crate::random::unit_vector;
 pub use camera::CameraView;
 pub use grazing::GRAZING_OFFSETS;
 
+use crate::oracle::{OracleLabel, classify};
 use glam::{DMat3, DVec3};
 use rand::{RngExt, SeedableRng};
 use rand_pcg::Pcg64;
@@ -172,6 +173,35 @@ pub fn generate(
     seed: u64,
     pose: Pose,
 ) -> Result<Batch, GenerateError> {
+    draw(case, nu, count, seed, pose).map(|(batch, _)| batch)
+}
+
+/// [`generate`] for a workload's (case, ν), with the oracle's label of every ray
+/// ([`crate::oracle::classify`], ray mode): a rejection-sampled case (`hole`, `grazing`)
+/// kept each ray by its label, so those labels are handed on, not asked of the oracle a
+/// second time; the other cases' rays are labeled here.
+pub fn generate_labeled(
+    workload: &spec::Workload,
+    case: Case,
+    nu: f64,
+) -> Result<Drawn, GenerateError> {
+    let (batch, mut labels) = draw(case, nu, workload.rays, workload.seed, workload.pose)?;
+    if labels.len() != batch.rays.len() {
+        labels = batch
+            .rays
+            .iter()
+            .map(|r| classify(&batch.torus, r))
+            .collect();
+    }
+    Ok((batch, labels))
+}
+
+/// A batch and the oracle's labels of its rays.
+pub type Drawn = (Batch, Vec<OracleLabel>);
+
+/// The batch, with the labels of its rays where the case drew them by rejection sampling
+/// (none otherwise).
+fn draw(case: Case, nu: f64, count: usize, seed: u64, pose: Pose) -> Result<Drawn, GenerateError> {
     if !(nu.is_finite() && nu > 1.0) {
         return Err(GenerateError::BadNu(nu));
     }
@@ -189,14 +219,19 @@ pub fn generate(
         offsets: Vec::new(),
         camera: None,
     };
+    let mut labels = Vec::new();
     match case {
-        Case::Hole => hole::fill(&frame, count, &mut rng, &mut batch)?,
+        Case::Hole => rejection_sample(&mut batch, count, hole::MAX_TRIES_PER_RAY, |b| {
+            labels.extend(hole::candidate(&frame, &mut rng, b));
+        })?,
         Case::OuterBand => outer_band::fill(&frame, count, &mut rng, &mut batch),
-        Case::Grazing => grazing::fill(&frame, count, &mut rng, &mut batch)?,
+        Case::Grazing => rejection_sample(&mut batch, count, grazing::MAX_TRIES_PER_RAY, |b| {
+            labels.extend(grazing::candidate(&frame, &mut rng, b));
+        })?,
         Case::Uniform => uniform::fill(&frame, count, &mut rng, &mut batch),
         Case::Camera => camera::fill(&frame, count, &mut rng, &mut batch),
     }
-    Ok(batch)
+    Ok((batch, labels))
 }
 
 /// The torus at its pose, with the f64 torus-frame → world map used to place rays.

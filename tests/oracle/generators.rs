@@ -6,7 +6,8 @@ use glam::DVec3;
 use torus_cull::Named;
 use torus_cull::{Ray, Torus};
 use torus_cull_lab::oracle::{OracleClass, classify};
-use torus_cull_lab::workload::{Case, GRAZING_OFFSETS, Pose, generate};
+use torus_cull_lab::workload::spec::Workload;
+use torus_cull_lab::workload::{Case, GRAZING_OFFSETS, Pose, generate, generate_labeled};
 
 const NUS: [f64; 4] = [1.1, 2.0, 8.0, 32.0];
 
@@ -168,6 +169,30 @@ fn camera_frustum_contains_the_torus() {
         }
         for ray in &b.rays {
             assert!((ray.origin().as_dvec3() - cam.eye).length() < 1e-5);
+        }
+    }
+}
+
+/// `generate_labeled` draws the rays `generate` draws, and hands on with them the labels
+/// the oracle gives each (the samplers' own for `hole` and `grazing`), bit for bit.
+#[test]
+fn labeled_batches_carry_the_oracles_labels() {
+    let workload = Workload::drawn("t", 11, 300, "labeled batches");
+    for &case in Case::ALL {
+        for nu in [1.1, 4.0] {
+            let (batch, labels) = generate_labeled(&workload, case, nu).unwrap();
+            let plain = generate(case, nu, 300, 11, Pose::Random).unwrap();
+            assert_eq!(batch.rays, plain.rays, "{case} {nu}");
+            assert_eq!(labels.len(), batch.rays.len(), "{case} {nu}");
+            for (ray, label) in batch.rays.iter().zip(&labels) {
+                let asked = classify(&batch.torus, ray);
+                assert_eq!(label.class, asked.class, "{case} {nu} {ray:?}");
+                assert_eq!(
+                    label.margin.to_bits(),
+                    asked.margin.to_bits(),
+                    "{case} {nu}"
+                );
+            }
         }
     }
 }

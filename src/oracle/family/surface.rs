@@ -34,6 +34,7 @@
 
 use super::line::Line;
 use super::{FamilyQuery, nearest_on_ellipse};
+use crate::oracle::frame::across_axis;
 use crate::oracle::spawned_rule::SpawnedLine;
 use crate::oracle::{OracleClass, OracleLabel};
 use glam::DVec3;
@@ -126,8 +127,7 @@ fn moved_onto_surface(query: &FamilyQuery) -> Option<(DVec3, f64, DVec3)> {
     let (big, a, b) = (query.major, query.radial, query.axial);
     let axis = query.axis.normalize();
     let rel = query.origin - query.center;
-    let y = rel.dot(axis);
-    let radial = rel - axis * y;
+    let (y, radial) = across_axis(rel, axis);
     let rho = radial.length();
     if rho.is_nan() || rho <= 0.0 {
         return None;

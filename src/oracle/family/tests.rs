@@ -5,8 +5,7 @@ use super::line::Line;
 use super::*;
 pub(super) use crate::oracle::tests::unit;
 use crate::oracle::tests::{
-    GRAZING_PUSHES, axis_kind, far_kind, parallel_kind, random_back_and_reach, random_frame,
-    uniform_kind,
+    Frame, GRAZING_PUSHES, axis_kind, far_kind, parallel_kind, random_back_and_reach, uniform_kind,
 };
 use crate::oracle::{AMBIGUITY_REL, reference_roots};
 use rand::{RngExt, SeedableRng};
@@ -53,14 +52,10 @@ pub(super) fn canonical_poses() -> impl Iterator<Item = (Pose, f64)> {
     shapes_and_scales().map(|(shape, k)| (Pose::canonical(shape, k), k))
 }
 
-/// A shape scaled by k, with a pose: centre, unit axis and two unit vectors completing
-/// the frame.
+/// A shape scaled by k, with a pose: its frame and its radii.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Pose {
-    pub(super) c: DVec3,
-    pub(super) a: DVec3,
-    pub(super) x: DVec3,
-    pub(super) z: DVec3,
+    pub(super) frame: Frame,
     pub(super) big: f64,
     pub(super) ra: f64,
     pub(super) ax: f64,
@@ -69,10 +64,7 @@ pub(super) struct Pose {
 impl Pose {
     pub(super) fn canonical((big, ra, ax): (f64, f64, f64), k: f64) -> Pose {
         Pose {
-            c: DVec3::ZERO,
-            a: DVec3::Y,
-            x: DVec3::X,
-            z: DVec3::Z,
+            frame: Frame::CANONICAL,
             big: big * k,
             ra: ra * k,
             ax: ax * k,
@@ -87,31 +79,21 @@ impl Pose {
         }
     }
     pub(super) fn random(rng: &mut Pcg64, shape: (f64, f64, f64), k: f64) -> Pose {
-        let (c, a, x, z) = random_frame(rng, k);
         Pose {
-            c,
-            a,
-            x,
-            z,
+            frame: Frame::random(rng, k),
             ..Pose::canonical(shape, k)
         }
-    }
-    pub(super) fn point(&self, l: DVec3) -> DVec3 {
-        self.c + l.x * self.x + l.y * self.a + l.z * self.z
-    }
-    pub(super) fn dir(&self, l: DVec3) -> DVec3 {
-        l.x * self.x + l.y * self.a + l.z * self.z
     }
     /// The query for a line given in the torus frame.
     pub(super) fn q(&self, o: DVec3, d: DVec3) -> FamilyQuery {
         FamilyQuery::new(
-            self.c,
-            self.a,
+            self.frame.c,
+            self.frame.a,
             self.big,
             self.ra,
             self.ax,
-            self.point(o),
-            self.dir(d),
+            self.frame.point(o),
+            self.frame.dir(d),
             -INF,
             INF,
         )
@@ -587,12 +569,12 @@ fn round_tubes_agree_with_the_ring_oracle() {
             let p = Pose::random(&mut rng, (big, r, r), 1.0);
             let (o, d, t0, t1, _) = random_line(&mut rng, &p, i % 6);
             let ring = Query {
-                center: p.c,
-                axis: p.a,
+                center: p.frame.c,
+                axis: p.frame.a,
                 major: big,
                 minor: r,
-                o: p.point(o),
-                d: p.dir(d),
+                o: p.frame.point(o),
+                d: p.frame.dir(d),
                 t_min: t0,
                 t_max: t1,
             };
@@ -615,8 +597,8 @@ fn round_tubes_agree_with_the_ring_oracle() {
             assert_eq!(ours.len(), roots.len(), "{ctx} {ours:?} {roots:?}");
             // Each method's crossings lie on the other's surface; a crossing near a
             // tangency moves by rounding over the slope, so positions agree more loosely.
-            let scale = p.size() + (p.point(o) - p.c).length();
-            let tol = 1e-9 * scale / p.dir(d).length();
+            let scale = p.size() + (p.frame.point(o) - p.frame.c).length();
+            let tol = 1e-9 * scale / p.frame.dir(d).length();
             for (a, b) in ours.iter().zip(&roots) {
                 assert!((a - b).abs() <= tol, "{ctx} {ours:?} {roots:?}");
                 assert!(q.g(*b).abs() <= 1e-14 * scale, "{ctx} {ours:?} {roots:?}");
