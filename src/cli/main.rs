@@ -89,6 +89,11 @@ enum Command {
         /// such timings are shown but decide nothing.
         #[arg(long)]
         across_machines: bool,
+        /// Change (percent) of a `counts` record's instructions per ray beyond which it is
+        /// a change, with its direction; more instructions is a regression (default 0.1;
+        /// counts of one build on one ray set are identical).
+        #[arg(long)]
+        count_threshold: Option<f64>,
     },
     /// Check that paired-ratio intervals hold from run to run: the share of each run's
     /// ratios inside the other runs' intervals, and the headline ratios' spread. Exits 1
@@ -282,6 +287,7 @@ fn main() -> ExitCode {
             only_changes,
             allow_missing,
             across_machines,
+            count_threshold,
         } => compare::compare(
             &old,
             &new,
@@ -290,6 +296,7 @@ fn main() -> ExitCode {
                 only_changes,
                 allow_missing,
                 across_machines,
+                count_threshold,
             },
         ),
         Command::Eval {
