@@ -135,14 +135,18 @@ fn count_row(
     }
 }
 
-/// The ratio rows' keys a ring count row (`ring case ν cull metric`) stands beside: its
-/// cull against `cychosz` and against `none` under the wall metric `<metric>_ns` (with
-/// ` [f32]` for the f32 wavefront), as `compare`'s ratio section keys them.
+/// The ratio rows' keys a ring or BVH count row (`group case ν cull metric`) stands
+/// beside: its cull against `cychosz` and against `none` under the wall metric
+/// `<metric>_ns` (with ` [f32]` for the f32 wavefront), as `compare`'s ratio section keys
+/// them (a BVH's case is its scene there too).
 fn wall_keys(count_key: &str) -> Vec<String> {
     let words: Vec<&str> = count_key.split(' ').collect();
-    let ["ring", case, nu, cull, metric] = words.as_slice() else {
+    let [group, case, nu, cull, metric] = words.as_slice() else {
         return Vec::new();
     };
+    if !["ring", "bvh"].contains(group) {
+        return Vec::new();
+    }
     let tag = if metric.contains("f32") { " [f32]" } else { "" };
     ["cychosz", "none"]
         .iter()
@@ -331,5 +335,9 @@ mod tests {
             ]
         );
         assert!(wall_keys("solver uniform 0 torus_cull solve").is_empty());
+        assert_eq!(
+            wall_keys("bvh chain 4 skala bvh_anyhit")[1],
+            "chain 4 skala/none bvh_anyhit_ns"
+        );
     }
 }

@@ -57,6 +57,9 @@ crate::named::named_enum! {
         Batch = "batch",
         /// The quartic solver on each line family's quartics (`solver_suite`), ours only.
         Solver = "solver",
+        /// The BVH of each of the workload's `bvh` scenes: closest hit per camera ray and
+        /// any hit per shadow ray, each cull at the leaves.
+        Bvh = "bvh",
     }
 }
 
@@ -249,6 +252,51 @@ pub fn work<W: Write>(plan: &Plan, out: W) -> Result<(), String> {
                 .map_err(|e| e.to_string())?;
             let cases: Vec<([f64; 3], f64)> = cases.iter().map(|c| (c.c, c.u_origin)).collect();
             region::solver_regions(family, &cases, &dispatch, &mut ann).map_err(io)?;
+        }
+    }
+    if plan.counts(Path::Bvh) {
+        bvh_regions(plan, &mut ann)?;
+    }
+    Ok(())
+}
+
+/// The BVH regions of every scene × ν of the workload's `bvh` key (none without it): the
+/// rays as `time --bvh` draws them, `plan.rays` of each kind evenly strided out of the
+/// camera image (side √(4·rays)) and the shadow rays spawned from its hits (`none`'s).
+fn bvh_regions<W: Write>(plan: &Plan, ann: &mut Announcer<W>) -> Result<(), String> {
+    use crate::scene::rays::{light, shadow_rays};
+    use crate::scene::{Scene, TraceStats};
+    let io = |e: std::io::Error| format!("count worker: writing to the parent: {e}");
+    let Some(spec) = &plan.workload.bvh else {
+        return Ok(());
+    };
+    let n = plan.rays;
+    for &kind in &spec.scenes {
+        for &nu in &spec.nu {
+            eprintln!("count: bvh {} ν = {nu}", kind.name());
+            let scene =
+                Scene::build(kind, nu, spec.tori, plan.workload.seed).map_err(|e| e.to_string())?;
+            let side = ((4 * n) as f64).sqrt().ceil() as usize;
+            let image = scene.camera_rays(side);
+            let hits: Vec<_> = image
+                .iter()
+                .map(|r| scene.trace(&torus_cull::NoCull, r, &mut TraceStats::default()))
+                .collect();
+            let stride = image.len().div_ceil(n).max(1);
+            let camera: Vec<_> = image.iter().step_by(stride).copied().collect();
+            let shadow = shadow_rays(&scene, &image, &hits, light(&scene), 1.0);
+            let stride = shadow.len().div_ceil(n).max(1);
+            let shadow: Vec<_> = shadow.into_iter().step_by(stride).collect();
+            for &cull in &plan.culls {
+                cull.visit(region::BvhPass {
+                    scene: &scene,
+                    camera: &camera,
+                    shadow: &shadow,
+                    announcer: ann,
+                    unit: (kind.name(), nu),
+                })
+                .map_err(io)?;
+            }
         }
     }
     Ok(())

@@ -185,6 +185,48 @@ pub fn batch_region<W: Write>(
 /// A solver's nearest root u ≥ lo of the depressed monic quartic `[c2, c1, c0]`.
 pub type Solve = fn(&[f64; 3], f64) -> Option<f64>;
 
+/// The BVH regions of one cull on one scene: closest hit per camera ray, any hit per
+/// shadow ray (spawned from the camera rays' hits), as `time --bvh` times them.
+pub struct BvhPass<'s, W: Write> {
+    /// The scene.
+    pub scene: &'s crate::scene::Scene,
+    /// The camera rays (closest hit).
+    pub camera: &'s [Ray],
+    /// The shadow rays (any hit).
+    pub shadow: &'s [crate::scene::rays::Spawned],
+    /// Where to announce.
+    pub announcer: &'s mut Announcer<W>,
+    /// The scene's name and ν.
+    pub unit: (&'s str, f64),
+}
+
+impl<W: Write> CullVisitor for BvhPass<'_, W> {
+    type Output = std::io::Result<()>;
+
+    fn visit<C: Cull>(self, cull: C) -> std::io::Result<()> {
+        let BvhPass {
+            scene,
+            camera,
+            shadow,
+            announcer,
+            unit: (name, nu),
+        } = self;
+        let mut stats = crate::scene::TraceStats::default();
+        let key = ("bvh", name, nu, cull.name(), "bvh_closest");
+        announcer.region(key, camera.len(), &mut || {
+            for ray in black_box(camera) {
+                black_box(scene.trace(&cull, ray, &mut stats));
+            }
+        })?;
+        let key = ("bvh", name, nu, cull.name(), "bvh_anyhit");
+        announcer.region(key, shadow.len(), &mut || {
+            for s in black_box(shadow) {
+                black_box(scene.occluded_spawned(&cull, s, &mut stats));
+            }
+        })
+    }
+}
+
 /// The quartic solvers of the lab's solver records, ours only (the peer crates are the
 /// bench's dev-dependencies): each one's nearest root u ≥ the origin's.
 pub const SOLVERS: [(&str, Solve); 3] = [

@@ -46,7 +46,8 @@ pub struct CountRecord {
     /// time: [`torus_cull::intersect_culled`]), `cull` (the cull alone on torus-frame
     /// lines), `batch_total`, `batch_cull`, `batch_f32_total` (the wavefront at the
     /// dispatch level: f64, the SIMD cull alone, the certified f32 path), `solve` (one
-    /// quartic), `closest` and `anyhit` (a BVH traversal). The wall channel's metric is
+    /// quartic), `bvh_closest` and `bvh_anyhit` (a BVH traversal: closest hit per camera
+    /// ray, any hit per shadow ray). The wall channel's metric is
     /// this name with `_ns` appended.
     pub metric: String,
     /// Rays (quartics) the region ran.
