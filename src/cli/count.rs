@@ -5,11 +5,10 @@
 
 use crate::console::{out, outln};
 use crate::whole::Whole;
-use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use torus_cull_lab::count::{self, MAX_RAYS, MIN_RAYS, Plan, PlanArgs};
-use torus_cull_lab::results::{self, Results, counts::CountMeta};
+use torus_cull_lab::results::{self, Results};
 use torus_cull_lab::workload::spec::Workload;
 
 /// `torus-cull count`'s arguments.
@@ -97,14 +96,7 @@ pub fn run(args: CountArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
     };
     let start = std::time::Instant::now();
     let exe = std::env::current_exe().map_err(|e| format!("this binary's path: {e}"))?;
-    let dumps = count::callgrind::run(&exe, &worker_args(&args.workload, &plan))?;
-    let (isa, overhead, records) = count::records(&dumps.announced, &dumps.totals)?;
-    let meta = CountMeta {
-        valgrind: dumps.valgrind.clone(),
-        isa,
-        rays: plan.rays as u64,
-        overhead,
-    };
+    let (meta, records) = count::count(&exe, &args.workload, &plan)?;
     let (path, mut file) = match target {
         Some((path, existing)) => (path, existing),
         None => {
@@ -142,30 +134,6 @@ fn suffix(workload: &str) -> String {
     } else {
         format!("-{workload}-count")
     }
-}
-
-/// The worker's command line: the plan as flags (the worker builds the same plan).
-fn worker_args(workload: &Path, plan: &Plan) -> Vec<OsString> {
-    use torus_cull::Named;
-    let join = |v: Vec<String>| v.join(",");
-    let mut a: Vec<OsString> = vec!["count".into(), "--worker".into()];
-    a.push("--workload".into());
-    a.push(workload.as_os_str().to_owned());
-    a.push(format!("--rays={}", plan.rays).into());
-    let culls = plan.culls.iter().map(|c| c.name().to_string()).collect();
-    a.push(format!("--culls={}", join(culls)).into());
-    let cases = plan.workload.cases.iter().map(|c| c.name().to_string());
-    a.push(format!("--cases={}", join(cases.collect())).into());
-    a.push(
-        format!(
-            "--nu={}",
-            join(plan.nus.iter().map(f64::to_string).collect())
-        )
-        .into(),
-    );
-    let paths = plan.paths.iter().map(|p| p.name().to_string()).collect();
-    a.push(format!("--paths={}", join(paths)).into());
-    a
 }
 
 /// Per metric and cull: the mean instructions per ray over the case × ν records, and the

@@ -20,7 +20,7 @@
 pub mod callgrind;
 pub mod region;
 
-use crate::results::counts::CountRecord;
+use crate::results::counts::{CountMeta, CountRecord};
 use crate::solver_suite::{FAMILIES, family_cases};
 use crate::workload::spec::Workload;
 use crate::workload::{Case, generate};
@@ -348,6 +348,44 @@ fn ring_regions<W: Write>(
         }
     }
     Ok(())
+}
+
+/// Counts every region of `plan` under callgrind: runs `exe` (a `torus-cull` binary, whose
+/// hidden `count --worker` mode is the worker) with the plan as flags, `workload` the
+/// workload as the worker should open it. Returns how the counts were made and the
+/// records, each with its ratio over its reference.
+pub fn count(
+    exe: &std::path::Path,
+    workload: &std::path::Path,
+    plan: &Plan,
+) -> Result<(CountMeta, Vec<CountRecord>), String> {
+    let dumps = callgrind::run(exe, &worker_args(workload, plan))?;
+    let (isa, overhead, records) = records(&dumps.announced, &dumps.totals)?;
+    let meta = CountMeta {
+        valgrind: dumps.valgrind,
+        isa,
+        rays: plan.rays as u64,
+        overhead,
+    };
+    Ok((meta, records))
+}
+
+/// The worker's command line: the plan as flags (the worker builds the same plan).
+fn worker_args(workload: &std::path::Path, plan: &Plan) -> Vec<std::ffi::OsString> {
+    let join = |v: Vec<&str>| v.join(",");
+    let mut a: Vec<std::ffi::OsString> = vec!["count".into(), "--worker".into()];
+    a.push("--workload".into());
+    a.push(workload.as_os_str().to_owned());
+    a.push(format!("--rays={}", plan.rays).into());
+    let culls = plan.culls.iter().map(|c| c.name()).collect();
+    a.push(format!("--culls={}", join(culls)).into());
+    let cases = plan.workload.cases.iter().map(|c| c.name()).collect();
+    a.push(format!("--cases={}", join(cases)).into());
+    let nus: Vec<String> = plan.nus.iter().map(f64::to_string).collect();
+    a.push(format!("--nu={}", nus.join(",")).into());
+    let paths = plan.paths.iter().map(|p| p.name()).collect();
+    a.push(format!("--paths={}", join(paths)).into());
+    a
 }
 
 /// The records the worker announced (`lines`, its stdout) with the dumps' instruction
