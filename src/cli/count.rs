@@ -36,8 +36,9 @@ pub struct CountArgs {
     /// Paths to count, comma-separated: `scalar` (each cull alone and cull + exact
     /// intersection, one ray at a time), `batch` (the wavefront at the dispatch level:
     /// f64, the SIMD cull alone, certified f32), `solver` (the quartic solver on each
-    /// line family), `bvh` (closest and any hit in the workload's BVH scenes). Default:
-    /// all.
+    /// line family), `bvh` (closest and any hit in the workload's BVH scenes), `family`
+    /// (the torus family's members), `bend` (the pipe bends, with and without the
+    /// wedge). Default: all.
     #[arg(long, value_delimiter = ',')]
     paths: Vec<String>,
     /// Results JSON (default: results/<short commit>[-dirty]-<workload>-count.json, or

@@ -135,7 +135,7 @@ fn count_row(
     }
 }
 
-/// The ratio rows' keys a ring or BVH count row (`group case ν cull metric`) stands
+/// The ratio rows' keys a ring, BVH, family or bend count row (`group case ν cull metric`) stands
 /// beside: its cull against `cychosz` and against `none` under the wall metric
 /// `<metric>_ns` (with ` [f32]` for the f32 wavefront), as `compare`'s ratio section keys
 /// them (a BVH's case is its scene there too).
@@ -144,7 +144,7 @@ fn wall_keys(count_key: &str) -> Vec<String> {
     let [group, case, nu, cull, metric] = words.as_slice() else {
         return Vec::new();
     };
-    if !["ring", "bvh"].contains(group) {
+    if !["ring", "bvh", "family", "bend"].contains(group) {
         return Vec::new();
     }
     let tag = if metric.contains("f32") { " [f32]" } else { "" };

@@ -19,6 +19,7 @@
 
 pub mod callgrind;
 pub mod region;
+pub mod shapes;
 
 use crate::results::counts::{CountMeta, CountRecord};
 use crate::solver_suite::{FAMILIES, family_cases};
@@ -60,6 +61,12 @@ crate::named::named_enum! {
         /// The BVH of each of the workload's `bvh` scenes: closest hit per camera ray and
         /// any hit per shadow ray, each cull at the leaves.
         Bvh = "bvh",
+        /// The torus family's members (`paired::family::members`): the exact
+        /// intersection alone and behind each cull, on each member's box rays.
+        Family = "family",
+        /// The pipe bends (`paired::bend::bends`): each cull, and each behind the
+        /// segment's wedge, on each bend's box rays.
+        Bend = "bend",
     }
 }
 
@@ -256,6 +263,13 @@ pub fn work<W: Write>(plan: &Plan, out: W) -> Result<(), String> {
     }
     if plan.counts(Path::Bvh) {
         bvh_regions(plan, &mut ann)?;
+    }
+    let shape_rays = (plan.rays, plan.workload.seed);
+    if plan.counts(Path::Family) {
+        shapes::family(&plan.culls, shape_rays, &mut ann)?;
+    }
+    if plan.counts(Path::Bend) {
+        shapes::bends(&plan.culls, shape_rays, &mut ann)?;
     }
     Ok(())
 }

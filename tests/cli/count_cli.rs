@@ -119,7 +119,7 @@ fn bad_count_flags_are_refused_naming_the_flag() {
         ),
         (
             &["--paths", "gpu"],
-            "--paths: 'gpu' is not a path (allowed: scalar, batch, solver, bvh",
+            "--paths: 'gpu' is not a path (allowed: scalar, batch, solver, bvh, family, bend",
         ),
         (&["--nu", "3"], "--nu 3 is not in workload quick"),
     ];
