@@ -50,14 +50,19 @@ pub struct CountArgs {
     /// says per record which channel moved.
     #[arg(long)]
     add_to: Option<PathBuf>,
-    /// Internal: this process is the worker under callgrind (announces its regions on
-    /// stdout, writes no file).
-    #[arg(long, hide = true)]
-    worker: bool,
+    /// Internal: this process is the worker under callgrind, its plan in this file
+    /// (announces its regions on stdout, writes no file).
+    #[arg(long, hide = true, conflicts_with_all = ["rays", "culls", "cases", "nu", "paths", "out", "add_to"])]
+    worker: Option<PathBuf>,
 }
 
 /// Runs `torus-cull count`.
 pub fn run(args: CountArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    if let Some(file) = &args.worker {
+        let plan = count::WorkerPlan::load(file)?;
+        count::work(&plan, std::io::stdout().lock())?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let workload = Workload::open(&args.workload)?;
     let rays = match args.rays {
         Some(n) => Some(n.within("--rays", (MIN_RAYS, MAX_RAYS), "")?),
@@ -71,10 +76,6 @@ pub fn run(args: CountArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         paths: args.paths.clone(),
     };
     let plan = Plan::new(workload.clone(), &args.workload, &plan_args)?;
-    if args.worker {
-        count::work(&plan, std::io::stdout().lock())?;
-        return Ok(ExitCode::SUCCESS);
-    }
     // The file to add to is read before the minute of counting, so a bad one fails fast.
     let target = match &args.add_to {
         Some(path) => {

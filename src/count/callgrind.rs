@@ -49,24 +49,52 @@ pub fn valgrind_version() -> Result<String, String> {
     Ok(version)
 }
 
-/// Runs `exe worker_args…` under callgrind, collecting only inside the region function,
+/// valgrind's full path, from `PATH` (the worker's environment is cleared).
+fn which_valgrind() -> Result<std::path::PathBuf, String> {
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    std::env::split_paths(&path)
+        .map(|d| d.join("valgrind"))
+        .find(|p| p.is_file())
+        .ok_or_else(|| "valgrind is on no directory of PATH".to_string())
+}
+
+/// Runs `exe count --worker PLAN` under callgrind, PLAN a file holding `plan_text`, collecting only inside the region function,
 /// one dump per region. The worker's stderr (its progress) passes through; valgrind's own
 /// messages go to a log whose tail an error quotes.
-pub fn run(exe: &Path, worker_args: &[std::ffi::OsString]) -> Result<Dumps, String> {
+pub fn run(exe: &Path, plan_text: &str) -> Result<Dumps, String> {
     let valgrind = valgrind_version()?;
+    let valgrind_path = which_valgrind()?;
     let dir = tempfile::tempdir().map_err(|e| format!("a temporary directory: {e}"))?;
     let out_file = dir.path().join("cg.out");
     let log = dir.path().join("valgrind.log");
     let pattern = super::region::REGION_PATTERN;
-    let mut child = Command::new("valgrind")
+    // What the worker's process starts with must not vary from run to run: the sizes of
+    // its environment, its path and its arguments place its stack and its first heap
+    // blocks, and the SIMD code's copies take more or fewer instructions with their
+    // alignment (an environment variable of 40 bytes more moved 9 of 26 wavefront
+    // records by up to 0.02 %). So the worker gets an empty environment (but
+    // `TORUS_CULL_ISA`), a path of fixed length (a link in the temporary directory), and
+    // its plan in a file of that directory (one argument of fixed length).
+    let worker = dir.path().join("worker");
+    std::os::unix::fs::symlink(exe, &worker)
+        .map_err(|e| format!("{}: linking the worker: {e}", worker.display()))?;
+    let plan = dir.path().join("plan");
+    std::fs::write(&plan, plan_text).map_err(|e| format!("{}: {e}", plan.display()))?;
+    let mut command = Command::new(&valgrind_path);
+    command.env_clear();
+    if let Some(isa) = std::env::var_os("TORUS_CULL_ISA") {
+        command.env("TORUS_CULL_ISA", isa);
+    }
+    let mut child = command
         .arg("--tool=callgrind")
         .arg("--collect-atstart=no")
         .arg(format!("--toggle-collect={pattern}"))
         .arg(format!("--dump-after={pattern}"))
         .arg(format!("--callgrind-out-file={}", out_file.display()))
         .arg(format!("--log-file={}", log.display()))
-        .arg(exe)
-        .args(worker_args)
+        .arg(&worker)
+        .args(["count", "--worker"])
+        .arg(&plan)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::inherit())

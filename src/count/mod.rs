@@ -85,8 +85,9 @@ pub struct Plan {
     pub paths: Vec<Path>,
 }
 
-/// What a plan is made from: the command's flags, unparsed.
-#[derive(Debug, Clone, Default)]
+/// What a plan is made from: the command's flags, unparsed (and, as JSON, the worker's
+/// plan file).
+#[derive(Debug, Clone, Default, serde::Serialize, serde::Deserialize)]
 pub struct PlanArgs {
     /// `--culls`: names of timed culls (empty: every timed cull).
     pub culls: Vec<String>,
@@ -373,7 +374,8 @@ pub fn count(
     workload: &std::path::Path,
     plan: &Plan,
 ) -> Result<(CountMeta, Vec<CountRecord>), String> {
-    let dumps = callgrind::run(exe, &worker_args(workload, plan))?;
+    let text = serde_json::to_string(&WorkerPlan::of(workload, plan)?).expect("a plan serializes");
+    let dumps = callgrind::run(exe, &text)?;
     let (isa, overhead, records) = records(&dumps.announced, &dumps.totals)?;
     let meta = CountMeta {
         valgrind: dumps.valgrind,
@@ -384,22 +386,47 @@ pub fn count(
     Ok((meta, records))
 }
 
-/// The worker's command line: the plan as flags (the worker builds the same plan).
-fn worker_args(workload: &std::path::Path, plan: &Plan) -> Vec<std::ffi::OsString> {
-    let join = |v: Vec<&str>| v.join(",");
-    let mut a: Vec<std::ffi::OsString> = vec!["count".into(), "--worker".into()];
-    a.push("--workload".into());
-    a.push(workload.as_os_str().to_owned());
-    a.push(format!("--rays={}", plan.rays).into());
-    let culls = plan.culls.iter().map(|c| c.name()).collect();
-    a.push(format!("--culls={}", join(culls)).into());
-    let cases = plan.workload.cases.iter().map(|c| c.name()).collect();
-    a.push(format!("--cases={}", join(cases)).into());
-    let nus: Vec<String> = plan.nus.iter().map(f64::to_string).collect();
-    a.push(format!("--nu={}", nus.join(",")).into());
-    let paths = plan.paths.iter().map(|p| p.name()).collect();
-    a.push(format!("--paths={}", join(paths)).into());
-    a
+/// The worker's plan file: the workload's text and the flags. The text, not the path:
+/// a plan file's length and the worker's allocations before its regions place its heap
+/// blocks, which the SIMD code's copies are sensitive to (see [`callgrind::run`]), so one
+/// workload spelled two ways (`quick`, `workloads/quick.json`) must give one plan file.
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
+pub struct WorkerPlan {
+    /// The workload file's text.
+    pub workload: String,
+    /// The rest, resolved (every list given, so the worker needs no default).
+    pub args: PlanArgs,
+}
+
+impl WorkerPlan {
+    /// The plan file of `plan`, whose workload was opened from `workload`.
+    fn of(workload: &std::path::Path, plan: &Plan) -> Result<WorkerPlan, String> {
+        let text = match crate::workload::spec::built_in(workload) {
+            Some(text) => text.to_string(),
+            None => std::fs::read_to_string(workload)
+                .map_err(|e| format!("{}: {e}", workload.display()))?,
+        };
+        let names = |v: Vec<&str>| v.into_iter().map(str::to_string).collect();
+        Ok(WorkerPlan {
+            workload: text,
+            args: PlanArgs {
+                culls: names(plan.culls.iter().map(|c| c.name()).collect()),
+                cases: names(plan.workload.cases.iter().map(|c| c.name()).collect()),
+                nu: plan.nus.clone(),
+                rays: Some(plan.rays),
+                paths: names(plan.paths.iter().map(|p| p.name()).collect()),
+            },
+        })
+    }
+
+    /// Reads a plan file and makes its plan.
+    pub fn load(file: &std::path::Path) -> Result<Plan, String> {
+        let text = std::fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+        let wp: WorkerPlan = serde_json::from_str(&text)
+            .map_err(|e| format!("{}: not a count plan: {e}", file.display()))?;
+        let workload = Workload::parse(wp.workload.as_bytes(), file).map_err(|e| e.to_string())?;
+        Plan::new(workload, file, &wp.args)
+    }
 }
 
 /// The records the worker announced (`lines`, its stdout) with the dumps' instruction
