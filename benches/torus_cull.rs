@@ -501,6 +501,12 @@ fn bench() -> Result<ExitCode, String> {
             results.ratio.extend(bvh);
             stage(clock, "paired BVH ratios done");
         }
+        support::counts::add(
+            &mut results,
+            config,
+            (&setup.workload_path, &setup.workload),
+        );
+        stage(clock, "instruction counts done");
     }
     results.solver = solver::records(&home, &solver_sets, started, dispatch);
     results.bvh = bvh::records(&home, bvh_pending, started);

@@ -21,6 +21,7 @@
 pub mod check;
 pub mod check_counts;
 pub mod compare;
+pub mod count;
 pub mod errata;
 pub mod eval;
 pub mod family_label;

@@ -3,6 +3,7 @@
 //! atomically, so an interrupted run never leaves half a file. Field names are stable;
 //! new fields may be added.
 
+pub mod counts;
 pub mod shapes;
 
 use serde::{Deserialize, Serialize};
@@ -42,6 +43,10 @@ pub struct Results {
     /// a workload's `shapes` key; absent from older files and when there are none).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub shapes: Vec<shapes::ShapeRecord>,
+    /// Instructions per ray under callgrind per region (filled by `torus-cull count`;
+    /// absent from older files and files without counts).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub counts: Vec<counts::CountRecord>,
 }
 
 /// Provenance of a results file.
@@ -106,6 +111,10 @@ pub struct Meta {
     /// only the records the docs quote; absent in a full file.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub summary_of: Option<String>,
+    /// How the `counts` records were counted (valgrind's version, the dispatch level under
+    /// it); absent from files without counts.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub counts: Option<counts::CountMeta>,
 }
 
 /// The sizes behind a results file's figures: two files compare only if these agree.
@@ -596,6 +605,7 @@ impl Results {
                 os: Some(os_description()),
                 device: None,
                 summary_of: None,
+                counts: None,
             },
             rejection: Vec::new(),
             timing: Vec::new(),
@@ -604,6 +614,7 @@ impl Results {
             estimates: Vec::new(),
             ratio: Vec::new(),
             shapes: Vec::new(),
+            counts: Vec::new(),
         }
     }
 

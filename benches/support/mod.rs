@@ -3,6 +3,7 @@
 
 pub mod batch;
 pub mod bvh;
+pub mod counts;
 pub mod ratios;
 pub mod solver;
 

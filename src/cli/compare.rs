@@ -19,6 +19,8 @@ pub struct CompareOptions {
     pub allow_missing: bool,
     /// Give timing verdicts across machines.
     pub across_machines: bool,
+    /// `--count-threshold` in percent, if given.
+    pub count_threshold: Option<f64>,
 }
 
 /// Runs `compare`.
@@ -31,6 +33,17 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
         )
         .into());
     }
+    let count_threshold = match options.count_threshold {
+        Some(t) if !(t.is_finite() && t >= 0.0) => {
+            return Err(format!(
+                "--count-threshold {} is invalid (allowed: a percentage >= 0)",
+                Num(t)
+            )
+            .into());
+        }
+        Some(t) => t / 100.0,
+        None => compare::counts::DEFAULT_COUNT_THRESHOLD,
+    };
     let (a, b) = (ResultsFile::load(old)?, ResultsFile::load(new)?);
     let pair = format!("{} vs {}", old.display(), new.display());
     let report = match (&a, &b) {
@@ -44,7 +57,22 @@ pub fn compare(old: &Path, new: &Path, options: &CompareOptions) -> CliResult {
             compare::check_unique(a).map_err(|e| format!("{}: {e}", old.display()))?;
             compare::check_unique(b).map_err(|e| format!("{}: {e}", new.display()))?;
             compare::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;
-            compare::compare_across(a, b, threshold / 100.0, options.across_machines)
+            if options.count_threshold.is_some() && a.counts.is_empty() && b.counts.is_empty() {
+                return Err(format!(
+                    "{pair}: --count-threshold judges `counts` records, and neither file has \
+                     any (torus-cull count writes them)"
+                )
+                .into());
+            }
+            let thresholds = (threshold / 100.0, count_threshold);
+            compare::compare_channels(a, b, thresholds, options.across_machines)
+        }
+        (ResultsFile::Check(_), ResultsFile::Check(_)) if options.count_threshold.is_some() => {
+            return Err(format!(
+                "{pair}: --count-threshold judges `counts` records, which check files do not \
+                 have"
+            )
+            .into());
         }
         (ResultsFile::Check(a), ResultsFile::Check(b)) => {
             compare::check::comparable(a, b).map_err(|e| format!("{pair}: {e}"))?;

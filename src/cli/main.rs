@@ -15,6 +15,7 @@ use whole::Whole;
 mod check;
 mod compare;
 mod console;
+mod count;
 mod eval;
 mod gpu_info;
 mod plot;
@@ -63,6 +64,10 @@ enum Command {
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
     /// 95% intervals), in about 30 s.
     Time(time::TimeArgs),
+    /// Count instructions per ray under callgrind (valgrind): each cull alone and with the
+    /// exact intersection per case × ν, the wavefront, the solver's families; written as
+    /// the `counts` records of a results file that `compare` judges beside the wall ratios.
+    Count(count::CountArgs),
     /// Diff two results files (or two f32-check files); exits 1 on a regression or when
     /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
@@ -84,6 +89,11 @@ enum Command {
         /// such timings are shown but decide nothing.
         #[arg(long)]
         across_machines: bool,
+        /// Change (percent) of a `counts` record's instructions per ray beyond which it is
+        /// a change, with its direction; more instructions is a regression (default 0.1;
+        /// counts of one build on one ray set are identical).
+        #[arg(long)]
+        count_threshold: Option<f64>,
     },
     /// Check that paired-ratio intervals hold from run to run: the share of each run's
     /// ratios inside the other runs' intervals, and the headline ratios' spread. Exits 1
@@ -256,6 +266,7 @@ fn main() -> ExitCode {
             culls,
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
+        Command::Count(args) => count::run(args),
         Command::Check(args) => check::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),
@@ -276,6 +287,7 @@ fn main() -> ExitCode {
             only_changes,
             allow_missing,
             across_machines,
+            count_threshold,
         } => compare::compare(
             &old,
             &new,
@@ -284,6 +296,7 @@ fn main() -> ExitCode {
                 only_changes,
                 allow_missing,
                 across_machines,
+                count_threshold,
             },
         ),
         Command::Eval {

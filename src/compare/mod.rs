@@ -12,6 +12,10 @@
 //!   is a single criterion figure with no interval, so a change beyond the threshold is
 //!   shown as `no verdict (no interval)` and decides nothing.
 //!
+//! * **count** (`counts.rs`): instructions per ray under callgrind; more by more than the
+//!   count threshold (0.1 %) is a regression, and where a file holds ratios too, each
+//!   moved record says which channel moved (the count alone, the wall alone, both).
+//!
 //! * **check** (two `torus-cull check` files, any shape and precision, `check.rs`): per
 //!   class and cull a new false reject or a lower capture is a regression, as are a lower
 //!   capture of a shape's own and more wrong answers of our intersectors.
@@ -26,6 +30,7 @@
 //! so that a vacuous comparison never passes a CI gate.
 
 pub mod check;
+pub mod counts;
 pub mod coverage;
 pub mod machine;
 mod ratio;
@@ -72,6 +77,8 @@ pub fn check_unique(r: &Results) -> Result<(), String> {
     twice("bvh", first_duplicate(&r.bvh, bvh_key))?;
     twice("ratio", first_duplicate(&r.ratio, ratio::ratio_key))?;
     twice("shapes", shapes::duplicate(&r.shapes))?;
+    counts::check(&r.counts)?;
+    twice("counts", counts::duplicate(&r.counts))?;
     twice(
         "estimate",
         first_duplicate(&r.estimates, |e| e.benchmark.clone()),
@@ -89,6 +96,17 @@ pub fn compare_across(
     old: &Results,
     new: &Results,
     threshold: f64,
+    across_machines: bool,
+) -> Report {
+    let default = counts::DEFAULT_COUNT_THRESHOLD;
+    compare_channels(old, new, (threshold, default), across_machines)
+}
+
+/// [`compare_across`] with the count channel's threshold too: `(wall, count)`, fractions.
+pub fn compare_channels(
+    old: &Results,
+    new: &Results,
+    (threshold, count_threshold): (f64, f64),
     across_machines: bool,
 ) -> Report {
     let mut report = Report {
@@ -136,6 +154,7 @@ pub fn compare_across(
         }
     }
     ratio::ratio_rows(old, new, threshold, &mut report);
+    counts::count_rows(old, new, count_threshold, &mut report);
     judge_across_machines(&mut report);
     report
 }

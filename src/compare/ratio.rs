@@ -311,6 +311,7 @@ pub(super) mod tests {
                 os: None,
                 device: None,
                 summary_of: None,
+                counts: None,
             },
             rejection: Vec::new(),
             timing,
@@ -319,6 +320,7 @@ pub(super) mod tests {
             estimates: Vec::new(),
             ratio,
             shapes: Vec::new(),
+            counts: Vec::new(),
         }
     }
 

@@ -10,6 +10,7 @@ mod adversarial_rows;
 mod bend_cli;
 mod check_cli;
 mod check_ring_f32;
+mod count_cli;
 mod eval_cli;
 mod eval_wedge_cli;
 mod family_cli;

@@ -33,6 +33,7 @@ pub(crate) fn sample() -> Results {
             os: None,
             device: None,
             summary_of: None,
+            counts: None,
         },
         rejection: vec![
             RejectionRecord {
@@ -96,6 +97,7 @@ pub(crate) fn sample() -> Results {
         estimates: Vec::new(),
         ratio: Vec::new(),
         shapes: Vec::new(),
+        counts: Vec::new(),
     }
 }
 
