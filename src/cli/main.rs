@@ -63,6 +63,10 @@ enum Command {
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
     /// 95% intervals), in about 30 s.
     Time(time::TimeArgs),
+    /// Time the GPU BVH (a binary built with `--features gpu`): each GPU cull at the leaves
+    /// over none, closest hit and any hit, with within- and between-run intervals, rays
+    /// per second and the copy kernel over the same ray bytes (docs/gpu.md).
+    TimeGpuBvh(time::gpu_bvh::GpuBvhArgs),
     /// Diff two results files (or two f32-check files); exits 1 on a regression or when
     /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
@@ -256,6 +260,7 @@ fn main() -> ExitCode {
             culls,
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
+        Command::TimeGpuBvh(args) => time::gpu_bvh::run(&args),
         Command::Check(args) => check::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),

@@ -3,6 +3,7 @@
 
 mod bend;
 mod family;
+pub(crate) mod gpu_bvh;
 mod shapes;
 
 use crate::console::{out, outln};
