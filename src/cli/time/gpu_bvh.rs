@@ -14,17 +14,6 @@ use std::error::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// `--batch` unless given: camera rays per pass, a 1000 × 1000 image (a GPU needs about a
-/// million rays in flight; not 2²⁰, which ran in a slow state on the H100, docs/gpu.md).
-const DEFAULT_RAYS: usize = 1_000_000;
-
-/// The most camera rays per pass: their records, prepared and working copies, and the
-/// shadow rays' (144 bytes each) stay within a few GiB of device memory.
-const MAX_RAYS: usize = 1 << 24;
-
-/// The most tori per scene (the kernel takes up to 2²⁴; the host builds each scene).
-const MAX_TORI: usize = 1 << 20;
-
 /// `torus-cull time-gpu-bvh`'s arguments.
 #[derive(clap::Args)]
 pub struct GpuBvhArgs {
@@ -86,7 +75,7 @@ pub fn run(args: &GpuBvhArgs) -> Result<ExitCode, Box<dyn Error>> {
 
 #[cfg(feature = "gpu")]
 mod measure {
-    use super::{DEFAULT_RAYS, GpuBvhArgs, MAX_RAYS, MAX_TORI};
+    use super::GpuBvhArgs;
     use crate::console::outln;
     use std::error::Error;
     use std::path::{Path, PathBuf};
@@ -103,6 +92,17 @@ mod measure {
     use torus_cull_lab::results::{self, BvhSizes, RatioRecord, Results, Sizes};
     use torus_cull_lab::scene::SceneKind;
     use torus_cull_lab::workload::spec::Workload;
+
+    /// `--batch` unless given: camera rays per pass, a 1000 × 1000 image (a GPU needs about a
+    /// million rays in flight; not 2²⁰, which ran in a slow state on the H100, docs/gpu.md).
+    const DEFAULT_RAYS: usize = 1_000_000;
+
+    /// The most camera rays per pass: their records, prepared and working copies, and the
+    /// shadow rays' (144 bytes each) stay within a few GiB of device memory.
+    const MAX_RAYS: usize = 1 << 24;
+
+    /// The most tori per scene (the kernel takes up to 2²⁴; the host builds each scene).
+    const MAX_TORI: usize = 1 << 20;
 
     /// Progress goes to stderr at least this often.
     const EVERY: Duration = Duration::from_secs(5);
