@@ -399,7 +399,8 @@ mod measure {
         Ok(lineup(&out))
     }
 
-    /// `--out`, or `results/<commit>-<workload>-gpu-bvh-time.json` (its folder made).
+    /// `--out`, or the default file under `results/` named by commit and workload (its
+    /// folder made): `<commit>[-<workload>]-gpu-bvh-time.json`.
     fn out_path(out: Option<PathBuf>, workload: &str) -> Result<PathBuf, String> {
         if let Some(path) = out {
             return Ok(path);
