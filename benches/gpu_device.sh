@@ -14,6 +14,11 @@
 #              ray per hit), the five scene layouts at nu = 4 with 1 000 tori, 5 runs,
 #              the copy kernel over the same ray bytes  -> bvh.json, bvh.txt
 #              (not yet run on a GPU: sized from lavapipe and the H100's grid, below)
+#   1b. subm:  `time-gpu-submissions` (to become `time gpu-submissions`), the single-torus
+#              kernel's submissions one by one (issue 60, item 3): wall and device time
+#              of each, at 2^20, 2^20 - 64, 2^20 + 64 and 2^21 ... 2^26 uniform rays (nu = 4),
+#              the copy kernel, none and discriminant, 10 submissions each, rotated
+#              -> subm.json, subm-submissions.csv, subm.txt (not yet run on a GPU)
 #   2. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 10^6 rays
 #              per case × ν                                   -> grid.json, grid.txt
 #   3. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
@@ -46,7 +51,7 @@
 #               set, /tmp/gpu-device-<UTC time>, packed into $OUT as above)
 #   --budget    wall-clock seconds for the whole run (default 540; --smoke: 240)
 #   --smoke     every step at tiny sizes (under a minute on lavapipe): checks the script
-#   --steps     the steps to run, comma-separated, of bvh,grid,sweep,wg,finish,rest (default
+#   --steps     the steps to run, comma-separated, of bvh,subm,grid,sweep,wg,finish,rest (default
 #               all; a later session that has the first run's figures picks the rest)
 #   --debs      where no libvulkan.so.1 is installed and this runs as root: the folder of
 #               Debian packages (libvulkan1_*.deb and friends) to unpack into / first
@@ -78,10 +83,11 @@
 # GPU the setup dominates: per scene ~1 s to draw the rays and spawn the shadow rays on
 # one core, ~1-2 s more per run to upload them afresh, and the answers' check (9 culls x 2
 # kinds of rays read back once); 5 scenes x 5 runs + 40 s of rounds: about 100-150 s,
-# capped at 200 s (--seconds and the cap scale with SCALE).
-# Hence the order: bvh (~150 s), grid at nu = 4 and the largest (~50 s), sweep (~7 x 15 s), workgroup
-# (~3 x 20 s), finish (~3 units a case, ~60 s), and the rest of the grid's nu last with
-# what is left. Every command runs under `timeout` with what is left of the budget, so
+# capped at 180 s (--seconds and the cap scale with SCALE); the submissions log (1b) at 120 s.
+# Hence the order: bvh (~120 s), subm (~60 s: drawing 2^26 rays on one core and uploading
+# 2^27 rays in all), grid at nu = 4 and the largest (~50 s), sweep (~7 x 15 s), workgroup
+# (~3 x 20 s), finish (~3 units a case, ~60 s): ~455 s, and the rest of the grid's nu last
+# with what is left of 540 s. Steps that hit their caps leave the last steps less or none. Every command runs under `timeout` with what is left of the budget, so
 # the script ends within it whatever the GPU does; the summary log has each step's time.
 # Scale: SCALE=0.5 halves every --seconds (not the batches), e.g. for a shorter lease.
 #
@@ -97,7 +103,7 @@ smoke=0
 budget=""
 allow_software=0
 debs=.gl
-steps=bvh,grid,sweep,wg,finish,rest
+steps=bvh,subm,grid,sweep,wg,finish,rest
 while [ $# -gt 0 ]; do
   case "$1" in
     --bin) bin=$2; shift 2 ;;
@@ -118,6 +124,7 @@ if [ "$smoke" = 1 ]; then
   # Tiny: every step and every flag as in the real run, seconds of work on lavapipe.
   bvh_args=(--scenes ring_field,facing_grid --nu 4 --tori 24 --batch 256 --runs 2)
   bvh_seconds=0.6; bvh_cap=120
+  subm_args=(--batches 4096,4032 --submissions 2); subm_cap=60
   grid_batch=4096; grid_seconds=4
   sweep_pows=(10 11 12); sweep_seconds=1
   wg_sizes=(32 256); wg_batch=4096
@@ -127,7 +134,10 @@ else
   # 10^6 camera rays (a 1000 x 1000 image), not 2^20 (the H100's slow state, below).
   bvh_args=(--scenes ring_field,chain,facing_grid,mixed_nu,dense --nu 4 --tori 1000
     --batch 1000000 --runs 5)
-  bvh_seconds=40; bvh_cap=200
+  bvh_seconds=40; bvh_cap=180
+  # Drawing 2^26 uniform rays on one core and uploading every batch (2^27 rays in all,
+  # 60-120 ns a ray on the H100's host) is most of it.
+  subm_args=(--submissions 10); subm_cap=120
   # 1 000 000 rays, not 2^20: on the H100 exactly 2^20 rays (and uniform rays at 2^21 and
   # 2^22) ran 3-5x slower than 2^20 +- 64, in a state the sweep keeps measuring
   # (docs/gpu.md, "Batch size on the H100").
@@ -137,8 +147,8 @@ else
   finish_batch=1000000; finish_seconds=30
 fi
 for s in ${steps//,/ }; do
-  case "$s" in bvh|grid|sweep|wg|finish|rest) ;;
-    *) echo "gpu_device.sh: --steps: unknown step $s (allowed: bvh, grid, sweep, wg, finish, rest)" >&2; exit 2 ;;
+  case "$s" in bvh|subm|grid|sweep|wg|finish|rest) ;;
+    *) echo "gpu_device.sh: --steps: unknown step $s (allowed: bvh, subm, grid, sweep, wg, finish, rest)" >&2; exit 2 ;;
   esac
 done
 # Whether step $1 was asked for.
@@ -151,6 +161,7 @@ sweep_seconds=$(scaled "$sweep_seconds")
 finish_seconds=$(scaled "$finish_seconds")
 bvh_seconds=$(scaled "$bvh_seconds")
 bvh_cap=$(scaled "$bvh_cap" | awk '{ printf "%d", $1 }')
+subm_cap=$(scaled "$subm_cap" | awk '{ printf "%d", $1 }')
 
 start=$(date +%s)
 deadline=$((start + budget))
@@ -268,6 +279,8 @@ fi
 # The command a step runs (the BVH step sets its own, and a cap on its time).
 step_cmd=(time --device gpu)
 step_cap=""
+# Flags every step takes but the submissions log (which draws no plots).
+step_flags=(--no-plots)
 # Runs one `torus-cull time --device gpu` step (or "${step_cmd[@]}") under what is left of
 # the budget (at most $step_cap s where set): its JSON at NAME.json (torus-cull writes it
 # through a temp name), its table at NAME.txt.
@@ -281,7 +294,7 @@ step() {
   say "== $name: torus-cull ${step_cmd[*]} $* (timeout ${left} s)"
   local t0=$(date +%s)
   timeout --signal=TERM --kill-after=10 "$left" \
-    "$bin" "${step_cmd[@]}" --no-plots --out "$out/$name.json" "$@" \
+    "$bin" "${step_cmd[@]}" "${step_flags[@]}" --out "$out/$name.json" "$@" \
     > "$out/$name.txt.partial" 2> "$out/$name.err"
   local rc=$?
   local took=$(( $(date +%s) - t0 ))
@@ -316,6 +329,13 @@ if wanted bvh; then
   step_cmd=(time-gpu-bvh); step_cap=$bvh_cap
   step bvh --workload "$workload" "${bvh_args[@]}" --seconds "$bvh_seconds"
   step_cmd=(time --device gpu); step_cap=""
+fi
+
+# 1b. Every submission of the single-torus kernel at 2^20, 2^20 +- 64 and up to 2^26 rays.
+if wanted subm; then
+  step_cmd=(time-gpu-submissions); step_cap=$subm_cap; step_flags=()
+  step subm --workload "$workload" --case uniform --nu 4 "${subm_args[@]}"
+  step_cmd=(time --device gpu); step_cap=""; step_flags=(--no-plots)
 fi
 
 # 2. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s
@@ -389,6 +409,10 @@ for f in "$out"/sweep-2p*.txt "$out"/wg-*.txt; do
   awk -v f="$(basename "$f" .txt)" '$3 == "none" && $4 ~ /^[0-9.]+$/ { print "   " f ": " $1 " none " $4 " ns/ray" }' "$f" \
     | tee -a "$partial" >&2
 done
+if [ -f "$out/subm.txt" ]; then
+  say "== subm: per batch and contender, the median, fastest and slowest pass (ns/ray) and wall ms a submission:"
+  awk '$1 ~ /^[0-9]+$/' "$out/subm.txt" | sed 's/^/   /' | tee -a "$partial" >&2
+fi
 if [ -f "$out/finish.txt" ]; then
   grep 'f64 finish pass' "$out/finish.txt" | sed 's/^/   /' | tee -a "$partial" >&2
 fi

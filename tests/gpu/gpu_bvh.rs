@@ -108,9 +108,10 @@ fn time_gpu_bvh_refuses_bad_flags() {
     }
 }
 
-/// `benches/gpu_device.sh --smoke --steps bvh`: the script's checks and its BVH step
-/// (`time-gpu-bvh` at smoke size) through the binary under test, a finished log, and the
-/// step's records: every GPU cull over `none` (closest and any hit) and every cull over
+/// `benches/gpu_device.sh --smoke --steps bvh,subm`: the script's checks, its BVH step
+/// (`time-gpu-bvh` at smoke size) and its submissions log (`time-gpu-submissions`)
+/// through the binary under test, a finished log; the submissions' CSV, a line per
+/// submission; and the BVH step's records: every GPU cull over `none` (closest and any hit) and every cull over
 /// the copy kernel, positive times, the adapter named (a software one called a CPU proxy),
 /// a between-run interval where both runs were kept; `compare` reads them and `plot` draws
 /// them.
@@ -125,7 +126,7 @@ fn device_script_smoke_times_the_gpu_bvh() {
             "benches/gpu_device.sh",
             "--smoke",
             "--steps",
-            "bvh",
+            "bvh,subm",
             "--bin",
             env!("CARGO_BIN_EXE_torus-cull"),
             "--out",
@@ -139,6 +140,22 @@ fn device_script_smoke_times_the_gpu_bvh() {
     assert!(log.contains("bvh: done"), "{log}");
     assert!(log.contains("none") && log.contains("Mrays/s"), "{log}");
     assert!(log.contains("exit 0"), "{log}");
+    assert!(log.contains("subm: done"), "{log}");
+    // Copy, none and discriminant, 2 submissions each, at 2 batch sizes; and a header.
+    let csv = std::fs::read_to_string(dir.path().join("subm-submissions.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 2 * 3 * 2, "{csv}");
+    assert!(
+        csv.lines().any(|l| l.starts_with("4032,discriminant,1,")),
+        "{csv}"
+    );
+    let subm = Results::load(&dir.path().join("subm.json")).unwrap();
+    assert!(
+        subm.estimates
+            .iter()
+            .any(|e| e.benchmark == "gpu_submission_ns-uniform/copy/4096" && e.ns_per_element > 0.0),
+        "{:?}",
+        subm.estimates
+    );
     let path = dir.path().join("bvh.json");
     let results = Results::load(&path).unwrap();
     let device = results.meta.device.clone().unwrap();
