@@ -148,7 +148,11 @@ mod measure {
         let path = match &args.out {
             Some(p) => p.clone(),
             None => {
-                let suffix = format!("-{}-gpu-submissions", workload.name);
+                let suffix = if workload.name == "default" {
+                    "-gpu-submissions".to_string()
+                } else {
+                    format!("-{}-gpu-submissions", workload.name)
+                };
                 let p = results::default_path(Path::new("results"), &suffix);
                 torus_cull_lab::output::create_default_dir(&p)
                     .map_err(|e| format!("--out {}: {e}", p.display()))?;
