@@ -409,6 +409,15 @@ fn unit_rays(
             from: s.from,
         })
         .collect();
+    if shadow.is_empty() {
+        return Err(GpuBvhError::Scene(format!(
+            "{}: no shadow ray to time ({} of its {} camera rays hit a torus; allowed: a \
+             scene and --batch whose camera rays hit)",
+            what(),
+            hits.iter().flatten().count(),
+            camera.len()
+        )));
+    }
     let report = UnitReport {
         scene: kind.name().to_string(),
         nu,
