@@ -1,22 +1,32 @@
 #!/usr/bin/env bash
 # The whole GPU measurement in one go, for a machine with a GPU but no Rust toolchain and
 # no network (docs/gpu.md, "Measuring on a real GPU"): it takes a prebuilt, stripped
-# `--features gpu` release binary and runs, within a wall-clock budget (default 450 s, so
-# that an 8-minute lease keeps a margin):
+# `--features gpu` release binary and runs, within a wall-clock budget (default 540 s: one
+# device command of at most 10 minutes, timeout_s 590, in a 15-minute lease with its start):
 #
 #   0. checks: the binary runs; the Vulkan loader (libvulkan.so.1) is there; wgpu finds an
 #      adapter (`torus-cull gpu-info`: name, device type, backend, driver, SHADER_F64, the
 #      f64 finish pass, timestamps). Missing loader or adapter: one line, exit 3 or 4. A
 #      software adapter (lavapipe, device type Cpu) is refused outside --smoke (exit 5)
 #      unless --allow-software: its figures are a CPU's.
-#   1. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 10^6 rays
+#   1. bvh:    `time-gpu-bvh` (to become `time gpu-bvh`), the GPU BVH: every GPU cull at
+#              the leaves over none, closest hit (10^6 camera rays) and any hit (a shadow
+#              ray per hit), the five scene layouts at nu = 4 with 1 000 tori, 5 runs,
+#              the copy kernel over the same ray bytes  -> bvh.json, bvh.txt
+#              (not yet run on a GPU: sized from lavapipe and the H100's grid, below)
+#   1b. subm:  `time-gpu-submissions` (to become `time gpu-submissions`), the single-torus
+#              kernel's submissions one by one (issue 60, item 3): wall and device time
+#              of each, at 2^20, 2^20 - 64, 2^20 + 64 and 2^21 ... 2^26 uniform rays (nu = 4),
+#              the copy kernel, none and discriminant, 10 submissions each, rotated
+#              -> subm.json, subm-submissions.csv, subm.txt (not yet run on a GPU)
+#   2. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 10^6 rays
 #              per case × ν                                   -> grid.json, grid.txt
-#   2. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
+#   3. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
 #              uniform and hole, ν = 4                         -> sweep-2pK.json, .txt
-#   2b. workgroup: the sweep's culls and cases at 10^6 rays with the kernel's workgroup
+#   3b. workgroup: the sweep's culls and cases at 10^6 rays with the kernel's workgroup
 #              32, 128 and 256 (`--workgroup`; 64: the grid)
 #                                                              -> wg-N.json, .txt
-#   3. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
+#   4. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
 #              escalating cases (hole, grazing) at the workload's smallest ν, 4 and its
 #              largest, culls none, cychosz, skala, 10^6 rays  -> finish.json, finish.txt
 #              (skipped, and said so, where the adapter has no SHADER_F64)
@@ -39,9 +49,9 @@
 #               it must have nu = 4 and the cases hole, uniform, grazing
 #   --out       results folder (default results/gpu-device-<UTC time>; where $OUT is
 #               set, /tmp/gpu-device-<UTC time>, packed into $OUT as above)
-#   --budget    wall-clock seconds for the whole run (default 450; --smoke: 240)
+#   --budget    wall-clock seconds for the whole run (default 540; --smoke: 240)
 #   --smoke     every step at tiny sizes (under a minute on lavapipe): checks the script
-#   --steps     the steps to run, comma-separated, of grid,sweep,wg,finish,rest (default
+#   --steps     the steps to run, comma-separated, of bvh,subm,grid,sweep,wg,finish,rest (default
 #               all; a later session that has the first run's figures picks the rest)
 #   --debs      where no libvulkan.so.1 is installed and this runs as root: the folder of
 #               Debian packages (libvulkan1_*.deb and friends) to unpack into / first
@@ -67,9 +77,17 @@
 #     `--nu 1.1,4,32 --seconds 45` did not fit 140 s; `--nu 4,32 --seconds 20`: 52 s;
 #   - one workgroup step (2 units, 2^20 rays, --seconds 8): 20 s;
 #   - the finish step at nu = 4 only (2 units, --seconds 15): 28 s.
-# Hence the order: grid at nu = 4 and the largest (~50 s), sweep (~7 x 15 s), workgroup
-# (~3 x 20 s), finish (~3 units a case, ~60 s), and the rest of the grid's nu last with
-# what is left. Every command runs under `timeout` with what is left of the budget, so
+# The BVH step (first: issue 60's question), not yet run on a GPU: on lavapipe here, with
+# 1 000 tori, preparing and uploading cost ~190 ns a camera ray and ~1 us a shadow ray
+# (spawned: its own torus's record formed in f64), the kernel ~21 us a camera ray; on a
+# GPU the setup dominates: per scene ~1 s to draw the rays and spawn the shadow rays on
+# one core, ~1-2 s more per run to upload them afresh, and the answers' check (9 culls x 2
+# kinds of rays read back once); 5 scenes x 5 runs + 40 s of rounds: about 100-150 s,
+# capped at 180 s (--seconds and the cap scale with SCALE); the submissions log (1b) at 120 s.
+# Hence the order: bvh (~120 s), subm (~60 s: drawing 2^26 rays on one core and uploading
+# 2^27 rays in all), grid at nu = 4 and the largest (~50 s), sweep (~7 x 15 s), workgroup
+# (~3 x 20 s), finish (~3 units a case, ~60 s): ~455 s, and the rest of the grid's nu last
+# with what is left of 540 s. Steps that hit their caps leave the last steps less or none. Every command runs under `timeout` with what is left of the budget, so
 # the script ends within it whatever the GPU does; the summary log has each step's time.
 # Scale: SCALE=0.5 halves every --seconds (not the batches), e.g. for a shorter lease.
 #
@@ -85,7 +103,7 @@ smoke=0
 budget=""
 allow_software=0
 debs=.gl
-steps=grid,sweep,wg,finish,rest
+steps=bvh,subm,grid,sweep,wg,finish,rest
 while [ $# -gt 0 ]; do
   case "$1" in
     --bin) bin=$2; shift 2 ;;
@@ -104,12 +122,22 @@ done
 if [ "$smoke" = 1 ]; then
   budget=${budget:-240}
   # Tiny: every step and every flag as in the real run, seconds of work on lavapipe.
+  bvh_args=(--scenes ring_field,facing_grid --nu 4 --tori 24 --batch 256 --runs 2)
+  bvh_seconds=0.6; bvh_cap=120
+  subm_args=(--batches 4096,4032 --submissions 2); subm_cap=60
   grid_batch=4096; grid_seconds=4
   sweep_pows=(10 11 12); sweep_seconds=1
   wg_sizes=(32 256); wg_batch=4096
   finish_batch=4096; finish_seconds=2
 else
-  budget=${budget:-450}
+  budget=${budget:-540}
+  # 10^6 camera rays (a 1000 x 1000 image), not 2^20 (the H100's slow state, below).
+  bvh_args=(--scenes ring_field,chain,facing_grid,mixed_nu,dense --nu 4 --tori 1000
+    --batch 1000000 --runs 5)
+  bvh_seconds=40; bvh_cap=180
+  # Drawing 2^26 uniform rays on one core and uploading every batch (2^27 rays in all,
+  # 60-120 ns a ray on the H100's host) is most of it.
+  subm_args=(--submissions 10); subm_cap=120
   # 1 000 000 rays, not 2^20: on the H100 exactly 2^20 rays (and uniform rays at 2^21 and
   # 2^22) ran 3-5x slower than 2^20 +- 64, in a state the sweep keeps measuring
   # (docs/gpu.md, "Batch size on the H100").
@@ -119,8 +147,8 @@ else
   finish_batch=1000000; finish_seconds=30
 fi
 for s in ${steps//,/ }; do
-  case "$s" in grid|sweep|wg|finish|rest) ;;
-    *) echo "gpu_device.sh: --steps: unknown step $s (allowed: grid, sweep, wg, finish, rest)" >&2; exit 2 ;;
+  case "$s" in bvh|subm|grid|sweep|wg|finish|rest) ;;
+    *) echo "gpu_device.sh: --steps: unknown step $s (allowed: bvh, subm, grid, sweep, wg, finish, rest)" >&2; exit 2 ;;
   esac
 done
 # Whether step $1 was asked for.
@@ -131,6 +159,9 @@ grid_seconds=$(scaled "$grid_seconds")
 rest_seconds=$(scaled "${rest_seconds:-0}")
 sweep_seconds=$(scaled "$sweep_seconds")
 finish_seconds=$(scaled "$finish_seconds")
+bvh_seconds=$(scaled "$bvh_seconds")
+bvh_cap=$(scaled "$bvh_cap" | awk '{ printf "%d", $1 }')
+subm_cap=$(scaled "$subm_cap" | awk '{ printf "%d", $1 }')
 
 start=$(date +%s)
 deadline=$((start + budget))
@@ -245,18 +276,25 @@ if [ "$(field software)" = yes ]; then
   say "note: a software adapter: every figure below is this CPU's, no GPU speed"
 fi
 
-# Runs one `torus-cull time --device gpu` step under what is left of the budget: its
-# JSON at NAME.json (torus-cull writes it through a temp name), its table at NAME.txt.
+# The command a step runs (the BVH step sets its own, and a cap on its time).
+step_cmd=(time --device gpu)
+step_cap=""
+# Flags every step takes but the submissions log (which draws no plots).
+step_flags=(--no-plots)
+# Runs one `torus-cull time --device gpu` step (or "${step_cmd[@]}") under what is left of
+# the budget (at most $step_cap s where set): its JSON at NAME.json (torus-cull writes it
+# through a temp name), its table at NAME.txt.
 step() {
   local name=$1; shift
   local left=$((deadline - $(date +%s)))
+  if [ -n "$step_cap" ] && [ "$left" -gt "$step_cap" ]; then left=$step_cap; fi
   if [ "$left" -lt 5 ]; then
     failed=1; say "== $name: skipped, the budget is spent"; return
   fi
-  say "== $name: torus-cull $* (timeout ${left} s)"
+  say "== $name: torus-cull ${step_cmd[*]} $* (timeout ${left} s)"
   local t0=$(date +%s)
   timeout --signal=TERM --kill-after=10 "$left" \
-    "$bin" time --device gpu --no-plots --out "$out/$name.json" "$@" \
+    "$bin" "${step_cmd[@]}" "${step_flags[@]}" --out "$out/$name.json" "$@" \
     > "$out/$name.txt.partial" 2> "$out/$name.err"
   local rc=$?
   local took=$(( $(date +%s) - t0 ))
@@ -286,14 +324,28 @@ esac
 lo=$(echo $wl_nu | awk '{print $1}')
 hi=$(echo $wl_nu | awk '{print $NF}')
 
-# 1. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s
+# 1. The GPU BVH (not yet run on a GPU), under its cap so that the steps after it run.
+if wanted bvh; then
+  step_cmd=(time-gpu-bvh); step_cap=$bvh_cap
+  step bvh --workload "$workload" "${bvh_args[@]}" --seconds "$bvh_seconds"
+  step_cmd=(time --device gpu); step_cap=""
+fi
+
+# 1b. Every submission of the single-torus kernel at 2^20, 2^20 +- 64 and up to 2^26 rays.
+if wanted subm; then
+  step_cmd=(time-gpu-submissions); step_cap=$subm_cap; step_flags=()
+  step subm --workload "$workload" --case uniform --nu 4 "${subm_args[@]}"
+  step_cmd=(time --device gpu); step_cap=""; step_flags=(--no-plots)
+fi
+
+# 2. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s
 #    on the H100), the rest of the workload's ν last, with what the budget leaves (on the
 #    H100 the whole default grid did not fit 430 s: 55 of its 60 units, see below).
 grid_nu=$(printf '%s\n' 4 "$hi" | awk '!seen[$0]++' | paste -sd, -)
 [ "$smoke" = 1 ] && grid_nu=4
 wanted grid && step grid --workload "$workload" --batch "$grid_batch" --seconds "$grid_seconds" --nu "$grid_nu"
 
-# 2. The batch sweep.
+# 3. The batch sweep.
 if ! echo " $wl_nu " | grep -q ' 4 '; then
   failed=1; say "== sweep: skipped, workload $workload has no nu = 4 (it has: $wl_nu)"
   sweep_pows=(); wg_sizes=()
@@ -304,7 +356,7 @@ for p in "${sweep_pows[@]}"; do
     --culls none,cychosz,skala,discriminant --batch $((1 << p)) --seconds "$sweep_seconds"
 done
 
-# 2b. The kernel's workgroup size (64: the grid): the same rays and culls at
+# 3b. The kernel's workgroup size (64: the grid): the same rays and culls at
 #     10^6 rays, in one process per size (not paired across sizes: compare ns/ray and of_copy).
 wanted wg || wg_sizes=()
 for w in "${wg_sizes[@]}"; do
@@ -313,7 +365,7 @@ for w in "${wg_sizes[@]}"; do
     --workgroup "$w"
 done
 
-# 3. The f64 finish pass.
+# 4. The f64 finish pass.
 if ! wanted finish; then
   :
 elif [ "$(field f64_finish_pass)" = yes ]; then
@@ -325,7 +377,7 @@ else
   say "== finish: skipped, the adapter has no f64 finish pass ($(field f64_finish_pass))"
 fi
 
-# 4. The rest of the grid's ν, with what is left.
+# 5. The rest of the grid's ν, with what is left.
 if [ "$smoke" = 0 ] && wanted rest; then
   rest=$(printf '%s\n' $wl_nu | awk -v hi="$hi" '$1 != 4 && $1 != hi' | paste -sd, -)
   [ -z "$rest" ] || step grid-rest --workload "$workload" --batch "$grid_batch" \
@@ -333,6 +385,17 @@ if [ "$smoke" = 0 ] && wanted rest; then
 fi
 
 # The headline lines, in the log and on stderr.
+if [ -f "$out/bvh.txt" ]; then
+  say "== bvh, closest hit per scene/nu (ns/ray): none (Mrays/s), the fastest cull, the copy kernel:"
+  awk '/^gpu_bvh_closest_ns:/ { on = 1; next } /^gpu_bvh_anyhit_ns:/ { on = 0 }
+       on && $2 != "copy" && $4 ~ /^[0-9.]+$/ {
+         k = $1 "/" $2; if ($3 == "none") { none[k] = $4; mr[k] = $5 }
+         if (!(k in best) || $4 < best[k]) { best[k] = $4; who[k] = $3 }
+         if (!(k in seen)) { seen[k] = 1; order[++n] = k } }
+       on && $2 == "copy" { copy[$1] = $3 }
+       END { for (i = 1; i <= n; i++) { k = order[i]; printf "   %-16s none %s (%s Mrays/s), fastest %s %s, copy %s\n", k, none[k], mr[k], who[k], best[k], copy[k] } }' \
+    "$out/bvh.txt" | tee -a "$partial" >&2
+fi
 if [ -f "$out/grid.txt" ]; then
   gmax=$(awk '$4 ~ /^[0-9.]+$/ && $2 + 0 > m { m = $2 + 0 } END { print m }' "$out/grid.txt")
   say "== grid at nu = $gmax, per case: none, and the fastest cull (ns/ray):"
@@ -346,6 +409,10 @@ for f in "$out"/sweep-2p*.txt "$out"/wg-*.txt; do
   awk -v f="$(basename "$f" .txt)" '$3 == "none" && $4 ~ /^[0-9.]+$/ { print "   " f ": " $1 " none " $4 " ns/ray" }' "$f" \
     | tee -a "$partial" >&2
 done
+if [ -f "$out/subm.txt" ]; then
+  say "== subm: per batch and contender, the median, fastest and slowest pass (ns/ray) and wall ms a submission:"
+  awk '$1 ~ /^[0-9]+$/' "$out/subm.txt" | sed 's/^/   /' | tee -a "$partial" >&2
+fi
 if [ -f "$out/finish.txt" ]; then
   grep 'f64 finish pass' "$out/finish.txt" | sed 's/^/   /' | tee -a "$partial" >&2
 fi

@@ -68,6 +68,14 @@ enum Command {
     /// exact intersection per case × ν, the wavefront, the solver's families; written as
     /// the `counts` records of a results file that `compare` judges beside the wall ratios.
     Count(count::CountArgs),
+    /// Time the GPU BVH (a binary built with `--features gpu`): each GPU cull at the leaves
+    /// over none, closest hit and any hit, with within- and between-run intervals, rays
+    /// per second and the copy kernel over the same ray bytes (docs/gpu.md).
+    TimeGpuBvh(time::gpu_bvh::GpuBvhArgs),
+    /// Log every submission of the single-torus GPU kernel (a binary built with
+    /// `--features gpu`): wall and device time per batch size and contender (the copy
+    /// kernel and the culls), for the slow state at 2^20 rays (docs/gpu.md).
+    TimeGpuSubmissions(time::gpu_submissions::SubmissionsArgs),
     /// Diff two results files (or two f32-check files); exits 1 on a regression or when
     /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
@@ -267,6 +275,8 @@ fn main() -> ExitCode {
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
         Command::Count(args) => count::run(args),
+        Command::TimeGpuBvh(args) => time::gpu_bvh::run(&args),
+        Command::TimeGpuSubmissions(args) => time::gpu_submissions::run(&args),
         Command::Check(args) => check::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),

@@ -46,6 +46,8 @@ pub mod bvh;
 pub mod contender;
 pub mod engine;
 pub mod family;
+#[cfg(feature = "gpu")]
+pub mod gpu_bvh;
 pub mod runs;
 pub mod shapes;
 pub mod stats;

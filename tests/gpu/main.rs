@@ -7,5 +7,6 @@
 mod common;
 
 mod gpu;
+mod gpu_bvh;
 mod scene;
 mod wgsl_module;

@@ -3,6 +3,8 @@
 
 mod bend;
 mod family;
+pub(crate) mod gpu_bvh;
+pub(crate) mod gpu_submissions;
 mod shapes;
 
 use crate::console::{out, outln};

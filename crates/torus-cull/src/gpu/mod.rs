@@ -75,8 +75,9 @@
 //! `dispatch.rs` (the one dispatch path: pipeline, buffers, bind group, passes, read back),
 //! `scene_bvh.rs` ([`SceneBvh`]: tori in an obvhs BVH2, laid out for the WGSL traversal,
 //! and the host's answer), `scene_spawned.rs` ([`SpawnedRay`]: secondary rays, their own
-//! torus on the surface path) and `scene.rs` ([`GpuScene`]: the traversal kernel, closest
-//! and any hit over many tori, docs/gpu.md "Tori in a GPU BVH").
+//! torus on the surface path), `scene.rs` ([`GpuScene`]: the traversal kernel, closest
+//! and any hit over many tori, docs/gpu.md "Tori in a GPU BVH") and `scene_timing.rs`
+//! ([`SceneRays`]: rays resident for the traversal, timed alone, with its copy kernel).
 //!
 //! No timing claim is made from a software adapter: [`GpuIntersector::is_software`] says
 //! when the adapter is the CPU (lavapipe reports device type `Cpu`).
@@ -110,6 +111,7 @@ mod scene;
 pub(crate) mod scene_bvh;
 mod scene_kernel;
 mod scene_spawned;
+mod scene_timing;
 mod source;
 mod timing;
 mod wire;
@@ -124,6 +126,7 @@ pub use scene_bvh::{
     DIRECTION_RANGE, MAX_COORDINATE, STACK, SceneBvh, SceneHit, wgsl_scene_module,
 };
 pub use scene_spawned::{SPAWNED_WORDS, SpawnedRay};
+pub use scene_timing::SceneRays;
 pub use source::{
     FinishConstants, KernelConstants, finish_source, kernel_source, wgsl_finish_module, wgsl_module,
 };

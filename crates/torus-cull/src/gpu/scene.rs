@@ -56,7 +56,7 @@ use crate::{Ray, Torus};
 use glam::Vec3;
 
 /// Rays per dispatch (32 bytes each, in place).
-const CHUNK: usize = 1 << 18;
+pub(super) const CHUNK: usize = 1 << 18;
 
 /// A closest-hit answer and who gave it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -79,19 +79,19 @@ pub struct Occlusion {
 
 /// Tori in a BVH on the device, ready to trace batches of rays.
 pub struct GpuScene {
-    bvh: SceneBvh,
-    f64: bool,
-    device: wgpu::Device,
-    queue: wgpu::Queue,
+    pub(super) bvh: SceneBvh,
+    pub(super) f64: bool,
+    pub(super) device: wgpu::Device,
+    pub(super) queue: wgpu::Queue,
     /// `scene_main`, for world rays.
-    kernel: Kernel,
+    pub(super) kernel: Kernel,
     /// The device's compiled scene kernels: `scene_from_main`, for spawned rays, is
     /// compiled on the first [`GpuScene::trace_from`] or [`GpuScene::occluded_from`] on
     /// the device (the surface path makes it the larger kernel).
-    kernels: Kernels,
+    pub(super) kernels: Kernels,
     node_buffer: wgpu::Buffer,
-    tori_buffer: wgpu::Buffer,
-    tori64_buffer: Option<wgpu::Buffer>,
+    pub(super) tori_buffer: wgpu::Buffer,
+    pub(super) tori64_buffer: Option<wgpu::Buffer>,
     /// One dispatch at a time: each writes its header row into the node buffer before it
     /// submits, so two threads' writes and submissions must not interleave.
     dispatching: std::sync::Mutex<()>,
@@ -287,14 +287,7 @@ impl GpuScene {
         };
         let _one_at_a_time = self.dispatching.lock().unwrap_or_else(|e| e.into_inner());
         let mut out = Vec::with_capacity(records.len());
-        // A ray the host answers goes as a harmless placeholder: the origin, a unit
-        // direction, an empty range (t_min 1 > t_max 0), no torus of its own.
-        let mut placeholder = [0.0f32; N];
-        placeholder[3] = 1.0;
-        placeholder[4] = 1.0;
-        if N > 32 {
-            placeholder[32] = f32::from_bits(u32::MAX);
-        }
+        let placeholder = placeholder::<N>();
         for batch in records.chunks(CHUNK) {
             let mut words: Vec<f32> = batch
                 .iter()
@@ -368,8 +361,8 @@ impl GpuScene {
 
 /// The header row's mode (bit 0: any hit; `wgsl/scene_kernel.wgsl`), and the entry point:
 /// `scene_from_main` for spawned records ([`SPAWNED_WORDS`] words a ray).
-#[derive(Debug, Clone, Copy)]
-enum Mode {
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Mode {
     Closest = 0,
     Any = 1,
     ClosestFrom = 2,
@@ -377,7 +370,7 @@ enum Mode {
 }
 
 /// A closest-hit answer from the device's record, `None` where the host answers.
-fn closest(record: Option<[f32; 8]>) -> Option<SceneAnswer> {
+pub(super) fn closest(record: Option<[f32; 8]>) -> Option<SceneAnswer> {
     match record {
         Some(r) if r[5] == STATUS_HIT as f32 && r[4] >= 0.0 => Some(SceneAnswer {
             hit: Some(SceneHit {
@@ -396,7 +389,7 @@ fn closest(record: Option<[f32; 8]>) -> Option<SceneAnswer> {
 }
 
 /// An any-hit answer from the device's record, `None` where the host answers.
-fn any(record: Option<[f32; 8]>) -> Option<Occlusion> {
+pub(super) fn any(record: Option<[f32; 8]>) -> Option<Occlusion> {
     match record {
         Some(r) if r[5] == STATUS_HIT as f32 || r[5] == STATUS_MISS as f32 => Some(Occlusion {
             occluded: r[5] == STATUS_HIT as f32,
@@ -406,8 +399,21 @@ fn any(record: Option<[f32; 8]>) -> Option<Occlusion> {
     }
 }
 
+/// The record of a ray the host answers, sent in its place: the origin, a unit direction,
+/// an empty range (t_min 1 > t_max 0), no torus of its own (`N` words: 8 for a world ray,
+/// [`SPAWNED_WORDS`] for a spawned one).
+pub(super) fn placeholder<const N: usize>() -> [f32; N] {
+    let mut p = [0.0f32; N];
+    p[3] = 1.0;
+    p[4] = 1.0;
+    if N > 32 {
+        p[32] = f32::from_bits(u32::MAX);
+    }
+    p
+}
+
 /// The host's closest-hit answer.
-fn host(hit: Option<SceneHit>) -> SceneAnswer {
+pub(super) fn host(hit: Option<SceneHit>) -> SceneAnswer {
     SceneAnswer {
         hit,
         by: Finished::Host,
