@@ -1,6 +1,6 @@
 //! The command's console: stdout that a closed pipe does not break ([`write_stdout`],
 //! `out!`, `outln!`) and the progress lines printed when stderr is not a terminal
-//! ([`Heartbeat`]). The ground floor of the command: every command module uses it.
+//! ([`Heartbeat`], and [`Ticker`] where the work reports no steps of its own). The ground floor of the command: every command module uses it.
 
 /// Progress where the bar cannot be seen: with stderr not a terminal (a CI log, `2> log`)
 /// indicatif draws nothing, so this prints a line when the work starts, then at most one
@@ -52,6 +52,56 @@ impl Heartbeat {
                 (now - self.start).as_secs_f64()
             );
             *last = Some(now);
+        }
+    }
+}
+
+/// A [`Heartbeat`] driven by the clock, for work that cannot report its steps often
+/// enough (a shape's rounds, a GPU unit's): a thread that prints the heartbeat's line
+/// every [`Heartbeat::EVERY`] with the progress last given to [`Ticker::set`], until the
+/// ticker is dropped. Its thread sleeps between lines, so it costs the timed thread
+/// nothing but one wake-up in 5 s (and a round it disturbs is set aside as any other).
+pub(crate) struct Ticker {
+    done: std::sync::Arc<std::sync::atomic::AtomicU64>,
+    stop: Option<std::sync::mpsc::Sender<()>>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Ticker {
+    /// Starts ticking `heartbeat` over `total` units, none done yet.
+    pub(crate) fn start(heartbeat: Heartbeat, total: u64) -> Ticker {
+        use std::sync::atomic::Ordering;
+        let done = std::sync::Arc::new(std::sync::atomic::AtomicU64::new(0));
+        let (stop, stopped) = std::sync::mpsc::channel::<()>();
+        let seen = std::sync::Arc::clone(&done);
+        let thread = std::thread::spawn(move || {
+            heartbeat.update(0, total);
+            while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
+                stopped.recv_timeout(Heartbeat::EVERY)
+            {
+                heartbeat.update(seen.load(Ordering::Relaxed), total);
+            }
+            // The end's line when all was done (an error leaves it out).
+            heartbeat.update(seen.load(Ordering::Relaxed), total);
+        });
+        Ticker {
+            done,
+            stop: Some(stop),
+            thread: Some(thread),
+        }
+    }
+
+    /// `done` units finished.
+    pub(crate) fn set(&self, done: u64) {
+        self.done.store(done, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+impl Drop for Ticker {
+    fn drop(&mut self) {
+        drop(self.stop.take());
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
         }
     }
 }

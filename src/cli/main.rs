@@ -61,7 +61,8 @@ enum Command {
         culls: Vec<String>,
     },
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
-    /// 95% intervals), in about 30 s.
+    /// 95% intervals), in about 30 s: `time ring` (a bare `time`), `secondary`, `family`,
+    /// `bend`, `bvh`, `gpu`.
     Time(time::TimeArgs),
     /// Diff two results files (or two f32-check files); exits 1 on a regression or when
     /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
@@ -244,6 +245,10 @@ fn main() -> ExitCode {
     // Every flag takes a leading '-' (src/cli/whole.rs), so a negative value meets the
     // flag's own range check.
     let argv = check::expand_aliases(std::env::args_os().collect());
+    if let Some(message) = time::old_spelling(&argv) {
+        eprintln!("error: {message}");
+        return ExitCode::from(2);
+    }
     let matches = whole::negative_numbers(Cli::command()).get_matches_from(argv);
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     remove_temp_files_on_signals();
