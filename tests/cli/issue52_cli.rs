@@ -23,7 +23,7 @@ fn a_negative_value_gets_the_flags_range() {
             "--nu -1 is not in workload quick (allowed: ",
         ),
         (
-            "time --workgroup -1 --device gpu",
+            "time gpu --workgroup -1",
             "--workgroup -1 is invalid (allowed: 32 ..= 256",
         ),
         (

@@ -57,7 +57,8 @@ fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
 }
 
 /// Times the kernel on every case × ν of the workload.
-pub(super) fn run(args: &GpuArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+/// `workgroup`: `--workgroup`, checked.
+pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
     let mut workload = Workload::open(&common.workload)?;
     pick_cases(&args.pick.cases, &mut workload, &common.workload)?;
@@ -65,9 +66,6 @@ pub(super) fn run(args: &GpuArgs) -> Result<ExitCode, Box<dyn std::error::Error>
     let nus = pick_nus(&args.pick.nu, &workload, &common.workload)?;
     check_seconds(common.seconds)?;
     let batch = pick_gpu_batch(common.batch)?;
-    let workgroup = args
-        .workgroup
-        .within("--workgroup", (32, 256), "; 32, 64, 128 or 256")?;
     let path = out_path(common, &time_suffix(&workload.name, "gpu"), false)?;
     let (workload, nus, seconds, finish) = (&workload, &nus[..], common.seconds, args.finish);
     let mut culls = gpu_culls(&culls)?;

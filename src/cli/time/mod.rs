@@ -84,7 +84,13 @@ pub fn run(time: TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
         Some(TimeCommand::Family(args)) => shapes::run(&args, shapes::Shapes::Family),
         Some(TimeCommand::Bend(args)) => shapes::run(&args, shapes::Shapes::Bend),
         Some(TimeCommand::Bvh(args)) => bvh::run(&args),
-        Some(TimeCommand::Gpu(args)) => gpu::run(&args),
+        Some(TimeCommand::Gpu(args)) => {
+            // Checked in any binary, the feature's or not: a bad value is named first.
+            let workgroup =
+                args.workgroup
+                    .within("--workgroup", (32, 256), "; 32, 64, 128 or 256")?;
+            gpu::run(&args, workgroup)
+        }
     }
 }
 
@@ -141,6 +147,7 @@ mod gpu {
 
     pub(super) fn run(
         _args: &super::args::GpuArgs,
+        _workgroup: u32,
     ) -> Result<ExitCode, Box<dyn std::error::Error>> {
         Err("time gpu needs a binary built with the feature gpu: \
              cargo run --release --features gpu -- time gpu"
