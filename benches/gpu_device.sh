@@ -9,14 +9,14 @@
 #      f64 finish pass, timestamps). Missing loader or adapter: one line, exit 3 or 4. A
 #      software adapter (lavapipe, device type Cpu) is refused outside --smoke (exit 5)
 #      unless --allow-software: its figures are a CPU's.
-#   1. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 10^6 rays
+#   1. grid:   `time gpu`, every GPU cull × case × ν of the workload, 10^6 rays
 #              per case × ν                                   -> grid.json, grid.txt
 #   2. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
 #              uniform and hole, ν = 4                         -> sweep-2pK.json, .txt
 #   2b. workgroup: the sweep's culls and cases at 10^6 rays with the kernel's workgroup
 #              32, 128 and 256 (`--workgroup`; 64: the grid)
 #                                                              -> wg-N.json, .txt
-#   3. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
+#   3. finish: `time gpu --finish`, the f64 finish pass after the kernel, on the
 #              escalating cases (hole, grazing) at the workload's smallest ν, 4 and its
 #              largest, culls none, cychosz, skala, 10^6 rays  -> finish.json, finish.txt
 #              (skipped, and said so, where the adapter has no SHADER_F64)
@@ -57,7 +57,7 @@
 #     loaded core (~5 us/ray of a free core); uniform and hole are far cheaper
 #   - packing and uploading: 250-450 ns/ray here (the H100's host, 2026-11-25: 59-123)
 #   - the kernel on lavapipe: ~400-450 ns/ray at 2^20 rays, 4-8 us/ray at 2^12 (there
-#     the dispatch dominates); `time --device gpu --cases uniform,grazing --nu 4 --culls
+#     the dispatch dominates); `time gpu --cases uniform,grazing --nu 4 --culls
 #     none --batch 2^20 --seconds 0.1` took 38 s in all
 #   - the smoke run (every step at 2^10-2^12 rays): 27-32 s; 104 s beside a cargo build
 # Measured on an H100 (2026-11-27, 16 host cores), which replaced the plan made here: one
@@ -245,7 +245,7 @@ if [ "$(field software)" = yes ]; then
   say "note: a software adapter: every figure below is this CPU's, no GPU speed"
 fi
 
-# Runs one `torus-cull time --device gpu` step under what is left of the budget: its
+# Runs one `torus-cull time gpu` step under what is left of the budget: its
 # JSON at NAME.json (torus-cull writes it through a temp name), its table at NAME.txt.
 step() {
   local name=$1; shift
@@ -256,7 +256,7 @@ step() {
   say "== $name: torus-cull $* (timeout ${left} s)"
   local t0=$(date +%s)
   timeout --signal=TERM --kill-after=10 "$left" \
-    "$bin" time --device gpu --no-plots --out "$out/$name.json" "$@" \
+    "$bin" time gpu --no-plots --out "$out/$name.json" "$@" \
     > "$out/$name.txt.partial" 2> "$out/$name.err"
   local rc=$?
   local took=$(( $(date +%s) - t0 ))

@@ -262,45 +262,35 @@ fn runs_header(title: &str, of: &[&RatioRecord]) -> String {
     aside.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
     aside.dedup();
     let single = of.iter().all(|r| r.ratio_ci_between.is_none());
-    let mut head = format!("{title}, paired ratio [95% CI]");
+    let head = format!("{title}, paired ratio [95% CI]");
     if made <= 1 {
-        head += " within 1 run";
-        return head;
+        return format!("{head} within 1 run");
     }
-    let at = |with_left: bool| -> Vec<String> {
-        aside
-            .iter()
-            .map(|&(nu, n, one_left)| {
-                let left = if with_left && one_left {
-                    ", there within the 1 run left"
-                } else {
-                    ""
-                };
-                format!("{n} at ν = {}{left}", crate::number::Num(nu))
-            })
-            .collect()
+    let at: Vec<String> = aside
+        .iter()
+        .map(|&(nu, n, one_left)| {
+            let left = if one_left && !single {
+                ", there within the 1 run left"
+            } else {
+                ""
+            };
+            format!("{n} at ν = {}{left}", crate::number::Num(nu))
+        })
+        .collect();
+    let set_aside = if at.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "set aside as run in a slow state of the machine: {}",
+            at.join(", ")
+        )
     };
-    if single {
-        let _ = write!(head, " within 1 run ({made} made");
-        if !aside.is_empty() {
-            let _ = write!(
-                head,
-                "; set aside as run in a slow state of the machine: {}",
-                at(false).join(", ")
-            );
-        }
-        head.push(')');
-        return head;
+    match (single, set_aside.is_empty()) {
+        (true, true) => format!("{head} within 1 run ({made} made)"),
+        (true, false) => format!("{head} within 1 run ({made} made; {set_aside})"),
+        (false, true) => format!("{head} between {made} runs"),
+        (false, false) => format!("{head} between {made} runs ({set_aside})"),
     }
-    let _ = write!(head, " between {made} runs");
-    if !aside.is_empty() {
-        let _ = write!(
-            head,
-            " (set aside as run in a slow state of the machine: {})",
-            at(true).join(", ")
-        );
-    }
-    head
 }
 
 /// Scalar against batch mode per case (rows ν, columns the culls timed both ways): each

@@ -97,7 +97,7 @@ pub struct Meta {
     /// (e.g. `linux x86_64 6.8.0-49-generic`); null in older files.
     #[serde(default)]
     pub os: Option<String>,
-    /// The GPU adapter a `time --device gpu` file was measured on: its name, device type
+    /// The GPU adapter a `time gpu` file was measured on: its name, device type
     /// and backend, and "software adapter: no GPU timing claimed" for a CPU rasteriser
     /// (lavapipe); absent from CPU timings and older files.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -172,7 +172,7 @@ enum Command {
         /// oracle (--exact f64, or f32: the misses of the outer torus proved in f32, the
         /// rest escalated; a whole bend is the ring torus). A bend's rows add after the
         /// culls' columns `wedge` (the segment's wedge alone) and `wedge+<cull>` (each cull
-        /// but none behind the wedge), as `bend` and `time --bend` price them.
+        /// but none behind the wedge), as `bend` and `time bend` price them.
         #[arg(long = "bore", allow_hyphen_values = true)]
         bore: Option<f64>,
         /// The bend's segment start φ₀ in radians, finite (default 0).

@@ -49,7 +49,7 @@
 //! **The pipe bend** (`--bore`, `--phi-start`, `--delta-phi`; [`Target::with_bend`]): its
 //! rows add after the cull columns the wedge's ([`bend_wedge_columns`]): `wedge`, the
 //! segment's wedge alone, then `wedge+<cull>` for each cull but `none`, the forms `bend`
-//! and `time --bend` price; the header names them.
+//! and `time bend` price; the header names them.
 //!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
@@ -90,7 +90,7 @@ pub fn output_header() -> String {
 /// The columns a pipe bend's rows add after the culls' (`--bore`, `--phi-start`,
 /// `--delta-phi`): `wedge`, the segment's wedge alone (`PipeBend::wedge_cull(NoCull)`),
 /// then `wedge+<cull>`, each cull but `none` ([`torus_cull::CullKind::TIMED`] order) on the
-/// outer torus behind the wedge: the forms `bend` and `time --bend` price. 1 keeps, 0
+/// outer torus behind the wedge: the forms `bend` and `time bend` price. 1 keeps, 0
 /// rejects; a rejected ray is one the oracle calls a miss.
 pub fn bend_wedge_columns() -> Vec<String> {
     torus_cull::CullKind::TIMED

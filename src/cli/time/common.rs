@@ -2,7 +2,7 @@
 //! workload's cases, ν and culls, the output path (checked before any measuring), the
 //! results file's `meta.sizes`, and the plots.
 
-use super::args::Common;
+use super::args::{Common, Pick};
 use crate::whole::Whole;
 use std::path::{Path, PathBuf};
 use torus_cull::{CullKind, Named};
@@ -20,6 +20,21 @@ pub(super) const MIN_BATCH: usize = 16;
 
 /// The most `--runs`.
 pub(super) const MAX_RUNS: u64 = 100;
+
+/// The workload of `--workload` with the cases of `--cases`, the culls of `--culls` and
+/// the ν of `--nu`, once `--seconds` is checked: what `time ring`, `secondary` and `gpu`
+/// time.
+pub(super) fn picked(
+    common: &Common,
+    pick: &Pick,
+) -> Result<(Workload, Vec<CullKind>, Vec<f64>), Box<dyn std::error::Error>> {
+    let mut workload = Workload::open(&common.workload)?;
+    pick_cases(&pick.cases, &mut workload, &common.workload)?;
+    let culls = parse_culls(&pick.culls)?;
+    let nus = pick_nus(&pick.nu, &workload, &common.workload)?;
+    check_seconds(common.seconds)?;
+    Ok((workload, culls, nus))
+}
 
 /// `--seconds`: positive, finite and at most [`MAX_SECONDS`].
 pub(super) fn check_seconds(seconds: f64) -> Result<(), String> {
@@ -116,11 +131,7 @@ pub(super) fn parse_culls(names: &[String]) -> Result<Vec<CullKind>, String> {
 
 /// `--cases`: keeps the workload's cases named (each must be one of them), in the
 /// workload's order; all of them where none is named.
-pub(super) fn pick_cases(
-    asked: &[String],
-    workload: &mut Workload,
-    file: &Path,
-) -> Result<(), String> {
+fn pick_cases(asked: &[String], workload: &mut Workload, file: &Path) -> Result<(), String> {
     for name in asked {
         if !workload.cases.iter().any(|c| c.name() == name) {
             let have: Vec<&str> = workload.cases.iter().map(|c| c.name()).collect();
@@ -141,11 +152,7 @@ pub(super) fn pick_cases(
 
 /// `--nu`: each value must be one of the workload's (its rays are defined there); default
 /// all of them.
-pub(super) fn pick_nus(
-    asked: &[f64],
-    workload: &Workload,
-    file: &Path,
-) -> Result<Vec<f64>, String> {
+fn pick_nus(asked: &[f64], workload: &Workload, file: &Path) -> Result<Vec<f64>, String> {
     if asked.is_empty() {
         return Ok(workload.nu.clone());
     }

@@ -9,10 +9,7 @@
 //! apart.
 
 use super::args::GpuArgs;
-use super::common::{
-    MIN_BATCH, check_seconds, out_path, parse_culls, pick_cases, pick_nus, save, time_suffix,
-    timing_sizes,
-};
+use super::common::{MIN_BATCH, out_path, picked, save, time_suffix, timing_sizes};
 use crate::console::{Heartbeat, Ticker, outln};
 use crate::whole::Whole;
 use std::process::ExitCode;
@@ -60,11 +57,7 @@ fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
 /// `workgroup`: `--workgroup`, checked.
 pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
-    let mut workload = Workload::open(&common.workload)?;
-    pick_cases(&args.pick.cases, &mut workload, &common.workload)?;
-    let culls = parse_culls(&args.pick.culls)?;
-    let nus = pick_nus(&args.pick.nu, &workload, &common.workload)?;
-    check_seconds(common.seconds)?;
+    let (workload, culls, nus) = picked(common, &args.pick)?;
     let batch = pick_gpu_batch(common.batch)?;
     let path = out_path(common, &time_suffix(&workload.name, "gpu"), false)?;
     let (workload, nus, seconds, finish) = (&workload, &nus[..], common.seconds, args.finish);

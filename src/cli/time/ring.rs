@@ -5,8 +5,8 @@
 
 use super::args::{Mode, RingArgs};
 use super::common::{
-    MIN_BATCH, MIN_RUN_SECONDS, check_run_seconds, check_seconds, out_path, parse_culls,
-    pick_batch, pick_cases, pick_nus, pick_runs, save, time_suffix, timing_sizes,
+    MIN_BATCH, MIN_RUN_SECONDS, check_run_seconds, out_path, pick_batch, pick_runs, picked, save,
+    time_suffix, timing_sizes,
 };
 use super::workers::{WorkerPlan, time_in_workers};
 use crate::console::out;
@@ -29,11 +29,7 @@ pub(super) fn run(
     secondary: bool,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
-    let mut workload = Workload::open(&common.workload)?;
-    pick_cases(&args.pick.cases, &mut workload, &common.workload)?;
-    let culls = parse_culls(&args.pick.culls)?;
-    let nus = pick_nus(&args.pick.nu, &workload, &common.workload)?;
-    check_seconds(common.seconds)?;
+    let (workload, culls, nus) = picked(common, &args.pick)?;
     let batch = pick_batch(common.batch, &workload, &common.workload)?;
     let kind = if secondary { "secondary" } else { "" };
     let path = out_path(
