@@ -284,9 +284,9 @@ impl TimingRecord {
 }
 
 /// [`TimingRecord::mode`] of one-ray-at-a-time timings.
-pub const SCALAR_MODE: &str = "scalar";
+pub const SCALAR_MODE: &str = crate::precision::Mode::Scalar.name();
 /// [`TimingRecord::mode`] of wavefront timings.
-pub const BATCH_MODE: &str = "batch";
+pub const BATCH_MODE: &str = crate::precision::Mode::Batch.name();
 
 fn scalar_mode() -> String {
     SCALAR_MODE.into()
@@ -294,12 +294,12 @@ fn scalar_mode() -> String {
 
 /// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the f64 paths (what a
 /// record without the field means).
-pub const F64_PRECISION: &str = "f64";
+pub const F64_PRECISION: &str = crate::precision::Precision::F64.name();
 /// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the certified f32 path.
-pub const F32_PRECISION: &str = "f32";
+pub const F32_PRECISION: &str = crate::precision::Precision::F32.name();
 /// [`TimingRecord::device`] and [`RatioRecord::device`] of CPU timings (what a record
 /// without the field means).
-pub const CPU_DEVICE: &str = "cpu";
+pub const CPU_DEVICE: &str = crate::precision::Engine::Cpu.name();
 /// [`RatioRecord::reference`] of the headline f32 ratio: the same cull's f64 wavefront
 /// (metric `batch_total_ns`) in the same rounds, so the ratio is t(f32) / t(f64).
 pub const F64_REFERENCE: &str = "f64";

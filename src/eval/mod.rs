@@ -61,6 +61,7 @@ mod target;
 
 use crate::number::{Echo, Num};
 use crate::oracle::{OracleClass, OracleLabel};
+use crate::precision::{self as axis, Engine, Path};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
@@ -137,6 +138,29 @@ pub enum Precision {
     /// (`finished` = `device`) and on the host otherwise (`host`). The output adds the
     /// kernel's cull verdicts, `gpu_<cull>` ([`gpu_output_header`]).
     CertifiedGpu,
+}
+
+impl Precision {
+    /// The precision the rows are read in: f64 for [`Precision::F64`], else f32 (the
+    /// ray a renderer shoots).
+    #[must_use]
+    pub fn rays(self) -> axis::Precision {
+        match self {
+            Precision::F64 => axis::Precision::F64,
+            _ => axis::Precision::F32,
+        }
+    }
+
+    /// The path that answers `t_hit` on the precision × engine axis: the CPU's f64 path
+    /// (on the f64 or the f32 ray), its certified f32 path, or the GPU kernel's.
+    #[must_use]
+    pub fn exact(self) -> Path {
+        match self {
+            Precision::F64 | Precision::F32 => Path::SCALAR_F64,
+            Precision::CertifiedF32 => Path::SCALAR_F32,
+            Precision::CertifiedGpu => Path::GPU_F32,
+        }
+    }
 }
 
 /// Why `eval` stopped.
@@ -264,7 +288,8 @@ pub fn eval_target_csv(
     let mut lines = input.lines();
     let header = lines.next().transpose().map_err(|e| not_text(1, e))?;
     let columns = check_header(header, &row_error)?;
-    let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
+    let on_gpu = precision.exact().engine == Engine::Gpu;
+    let (lines, mut gpu_answers) = if on_gpu {
         let (lines, answers) = read_for_gpu(&target, &columns, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
@@ -282,9 +307,9 @@ pub fn eval_target_csv(
     } else {
         String::new()
     };
-    if precision == Precision::CertifiedGpu {
+    if on_gpu {
         writeln!(output, "{}", gpu_output_header())?;
-    } else if precision == Precision::CertifiedF32 {
+    } else if precision.exact().precision == axis::Precision::F32 {
         writeln!(
             output,
             "{}{wedge}",
@@ -420,7 +445,7 @@ fn evaluate(
     line: &str,
     gpu_answers: &mut impl Iterator<Item = GpuAnswer>,
 ) -> Result<Row, String> {
-    if precision == Precision::F64 {
+    if precision.rays() == axis::Precision::F64 {
         let ray = parse_dray(target, columns, line)?;
         return Ok(Row {
             label: target.oracle(&ray)?,

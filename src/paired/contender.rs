@@ -4,6 +4,7 @@
 //! is compiled per cull and nothing is dispatched per ray; the one `match` per pass sits
 //! outside the timed region.
 
+use crate::precision::{Mode, Path, Precision};
 use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
@@ -61,28 +62,31 @@ impl Metric {
         }
     }
 
+    /// The path this times on the precision × engine axis: the CPU's, one ray at a time
+    /// or in batches, f64 or (the f32 wavefront, certified or not) f32. The cull-alone
+    /// metrics run no intersection and are f64, what a record without the field means.
+    pub fn path(self) -> Path {
+        match self {
+            Metric::TotalNs | Metric::CullNs => Path::SCALAR_F64,
+            Metric::BatchTotalNs | Metric::BatchCullNs => Path::BATCH_F64,
+            Metric::BatchF32TotalNs | Metric::BatchF32UncertifiedNs => Path::BATCH_F32,
+        }
+    }
+
     /// Whether this times the batch mode.
     pub fn is_batch(self) -> bool {
-        !matches!(self, Metric::TotalNs | Metric::CullNs)
+        self.path().mode == Mode::Batch
     }
 
     /// Whether this times the f32 wavefront (certified or not).
     pub fn is_f32(self) -> bool {
-        matches!(
-            self,
-            Metric::BatchF32TotalNs | Metric::BatchF32UncertifiedNs
-        )
+        self.path().precision == Precision::F32
     }
 
-    /// The exact intersection's precision, as results record it: `f32` for the f32
-    /// wavefront, `f64` otherwise (the cull-alone metrics run no intersection, and are
-    /// recorded as `f64`, what a record without the field means).
+    /// The exact intersection's precision, as results record it: [`Metric::path`]'s,
+    /// `f32` for the f32 wavefront, `f64` otherwise.
     pub fn precision(self) -> &'static str {
-        if self.is_f32() {
-            crate::results::F32_PRECISION
-        } else {
-            crate::results::F64_PRECISION
-        }
+        self.path().precision.name()
     }
 
     /// Whether `cull` is timed under this metric: batch metrics need a batch form, and the

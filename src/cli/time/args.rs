@@ -95,6 +95,18 @@ pub enum Mode {
     Both,
 }
 
+impl Mode {
+    /// The modes of the precision × engine axis timed (on the CPU, in f64 and, in batches,
+    /// the certified f32 wavefront too).
+    pub fn modes(self) -> &'static [torus_cull_lab::precision::Mode] {
+        use torus_cull_lab::precision::Mode::{Batch, Scalar};
+        match self {
+            Mode::Scalar => &[Scalar],
+            Mode::Both => &[Scalar, Batch],
+        }
+    }
+}
+
 /// `time family` and `time bend`: the shapes beyond the ring torus.
 #[derive(clap::Args, Debug, Clone)]
 pub struct ShapeArgs {

@@ -24,16 +24,24 @@ pub(super) const MAX_RUNS: u64 = 100;
 /// The workload of `--workload` with the cases of `--cases`, the culls of `--culls` and
 /// the ν of `--nu`, once `--seconds` is checked: what `time ring`, `secondary` and `gpu`
 /// time.
-pub(super) fn picked(
-    common: &Common,
-    pick: &Pick,
-) -> Result<(Workload, Vec<CullKind>, Vec<f64>), Box<dyn std::error::Error>> {
+pub(super) fn picked(common: &Common, pick: &Pick) -> Result<Picked, Box<dyn std::error::Error>> {
     let mut workload = Workload::open(&common.workload)?;
     pick_cases(&pick.cases, &mut workload, &common.workload)?;
     let culls = parse_culls(&pick.culls)?;
     let nus = pick_nus(&pick.nu, &workload, &common.workload)?;
     check_seconds(common.seconds)?;
-    Ok((workload, culls, nus))
+    Ok(Picked {
+        workload,
+        culls,
+        nus,
+    })
+}
+
+/// What [`picked`] gives: the workload (its cases those picked), the culls and the ν.
+pub(super) struct Picked {
+    pub workload: Workload,
+    pub culls: Vec<CullKind>,
+    pub nus: Vec<f64>,
 }
 
 /// `--seconds`: positive, finite and at most [`MAX_SECONDS`].

@@ -9,7 +9,7 @@
 //! apart.
 
 use super::args::GpuArgs;
-use super::common::{MIN_BATCH, out_path, picked, save, time_suffix, timing_sizes};
+use super::common::{MIN_BATCH, Picked, out_path, picked, save, time_suffix, timing_sizes};
 use crate::console::{Heartbeat, Ticker, outln};
 use crate::whole::Whole;
 use std::process::ExitCode;
@@ -17,7 +17,8 @@ use std::time::{Duration, Instant};
 use torus_cull::gpu::{FinishCounts, GpuCull, GpuIntersector, KernelTime, ResidentRays};
 use torus_cull::{CullKind, F32Verdict, Named};
 use torus_cull_lab::paired::ratio_estimate;
-use torus_cull_lab::results::{EstimateRecord, F32_PRECISION, RatioRecord, Results};
+use torus_cull_lab::precision::Path;
+use torus_cull_lab::results::{EstimateRecord, RatioRecord, Results};
 use torus_cull_lab::workload::spec::Workload;
 use torus_cull_lab::workload::{Batch, Case, GenerateError, generate};
 
@@ -31,6 +32,11 @@ const SUBMISSION: Duration = Duration::from_millis(4);
 /// The metric of the records: the kernel's device time per ray (cull and certified f32
 /// intersection), rays resident.
 const METRIC: &str = "gpu_kernel_ns";
+
+/// The path the kernel times on the precision × engine axis: the certified f32 path on
+/// the GPU (its records' `precision` `f32`, `device` `gpu`); `--finish` adds
+/// [`Path::GPU_F64`], the f64 pass after it.
+const PATH: Path = Path::GPU_F32;
 
 /// The contender that only copies each ray's record: the bandwidth floor.
 const COPY: &str = "copy";
@@ -57,7 +63,11 @@ fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
 /// `workgroup`: `--workgroup`, checked.
 pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
-    let (workload, culls, nus) = picked(common, &args.pick)?;
+    let Picked {
+        workload,
+        culls,
+        nus,
+    } = picked(common, &args.pick)?;
     let batch = pick_gpu_batch(common.batch)?;
     let path = out_path(common, &time_suffix(&workload.name, "gpu"), false)?;
     let (workload, nus, seconds, finish) = (&workload, &nus[..], common.seconds, args.finish);
@@ -161,8 +171,8 @@ pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn st
                     rays: rays as u64,
                     ns_per_ray: est.ns_per_ray,
                     reference_ns_per_ray: est.reference_ns_per_ray,
-                    precision: F32_PRECISION.into(),
-                    device: "gpu".into(),
+                    precision: PATH.precision.name().into(),
+                    device: PATH.engine.name().into(),
                     escalation_rate: Some(escalated),
                     ..RatioRecord::default()
                 });

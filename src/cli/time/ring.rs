@@ -3,10 +3,10 @@
 //! bounce spawned from each of their hits, written as the `ratio` section of a results
 //! file. Several runs go to worker processes ([`super::workers`]).
 
-use super::args::{Mode, RingArgs};
+use super::args::RingArgs;
 use super::common::{
-    MIN_BATCH, MIN_RUN_SECONDS, check_run_seconds, out_path, pick_batch, pick_runs, picked, save,
-    time_suffix, timing_sizes,
+    MIN_BATCH, MIN_RUN_SECONDS, Picked, check_run_seconds, out_path, pick_batch, pick_runs, picked,
+    save, time_suffix, timing_sizes,
 };
 use super::workers::{WorkerPlan, time_in_workers};
 use crate::console::out;
@@ -29,7 +29,11 @@ pub(super) fn run(
     secondary: bool,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
-    let (workload, culls, nus) = picked(common, &args.pick)?;
+    let Picked {
+        workload,
+        culls,
+        nus,
+    } = picked(common, &args.pick)?;
     let batch = pick_batch(common.batch, &workload, &common.workload)?;
     let kind = if secondary { "secondary" } else { "" };
     let path = out_path(
@@ -41,7 +45,11 @@ pub(super) fn run(
     // only `--mode both` uses it.
     let dispatch = Dispatch::from_env()?;
     let mut options = PairedOptions::total(common.seconds, batch);
-    if args.mode == Mode::Both {
+    if args
+        .mode
+        .modes()
+        .contains(&torus_cull_lab::precision::Mode::Batch)
+    {
         options.batch_isa = Some(dispatch.isa());
         if let Some(note) = no_batch_form_note(&culls) {
             eprintln!("{note}");
