@@ -36,6 +36,10 @@ fn a_negative_value_gets_the_flags_range() {
             "--runs -1 is invalid (allowed: 1 ..= 100)",
         ),
         (
+            "time family --runs -1",
+            "--runs -1 is invalid (allowed: 1 ..= 100)",
+        ),
+        (
             "compare a.json b.json --threshold -1",
             "--threshold -1 is invalid (allowed: a percentage >= 0)",
         ),

@@ -23,11 +23,11 @@ pub struct Common {
     /// case × ν, default 2 000 000, drawn from the workload's generators at that count).
     #[arg(long)]
     pub batch: Option<Whole>,
-    /// Results JSON (default: results/<short commit>[-dirty][-<workload>]-<kind>time.json,
-    /// the workload left out when it is `default`: `…-time.json` for `ring`,
-    /// `…-secondary-time.json`, `…-gpu-time.json`, `…-bvh-time.json`, and
-    /// `<commit>-family-time.json` / `-bend-time.json`, so that no kind replaces another).
-    /// Its directory must exist; the plots go next to it.
+    /// Results JSON (default: results/<short commit>[-dirty]-<workload>-time.json, or
+    /// …-time.json for the workload named `default`; `secondary`, `gpu` and `bvh` put
+    /// their kind before `-time` (…-<workload>-gpu-time.json), `family` and `bend` write
+    /// <commit>-family-time.json and -bend-time.json: no kind replaces another). Its
+    /// directory must exist; the plots go next to it.
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Skip the SVG plots (by default each ratio, or on the GPU the ns per ray, is drawn
