@@ -62,7 +62,8 @@ impl Heartbeat {
 /// ticker is dropped. Its thread sleeps between lines, so it costs the timed thread
 /// nothing but one wake-up in 5 s (and a round it disturbs is set aside as any other).
 pub(crate) struct Ticker {
-    done: std::sync::Arc<std::sync::atomic::AtomicU64>,
+    /// Units done and in all.
+    done: std::sync::Arc<[std::sync::atomic::AtomicU64; 2]>,
     stop: Option<std::sync::mpsc::Sender<()>>,
     thread: Option<std::thread::JoinHandle<()>>,
 }
@@ -70,19 +71,26 @@ pub(crate) struct Ticker {
 impl Ticker {
     /// Starts ticking `heartbeat` over `total` units, none done yet.
     pub(crate) fn start(heartbeat: Heartbeat, total: u64) -> Ticker {
+        use std::sync::atomic::AtomicU64;
         use std::sync::atomic::Ordering;
-        let done = std::sync::Arc::new(std::sync::atomic::AtomicU64::new(0));
+        let done = std::sync::Arc::new([AtomicU64::new(0), AtomicU64::new(total)]);
         let (stop, stopped) = std::sync::mpsc::channel::<()>();
         let seen = std::sync::Arc::clone(&done);
+        let beat = move || {
+            heartbeat.update(
+                seen[0].load(Ordering::Relaxed),
+                seen[1].load(Ordering::Relaxed),
+            )
+        };
         let thread = std::thread::spawn(move || {
-            heartbeat.update(0, total);
+            beat();
             while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
                 stopped.recv_timeout(Heartbeat::EVERY)
             {
-                heartbeat.update(seen.load(Ordering::Relaxed), total);
+                beat();
             }
             // The end's line when all was done (an error leaves it out).
-            heartbeat.update(seen.load(Ordering::Relaxed), total);
+            beat();
         });
         Ticker {
             done,
@@ -93,7 +101,13 @@ impl Ticker {
 
     /// `done` units finished.
     pub(crate) fn set(&self, done: u64) {
-        self.done.store(done, std::sync::atomic::Ordering::Relaxed);
+        self.done[0].store(done, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// `done` of `total` units finished, where the total is known only as the work goes.
+    pub(crate) fn set_of(&self, done: u64, total: u64) {
+        self.done[1].store(total, std::sync::atomic::Ordering::Relaxed);
+        self.set(done);
     }
 }
 

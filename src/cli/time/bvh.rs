@@ -73,10 +73,13 @@ pub(super) fn run(args: &BvhArgs) -> Result<ExitCode, Box<dyn std::error::Error>
         spec.tori,
         common.seconds
     );
+    // A line every 5 s from the start, building the scenes included.
     let heartbeat = crate::console::Heartbeat::new("time bvh".to_string(), "visits");
+    let ticker = crate::console::Ticker::start(heartbeat, 0);
     let records = time_bvh(&timing, &mut |done, all| {
-        heartbeat.update(done as u64, all as u64)
+        ticker.set_of(done as u64, all as u64);
     })?;
+    drop(ticker);
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
     results.meta.threads = Some(1);

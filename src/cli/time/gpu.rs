@@ -9,7 +9,7 @@
 //! apart.
 
 use super::args::GpuArgs;
-use super::common::{MIN_BATCH, Picked, out_path, picked, save, time_suffix, timing_sizes};
+use super::common::{MIN_BATCH, out_path, picked, save, time_suffix, timing_sizes};
 use crate::console::{Heartbeat, Ticker, outln};
 use crate::whole::Whole;
 use std::process::ExitCode;
@@ -59,19 +59,16 @@ fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
     }
 }
 
-/// Times the kernel on every case × ν of the workload.
-/// `workgroup`: `--workgroup`, checked.
+/// Times the kernel on every case × ν of the workload; `workgroup` is `--workgroup`,
+/// checked.
 pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn std::error::Error>> {
     let common = &args.common;
-    let Picked {
-        workload,
-        culls,
-        nus,
-    } = picked(common, &args.pick)?;
+    let asked = picked(common, &args.pick)?;
     let batch = pick_gpu_batch(common.batch)?;
-    let path = out_path(common, &time_suffix(&workload.name, "gpu"), false)?;
-    let (workload, nus, seconds, finish) = (&workload, &nus[..], common.seconds, args.finish);
-    let mut culls = gpu_culls(&culls)?;
+    let path = out_path(common, &time_suffix(&asked.workload.name, "gpu"), false)?;
+    let (workload, nus) = (&asked.workload, &asked.nus[..]);
+    let (seconds, finish) = (common.seconds, args.finish);
+    let mut culls = gpu_culls(&asked.culls)?;
     for reference in [GpuCull::NoCull, GpuCull::Cychosz] {
         if !culls.contains(&reference) {
             culls.insert(0, reference);
