@@ -4,7 +4,7 @@
 //! is compiled per cull and nothing is dispatched per ray; the one `match` per pass sits
 //! outside the timed region.
 
-use crate::precision::{Mode, Path, Precision};
+use crate::precision::Path;
 use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
@@ -73,14 +73,19 @@ impl Metric {
         }
     }
 
-    /// Whether this times the batch mode.
+    /// Whether this times the batch mode ([`Metric::path`]'s mode is batch; written
+    /// out, as [`time_pass`] asks it before each timed pass).
     pub fn is_batch(self) -> bool {
-        self.path().mode == Mode::Batch
+        !matches!(self, Metric::TotalNs | Metric::CullNs)
     }
 
-    /// Whether this times the f32 wavefront (certified or not).
+    /// Whether this times the f32 wavefront, certified or not ([`Metric::path`]'s
+    /// precision is f32).
     pub fn is_f32(self) -> bool {
-        self.path().precision == Precision::F32
+        matches!(
+            self,
+            Metric::BatchF32TotalNs | Metric::BatchF32UncertifiedNs
+        )
     }
 
     /// The exact intersection's precision, as results record it: [`Metric::path`]'s,
@@ -289,6 +294,17 @@ impl CullVisitor for Pass<'_, '_> {
 mod tests {
     use super::*;
     use crate::workload::{Case, Pose, generate};
+
+    /// Each metric's path on the precision × engine axis agrees with its own tests.
+    #[test]
+    fn every_metric_is_on_its_path() {
+        use crate::precision::{Mode, Precision};
+        for m in Metric::ALL.into_iter().chain(Metric::BATCH) {
+            assert_eq!(m.is_batch(), m.path().mode == Mode::Batch, "{m}");
+            assert_eq!(m.is_f32(), m.path().precision == Precision::F32, "{m}");
+            assert_eq!(m.precision(), m.path().precision.name(), "{m}");
+        }
+    }
 
     #[test]
     fn every_timed_cull_runs_both_metrics() {
