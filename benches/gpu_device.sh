@@ -9,24 +9,24 @@
 #      f64 finish pass, timestamps). Missing loader or adapter: one line, exit 3 or 4. A
 #      software adapter (lavapipe, device type Cpu) is refused outside --smoke (exit 5)
 #      unless --allow-software: its figures are a CPU's.
-#   1. bvh:    `time-gpu-bvh` (to become `time gpu-bvh`), the GPU BVH: every GPU cull at
+#   1. bvh:    `time gpu-bvh`, the GPU BVH: every GPU cull at
 #              the leaves over none, closest hit (10^6 camera rays) and any hit (a shadow
 #              ray per hit), the five scene layouts at nu = 4 with 1 000 tori, 5 runs,
 #              the copy kernel over the same ray bytes  -> bvh.json, bvh.txt
 #              (not yet run on a GPU: sized from lavapipe and the H100's grid, below)
-#   1b. subm:  `time-gpu-submissions` (to become `time gpu-submissions`), the single-torus
+#   1b. subm:  `time gpu-submissions`, the single-torus
 #              kernel's submissions one by one (issue 60, item 3): wall and device time
 #              of each, at 2^20, 2^20 - 64, 2^20 + 64 and 2^21 ... 2^26 uniform rays (nu = 4),
 #              the copy kernel, none and discriminant, 10 submissions each, rotated
 #              -> subm.json, subm-submissions.csv, subm.txt (not yet run on a GPU)
-#   2. grid:   `time --device gpu`, every GPU cull × case × ν of the workload, 10^6 rays
+#   2. grid:   `time gpu`, every GPU cull × case × ν of the workload, 10^6 rays
 #              per case × ν                                   -> grid.json, grid.txt
 #   3. sweep:  batch sizes 2^16 ... 2^22, culls none, cychosz, skala, discriminant, cases
 #              uniform and hole, ν = 4                         -> sweep-2pK.json, .txt
 #   3b. workgroup: the sweep's culls and cases at 10^6 rays with the kernel's workgroup
 #              32, 128 and 256 (`--workgroup`; 64: the grid)
 #                                                              -> wg-N.json, .txt
-#   4. finish: `time --device gpu --finish`, the f64 finish pass after the kernel, on the
+#   4. finish: `time gpu --finish`, the f64 finish pass after the kernel, on the
 #              escalating cases (hole, grazing) at the workload's smallest ν, 4 and its
 #              largest, culls none, cychosz, skala, 10^6 rays  -> finish.json, finish.txt
 #              (skipped, and said so, where the adapter has no SHADER_F64)
@@ -67,7 +67,7 @@
 #     loaded core (~5 us/ray of a free core); uniform and hole are far cheaper
 #   - packing and uploading: 250-450 ns/ray here (the H100's host, 2026-11-25: 59-123)
 #   - the kernel on lavapipe: ~400-450 ns/ray at 2^20 rays, 4-8 us/ray at 2^12 (there
-#     the dispatch dominates); `time --device gpu --cases uniform,grazing --nu 4 --culls
+#     the dispatch dominates); `time gpu --cases uniform,grazing --nu 4 --culls
 #     none --batch 2^20 --seconds 0.1` took 38 s in all
 #   - the smoke run (every step at 2^10-2^12 rays): 27-32 s; 104 s beside a cargo build
 # Measured on an H100 (2026-11-27, 16 host cores), which replaced the plan made here: one
@@ -277,11 +277,11 @@ if [ "$(field software)" = yes ]; then
 fi
 
 # The command a step runs (the BVH step sets its own, and a cap on its time).
-step_cmd=(time --device gpu)
+step_cmd=(time gpu)
 step_cap=""
 # Flags every step takes but the submissions log (which draws no plots).
 step_flags=(--no-plots)
-# Runs one `torus-cull time --device gpu` step (or "${step_cmd[@]}") under what is left of
+# Runs one `torus-cull time gpu` step (or "${step_cmd[@]}") under what is left of
 # the budget (at most $step_cap s where set): its JSON at NAME.json (torus-cull writes it
 # through a temp name), its table at NAME.txt.
 step() {
@@ -326,16 +326,16 @@ hi=$(echo $wl_nu | awk '{print $NF}')
 
 # 1. The GPU BVH (not yet run on a GPU), under its cap so that the steps after it run.
 if wanted bvh; then
-  step_cmd=(time-gpu-bvh); step_cap=$bvh_cap
+  step_cmd=(time gpu-bvh); step_cap=$bvh_cap
   step bvh --workload "$workload" "${bvh_args[@]}" --seconds "$bvh_seconds"
-  step_cmd=(time --device gpu); step_cap=""
+  step_cmd=(time gpu); step_cap=""
 fi
 
 # 1b. Every submission of the single-torus kernel at 2^20, 2^20 +- 64 and up to 2^26 rays.
 if wanted subm; then
-  step_cmd=(time-gpu-submissions); step_cap=$subm_cap; step_flags=()
+  step_cmd=(time gpu-submissions); step_cap=$subm_cap; step_flags=()
   step subm --workload "$workload" --case uniform --nu 4 "${subm_args[@]}"
-  step_cmd=(time --device gpu); step_cap=""; step_flags=(--no-plots)
+  step_cmd=(time gpu); step_cap=""; step_flags=(--no-plots)
 fi
 
 # 2. The grid, in two parts: ν = 4 and the largest first (what the headline needs, ~50 s

@@ -38,7 +38,7 @@
 //! the same cases and ν (each cull against cychosz and none, the scalar and the batch
 //! metrics, the f32 wavefront also against the cull's own f64 wavefront, in shuffled
 //! rounds on the same rays; see [`torus_cull_lab::paired`]). The same again for secondary
-//! rays, as `torus-cull time --secondary` times them: one diffuse bounce spawned from each
+//! rays, as `torus-cull time secondary` times them: one diffuse bounce spawned from each
 //! hit (`Ray::from_surface`), the records' case named `<case>_bounce`.
 //!
 //! `TORUS_CULL_BENCH` picks the size: `smoke` (seconds, for CI), `default` (< 10 min on
@@ -625,7 +625,7 @@ fn paired_ratios(
     let mut options = paired::PairedOptions::total(config.ratio_seconds / runs as f64, rays);
     options.batch_isa = Some(dispatch.isa());
     // Secondary rays: one diffuse bounce spawned from each hit (`Ray::from_surface`), in
-    // their own rounds with the same time per batch, as `time --secondary` times them;
+    // their own rounds with the same time per batch, as `time secondary` times them;
     // a batch with too few hits to time (the hole's) is left out.
     let bounce_batches: Vec<_> = batches
         .iter()
@@ -671,7 +671,7 @@ fn paired_ratios(
     paired::combine_runs(&all).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The fewest bounces a batch must give to be timed (as `time --secondary` asks).
+/// The fewest bounces a batch must give to be timed (as `time secondary` asks).
 const MIN_BOUNCES: usize = 16;
 
 /// Where criterion writes its estimates (its own rule: `$CRITERION_HOME`, else

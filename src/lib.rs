@@ -34,6 +34,7 @@ pub mod output;
 pub mod paired;
 pub mod peer_f32;
 pub mod plot;
+pub mod precision;
 pub mod random;
 pub mod render;
 pub mod report;

@@ -331,7 +331,7 @@ pub fn plot_results(
     group_charts(&results.timing, &mut charts, ("", ""), TIMING_CHARTS)?;
     group_charts(&results.bvh, &mut charts, ("bvh-", "BVH "), BVH_CHARTS)?;
     ratio_charts(&results.ratio, &mut charts)?;
-    // A file with only estimates (`time --device gpu`, a filtered bench) is drawn from
+    // A file with only estimates (`time gpu`, a filtered bench) is drawn from
     // them; in a complete bench file they repeat the timing records and are not.
     if results.timing.is_empty() && results.ratio.is_empty() {
         estimate_charts(&results.estimates, &mut charts)?;

@@ -204,28 +204,19 @@ pub fn ratio_tables(results: &Results) -> String {
         .collect();
     // Of several runs, the interval shown is the between-run one: how far the next run
     // may land, not only how well this one's rounds pinned it down. The title says how
-    // many runs were made, whether or not some were set aside as run in a slow state of
-    // the machine (`runs_set_aside`, see `paired::runs::SLOW_STATE`), and, per ν, how
-    // many were: the header's shape does not depend on the machine's state.
-    let runs_of = |title: &str| {
+    // many runs the interval comes from: "within 1 run" where every record kept one run
+    // (with how many were made), else "between N runs", N the runs made whether or not
+    // some were set aside as run in a slow state of the machine (`runs_set_aside`, see
+    // `paired::runs::SLOW_STATE`: the header's shape does not depend on the machine's
+    // state), and, per ν, how many were, and where that left one run, that its interval
+    // is that run's own.
+    let header = |title: &str| {
         let of: Vec<&RatioRecord> = keyed
             .iter()
             .filter(|(k, _)| k == title)
             .map(|(_, r)| *r)
             .collect();
-        let made = of
-            .iter()
-            .map(|r| r.runs + r.runs_set_aside)
-            .max()
-            .unwrap_or(1);
-        let mut aside: Vec<(f64, u64)> = of
-            .iter()
-            .filter(|r| r.runs_set_aside > 0)
-            .map(|r| (r.nu, r.runs_set_aside))
-            .collect();
-        aside.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        aside.dedup();
-        (made, aside)
+        runs_header(title, &of)
     };
     let mut out = table(
         &keyed,
@@ -234,25 +225,7 @@ pub fn ratio_tables(results: &Results) -> String {
             let [lo, hi] = r.ratio_ci_between.unwrap_or(r.ratio_ci);
             format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio)
         },
-        |title| {
-            let (made, aside) = runs_of(title);
-            let mut head = format!("{title}, paired ratio [95% CI]");
-            if made > 1 {
-                let _ = write!(head, " between {made} runs");
-            }
-            if !aside.is_empty() {
-                let at: Vec<String> = aside
-                    .iter()
-                    .map(|(nu, n)| format!("{n} at ν = {}", crate::number::Num(*nu)))
-                    .collect();
-                let _ = write!(
-                    head,
-                    " (set aside as run in a slow state of the machine: {})",
-                    at.join(", ")
-                );
-            }
-            head
-        },
+        header,
     );
     // One escalation rate per cull and (case, ν): the certified records all carry it.
     let escalation: Vec<&RatioRecord> = results
@@ -270,6 +243,54 @@ pub fn ratio_tables(results: &Results) -> String {
         |case| format!("{case}: certified f32 wavefront, rays escalated to f64 / rays"),
     );
     out
+}
+
+/// A paired-ratio table's title, `{title}, paired ratio [95% CI]` and how many runs its
+/// intervals come from (see [`ratio_tables`]), for the table's records `of`.
+fn runs_header(title: &str, of: &[&RatioRecord]) -> String {
+    let made = of
+        .iter()
+        .map(|r| r.runs + r.runs_set_aside)
+        .max()
+        .unwrap_or(1);
+    // Per ν with runs set aside: how many, and whether one run was left there.
+    let mut aside: Vec<(f64, u64, bool)> = of
+        .iter()
+        .filter(|r| r.runs_set_aside > 0)
+        .map(|r| (r.nu, r.runs_set_aside, r.ratio_ci_between.is_none()))
+        .collect();
+    aside.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    aside.dedup();
+    let single = of.iter().all(|r| r.ratio_ci_between.is_none());
+    let head = format!("{title}, paired ratio [95% CI]");
+    if made <= 1 {
+        return format!("{head} within 1 run");
+    }
+    let at: Vec<String> = aside
+        .iter()
+        .map(|&(nu, n, one_left)| {
+            let left = if one_left && !single {
+                ", there within the 1 run left"
+            } else {
+                ""
+            };
+            format!("{n} at ν = {}{left}", crate::number::Num(nu))
+        })
+        .collect();
+    let set_aside = if at.is_empty() {
+        String::new()
+    } else {
+        format!(
+            "set aside as run in a slow state of the machine: {}",
+            at.join(", ")
+        )
+    };
+    match (single, set_aside.is_empty()) {
+        (true, true) => format!("{head} within 1 run ({made} made)"),
+        (true, false) => format!("{head} within 1 run ({made} made; {set_aside})"),
+        (false, true) => format!("{head} between {made} runs"),
+        (false, false) => format!("{head} between {made} runs ({set_aside})"),
+    }
 }
 
 /// Scalar against batch mode per case (rows ν, columns the culls timed both ways): each
@@ -340,7 +361,8 @@ mod tests {
             runs,
             runs_set_aside: aside,
             run_ratios: Vec::new(),
-            ratio_ci_between: None,
+            // Of two runs or more kept, the between-run interval.
+            ratio_ci_between: (runs > 1).then_some([0.18, 0.22]),
             run_spread: None,
         }
     }
@@ -362,12 +384,13 @@ mod tests {
             kept.contains(&format!("{title} between 2 runs\n")),
             "{kept}"
         );
-        // Every batch lost a run: the header still says two were made.
+        // Every batch lost a run: the intervals are one run's own, and the header says
+        // so, with the runs made (the bug: it said "between 2 runs" over them).
         let aside = tables(vec![record(2.0, 1, 1), record(8.0, 1, 1)]);
         assert!(
             aside.contains(&format!(
-                "{title} between 2 runs (set aside as run in a slow state of the machine: \
-                 1 at ν = 2, 1 at ν = 8)\n"
+                "{title} within 1 run (2 made; set aside as run in a slow state of the \
+                 machine: 1 at ν = 2, 1 at ν = 8)\n"
             )),
             "{aside}"
         );
@@ -375,12 +398,23 @@ mod tests {
         assert!(
             one.contains(&format!(
                 "{title} between 2 runs (set aside as run in a slow state of the machine: \
-                 1 at ν = 8)\n"
+                 1 at ν = 8, there within the 1 run left)\n"
             )),
             "{one}"
         );
-        // One run (--runs 1): no count.
+        let three = tables(vec![record(2.0, 5, 0), record(8.0, 3, 2)]);
+        assert!(
+            three.contains(&format!(
+                "{title} between 5 runs (set aside as run in a slow state of the machine: \
+                 2 at ν = 8)\n"
+            )),
+            "{three}"
+        );
+        // One run (--runs 1).
         let single = tables(vec![record(2.0, 1, 0)]);
-        assert!(single.contains(&format!("{title}\n")), "{single}");
+        assert!(
+            single.contains(&format!("{title} within 1 run\n")),
+            "{single}"
+        );
     }
 }

@@ -102,7 +102,7 @@ pub struct Meta {
     /// (e.g. `linux x86_64 6.8.0-49-generic`); null in older files.
     #[serde(default)]
     pub os: Option<String>,
-    /// The GPU adapter a `time --device gpu` file was measured on: its name, device type
+    /// The GPU adapter a `time gpu` file was measured on: its name, device type
     /// and backend, and "software adapter: no GPU timing claimed" for a CPU rasteriser
     /// (lavapipe); absent from CPU timings and older files.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -293,9 +293,9 @@ impl TimingRecord {
 }
 
 /// [`TimingRecord::mode`] of one-ray-at-a-time timings.
-pub const SCALAR_MODE: &str = "scalar";
+pub const SCALAR_MODE: &str = crate::precision::Mode::Scalar.name();
 /// [`TimingRecord::mode`] of wavefront timings.
-pub const BATCH_MODE: &str = "batch";
+pub const BATCH_MODE: &str = crate::precision::Mode::Batch.name();
 
 fn scalar_mode() -> String {
     SCALAR_MODE.into()
@@ -303,12 +303,12 @@ fn scalar_mode() -> String {
 
 /// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the f64 paths (what a
 /// record without the field means).
-pub const F64_PRECISION: &str = "f64";
+pub const F64_PRECISION: &str = crate::precision::Precision::F64.name();
 /// [`TimingRecord::precision`] and [`RatioRecord::precision`] of the certified f32 path.
-pub const F32_PRECISION: &str = "f32";
+pub const F32_PRECISION: &str = crate::precision::Precision::F32.name();
 /// [`TimingRecord::device`] and [`RatioRecord::device`] of CPU timings (what a record
 /// without the field means).
-pub const CPU_DEVICE: &str = "cpu";
+pub const CPU_DEVICE: &str = crate::precision::Engine::Cpu.name();
 /// [`RatioRecord::reference`] of the headline f32 ratio: the same cull's f64 wavefront
 /// (metric `batch_total_ns`) in the same rounds, so the ratio is t(f32) / t(f64).
 pub const F64_REFERENCE: &str = "f64";

@@ -39,7 +39,7 @@ pub struct BenchConfig {
     /// (see `torus_cull_lab::paired::runs`): the ratios get a between-run interval.
     pub ratio_runs: u64,
     /// Seconds for the paired BVH ratios (every scene and the family's), and their runs:
-    /// as `time --bvh` gives them, about 10 s a unit over 10 runs, so that its intervals
+    /// as `time bvh` gives them, about 10 s a unit over 10 runs, so that its intervals
     /// meet issue 40's goals in the file the README quotes. The default preset's 160 s
     /// (120 s before issue 53's bounce rays added a fourth pass per cull to each round)
     /// keeps each pass's share of the rounds.

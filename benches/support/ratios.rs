@@ -1,5 +1,5 @@
 //! The paired ratios a complete bench takes beyond the ring torus's: the torus family's,
-//! the pipe bends' and the BVH's, as `time --family`, `--bend` and `--bvh` take them.
+//! the pipe bends' and the BVH's, as `time family`, `time bend` and `time bvh` take them.
 
 use super::BenchConfig;
 use torus_cull::CullKind;
@@ -8,8 +8,8 @@ use torus_cull_lab::paired;
 use torus_cull_lab::paired::shapes::shape_records;
 use torus_cull_lab::results::RatioRecord;
 
-/// The torus family's and the pipe bends' paired ratios, as `time --family` and `time
-/// --bend` take them (metrics `family_total_ns`, `bend_total_ns`), each in a quarter of
+/// The torus family's and the pipe bends' paired ratios, as `time family` and `time
+/// bend` take them (metrics `family_total_ns`, `bend_total_ns`), each in a quarter of
 /// the ring torus's paired time, over the same runs.
 pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
     let runs = config.ratio_runs.max(1) as usize;
@@ -31,7 +31,7 @@ pub fn shapes(config: &BenchConfig, seed: u64) -> Vec<RatioRecord> {
     both().unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// The paired BVH ratios `time --bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
+/// The paired BVH ratios `time bvh` takes (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
 /// `bvh_bounce_ns`, `bvh_batched_ns`) on the same units: the bench's scenes at each of its ν, the scenes it
 /// lacks and the torus family's at ν = 4, in [`BenchConfig::bvh_seconds`] over
 /// [`BenchConfig::bvh_runs`] runs (the README's BVH line quotes a bench).

@@ -1,6 +1,6 @@
 //! The command's console: stdout that a closed pipe does not break ([`write_stdout`],
 //! `out!`, `outln!`) and the progress lines printed when stderr is not a terminal
-//! ([`Heartbeat`]). The ground floor of the command: every command module uses it.
+//! ([`Heartbeat`], and [`Ticker`] where the work reports no steps of its own). The ground floor of the command: every command module uses it.
 
 /// Progress where the bar cannot be seen: with stderr not a terminal (a CI log, `2> log`)
 /// indicatif draws nothing, so this prints a line when the work starts, then at most one
@@ -52,6 +52,70 @@ impl Heartbeat {
                 (now - self.start).as_secs_f64()
             );
             *last = Some(now);
+        }
+    }
+}
+
+/// A [`Heartbeat`] driven by the clock, for work that cannot report its steps often
+/// enough (a shape's rounds, a GPU unit's): a thread that prints the heartbeat's line
+/// every [`Heartbeat::EVERY`] with the progress last given to [`Ticker::set`], until the
+/// ticker is dropped. Its thread sleeps between lines, so it costs the timed thread
+/// nothing but one wake-up in 5 s (and a round it disturbs is set aside as any other).
+pub(crate) struct Ticker {
+    /// Units done and in all.
+    done: std::sync::Arc<[std::sync::atomic::AtomicU64; 2]>,
+    stop: Option<std::sync::mpsc::Sender<()>>,
+    thread: Option<std::thread::JoinHandle<()>>,
+}
+
+impl Ticker {
+    /// Starts ticking `heartbeat` over `total` units, none done yet.
+    pub(crate) fn start(heartbeat: Heartbeat, total: u64) -> Ticker {
+        use std::sync::atomic::AtomicU64;
+        use std::sync::atomic::Ordering;
+        let done = std::sync::Arc::new([AtomicU64::new(0), AtomicU64::new(total)]);
+        let (stop, stopped) = std::sync::mpsc::channel::<()>();
+        let seen = std::sync::Arc::clone(&done);
+        let beat = move || {
+            heartbeat.update(
+                seen[0].load(Ordering::Relaxed),
+                seen[1].load(Ordering::Relaxed),
+            )
+        };
+        let thread = std::thread::spawn(move || {
+            beat();
+            while let Err(std::sync::mpsc::RecvTimeoutError::Timeout) =
+                stopped.recv_timeout(Heartbeat::EVERY)
+            {
+                beat();
+            }
+            // The end's line when all was done (an error leaves it out).
+            beat();
+        });
+        Ticker {
+            done,
+            stop: Some(stop),
+            thread: Some(thread),
+        }
+    }
+
+    /// `done` units finished.
+    pub(crate) fn set(&self, done: u64) {
+        self.done[0].store(done, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// `done` of `total` units finished, where the total is known only as the work goes.
+    pub(crate) fn set_of(&self, done: u64, total: u64) {
+        self.done[1].store(total, std::sync::atomic::Ordering::Relaxed);
+        self.set(done);
+    }
+}
+
+impl Drop for Ticker {
+    fn drop(&mut self) {
+        drop(self.stop.take());
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
         }
     }
 }

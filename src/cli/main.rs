@@ -62,20 +62,13 @@ enum Command {
         culls: Vec<String>,
     },
     /// Time the culls against cychosz and none in paired, interleaved rounds (ratios with
-    /// 95% intervals), in about 30 s.
+    /// 95% intervals), in about 30 s: `time ring` (a bare `time`), `secondary`, `family`,
+    /// `bend`, `bvh`, `gpu`.
     Time(time::TimeArgs),
     /// Count instructions per ray under callgrind (valgrind): each cull alone and with the
     /// exact intersection per case × ν, the wavefront, the solver's families; written as
     /// the `counts` records of a results file that `compare` judges beside the wall ratios.
     Count(count::CountArgs),
-    /// Time the GPU BVH (a binary built with `--features gpu`): each GPU cull at the leaves
-    /// over none, closest hit and any hit, with within- and between-run intervals, rays
-    /// per second and the copy kernel over the same ray bytes (docs/gpu.md).
-    TimeGpuBvh(time::gpu_bvh::GpuBvhArgs),
-    /// Log every submission of the single-torus GPU kernel (a binary built with
-    /// `--features gpu`): wall and device time per batch size and contender (the copy
-    /// kernel and the culls), for the slow state at 2^20 rays (docs/gpu.md).
-    TimeGpuSubmissions(time::gpu_submissions::SubmissionsArgs),
     /// Diff two results files (or two f32-check files); exits 1 on a regression or when
     /// records of OLD are missing from NEW, 2 on unusable input (for CI gates).
     Compare {
@@ -189,7 +182,7 @@ enum Command {
         /// oracle (--exact f64, or f32: the misses of the outer torus proved in f32, the
         /// rest escalated; a whole bend is the ring torus). A bend's rows add after the
         /// culls' columns `wedge` (the segment's wedge alone) and `wedge+<cull>` (each cull
-        /// but none behind the wedge), as `bend` and `time --bend` price them.
+        /// but none behind the wedge), as `bend` and `time bend` price them.
         #[arg(long = "bore", allow_hyphen_values = true)]
         bore: Option<f64>,
         /// The bend's segment start φ₀ in radians, finite (default 0).
@@ -262,6 +255,10 @@ fn main() -> ExitCode {
     // Every flag takes a leading '-' (src/cli/whole.rs), so a negative value meets the
     // flag's own range check.
     let argv = check::expand_aliases(std::env::args_os().collect());
+    if let Some(message) = time::old_spelling(&argv) {
+        eprintln!("error: {message}");
+        return ExitCode::from(2);
+    }
     let matches = whole::negative_numbers(Cli::command()).get_matches_from(argv);
     let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
     remove_temp_files_on_signals();
@@ -275,8 +272,6 @@ fn main() -> ExitCode {
         } => run::run(&workload, out, threads, no_plots, &culls),
         Command::Time(args) => time::run(args),
         Command::Count(args) => count::run(args),
-        Command::TimeGpuBvh(args) => time::gpu_bvh::run(&args),
-        Command::TimeGpuSubmissions(args) => time::gpu_submissions::run(&args),
         Command::Check(args) => check::run(args),
         Command::GpuInfo => gpu_info::run(),
         Command::Plot { file, out_dir } => plot::plot(&file, out_dir),

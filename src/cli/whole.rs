@@ -63,8 +63,9 @@ impl Whole {
 /// is a number, so that `-1` reaches the flag's range check (module docs): one setting
 /// for every subcommand, not one per flag.
 pub fn negative_numbers(command: clap::Command) -> clap::Command {
+    // At every depth: `time gpu --workgroup -1` as `run --threads -1`.
     command.mut_subcommands(|sub| {
-        sub.mut_args(|arg| {
+        negative_numbers(sub).mut_args(|arg| {
             if arg.get_action().takes_values() {
                 arg.allow_negative_numbers(true)
             } else {

@@ -140,7 +140,7 @@ pub fn compare_channels(
         report.rows.push(bvh_row(key, o, n, threshold));
     }
     // Estimates repeat the timing records in a complete bench file; a file with only
-    // estimates (`time --device gpu`, a filtered bench) is compared by them.
+    // estimates (`time gpu`, a filtered bench) is compared by them.
     let timed = |r: &Results| !r.timing.is_empty() || !r.ratio.is_empty();
     if !timed(old) && !timed(new) {
         for (key, o, n) in pair_up(

@@ -276,7 +276,7 @@ pub fn work<W: Write>(plan: &Plan, out: W) -> Result<(), String> {
 }
 
 /// The BVH regions of every scene × ν of the workload's `bvh` key (none without it): the
-/// rays as `time --bvh` draws them, `plan.rays` of each kind evenly strided out of the
+/// rays as `time bvh` draws them, `plan.rays` of each kind evenly strided out of the
 /// camera image (side √(4·rays)) and the shadow rays spawned from its hits (`none`'s).
 fn bvh_regions<W: Write>(plan: &Plan, ann: &mut Announcer<W>) -> Result<(), String> {
     use crate::scene::rays::{light, shadow_rays};

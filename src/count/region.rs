@@ -186,7 +186,7 @@ pub fn batch_region<W: Write>(
 pub type Solve = fn(&[f64; 3], f64) -> Option<f64>;
 
 /// The BVH regions of one cull on one scene: closest hit per camera ray, any hit per
-/// shadow ray (spawned from the camera rays' hits), as `time --bvh` times them.
+/// shadow ray (spawned from the camera rays' hits), as `time bvh` times them.
 pub struct BvhPass<'s, W: Write> {
     /// The scene.
     pub scene: &'s crate::scene::Scene,

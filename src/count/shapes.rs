@@ -1,5 +1,5 @@
 //! The count channel's other shapes: the torus family's members and the pipe bends, as
-//! `time --family` and `time --bend` time them (`crate::paired::family::members`,
+//! `time family` and `time bend` time them (`crate::paired::family::members`,
 //! `crate::paired::bend::bends`, each on its uniform box rays): per member, the exact
 //! intersection alone (`exact`) and behind each cull; per bend, no cull (`none`), each
 //! cull, and each cull behind the segment's wedge (`wedge+<cull>`). Metric
@@ -76,7 +76,7 @@ impl<W: Write> CullVisitor for BendPass<'_, '_, W> {
     }
 }
 
-/// Every family member's regions, `rays` box rays each (seeded as `time --family` seeds
+/// Every family member's regions, `rays` box rays each (seeded as `time family` seeds
 /// them), for `culls`.
 pub fn family<W: Write>(
     culls: &[CullKind],

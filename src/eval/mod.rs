@@ -49,7 +49,7 @@
 //! **The pipe bend** (`--bore`, `--phi-start`, `--delta-phi`; [`Target::with_bend`]): its
 //! rows add after the cull columns the wedge's ([`bend_wedge_columns`]): `wedge`, the
 //! segment's wedge alone, then `wedge+<cull>` for each cull but `none`, the forms `bend`
-//! and `time --bend` price; the header names them.
+//! and `time bend` price; the header names them.
 //!
 //! **Errors stop the run.** A malformed row (wrong column count, a non-number, a zero or
 //! non-finite direction, a negative or non-finite `t_min`, a NaN `t_max`, `t_min > t_max`,
@@ -62,6 +62,7 @@ mod target;
 
 use crate::number::{Echo, Num};
 use crate::oracle::{OracleClass, OracleLabel};
+use crate::precision::{self as axis, Engine, Path};
 use glam::{DVec3, Vec3};
 use std::fmt;
 use std::io::{BufRead, Write};
@@ -92,7 +93,7 @@ pub fn output_header() -> String {
 /// The columns a pipe bend's rows add after the culls' (`--bore`, `--phi-start`,
 /// `--delta-phi`): `wedge`, the segment's wedge alone (`PipeBend::wedge_cull(NoCull)`),
 /// then `wedge+<cull>`, each cull but `none` ([`torus_cull::CullKind::TIMED`] order) on the
-/// outer torus behind the wedge: the forms `bend` and `time --bend` price. 1 keeps, 0
+/// outer torus behind the wedge: the forms `bend` and `time bend` price. 1 keeps, 0
 /// rejects; a rejected ray is one the oracle calls a miss.
 pub fn bend_wedge_columns() -> Vec<String> {
     torus_cull::CullKind::TIMED
@@ -139,6 +140,29 @@ pub enum Precision {
     /// (`finished` = `device`) and on the host otherwise (`host`). The output adds the
     /// kernel's cull verdicts, `gpu_<cull>` ([`gpu_output_header`]).
     CertifiedGpu,
+}
+
+impl Precision {
+    /// The precision the rows are read in: f64 for [`Precision::F64`], else f32 (the
+    /// ray a renderer shoots).
+    #[must_use]
+    pub fn rays(self) -> axis::Precision {
+        match self {
+            Precision::F64 => axis::Precision::F64,
+            _ => axis::Precision::F32,
+        }
+    }
+
+    /// The path that answers `t_hit` on the precision × engine axis: the CPU's f64 path
+    /// (on the f64 or the f32 ray), its certified f32 path, or the GPU kernel's.
+    #[must_use]
+    pub fn exact(self) -> Path {
+        match self {
+            Precision::F64 | Precision::F32 => Path::SCALAR_F64,
+            Precision::CertifiedF32 => Path::SCALAR_F32,
+            Precision::CertifiedGpu => Path::GPU_F32,
+        }
+    }
 }
 
 /// Why `eval` stopped.
@@ -279,7 +303,8 @@ pub fn eval_shape_csv<T: EvalShape>(
     let mut lines = input.lines();
     let header = lines.next().transpose().map_err(|e| not_text(1, e))?;
     let columns = check_header(header, &row_error)?;
-    let (lines, mut gpu_answers) = if precision == Precision::CertifiedGpu {
+    let on_gpu = precision.exact().engine == Engine::Gpu;
+    let (lines, mut gpu_answers) = if on_gpu {
         let (lines, answers) = read_for_gpu(target, &columns, lines, &row_error)?;
         (
             Box::new(lines.into_iter()) as Box<dyn Iterator<Item = std::io::Result<String>>>,
@@ -297,9 +322,9 @@ pub fn eval_shape_csv<T: EvalShape>(
         .iter()
         .map(|c| format!(",{c}"))
         .collect();
-    if precision == Precision::CertifiedGpu {
+    if on_gpu {
         writeln!(output, "{}", gpu_output_header())?;
-    } else if precision == Precision::CertifiedF32 {
+    } else if precision.exact().precision == axis::Precision::F32 {
         writeln!(
             output,
             "{}{wedge}",
@@ -435,7 +460,7 @@ fn evaluate<T: EvalShape>(
     line: &str,
     gpu_answers: &mut impl Iterator<Item = GpuAnswer>,
 ) -> Result<Row, String> {
-    if precision == Precision::F64 {
+    if precision.rays() == axis::Precision::F64 {
         let ray = parse_dray(target, columns, line)?;
         return Ok(Row {
             label: target.oracle(&ray)?,

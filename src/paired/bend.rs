@@ -3,14 +3,14 @@
 //! (`PipeBend::wedge_cull`), against `cychosz` and against no cull (`none`), on one ray
 //! set ([`super::shapes`]).
 
-use super::shapes::{Pair, ShapeRatio, TimedShape, time_contenders};
+use super::engine::timed_pass;
+use super::shapes::{CulledPass, Pair, ShapeRatio, TimedShape, time_contenders};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use torus_cull::bend::PipeBend;
 use torus_cull::{Cull, CullKind, CullVisitor, Ray};
 
-/// The bends `time --bend` and `cargo bench` time, (Δφ, r_min/r_max) with R = 4,
+/// The bends `time bend` and `cargo bench` time, (Δφ, r_min/r_max) with R = 4,
 /// r_max = 1, φ₀ = 0: Δφ = 2π, π, π/2, π/6 at a bore of half the tube, and no bore and
 /// 0.9 at Δφ = π/2.
 pub const BENDS: [(f64, f64); 6] = [
@@ -41,6 +41,11 @@ pub fn bends() -> Result<Vec<PipeBend>, String> {
 impl TimedShape for PipeBend {
     const METRIC: &'static str = "bend_total_ns";
 
+    #[inline(always)]
+    fn hit_culled<C: Cull>(&self, cull: &C, ray: &Ray) -> bool {
+        self.intersect_culled(cull, ray).is_some()
+    }
+
     fn box_radii(&self) -> (f64, f64, f64) {
         let (big, tube) = (self.major_radius_f64(), self.tube_radius_f64());
         (big, tube, tube)
@@ -54,13 +59,7 @@ impl TimedShape for PipeBend {
         format!("bend_dphi{degrees}_bore{bore}")
     }
 
-    fn ratios(
-        &self,
-        rays: &[Ray],
-        runs: usize,
-        seconds: f64,
-        seed: u64,
-    ) -> Option<Vec<ShapeRatio>> {
+    fn ratios(&self, rays: &[Ray], timing: (usize, f64, u64)) -> Option<Vec<ShapeRatio>> {
         // Contenders 0: no cull; 1 + i: cull i; 1 + n + i: cull i with the wedge.
         let culls = CullKind::TIMED;
         let n = culls.len();
@@ -76,7 +75,7 @@ impl TimedShape for PipeBend {
                 pairs.push((c, 0, label, name("none")));
             }
         }
-        time_contenders(1 + 2 * n, pairs, (runs, seconds, seed), rays.len(), |_| {
+        time_contenders(1 + 2 * n, pairs, timing, rays.len(), |_| {
             let rays = rays.to_vec();
             move |i| {
                 if i == 0 {
@@ -95,16 +94,11 @@ impl TimedShape for PipeBend {
 
 #[inline(never)]
 fn exact_pass(bend: &PipeBend, rays: &[Ray]) -> Duration {
-    let start = Instant::now();
-    let mut hits = 0usize;
-    for ray in black_box(rays) {
-        hits += usize::from(bend.intersect(ray).is_some());
-    }
-    black_box(hits);
-    start.elapsed()
+    timed_pass(rays, |ray, (): &mut ()| bend.intersect(ray).is_some())
 }
 
-/// One timed pass behind a cull (with or without the wedge), monomorphized per cull.
+/// One timed pass behind a cull (with or without the wedge), monomorphized per cull:
+/// [`CulledPass`] behind the cull or behind its wedge cull.
 struct Pass<'a> {
     bend: &'a PipeBend,
     rays: &'a [Ray],
@@ -114,22 +108,18 @@ struct Pass<'a> {
 impl CullVisitor for Pass<'_> {
     type Output = Duration;
 
-    #[inline(never)]
     fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut hits = 0usize;
+        let pass = CulledPass {
+            shape: self.bend,
+            rays: self.rays,
+        };
         if self.wedge {
-            let cull = self.bend.wedge_cull(cull);
-            for ray in black_box(self.rays) {
-                hits += usize::from(self.bend.intersect_culled(&cull, ray).is_some());
-            }
+            // Made before the clock starts, as the pass it replaced made it just after:
+            // a few multiplications, beside a pass of hundreds of rays.
+            pass.visit(self.bend.wedge_cull(cull))
         } else {
-            for ray in black_box(self.rays) {
-                hits += usize::from(self.bend.intersect_culled(&cull, ray).is_some());
-            }
+            pass.visit(cull)
         }
-        black_box(hits);
-        start.elapsed()
     }
 }
 
@@ -137,12 +127,12 @@ impl CullVisitor for Pass<'_> {
 mod tests {
     use super::*;
 
-    /// The records come out complete and finite at a tiny size (speed is `time --bend`'s).
+    /// The records come out complete and finite at a tiny size (speed is `time bend`'s).
     #[test]
     fn every_cull_with_and_without_the_wedge_is_reported() {
         let bend = PipeBend::canonical(4.0, 0.5, 1.0, 0.0, std::f64::consts::FRAC_PI_2).unwrap();
         let rays = crate::workload::box_rays::box_rays(4.0, 1.0, 1.0, 64, 9);
-        let got = bend.ratios(&rays, 2, 0.1, 7).expect("rounds");
+        let got = bend.ratios(&rays, (2, 0.1, 7)).expect("rounds");
         assert_eq!(got.len(), 4 * CullKind::TIMED.len());
         for r in &got {
             assert!(r.ratio.is_finite() && r.ratio > 0.0, "{r:?}");

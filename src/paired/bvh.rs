@@ -33,7 +33,7 @@
 //! run's share of the time is spent, so that a slow spell falls on all of them alike.
 //! [`combine_runs`] gives every record its between-run interval, as for `time --runs`.
 
-use super::engine::Interleaver;
+use super::engine::{Interleaver, timed_pass};
 use super::runs::{RunsDiffer, combine_runs};
 use super::stats::{QUIET_FRACTION, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
@@ -77,7 +77,7 @@ const FAMILY_SPREAD: f64 = 1.5;
 /// family's, whose shapes have their own): issue 40 times new scenes at one ν.
 pub const NEW_SCENE_NU: f64 = 4.0;
 
-/// The scene × ν units `time --bvh` and `cargo bench` time: a workload's `scenes` at each
+/// The scene × ν units `time bvh` and `cargo bench` time: a workload's `scenes` at each
 /// of `nus`, then every scene it lacks at [`NEW_SCENE_NU`] only.
 #[must_use]
 pub fn units_of(scenes: &[SceneKind], nus: &[f64]) -> Vec<(SceneKind, f64)> {
@@ -421,35 +421,40 @@ impl CullVisitor for Agree<'_> {
     fn visit<C: Cull>(self, cull: C) -> Option<String> {
         let (scene, camera, shadow, bounce) = (self.0, self.1, self.2, self.3);
         let mut stats = TraceStats::default();
-        for ray in camera {
-            let (a, b) = (
-                scene.trace(&cull, ray, &mut stats),
-                scene.trace(&NoCull, ray, &mut stats),
-            );
-            if !same_hit(a, b) {
-                return Some(format!("closest {ray:?}: {a:?} vs none {b:?}"));
-            }
+        let mut both = |ray: &Ray| {
+            let a = scene.trace(&cull, ray, &mut stats);
+            (a, scene.trace(&NoCull, ray, &mut stats))
+        };
+        if let Some(first) = disagreement("closest", camera, &mut both, same_hit) {
+            return Some(first);
         }
-        for s in shadow {
-            let (a, b) = (
-                scene.occluded_spawned(&cull, s, &mut stats),
-                scene.occluded_spawned(&NoCull, s, &mut stats),
-            );
-            if a != b {
-                return Some(format!("any-hit {s:?}: {a} vs none {b}"));
-            }
+        let mut both = |s: &Spawned| {
+            let a = scene.occluded_spawned(&cull, s, &mut stats);
+            (a, scene.occluded_spawned(&NoCull, s, &mut stats))
+        };
+        if let Some(first) = disagreement("any-hit", shadow, &mut both, |a, b| a == b) {
+            return Some(first);
         }
-        for s in bounce {
-            let (a, b) = (
-                scene.trace_spawned(&cull, s, &mut stats),
-                scene.trace_spawned(&NoCull, s, &mut stats),
-            );
-            if !same_hit(a, b) {
-                return Some(format!("bounce {s:?}: {a:?} vs none {b:?}"));
-            }
-        }
-        None
+        let mut both = |s: &Spawned| {
+            let a = scene.trace_spawned(&cull, s, &mut stats);
+            (a, scene.trace_spawned(&NoCull, s, &mut stats))
+        };
+        disagreement("bounce", bounce, &mut both, same_hit)
     }
+}
+
+/// The first of `rays` whose two answers (the cull's and `none`'s) are not the `same`,
+/// named with its kind `what`; `None` when all agree.
+fn disagreement<R: fmt::Debug, T: fmt::Debug + Copy>(
+    what: &str,
+    rays: &[R],
+    both: &mut dyn FnMut(&R) -> (T, T),
+    same: fn(T, T) -> bool,
+) -> Option<String> {
+    rays.iter().find_map(|ray| {
+        let (a, b) = both(ray);
+        (!same(a, b)).then(|| format!("{what} {ray:?}: {a:?} vs none {b:?}"))
+    })
 }
 
 /// One timed pass of contender `i` over its unit's rays.
@@ -457,11 +462,11 @@ fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
     let lineup = &unit.lineup;
     let n = lineup.culls.len();
     if i < n {
-        lineup.culls[i].visit(Closest(&unit.scene, &unit.camera))
+        lineup.culls[i].visit(ScenePass(unit, Traced::Closest))
     } else if i < 2 * n {
-        lineup.culls[i - n].visit(AnyHit(&unit.scene, &unit.shadow))
+        lineup.culls[i - n].visit(ScenePass(unit, Traced::AnyHit))
     } else if i < 3 * n {
-        lineup.culls[i - 2 * n].visit(Bounce(&unit.scene, &unit.bounce))
+        lineup.culls[i - 2 * n].visit(ScenePass(unit, Traced::Bounce))
     } else {
         let cull = lineup.batched[i - 3 * n];
         let UnitScene::Tori(scene) = &unit.scene else {
@@ -476,58 +481,35 @@ fn pass(unit: &Unit, i: usize, dispatch: &Dispatch) -> Duration {
     }
 }
 
-/// A timed closest-hit pass, monomorphized per cull.
-struct Closest<'a>(&'a UnitScene, &'a [Ray]);
-
-impl CullVisitor for Closest<'_> {
-    type Output = Duration;
-    #[inline(never)]
-    fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut stats = TraceStats::default();
-        let mut hits = 0usize;
-        for ray in black_box(self.1) {
-            hits += usize::from(self.0.trace(&cull, ray, &mut stats).is_some());
-        }
-        black_box((hits, stats));
-        start.elapsed()
-    }
+/// Which rays a [`ScenePass`] traces: closest-hit camera rays, any-hit shadow rays, or
+/// closest-hit bounce rays (the spawned rays' traversal).
+#[derive(Debug, Clone, Copy)]
+enum Traced {
+    Closest,
+    AnyHit,
+    Bounce,
 }
 
-/// A timed any-hit pass over shadow rays, monomorphized per cull.
-struct AnyHit<'a>(&'a UnitScene, &'a [Spawned]);
+/// A timed pass over one kind of the unit's rays, monomorphized per cull: the kind is
+/// chosen once, before the clock starts, and each kind's loop is its own.
+struct ScenePass<'a>(&'a Unit, Traced);
 
-impl CullVisitor for AnyHit<'_> {
+impl CullVisitor for ScenePass<'_> {
     type Output = Duration;
     #[inline(never)]
     fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut stats = TraceStats::default();
-        let mut blocked = 0usize;
-        for s in black_box(self.1) {
-            blocked += usize::from(self.0.occluded_spawned(&cull, s, &mut stats));
+        let (unit, scene) = (self.0, &self.0.scene);
+        match self.1 {
+            Traced::Closest => timed_pass(&unit.camera, |ray, stats: &mut TraceStats| {
+                scene.trace(&cull, ray, stats).is_some()
+            }),
+            Traced::AnyHit => timed_pass(&unit.shadow, |s, stats: &mut TraceStats| {
+                scene.occluded_spawned(&cull, s, stats)
+            }),
+            Traced::Bounce => timed_pass(&unit.bounce, |s, stats: &mut TraceStats| {
+                scene.trace_spawned(&cull, s, stats).is_some()
+            }),
         }
-        black_box((blocked, stats));
-        start.elapsed()
-    }
-}
-
-/// A timed closest-hit pass over bounce rays, monomorphized per cull: [`Closest`]'s loop
-/// through the spawned rays' traversal.
-struct Bounce<'a>(&'a UnitScene, &'a [Spawned]);
-
-impl CullVisitor for Bounce<'_> {
-    type Output = Duration;
-    #[inline(never)]
-    fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut stats = TraceStats::default();
-        let mut hits = 0usize;
-        for s in black_box(self.1) {
-            hits += usize::from(self.0.trace_spawned(&cull, s, &mut stats).is_some());
-        }
-        black_box((hits, stats));
-        start.elapsed()
     }
 }
 

@@ -4,6 +4,7 @@
 //! is compiled per cull and nothing is dispatched per ray; the one `match` per pass sits
 //! outside the timed region.
 
+use crate::precision::Path;
 use std::cell::RefCell;
 use std::fmt;
 use std::hint::black_box;
@@ -61,12 +62,25 @@ impl Metric {
         }
     }
 
-    /// Whether this times the batch mode.
+    /// The path this times on the precision × engine axis: the CPU's, one ray at a time
+    /// or in batches, f64 or (the f32 wavefront, certified or not) f32. The cull-alone
+    /// metrics run no intersection and are f64, what a record without the field means.
+    pub fn path(self) -> Path {
+        match self {
+            Metric::TotalNs | Metric::CullNs => Path::SCALAR_F64,
+            Metric::BatchTotalNs | Metric::BatchCullNs => Path::BATCH_F64,
+            Metric::BatchF32TotalNs | Metric::BatchF32UncertifiedNs => Path::BATCH_F32,
+        }
+    }
+
+    /// Whether this times the batch mode ([`Metric::path`]'s mode is batch; written
+    /// out, as [`time_pass`] asks it before each timed pass).
     pub fn is_batch(self) -> bool {
         !matches!(self, Metric::TotalNs | Metric::CullNs)
     }
 
-    /// Whether this times the f32 wavefront (certified or not).
+    /// Whether this times the f32 wavefront, certified or not ([`Metric::path`]'s
+    /// precision is f32).
     pub fn is_f32(self) -> bool {
         matches!(
             self,
@@ -74,15 +88,10 @@ impl Metric {
         )
     }
 
-    /// The exact intersection's precision, as results record it: `f32` for the f32
-    /// wavefront, `f64` otherwise (the cull-alone metrics run no intersection, and are
-    /// recorded as `f64`, what a record without the field means).
+    /// The exact intersection's precision, as results record it: [`Metric::path`]'s,
+    /// `f32` for the f32 wavefront, `f64` otherwise.
     pub fn precision(self) -> &'static str {
-        if self.is_f32() {
-            crate::results::F32_PRECISION
-        } else {
-            crate::results::F64_PRECISION
-        }
+        self.path().precision.name()
     }
 
     /// Whether `cull` is timed under this metric: batch metrics need a batch form, and the
@@ -285,6 +294,17 @@ impl CullVisitor for Pass<'_, '_> {
 mod tests {
     use super::*;
     use crate::workload::{Case, Pose, generate};
+
+    /// Each metric's path on the precision × engine axis agrees with its own tests.
+    #[test]
+    fn every_metric_is_on_its_path() {
+        use crate::precision::{Mode, Precision};
+        for m in Metric::ALL.into_iter().chain(Metric::BATCH) {
+            assert_eq!(m.is_batch(), m.path().mode == Mode::Batch, "{m}");
+            assert_eq!(m.is_f32(), m.path().precision == Precision::F32, "{m}");
+            assert_eq!(m.precision(), m.path().precision.name(), "{m}");
+        }
+    }
 
     #[test]
     fn every_timed_cull_runs_both_metrics() {

@@ -162,6 +162,23 @@ pub fn interleave(
     }
 }
 
+/// One timed pass over `rays`: the wall time of `hit` on each, the hits counted and the
+/// count and `state` (a traversal's statistics, or `()`) kept from the optimiser by
+/// `black_box`, so that the work is done and nothing else is timed. Inlined into the
+/// caller, whose `#[inline(never)]` visit monomorphizes it per cull: each contender's
+/// loop is its own code, as when every pass wrote this loop out.
+#[inline(always)]
+pub fn timed_pass<R, S: Default>(rays: &[R], mut hit: impl FnMut(&R, &mut S) -> bool) -> Duration {
+    let start = Instant::now();
+    let mut state = S::default();
+    let mut hits = 0usize;
+    for ray in std::hint::black_box(rays) {
+        hits += usize::from(hit(ray, &mut state));
+    }
+    std::hint::black_box((hits, state));
+    start.elapsed()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,13 +9,13 @@
 //! member behind each cull of the table ([`CullKind::TIMED`]; a cull that does not accept
 //! the member's shape is declined, so it costs the exact intersection alone).
 
-use super::shapes::{Pair, ShapeRatio, TimedShape, time_contenders};
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use super::engine::timed_pass;
+use super::shapes::{CulledPass, Pair, ShapeRatio, TimedShape, time_contenders};
+use std::time::Duration;
 use torus_cull::family::Toroid;
-use torus_cull::{Cull, CullKind, CullVisitor, Ray};
+use torus_cull::{Cull, CullKind, Ray};
 
-/// The members `time --family` and `cargo bench` time, (R, a, b) with a = 1: the
+/// The members `time family` and `cargo bench` time, (R, a, b) with a = 1: the
 /// elliptical ring tube at ν = R/a = 4 with b/a = 1/4, 1/2, 1, 2, 4, the horn torus, and
 /// the spindle at R/a = 3/4 with b/a = 1 and 2.
 pub const MEMBERS: [(f64, f64, f64); 8] = [
@@ -62,13 +62,12 @@ impl TimedShape for Toroid {
         format!("family_{kind}_b{aspect}")
     }
 
-    fn ratios(
-        &self,
-        rays: &[Ray],
-        runs: usize,
-        seconds: f64,
-        seed: u64,
-    ) -> Option<Vec<ShapeRatio>> {
+    #[inline(always)]
+    fn hit_culled<C: Cull>(&self, cull: &C, ray: &Ray) -> bool {
+        self.intersect_culled(cull, ray).is_some()
+    }
+
+    fn ratios(&self, rays: &[Ray], timing: (usize, f64, u64)) -> Option<Vec<ShapeRatio>> {
         let own_frame = self.center_f64() == glam::DVec3::ZERO && self.axis_f64() == glam::DVec3::Y;
         if !own_frame {
             return None;
@@ -93,58 +92,25 @@ impl TimedShape for Toroid {
         for (i, kind) in culls.iter().enumerate() {
             pairs.push((3 + i, cychosz, name(kind.name()), name("cychosz")));
         }
-        time_contenders(
-            3 + culls.len(),
-            pairs,
-            (runs, seconds, seed),
-            rays.len(),
-            |_| {
-                let (rays, images) = (rays.to_vec(), images.clone());
-                move |i| match i {
-                    0 => exact_pass(&circular, &rays),
-                    1 => exact_pass(&circular, &images),
-                    2 => exact_pass(self, &rays),
-                    _ => culls[i - 3].visit(CulledPass {
-                        member: self,
-                        rays: &rays,
-                    }),
-                }
-            },
-        )
+        time_contenders(3 + culls.len(), pairs, timing, rays.len(), |_| {
+            let (rays, images) = (rays.to_vec(), images.clone());
+            move |i| match i {
+                0 => exact_pass(&circular, &rays),
+                1 => exact_pass(&circular, &images),
+                2 => exact_pass(self, &rays),
+                _ => culls[i - 3].visit(CulledPass {
+                    shape: self,
+                    rays: &rays,
+                }),
+            }
+        })
     }
 }
 
 /// One timed pass of the member's exact intersection over the rays.
 #[inline(never)]
 fn exact_pass(member: &Toroid, rays: &[Ray]) -> Duration {
-    let start = Instant::now();
-    let mut hits = 0usize;
-    for ray in black_box(rays) {
-        hits += usize::from(member.intersect(ray).is_some());
-    }
-    black_box(hits);
-    start.elapsed()
-}
-
-/// One timed pass of the member behind a cull, monomorphized per cull.
-struct CulledPass<'a> {
-    member: &'a Toroid,
-    rays: &'a [Ray],
-}
-
-impl CullVisitor for CulledPass<'_> {
-    type Output = Duration;
-
-    #[inline(never)]
-    fn visit<C: Cull>(self, cull: C) -> Duration {
-        let start = Instant::now();
-        let mut hits = 0usize;
-        for ray in black_box(self.rays) {
-            hits += usize::from(self.member.intersect_culled(&cull, ray).is_some());
-        }
-        black_box(hits);
-        start.elapsed()
-    }
+    timed_pass(rays, |ray, (): &mut ()| member.intersect(ray).is_some())
 }
 
 #[cfg(test)]
@@ -163,7 +129,7 @@ mod tests {
                 Ray::new(o, Vec3::new(-a.cos(), -0.2, -a.sin())).unwrap()
             })
             .collect();
-        let got = member.ratios(&rays, 2, 0.05, 7).unwrap();
+        let got = member.ratios(&rays, (2, 0.05, 7)).unwrap();
         assert_eq!(got.len(), 2 + CullKind::TIMED.len());
         let first = (got[0].contender.as_str(), got[0].reference.as_str());
         assert_eq!(first, ("exact", "circular_exact"));

@@ -25,7 +25,7 @@
 //!
 //! **Runs.** `runs` runs, each with the scene uploaded afresh ([`GpuScene::new`]) and its
 //! rays prepared and uploaded afresh (fresh buffers); [`combine_runs`] gives every record
-//! its between-run interval, as `time --bvh` does. The rays themselves are drawn once.
+//! its between-run interval, as `time bvh` does. The rays themselves are drawn once.
 //!
 //! **Answers checked.** In the first run, before any timing, every cull's closest and
 //! any-hit answers on the resident rays (the host finishing what the device left) are

@@ -5,14 +5,14 @@
 //! ([`super::runs::between_run_interval`]). [`super::family`] and [`super::bend`] name
 //! the contenders.
 
-use super::engine::{Schedule, interleave};
+use super::engine::{Schedule, interleave, timed_pass};
 use super::runs::{between_run_interval, pooled_within_interval};
 use super::stats::{QUIET_FRACTION, RatioEstimate, quiet_rounds, ratio_estimate};
 use super::sweep::undisturbed;
 use crate::results::{CPU_DEVICE, F64_PRECISION, RatioRecord};
 use crate::workload::box_rays::box_rays;
 use std::time::Duration;
-use torus_cull::Ray;
+use torus_cull::{Cull, CullVisitor, Ray};
 
 /// One paired ratio of a shape's timing.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -80,7 +80,7 @@ impl ShapeRatio {
 /// bend's per-ray total (cull + exact intersection), decisive in `compare` as `total_ns`.
 pub const SHAPE_METRICS: [&str; 2] = ["family_total_ns", "bend_total_ns"];
 
-/// A shape that `time --family`, `time --bend` and `cargo bench` time (a torus family
+/// A shape that `time family`, `time bend` and `cargo bench` time (a torus family
 /// member, a pipe bend): its case in a results file, its ray box and its ratios.
 pub trait TimedShape {
     /// Its records' metric, one of [`SHAPE_METRICS`].
@@ -89,10 +89,32 @@ pub trait TimedShape {
     fn box_radii(&self) -> (f64, f64, f64);
     /// Its case in a results file.
     fn case_name(&self) -> String;
-    /// Its ratios on `rays` from `runs` runs of about `seconds` each; `None` for an empty
-    /// ray set or a run without rounds.
-    fn ratios(&self, rays: &[Ray], runs: usize, seconds: f64, seed: u64)
-    -> Option<Vec<ShapeRatio>>;
+    /// Its ratios on `rays` from `timing` = (runs, seconds, seed): that many runs of about
+    /// that many seconds each, as [`time_contenders`] takes them; `None` for an empty ray
+    /// set or a run without rounds.
+    fn ratios(&self, rays: &[Ray], timing: (usize, f64, u64)) -> Option<Vec<ShapeRatio>>;
+    /// Whether the shape behind `cull` (its `intersect_culled`) hits `ray`: what
+    /// [`CulledPass`] times.
+    fn hit_culled<C: Cull>(&self, cull: &C, ray: &Ray) -> bool;
+}
+
+/// One timed pass of a shape behind a cull over the rays ([`TimedShape::hit_culled`]),
+/// monomorphized per cull and shape.
+pub struct CulledPass<'a, S> {
+    /// The shape.
+    pub shape: &'a S,
+    /// The rays.
+    pub rays: &'a [Ray],
+}
+
+impl<S: TimedShape> CullVisitor for CulledPass<'_, S> {
+    type Output = Duration;
+
+    #[inline(never)]
+    fn visit<C: Cull>(self, cull: C) -> Duration {
+        let shape = self.shape;
+        timed_pass(self.rays, |ray, (): &mut ()| shape.hit_culled(&cull, ray))
+    }
 }
 
 /// Every shape of `shapes` timed on `batch` uniform rays at its box (seeded per shape
@@ -115,7 +137,7 @@ pub fn shape_records<S: TimedShape>(
         let rays = box_rays(big, a, b, batch, seed.wrapping_add(i as u64));
         let case = shape.case_name();
         let ratios = shape
-            .ratios(&rays, runs, seconds, seed)
+            .ratios(&rays, (runs, seconds, seed))
             .ok_or_else(|| format!("{case}: no rounds (raise the time)"))?;
         shown(shape, &ratios);
         records.extend(

@@ -34,7 +34,7 @@ pub struct LeafBatchStats {
 
 /// The buffers of the batched traversal, kept between calls: a renderer traces batch after
 /// batch, and an allocation per torus and per call would be timed (and would add the
-/// allocator's noise to every paired ratio of `time --bvh`).
+/// allocator's noise to every paired ratio of `time bvh`).
 #[derive(Debug, Clone, Default)]
 pub struct LeafBatcher {
     /// Per torus, the indices of the rays whose path enters its box.

@@ -14,7 +14,7 @@
 //! its circular image; a cull that does not accept the member's shape is declined and
 //! keeps every ray, and its record says so: `accepts: false`); for a bend, each on the
 //! outer torus, then the segment's wedge alone (`wedge`, `PipeBend::wedge_cull(NoCull)`)
-//! and behind each cull (`wedge+<cull>`), as `bend` and `time --bend` price them.
+//! and behind each cull (`wedge+<cull>`), as `bend` and `time bend` price them.
 
 mod bend;
 mod family;

@@ -23,7 +23,7 @@ fn a_negative_value_gets_the_flags_range() {
             "--nu -1 is not in workload quick (allowed: ",
         ),
         (
-            "time --workgroup -1 --device gpu",
+            "time gpu --workgroup -1",
             "--workgroup -1 is invalid (allowed: 32 ..= 256",
         ),
         (
@@ -33,6 +33,10 @@ fn a_negative_value_gets_the_flags_range() {
         ("time --batch -1", "--batch -1 is invalid (allowed: 16 ..= "),
         (
             "time --runs -1",
+            "--runs -1 is invalid (allowed: 1 ..= 100)",
+        ),
+        (
+            "time family --runs -1",
             "--runs -1 is invalid (allowed: 1 ..= 100)",
         ),
         (

@@ -25,3 +25,4 @@ mod run_shapes_cli;
 mod summarize_cli;
 mod support;
 mod time_cli;
+mod time_flags_cli;

@@ -441,8 +441,10 @@ fn eval_exact_gpu_agrees_with_the_cpu_path() {
     println!("eval --exact gpu: {escalated} of 600 rows escalated, finished by the {finisher}");
 }
 
-/// `time --device gpu` writes Mrays/s per cull as estimates, with the adapter in
-/// meta.device (and says so when the adapter is the CPU).
+/// `time gpu` writes Mrays/s per cull as estimates, with the adapter in meta.device (and
+/// says so when the adapter is the CPU), at the `--workgroup` asked for, which the device
+/// names; its `--workload`, `--nu`, `--batch` and `--out` read back from the file, its
+/// plots drawn.
 #[test]
 fn time_device_gpu_names_the_adapter() {
     let Some(gpu) = gpu() else { return };
@@ -450,8 +452,9 @@ fn time_device_gpu_names_the_adapter() {
     let out_path = dir.path().join("time.json");
     let out = torus_cull(&[
         "time",
-        "--device",
         "gpu",
+        "--workgroup",
+        "128",
         "--workload",
         concat!(env!("CARGO_MANIFEST_DIR"), "/workloads/quick.json"),
         "--nu",
@@ -479,6 +482,8 @@ fn time_device_gpu_names_the_adapter() {
     let results = torus_cull_lab::results::Results::load(&out_path).unwrap();
     let device = results.meta.device.expect("meta.device");
     assert!(device.contains(gpu.adapter_name()), "{device}");
+    assert!(device.contains("workgroup 128"), "{device}");
+    assert_eq!(results.meta.workload, "quick");
     assert_eq!(
         device.contains("no GPU timing claimed"),
         gpu.is_software(),
@@ -558,7 +563,7 @@ fn gpu_info_describes_the_adapter() {
     field("driver");
 }
 
-/// `time --device gpu --finish --cases`: the f64 pass timed after the kernel, per case ×
+/// `time gpu --finish --cases --culls --no-plots`: the f64 pass timed after the kernel, per case ×
 /// ν × cull, only on the cases asked for, with who answered the escalated rays.
 #[test]
 fn time_device_gpu_times_the_finish_pass() {
@@ -567,7 +572,6 @@ fn time_device_gpu_times_the_finish_pass() {
     let out_path = dir.path().join("finish.json");
     let args = [
         "time",
-        "--device",
         "gpu",
         "--finish",
         "--workload",
@@ -618,6 +622,15 @@ fn time_device_gpu_times_the_finish_pass() {
     assert!(stdout.contains("f64 finish pass:"), "{stdout}");
     assert!(stdout.contains("finished on the device"), "{stdout}");
     assert!(results.estimates.iter().all(|e| e.ns_per_element > 0.0));
+    // --no-plots: no SVG beside the file.
+    let svgs = std::fs::read_dir(dir.path())
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .is_ok_and(|e| e.file_name().to_string_lossy().ends_with(".svg"))
+        })
+        .count();
+    assert_eq!(svgs, 0);
 }
 
 /// Rays from surface points (`Torus::spawn`): the kernel proves them from the cubic left

@@ -1,4 +1,4 @@
-//! The GPU BVH timed (`torus-cull time-gpu-bvh`, `torus_cull_lab::paired::gpu_bvh`,
+//! The GPU BVH timed (`torus-cull time gpu-bvh`, `torus_cull_lab::paired::gpu_bvh`,
 //! `torus_cull::gpu::SceneRays`) at smoke size on whatever adapter wgpu finds (CI:
 //! lavapipe, where the figures are a CPU's and say so), and the device script's smoke run
 //! of its BVH step.
@@ -14,7 +14,7 @@ use torus_cull_lab::scene::{Scene, SceneKind};
 
 /// The command line of the mode, before its flags: `time gpu-bvh` once `time` has
 /// subcommands.
-const MODE: &[&str] = &["time-gpu-bvh"];
+const MODE: &[&str] = &["time", "gpu-bvh"];
 
 fn torus_cull(args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_torus-cull"))
@@ -109,7 +109,7 @@ fn time_gpu_bvh_refuses_bad_flags() {
 }
 
 /// `benches/gpu_device.sh --smoke --steps bvh,subm`: the script's checks, its BVH step
-/// (`time-gpu-bvh` at smoke size) and its submissions log (`time-gpu-submissions`)
+/// (`time gpu-bvh` at smoke size) and its submissions log (`time gpu-submissions`)
 /// through the binary under test, a finished log; the submissions' CSV, a line per
 /// submission; and the BVH step's records: every GPU cull over `none` (closest and any hit) and every cull over
 /// the copy kernel, positive times, the adapter named (a software one called a CPU proxy),

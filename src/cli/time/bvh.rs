@@ -1,16 +1,19 @@
-//! `torus-cull time --bvh`: the paired ratios inside the BVH
+//! `torus-cull time bvh`: the paired ratios inside the BVH
 //! ([`torus_cull_lab::paired::bvh`]) on the workload's `bvh` scenes, written as the
 //! `ratio` section of a results file (metrics `bvh_closest_ns`, `bvh_anyhit_ns`,
 //! `bvh_bounce_ns`, `bvh_batched_ns`) that `compare` and `intervals` read like the others.
 
-use super::{TimeArgs, check_runs, check_seconds, check_writable, parse_culls, timing_sizes};
-use crate::console::{out, outln};
-use std::path::Path;
+use super::args::BvhArgs;
+use super::common::{
+    check_run_seconds, check_seconds, out_path, parse_culls, pick_runs, save, time_suffix,
+    timing_sizes,
+};
+use crate::console::out;
 use std::process::ExitCode;
 use torus_cull::Named;
 use torus_cull::batch::Dispatch;
 use torus_cull_lab::paired::bvh::{BvhTiming, FAMILY_SCENE, NEW_SCENE_NU, time_bvh, units_of};
-use torus_cull_lab::results::{self, BvhSizes, Results};
+use torus_cull_lab::results::{BvhSizes, Results};
 use torus_cull_lab::scene::SceneKind;
 use torus_cull_lab::workload::spec::Workload;
 
@@ -18,32 +21,19 @@ use torus_cull_lab::workload::spec::Workload;
 /// a few of them in the batched leaves, few enough for hundreds of rounds a run.
 const DEFAULT_BVH_RAYS: usize = 1024;
 
-/// `--runs` unless given: more runs than `time`'s 5, as the slow-state runs set aside per
-/// batch leave 1 to 3 of 5 on a shared machine, and the t quantile of so few is wide.
+/// `--runs` unless given: more runs than `time ring`'s 5, as the slow-state runs set
+/// aside per batch leave 1 to 3 of 5 on a shared machine, and the t quantile of so few
+/// is wide.
 const DEFAULT_BVH_RUNS: u64 = 10;
 
-/// Runs `torus-cull time --bvh`.
-pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    for (given, flag) in [
-        (args.secondary, "--secondary"),
-        (args.finish, "--finish"),
-        (args.device != super::Device::Cpu, "--device gpu"),
-        (args.mode != super::Mode::Scalar, "--mode both"),
-        (!args.cases.is_empty(), "--cases"),
-        (args.worker_run.is_some(), "--worker-run"),
-    ] {
-        if given {
-            return Err(format!(
-                "--bvh times the workload's BVH scenes on the CPU: not with {flag}"
-            )
-            .into());
-        }
-    }
-    let workload = Workload::open(&args.workload)?;
+/// Runs `torus-cull time bvh`.
+pub(super) fn run(args: &BvhArgs) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    let common = &args.common;
+    let workload = Workload::open(&common.workload)?;
     let spec = workload.bvh.clone().ok_or_else(|| {
         format!(
-            "--bvh: workload {} has no `bvh` key (its scenes)",
-            args.workload.display()
+            "time bvh: workload {} has no `bvh` key (its scenes)",
+            common.workload.display()
         )
     })?;
     let culls = parse_culls(&args.culls)?;
@@ -53,31 +43,18 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
     } else {
         args.nu.clone()
     };
-    check_seconds(args.seconds)?;
-    let runs = match args.runs {
-        Some(runs) => runs.within("--runs", (1, super::MAX_RUNS), "")?,
-        None => DEFAULT_BVH_RUNS,
-    };
-    check_runs(runs, args.seconds)?;
-    let rays = match args.batch {
+    check_seconds(common.seconds)?;
+    let runs = pick_runs(args.runs, DEFAULT_BVH_RUNS)?;
+    check_run_seconds(runs, common.seconds)?;
+    let rays = match common.batch {
         None => DEFAULT_BVH_RAYS,
-        Some(b) => b.within("--batch", (16, usize::MAX), " with --bvh")?,
+        Some(b) => b.within(
+            "--batch",
+            (super::common::MIN_BATCH, usize::MAX),
+            " with time bvh",
+        )?,
     };
-    let path = match &args.out {
-        Some(p) => p.clone(),
-        None => {
-            let suffix = if workload.name == "default" {
-                "-bvh-time".to_string()
-            } else {
-                format!("-{}-bvh-time", workload.name)
-            };
-            let path = results::default_path(Path::new("results"), &suffix);
-            torus_cull_lab::output::create_default_dir(&path)
-                .map_err(|e| format!("--out {}: {e}", path.display()))?;
-            path
-        }
-    };
-    check_writable(&path)?;
+    let path = out_path(common, &time_suffix(&workload.name, "bvh"), false)?;
     let dispatch = Dispatch::from_env()?;
     let timing = BvhTiming {
         units: units_of(&spec.scenes, &nus),
@@ -85,21 +62,24 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
         seed: workload.seed,
         culls,
         rays,
-        seconds: args.seconds,
+        seconds: common.seconds,
         runs: runs as usize,
         dispatch,
         family: Some(NEW_SCENE_NU),
     };
     eprintln!(
-        "time --bvh: {} scene x nu, {} tori, {rays} camera rays a pass, {runs} runs in {:.0} s",
+        "time bvh: {} scene x nu, {} tori, {rays} camera rays a pass, {runs} runs in {:.0} s",
         timing.units.len(),
         spec.tori,
-        args.seconds
+        common.seconds
     );
-    let heartbeat = crate::console::Heartbeat::new("time --bvh".to_string(), "visits");
+    // A line every 5 s from the start, building the scenes included.
+    let heartbeat = crate::console::Heartbeat::new("time bvh".to_string(), "visits");
+    let ticker = crate::console::Ticker::start(heartbeat, 0);
     let records = time_bvh(&timing, &mut |done, all| {
-        heartbeat.update(done as u64, all as u64)
+        ticker.set_of(done as u64, all as u64);
     })?;
+    drop(ticker);
     let mut results = Results::new(&workload, "time");
     results.ratio = records;
     results.meta.threads = Some(1);
@@ -118,7 +98,6 @@ pub(super) fn run(args: &TimeArgs) -> Result<ExitCode, Box<dyn std::error::Error
     results.meta.sizes = Some(sizes);
     results.meta.isa = Some(dispatch.isa().name().to_string());
     out!("{}", torus_cull_lab::report::ratio_tables(&results))?;
-    results.save(&path)?;
-    outln!("wrote {}", path.display())?;
+    save(&results, &path, common)?;
     Ok(ExitCode::SUCCESS)
 }

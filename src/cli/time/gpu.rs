@@ -1,4 +1,4 @@
-//! `torus-cull time --device gpu`: the WGSL kernel timed with its rays resident on the
+//! `torus-cull time gpu`: the WGSL kernel timed with its rays resident on the
 //! device, every cull paired against `none` and `cychosz` (and a copy kernel, the
 //! memory-bound floor) in the same interleaved rounds.
 //!
@@ -8,15 +8,17 @@
 //! the adapter has none). Upload and read-back are timed once per case × ν and reported
 //! apart.
 
-use super::GpuOptions;
-use crate::console::outln;
-use std::path::Path;
+use super::args::GpuArgs;
+use super::common::{MIN_BATCH, out_path, picked, save, time_suffix, timing_sizes};
+use crate::console::{Heartbeat, Ticker, outln};
+use crate::whole::Whole;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 use torus_cull::gpu::{FinishCounts, GpuCull, GpuIntersector, KernelTime, ResidentRays};
 use torus_cull::{CullKind, F32Verdict, Named};
 use torus_cull_lab::paired::ratio_estimate;
-use torus_cull_lab::results::{EstimateRecord, F32_PRECISION, RatioRecord, Results};
+use torus_cull_lab::precision::Path;
+use torus_cull_lab::results::{EstimateRecord, RatioRecord, Results};
 use torus_cull_lab::workload::spec::Workload;
 use torus_cull_lab::workload::{Batch, Case, GenerateError, generate};
 
@@ -31,20 +33,42 @@ const SUBMISSION: Duration = Duration::from_millis(4);
 /// intersection), rays resident.
 const METRIC: &str = "gpu_kernel_ns";
 
+/// The path the kernel times on the precision × engine axis: the certified f32 path on
+/// the GPU (its records' `precision` `f32`, `device` `gpu`); `--finish` adds
+/// [`Path::GPU_F64`], the f64 pass after it.
+const PATH: Path = Path::GPU_F32;
+
 /// The contender that only copies each ray's record: the bandwidth floor.
 const COPY: &str = "copy";
 
-/// Times the kernel on every case × ν of `workload`.
-pub(super) fn run(
-    workload: &Workload,
-    nus: &[f64],
-    culls: &[CullKind],
-    seconds: f64,
-    batch: usize,
-    GpuOptions { finish, workgroup }: GpuOptions,
-    path: &Path,
-) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let mut culls = gpu_culls(culls)?;
+/// Rays per case × ν on the GPU by default: a GPU needs about this many in flight before
+/// its time per ray stops falling (an H100 holds 132 multiprocessors × 2 048 threads).
+/// Not a power of two: on an H100, 2²⁰ rays (and, for uniform rays, 2²¹ and 2²²) ran in a
+/// slow state 3–5× slower than 2²⁰ ± 64 (docs/gpu.md, "Batch size on the H100").
+const GPU_BATCH: usize = 2_000_000;
+
+/// The most rays per case × ν on the GPU: 64 bytes each on the device, 2 GiB in all.
+const MAX_GPU_BATCH: usize = 1 << 25;
+
+/// `--batch` on the GPU: drawn from the workload's generators at that count, whatever
+/// the workload's `rays`.
+fn pick_gpu_batch(asked: Option<Whole>) -> Result<usize, String> {
+    match asked {
+        None => Ok(GPU_BATCH),
+        Some(b) => b.within("--batch", (MIN_BATCH, MAX_GPU_BATCH), " with time gpu"),
+    }
+}
+
+/// Times the kernel on every case × ν of the workload; `workgroup` is `--workgroup`,
+/// checked.
+pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn std::error::Error>> {
+    let common = &args.common;
+    let asked = picked(common, &args.pick)?;
+    let batch = pick_gpu_batch(common.batch)?;
+    let path = out_path(common, &time_suffix(&asked.workload.name, "gpu"), false)?;
+    let (workload, nus) = (&asked.workload, &asked.nus[..]);
+    let (seconds, finish) = (common.seconds, args.finish);
+    let mut culls = gpu_culls(&asked.culls)?;
     for reference in [GpuCull::NoCull, GpuCull::Cychosz] {
         if !culls.contains(&reference) {
             culls.insert(0, reference);
@@ -59,6 +83,10 @@ pub(super) fn run(
     }
     let share = seconds / (workload.cases.len() * nus.len()) as f64;
     outln!(
+        "one run in this process: each ratio's 95% CI is within its rounds (no between-run \
+         interval)"
+    )?;
+    outln!(
         "{:<11} {:>6} {:<15} {:>8} {:>9} {:>21} {:>21} {:>7} {:>6}",
         "case",
         "nu",
@@ -71,7 +99,10 @@ pub(super) fn run(
         "escal"
     )?;
     let mut results = Results::new(workload, "time");
-    for (case, nu, b) in generate_all(workload, nus, batch)? {
+    let units = workload.cases.len() * nus.len();
+    let ticker = Ticker::start(Heartbeat::new("time gpu".into(), "case x nu"), units as u64);
+    for (done, (case, nu, b)) in generate_all(workload, nus, batch)?.into_iter().enumerate() {
+        ticker.set(done as u64);
         let mut resident = gpu.upload(&b.torus, &b.rays)?;
         let finish_upload = if finish {
             Some(resident.upload_finish(&b.torus, &b.rays)?)
@@ -137,8 +168,8 @@ pub(super) fn run(
                     rays: rays as u64,
                     ns_per_ray: est.ns_per_ray,
                     reference_ns_per_ray: est.reference_ns_per_ray,
-                    precision: F32_PRECISION.into(),
-                    device: "gpu".into(),
+                    precision: PATH.precision.name().into(),
+                    device: PATH.engine.name().into(),
                     escalation_rate: Some(escalated),
                     ..RatioRecord::default()
                 });
@@ -204,11 +235,13 @@ pub(super) fn run(
             )?;
         }
     }
+    ticker.set(units as u64);
+    drop(ticker);
     results.meta.device = Some(device);
     results.meta.threads = Some(1);
-    results.meta.sizes = Some(super::timing_sizes(batch, nus));
-    results.save(path)?;
-    outln!("wrote {}", path.display())?;
+    results.meta.sizes = Some(timing_sizes(batch, nus));
+    // The plots: ns per ray against ν, from the estimates.
+    save(&results, &path, common)?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -450,7 +483,7 @@ fn gpu_culls(culls: &[CullKind]) -> Result<Vec<GpuCull>, String> {
                 .find(|g| g.name() == c.name())
                 .ok_or_else(|| {
                     format!(
-                        "--culls: the GPU kernel has no {c} (allowed with --device gpu: {})",
+                        "--culls: the GPU kernel has no {c} (allowed with time gpu: {})",
                         allowed()
                     )
                 })

@@ -1,4 +1,4 @@
-//! `torus-cull time-gpu-bvh` (to become `time gpu-bvh`): the GPU BVH timed
+//! `torus-cull time gpu-bvh`: the GPU BVH timed
 //! ([`torus_cull_lab::paired::gpu_bvh`]): each GPU cull at the leaves over `none`,
 //! closest hit (camera rays) and any hit (shadow rays spawned on the hits), with within-
 //! and between-run intervals, rays per second, and the copy kernel over the same ray bytes.
@@ -14,7 +14,7 @@ use std::error::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// `torus-cull time-gpu-bvh`'s arguments.
+/// `torus-cull time gpu-bvh`'s arguments.
 #[derive(clap::Args)]
 pub struct GpuBvhArgs {
     /// Workload whose `bvh` key gives the scenes, ν and tori: `quick` or `default` (built
@@ -22,7 +22,7 @@ pub struct GpuBvhArgs {
     #[arg(long, default_value = "quick")]
     workload: PathBuf,
     /// Scene layouts, comma-separated (default: the workload's scenes at each of its ν,
-    /// then every other layout at ν = 4, as `time --bvh`): ring_field, chain,
+    /// then every other layout at ν = 4, as `time bvh`): ring_field, chain,
     /// facing_grid, mixed_nu, dense.
     #[arg(long, value_delimiter = ',')]
     scenes: Vec<String>,
@@ -59,15 +59,15 @@ pub struct GpuBvhArgs {
     no_plots: bool,
 }
 
-/// Runs `torus-cull time-gpu-bvh`.
+/// Runs `torus-cull time gpu-bvh`.
 #[cfg(not(feature = "gpu"))]
 pub fn run(_args: &GpuBvhArgs) -> Result<ExitCode, Box<dyn Error>> {
-    Err("time-gpu-bvh needs a binary built with the feature gpu: \
-         cargo run --release --features gpu -- time-gpu-bvh"
+    Err("time gpu-bvh needs a binary built with the feature gpu: \
+         cargo run --release --features gpu -- time gpu-bvh"
         .into())
 }
 
-/// Runs `torus-cull time-gpu-bvh`.
+/// Runs `torus-cull time gpu-bvh`.
 #[cfg(feature = "gpu")]
 pub fn run(args: &GpuBvhArgs) -> Result<ExitCode, Box<dyn Error>> {
     measure::run(args)
@@ -111,7 +111,7 @@ mod measure {
         let workload = Workload::open(&args.workload)?;
         let spec = workload.bvh.clone().ok_or_else(|| {
             format!(
-                "time-gpu-bvh: workload {} has no `bvh` key (its scenes)",
+                "time gpu-bvh: workload {} has no `bvh` key (its scenes)",
                 args.workload.display()
             )
         })?;
@@ -141,7 +141,7 @@ mod measure {
             None => spec.tori,
         };
         let rays = match args.batch {
-            Some(b) => b.within("--batch", (16, MAX_RAYS), " with time-gpu-bvh")?,
+            Some(b) => b.within("--batch", (16, MAX_RAYS), " with time gpu-bvh")?,
             None => DEFAULT_RAYS,
         };
         let seconds = args.seconds;
@@ -179,7 +179,7 @@ mod measure {
             runs,
         };
         eprintln!(
-            "time-gpu-bvh: {} scene x nu, {tori} tori, {rays} camera rays a pass, {runs} runs, {} s of rounds",
+            "time gpu-bvh: {} scene x nu, {tori} tori, {rays} camera rays a pass, {runs} runs, {} s of rounds",
             timing.units.len(),
             Num(seconds)
         );
@@ -246,7 +246,7 @@ mod measure {
                         last = Instant::now();
                         let step = progress.step.lock().map(|s| s.clone()).unwrap_or_default();
                         eprintln!(
-                            "time-gpu-bvh: {step}; {}/{} steps, {:.0} s",
+                            "time gpu-bvh: {step}; {}/{} steps, {:.0} s",
                             progress.done.load(Ordering::Relaxed),
                             progress.all.load(Ordering::Relaxed),
                             start.elapsed().as_secs_f64()

@@ -1,7 +1,7 @@
-//! `torus-cull time-gpu-submissions` (to become `time gpu-submissions`): the single-torus
+//! `torus-cull time gpu-submissions`: the single-torus
 //! kernel's submissions one by one (issue 60, item 3; **not yet run on a GPU**). On an
 //! H100, exactly 2²⁰ rays ran 3–5× slower than 2²⁰ ± 64, for every cull and the copy
-//! kernel alike (docs/gpu.md, "Batch size on the H100"); `time --device gpu` reports only
+//! kernel alike (docs/gpu.md, "Batch size on the H100"); `time gpu` reports only
 //! each contender's median. Here every submission's wall time and device times are
 //! logged, per batch size and contender (the copy kernel and each cull asked for), the
 //! contenders in an order rotated from submission to submission, so that a slow state that
@@ -19,7 +19,7 @@ use std::error::Error;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// `torus-cull time-gpu-submissions`'s arguments.
+/// `torus-cull time gpu-submissions`'s arguments.
 #[derive(clap::Args)]
 pub struct SubmissionsArgs {
     /// Workload whose generator draws the rays: `default` or `quick` (built in), or a file.
@@ -51,17 +51,17 @@ pub struct SubmissionsArgs {
     out: Option<PathBuf>,
 }
 
-/// Runs `torus-cull time-gpu-submissions`.
+/// Runs `torus-cull time gpu-submissions`.
 #[cfg(not(feature = "gpu"))]
 pub fn run(_args: &SubmissionsArgs) -> Result<ExitCode, Box<dyn Error>> {
     Err(
-        "time-gpu-submissions needs a binary built with the feature gpu: \
-         cargo run --release --features gpu -- time-gpu-submissions"
+        "time gpu-submissions needs a binary built with the feature gpu: \
+         cargo run --release --features gpu -- time gpu-submissions"
             .into(),
     )
 }
 
-/// Runs `torus-cull time-gpu-submissions`.
+/// Runs `torus-cull time gpu-submissions`.
 #[cfg(feature = "gpu")]
 pub fn run(args: &SubmissionsArgs) -> Result<ExitCode, Box<dyn Error>> {
     measure::run(args)
@@ -186,13 +186,13 @@ mod measure {
         let largest = *batches.iter().max().expect("at least one batch");
         let start = Instant::now();
         eprintln!(
-            "time-gpu-submissions: drawing {largest} rays of {} at nu = {}",
+            "time gpu-submissions: drawing {largest} rays of {} at nu = {}",
             case.name(),
             Num(args.nu)
         );
         let batch = generate(case, args.nu, largest, workload.seed, workload.pose)?;
         eprintln!(
-            "time-gpu-submissions: drawn in {:.1} s",
+            "time gpu-submissions: drawn in {:.1} s",
             start.elapsed().as_secs_f64()
         );
         let mut log = String::from("batch,contender,submission,order,repeats,wall_ns,device_ns\n");
@@ -242,7 +242,7 @@ mod measure {
                     if last.elapsed() >= EVERY {
                         last = Instant::now();
                         eprintln!(
-                            "time-gpu-submissions: batch {} of {} ({n} rays), submission {} of {submissions}, {:.0} s",
+                            "time gpu-submissions: batch {} of {} ({n} rays), submission {} of {submissions}, {:.0} s",
                             b + 1,
                             batches.len(),
                             s + 1,

@@ -1,81 +1,158 @@
-//! What `time --family` and `time --bend` share: a results file whose `ratio` section holds
-//! a shape's paired ratios (the usual `meta` block, written atomically), and the
-//! console's `ratio [interval]`.
+//! `torus-cull time family` and `time bend`: the paired ratios of the shapes beyond the
+//! ring torus, on uniform rays at each shape's box ([`torus_cull_lab::paired::shapes`]):
+//! the torus family's members ([`torus_cull_lab::paired::family`]: the elliptical tubes
+//! at ν = R/a = 4 with b/a = 1/4 … 4, the horn and two spindles, metric
+//! `family_total_ns`) or the pipe bends ([`torus_cull_lab::paired::bend`]: Δφ = 2π … π/6
+//! and r_min/r_max = 0, 0.5, 0.9 at ν = R/r_max = 4, metric `bend_total_ns`), written as
+//! the `ratio` section of a results file, which `compare` and `plot` read.
 
-use std::path::{Path, PathBuf};
+use super::args::ShapeArgs;
+use super::common::{check_seconds, out_path, pick_batch, pick_runs, save};
+use crate::console::{Heartbeat, Ticker, outln};
 use std::process::ExitCode;
-use torus_cull_lab::paired::shapes::ShapeRatio;
-use torus_cull_lab::results::{RatioRecord, Results, default_path};
+use torus_cull::bend::PipeBend;
+use torus_cull::family::Toroid;
+use torus_cull_lab::paired::shapes::{ShapeRatio, TimedShape, shape_records};
+use torus_cull_lab::paired::{bend, family};
+use torus_cull_lab::results::{RatioRecord, Results};
 use torus_cull_lab::workload::spec::Workload;
 
-/// Runs per shape, in this process (fresh ray buffers each).
-const RUNS: usize = 3;
+/// Runs per shape unless `--runs` says otherwise, in this process (fresh ray buffers
+/// each).
+const DEFAULT_RUNS: u64 = 3;
 
-/// A shape set's `ratio` records, or why there are none.
-pub(super) type Records = Result<Vec<RatioRecord>, String>;
-
-/// A set of shapes `time` takes: `time --<name>` times `shapes` of them through
-/// `records(seed, batch, (runs, seconds per run))`, which prints a line per shape.
-pub(super) struct Timed {
-    /// `family` or `bend`: the flag, the `meta.tool` (`time-<name>`) and the file's
-    /// suffix (`-<name>-time`).
-    pub name: &'static str,
-    /// How many shapes share the time.
-    pub shapes: usize,
-    /// Their `ratio` records.
-    pub records: fn(u64, usize, (usize, f64)) -> Records,
+/// Which shapes: `time family` or `time bend`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Shapes {
+    /// The torus family's members.
+    Family,
+    /// The pipe bends.
+    Bend,
 }
 
-/// Times every shape of `timed` for `seconds` in all, and writes `out` (or the default
-/// `results/<commit>-family-time.json` or `-bend-time.json`).
+impl Shapes {
+    /// The subcommand, the `meta.tool`'s suffix (`time-<name>`) and the file's
+    /// (`-<name>-time`).
+    fn name(self) -> &'static str {
+        match self {
+            Shapes::Family => "family",
+            Shapes::Bend => "bend",
+        }
+    }
+}
+
+/// Times every shape of `shapes` for `--seconds` in all and writes the results file.
 pub(super) fn run(
-    timed: &Timed,
-    workload: &Workload,
-    seconds: f64,
-    batch: usize,
-    out: Option<&Path>,
+    args: &ShapeArgs,
+    shapes: Shapes,
 ) -> Result<ExitCode, Box<dyn std::error::Error>> {
-    let per_run = seconds / (timed.shapes * RUNS) as f64;
-    let name = timed.name;
-    let records = (timed.records)(workload.seed, batch, (RUNS, per_run))
-        .map_err(|e| format!("time --{name}: {e}"))?;
-    let (tool, suffix) = (format!("time-{name}"), format!("-{name}-time"));
-    write(workload, &tool, &suffix, records, out)?;
+    let common = &args.common;
+    let workload = Workload::open(&common.workload)?;
+    check_seconds(common.seconds)?;
+    let batch = pick_batch(common.batch, &workload, &common.workload)?;
+    let runs = pick_runs(args.runs, DEFAULT_RUNS)? as usize;
+    let name = shapes.name();
+    let path = out_path(common, &format!("-{name}-time"), false)?;
+    let interval = if runs > 1 {
+        format!("[95% CI between {runs} runs]")
+    } else {
+        "[95% CI within 1 run]".to_string()
+    };
+    let timing = |count: usize| {
+        let per_run = common.seconds / (count * runs) as f64;
+        outln!(
+            "time {name}: {count} shapes, {batch} rays each, {runs} runs of {per_run:.2} s \
+             each; every ratio {interval}"
+        )?;
+        let ticker = Ticker::start(
+            Heartbeat::new(format!("time {name}"), "shapes"),
+            count as u64,
+        );
+        Ok::<_, std::io::Error>((ticker, (runs, per_run)))
+    };
+    let seed = workload.seed;
+    let records = match shapes {
+        Shapes::Family => {
+            let members = family::members()?;
+            let (ticker, timing) = timing(members.len())?;
+            timed(&members, seed, batch, timing, &ticker, family_line)
+        }
+        Shapes::Bend => {
+            let bends = bend::bends()?;
+            let (ticker, timing) = timing(bends.len())?;
+            timed(&bends, seed, batch, timing, &ticker, bend_line)
+        }
+    }
+    .map_err(|e| format!("time {name}: {e}"))?;
+    let mut results = Results::new(&workload, &format!("time-{name}"));
+    results.meta.threads = Some(1);
+    results.ratio = records;
+    save(&results, &path, common)?;
     Ok(ExitCode::SUCCESS)
 }
 
-/// Writes `records` as the `ratio` section of `out`, or of the default
-/// `results/<commit><suffix>.json`, with `meta.tool` = `tool`; returns the path.
-fn write(
-    workload: &Workload,
-    tool: &str,
-    suffix: &str,
-    records: Vec<RatioRecord>,
-    out: Option<&Path>,
-) -> Result<PathBuf, Box<dyn std::error::Error>> {
-    let mut results = Results::new(workload, tool);
-    results.meta.threads = Some(1);
-    results.ratio = records;
-    let path = match out {
-        Some(p) => p.to_path_buf(),
-        None => {
-            let p = default_path(Path::new("results"), suffix);
-            torus_cull_lab::output::create_default_dir(&p)
-                .map_err(|e| format!("--out {}: {e}", p.display()))?;
-            p
-        }
-    };
-    results
-        .save(&path)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    println!("wrote {}", path.display());
-    Ok(path)
+/// [`shape_records`] of `shapes`, each shape's line printed by `line` as it comes and
+/// counted on `ticker`.
+fn timed<S: TimedShape>(
+    shapes: &[S],
+    seed: u64,
+    batch: usize,
+    timing: (usize, f64),
+    ticker: &Ticker,
+    line: fn(&S, &[ShapeRatio]) -> String,
+) -> Result<Vec<RatioRecord>, String> {
+    let mut done = 0;
+    shape_records(shapes, seed, batch, timing, |shape, ratios| {
+        done += 1;
+        ticker.set(done);
+        // A closed stdout stops the lines only (`outln!`'s contract).
+        let _ = outln!("{}", line(shape, ratios));
+    })
 }
 
-/// `ratio [between-run interval]`.
-pub(super) fn show(r: &ShapeRatio) -> String {
-    match r.between {
-        Some([lo, hi]) => format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio),
-        None => format!("{:.3}", r.ratio),
-    }
+/// A member's line: its exact intersection's cost and its fastest cull.
+fn family_line(member: &Toroid, ratios: &[ShapeRatio]) -> String {
+    let best = ratios[2..]
+        .iter()
+        .min_by(|x, y| x.ratio.total_cmp(&y.ratio))
+        .expect("every cull is timed");
+    format!(
+        "R = {}, a = {}, b = {} ({:?}): exact / circular exact = {}, on the images {}; \
+         fastest cull: {} / cychosz = {}",
+        member.major_radius_f64(),
+        member.radial_semi_axis_f64(),
+        member.axial_semi_axis_f64(),
+        member.kind(),
+        show(&ratios[0]),
+        show(&ratios[1]),
+        best.contender,
+        show(best)
+    )
+}
+
+/// A bend's line: the best cull over no cull, with and without the wedge.
+fn bend_line(bend: &PipeBend, ratios: &[ShapeRatio]) -> String {
+    let best = |wedge: bool| {
+        ratios
+            .iter()
+            .filter(|r| r.reference == "none" && r.contender.starts_with("wedge+") == wedge)
+            .min_by(|x, y| x.ratio.total_cmp(&y.ratio))
+            .expect("every cull is timed")
+    };
+    let (plain, wedged) = (best(false), best(true));
+    format!(
+        "dphi = {:.4}, r_min/r_max = {}: over no cull, best {} {}, best with the wedge {} {}",
+        bend.delta_phi(),
+        bend.bore_radius_f64() / bend.tube_radius_f64(),
+        plain.contender,
+        show(plain),
+        wedged.contender,
+        show(wedged)
+    )
+}
+
+/// `ratio [interval]`: the between-run interval of several runs, else the run's own.
+fn show(r: &ShapeRatio) -> String {
+    let [lo, hi] = r.between.unwrap_or(r.within);
+    format!("{:.3} [{lo:.3}, {hi:.3}]", r.ratio)
 }

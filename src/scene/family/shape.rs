@@ -104,7 +104,7 @@ impl FamilyShape {
     /// for its shape), a bend on its outer torus with the segment's wedge after it
     /// ([`PipeBend::wedge_cull`]). Both are conservative: a kept-out ray misses the solid.
     /// `none` keeps every ray, a bend's included: it is the exact intersection alone (the
-    /// wedge is a cull, timed as `wedge+none` by `time --bend`), so that every cull's
+    /// wedge is a cull, timed as `wedge+none` by `time bend`), so that every cull's
     /// ratio over it counts the wedge's saving too.
     pub fn kept_by<C: Cull>(&self, cull: &C, ray: &Ray) -> bool {
         match self {

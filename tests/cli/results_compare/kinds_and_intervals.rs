@@ -114,7 +114,7 @@ fn check_files_compare_and_mixed_kinds_are_refused() {
     assert!(err.contains("`check`") && err.contains("`run`"), "{err}");
 }
 
-/// Issue 29: a file with only `estimates` (`time --device gpu`, a filtered bench) is
+/// Issue 29: a file with only `estimates` (`time gpu`, a filtered bench) is
 /// plotted and compared by them (it was "nothing to plot" and "share no record"); an
 /// adapter change is a machine change.
 #[test]
