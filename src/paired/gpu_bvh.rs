@@ -46,7 +46,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 use torus_cull::gpu::{
-    FinishCounts, GpuCull, GpuError, GpuIntersector, GpuScene, KernelTime, SceneRays, SpawnedRay,
+    FinishCounts, GpuCull, GpuError, GpuIntersector, GpuScene, SceneRays, SpawnedRay,
 };
 use torus_cull::{Named, Ray};
 
@@ -522,20 +522,9 @@ impl Rounds {
                 None => rays.run_copy(self.repeats)?,
                 Some(cull) => rays.run(cull, c % 2 == 1, self.repeats)?,
             };
-            self.ns[c].push(per_pass(&time, self.repeats));
+            self.ns[c].push(time.pass_ns(self.repeats));
         }
         Ok(())
-    }
-}
-
-/// ns of one pass over the batch: the device's timestamps where there are any, else the
-/// submission's wall time over the repeats.
-fn per_pass(time: &KernelTime, repeats: usize) -> f64 {
-    if time.device.is_empty() {
-        time.wall.as_nanos() as f64 / repeats as f64
-    } else {
-        let total: Duration = time.device.iter().sum();
-        total.as_nanos() as f64 / time.device.len() as f64
     }
 }
 

@@ -14,7 +14,7 @@ use crate::console::{Heartbeat, Ticker, outln};
 use crate::whole::Whole;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
-use torus_cull::gpu::{FinishCounts, GpuCull, GpuIntersector, KernelTime, ResidentRays};
+use torus_cull::gpu::{FinishCounts, GpuCull, GpuIntersector, ResidentRays};
 use torus_cull::{CullKind, F32Verdict, Named};
 use torus_cull_lab::paired::ratio_estimate;
 use torus_cull_lab::precision::Path;
@@ -75,7 +75,7 @@ pub(super) fn run(args: &GpuArgs, workgroup: u32) -> Result<ExitCode, Box<dyn st
         }
     }
     let gpu = GpuIntersector::with_workgroup(workgroup)?;
-    let device = announce_adapter(&gpu)?;
+    let device = announce_adapter(&gpu, "its submission's wall clock")?;
     if finish {
         if let Some(why) = gpu.device_finish_unavailable() {
             return Err(format!("--finish: the adapter has no f64 finish pass: {why}").into());
@@ -371,7 +371,7 @@ fn time_unit(
             } else {
                 resident.run(culls[k - 1], repeats)?
             };
-            ns[k].push(per_pass(&time, repeats));
+            ns[k].push(time.pass_ns(repeats));
         }
         round += 1;
     }
@@ -402,17 +402,6 @@ fn time_unit(
     })
 }
 
-/// ns of one pass over the batch: the device's timestamps where there are any, else the
-/// submission's wall time, over the repeats.
-fn per_pass(time: &KernelTime, repeats: usize) -> f64 {
-    if time.device.is_empty() {
-        time.wall.as_nanos() as f64 / repeats as f64
-    } else {
-        let total: Duration = time.device.iter().sum();
-        total.as_nanos() as f64 / time.device.len() as f64
-    }
-}
-
 fn median(ns: &[f64]) -> f64 {
     let mut v = ns.to_vec();
     torus_cull_lab::paired::median(&mut v)
@@ -431,8 +420,9 @@ fn estimate(benchmark: &str, ns: &[f64], rays: f64) -> EstimateRecord {
 }
 
 /// The adapter, described and said on stdout; a software one is called out, so that
-/// its figures are not taken for a GPU's.
-fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
+/// its figures are not taken for a GPU's. `wall_clock` says what a pass's wall clock
+/// holds where the adapter has no timestamp queries.
+pub(super) fn announce_adapter(gpu: &GpuIntersector, wall_clock: &str) -> std::io::Result<String> {
     let mut device = format!(
         "{} ({:?}, {:?})",
         gpu.adapter_name(),
@@ -454,10 +444,7 @@ fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
         )?;
     }
     if !gpu.has_timestamps() {
-        outln!(
-            "the adapter has no timestamp queries: each pass is timed by its \
-             submission's wall clock"
-        )?;
+        outln!("the adapter has no timestamp queries: each pass is timed by {wall_clock}")?;
     }
     Ok(device)
 }

@@ -168,7 +168,10 @@ mod measure {
         }
 
         let gpu = GpuIntersector::new()?;
-        let device = announce_adapter(&gpu)?;
+        let device = crate::time::gpu::announce_adapter(
+            &gpu,
+            "its submission's wall clock (with the copy that restores the rays before it)",
+        )?;
         let timing = GpuBvhTiming {
             units,
             tori,
@@ -414,34 +417,5 @@ mod measure {
         torus_cull_lab::output::create_default_dir(&path)
             .map_err(|e| format!("--out {}: {e}", path.display()))?;
         Ok(path)
-    }
-
-    /// The adapter, described and said on stdout; a software one is called out, so that
-    /// its figures are not taken for a GPU's.
-    fn announce_adapter(gpu: &GpuIntersector) -> std::io::Result<String> {
-        let mut device = format!(
-            "{} ({:?}, {:?})",
-            gpu.adapter_name(),
-            gpu.device_type(),
-            gpu.backend()
-        );
-        if gpu.is_software() {
-            device.push_str("; software adapter: a CPU proxy, no GPU timing claimed");
-        }
-        outln!("adapter: {device}")?;
-        if gpu.is_software() {
-            outln!(
-                "the adapter is a CPU rasteriser (device type Cpu): these figures time \
-                 this CPU through {:?}, not a GPU",
-                gpu.backend()
-            )?;
-        }
-        if !gpu.has_timestamps() {
-            outln!(
-                "the adapter has no timestamp queries: each pass is timed by its \
-                 submission's wall clock (with the copy that restores the rays before it)"
-            )?;
-        }
-        Ok(device)
     }
 }

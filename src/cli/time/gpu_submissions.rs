@@ -77,7 +77,7 @@ mod measure {
     use std::process::ExitCode;
     use std::time::{Duration, Instant};
     use torus_cull::Named;
-    use torus_cull::gpu::{GpuCull, GpuIntersector, KernelTime};
+    use torus_cull::gpu::{GpuCull, GpuIntersector};
     use torus_cull_lab::number::Num;
     use torus_cull_lab::results::{self, EstimateRecord, Results};
     use torus_cull_lab::workload::spec::Workload;
@@ -237,7 +237,7 @@ mod measure {
                         time.wall.as_nanos(),
                         device_ns.join(";")
                     )?;
-                    per_ray[k].push(pass_ns(&time, repeats) / n as f64);
+                    per_ray[k].push(time.pass_ns(repeats) / n as f64);
                     walls[k].push(time.wall.as_secs_f64() * 1e3);
                     if last.elapsed() >= EVERY {
                         last = Instant::now();
@@ -283,17 +283,6 @@ mod measure {
     /// Contender `k`'s name: the copy kernel first, then the culls.
     fn contender(culls: &[GpuCull], k: usize) -> &'static str {
         if k == 0 { "copy" } else { culls[k - 1].name() }
-    }
-
-    /// ns of one pass: the device's timestamps where there are any, else the wall clock
-    /// over the repeats.
-    fn pass_ns(time: &KernelTime, repeats: usize) -> f64 {
-        if time.device.is_empty() {
-            time.wall.as_nanos() as f64 / repeats as f64
-        } else {
-            let total: Duration = time.device.iter().sum();
-            total.as_nanos() as f64 / time.device.len() as f64
-        }
     }
 
     fn median(v: &[f64]) -> f64 {

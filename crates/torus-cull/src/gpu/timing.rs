@@ -85,6 +85,20 @@ pub struct KernelTime {
     pub device: Vec<Duration>,
 }
 
+impl KernelTime {
+    /// ns of one pass over the batch: the mean of the device's timestamps where the
+    /// adapter has them, else the submission's wall time over its `repeats` (which then
+    /// includes the submission's latency).
+    pub fn pass_ns(&self, repeats: usize) -> f64 {
+        if self.device.is_empty() {
+            self.wall.as_nanos() as f64 / repeats as f64
+        } else {
+            let total: Duration = self.device.iter().sum();
+            total.as_nanos() as f64 / self.device.len() as f64
+        }
+    }
+}
+
 impl GpuIntersector {
     /// Packs `rays` for `torus` (as [`GpuIntersector::intersect`] does) and uploads them
     /// into buffers that stay on the device until the returned batch is dropped.
